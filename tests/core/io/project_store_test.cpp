@@ -1,0 +1,120 @@
+#include "core/io/project_store.h"
+
+#include <gtest/gtest.h>
+#include <sqlite3.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace mozzi::core::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ProjectStoreTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("mozzi_store_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string file(const std::string& name) const { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+TEST_F(ProjectStoreTest, CreatesWalProjectWithSchemaAndSpecimens) {
+  auto store = ProjectStore::create(file("a.mozzi"), "0.1.0");
+  ASSERT_TRUE(store.ok()) << store.error().describe();
+  EXPECT_FALSE(store->isReadOnly());
+  EXPECT_EQ(store->schemaVersion(), ProjectStore::currentSchemaVersion());
+  ASSERT_TRUE(store->addSpecimen("Fork A", "fork", "thesis Table 11").ok());
+  auto summary = store->summary();
+  ASSERT_TRUE(summary.ok()) << summary.error().describe();
+  ASSERT_EQ(summary->specimens.size(), 1u);
+  EXPECT_EQ(summary->specimens[0].name, "Fork A");
+  EXPECT_EQ(summary->mozziVersion, "0.1.0");
+
+  sqlite3_stmt* stmt = nullptr;
+  ASSERT_EQ(sqlite3_prepare_v2(store->connection(), "PRAGMA journal_mode", -1, &stmt, nullptr), SQLITE_OK);
+  ASSERT_EQ(sqlite3_step(stmt), SQLITE_ROW);
+  EXPECT_STREQ(reinterpret_cast<const char*>(sqlite3_column_text(stmt, 0)), "wal");
+  sqlite3_finalize(stmt);
+}
+
+TEST_F(ProjectStoreTest, RefusesToOverwriteOnCreate) {
+  std::ofstream(file("x.mozzi")) << "keep me";
+  auto store = ProjectStore::create(file("x.mozzi"), "0.1.0");
+  ASSERT_FALSE(store.ok());
+  std::ifstream in(file("x.mozzi"));
+  std::string content;
+  std::getline(in, content);
+  EXPECT_EQ(content, "keep me");
+}
+
+TEST_F(ProjectStoreTest, MissingAndForeignFilesGiveClearErrors) {
+  auto missing = ProjectStore::open(file("nope.mozzi"));
+  ASSERT_FALSE(missing.ok());
+  EXPECT_EQ(missing.error().code, ErrorCode::NotFound);
+  EXPECT_NE(missing.error().where.find("nope.mozzi"), std::string::npos);
+
+  std::ofstream(file("text.mozzi")) << "this is not a database\n";
+  auto text = ProjectStore::open(file("text.mozzi"));
+  ASSERT_FALSE(text.ok());
+  EXPECT_EQ(text.error().code, ErrorCode::Corrupt);
+  EXPECT_NE(text.error().message.find("not a Mozzi project"), std::string::npos);
+
+  sqlite3* other = nullptr;
+  ASSERT_EQ(sqlite3_open(file("other.db").c_str(), &other), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(other, "CREATE TABLE t(x)", nullptr, nullptr, nullptr), SQLITE_OK);
+  sqlite3_close(other);
+  auto foreign = ProjectStore::open(file("other.db"));
+  ASSERT_FALSE(foreign.ok());
+  EXPECT_NE(foreign.error().message.find("another application"), std::string::npos);
+}
+
+TEST_F(ProjectStoreTest, TruncatedProjectIsReportedNotCrashed) {
+  {
+    auto store = ProjectStore::create(file("t.mozzi"), "0.1.0");
+    ASSERT_TRUE(store.ok());
+    for (int i = 0; i < 200; ++i) ASSERT_TRUE(store->addSpecimen("s" + std::to_string(i), "frame", std::string(500, 'x')).ok());
+  }
+  const auto size = fs::file_size(file("t.mozzi"));
+  ASSERT_GT(size, 8192u);
+  fs::resize_file(file("t.mozzi"), size / 2);
+  auto broken = ProjectStore::open(file("t.mozzi"));
+  ASSERT_FALSE(broken.ok());
+  EXPECT_EQ(broken.error().code, ErrorCode::Corrupt) << broken.error().describe();
+}
+
+TEST_F(ProjectStoreTest, SecondInstanceOpensReadOnlyAndCannotWrite) {
+  auto first = ProjectStore::create(file("shared.mozzi"), "0.1.0");
+  ASSERT_TRUE(first.ok());
+  auto second = ProjectStore::open(file("shared.mozzi"));
+  ASSERT_TRUE(second.ok()) << second.error().describe();
+  EXPECT_TRUE(second->isReadOnly());
+  EXPECT_NE(second->readOnlyReason().find("another Mozzi instance"), std::string::npos);
+  auto write = second->addSpecimen("x", "frame", "");
+  ASSERT_FALSE(write.ok());
+  EXPECT_EQ(write.error().code, ErrorCode::Locked);
+}
+
+TEST_F(ProjectStoreTest, SaveAsCopiesEverythingAndKeepsTheOriginalOpen) {
+  auto store = ProjectStore::create(file("orig.mozzi"), "0.1.0");
+  ASSERT_TRUE(store.ok());
+  ASSERT_TRUE(store->addSpecimen("Frame A", "frame", "").ok());
+  ASSERT_TRUE(store->saveAs(file("copy.mozzi")).ok());
+  ASSERT_TRUE(store->addSpecimen("Frame B", "frame", "").ok());
+  auto copy = ProjectStore::open(file("copy.mozzi"));
+  ASSERT_TRUE(copy.ok()) << copy.error().describe();
+  auto summary = copy->summary();
+  ASSERT_TRUE(summary.ok());
+  ASSERT_EQ(summary->specimens.size(), 1u);
+  EXPECT_EQ(summary->specimens[0].name, "Frame A");
+  EXPECT_FALSE(fs::exists(file("copy.mozzi.part")));
+}
+
+}  // namespace
+}  // namespace mozzi::core::io
