@@ -1,0 +1,298 @@
+// The main window as a user meets it, on a real X display (Xvfb) with VTK on
+// Mesa's software OpenGL: docks, every menu action, project open errors,
+// persistence, languages, the About box, and a screenshot for the record.
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QDockWidget>
+#include <QFile>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <QTreeWidget>
+#include <QtTest>
+#include <qwt_global.h>
+#include <sqlite3.h>
+#include <vtkVersion.h>
+
+#include <memory>
+
+#include "app/gui/main_window.h"
+#include "app/gui/project_document.h"
+#include "devices/sim/virtual_specimens.h"
+#include "views/panels/project_overview.h"
+#include "views/scene/scene_view.h"
+
+using mozzi::app::MainWindow;
+
+class MainWindowTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void initTestCase();
+  void docksOpenAndClose();
+  void everyMenuActionOpensAndCloses();
+  void missingAndCorruptFilesShowAClearMessageAndKeepTheWindowUsable();
+  void demoProjectFillsTreeOverviewAndProperties();
+  void recentFilesAndLayoutPersist();
+  void saveAsCopiesAndOpensTheCopy();
+  void languageSwitchesToItalianAndBack();
+  void aboutListsTheLinkedLibraryVersions();
+  void sceneRendersWithOpenGl();
+  void screenshot();
+
+ private:
+  QString file(const QString& name) const { return QDir(dir_.path()).filePath(name); }
+  std::unique_ptr<MainWindow> window_;
+  QTemporaryDir dir_;
+  QTemporaryDir settingsDir_;
+};
+
+void MainWindowTest::initTestCase() {
+  QVERIFY(dir_.isValid());
+  QSettings::setDefaultFormat(QSettings::IniFormat);
+  QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir_.path());
+  QApplication::setOrganizationName(QStringLiteral("MozziTest"));
+  QApplication::setApplicationName(QStringLiteral("MozziTest"));
+  window_ = std::make_unique<MainWindow>();
+  window_->show();
+  QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+}
+
+void MainWindowTest::docksOpenAndClose() {
+  const auto docks = window_->findChildren<QDockWidget*>();
+  QStringList names;
+  for (auto* dock : docks) names << dock->objectName();
+  names.sort();
+  QCOMPARE(names, (QStringList{QStringLiteral("logDock"), QStringLiteral("projectDock"), QStringLiteral("propertiesDock")}));
+  for (auto* dock : docks) {
+    QVERIFY2(dock->isVisible(), qPrintable(dock->objectName()));
+    dock->toggleViewAction()->trigger();
+    QVERIFY2(!dock->isVisible(), qPrintable(dock->objectName()));
+    dock->toggleViewAction()->trigger();
+    QVERIFY2(dock->isVisible(), qPrintable(dock->objectName()));
+  }
+}
+
+// Triggers every action of every menu. Actions that open a dialog get it
+// closed again by a timer that rejects whatever modal window appears.
+void MainWindowTest::everyMenuActionOpensAndCloses() {
+  QVERIFY(window_->createDemoProject(file(QStringLiteral("menus.mozzi"))));
+  int dialogsClosed = 0;
+  QTimer closer;
+  closer.setInterval(50);
+  connect(&closer, &QTimer::timeout, [&] {
+    if (QWidget* modal = QApplication::activeModalWidget()) {
+      if (auto* dialog = qobject_cast<QDialog*>(modal)) dialog->reject(); else modal->close();
+      ++dialogsClosed;
+    }
+  });
+  closer.start();
+
+  QStringList triggered;
+  std::function<void(QMenu*)> walk = [&](QMenu* menu) {
+    for (QAction* action : menu->actions()) {
+      if (action->isSeparator()) continue;
+      if (action->menu()) {
+        walk(action->menu());
+        continue;
+      }
+      if (action->menuRole() == QAction::QuitRole) continue;  // checked below, it would end the test
+      if (!action->isEnabled()) continue;
+      action->trigger();
+      QCoreApplication::processEvents();
+      triggered << action->text();
+    }
+  };
+  for (QAction* top : window_->menuBar()->actions()) walk(top->menu());
+  closer.stop();
+  QVERIFY2(triggered.size() >= 14, qPrintable(triggered.join(QStringLiteral(", "))));
+  // New, Open, Save As, Export image, Demo, About, About Qt open dialogs: all were closed.
+  QVERIFY2(dialogsClosed >= 7, qPrintable(QString::number(dialogsClosed)));
+  QVERIFY(QApplication::activeModalWidget() == nullptr);
+  QVERIFY(window_->isVisible());
+  QVERIFY(window_->setLanguage(QStringLiteral("en")));  // the walk may have switched language
+
+  // Quit closes the window (checked on a second window so the test goes on).
+  MainWindow other;
+  other.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&other));
+  QAction* quit = nullptr;
+  for (QAction* a : other.findChildren<QAction*>()) {
+    if (a->menuRole() == QAction::QuitRole) quit = a;
+  }
+  QVERIFY(quit);
+  quit->trigger();
+  QVERIFY(!other.isVisible());
+}
+
+void MainWindowTest::missingAndCorruptFilesShowAClearMessageAndKeepTheWindowUsable() {
+  QVERIFY(window_->openProject(file(QStringLiteral("menus.mozzi"))));
+  const QString missing = file(QStringLiteral("no-such-project.mozzi"));
+  QVERIFY(!window_->openProject(missing));
+  QVERIFY(window_->errorBox());
+  QVERIFY(window_->errorBox()->isVisible());
+  QVERIFY2(window_->errorBox()->text().contains(QStringLiteral("no-such-project.mozzi")),
+           qPrintable(window_->errorBox()->text()));
+  QVERIFY2(window_->errorBox()->informativeText().contains(QStringLiteral("does not exist")),
+           qPrintable(window_->errorBox()->informativeText()));
+  window_->errorBox()->close();
+  // The project that was open stays open.
+  QCOMPARE(window_->document()->path(), file(QStringLiteral("menus.mozzi")));
+
+  QFile corrupt(file(QStringLiteral("corrupt.mozzi")));
+  QVERIFY(corrupt.open(QIODevice::WriteOnly));
+  corrupt.write("SQLite format 3\0 but truncated garbage after the header", 56);
+  corrupt.close();
+  QVERIFY(!window_->openProject(corrupt.fileName()));
+  QVERIFY(window_->errorBox() && window_->errorBox()->isVisible());
+  QVERIFY2(window_->errorBox()->text().contains(QStringLiteral("corrupt.mozzi")), qPrintable(window_->errorBox()->text()));
+  window_->errorBox()->close();
+
+  QFile text(file(QStringLiteral("notes.mozzi")));
+  QVERIFY(text.open(QIODevice::WriteOnly));
+  text.write("frame A notes\n");
+  text.close();
+  QVERIFY(!window_->openProject(text.fileName()));
+  QVERIFY2(window_->errorBox()->informativeText().contains(QStringLiteral("not a Mozzi project")),
+           qPrintable(window_->errorBox()->informativeText()));
+  window_->errorBox()->close();
+  // The file the user pointed at is left as it was.
+  QVERIFY(text.open(QIODevice::ReadOnly));
+  QCOMPARE(text.readAll(), QByteArray("frame A notes\n"));
+
+  // Still usable: menus enabled, a good project opens.
+  QVERIFY(window_->menuBar()->isEnabled());
+  QVERIFY(window_->openProject(file(QStringLiteral("menus.mozzi"))));
+}
+
+void MainWindowTest::demoProjectFillsTreeOverviewAndProperties() {
+  const QString path = file(QStringLiteral("demo.mozzi"));
+  QVERIFY(window_->createDemoProject(path));
+  const int expected = static_cast<int>(mozzi::devices::sim::virtualSpecimens().size());
+  auto* tree = window_->findChild<QTreeWidget*>(QStringLiteral("projectTree"));
+  QVERIFY(tree);
+  QCOMPARE(tree->topLevelItemCount(), 1);
+  QTreeWidgetItem* specimens = tree->topLevelItem(0)->child(0);
+  QCOMPARE(specimens->childCount(), expected);
+  QCOMPARE(specimens->text(1).toInt(), expected);
+  auto* overview = window_->findChild<mozzi::views::ProjectOverview*>();
+  QVERIFY(overview);
+  QCOMPARE(overview->specimenRows(), expected);
+
+  tree->setCurrentItem(specimens->child(0));
+  auto* properties = window_->findChild<QTableWidget*>(QStringLiteral("propertiesTable"));
+  QVERIFY(properties);
+  QCOMPARE(properties->rowCount(), 3);
+  QCOMPARE(properties->item(0, 1)->text(), QString::fromStdString(mozzi::devices::sim::virtualSpecimens()[0].name));
+  QVERIFY(window_->windowTitle().contains(QStringLiteral("demo.mozzi")));
+}
+
+void MainWindowTest::recentFilesAndLayoutPersist() {
+  const QString a = file(QStringLiteral("recent-a.mozzi"));
+  const QString b = file(QStringLiteral("recent-b.mozzi"));
+  QVERIFY(window_->newProject(a));
+  QVERIFY(window_->newProject(b));
+  QCOMPARE(window_->recentFiles().value(0), QFileInfo(b).absoluteFilePath());
+  QCOMPARE(window_->recentFiles().value(1), QFileInfo(a).absoluteFilePath());
+
+  auto* log = window_->findChild<QDockWidget*>(QStringLiteral("logDock"));
+  log->hide();
+  window_->close();  // saves geometry and dock state
+  window_->document()->close();
+
+  MainWindow second;
+  second.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&second));
+  QCOMPARE(second.recentFiles().value(0), QFileInfo(b).absoluteFilePath());
+  QVERIFY(!second.findChild<QDockWidget*>(QStringLiteral("logDock"))->isVisible());
+  second.findChild<QDockWidget*>(QStringLiteral("logDock"))->show();
+  second.close();
+
+  window_->show();
+  log->show();
+  QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+}
+
+void MainWindowTest::saveAsCopiesAndOpensTheCopy() {
+  QVERIFY(window_->createDemoProject(file(QStringLiteral("original.mozzi"))));
+  const QString copy = file(QStringLiteral("copy.mozzi"));
+  QVERIFY(window_->saveProjectAs(copy));
+  QCOMPARE(window_->document()->path(), copy);
+  QVERIFY(!window_->document()->isReadOnly());
+  auto summary = window_->document()->summary();
+  QVERIFY(summary.ok());
+  QCOMPARE(summary->specimens.size(), mozzi::devices::sim::virtualSpecimens().size());
+  // Saving onto an existing project of another name is refused without touching it.
+  QVERIFY(!window_->saveProjectAs(copy));
+  window_->errorBox()->close();
+}
+
+void MainWindowTest::languageSwitchesToItalianAndBack() {
+  QVERIFY(MainWindow::availableLanguages().contains(QStringLiteral("it")));
+  QVERIFY(MainWindow::availableLanguages().contains(QStringLiteral("en")));
+  QMenu* fileMenu = window_->menuBar()->actions().at(0)->menu();
+  QVERIFY(window_->setLanguage(QStringLiteral("it")));
+  QCOMPARE(window_->language(), QStringLiteral("it"));
+  QStringList texts;
+  for (QAction* a : fileMenu->actions()) texts << a->text();
+  QVERIFY2(texts.contains(QStringLiteral("&Apri progetto...")), qPrintable(texts.join(QStringLiteral("|"))));
+  QCOMPARE(window_->workArea()->tabText(0), QStringLiteral("Panoramica"));
+  QCOMPARE(QSettings().value(QStringLiteral("ui/language")).toString(), QStringLiteral("it"));
+  QVERIFY(window_->setLanguage(QStringLiteral("en")));
+  texts.clear();
+  for (QAction* a : fileMenu->actions()) texts << a->text();
+  QVERIFY(texts.contains(QStringLiteral("&Open Project...")));
+  QVERIFY(!window_->setLanguage(QStringLiteral("xx")));
+}
+
+void MainWindowTest::aboutListsTheLinkedLibraryVersions() {
+  const QString about = window_->aboutText();
+  for (const QString& expected :
+       {QStringLiteral("Qt ") + QString::fromLatin1(qVersion()), QStringLiteral("Qwt " QWT_VERSION_STR),
+        QStringLiteral("VTK ") + QString::fromLatin1(vtkVersion::GetVTKVersion()),
+        QStringLiteral("SQLite ") + QString::fromLatin1(sqlite3_libversion()), QStringLiteral("Eigen 3.4"),
+        QStringLiteral("Ceres 2.1"), QStringLiteral("FFTW 3."), QStringLiteral("libusb 1.0")}) {
+    QVERIFY2(about.contains(expected), qPrintable(expected + QStringLiteral(" missing from: ") + about));
+  }
+}
+
+void MainWindowTest::sceneRendersWithOpenGl() {
+  auto* scene = window_->findChild<mozzi::views::SceneView*>();
+  QVERIFY(scene);
+  window_->workArea()->setCurrentWidget(scene);
+  QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+  const int before = scene->framesRendered();
+  scene->render();
+  QCOMPARE(scene->framesRendered(), before + 1);
+  // The gradient background is drawn: the centre is neither black nor unpainted.
+  const QImage image = scene->grab().toImage();
+  const QColor centre = image.pixelColor(image.width() / 2, image.height() / 2);
+  QVERIFY2(centre.lightness() > 150, qPrintable(centre.name()));
+  window_->workArea()->setCurrentIndex(0);
+}
+
+void MainWindowTest::screenshot() {
+  QVERIFY(window_->createDemoProject(file(QStringLiteral("screenshot.mozzi"))));
+  const QString folder = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR", QDir::tempPath());
+  QDir().mkpath(folder);
+  const QString path = QDir(folder).filePath(QStringLiteral("main_window.png"));
+  QVERIFY(window_->grab().save(path));
+  QVERIFY(QFileInfo(path).size() > 10000);
+  qInfo("screenshot: %s", qPrintable(path));
+}
+
+int main(int argc, char** argv) {
+  mozzi::views::SceneView::prepareSurfaceFormat();
+  QApplication app(argc, argv);
+  MainWindowTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "main_window_test.moc"

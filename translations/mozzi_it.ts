@@ -1,0 +1,423 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="it_IT" sourcelanguage="en_US">
+<context>
+    <name>main</name>
+    <message>
+        <location filename="../app/gui/main.cpp" line="+18"/>
+        <source>Structural dynamics workbench</source>
+        <translation>Banco di lavoro per la dinamica strutturale</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Project file to open</source>
+        <translation>File di progetto da aprire</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save a screenshot of the window to FILE and quit.</source>
+        <translation>Salva un&apos;immagine della finestra in FILE ed esci.</translation>
+    </message>
+</context>
+<context>
+    <name>mozzi::app::MainWindow</name>
+    <message>
+        <location filename="../app/gui/main_window.cpp" line="+214"/>
+        <source>&amp;File</source>
+        <translation>&amp;File</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;New Project...</source>
+        <translation>&amp;Nuovo progetto...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Open Project...</source>
+        <translation>&amp;Apri progetto...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open &amp;Recent</source>
+        <translation>Apri &amp;recenti</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Clear List</source>
+        <translation>Svuota elenco</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save Project &amp;As...</source>
+        <translation>Salva progetto &amp;come...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Close Project</source>
+        <translation>&amp;Chiudi progetto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Import</source>
+        <translation>&amp;Importa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Export</source>
+        <translation>&amp;Esporta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Work Area as &amp;Image...</source>
+        <translation>Area di lavoro come &amp;immagine...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Esci</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;View</source>
+        <translation>&amp;Visualizza</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+60"/>
+        <source>Project</source>
+        <translation>Progetto</translation>
+    </message>
+    <message>
+        <location line="-59"/>
+        <source>Properties</source>
+        <translation>Proprietà</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Log</source>
+        <translation>Registro</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Reset Layout</source>
+        <translation>&amp;Ripristina disposizione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Language</source>
+        <translation>&amp;Lingua</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Tools</source>
+        <translation>&amp;Strumenti</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Create &amp;Demo Project...</source>
+        <translation>Crea progetto &amp;dimostrativo...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Check Project &amp;Integrity</source>
+        <translation>Verifica &amp;integrità del progetto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Aiuto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;About Mozzi</source>
+        <translation>&amp;Informazioni su Mozzi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>About &amp;Qt</source>
+        <translation>Informazioni su &amp;Qt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Overview</source>
+        <translation>Panoramica</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>3-D View</source>
+        <translation>Vista 3D</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+79"/>
+        <source>Item</source>
+        <translation>Elemento</translation>
+    </message>
+    <message>
+        <location line="-79"/>
+        <location line="+80"/>
+        <source>Count</source>
+        <translation>Numero</translation>
+    </message>
+    <message>
+        <location line="-79"/>
+        <source>Property</source>
+        <translation>Proprietà</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Value</source>
+        <translation>Valore</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>Mozzi</source>
+        <translation>Mozzi</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 - Mozzi</source>
+        <translation>%1 - Mozzi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> [read-only]</source>
+        <translation> [sola lettura]</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Could not read the project.</source>
+        <translation>Impossibile leggere il progetto.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Specimens</source>
+        <translation>Provini</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Data</source>
+        <translation>Dati</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>File</source>
+        <translation>File</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Access</source>
+        <translation>Accesso</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>read-only: %1</source>
+        <translation>sola lettura: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>read-write</source>
+        <translation>lettura e scrittura</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Name</source>
+        <translation>Nome</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Description</source>
+        <translation>Descrizione</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Where: %1</source>
+        <translation>Dove: %1</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <location line="+61"/>
+        <source>Open Project</source>
+        <translation>Apri progetto</translation>
+    </message>
+    <message>
+        <location line="-61"/>
+        <source>Could not open %1.</source>
+        <translation>Impossibile aprire %1.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Opened %1</source>
+        <translation>Aperto %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Read-only: %1</source>
+        <translation>Sola lettura: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+43"/>
+        <source>New Project</source>
+        <translation>Nuovo progetto</translation>
+    </message>
+    <message>
+        <location line="-43"/>
+        <source>Could not create %1.</source>
+        <translation>Impossibile creare %1.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Created %1</source>
+        <translation>Creato %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Demo Project</source>
+        <translation>Progetto dimostrativo</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Could not create the demo project %1.</source>
+        <translation>Impossibile creare il progetto dimostrativo %1.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Created demo project %1</source>
+        <translation>Creato il progetto dimostrativo %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+35"/>
+        <source>Save Project As</source>
+        <translation>Salva progetto come</translation>
+    </message>
+    <message>
+        <location line="-35"/>
+        <source>Could not save the project as %1.</source>
+        <translation>Impossibile salvare il progetto come %1.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Saved a copy as %1 and opened it</source>
+        <translation>Salvata una copia come %1 e aperta</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Export Image</source>
+        <translation>Esporta immagine</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Could not write %1.</source>
+        <translation>Impossibile scrivere %1.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Exported the work area to %1</source>
+        <translation>Area di lavoro esportata in %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+13"/>
+        <location line="+14"/>
+        <source>Mozzi projects (*.mozzi)</source>
+        <translation>Progetti Mozzi (*.mozzi)</translation>
+    </message>
+    <message>
+        <location line="-20"/>
+        <source>Mozzi projects (*.mozzi);;All files (*)</source>
+        <translation>Progetti Mozzi (*.mozzi);;Tutti i file (*)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Export Work Area</source>
+        <translation>Esporta area di lavoro</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PNG images (*.png);;JPEG images (*.jpg)</source>
+        <translation>Immagini PNG (*.png);;Immagini JPEG (*.jpg)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Create Demo Project</source>
+        <translation>Crea progetto dimostrativo</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Check Project Integrity</source>
+        <translation>Verifica integrità del progetto</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The project failed its integrity check.</source>
+        <translation>Il progetto non ha superato la verifica di integrità.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Integrity check passed: %1</source>
+        <translation>Verifica di integrità superata: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Integrity check passed</source>
+        <translation>Verifica di integrità superata</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&lt;h3&gt;Mozzi %1&lt;/h3&gt;&lt;p&gt;Structural dynamics workbench for two-wheeled-vehicle components: impact-hammer campaigns, stiffness rigs, tyre tests, modal and twist-axis identification, stability models.&lt;/p&gt;&lt;p&gt;Linked libraries:&lt;/p&gt;&lt;ul&gt;</source>
+        <translation>&lt;h3&gt;Mozzi %1&lt;/h3&gt;&lt;p&gt;Banco di lavoro per la dinamica strutturale dei componenti dei veicoli a due ruote: campagne con martello strumentato, banchi di rigidezza, prove pneumatici, identificazione modale e degli assi di torsione, modelli di stabilità.&lt;/p&gt;&lt;p&gt;Librerie collegate:&lt;/p&gt;&lt;ul&gt;</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>About Mozzi</source>
+        <translation>Informazioni su Mozzi</translation>
+    </message>
+</context>
+<context>
+    <name>mozzi::views::ProjectOverview</name>
+    <message>
+        <location filename="../views/panels/project_overview.cpp" line="+70"/>
+        <source>Specimen</source>
+        <translation>Provino</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Description</source>
+        <translation>Descrizione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No project open</source>
+        <translation>Nessun progetto aperto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Create a project with File &gt; New, open one with File &gt; Open, or try the demo with Tools &gt; Create Demo Project.</source>
+        <translation>Crea un progetto con File &gt; Nuovo, aprine uno con File &gt; Apri, oppure prova la dimostrazione con Strumenti &gt; Crea progetto dimostrativo.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>File: %1
+Schema version %2, created %3 by Mozzi %4</source>
+        <translation>File: %1
+Versione dello schema %2, creato il %3 da Mozzi %4</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Opened read-only: %1</source>
+        <translation>Aperto in sola lettura: %1</translation>
+    </message>
+</context>
+</TS>
