@@ -1,0 +1,89 @@
+#include "core/signal/time_record.h"
+
+#include <cmath>
+
+namespace mozzi::core::signal {
+
+const char* transducerKindName(TransducerKind kind) {
+  switch (kind) {
+    case TransducerKind::Force: return "force";
+    case TransducerKind::Acceleration: return "acceleration";
+    case TransducerKind::Velocity: return "velocity";
+    case TransducerKind::Displacement: return "displacement";
+    case TransducerKind::AngularRate: return "angular rate";
+    case TransducerKind::Other: return "other";
+  }
+  return "other";
+}
+
+namespace {
+std::string channelLabel(const TimeRecord& r, Eigen::Index c) {
+  const auto& ch = r.channels[static_cast<std::size_t>(c)];
+  std::string s = "channel " + std::to_string(c);
+  if (!ch.name.empty()) s += " '" + ch.name + "'";
+  return s + " (" + formatDof(ch.dof) + ")";
+}
+}  // namespace
+
+Result<void> TimeRecord::validate() const {
+  const std::string where = "time record";
+  if (!std::isfinite(sampleRateHz) || sampleRateHz <= 0.0) {
+    return makeError(ErrorCode::InvalidArgument,
+                     "sample rate must be finite and positive, got " + std::to_string(sampleRateHz) + " Hz", where);
+  }
+  if (channels.empty()) return makeError(ErrorCode::InvalidArgument, "record has no channels", where);
+  if (samples.cols() != channelCount()) {
+    return makeError(ErrorCode::InvalidArgument,
+                     "sample matrix has " + std::to_string(samples.cols()) + " columns for " +
+                         std::to_string(channelCount()) + " channels (mismatched lengths)",
+                     where);
+  }
+  if (samples.rows() < 2) {
+    return makeError(ErrorCode::InvalidArgument,
+                     "record is empty or too short (" + std::to_string(samples.rows()) + " samples, need 2)", where);
+  }
+  if (preTriggerSamples < 0 || preTriggerSamples >= samples.rows()) {
+    return makeError(ErrorCode::InvalidArgument,
+                     "pre-trigger of " + std::to_string(preTriggerSamples) + " samples lies outside the record of " +
+                         std::to_string(samples.rows()),
+                     where);
+  }
+  for (Eigen::Index c = 0; c < channelCount(); ++c) {
+    const auto& t = channels[static_cast<std::size_t>(c)].transducer;
+    if (!std::isfinite(t.sensitivityMvPerUnit) || t.sensitivityMvPerUnit <= 0.0) {
+      return makeError(ErrorCode::InvalidArgument, "transducer sensitivity must be positive (mV per unit)",
+                       where + ", " + channelLabel(*this, c));
+    }
+    for (Eigen::Index i = 0; i < samples.rows(); ++i) {
+      if (!std::isfinite(samples(i, c))) {
+        return makeError(ErrorCode::InvalidArgument, "sample is NaN or infinite",
+                         where + ", " + channelLabel(*this, c) + ", sample " + std::to_string(i));
+      }
+    }
+  }
+  return {};
+}
+
+Result<Vector> engineeringFromVolts(VectorRef volts, const Transducer& transducer) {
+  if (!std::isfinite(transducer.sensitivityMvPerUnit) || transducer.sensitivityMvPerUnit <= 0.0) {
+    return makeError(ErrorCode::InvalidArgument, "transducer sensitivity must be positive (mV per unit)",
+                     "transducer " + transducer.model + " " + transducer.serial);
+  }
+  return Vector(volts * (1000.0 / transducer.sensitivityMvPerUnit));
+}
+
+Result<Eigen::Index> findForceChannel(const TimeRecord& record) {
+  Eigen::Index found = -1;
+  for (Eigen::Index c = 0; c < record.channelCount(); ++c) {
+    if (record.channels[static_cast<std::size_t>(c)].transducer.kind != TransducerKind::Force) continue;
+    if (found >= 0) {
+      return makeError(ErrorCode::InvalidArgument, "more than one force channel; name the reference explicitly",
+                       "time record, " + channelLabel(record, found) + " and " + channelLabel(record, c));
+    }
+    found = c;
+  }
+  if (found < 0) return makeError(ErrorCode::NotFound, "no force channel to use as reference", "time record");
+  return found;
+}
+
+}  // namespace mozzi::core::signal
