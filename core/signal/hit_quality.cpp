@@ -1,0 +1,215 @@
+#include "core/signal/hit_quality.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/signal/fft.h"
+
+namespace mozzi::core::signal {
+
+namespace {
+std::string fmt(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+std::string channelText(const TimeRecord& r, Eigen::Index c) {
+  const auto& ch = r.channels[static_cast<std::size_t>(c)];
+  return "channel " + std::to_string(c) + (ch.name.empty() ? std::string() : " '" + ch.name + "'") + " (" +
+         formatDof(ch.dof) + ")";
+}
+
+// Linear interpolation of the crossing of `level` between samples i-1 and i
+// of y (y[i-1] on one side, y[i] on the other); returns a fractional index.
+double crossing(const Vector& y, Eigen::Index i, double level) {
+  const double a = y[i - 1], b = y[i];
+  if (a == b) return static_cast<double>(i);
+  return static_cast<double>(i - 1) + (level - a) / (b - a);
+}
+}  // namespace
+
+std::string HitQuality::verdictText() const {
+  if (accepted) return "accepted";
+  std::string s = "rejected: ";
+  for (std::size_t i = 0; i < reasons.size(); ++i) s += (i ? "; " : "") + reasons[i];
+  return s;
+}
+
+Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& options) {
+  if (auto ok = record.validate(); !ok) return ok.error();
+  HitQuality q;
+  if (options.referenceChannel) {
+    if (*options.referenceChannel < 0 || *options.referenceChannel >= record.channelCount()) {
+      return makeError(ErrorCode::InvalidArgument, "reference channel does not exist", "hit quality options");
+    }
+    q.referenceChannel = *options.referenceChannel;
+  } else {
+    auto ref = findForceChannel(record);
+    if (!ref) return ref.error();
+    q.referenceChannel = *ref;
+  }
+  const double fs = record.sampleRateHz;
+  const Eigen::Index n = record.sampleCount();
+  const Eigen::Index pre = record.preTriggerSamples;
+
+  // --- every channel: peak, noise floor, overload -----------------------------
+  for (Eigen::Index c = 0; c < record.channelCount(); ++c) {
+    const auto x = record.samples.col(c);
+    ChannelQuality cq;
+    cq.name = record.channels[static_cast<std::size_t>(c)].name;
+    cq.dof = record.channels[static_cast<std::size_t>(c)].dof;
+    cq.peak = x.cwiseAbs().maxCoeff();
+    if (pre >= 2) {
+      const auto head = x.head(pre);
+      const double mean = head.mean();
+      cq.noiseRms = std::sqrt((head.array() - mean).square().sum() / static_cast<double>(pre - 1));
+    }
+    if (cq.peak == 0.0) {
+      q.reasons.push_back("no signal on " + channelText(record, c) + " (all samples are zero)");
+      q.channels.push_back(cq);
+      continue;
+    }
+    const double fullScale = record.channels[static_cast<std::size_t>(c)].fullScale;
+    if (fullScale > 0.0) {
+      for (Eigen::Index i = 0; i < n; ++i) {
+        if (std::abs(x[i]) >= options.fullScaleMargin * fullScale) ++cq.clippedSamples;
+      }
+    } else {
+      // flat tops: runs of >= clipRunLength samples pinned at a significant extreme
+      const double hi = x.maxCoeff(), lo = x.minCoeff();
+      const double tol = 1e-9 * cq.peak;
+      for (const double extreme : {hi, lo}) {
+        if (std::abs(extreme) < 0.5 * cq.peak) continue;
+        Eigen::Index run = 0;
+        for (Eigen::Index i = 0; i <= n; ++i) {
+          if (i < n && std::abs(x[i] - extreme) <= tol) {
+            ++run;
+            continue;
+          }
+          if (run >= options.clipRunLength) cq.clippedSamples += run;
+          run = 0;
+        }
+      }
+    }
+    if (cq.clippedSamples > 0) {
+      cq.clipped = true;
+      q.reasons.push_back("overload on " + channelText(record, c) + ": " + std::to_string(cq.clippedSamples) +
+                          " samples clipped at " + fmt("%.4g", cq.peak) + " " +
+                          record.channels[static_cast<std::size_t>(c)].transducer.unit);
+    }
+    q.channels.push_back(cq);
+  }
+
+  // --- force pulse ---------------------------------------------------------------
+  const auto& refq = q.channels[static_cast<std::size_t>(q.referenceChannel)];
+  if (refq.peak == 0.0) {
+    q.accepted = false;
+    return q;
+  }
+  Vector f = record.samples.col(q.referenceChannel);
+  if (pre >= 2) f.array() -= f.head(pre).mean();  // remove the pre-trigger offset
+  const double noise = refq.noiseRms.value_or(0.0);
+  Eigen::Index peakIdx = 0;
+  f.cwiseAbs().maxCoeff(&peakIdx);
+  const double peak = f[peakIdx];
+  q.peakForce = peak;
+  const double sign = peak >= 0.0 ? 1.0 : -1.0;
+  const Vector s = f * sign;  // main pulse positive
+  const double absPeak = std::abs(peak);
+  if (noise > 0.0) q.forceSnrDb = 20.0 * std::log10(absPeak / noise);
+  if (pre < 2) q.notes.push_back("no pre-trigger samples: noise floor unknown");
+
+  const double trigger = options.triggerLevel.value_or(std::max(options.triggerFraction * absPeak, options.noiseFactor * noise));
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (s[i] >= trigger) {
+      q.triggerSample = i;
+      break;
+    }
+  }
+  if (!q.triggerSample) {
+    q.reasons.push_back("force never reaches the trigger level of " + fmt("%.4g", trigger) + " N");
+  } else {
+    q.preTriggerS = static_cast<double>(*q.triggerSample) / fs;
+    if (*q.triggerSample < options.minPreTriggerSamples) {
+      q.reasons.push_back("hit too early: " + std::to_string(*q.triggerSample) + " samples before the trigger, " +
+                          std::to_string(options.minPreTriggerSamples) + " needed (the start of the pulse is lost)");
+    }
+  }
+  if (q.forceSnrDb && *q.forceSnrDb < options.minForceSnrDb) {
+    q.reasons.push_back("force too weak against noise: peak " + fmt("%.1f", *q.forceSnrDb) + " dB above the noise, " +
+                        fmt("%.0f", options.minForceSnrDb) + " dB needed");
+  }
+
+  // pulse edges at max(edge fraction x peak, noise factor x noise)
+  const double edge = std::max(options.pulseEdgeFraction * absPeak, options.noiseFactor * noise);
+  Eigen::Index a = peakIdx, b = peakIdx;
+  while (a > 0 && s[a - 1] >= edge) --a;
+  while (b + 1 < n && s[b + 1] >= edge) ++b;
+  const double start = a > 0 ? crossing(s, a, edge) : 0.0;
+  const double end = b + 1 < n ? crossing(s, b + 1, edge) : static_cast<double>(n - 1);
+  q.pulseWidthS = (end - start) / fs;
+
+  // double hit: a second excursion after the main pulse has ended
+  const double reboundLevel = std::max(options.doubleHitFraction * absPeak, options.noiseFactor * noise);
+  Eigen::Index second = -1;
+  double secondPeak = 0.0;
+  for (Eigen::Index i = b + 1; i < n; ++i) {
+    if (std::abs(f[i]) >= reboundLevel && std::abs(f[i]) > secondPeak) {
+      secondPeak = std::abs(f[i]);
+      second = i;
+    }
+  }
+  if (second >= 0) {
+    q.doubleHit = true;
+    q.secondHitDelayS = static_cast<double>(second - peakIdx) / fs;
+    q.secondHitRatio = secondPeak / absPeak;
+    q.reasons.push_back("double hit: second impact " + fmt("%.1f", 1e3 * *q.secondHitDelayS) + " ms after the first at " +
+                        fmt("%.0f", 100.0 * q.secondHitRatio) + "% of its peak");
+  }
+
+  // usable band from the energy spectrum of the main pulse: rectangular window
+  // over [0, end + max(width, 4 samples)], zero elsewhere, full record length
+  const Eigen::Index guard = std::max<Eigen::Index>(4, static_cast<Eigen::Index>(std::ceil(q.pulseWidthS * fs)));
+  const Eigen::Index cut = std::min<Eigen::Index>(n, static_cast<Eigen::Index>(std::ceil(end)) + guard + 1);
+  Vector pulseOnly = Vector::Zero(n);
+  pulseOnly.head(cut) = f.head(cut);
+  if (second >= 0 && second < cut) pulseOnly.segment(b + 1, cut - b - 1).setZero();
+  auto fft = RealFft::forLength(n);
+  if (!fft) return fft.error();
+  auto spec = (*fft)->transform(pulseOnly);
+  if (!spec) return spec.error();
+  const Vector energy = spec->cwiseAbs2();  // |F(f)|^2
+  const double df = fs / static_cast<double>(n);
+  // reference level: mean over the low-frequency plateau, f <= 0.1 / width
+  const Eigen::Index plateau = std::clamp<Eigen::Index>(
+      static_cast<Eigen::Index>(0.1 / std::max(q.pulseWidthS, 1.0 / fs) / df), 1, energy.size() - 1);
+  const double ref = energy.head(plateau + 1).mean();
+  auto fallsTo = [&](double ratio) -> std::optional<double> {
+    const double level = ref * ratio;
+    for (Eigen::Index k = 1; k < energy.size(); ++k) {
+      if (energy[k] < level) {
+        // interpolate in dB between lines k-1 and k
+        const double la = 10.0 * std::log10(energy[k - 1]), lb = 10.0 * std::log10(std::max(energy[k], 1e-300));
+        const double lt = 10.0 * std::log10(level);
+        const double frac = la == lb ? 0.0 : (la - lt) / (la - lb);
+        return (static_cast<double>(k - 1) + frac) * df;
+      }
+    }
+    return std::nullopt;
+  };
+  if (ref > 0.0) {
+    q.usableBand10dBHz = fallsTo(0.1);   // -10 dB in energy
+    q.usableBand20dBHz = fallsTo(0.01);  // -20 dB
+  }
+  if (!q.usableBand10dBHz) q.notes.push_back("force spectrum stays within 10 dB up to Nyquist (tip harder than needed)");
+  if (options.minUsableBandHz > 0.0 && q.usableBand10dBHz && *q.usableBand10dBHz < options.minUsableBandHz) {
+    q.reasons.push_back("usable band too narrow: force spectrum 10 dB down at " + fmt("%.0f", *q.usableBand10dBHz) +
+                        " Hz, " + fmt("%.0f", options.minUsableBandHz) + " Hz needed (use a harder tip)");
+  }
+  q.accepted = q.reasons.empty();
+  return q;
+}
+
+}  // namespace mozzi::core::signal
