@@ -1,0 +1,314 @@
+#include "core/stability/mode_tracking.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "core/stability/root_finding.h"
+
+namespace mozzi::core::stability {
+
+namespace {
+
+Result<ComplexVector> eigenvaluesOnly(const StabilitySystem& s, double v) {
+  auto A = s.stateMatrix(v);
+  if (!A) return A.error();
+  Eigen::EigenSolver<Matrix> es(*A, false);
+  if (es.info() != Eigen::Success) return makeError(ErrorCode::NumericalFailure, "eigenvalue iteration failed", "v");
+  return ComplexVector(es.eigenvalues());
+}
+
+double share(const Root& r, const std::string& name, const std::vector<std::string>& names) {
+  double s = 0.0;
+  for (size_t k = 0; k < names.size(); ++k)
+    if (names[k] == name) s += std::norm(r.shape(static_cast<int>(k)));
+  return s;
+}
+
+// MAC = |a^H b|^2 / (|a|^2 |b|^2), shapes are unit norm.
+double mac(const ComplexVector& a, const ComplexVector& b) { return std::norm(a.dot(b)); }
+
+// Name of one root from its eigenvalue and shape (before track smoothing).
+std::string nameOf(const Root& r, const StabilitySystem& s) {
+  const double bend = share(r, "bend", s.shapeNames), torsion = share(r, "torsion", s.shapeNames);
+  if (bend > 0.5) return "fork bending";
+  if (torsion > 0.5) return "fork torsion";
+  const double roll = share(r, "roll", s.shapeNames), steer = share(r, "steer", s.shapeNames);
+  const bool oscillating = r.lambda.imag() > 0.0;
+  if (s.kind == VehicleKind::Bicycle) {
+    if (oscillating) return "weave";
+    return roll >= steer ? "capsize" : "castering";
+  }
+  // Motorcycle (Sharp 1971): wobble is the steer-dominated oscillation near
+  // 50-60 rad/s, weave the lower-frequency roll-yaw-steer oscillation, capsize
+  // the slow roll-dominated real root; other real roots are tyre-lag modes.
+  if (oscillating) return (steer > roll && r.lambda.imag() > 30.0) ? "wobble" : "weave";
+  if (roll >= steer && std::fabs(r.lambda.real()) < 10.0) return "capsize";
+  return "tyre lag";
+}
+
+}  // namespace
+
+StabilitySystem bicycleSystem(const BicycleModel& model) {
+  StabilitySystem s;
+  s.stateMatrix = [model](double v) { return model.stateMatrix(v); };
+  s.shapeNames = model.coordinates;
+  for (int i = 0; i < model.size(); ++i) {
+    s.shapeRows.push_back(i);
+    s.shapeIsRate.push_back(false);
+  }
+  s.kind = VehicleKind::Bicycle;
+  return s;
+}
+
+std::optional<double> StabilitySweep::criticalSpeed(const std::string& mode) const {
+  for (const auto& e : events)
+    if (e.mode == mode && (e.kind == "stabilises" || e.kind == "destabilises")) return e.v;
+  return std::nullopt;
+}
+
+std::optional<ModeEvent> StabilitySweep::firstEvent(const std::string& mode, const std::string& kind) const {
+  for (const auto& e : events)
+    if (e.mode == mode && e.kind == kind) return e;
+  return std::nullopt;
+}
+
+Result<std::vector<double>> speedGrid(double from, double to, double step) {
+  if (!std::isfinite(from) || !std::isfinite(to) || !std::isfinite(step)) {
+    return makeError(ErrorCode::InvalidArgument, "speed range must be finite", "speeds A:B:STEP");
+  }
+  if (!(step > 0.0)) return makeError(ErrorCode::InvalidArgument, "STEP must be positive", "speeds A:B:STEP");
+  if (to < from) return makeError(ErrorCode::InvalidArgument, "B must not be below A", "speeds A:B:STEP");
+  const double count = std::floor((to - from) / step * (1.0 + 1e-12) + 1e-6) + 1.0;
+  if (count > 1e6) return makeError(ErrorCode::InvalidArgument, "more than a million speeds", "speeds A:B:STEP");
+  std::vector<double> v;
+  for (int k = 0; k < static_cast<int>(count); ++k) v.push_back(from + k * step);
+  return v;
+}
+
+Result<SpeedPoint> solveAtSpeed(const StabilitySystem& s, double v) {
+  auto A = s.stateMatrix(v);
+  if (!A) return A.error();
+  if (s.shapeRows.size() != s.shapeNames.size() || s.shapeIsRate.size() != s.shapeNames.size() ||
+      s.shapeNames.empty()) {
+    return makeError(ErrorCode::InvalidArgument, "shape rows, names and rate flags differ in length", "stability system");
+  }
+  for (int row : s.shapeRows)
+    if (row < 0 || row >= A->rows()) return makeError(ErrorCode::InvalidArgument, "shape row out of range", "stability system");
+  Eigen::EigenSolver<Matrix> es(*A, true);
+  if (es.info() != Eigen::Success) {
+    return makeError(ErrorCode::NumericalFailure, "eigenvalue iteration failed", "v = " + std::to_string(v));
+  }
+  SpeedPoint p;
+  p.v = v;
+  const ComplexVector values = es.eigenvalues();
+  const ComplexMatrix vectors = es.eigenvectors();
+  for (int i = 0; i < values.size(); ++i) {
+    if (values(i).imag() < 0.0) continue;  // one root per conjugate pair
+    Root r;
+    r.lambda = values(i);
+    r.shape.resize(static_cast<int>(s.shapeRows.size()));
+    for (size_t k = 0; k < s.shapeRows.size(); ++k) {
+      Complex a = vectors(s.shapeRows[k], i);
+      if (s.shapeIsRate[k] && std::abs(r.lambda) > 1e-9) a /= r.lambda;
+      r.shape(static_cast<int>(k)) = a;
+    }
+    const double norm = r.shape.norm();
+    if (norm > 0.0) r.shape /= norm;
+    p.roots.push_back(r);
+  }
+  std::sort(p.roots.begin(), p.roots.end(), [](const Root& a, const Root& b) {
+    return a.lambda.imag() != b.lambda.imag() ? a.lambda.imag() > b.lambda.imag() : a.lambda.real() > b.lambda.real();
+  });
+  return p;
+}
+
+Result<StabilitySweep> sweepSpeeds(const StabilitySystem& s, const std::vector<double>& speeds) {
+  if (speeds.empty()) return makeError(ErrorCode::InvalidArgument, "no speeds", "speeds");
+  for (size_t k = 0; k < speeds.size(); ++k) {
+    if (!std::isfinite(speeds[k])) return makeError(ErrorCode::InvalidArgument, "speed is not finite", "speeds");
+    if (k > 0 && !(speeds[k] > speeds[k - 1])) {
+      return makeError(ErrorCode::InvalidArgument, "speeds must increase strictly", "speeds[" + std::to_string(k) + "]");
+    }
+  }
+  StabilitySweep out;
+  for (double v : speeds) {
+    auto p = solveAtSpeed(s, v);
+    if (!p) return p.error();
+    out.points.push_back(std::move(*p));
+  }
+
+  // Tracking: match each root to one at the previous speed by eigenvector
+  // continuity (MAC) and distance to the eigenvalue extrapolated along the track.
+  struct Track {
+    std::vector<std::pair<int, int>> samples;  // (point index, root index)
+    std::string name;
+  };
+  std::vector<Track> tracks;
+  for (size_t i = 0; i < out.points[0].roots.size(); ++i) {
+    tracks.push_back({{{0, static_cast<int>(i)}}, {}});
+    out.points[0].roots[i].track = static_cast<int>(i);
+  }
+  for (size_t k = 1; k < out.points.size(); ++k) {
+    auto& prev = out.points[k - 1].roots;
+    auto& cur = out.points[k].roots;
+    struct Cand {
+      double cost;
+      int i, j;
+    };
+    std::vector<Cand> cands;
+    for (size_t i = 0; i < prev.size(); ++i) {
+      const Track& tr = tracks[prev[i].track];
+      Complex predicted = prev[i].lambda;
+      if (tr.samples.size() >= 2 && tr.samples[tr.samples.size() - 2].first == static_cast<int>(k) - 2) {
+        const auto& [pk, pr] = tr.samples[tr.samples.size() - 2];
+        const Complex older = out.points[pk].roots[pr].lambda;
+        const double h0 = out.points[k - 1].v - out.points[pk].v, h1 = out.points[k].v - out.points[k - 1].v;
+        predicted = prev[i].lambda + (prev[i].lambda - older) * (h1 / h0);
+      }
+      for (size_t j = 0; j < cur.size(); ++j) {
+        const double scale = std::abs(prev[i].lambda) + std::abs(cur[j].lambda) + 1.0;
+        const double cost = (1.0 - mac(prev[i].shape, cur[j].shape)) + 2.0 * std::abs(cur[j].lambda - predicted) / scale;
+        cands.push_back({cost, static_cast<int>(i), static_cast<int>(j)});
+      }
+    }
+    std::sort(cands.begin(), cands.end(), [](const Cand& a, const Cand& b) { return a.cost < b.cost; });
+    std::vector<bool> usedPrev(prev.size(), false), usedCur(cur.size(), false);
+    for (const Cand& c : cands) {
+      if (usedPrev[c.i] || usedCur[c.j]) continue;
+      usedPrev[c.i] = usedCur[c.j] = true;
+      cur[c.j].track = prev[c.i].track;
+      tracks[cur[c.j].track].samples.push_back({static_cast<int>(k), c.j});
+    }
+    for (size_t j = 0; j < cur.size(); ++j) {
+      if (usedCur[j]) continue;
+      cur[j].track = static_cast<int>(tracks.size());
+      tracks.push_back({{{static_cast<int>(k), static_cast<int>(j)}}, {}});
+    }
+  }
+
+  // Naming: a track that is ever oscillatory takes the name of its oscillating
+  // samples (at the highest speed); otherwise its last sample's name.
+  for (Track& tr : tracks) {
+    std::string osc, last;
+    for (const auto& [k, r] : tr.samples) {
+      const Root& root = out.points[k].roots[r];
+      const std::string n = nameOf(root, s);
+      last = n;
+      if (root.lambda.imag() > 0.0) osc = n;
+    }
+    tr.name = osc.empty() ? last : osc;
+  }
+  // A real track that ends where a pair is born, or starts where a pair splits,
+  // belongs to that oscillatory mode (two real roots of one mode).
+  auto nearestOscillating = [&](int k, Complex lambda) -> int {
+    int best = -1;
+    double bestDist = 0.0;
+    for (const Root& r : out.points[k].roots) {
+      if (!(r.lambda.imag() > 0.0)) continue;
+      const double d = std::abs(r.lambda - lambda);
+      if (best < 0 || d < bestDist) {
+        best = r.track;
+        bestDist = d;
+      }
+    }
+    return best;
+  };
+  const int last = static_cast<int>(out.points.size()) - 1;
+  for (Track& tr : tracks) {
+    const auto [k0, r0] = tr.samples.front();
+    const auto [k1, r1] = tr.samples.back();
+    const bool everOscillating = std::any_of(tr.samples.begin(), tr.samples.end(), [&](const auto& kr) {
+      return out.points[kr.first].roots[kr.second].lambda.imag() > 0.0;
+    });
+    if (everOscillating) continue;
+    if (k1 < last) {
+      const int t = nearestOscillating(k1 + 1, out.points[k1].roots[r1].lambda);
+      if (t >= 0 && tracks[t].samples.front().first <= k1 + 1) tr.name = tracks[t].name;
+    }
+    if (k0 > 0) {
+      const int t = nearestOscillating(k0 - 1, out.points[k0].roots[r0].lambda);
+      if (t >= 0) tr.name = tracks[t].name;
+    }
+  }
+  for (auto& p : out.points)
+    for (auto& r : p.roots) r.name = tracks[r.track].name;
+
+  // Events, refined with Brent on eigenvalues only.
+  auto nearestRoot = [&](double v, Complex target, bool allowConjugates) -> Result<Complex> {
+    auto ev = eigenvaluesOnly(s, v);
+    if (!ev) return ev.error();
+    Complex best = (*ev)(0);
+    double bestDist = -1.0;
+    for (int i = 0; i < ev->size(); ++i) {
+      const Complex l = (*ev)(i);
+      if (!allowConjugates && l.imag() < 0.0) continue;
+      const double d = std::abs(l - target);
+      if (bestDist < 0.0 || d < bestDist) {
+        best = l;
+        bestDist = d;
+      }
+    }
+    return best;
+  };
+  const double tol = 1e-15;
+  for (const Track& tr : tracks) {
+    for (size_t m = 1; m < tr.samples.size(); ++m) {
+      const auto [ka, ra] = tr.samples[m - 1];
+      const auto [kb, rb] = tr.samples[m];
+      const Root& A = out.points[ka].roots[ra];
+      const Root& B = out.points[kb].roots[rb];
+      const double va = out.points[ka].v, vb = out.points[kb].v;
+      auto interp = [&](double v) { return A.lambda + (B.lambda - A.lambda) * ((v - va) / (vb - va)); };
+      const bool crossing = (A.lambda.real() < 0.0) != (B.lambda.real() < 0.0);
+      if (crossing) {
+        bool failed = false;
+        auto f = [&](double v) {
+          if (v == va) return A.lambda.real();
+          if (v == vb) return B.lambda.real();
+          auto l = nearestRoot(v, interp(v), false);
+          if (!l) failed = true;
+          return l ? l->real() : 0.0;
+        };
+        auto root = brentRoot(f, va, vb, tol, "critical speed of " + tr.name);
+        if (root && !failed) {
+          auto l = nearestRoot(*root, interp(*root), false);
+          out.events.push_back({tr.name, *root, A.lambda.real() > 0.0 ? "stabilises" : "destabilises", 0.0,
+                                l ? std::fabs(l->imag()) : 0.0});
+        }
+      }
+      const bool born = A.lambda.imag() == 0.0 && B.lambda.imag() > 0.0;
+      const bool splits = A.lambda.imag() > 0.0 && B.lambda.imag() == 0.0;
+      if (born || splits) {
+        // Two real roots meet: (l1 - l2)^2 changes sign (positive while real,
+        // -4 Im^2 when complex); the two eigenvalues nearest the merge point.
+        auto centre = [&](double v) {
+          const double ca = A.lambda.real(), cb = B.lambda.real();
+          return Complex(ca + (cb - ca) * (v - va) / (vb - va), 0.0);
+        };
+        bool failed = false;
+        auto gap = [&](double v) -> double {
+          auto ev = eigenvaluesOnly(s, v);
+          if (!ev) {
+            failed = true;
+            return 0.0;
+          }
+          std::vector<Complex> l(ev->data(), ev->data() + ev->size());
+          const Complex c = centre(v);
+          std::sort(l.begin(), l.end(), [&](Complex x, Complex y) { return std::abs(x - c) < std::abs(y - c); });
+          return ((l[0] - l[1]) * (l[0] - l[1])).real();
+        };
+        auto root = brentRoot(gap, va, vb, tol, "pair event of " + tr.name);
+        if (root && !failed) {
+          auto l = nearestRoot(*root, centre(*root), true);
+          out.events.push_back({tr.name, *root, born ? "pair born" : "pair splits", l ? l->real() : 0.0, 0.0});
+        }
+      }
+    }
+  }
+  std::sort(out.events.begin(), out.events.end(), [](const ModeEvent& a, const ModeEvent& b) { return a.v < b.v; });
+  return out;
+}
+
+}  // namespace mozzi::core::stability
