@@ -59,16 +59,24 @@ Result<std::shared_ptr<const RealFft>> RealFft::forLength(Eigen::Index n) {
   AlignedBuffer<double> in(static_cast<std::size_t>(n));
   AlignedBuffer<std::complex<double>> out(static_cast<std::size_t>(n / 2 + 1));
   fftw_plan plan;
+  fftw_plan inverse;
   {
     std::lock_guard<std::mutex> lock(plannerMutex());
     plan = fftw_plan_dft_r2c_1d(static_cast<int>(n), in.data(), reinterpret_cast<fftw_complex*>(out.data()),
                                 FFTW_ESTIMATE);
+    inverse = fftw_plan_dft_c2r_1d(static_cast<int>(n), reinterpret_cast<fftw_complex*>(out.data()), in.data(),
+                                   FFTW_ESTIMATE);
+    if ((plan == nullptr) != (inverse == nullptr)) {
+      if (plan != nullptr) fftw_destroy_plan(plan);
+      if (inverse != nullptr) fftw_destroy_plan(inverse);
+      plan = nullptr;
+    }
   }
-  if (plan == nullptr) {
+  if (plan == nullptr || inverse == nullptr) {
     return makeError(ErrorCode::NumericalFailure, "FFTW could not create a plan of length " + std::to_string(n),
                      "FFT plan");
   }
-  std::shared_ptr<const RealFft> fft(new RealFft(n, plan, fftw_alignment_of(in.data()),
+  std::shared_ptr<const RealFft> fft(new RealFft(n, plan, inverse, fftw_alignment_of(in.data()),
                                                  fftw_alignment_of(reinterpret_cast<double*>(out.data()))));
   (*cache)[n] = fft;
   return fft;
@@ -77,6 +85,21 @@ Result<std::shared_ptr<const RealFft>> RealFft::forLength(Eigen::Index n) {
 RealFft::~RealFft() {
   std::lock_guard<std::mutex> lock(plannerMutex());
   fftw_destroy_plan(static_cast<fftw_plan>(plan_));
+  fftw_destroy_plan(static_cast<fftw_plan>(inversePlan_));
+}
+
+void RealFft::inverse(const std::complex<double>* in, double* out) const {
+  // c2r overwrites its input, so the spectrum always goes through scratch.
+  thread_local AlignedBuffer<std::complex<double>> scratchIn;
+  thread_local AlignedBuffer<double> scratchOut;
+  if (scratchIn.size() < static_cast<std::size_t>(lineCount())) {
+    scratchIn = AlignedBuffer<std::complex<double>>(static_cast<std::size_t>(lineCount()));
+  }
+  if (scratchOut.size() < static_cast<std::size_t>(n_)) scratchOut = AlignedBuffer<double>(static_cast<std::size_t>(n_));
+  std::memcpy(static_cast<void*>(scratchIn.data()), in, sizeof(std::complex<double>) * static_cast<std::size_t>(lineCount()));
+  fftw_execute_dft_c2r(static_cast<fftw_plan>(inversePlan_), reinterpret_cast<fftw_complex*>(scratchIn.data()),
+                       scratchOut.data());
+  std::memcpy(out, scratchOut.data(), sizeof(double) * static_cast<std::size_t>(n_));
 }
 
 void RealFft::forward(const double* in, std::complex<double>* out) const {

@@ -58,6 +58,11 @@ class RealFft {
   // thread-local aligned scratch first.
   void forward(const double* in, std::complex<double>* out) const;
 
+  // Inverse: x_i = sum_k X_k exp(+2 pi i k i / n) over the full Hermitian
+  // spectrum (unnormalised: inverse(forward(x)) = n x). in: n/2 + 1 values
+  // (left untouched), out: n values; any pointers (copied through scratch).
+  void inverse(const std::complex<double>* in, double* out) const;
+
   // Convenience for tests and one-off use; x must hold length() values.
   Result<ComplexVector> transform(VectorRef x) const;
 
@@ -66,9 +71,11 @@ class RealFft {
   RealFft& operator=(const RealFft&) = delete;
 
  private:
-  RealFft(Eigen::Index n, void* plan, int inAlign, int outAlign) : n_(n), plan_(plan), inAlign_(inAlign), outAlign_(outAlign) {}
+  RealFft(Eigen::Index n, void* plan, void* inversePlan, int inAlign, int outAlign)
+      : n_(n), plan_(plan), inversePlan_(inversePlan), inAlign_(inAlign), outAlign_(outAlign) {}
   Eigen::Index n_;
-  void* plan_;  // fftw_plan
+  void* plan_;         // fftw_plan, r2c
+  void* inversePlan_;  // fftw_plan, c2r
   int inAlign_;
   int outAlign_;
 };

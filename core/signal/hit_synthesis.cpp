@@ -1,5 +1,7 @@
 #include "core/signal/hit_synthesis.h"
 
+#include "core/signal/fft.h"
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -46,7 +48,7 @@ Result<TimeRecord> synthesizeHammerHit(const LinearMdof& system, const HammerHit
   };
 
   const double fsFine = spec.sampleRateHz * static_cast<double>(spec.oversampling);
-  const Eigen::Index nFine = (spec.sampleCount - 1) * spec.oversampling + 1;
+  const Eigen::Index nFine = spec.sampleCount * spec.oversampling;
   const double t0 = static_cast<double>(spec.preTriggerSamples) / spec.sampleRateHz;
   auto pulse = [&](double t) {
     double f = halfSine(t, t0, spec.pulseWidthS, spec.peakForceN);
@@ -88,14 +90,36 @@ Result<TimeRecord> synthesizeHammerHit(const LinearMdof& system, const HammerHit
     c.fullScale = spec.fullScale;
     rec.channels.push_back(c);
   }
+  // Every channel on the fine grid, through the DAQ's anti-aliasing filter,
+  // then sampled at the DAQ rate.
+  Matrix fine(nFine, rec.channelCount());
+  fine.col(0) = forceFine.col(spec.excitedDof);
+  for (std::size_t j = 0; j < measured.size(); ++j) fine.col(static_cast<Eigen::Index>(j + 1)) = source->col(measured[j]);
+  if (spec.oversampling > 1) {
+    auto fft = RealFft::forLength(nFine);
+    if (!fft) return fft.error();
+    ComplexVector spectrum((*fft)->lineCount());
+    const double fc = 0.4 * spec.sampleRateHz;
+    for (Eigen::Index c = 0; c < fine.cols(); ++c) {
+      Vector col = fine.col(c);
+      (*fft)->forward(col.data(), spectrum.data());
+      for (Eigen::Index k = 0; k < spectrum.size(); ++k) {
+        // |G(f)| = 1 / sqrt(1 + (f / fc)^32): zero-phase 16th-order Butterworth magnitude
+        const double r = static_cast<double>(k) * fsFine / static_cast<double>(nFine) / fc;
+        spectrum[k] *= 1.0 / std::sqrt(1.0 + std::pow(r, 32)) / static_cast<double>(nFine);
+      }
+      (*fft)->inverse(spectrum.data(), col.data());
+      fine.col(c) = col;
+    }
+  }
   rec.samples.resize(spec.sampleCount, rec.channelCount());
   std::mt19937_64 rng(spec.seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   for (Eigen::Index k = 0; k < spec.sampleCount; ++k) {
-    const Eigen::Index fine = k * spec.oversampling;
-    rec.samples(k, 0) = forceFine(fine, spec.excitedDof) + spec.forceNoiseRms * normal(rng);
+    rec.samples(k, 0) = fine(k * spec.oversampling, 0) + spec.forceNoiseRms * normal(rng);
     for (std::size_t j = 0; j < measured.size(); ++j) {
-      rec.samples(k, static_cast<Eigen::Index>(j + 1)) = (*source)(fine, measured[j]) + spec.responseNoiseRms * normal(rng);
+      const auto c = static_cast<Eigen::Index>(j + 1);
+      rec.samples(k, c) = fine(k * spec.oversampling, c) + spec.responseNoiseRms * normal(rng);
     }
   }
   if (spec.clipFraction > 0.0) {

@@ -76,15 +76,21 @@ Result<MdofResponse> simulateMdof(const LinearMdof& sys, const MatrixRef& force,
   if (v0.size() == n) x.tail(n) = v0;
   const Matrix mInvC = mInv * sys.damping;
   const Matrix mInvK = mInv * sys.stiffness;
+  Vector next(s), fk(n), fk1(n);
   for (Eigen::Index k = 0; k < ns; ++k) {
+    fk = force.row(k).transpose();
     r.displacement.row(k) = x.head(n).transpose();
     r.velocity.row(k) = x.tail(n).transpose();
     // q'' = M^-1 (f - C q' - K q), eq. 18 at t_k
-    r.acceleration.row(k) = (mInv * force.row(k).transpose() - mInvC * x.tail(n) - mInvK * x.head(n)).transpose();
+    r.acceleration.row(k).noalias() = (mInv * fk - mInvC * x.tail(n) - mInvK * x.head(n)).transpose();
     if (k + 1 < ns) {
-      Vector next = ad * x + b0 * force.row(k).transpose();
-      if (hold == ForceHold::FirstOrder) next += b1 * force.row(k + 1).transpose();
-      x = std::move(next);
+      next.noalias() = ad * x;
+      next.noalias() += b0 * fk;
+      if (hold == ForceHold::FirstOrder) {
+        fk1 = force.row(k + 1).transpose();
+        next.noalias() += b1 * fk1;
+      }
+      x.swap(next);
     }
   }
   return r;
