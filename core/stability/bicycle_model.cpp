@@ -4,6 +4,8 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
+#include "core/stability/balance.h"
+
 namespace mozzi::core::stability {
 
 namespace {
@@ -27,6 +29,7 @@ Result<ComplexVector> eigenvaluesFixed(const BicycleModel& m, double v) {
   A.template block<N, N>(0, N).setIdentity();
   A.template block<N, N>(N, 0) = -llt.solve(Kv);
   A.template block<N, N>(N, N) = -llt.solve(Cv);
+  balanceInPlace(A);  // stiff fork joints: see balance.h
   Eigen::EigenSolver<Big> es(A, false);
   if (es.info() != Eigen::Success) return makeError(ErrorCode::NumericalFailure, "eigenvalue iteration failed", "v");
   return ComplexVector(es.eigenvalues());
@@ -81,6 +84,7 @@ Result<ComplexVector> BicycleModel::eigenvalues(double v) const {
   }
   auto A = stateMatrix(v);
   if (!A) return A.error();
+  balanceInPlace(*A);
   Eigen::EigenSolver<Matrix> es(*A, false);
   if (es.info() != Eigen::Success) return makeError(ErrorCode::NumericalFailure, "eigenvalue iteration failed", "v");
   return ComplexVector(es.eigenvalues());

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 
+#include "core/stability/balance.h"
 #include "core/stability/root_finding.h"
 
 namespace mozzi::core::stability {
@@ -14,6 +15,7 @@ namespace {
 Result<ComplexVector> eigenvaluesOnly(const StabilitySystem& s, double v) {
   auto A = s.stateMatrix(v);
   if (!A) return A.error();
+  balanceInPlace(*A);
   Eigen::EigenSolver<Matrix> es(*A, false);
   if (es.info() != Eigen::Success) return makeError(ErrorCode::NumericalFailure, "eigenvalue iteration failed", "v");
   return ComplexVector(es.eigenvalues());
@@ -32,8 +34,10 @@ double mac(const ComplexVector& a, const ComplexVector& b) { return std::norm(a.
 // Name of one root from its eigenvalue and shape (before track smoothing).
 std::string nameOf(const Root& r, const StabilitySystem& s) {
   const double bend = share(r, "bend", s.shapeNames), torsion = share(r, "torsion", s.shapeNames);
-  if (bend > 0.5) return "fork bending";
-  if (torsion > 0.5) return "fork torsion";
+  // The fork modes are steer/compliance oscillations (thesis §6.6: "dominated by
+  // steer rotation and front fork bending"); weave carries < 5% compliance.
+  if (bend >= 0.15) return "fork bending";
+  if (torsion >= 0.15) return "fork torsion";
   const double roll = share(r, "roll", s.shapeNames), steer = share(r, "steer", s.shapeNames);
   const bool oscillating = r.lambda.imag() > 0.0;
   if (s.kind == VehicleKind::Bicycle) {
@@ -96,6 +100,7 @@ Result<SpeedPoint> solveAtSpeed(const StabilitySystem& s, double v) {
   }
   for (int row : s.shapeRows)
     if (row < 0 || row >= A->rows()) return makeError(ErrorCode::InvalidArgument, "shape row out of range", "stability system");
+  const Vector scale = balanceInPlace(*A);
   Eigen::EigenSolver<Matrix> es(*A, true);
   if (es.info() != Eigen::Success) {
     return makeError(ErrorCode::NumericalFailure, "eigenvalue iteration failed", "v = " + std::to_string(v));
@@ -103,7 +108,7 @@ Result<SpeedPoint> solveAtSpeed(const StabilitySystem& s, double v) {
   SpeedPoint p;
   p.v = v;
   const ComplexVector values = es.eigenvalues();
-  const ComplexMatrix vectors = es.eigenvectors();
+  const ComplexMatrix vectors = scale.asDiagonal() * es.eigenvectors();
   for (int i = 0; i < values.size(); ++i) {
     if (values(i).imag() < 0.0) continue;  // one root per conjugate pair
     Root r;
@@ -188,17 +193,20 @@ Result<StabilitySweep> sweepSpeeds(const StabilitySystem& s, const std::vector<d
     }
   }
 
-  // Naming: a track that is ever oscillatory takes the name of its oscillating
-  // samples (at the highest speed); otherwise its last sample's name.
+  // Naming: a track that is ever oscillatory takes the most frequent name of its
+  // oscillating samples; otherwise the most frequent name of all its samples.
   for (Track& tr : tracks) {
-    std::string osc, last;
+    std::map<std::string, int> osc, all;
     for (const auto& [k, r] : tr.samples) {
       const Root& root = out.points[k].roots[r];
       const std::string n = nameOf(root, s);
-      last = n;
-      if (root.lambda.imag() > 0.0) osc = n;
+      ++all[n];
+      if (root.lambda.imag() > 0.0) ++osc[n];
     }
-    tr.name = osc.empty() ? last : osc;
+    const auto& votes = osc.empty() ? all : osc;
+    tr.name = std::max_element(votes.begin(), votes.end(), [](const auto& a, const auto& b) {
+                return a.second < b.second;
+              })->first;
   }
   // A real track that ends where a pair is born, or starts where a pair splits,
   // belongs to that oscillatory mode (two real roots of one mode).
