@@ -53,6 +53,9 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
   const double fs = record.sampleRateHz;
   const Eigen::Index n = record.sampleCount();
   const Eigen::Index pre = record.preTriggerSamples;
+  // Noise floor from the first 3/4 of the pre-trigger: the last quarter may
+  // already hold the foot of the pulse (and the DAQ filter's pre-ringing).
+  const Eigen::Index quiet = pre - pre / 4;
 
   // --- every channel: peak, noise floor, overload -----------------------------
   for (Eigen::Index c = 0; c < record.channelCount(); ++c) {
@@ -61,10 +64,10 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
     cq.name = record.channels[static_cast<std::size_t>(c)].name;
     cq.dof = record.channels[static_cast<std::size_t>(c)].dof;
     cq.peak = x.cwiseAbs().maxCoeff();
-    if (pre >= 2) {
-      const auto head = x.head(pre);
+    if (quiet >= 2) {
+      const auto head = x.head(quiet);
       const double mean = head.mean();
-      cq.noiseRms = std::sqrt((head.array() - mean).square().sum() / static_cast<double>(pre - 1));
+      cq.noiseRms = std::sqrt((head.array() - mean).square().sum() / static_cast<double>(quiet - 1));
     }
     if (cq.peak == 0.0) {
       q.reasons.push_back("no signal on " + channelText(record, c) + " (all samples are zero)");
@@ -109,7 +112,7 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
     return q;
   }
   Vector f = record.samples.col(q.referenceChannel);
-  if (pre >= 2) f.array() -= f.head(pre).mean();  // remove the pre-trigger offset
+  if (quiet >= 2) f.array() -= f.head(quiet).mean();  // remove the pre-trigger offset
   const double noise = refq.noiseRms.value_or(0.0);
   Eigen::Index peakIdx = 0;
   f.cwiseAbs().maxCoeff(&peakIdx);
@@ -119,7 +122,7 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
   const Vector s = f * sign;  // main pulse positive
   const double absPeak = std::abs(peak);
   if (noise > 0.0) q.forceSnrDb = 20.0 * std::log10(absPeak / noise);
-  if (pre < 2) q.notes.push_back("no pre-trigger samples: noise floor unknown");
+  if (quiet < 2) q.notes.push_back("too few pre-trigger samples: noise floor unknown");
 
   const double trigger = options.triggerLevel.value_or(std::max(options.triggerFraction * absPeak, options.noiseFactor * noise));
   for (Eigen::Index i = 0; i < n; ++i) {

@@ -15,7 +15,8 @@
 //  - usable band: the force energy spectrum |F(f)|^2 of the main pulse
 //    (rectangular window over pre-trigger + pulse + guard) falls 10 dB and
 //    20 dB below its low-frequency level at f_10 and f_20;
-//  - noise floor: RMS of every channel over the pre-trigger samples; the force
+//  - noise floor: RMS of every channel over the first 3/4 of the pre-trigger
+//    samples (the last quarter may hold the pulse's foot); the force
 //    peak must exceed the force noise by minForceSnrDb.
 
 #include <optional>

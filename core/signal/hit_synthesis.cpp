@@ -48,8 +48,12 @@ Result<TimeRecord> synthesizeHammerHit(const LinearMdof& system, const HammerHit
   };
 
   const double fsFine = spec.sampleRateHz * static_cast<double>(spec.oversampling);
-  const Eigen::Index nFine = spec.sampleCount * spec.oversampling;
-  const double t0 = static_cast<double>(spec.preTriggerSamples) / spec.sampleRateHz;
+  // Guard of 64 DAQ samples before and after the record: the (circular)
+  // anti-aliasing filter's ringing at the record ends falls in the guards,
+  // which are dropped.
+  const Eigen::Index guard = spec.oversampling > 1 ? 64 : 0;
+  const Eigen::Index nFine = (spec.sampleCount + 2 * guard) * spec.oversampling;
+  const double t0 = static_cast<double>(spec.preTriggerSamples + guard) / spec.sampleRateHz;
   auto pulse = [&](double t) {
     double f = halfSine(t, t0, spec.pulseWidthS, spec.peakForceN);
     if (spec.secondHitDelayS) {
@@ -104,9 +108,9 @@ Result<TimeRecord> synthesizeHammerHit(const LinearMdof& system, const HammerHit
       Vector col = fine.col(c);
       (*fft)->forward(col.data(), spectrum.data());
       for (Eigen::Index k = 0; k < spectrum.size(); ++k) {
-        // |G(f)| = 1 / sqrt(1 + (f / fc)^32): zero-phase 16th-order Butterworth magnitude
+        // |G(f)| = 1 / sqrt(1 + (f / fc)^8): zero-phase 4th-order Butterworth magnitude
         const double r = static_cast<double>(k) * fsFine / static_cast<double>(nFine) / fc;
-        spectrum[k] *= 1.0 / std::sqrt(1.0 + std::pow(r, 32)) / static_cast<double>(nFine);
+        spectrum[k] *= 1.0 / std::sqrt(1.0 + std::pow(r, 8)) / static_cast<double>(nFine);
       }
       (*fft)->inverse(spectrum.data(), col.data());
       fine.col(c) = col;
@@ -116,10 +120,11 @@ Result<TimeRecord> synthesizeHammerHit(const LinearMdof& system, const HammerHit
   std::mt19937_64 rng(spec.seed);
   std::normal_distribution<double> normal(0.0, 1.0);
   for (Eigen::Index k = 0; k < spec.sampleCount; ++k) {
-    rec.samples(k, 0) = fine(k * spec.oversampling, 0) + spec.forceNoiseRms * normal(rng);
+    const Eigen::Index at = (k + guard) * spec.oversampling;
+    rec.samples(k, 0) = fine(at, 0) + spec.forceNoiseRms * normal(rng);
     for (std::size_t j = 0; j < measured.size(); ++j) {
       const auto c = static_cast<Eigen::Index>(j + 1);
-      rec.samples(k, c) = fine(k * spec.oversampling, c) + spec.responseNoiseRms * normal(rng);
+      rec.samples(k, c) = fine(at, c) + spec.responseNoiseRms * normal(rng);
     }
   }
   if (spec.clipFraction > 0.0) {

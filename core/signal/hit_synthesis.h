@@ -7,7 +7,7 @@
 // The response is simulated exactly (mdof_simulation.h, first-order hold) on a
 // grid `oversampling` times finer than the DAQ rate and then sampled at the DAQ
 // rate. Every channel passes the same anti-aliasing filter on the fine grid, a
-// zero-phase 16th-order Butterworth magnitude 1/sqrt(1 + (f/fc)^32) with
+// zero-phase 4th-order Butterworth magnitude 1/sqrt(1 + (f/fc)^8) with
 // fc = 0.4 fs (as a DAQ's filter, it cancels in H = X/F and keeps the force
 // pulse's spectrum above fs/2 from aliasing into the band). The pulse starts at
 // the trigger instant t = preTriggerSamples / fs.
