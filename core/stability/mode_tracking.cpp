@@ -31,25 +31,46 @@ double share(const Root& r, const std::string& name, const std::vector<std::stri
 // MAC = |a^H b|^2 / (|a|^2 |b|^2), shapes are unit norm.
 double mac(const ComplexVector& a, const ComplexVector& b) { return std::norm(a.dot(b)); }
 
-// Name of one root from its eigenvalue and shape (before track smoothing).
-std::string nameOf(const Root& r, const StabilitySystem& s) {
-  const double bend = share(r, "bend", s.shapeNames), torsion = share(r, "torsion", s.shapeNames);
-  // The fork modes are steer/compliance oscillations (thesis §6.6: "dominated by
-  // steer rotation and front fork bending"); weave carries < 5% compliance.
-  if (bend >= 0.15) return "fork bending";
-  if (torsion >= 0.15) return "fork torsion";
-  const double roll = share(r, "roll", s.shapeNames), steer = share(r, "steer", s.shapeNames);
-  const bool oscillating = r.lambda.imag() > 0.0;
-  if (s.kind == VehicleKind::Bicycle) {
-    if (oscillating) return "weave";
-    return roll >= steer ? "capsize" : "castering";
+// Names of the roots at one speed from their eigenvalues and shapes (before
+// the track vote).
+std::vector<std::string> namesAtSpeed(const std::vector<Root>& roots, const StabilitySystem& s) {
+  std::vector<std::string> names(roots.size());
+  int weaveCandidate = -1;
+  for (size_t i = 0; i < roots.size(); ++i) {
+    const Root& r = roots[i];
+    const double bend = share(r, "bend", s.shapeNames), torsion = share(r, "torsion", s.shapeNames);
+    const double roll = share(r, "roll", s.shapeNames), steer = share(r, "steer", s.shapeNames);
+    const bool oscillating = r.lambda.imag() > 0.0;
+    // The fork modes are steer/compliance oscillations (thesis §6.6: "dominated
+    // by steer rotation and front fork bending"); weave carries < 5% compliance.
+    if (bend >= 0.15 && oscillating) {
+      names[i] = "fork bending";
+    } else if (torsion >= 0.15 && oscillating) {
+      names[i] = "fork torsion";
+    } else if (s.kind == VehicleKind::Bicycle) {
+      // Meijaard et al. (2007) §6: weave oscillates, capsize is the roll-dominated
+      // real root, castering the steer-dominated one.
+      names[i] = oscillating ? "weave" : (roll >= steer ? "capsize" : "castering");
+    } else if (oscillating) {
+      // Sharp (1971): wobble is the steer-dominated oscillation near 50-60 rad/s;
+      // weave the lowest-frequency other oscillation; remaining oscillations
+      // come from the tyre lag.
+      if (steer > 0.5 && r.lambda.imag() > 30.0) {
+        names[i] = "wobble";
+      } else {
+        names[i] = "tyre lag";
+        if (weaveCandidate < 0 || r.lambda.imag() < roots[weaveCandidate].lambda.imag()) {
+          weaveCandidate = static_cast<int>(i);
+        }
+      }
+    } else {
+      // capsize: the slow real root (roll and heading); other real roots are
+      // steer or tyre-lag relaxations.
+      names[i] = (std::fabs(r.lambda.real()) < 10.0 && steer < 0.5) ? "capsize" : "tyre lag";
+    }
   }
-  // Motorcycle (Sharp 1971): wobble is the steer-dominated oscillation near
-  // 50-60 rad/s, weave the lower-frequency roll-yaw-steer oscillation, capsize
-  // the slow roll-dominated real root; other real roots are tyre-lag modes.
-  if (oscillating) return (steer > roll && r.lambda.imag() > 30.0) ? "wobble" : "weave";
-  if (roll >= steer && std::fabs(r.lambda.real()) < 10.0) return "capsize";
-  return "tyre lag";
+  if (weaveCandidate >= 0) names[weaveCandidate] = "weave";
+  return names;
 }
 
 }  // namespace
@@ -195,11 +216,13 @@ Result<StabilitySweep> sweepSpeeds(const StabilitySystem& s, const std::vector<d
 
   // Naming: a track that is ever oscillatory takes the most frequent name of its
   // oscillating samples; otherwise the most frequent name of all its samples.
+  std::vector<std::vector<std::string>> sampleNames;
+  for (const auto& p : out.points) sampleNames.push_back(namesAtSpeed(p.roots, s));
   for (Track& tr : tracks) {
     std::map<std::string, int> osc, all;
     for (const auto& [k, r] : tr.samples) {
       const Root& root = out.points[k].roots[r];
-      const std::string n = nameOf(root, s);
+      const std::string& n = sampleNames[k][r];
       ++all[n];
       if (root.lambda.imag() > 0.0) ++osc[n];
     }
