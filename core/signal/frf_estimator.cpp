@@ -304,6 +304,36 @@ Result<FrfMatrix> SpectralAverager::frf(FrfEstimator estimator) const {
   return m;
 }
 
+Result<FrfMatrix> selectBand(const FrfMatrix& frf, double fLoHz, double fHiHz) {
+  std::vector<Eigen::Index> keep;
+  for (Eigen::Index k = 0; k < frf.lineCount(); ++k) {
+    if (frf.frequencyHz[k] >= fLoHz && frf.frequencyHz[k] <= fHiHz) keep.push_back(k);
+  }
+  if (keep.empty()) {
+    return makeError(ErrorCode::InvalidArgument,
+                     "no frequency line between " + std::to_string(fLoHz) + " and " + std::to_string(fHiHz) + " Hz",
+                     "FRF band selection");
+  }
+  FrfMatrix out;
+  out.responses = frf.responses;
+  out.references = frf.references;
+  out.type = frf.type;
+  const auto m = static_cast<Eigen::Index>(keep.size());
+  out.frequencyHz.resize(m);
+  for (Eigen::Index r = 0; r < m; ++r) out.frequencyHz[r] = frf.frequencyHz[keep[static_cast<std::size_t>(r)]];
+  for (const auto& block : frf.h) {
+    ComplexMatrix b(m, block.cols());
+    for (Eigen::Index r = 0; r < m; ++r) b.row(r) = block.row(keep[static_cast<std::size_t>(r)]);
+    out.h.push_back(std::move(b));
+  }
+  for (const auto& block : frf.coherence) {
+    Matrix b(m, block.cols());
+    for (Eigen::Index r = 0; r < m; ++r) b.row(r) = block.row(keep[static_cast<std::size_t>(r)]);
+    out.coherence.push_back(std::move(b));
+  }
+  return out;
+}
+
 Result<FrfMatrix> estimateFrf(const std::vector<TimeRecord>& hits, const FrfOptions& options) {
   if (hits.empty()) return makeError(ErrorCode::InvalidArgument, "no hits given", "FRF estimate");
   auto avg = SpectralAverager::create(hits.front(), options);

@@ -99,6 +99,11 @@ class SpectralAverager {
   std::shared_ptr<AlignedBuffer<std::complex<double>>> fSpec_, xSpec_;
 };
 
+// The lines of `frf` with fLo <= f <= fHi (FRFs and coherence), e.g. to drop
+// the DC line before a conversion that divides by omega (FrfMatrix::convertedTo)
+// or to keep the usable band. Error when no line is left.
+Result<FrfMatrix> selectBand(const FrfMatrix& frf, double fLoHz, double fHiHz);
+
 // All hits through one SpectralAverager.
 Result<FrfMatrix> estimateFrf(const std::vector<TimeRecord>& hits, const FrfOptions& options);
 
