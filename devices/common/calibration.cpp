@@ -33,8 +33,11 @@ std::int32_t ChannelChain::rawFromEngineering(double value) const {
 }
 
 double ChannelChain::fullScaleEngineering() const {
-  const double v = std::min(std::abs(range.minVolts), std::abs(range.maxVolts));
-  return std::abs(engineeringFromVolts(v > 0.0 ? v : std::max(std::abs(range.minVolts), std::abs(range.maxVolts))));
+  // The smaller magnitude of the two end codes (for +/-10 V: 10 V - 1 LSB), so
+  // that a clipped sample, which reads exactly the end code, counts as >= full scale.
+  const double top = std::abs(engineeringFromVolts(voltsFromCode(maxCode())));
+  const double bottom = std::abs(engineeringFromVolts(voltsFromCode(0)));
+  return std::min(top, bottom);
 }
 
 core::Result<void> validateChain(const ChannelChain& chain, const std::string& where) {

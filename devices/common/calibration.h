@@ -36,7 +36,8 @@ struct ChannelChain {
   // Inverse path for simulators: the raw code a device with this calibration
   // would send for a physical value [EU] (quantised, clamped at full scale).
   std::int32_t rawFromEngineering(double value) const;
-  // |EU| at which the range saturates (the smaller of the two range ends).
+  // |EU| at which the range saturates: the smaller magnitude of the values of
+  // the two end codes (a clipped sample reads exactly one of them).
   double fullScaleEngineering() const;
   // A corrected code at either end of the range counts as "at full scale".
   bool atFullScale(std::int32_t corrected) const { return corrected <= 0 || corrected >= maxCode(); }

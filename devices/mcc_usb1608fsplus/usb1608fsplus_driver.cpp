@@ -226,14 +226,33 @@ class Usb1608FsPlusDevice final : public Device {
     }
   }
 
+  // Appends the scans of a packet; true when the requested count is reached.
+  bool absorb(const Packet& p) {
+    if (p.bytes.empty()) return false;
+    pendingScans_ += assembler_->append(p.bytes.data(), static_cast<int>(p.bytes.size()), pending_);
+    if (config_.scanCount > 0 && delivered_ + pendingScans_ >= config_.scanCount) {
+      const std::int64_t keep = config_.scanCount - delivered_;
+      pending_.resize(static_cast<std::size_t>(keep) * chains_.size());
+      pendingScans_ = keep;
+      return true;
+    }
+    return false;
+  }
+
   void finish(EndReason reason, const std::string& message) {
     transport_->stopBulkIn();
     if (!transport_->disconnected()) (void)transport_->controlOut(kAInScanStop, 0, 0, {});
-    emitBlocks(true);
+    // Every transfer is back now; data that completed before the end (e.g.
+    // reaped after an unplug was first noticed) is handed on, in order.
+    std::deque<Packet> rest;
     {
       std::lock_guard<std::mutex> l(queueMutex_);
-      queue_.clear();
+      rest.swap(queue_);
     }
+    bool full = config_.scanCount > 0 && delivered_ + pendingScans_ >= config_.scanCount;
+    for (const auto& p : rest)
+      if (!full && !p.stopRequest) full = absorb(p);
+    emitBlocks(true);
     sink_(StreamEvent(StreamEnd{reason, delivered_, message}));
   }
 
@@ -241,16 +260,14 @@ class Usb1608FsPlusDevice final : public Device {
     for (;;) {
       Packet p = pop();
       if (p.stopRequest) return finish(EndReason::Stopped, "stopped by the user");
+      // A failed transfer may carry the data of the packets that arrived
+      // before the failure: keep it.
+      if (p.status != usb::TransferStatus::Completed && absorb(p))
+        return finish(EndReason::Completed, std::to_string(config_.scanCount) + " scans acquired");
       switch (p.status) {
         case usb::TransferStatus::Completed: {
           if (p.bytes.empty()) break;  // zero-length packet after an exact multiple of 64 bytes
-          pendingScans_ += assembler_->append(p.bytes.data(), static_cast<int>(p.bytes.size()), pending_);
-          if (config_.scanCount > 0 && delivered_ + pendingScans_ >= config_.scanCount) {
-            const std::int64_t keep = config_.scanCount - delivered_;
-            pending_.resize(static_cast<std::size_t>(keep) * chains_.size());
-            pendingScans_ = keep;
-            return finish(EndReason::Completed, std::to_string(config_.scanCount) + " scans acquired");
-          }
+          if (absorb(p)) return finish(EndReason::Completed, std::to_string(config_.scanCount) + " scans acquired");
           emitBlocks(false);
           break;
         }
