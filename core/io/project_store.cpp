@@ -1,5 +1,8 @@
 #include "core/io/project_store.h"
 
+#include "core/io/project_schema.h"
+#include "core/io/project_sql.h"
+
 #include <fcntl.h>
 #include <sqlite3.h>
 #include <sys/file.h>
@@ -13,83 +16,40 @@
 namespace mozzi::core::io {
 namespace {
 
-// Schema versions in order; migration N takes a version N-1 file to version N.
-// Version 1 is the foundation: metadata and specimens. Later issues append.
-const char* const kMigrations[] = {
-    // 1
-    R"sql(
-CREATE TABLE meta (
-  key   TEXT PRIMARY KEY NOT NULL,
-  value TEXT NOT NULL
-) STRICT;
-CREATE TABLE specimen (
-  id          INTEGER PRIMARY KEY,
-  name        TEXT NOT NULL UNIQUE,
-  kind        TEXT NOT NULL,
-  description TEXT NOT NULL DEFAULT ''
-) STRICT;
-)sql",
-};
-constexpr int kSchemaVersion = static_cast<int>(sizeof(kMigrations) / sizeof(kMigrations[0]));
+using sql::exec;
+using sql::queryInt;
+using sql::sqliteError;
 
-Error sqliteError(sqlite3* db, const std::string& what, const std::string& where) {
-  const int code = db ? sqlite3_errcode(db) : SQLITE_ERROR;
-  ErrorCode kind = ErrorCode::IoError;
-  if (code == SQLITE_NOTADB || code == SQLITE_CORRUPT) kind = ErrorCode::Corrupt;
-  if (code == SQLITE_BUSY || code == SQLITE_LOCKED) kind = ErrorCode::Locked;
-  return makeError(kind, what + ": " + (db ? sqlite3_errmsg(db) : "out of memory"), where);
-}
+int schemaVersionCount() { return static_cast<int>(projectMigrations().size()); }
 
-Result<void> exec(sqlite3* db, const char* sql, const std::string& where) {
-  char* message = nullptr;
-  if (sqlite3_exec(db, sql, nullptr, nullptr, &message) != SQLITE_OK) {
-    std::string text = message ? message : "unknown error";
-    sqlite3_free(message);
-    return sqliteError(db, text, where);
-  }
-  return {};
-}
-
-Result<std::int64_t> queryInt(sqlite3* db, const char* sql, const std::string& where) {
-  sqlite3_stmt* stmt = nullptr;
-  if (sqlite3_prepare_v2(db, sql, -1, &stmt, nullptr) != SQLITE_OK) return sqliteError(db, sql, where);
-  std::int64_t value = 0;
-  const int rc = sqlite3_step(stmt);
-  if (rc == SQLITE_ROW) value = sqlite3_column_int64(stmt, 0);
-  sqlite3_finalize(stmt);
-  if (rc != SQLITE_ROW && rc != SQLITE_DONE) return sqliteError(db, sql, where);
-  return value;
-}
-
-std::string nowUtc() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buffer[32];
-  std::strftime(buffer, sizeof buffer, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buffer;
-}
-
-// Applies migrations from the file's version to kSchemaVersion, each in its own
-// transaction with user_version bumped inside it.
-Result<void> migrate(sqlite3* db, int fromVersion, const std::string& path) {
-  for (int v = fromVersion + 1; v <= kSchemaVersion; ++v) {
+// Applies migrations from the file's version to the current one, each in its
+// own transaction with user_version bumped inside it. The first migration also
+// stamps the application id and the creation metadata, so a new project
+// appears complete or not at all.
+Result<void> migrate(sqlite3* db, int fromVersion, const std::string& path, const std::string& mozziVersion) {
+  const auto& migrations = projectMigrations();
+  for (int v = fromVersion + 1; v <= schemaVersionCount(); ++v) {
     const std::string where = path + ", migration to schema " + std::to_string(v);
-    if (auto r = exec(db, "BEGIN IMMEDIATE", where); !r) return r;
-    auto r = exec(db, kMigrations[v - 1], where);
-    if (r) r = exec(db, ("PRAGMA user_version = " + std::to_string(v)).c_str(), where);
-    if (r) r = exec(db, "COMMIT", where);
-    if (!r) {
-      (void)exec(db, "ROLLBACK", where);
-      return r;
+    sql::Transaction tx(db, where);
+    if (!tx.begun()) return tx.begun();
+    if (auto r = exec(db, migrations[static_cast<std::size_t>(v - 1)], where); !r) return r;
+    if (v == 1) {
+      if (auto r = exec(db, ("PRAGMA application_id = " + std::to_string(kProjectApplicationId)).c_str(), where); !r) {
+        return r;
+      }
+      sql::Statement meta(db, "INSERT INTO meta(key, value) VALUES ('created_utc', ?1), ('mozzi_version', ?2)");
+      meta.bind(1, sql::nowUtc()).bind(2, mozziVersion);
+      if (meta.step() != SQLITE_DONE) return sqliteError(db, "cannot write project metadata", where);
     }
+    if (auto r = exec(db, ("PRAGMA user_version = " + std::to_string(v)).c_str(), where); !r) return r;
+    if (auto r = tx.commit(); !r) return r;
   }
   return {};
 }
 
 }  // namespace
 
-int ProjectStore::currentSchemaVersion() { return kSchemaVersion; }
+int ProjectStore::currentSchemaVersion() { return schemaVersionCount(); }
 
 ProjectStore::ProjectStore(ProjectStore&& other) noexcept { *this = std::move(other); }
 
@@ -101,6 +61,7 @@ ProjectStore& ProjectStore::operator=(ProjectStore&& other) noexcept {
     readOnly_ = other.readOnly_;
     readOnlyReason_ = std::move(other.readOnlyReason_);
     lockFd_ = std::exchange(other.lockFd_, -1);
+    hitEncoding_ = other.hitEncoding_;
   }
   return *this;
 }
@@ -125,22 +86,9 @@ Result<ProjectStore> ProjectStore::create(const std::string& path, const std::st
     sqlite3_close_v2(db);
     return e;
   }
-  auto r = exec(db,
-                ("PRAGMA application_id = " + std::to_string(kProjectApplicationId) +
-                 "; PRAGMA journal_mode = WAL; PRAGMA foreign_keys = ON;")
-                    .c_str(),
-                path);
-  if (r) r = migrate(db, 0, path);
-  if (r) {
-    sqlite3_stmt* stmt = nullptr;
-    sqlite3_prepare_v2(db, "INSERT INTO meta(key, value) VALUES ('created_utc', ?1), ('mozzi_version', ?2)", -1,
-                       &stmt, nullptr);
-    const std::string created = nowUtc();
-    sqlite3_bind_text(stmt, 1, created.c_str(), -1, SQLITE_TRANSIENT);
-    sqlite3_bind_text(stmt, 2, mozziVersion.c_str(), -1, SQLITE_TRANSIENT);
-    if (sqlite3_step(stmt) != SQLITE_DONE) r = sqliteError(db, "cannot write project metadata", path);
-    sqlite3_finalize(stmt);
-  }
+  // journal_mode cannot change inside a transaction; it writes no user data.
+  auto r = exec(db, "PRAGMA journal_mode = WAL; PRAGMA synchronous = FULL; PRAGMA foreign_keys = ON;", path);
+  if (r) r = migrate(db, 0, path, mozziVersion);
   sqlite3_close_v2(db);
   if (!r) {
     std::filesystem::remove(path, ec);
@@ -200,18 +148,26 @@ Result<ProjectStore> ProjectStore::open(const std::string& path, OpenMode mode) 
 
   auto version = queryInt(store.db_, "PRAGMA user_version", path);
   if (!version) return version.error();
-  if (*version > kSchemaVersion) {
+  if (*version > schemaVersionCount()) {
     return makeError(ErrorCode::Unsupported,
                      "the project was written by a newer Mozzi (schema " + std::to_string(*version) +
-                         ", this version reads up to " + std::to_string(kSchemaVersion) + ")",
+                         ", this version reads up to " + std::to_string(schemaVersionCount()) + ")",
                      path);
   }
+  if (*version < 1) {
+    return makeError(ErrorCode::Corrupt, "not a Mozzi project: the file has no schema (an interrupted creation?)",
+                     path);
+  }
+  // synchronous = FULL: in WAL mode every COMMIT fsyncs the WAL, so a
+  // committed hit survives a power cut as well as a process crash (measured
+  // cost in docs/performance/project.md).
+  if (auto r = exec(store.db_, "PRAGMA foreign_keys = ON; PRAGMA synchronous = FULL;", path); !r) return r.error();
   if (!store.readOnly_) {
-    if (auto r = exec(store.db_, "PRAGMA journal_mode = WAL; PRAGMA foreign_keys = ON;", path); !r) return r.error();
-    if (*version < kSchemaVersion) {
-      if (auto r = migrate(store.db_, static_cast<int>(*version), path); !r) return r.error();
+    if (auto r = exec(store.db_, "PRAGMA journal_mode = WAL", path); !r) return r.error();
+    if (*version < schemaVersionCount()) {
+      if (auto r = migrate(store.db_, static_cast<int>(*version), path, {}); !r) return r.error();
     }
-  } else if (*version < kSchemaVersion) {
+  } else if (*version < schemaVersionCount()) {
     store.readOnlyReason_ += store.readOnlyReason_.empty() ? "" : "; ";
     store.readOnlyReason_ += "older schema, opened read-only without migration";
   }
@@ -226,64 +182,68 @@ int ProjectStore::schemaVersion() const {
 Result<ProjectSummary> ProjectStore::summary() const {
   ProjectSummary s;
   s.schemaVersion = schemaVersion();
-  sqlite3_stmt* stmt = nullptr;
-  if (sqlite3_prepare_v2(db_, "SELECT key, value FROM meta", -1, &stmt, nullptr) != SQLITE_OK) {
-    return sqliteError(db_, "cannot read project metadata", path_);
+  {
+    sql::Statement stmt(db_, "SELECT key, value FROM meta");
+    if (!stmt.ok()) return sqliteError(db_, "cannot read project metadata", path_);
+    int rc;
+    while ((rc = stmt.step()) == SQLITE_ROW) {
+      const std::string key = sql::columnText(stmt.get(), 0);
+      if (key == "created_utc") s.createdUtc = sql::columnText(stmt.get(), 1);
+      if (key == "mozzi_version") s.mozziVersion = sql::columnText(stmt.get(), 1);
+    }
+    if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read project metadata", path_);
   }
-  while (sqlite3_step(stmt) == SQLITE_ROW) {
-    const std::string key = reinterpret_cast<const char*>(sqlite3_column_text(stmt, 0));
-    const std::string value = reinterpret_cast<const char*>(sqlite3_column_text(stmt, 1));
-    if (key == "created_utc") s.createdUtc = value;
-    if (key == "mozzi_version") s.mozziVersion = value;
+  {
+    sql::Statement stmt(db_, "SELECT id, name, kind, description FROM specimen ORDER BY id");
+    if (!stmt.ok()) return sqliteError(db_, "cannot read specimens", path_);
+    int rc;
+    while ((rc = stmt.step()) == SQLITE_ROW) {
+      ProjectSummary::Specimen sp;
+      sp.id = sqlite3_column_int64(stmt.get(), 0);
+      sp.name = sql::columnText(stmt.get(), 1);
+      sp.kind = sql::columnText(stmt.get(), 2);
+      sp.description = sql::columnText(stmt.get(), 3);
+      s.specimens.push_back(std::move(sp));
+    }
+    if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read specimens", path_);
   }
-  sqlite3_finalize(stmt);
-
-  if (sqlite3_prepare_v2(db_, "SELECT id, name, kind, description FROM specimen ORDER BY id", -1, &stmt, nullptr) !=
-      SQLITE_OK) {
-    return sqliteError(db_, "cannot read specimens", path_);
-  }
-  while (sqlite3_step(stmt) == SQLITE_ROW) {
-    ProjectSummary::Specimen sp;
-    sp.id = sqlite3_column_int64(stmt, 0);
-    sp.name = reinterpret_cast<const char*>(sqlite3_column_text(stmt, 1));
-    sp.kind = reinterpret_cast<const char*>(sqlite3_column_text(stmt, 2));
-    sp.description = reinterpret_cast<const char*>(sqlite3_column_text(stmt, 3));
-    s.specimens.push_back(std::move(sp));
-  }
-  sqlite3_finalize(stmt);
-
-  if (sqlite3_prepare_v2(db_, "SELECT name FROM sqlite_schema WHERE type = 'table' AND name NOT LIKE 'sqlite_%' "
-                              "AND name <> 'meta' ORDER BY name",
-                         -1, &stmt, nullptr) != SQLITE_OK) {
-    return sqliteError(db_, "cannot list tables", path_);
-  }
-  std::vector<std::string> tables;
-  while (sqlite3_step(stmt) == SQLITE_ROW) tables.emplace_back(reinterpret_cast<const char*>(sqlite3_column_text(stmt, 0)));
-  sqlite3_finalize(stmt);
-  for (const auto& table : tables) {
-    auto n = queryInt(db_, ("SELECT count(*) FROM \"" + table + "\"").c_str(), path_);
+  for (const char* table : projectDataTables()) {
+    auto n = queryInt(db_, (std::string("SELECT count(*) FROM ") + table).c_str(), path_);
     if (!n) return n.error();
     s.counts.push_back({table, *n});
   }
   return s;
 }
 
+Result<void> ProjectStore::requireWritable() const {
+  if (readOnly_) return makeError(ErrorCode::Locked, "the project is open read-only: " + readOnlyReason_, path_);
+  return {};
+}
+
 Result<std::int64_t> ProjectStore::addSpecimen(const std::string& name, const std::string& kind,
                                                const std::string& description) {
-  if (readOnly_) return makeError(ErrorCode::Locked, "the project is open read-only: " + readOnlyReason_, path_);
+  if (auto r = requireWritable(); !r) return r.error();
   if (name.empty()) return makeError(ErrorCode::InvalidArgument, "a specimen needs a name", path_);
-  sqlite3_stmt* stmt = nullptr;
-  if (sqlite3_prepare_v2(db_, "INSERT INTO specimen(name, kind, description) VALUES (?1, ?2, ?3)", -1, &stmt,
-                         nullptr) != SQLITE_OK) {
-    return sqliteError(db_, "cannot add specimen", path_);
-  }
-  sqlite3_bind_text(stmt, 1, name.c_str(), -1, SQLITE_TRANSIENT);
-  sqlite3_bind_text(stmt, 2, kind.c_str(), -1, SQLITE_TRANSIENT);
-  sqlite3_bind_text(stmt, 3, description.c_str(), -1, SQLITE_TRANSIENT);
-  const int rc = sqlite3_step(stmt);
-  sqlite3_finalize(stmt);
-  if (rc != SQLITE_DONE) return sqliteError(db_, "cannot add specimen '" + name + "'", path_);
-  return sqlite3_last_insert_rowid(db_);
+  sql::Transaction tx(db_, path_ + ", specimen '" + name + "'");
+  if (!tx.begun()) return tx.begun().error();
+  sql::Statement stmt(db_, "INSERT INTO specimen(name, kind, description) VALUES (?1, ?2, ?3)");
+  stmt.bind(1, name).bind(2, kind).bind(3, description);
+  if (stmt.step() != SQLITE_DONE) return sqliteError(db_, "cannot add specimen '" + name + "'", path_);
+  const std::int64_t id = sqlite3_last_insert_rowid(db_);
+  if (auto r = tx.commit(); !r) return r.error();
+  return id;
+}
+
+Result<void> ProjectStore::deleteSpecimen(std::int64_t specimenId) {
+  if (auto r = requireWritable(); !r) return r.error();
+  const std::string where = path_ + ", specimen " + std::to_string(specimenId);
+  sql::Transaction tx(db_, where);
+  if (!tx.begun()) return tx.begun();
+  sql::Statement stmt(db_, "DELETE FROM specimen WHERE id = ?1");
+  stmt.bind(1, specimenId);
+  if (stmt.step() != SQLITE_DONE) return sqliteError(db_, "cannot delete the specimen", where);
+  if (sqlite3_changes(db_) != 1) return makeError(ErrorCode::NotFound, "no such specimen", where);
+  return tx.commit();
 }
 
 Result<void> ProjectStore::saveAs(const std::string& path) const {

@@ -1,15 +1,25 @@
 #pragma once
 // The project file: one SQLite database per project (.mozzi), WAL mode, foreign
-// keys on, application_id 'MOZZ' and user_version = schema version. Opening
+// keys on, application_id 'MOZZ' and user_version = schema version (the tables
+// are in project_schema.cpp, the format in docs/formats/project.md). Opening
 // checks that the file is a Mozzi project and passes PRAGMA quick_check; a file
 // another instance holds open for writing opens read-only.
+//
+// Durability: every write runs in one explicit BEGIN IMMEDIATE ... COMMIT
+// transaction, with synchronous = FULL, so a method that returns success has
+// its data in the WAL on disk (fsync'd) and a process crash, a kill or a power
+// cut afterwards loses nothing of it. commitHit is the campaign's hot path:
+// one hit, one transaction, the row id returned only after COMMIT.
 
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "core/common/frf_matrix.h"
 #include "core/common/result.h"
+#include "core/io/project_records.h"
+#include "core/io/sample_codec.h"
 
 struct sqlite3;
 
@@ -56,6 +66,58 @@ class ProjectStore {
 
   Result<ProjectSummary> summary() const;
   Result<std::int64_t> addSpecimen(const std::string& name, const std::string& kind, const std::string& description);
+  // Deletes a specimen and everything it owns (mesh, set-ups, campaigns, hits,
+  // FRFs, results, tests, models, analyses) in one transaction.
+  Result<void> deleteSpecimen(std::int64_t specimenId);
+
+  // Mesh of a specimen. setMesh replaces the whole mesh; lines and faces name
+  // nodes by label, which must exist in the same mesh.
+  Result<void> setMesh(std::int64_t specimenId, const StoredMesh& mesh);
+  Result<StoredMesh> mesh(std::int64_t specimenId) const;
+
+  Result<std::int64_t> addRigSetup(const StoredRigSetup& setup);
+  Result<StoredRigSetup> rigSetup(std::int64_t rigSetupId) const;
+
+  Result<std::int64_t> addCampaign(const StoredCampaign& campaign);
+  Result<std::vector<StoredCampaign>> campaigns(std::int64_t specimenId) const;
+
+  // Commits one hit (accepted or rejected) in its own transaction and returns
+  // its row id only after COMMIT has returned: when this returns a value the
+  // hit survives a crash of the process or the machine. The sample blob is
+  // encoded with hitEncoding() and carries a CRC-32 of the raw floats.
+  Result<std::int64_t> commitHit(const StoredHit& hit);
+  Result<StoredHit> hit(std::int64_t hitId) const;
+  Result<std::vector<HitInfo>> hits(std::int64_t campaignId) const;
+  // The technician's later verdict on a hit (re-accept, reject with reasons).
+  Result<void> setHitAcceptance(std::int64_t hitId, bool accepted, std::uint32_t qualityFlags,
+                                const std::string& reasons);
+  SampleEncoding hitEncoding() const { return hitEncoding_; }
+  void setHitEncoding(SampleEncoding encoding) { hitEncoding_ = encoding; }
+
+  // FRF sets: one FrfMatrix each, optionally tied to the campaign and hits it
+  // was estimated from. info.id/lineCount/... are filled from `frf`.
+  Result<std::int64_t> addFrfSet(const FrfSetInfo& info, const FrfMatrix& frf,
+                                 const std::vector<std::int64_t>& hitIds = {});
+  Result<std::vector<FrfSetInfo>> frfSets() const;
+  Result<FrfMatrix> frfSet(std::int64_t frfSetId) const;
+
+  Result<std::int64_t> addModalResult(const ModalResultInfo& info, const ModalTable& table);
+  Result<std::vector<ModalResultInfo>> modalResults() const;
+  Result<ModalTable> modalResult(std::int64_t modalResultId) const;
+
+  Result<std::int64_t> addRigTest(const StoredRigTest& test);
+  Result<StoredRigTest> rigTest(std::int64_t rigTestId) const;
+  // Time data of one step of a rig test (same blob layout as hits).
+  Result<std::int64_t> addRigTestRecord(std::int64_t rigTestId, int step, double sampleRateHz,
+                                        const Eigen::MatrixXf& samples);
+  Result<Eigen::MatrixXf> rigTestRecord(std::int64_t rigTestId, int step, double* sampleRateHz = nullptr) const;
+
+  Result<std::int64_t> addTyreTest(const StoredTyreTest& test);
+  Result<StoredTyreTest> tyreTest(std::int64_t tyreTestId) const;
+
+  Result<std::int64_t> addModel(const StoredModel& model);
+  Result<std::int64_t> addAnalysis(const StoredAnalysis& analysis);
+  Result<StoredAnalysis> analysis(std::int64_t analysisId) const;
 
   // Writes a consistent copy of the whole project to `path` (SQLite online
   // backup), leaving this store open on its own file.
@@ -69,6 +131,9 @@ class ProjectStore {
  private:
   ProjectStore() = default;
   void close();
+  Result<void> requireWritable() const;
+
+  SampleEncoding hitEncoding_ = SampleEncoding::Raw;
 
   sqlite3* db_ = nullptr;
   std::string path_;

@@ -1,0 +1,83 @@
+#pragma once
+// Private helpers of the project store: RAII statements and transactions over
+// the SQLite C API. Not part of core's public face; include only from
+// core/io/project_*.cpp.
+
+#include <sqlite3.h>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/common/dof.h"
+#include "core/common/result.h"
+
+namespace mozzi::core::io::sql {
+
+Error sqliteError(sqlite3* db, const std::string& what, const std::string& where);
+
+Result<void> exec(sqlite3* db, const char* sql, const std::string& where);
+
+Result<std::int64_t> queryInt(sqlite3* db, const char* sql, const std::string& where);
+
+std::string nowUtc();
+
+// Text of a column; "" for NULL (a corrupt or hostile file may hold NULLs
+// where the schema promises text).
+std::string columnText(sqlite3_stmt* stmt, int column);
+
+// A DOF from (node, signed UFF direction) columns; NULL or an invalid code is
+// an error naming `where`.
+Result<Dof> columnDof(sqlite3_stmt* stmt, int nodeColumn, int directionColumn, const std::string& where);
+std::optional<Dof> columnOptionalDof(sqlite3_stmt* stmt, int nodeColumn, int directionColumn);
+
+class Statement {
+ public:
+  Statement(sqlite3* db, const char* sql);
+  ~Statement();
+  Statement(const Statement&) = delete;
+  Statement& operator=(const Statement&) = delete;
+
+  bool ok() const { return stmt_ != nullptr; }
+  sqlite3_stmt* get() const { return stmt_; }
+
+  Statement& bind(int index, std::int64_t value);
+  Statement& bind(int index, int value) { return bind(index, static_cast<std::int64_t>(value)); }
+  Statement& bind(int index, double value);
+  Statement& bind(int index, const std::string& value);
+  Statement& bindBlob(int index, const void* data, std::size_t size);
+  Statement& bindNull(int index);
+  Statement& bind(int index, const std::optional<std::int64_t>& value);
+  // Binds node and direction of an optional DOF to index and index + 1.
+  Statement& bindDof(int index, const std::optional<Dof>& dof);
+
+  // sqlite3_step result (SQLITE_ROW, SQLITE_DONE or an error code).
+  int step();
+  void reset();
+
+ private:
+  sqlite3_stmt* stmt_ = nullptr;
+};
+
+// BEGIN IMMEDIATE on construction (taking the write lock up front, so a
+// transaction never fails half-way for a lock), ROLLBACK on destruction unless
+// commit() succeeded.
+class Transaction {
+ public:
+  Transaction(sqlite3* db, std::string where);
+  ~Transaction();
+  Transaction(const Transaction&) = delete;
+  Transaction& operator=(const Transaction&) = delete;
+
+  const Result<void>& begun() const { return begun_; }
+  Result<void> commit();
+
+ private:
+  sqlite3* db_;
+  std::string where_;
+  Result<void> begun_;
+  bool open_ = false;
+};
+
+}  // namespace mozzi::core::io::sql
