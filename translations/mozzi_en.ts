@@ -22,7 +22,7 @@
 <context>
     <name>mozzi::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+214"/>
+        <location filename="../app/gui/main_window.cpp" line="+223"/>
         <source>&amp;File</source>
         <translation type="unfinished"></translation>
     </message>
@@ -377,6 +377,59 @@
     <message>
         <location line="+20"/>
         <source>About Mozzi</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>mozzi::views::FrfPlot</name>
+    <message>
+        <location filename="../views/plots/frf_plot.cpp" line="+128"/>
+        <source>Unwrap phase</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Response / reference</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>receptance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mobility</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>accelerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Magnitude [dB]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>|H| %1 [dB]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Phase [deg]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Coherence</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frequency [Hz]</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -22,7 +22,7 @@
 <context>
     <name>mozzi::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+214"/>
+        <location filename="../app/gui/main_window.cpp" line="+223"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -378,6 +378,59 @@
         <location line="+20"/>
         <source>About Mozzi</source>
         <translation>Informazioni su Mozzi</translation>
+    </message>
+</context>
+<context>
+    <name>mozzi::views::FrfPlot</name>
+    <message>
+        <location filename="../views/plots/frf_plot.cpp" line="+128"/>
+        <source>Unwrap phase</source>
+        <translation>Fase continua</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Response / reference</source>
+        <translation>Risposta / riferimento</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>receptance</source>
+        <translation>recettanza</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mobility</source>
+        <translation>mobilità</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>accelerance</source>
+        <translation>inertanza</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Magnitude [dB]</source>
+        <translation>Modulo [dB]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>|H| %1 [dB]</source>
+        <translation>|H| %1 [dB]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Phase [deg]</source>
+        <translation>Fase [gradi]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Coherence</source>
+        <translation>Coerenza</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frequency [Hz]</source>
+        <translation>Frequenza [Hz]</translation>
     </message>
 </context>
 <context>
