@@ -1,0 +1,454 @@
+#include "core/modal/plscf.h"
+
+#include <fftw3.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "core/modal/lsfd.h"
+#include "core/modal/shape_tools.h"
+
+namespace mozzi::core::modal {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * M_PI;
+
+std::string hz(double f) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g Hz", f);
+  return buf;
+}
+
+// Smallest N >= n whose prime factors are 2, 3, 5 and 7 (fast FFT sizes).
+long niceFftSize(long n) {
+  for (long m = std::max(1L, n);; ++m) {
+    long r = m;
+    for (long p : {2L, 3L, 5L, 7L}) {
+      while (r % p == 0) r /= p;
+    }
+    if (r == 1) return m;
+  }
+}
+
+struct FftwFree {
+  void operator()(fftw_complex* p) const { fftw_free(p); }
+};
+
+// Lag sums sum_k z_k^d x_k(k) for d = -n..n of several series x (columns of
+// `series`, nf x ns), z_k = exp(i 2 pi f_k dt). Returns (2n+1) x ns, row d + n.
+// Even grid: f_k = f_0 + k df with dt = 1/(N df): one length-N inverse FFT per
+// series gives every lag at once (O(N log N) instead of O(nf n)). Otherwise a
+// direct sum with a phasor recursion.
+ComplexMatrix lagSums(const ComplexMatrix& series, const Vector& f, double dt, long fftSize, bool evenGrid, int n) {
+  const Eigen::Index nf = series.rows(), ns = series.cols();
+  ComplexMatrix out(2 * n + 1, ns);
+  if (evenGrid) {
+    const long N = fftSize;
+    std::unique_ptr<fftw_complex[], FftwFree> buf(
+        static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * static_cast<std::size_t>(N * ns))));
+    int sizes[1] = {static_cast<int>(N)};
+    fftw_plan plan = fftw_plan_many_dft(1, sizes, static_cast<int>(ns), buf.get(), nullptr, 1, static_cast<int>(N),
+                                        buf.get(), nullptr, 1, static_cast<int>(N), FFTW_BACKWARD, FFTW_ESTIMATE);
+    for (Eigen::Index s = 0; s < ns; ++s) {
+      fftw_complex* col = buf.get() + s * N;
+      for (Eigen::Index k = 0; k < nf; ++k) {
+        col[k][0] = series(k, s).real();
+        col[k][1] = series(k, s).imag();
+      }
+      std::fill(reinterpret_cast<double*>(col + nf), reinterpret_cast<double*>(col + N), 0.0);
+    }
+    fftw_execute(plan);
+    fftw_destroy_plan(plan);
+    // Backward FFT: Y[d] = sum_k x_k exp(+i 2 pi k d / N); shift by f_0: exp(i 2 pi f_0 dt d).
+    for (int d = -n; d <= n; ++d) {
+      const Complex shift = std::polar(1.0, kTwoPi * f[0] * dt * d);
+      const long idx = d >= 0 ? d : N + d;
+      for (Eigen::Index s = 0; s < ns; ++s) {
+        const fftw_complex& y = buf[static_cast<std::size_t>(s * N + idx)];
+        out(d + n, s) = shift * Complex(y[0], y[1]);
+      }
+    }
+    return out;
+  }
+  out.setZero();
+  for (Eigen::Index k = 0; k < nf; ++k) {
+    const Complex z = std::polar(1.0, kTwoPi * f[k] * dt);
+    Complex zp(1.0, 0.0);  // z^d for d >= 0
+    for (int d = 0; d <= n; ++d) {
+      out.row(d + n) += zp * series.row(k);
+      if (d > 0) out.row(n - d) += std::conj(zp) * series.row(k);
+      zp *= z;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+char poleStatusSymbol(PoleStatus status) {
+  switch (status) {
+    case PoleStatus::New: return 'o';
+    case PoleStatus::Frequency: return 'f';
+    case PoleStatus::FrequencyDamping: return 'd';
+    case PoleStatus::FrequencyVector: return 'v';
+    case PoleStatus::Stable: return 's';
+  }
+  return '?';
+}
+
+Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const PlscfOptions& opt) {
+  const std::string where = "pLSCF";
+  if (auto ok = frf.validate(); !ok) return ok.error();
+  if (!(opt.bandLowHz >= 0.0) || !(opt.bandHighHz > opt.bandLowHz)) {
+    return makeError(ErrorCode::InvalidArgument, "band must satisfy 0 <= low < high (got " + hz(opt.bandLowHz) +
+                                                     " .. " + hz(opt.bandHighHz) + ")",
+                     where + ", band");
+  }
+  if (opt.minOrder < 1 || opt.maxOrder < opt.minOrder || opt.orderStep < 1) {
+    return makeError(ErrorCode::InvalidArgument,
+                     "order range must satisfy 1 <= min <= max and step >= 1 (got " + std::to_string(opt.minOrder) +
+                         ".." + std::to_string(opt.maxOrder) + " step " + std::to_string(opt.orderStep) + ")",
+                     where + ", orders");
+  }
+  std::vector<int> orders;
+  for (int m = opt.minOrder; m <= opt.maxOrder; m += opt.orderStep) orders.push_back(m);
+  if (static_cast<int>(orders.size()) < opt.minClusterSize + 1) {
+    return makeError(ErrorCode::InvalidArgument,
+                     "order range " + std::to_string(opt.minOrder) + ".." + std::to_string(opt.maxOrder) + " gives " +
+                         std::to_string(orders.size()) + " orders; judging stability needs at least " +
+                         std::to_string(opt.minClusterSize + 1),
+                     where + ", orders");
+  }
+  const Eigen::Index nfAll = frf.lineCount();
+  Eigen::Index k0 = 0;
+  while (k0 < nfAll && frf.frequencyHz[k0] < opt.bandLowHz) ++k0;
+  Eigen::Index k1 = k0;
+  while (k1 < nfAll && frf.frequencyHz[k1] <= opt.bandHighHz) ++k1;
+  const Eigen::Index nf = k1 - k0;
+  const int n = orders.back();
+  if (nf < 2 * (n + 1)) {
+    return makeError(ErrorCode::InvalidArgument,
+                     "band " + hz(opt.bandLowHz) + " .. " + hz(opt.bandHighHz) + " holds " + std::to_string(nf) +
+                         " lines; order " + std::to_string(n) + " needs at least " + std::to_string(2 * (n + 1)),
+                     where + ", band");
+  }
+  const Eigen::Index no = frf.responseCount(), ni = frf.referenceCount();
+  const Vector f = frf.frequencyHz.segment(k0, nf);
+
+  // Scale the data to unit RMS so the normal equations are well scaled.
+  double ss = 0.0;
+  for (Eigen::Index i = 0; i < ni; ++i) ss += frf.h[static_cast<std::size_t>(i)].middleRows(k0, nf).squaredNorm();
+  const double rms = std::sqrt(ss / static_cast<double>(nf * no * ni));
+  if (!(rms > 0.0)) return makeError(ErrorCode::InvalidArgument, "FRFs are zero in the band", where);
+
+  // Grid: even spacing allows the FFT lag sums; dt = 1/(N df) <= 1/(2 f_high).
+  const double df = (f[nf - 1] - f[0]) / static_cast<double>(nf - 1);
+  bool even = true;
+  for (Eigen::Index k = 0; k < nf && even; ++k) even = std::abs(f[k] - (f[0] + df * k)) <= 1e-6 * df;
+  long fftSize = 0;
+  double dt = 1.0 / (2.0 * f[nf - 1]);
+  if (even) {
+    fftSize = niceFftSize(std::max<long>({static_cast<long>(std::ceil(2.0 * f[nf - 1] / df)) + 1,
+                                          static_cast<long>(nf), 2L * n + 2}));
+    dt = 1.0 / (static_cast<double>(fftSize) * df);
+  }
+
+  // Series: [1 | H_oa (o major) | sum_o conj(H_oa) H_ob].
+  const Eigen::Index ns = 1 + no * ni + ni * ni;
+  ComplexMatrix series(nf, ns);
+  series.col(0).setOnes();
+  for (Eigen::Index o = 0; o < no; ++o) {
+    for (Eigen::Index a = 0; a < ni; ++a) {
+      series.col(1 + o * ni + a) = frf.h[static_cast<std::size_t>(a)].col(o).segment(k0, nf) / rms;
+    }
+  }
+  for (Eigen::Index a = 0; a < ni; ++a) {
+    for (Eigen::Index b = 0; b < ni; ++b) {
+      ComplexVector acc = ComplexVector::Zero(nf);
+      for (Eigen::Index o = 0; o < no; ++o) {
+        acc += (series.col(1 + o * ni + a).conjugate().array() * series.col(1 + o * ni + b).array()).matrix();
+      }
+      series.col(1 + no * ni + a * ni + b) = acc;
+    }
+  }
+  const ComplexMatrix lags = lagSums(series, f, dt, fftSize, even, n);
+  auto lag = [&](int d, Eigen::Index s) { return lags(d + n, s); };
+
+  // Toeplitz blocks (lag l - j): R(j,l) = Re r, S_o(j, l ni + a) = -Re s_oa, T = Re t_ab.
+  const Eigen::Index n1 = n + 1, nb = n1 * ni;
+  Matrix rmat(n1, n1);
+  for (Eigen::Index j = 0; j < n1; ++j)
+    for (Eigen::Index l = 0; l < n1; ++l) rmat(j, l) = lag(static_cast<int>(l - j), 0).real();
+  Matrix tmat(nb, nb);
+  for (Eigen::Index j = 0; j < n1; ++j)
+    for (Eigen::Index l = 0; l < n1; ++l)
+      for (Eigen::Index a = 0; a < ni; ++a)
+        for (Eigen::Index b = 0; b < ni; ++b)
+          tmat(j * ni + a, l * ni + b) = lag(static_cast<int>(l - j), 1 + no * ni + a * ni + b).real();
+  // S^T stacked over outputs: st(o nb + l ni + a, j) = S_o(j, l ni + a).
+  Matrix st(no * nb, n1);
+  for (Eigen::Index o = 0; o < no; ++o)
+    for (Eigen::Index l = 0; l < n1; ++l)
+      for (Eigen::Index a = 0; a < ni; ++a)
+        for (Eigen::Index j = 0; j < n1; ++j) st(o * nb + l * ni + a, j) = -lag(static_cast<int>(l - j), 1 + o * ni + a).real();
+
+  // R is the Gram matrix of the numerator basis; for a narrow band far from
+  // 0 Hz it is numerically singular (the basis is redundant). A ridge of
+  // 1e-10 of its diagonal keeps the Cholesky defined and changes the
+  // well-conditioned cases only at rounding level.
+  rmat.diagonal().array() += 1e-10 * rmat.diagonal().mean();
+  Eigen::LLT<Matrix> rllt(rmat);
+  if (rllt.info() != Eigen::Success) {
+    return makeError(ErrorCode::NumericalFailure, "basis matrix R is not positive definite (too few lines?)", where);
+  }
+  const Matrix lmat = rllt.matrixL();
+  // W^T = S^T L^-T (W_o = L^-1 S_o); column j is row j of every W_o.
+  Matrix wt = st;
+  lmat.transpose().triangularView<Eigen::Upper>().solveInPlace<Eigen::OnTheRight>(wt);
+
+  StabilizationDiagram diag;
+  diag.orders = orders;
+  diag.bandLowHz = opt.bandLowHz;
+  diag.bandHighHz = opt.bandHighHz;
+  diag.samplingTime = dt;
+
+  Matrix g = Matrix::Zero(nb, nb);  // running sum_{j<=m} sum_o w_oj^T w_oj (lower triangle)
+  std::size_t nextOrder = 0;
+  std::vector<StabilizationPole> previous;
+  for (Eigen::Index j = 0; j < n1 && nextOrder < orders.size(); ++j) {
+    Eigen::Map<const Matrix> wj(wt.col(j).data(), nb, no);  // wj(c, o) = W_o(j, c)
+    g.selfadjointView<Eigen::Lower>().rankUpdate(wj);
+    const int m = static_cast<int>(j);
+    if (m != orders[nextOrder]) continue;
+    ++nextOrder;
+    const Eigen::Index mb = static_cast<Eigen::Index>(m) * ni, mb1 = mb + ni;
+    // M_m = T_m - G_m (leading (m+1) ni block), symmetric.
+    Matrix mm = tmat.topLeftCorner(mb1, mb1);
+    mm.triangularView<Eigen::Lower>() -= g.topLeftCorner(mb1, mb1);
+    mm = mm.selfadjointView<Eigen::Lower>();
+    Eigen::LDLT<Matrix> ldlt(mm.topLeftCorner(mb, mb));
+    if (ldlt.info() != Eigen::Success) {
+      return makeError(ErrorCode::NumericalFailure, "reduced normal equations are singular",
+                       where + ", order " + std::to_string(m));
+    }
+    Matrix alpha(mb1, ni);  // [alpha_0; ...; alpha_{m-1}; I]
+    alpha.topRows(mb) = -ldlt.solve(mm.topRightCorner(mb, ni));
+    alpha.bottomRows(ni).setIdentity();
+    if (!alpha.allFinite()) {
+      return makeError(ErrorCode::NumericalFailure, "denominator coefficients are not finite",
+                       where + ", order " + std::to_string(m));
+    }
+    // Block companion matrix: eigenvalues z_r, eigenvectors [l; z l; ...].
+    Matrix comp = Matrix::Zero(mb, mb);
+    if (m > 1) comp.topRightCorner(mb - ni, mb - ni).setIdentity();
+    // Bottom block row: z^m l = -sum_j alpha_j z^j l, i.e. A(z) l = 0.
+    for (Eigen::Index jj = 0; jj < m; ++jj) comp.block(mb - ni, jj * ni, ni, ni) = -alpha.block(jj * ni, 0, ni, ni);
+    const bool needVectors = ni > 1;
+    Eigen::EigenSolver<Matrix> es(comp, needVectors);
+    if (es.info() != Eigen::Success) {
+      return makeError(ErrorCode::NumericalFailure, "companion eigenproblem did not converge",
+                       where + ", order " + std::to_string(m));
+    }
+    // Numerator per output: beta_o = -R_m^-1 S_o,m alpha = -L_m^-T (W_o,m alpha).
+    Matrix beta(static_cast<Eigen::Index>(m + 1), no * ni);
+    for (Eigen::Index o = 0; o < no; ++o) {
+      beta.middleCols(o * ni, ni) = wt.block(o * nb, 0, mb1, m + 1).transpose() * alpha;
+    }
+    lmat.topLeftCorner(m + 1, m + 1).transpose().triangularView<Eigen::Upper>().solveInPlace(beta);
+    beta = -beta;
+
+    std::vector<StabilizationPole> current;
+    for (Eigen::Index r = 0; r < mb; ++r) {
+      const Complex z = es.eigenvalues()[r];
+      if (std::abs(z) == 0.0) continue;
+      const Complex lambda = std::log(z) / dt;
+      if (lambda.imag() <= 0.0) continue;
+      const double fr = poleFrequencyHz(lambda), zr = poleZeta(lambda);
+      if (fr < opt.bandLowHz || fr > opt.bandHighHz || !(zr > 0.0) || zr > opt.criteria.maxZeta) continue;
+      StabilizationPole p;
+      p.order = m;
+      p.pole = lambda;
+      p.frequencyHz = fr;
+      p.zeta = zr;
+      // H_o = B_o A^-1 ~ (B_o(z_r) v) w^T / (z - z_r): v (right null vector of
+      // A(z_r), first block of the companion eigenvector) builds the shape, w
+      // (left null vector, w^T A(z_r) = 0) is the participation vector.
+      ComplexVector v = needVectors ? ComplexVector(es.eigenvectors().col(r).head(ni)) : ComplexVector::Ones(1);
+      if (needVectors) {
+        ComplexMatrix az = ComplexMatrix::Zero(ni, ni);
+        Complex zp(1.0, 0.0);
+        for (int q = 0; q <= m; ++q) {
+          az += zp * alpha.block(static_cast<Eigen::Index>(q) * ni, 0, ni, ni).cast<Complex>();
+          zp *= z;
+        }
+        Eigen::JacobiSVD<ComplexMatrix> svd(az.transpose(), Eigen::ComputeFullV);
+        p.participation = svd.matrixV().col(ni - 1);
+        Eigen::Index imax = 0;
+        p.participation.cwiseAbs().maxCoeff(&imax);
+        p.participation /= p.participation[imax];
+      } else {
+        p.participation = v;
+      }
+      // shape_o = B_o(z) l = sum_j z^j beta_oj l.
+      p.shape.resize(no);
+      ComplexVector zpow(m + 1);
+      zpow[0] = 1.0;
+      for (int q = 1; q <= m; ++q) zpow[q] = zpow[q - 1] * z;
+      for (Eigen::Index o = 0; o < no; ++o) {
+        Complex acc(0.0, 0.0);
+        for (Eigen::Index a = 0; a < ni; ++a) {
+          Complex ba(0.0, 0.0);
+          for (int q = 0; q <= m; ++q) ba += zpow[q] * beta(q, o * ni + a);
+          acc += ba * v[a];
+        }
+        p.shape[o] = acc;
+      }
+      // Stability against the previous evaluated order: nearest pole in frequency.
+      p.status = PoleStatus::New;
+      const StabilizationPole* best = nullptr;
+      for (const auto& q : previous) {
+        if (!best || std::abs(q.frequencyHz - fr) < std::abs(best->frequencyHz - fr)) best = &q;
+      }
+      if (best && std::abs(best->frequencyHz - fr) <= opt.criteria.frequencyTolerance * best->frequencyHz) {
+        const bool dampOk = std::abs(best->zeta - zr) <= opt.criteria.dampingTolerance * best->zeta;
+        const double vmac = opt.criteria.vector == StabilityVector::Participation
+                                ? mac(p.participation, best->participation)
+                                : mac(p.shape, best->shape);
+        const bool vecOk = vmac >= opt.criteria.macThreshold;
+        p.status = dampOk && vecOk ? PoleStatus::Stable
+                   : dampOk        ? PoleStatus::FrequencyDamping
+                   : vecOk         ? PoleStatus::FrequencyVector
+                                   : PoleStatus::Frequency;
+      }
+      current.push_back(std::move(p));
+    }
+    std::sort(current.begin(), current.end(),
+              [](const StabilizationPole& a, const StabilizationPole& b) { return a.frequencyHz < b.frequencyHz; });
+    diag.poles.insert(diag.poles.end(), current.begin(), current.end());
+    previous = std::move(current);
+  }
+  return diag;
+}
+
+Result<std::vector<SelectedPole>> selectPoles(const StabilizationDiagram& diagram, const PlscfOptions& opt) {
+  struct Cluster {
+    std::vector<const StabilizationPole*> members;
+    double meanHz = 0.0;
+    const StabilizationPole* seed = nullptr;
+  };
+  std::vector<const StabilizationPole*> stable;
+  for (const auto& p : diagram.poles) {
+    if (p.status == PoleStatus::Stable) stable.push_back(&p);
+  }
+  std::sort(stable.begin(), stable.end(), [](auto* a, auto* b) { return a->frequencyHz < b->frequencyHz; });
+  std::vector<Cluster> clusters;
+  for (const auto* p : stable) {
+    Cluster* best = nullptr;
+    for (auto& c : clusters) {
+      if (std::abs(p->frequencyHz - c.meanHz) > opt.clusterFrequencyTolerance * c.meanHz) continue;
+      const double vmac = opt.criteria.vector == StabilityVector::Participation
+                              ? mac(p->participation, c.seed->participation)
+                              : mac(p->shape, c.seed->shape);
+      if (vmac < opt.criteria.macThreshold) continue;
+      if (!best || std::abs(p->frequencyHz - c.meanHz) < std::abs(p->frequencyHz - best->meanHz)) best = &c;
+    }
+    if (!best) {
+      clusters.push_back(Cluster{{p}, p->frequencyHz, p});
+    } else {
+      best->members.push_back(p);
+      best->meanHz += (p->frequencyHz - best->meanHz) / static_cast<double>(best->members.size());
+    }
+  }
+  const int needed = std::max(opt.minClusterSize, static_cast<int>(std::ceil(opt.minClusterFraction *
+                                                                              static_cast<double>(diagram.orders.size()))));
+  std::vector<SelectedPole> out;
+  for (auto& c : clusters) {
+    // One pole per order: the one nearest the cluster mean.
+    std::sort(c.members.begin(), c.members.end(), [&](auto* a, auto* b) {
+      if (a->order != b->order) return a->order < b->order;
+      return std::abs(a->frequencyHz - c.meanHz) < std::abs(b->frequencyHz - c.meanHz);
+    });
+    c.members.erase(std::unique(c.members.begin(), c.members.end(),
+                                [](auto* a, auto* b) { return a->order == b->order; }),
+                    c.members.end());
+    if (static_cast<int>(c.members.size()) < needed) continue;
+    // Representative: medians over the upper half of the cluster's orders (low
+    // orders carry the bias of an under-parameterised model).
+    std::vector<double> fs, zs;
+    for (std::size_t q = c.members.size() / 2; q < c.members.size(); ++q) {
+      const auto* p = c.members[q];
+      fs.push_back(p->frequencyHz);
+      zs.push_back(p->zeta);
+    }
+    auto median = [](std::vector<double> v) {
+      std::sort(v.begin(), v.end());
+      const std::size_t h = v.size() / 2;
+      return v.size() % 2 ? v[h] : 0.5 * (v[h - 1] + v[h]);
+    };
+    auto stdev = [](const std::vector<double>& v) {
+      double mu = 0.0, s2 = 0.0;
+      for (double x : v) mu += x;
+      mu /= static_cast<double>(v.size());
+      for (double x : v) s2 += (x - mu) * (x - mu);
+      return std::sqrt(s2 / static_cast<double>(std::max<std::size_t>(1, v.size() - 1)));
+    };
+    SelectedPole s;
+    s.pole = poleFromFrequencyDamping(median(fs), median(zs));
+    s.participation = c.members.back()->participation;
+    s.clusterSize = static_cast<int>(c.members.size());
+    s.frequencySpreadHz = stdev(fs);  // over the upper half used for the estimate
+    s.zetaSpread = stdev(zs);
+    out.push_back(std::move(s));
+  }
+  std::sort(out.begin(), out.end(),
+            [](const SelectedPole& a, const SelectedPole& b) { return std::abs(a.pole) < std::abs(b.pole); });
+  if (out.empty()) {
+    return makeError(ErrorCode::NotFound,
+                     "no stable mode in band " + hz(diagram.bandLowHz) + " .. " + hz(diagram.bandHighHz) + ": no pole "
+                         "stayed stable (frequency, damping and vector) over " + std::to_string(needed) +
+                         " orders; the band holds no identifiable mode or the FRFs are noise",
+                     "pLSCF pole selection");
+  }
+  return out;
+}
+
+Result<PlscfResult> identifyPlscf(const FrfMatrix& frf, const PlscfOptions& options) {
+  auto diagram = plscfStabilization(frf, options);
+  if (!diagram) return diagram.error();
+  auto selected = selectPoles(*diagram, options);
+  if (!selected) return selected.error();
+  std::vector<Complex> poles;
+  for (const auto& s : *selected) poles.push_back(s.pole);
+  LsfdOptions lo;
+  lo.bandLowHz = options.bandLowHz;
+  lo.bandHighHz = options.bandHighHz;
+  auto model = lsfd(frf, poles, lo);
+  if (!model) return model.error();
+  for (std::size_t r = 0; r < poles.size(); ++r) model->modes[r].participation = (*selected)[r].participation;
+  PlscfResult out;
+  out.diagram = std::move(diagram).value();
+  out.selected = std::move(selected).value();
+  out.model = std::move(model).value();
+  return out;
+}
+
+Result<void> writeStabilizationCsv(const StabilizationDiagram& diagram, const std::string& path) {
+  std::ofstream os(path);
+  if (!os) return makeError(ErrorCode::IoError, "cannot open for writing", path);
+  os << "order,frequency_hz,zeta,status\n";
+  char buf[128];
+  for (const auto& p : diagram.poles) {
+    std::snprintf(buf, sizeof buf, "%d,%.9g,%.9g,%c\n", p.order, p.frequencyHz, p.zeta, poleStatusSymbol(p.status));
+    os << buf;
+  }
+  if (!os) return makeError(ErrorCode::IoError, "write failed", path);
+  return {};
+}
+
+}  // namespace mozzi::core::modal
