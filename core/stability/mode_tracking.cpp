@@ -150,14 +150,9 @@ Result<SpeedPoint> solveAtSpeed(const StabilitySystem& s, double v) {
   return p;
 }
 
-Result<StabilitySweep> sweepSpeeds(const StabilitySystem& s, const std::vector<double>& speeds) {
-  if (speeds.empty()) return makeError(ErrorCode::InvalidArgument, "no speeds", "speeds");
-  for (size_t k = 0; k < speeds.size(); ++k) {
-    if (!std::isfinite(speeds[k])) return makeError(ErrorCode::InvalidArgument, "speed is not finite", "speeds");
-    if (k > 0 && !(speeds[k] > speeds[k - 1])) {
-      return makeError(ErrorCode::InvalidArgument, "speeds must increase strictly", "speeds[" + std::to_string(k) + "]");
-    }
-  }
+namespace {
+
+Result<StabilitySweep> sweepOnGrid(const StabilitySystem& s, const std::vector<double>& speeds) {
   StabilitySweep out;
   for (double v : speeds) {
     auto p = solveAtSpeed(s, v);
@@ -195,7 +190,11 @@ Result<StabilitySweep> sweepSpeeds(const StabilitySystem& s, const std::vector<d
       }
       for (size_t j = 0; j < cur.size(); ++j) {
         const double scale = std::abs(prev[i].lambda) + std::abs(cur[j].lambda) + 1.0;
-        const double cost = (1.0 - mac(prev[i].shape, cur[j].shape)) + 2.0 * std::abs(cur[j].lambda - predicted) / scale;
+        // A real root turns complex only by meeting another real root: a type
+        // change costs extra so it is chosen only when nothing fits better.
+        const bool typeChange = (prev[i].lambda.imag() > 0.0) != (cur[j].lambda.imag() > 0.0);
+        const double cost = (1.0 - mac(prev[i].shape, cur[j].shape)) +
+                            2.0 * std::abs(cur[j].lambda - predicted) / scale + (typeChange ? 0.5 : 0.0);
         cands.push_back({cost, static_cast<int>(i), static_cast<int>(j)});
       }
     }
@@ -339,6 +338,44 @@ Result<StabilitySweep> sweepSpeeds(const StabilitySystem& s, const std::vector<d
     }
   }
   std::sort(out.events.begin(), out.events.end(), [](const ModeEvent& a, const ModeEvent& b) { return a.v < b.v; });
+  return out;
+}
+
+}  // namespace
+
+Result<StabilitySweep> sweepSpeeds(const StabilitySystem& s, const std::vector<double>& speeds, double maxTrackingStep) {
+  if (speeds.empty()) return makeError(ErrorCode::InvalidArgument, "no speeds", "speeds");
+  for (size_t k = 0; k < speeds.size(); ++k) {
+    if (!std::isfinite(speeds[k])) return makeError(ErrorCode::InvalidArgument, "speed is not finite", "speeds");
+    if (k > 0 && !(speeds[k] > speeds[k - 1])) {
+      return makeError(ErrorCode::InvalidArgument, "speeds must increase strictly", "speeds[" + std::to_string(k) + "]");
+    }
+  }
+  if (!(maxTrackingStep > 0.0)) {
+    return makeError(ErrorCode::InvalidArgument, "tracking step must be positive", "maxTrackingStep");
+  }
+  // Track on a grid no coarser than maxTrackingStep so modes are followed (and
+  // crossings found) however coarse the requested speeds are; report only the
+  // requested speeds.
+  std::vector<double> grid;
+  std::vector<bool> requested;
+  for (size_t k = 0; k < speeds.size(); ++k) {
+    if (k > 0) {
+      const int extra = static_cast<int>(std::ceil((speeds[k] - speeds[k - 1]) / maxTrackingStep)) - 1;
+      for (int i = 1; i <= extra; ++i) {
+        grid.push_back(speeds[k - 1] + (speeds[k] - speeds[k - 1]) * i / (extra + 1));
+        requested.push_back(false);
+      }
+    }
+    grid.push_back(speeds[k]);
+    requested.push_back(true);
+  }
+  auto sweep = sweepOnGrid(s, grid);
+  if (!sweep) return sweep.error();
+  StabilitySweep out;
+  out.events = std::move(sweep->events);
+  for (size_t k = 0; k < grid.size(); ++k)
+    if (requested[k]) out.points.push_back(std::move(sweep->points[k]));
   return out;
 }
 

@@ -59,8 +59,11 @@ struct StabilitySweep {
 // The bicycle model of eq. 65 as a system: shape = [phi, delta(, beta|gamma)].
 StabilitySystem bicycleSystem(const BicycleModel& model);
 
-// speeds must be strictly increasing and finite; at least 2 for tracking.
-Result<StabilitySweep> sweepSpeeds(const StabilitySystem& system, const std::vector<double>& speeds);
+// speeds must be strictly increasing and finite. Modes are tracked on a grid
+// that adds speeds between the requested ones so no step exceeds
+// maxTrackingStep [m/s]; points holds the requested speeds only.
+Result<StabilitySweep> sweepSpeeds(const StabilitySystem& system, const std::vector<double>& speeds,
+                                   double maxTrackingStep = 0.25);
 
 // A:B:STEP grid (inclusive of B within STEP/1e6); errors name the part.
 Result<std::vector<double>> speedGrid(double from, double to, double step);

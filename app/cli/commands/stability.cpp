@@ -1,0 +1,235 @@
+// mozzi-cli stability: eigenvalues against speed with mode names and critical
+// speeds for the benchmark bicycle (with the thesis's fork bending or torsion
+// compliance, appendix 3) and the Sharp (1971) motorcycle with the lumped fork
+// models of thesis §4.2.
+#include <cmath>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <sstream>
+
+#include "app/cli/args.h"
+#include "app/cli/command.h"
+#include "core/stability/benchmark_bicycle.h"
+#include "core/stability/compliant_fork_bicycle.h"
+#include "core/stability/mode_tracking.h"
+#include "core/stability/motorcycle.h"
+
+namespace mozzi::cli {
+namespace {
+
+namespace st = core::stability;
+
+constexpr const char* kUsage =
+    "Usage: mozzi-cli stability bicycle [--params FILE] [--fork-bending k,c,hW | --fork-torsion k,c] "
+    "--speeds A:B:STEP [--json]\n"
+    "       mozzi-cli stability motorcycle --params FILE [--fork-model 1|2|3|rigid] --speeds A:B:STEP [--json]\n";
+
+// "1,2.5,3" -> numbers; the error names the option.
+core::Result<std::vector<double>> numberList(const std::string& text, char sep, const std::string& option) {
+  std::vector<double> out;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, sep)) {
+    char* end = nullptr;
+    const double x = std::strtod(item.c_str(), &end);
+    if (item.empty() || end == item.c_str() || *end != '\0' || !std::isfinite(x)) {
+      return core::makeError(core::ErrorCode::InvalidArgument, "'" + item + "' is not a number", option);
+    }
+    out.push_back(x);
+  }
+  if (!text.empty() && text.back() == sep) {
+    return core::makeError(core::ErrorCode::InvalidArgument, "trailing separator", option);
+  }
+  return out;
+}
+
+nlohmann::json toJson(const std::string& model, const st::StabilitySweep& sweep) {
+  nlohmann::json j;
+  j["model"] = model;
+  j["speeds"] = nlohmann::json::array();
+  for (const auto& p : sweep.points) {
+    nlohmann::json modes = nlohmann::json::array();
+    for (const auto& r : p.roots) modes.push_back({{"name", r.name}, {"re", r.lambda.real()}, {"im", r.lambda.imag()}});
+    j["speeds"].push_back({{"v", p.v}, {"modes", modes}});
+  }
+  nlohmann::json critical = nlohmann::json::object();
+  for (const char* name : {"weave", "capsize", "wobble"}) critical[name] = nullptr;
+  for (const auto& e : sweep.events) {
+    if (e.kind != "stabilises" && e.kind != "destabilises") continue;
+    if (critical.contains(e.mode) && !critical[e.mode].is_null()) continue;
+    critical[e.mode] = e.v;
+  }
+  j["critical_speeds"] = critical;
+  j["events"] = nlohmann::json::array();
+  for (const auto& e : sweep.events) {
+    nlohmann::json ev = {{"mode", e.mode}, {"v", e.v}, {"kind", e.kind}};
+    if (e.kind == "pair born" || e.kind == "pair splits") ev["lambda"] = e.lambda;
+    if (e.kind == "stabilises" || e.kind == "destabilises") ev["im"] = e.frequency;
+    j["events"].push_back(ev);
+  }
+  return j;
+}
+
+void printText(std::ostream& out, const std::string& model, const st::StabilitySweep& sweep) {
+  out << "stability of " << model << "\n";
+  out << std::fixed;
+  for (const auto& p : sweep.points) {
+    out << "v = " << std::setprecision(3) << p.v << " m/s:";
+    for (const auto& r : p.roots) {
+      out << "  " << r.name << " " << std::setprecision(4) << r.lambda.real();
+      if (r.lambda.imag() > 0.0) out << " +/- " << r.lambda.imag() << "i";
+    }
+    out << "\n";
+  }
+  out << "events:\n";
+  if (sweep.events.empty()) out << "  none in this speed range\n";
+  for (const auto& e : sweep.events) {
+    out << "  " << e.mode << " " << e.kind << " at " << std::setprecision(6) << e.v << " m/s";
+    if (e.kind == "stabilises" || e.kind == "destabilises") out << " (" << std::setprecision(3) << e.frequency << " rad/s)";
+    out << "\n";
+  }
+  out.unsetf(std::ios::floatfield);
+}
+
+int stabilityCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const auto parsed = ParsedArgs::parse(
+      args, OptionSpec{{"--params", "--fork-bending", "--fork-torsion", "--fork-model", "--speeds"}, {"--json"}});
+  if (!parsed || parsed->positional().size() != 1) {
+    err << "mozzi-cli stability: " << (parsed ? "expected bicycle or motorcycle" : parsed.error().describe()) << "\n"
+        << kUsage;
+    return kExitUsage;
+  }
+  const std::string& kind = parsed->positional()[0];
+  if (kind != "bicycle" && kind != "motorcycle") {
+    err << "mozzi-cli stability: unknown model '" << kind << "'\n" << kUsage;
+    return kExitUsage;
+  }
+  const auto speedsText = parsed->value("--speeds");
+  if (!speedsText) {
+    err << "mozzi-cli stability: --speeds A:B:STEP is required\n" << kUsage;
+    return kExitUsage;
+  }
+  const auto range = numberList(*speedsText, ':', "--speeds");
+  if (!range || range->size() != 3) {
+    err << "mozzi-cli stability: " << (range ? "--speeds needs A:B:STEP" : range.error().describe()) << "\n" << kUsage;
+    return kExitUsage;
+  }
+  const auto speeds = st::speedGrid((*range)[0], (*range)[1], (*range)[2]);
+  if (!speeds) {
+    err << "mozzi-cli stability: " << speeds.error().describe() << "\n";
+    return kExitUsage;
+  }
+
+  st::StabilitySystem system;
+  std::string model;
+  if (kind == "bicycle") {
+    if (parsed->value("--fork-model")) {
+      err << "mozzi-cli stability bicycle: --fork-model is for the motorcycle\n" << kUsage;
+      return kExitUsage;
+    }
+    const auto bending = parsed->value("--fork-bending");
+    const auto torsion = parsed->value("--fork-torsion");
+    if (bending && torsion) {
+      err << "mozzi-cli stability bicycle: give --fork-bending or --fork-torsion, not both\n" << kUsage;
+      return kExitUsage;
+    }
+    st::BenchmarkParameters params = st::meijaard2007Parameters();
+    model = "benchmark bicycle (Meijaard et al. 2007)";
+    if (const auto file = parsed->value("--params")) {
+      auto p = st::loadBenchmarkParameters(*file);
+      if (!p) {
+        err << "mozzi-cli stability: " << p.error().describe() << "\n";
+        return kExitFailure;
+      }
+      params = *p;
+      model = "bicycle from " + *file;
+    }
+    core::Result<st::BicycleModel> m = core::makeError(core::ErrorCode::InvalidArgument, "no model");
+    if (bending) {
+      const auto v = numberList(*bending, ',', "--fork-bending");
+      if (!v || v->size() != 3) {
+        err << "mozzi-cli stability: " << (v ? "--fork-bending needs k,c,hW" : v.error().describe()) << "\n" << kUsage;
+        return kExitUsage;
+      }
+      m = st::forkBendingModel(params, {(*v)[0], (*v)[1], (*v)[2]});
+      model += " with fork bending";
+    } else if (torsion) {
+      const auto v = numberList(*torsion, ',', "--fork-torsion");
+      if (!v || v->size() != 2) {
+        err << "mozzi-cli stability: " << (v ? "--fork-torsion needs k,c" : v.error().describe()) << "\n" << kUsage;
+        return kExitUsage;
+      }
+      m = st::forkTorsionModel(params, {(*v)[0], (*v)[1], 0.0});
+      model += " with fork torsion";
+    } else {
+      m = st::benchmarkModel(params);
+    }
+    if (!m) {
+      err << "mozzi-cli stability: " << m.error().describe() << "\n";
+      return (bending || torsion) && m.error().code == core::ErrorCode::InvalidArgument ? kExitUsage : kExitFailure;
+    }
+    system = st::bicycleSystem(*m);
+  } else {
+    if (parsed->value("--fork-bending") || parsed->value("--fork-torsion")) {
+      err << "mozzi-cli stability motorcycle: use --fork-model 1|2|3|rigid\n" << kUsage;
+      return kExitUsage;
+    }
+    const auto file = parsed->value("--params");
+    if (!file) {
+      err << "mozzi-cli stability motorcycle: --params FILE is required\n" << kUsage;
+      return kExitUsage;
+    }
+    std::optional<st::LumpedForkModel> fork;
+    const std::string forkName = parsed->value("--fork-model").value_or("rigid");
+    if (forkName != "rigid") {
+      if (forkName != "1" && forkName != "2" && forkName != "3") {
+        err << "mozzi-cli stability: --fork-model must be 1, 2, 3 or rigid, not '" << forkName << "'\n" << kUsage;
+        return kExitUsage;
+      }
+      auto f = st::thesisLumpedForkModel(std::stoi(forkName));
+      if (!f) {
+        err << "mozzi-cli stability: " << f.error().describe() << "\n";
+        return kExitUsage;
+      }
+      fork = *f;
+    }
+    if (!((*speeds)[0] > 0.0)) {
+      err << "mozzi-cli stability motorcycle: speeds must be positive (tyre slip divides by speed)\n";
+      return kExitUsage;
+    }
+    auto p = st::loadSharpParameters(*file);
+    if (!p) {
+      err << "mozzi-cli stability: " << p.error().describe() << "\n";
+      return kExitFailure;
+    }
+    auto m = st::MotorcycleModel::build(*p, fork);
+    if (!m) {
+      err << "mozzi-cli stability: " << m.error().describe() << "\n";
+      return kExitFailure;
+    }
+    system = m->system();
+    model = "motorcycle (Sharp 1971 structure) from " + *file + ", fork " + (fork ? fork->name : "rigid");
+  }
+  const auto sweep = st::sweepSpeeds(system, *speeds);
+  if (!sweep) {
+    err << "mozzi-cli stability: " << sweep.error().describe() << "\n";
+    return kExitFailure;
+  }
+  if (parsed->flag("--json")) {
+    out << toJson(model, *sweep).dump(2) << "\n";
+  } else {
+    printText(out, model, *sweep);
+  }
+  return kExitOk;
+}
+
+const CommandRegistrar kRegistrar({"stability",
+                                   "bicycle [--params FILE] [--fork-bending k,c,hW | --fork-torsion k,c] --speeds A:B:STEP "
+                                   "[--json] | motorcycle --params FILE [--fork-model 1|2|3|rigid] --speeds A:B:STEP "
+                                   "[--json]",
+                                   "Eigenvalues against speed with mode names and critical speeds (weave, capsize, wobble)",
+                                   stabilityCommand});
+
+}  // namespace
+}  // namespace mozzi::cli
