@@ -138,5 +138,36 @@ TEST(ModalTwistAxis, FromAccelerometerFrfs) {
   EXPECT_FALSE(modalTwistAxis(frf, {0, 1}, 0, 50.0, kLayout, Vector2(0, 0)).ok());
 }
 
+
+// Two close modes with different shapes (like Fig. 6, fork A at 67 Hz): between
+// them the FRF phases are general, so the tool switches to the three-instant
+// method and says so; at the first resonance it stays in-phase.
+TEST(ModalTwistAxis, ReportsWhichCaseApplied) {
+  // Mode 1 dominates its own resonance (participation 10x), as in a well-separated bending mode.
+  const Vector s1 = rigidAmplitudes(Vector2(0.0, -0.9), Vector2(std::sin(0.1), std::cos(0.1)), 10.0);
+  const Vector s2 = rigidAmplitudes(Vector2(0.1, 0.0), Vector2(std::sin(1.4), std::cos(1.4)), 1.0);
+  FrfMatrix frf;
+  frf.type = FrfType::Receptance;
+  frf.frequencyHz = Vector::LinSpaced(200, 40.0, 90.0);
+  for (int i = 0; i < 3; ++i) frf.responses.push_back(Dof{i + 1, Direction::Y, false});
+  frf.references.push_back(Dof{10, Direction::Y, false});
+  ComplexMatrix h(200, 3);
+  for (int k = 0; k < 200; ++k) {
+    const double f = frf.frequencyHz(k);
+    const Complex m1 = 1.0 / (1e5 * Complex(1 - std::pow(f / 60.0, 2), 2 * 0.01 * f / 60.0));
+    const Complex m2 = 1.0 / (1e5 * Complex(1 - std::pow(f / 67.0, 2), 2 * 0.03 * f / 67.0));
+    for (int i = 0; i < 3; ++i) h(k, i) = m1 * s1(i) + m2 * s2(i);
+  }
+  frf.h.push_back(h);
+  const auto at60 = modalTwistAxis(frf, {0, 1, 2}, 0, 60.0, kLayout, Vector2(0, 0));
+  ASSERT_TRUE(at60.ok()) << at60.error().describe();
+  EXPECT_EQ(at60->axis.method, PhasorAxisCase::InPhase);
+  const auto between = modalTwistAxis(frf, {0, 1, 2}, 0, 64.0, kLayout, Vector2(0, 0));
+  ASSERT_TRUE(between.ok()) << between.error().describe();
+  EXPECT_EQ(between->axis.method, PhasorAxisCase::ThreeInstant);
+  EXPECT_TRUE(between->axis.lowConfidence);
+  EXPECT_NE(between->axis.note.find("instants"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace mozzi::core::stiffness

@@ -234,6 +234,22 @@ TEST(PlanarMozzi, CoincidesWithTheTwistAxis) {
   EXPECT_NEAR((t->axis.point - m->twist.axis.point).norm(), 0.0, 1e-14);
 }
 
+// Eq. 13 parametrises the axis by z_P (v): an axis parallel to the u axis
+// (dtheta_z = 0 in §1.5) has no such form, which is an error, while the axis
+// itself is still returned as a line.
+TEST(PlanarMozzi, AxisParallelToTheUAxisCannotBeParametrisedByV) {
+  const auto pts = fig3Layout();
+  std::vector<double> w;
+  for (const auto& p : pts) w.push_back(rigid(p, Vector2(0.0, -0.1), Vector2(1.0, 0.0), 1e-3));
+  const auto m = planarMozziAxis(pts, w, Vector2(0, 0));
+  ASSERT_TRUE(m.ok()) << m.error().describe();
+  EXPECT_NEAR(m->dThetaZ, 0.0, 1e-15);
+  EXPECT_NEAR(m->twist.axis.point(1), -0.1, 1e-12);
+  const auto p = m->twist.axis.pointAtV(0.0);
+  ASSERT_FALSE(p.ok());
+  EXPECT_NE(p.error().message.find("parallel"), std::string::npos);
+}
+
 TEST(LinearRegression, MatchesTheClosedForm) {
   // y = 1 + 2x with residuals (+1, -2, +1) at x = (0, 1, 2): slope 2, intercept 1,
   // s^2 = 6 / 1, Sxx = 2, se(slope) = sqrt(3).
