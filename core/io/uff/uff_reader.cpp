@@ -18,6 +18,8 @@
 
 #include <sys/stat.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -175,6 +177,10 @@ class Source {
     const std::uint64_t c = consumed();
     return total_ > c ? total_ - c : 0;
   }
+  // Nothing left to read (the last line has been handed out).
+  bool exhausted() const { return eof_ && pos_ >= end_; }
+  // One past the last byte held (a line ending here had no terminator).
+  const char* lastByteEnd() const { return buf_.data() + end_; }
   bool sawCrLf() const { return crlf_; }
   bool sawLoneCr() const { return loneCr_; }
   bool ioFailed() const { return file_ && std::ferror(file_); }
@@ -1113,6 +1119,12 @@ Result<DatasetData> parse58(DatasetContext& ctx, const Binary58& bin) {
                        std::to_string(r.column + 1) + ")");
     }
     if (r.status != NumberStatus::Ok) {
+      // A number cut off by the end of the file is truncation, not a typo.
+      if (src.exhausted() && line.data() + line.size() == src.lastByteEnd()) {
+        return ctx.error("file truncated: end of file inside data value '" + detail::excerpt(line, r.column) +
+                         "' (" + std::to_string(k / perPoint) + " of " + std::to_string(declared) +
+                         " declared points read)");
+      }
       return ctx.error("malformed data value '" + detail::excerpt(line, r.column) + "' at column " +
                        std::to_string(r.column + 1));
     }
