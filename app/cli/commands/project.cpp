@@ -1,65 +1,311 @@
-// mozzi-cli project: create, inspect and demo projects.
+// mozzi-cli project: create, inspect, demo and export projects
+// (docs/cli/project.md).
+#include <map>
+#include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "app/build_info.h"
 #include "app/cli/args.h"
 #include "app/cli/command.h"
+#include "core/io/csv/csv_exchange.h"
 #include "core/io/project_store.h"
+#include "core/io/uff/uff.h"
 #include "devices/sim/virtual_specimens.h"
 
 namespace mozzi::cli {
 namespace {
 
+constexpr const char* kUsage =
+    "Usage: mozzi-cli project info FILE.mozzi [--json]\n"
+    "       mozzi-cli project new|demo FILE.mozzi\n"
+    "       mozzi-cli project export FILE.mozzi --uff OUT.uff [--binary] [--frf-set ID]\n"
+    "       mozzi-cli project export FILE.mozzi --csv OUT.csv [--frf-set ID]\n";
+
+int fail(std::ostream& err, const std::string& what, const core::Error& e) {
+  err << "mozzi-cli project " << what << ": " << e.describe() << "\n";
+  return kExitFailure;
+}
+
+int info(const std::string& file, bool json, std::ostream& out, std::ostream& err) {
+  auto store = core::io::ProjectStore::open(file, core::io::ProjectStore::OpenMode::ReadOnly);
+  if (!store) return fail(err, "info", store.error());
+  auto summary = store->summary();
+  if (!summary) return fail(err, "info", summary.error());
+  auto frfSets = store->frfSets();
+  if (!frfSets) return fail(err, "info", frfSets.error());
+  auto modal = store->modalResults();
+  if (!modal) return fail(err, "info", modal.error());
+
+  // Per campaign: hits accepted / rejected and stored bytes.
+  struct CampaignLine {
+    std::string specimen, name, kind;
+    std::int64_t id = 0, accepted = 0, rejected = 0, bytes = 0;
+  };
+  std::vector<CampaignLine> campaigns;
+  for (const auto& sp : summary->specimens) {
+    auto list = store->campaigns(sp.id);
+    if (!list) return fail(err, "info", list.error());
+    for (const auto& c : *list) {
+      auto hits = store->hits(c.id);
+      if (!hits) return fail(err, "info", hits.error());
+      CampaignLine line{sp.name, c.name, c.kind, c.id};
+      for (const auto& h : *hits) {
+        (h.accepted ? line.accepted : line.rejected) += 1;
+        line.bytes += h.storedBytes;
+      }
+      campaigns.push_back(line);
+    }
+  }
+
+  if (json) {
+    nlohmann::json j;
+    j["file"] = file;
+    j["schema"] = summary->schemaVersion;
+    j["created_utc"] = summary->createdUtc;
+    j["mozzi_version"] = summary->mozziVersion;
+    j["read_only_reason"] = store->readOnlyReason();
+    j["specimens"] = nlohmann::json::array();
+    for (const auto& sp : summary->specimens) {
+      j["specimens"].push_back({{"id", sp.id}, {"name", sp.name}, {"kind", sp.kind}});
+    }
+    j["tables"] = nlohmann::json::object();
+    for (const auto& c : summary->counts) j["tables"][c.table] = c.rows;
+    j["campaigns"] = nlohmann::json::array();
+    for (const auto& c : campaigns) {
+      j["campaigns"].push_back({{"id", c.id},
+                                {"specimen", c.specimen},
+                                {"name", c.name},
+                                {"kind", c.kind},
+                                {"hits_accepted", c.accepted},
+                                {"hits_rejected", c.rejected},
+                                {"stored_bytes", c.bytes}});
+    }
+    j["frf_sets"] = nlohmann::json::array();
+    for (const auto& s : *frfSets) {
+      j["frf_sets"].push_back({{"id", s.id},
+                               {"name", s.name},
+                               {"type", core::frfTypeName(s.type)},
+                               {"lines", s.lineCount},
+                               {"responses", s.responseCount},
+                               {"references", s.referenceCount}});
+    }
+    j["modal_results"] = nlohmann::json::array();
+    for (const auto& m : *modal) {
+      j["modal_results"].push_back({{"id", m.id}, {"name", m.name}, {"method", m.method}, {"modes", m.modeCount}});
+    }
+    out << j.dump(2) << "\n";
+    return kExitOk;
+  }
+  out << "project " << file << "\n  schema " << summary->schemaVersion << ", created " << summary->createdUtc
+      << " by Mozzi " << summary->mozziVersion << "\n  specimens: " << summary->specimens.size() << "\n";
+  for (const auto& sp : summary->specimens) out << "    " << sp.name << " [" << sp.kind << "]\n";
+  if (!campaigns.empty()) out << "  campaigns:\n";
+  for (const auto& c : campaigns) {
+    out << "    " << c.id << " " << c.specimen << " / " << c.name << " (" << c.kind << "): " << c.accepted
+        << " accepted, " << c.rejected << " rejected hits, " << c.bytes << " bytes of samples\n";
+  }
+  if (!frfSets->empty()) out << "  FRF sets:\n";
+  for (const auto& s : *frfSets) {
+    out << "    " << s.id << " " << s.name << ": " << core::frfTypeName(s.type) << ", " << s.lineCount << " lines, "
+        << s.responseCount << " responses x " << s.referenceCount << " references\n";
+  }
+  if (!modal->empty()) out << "  modal results:\n";
+  for (const auto& m : *modal) out << "    " << m.id << " " << m.name << " (" << m.method << "): " << m.modeCount << " modes\n";
+  out << "  rows per table:\n";
+  for (const auto& c : summary->counts) out << "    " << c.table << ": " << c.rows << "\n";
+  return kExitOk;
+}
+
+// UFF export: header (151), units (164, SI), per specimen its coordinate
+// systems (2420), nodes (2411) and trace lines (82), then every FRF set as 58
+// records and every modal result whose DOFs 55 can hold as 55 records.
+int exportUff(const core::io::ProjectStore& store, const std::string& file, const std::string& outPath, bool binary,
+              std::optional<std::int64_t> onlySet, std::ostream& out, std::ostream& err) {
+  namespace uff = core::io::uff;
+  auto summary = store.summary();
+  if (!summary) return fail(err, "export", summary.error());
+  uff::UffFile uffFile;
+  uff::Header151 header;
+  header.modelName = summary->specimens.empty() ? file : summary->specimens.front().name;
+  header.description = "exported from " + file;
+  header.dbProgram = "Mozzi " + summary->mozziVersion;
+  header.uffProgram = std::string("Mozzi ") + buildinfo::kMozziVersion;
+  uffFile.datasets.push_back(uff::makeDataset(header));
+  uff::Units164 units;
+  units.description = "SI: meter (newton)";
+  uffFile.datasets.push_back(uff::makeDataset(units));
+  int warnings = 0;
+  for (const auto& sp : summary->specimens) {
+    auto mesh = store.mesh(sp.id);
+    if (!mesh) return fail(err, "export", mesh.error());
+    if (!mesh->coordinateSystems.empty()) {
+      uff::CoordinateSystemSet set;
+      set.partName = sp.name;
+      for (const auto& c : mesh->coordinateSystems) {
+        uff::CoordinateSystem cs;
+        cs.label = c.label;
+        cs.type = static_cast<int>(c.kind);
+        cs.name = c.name;
+        cs.origin = c.origin;
+        cs.axes = c.rotation.transpose();  // UFF rows = axis directions; stored columns = axes
+        set.systems.push_back(cs);
+      }
+      uffFile.datasets.push_back(uff::makeDataset(set));
+    }
+    if (!mesh->nodes.empty()) {
+      uff::NodeSet nodes;
+      for (const auto& n : mesh->nodes) nodes.nodes.push_back({n.label, n.definitionCs, n.displacementCs, 0, n.position});
+      uffFile.datasets.push_back(uff::makeDataset(nodes));
+    }
+    if (!mesh->lines.empty()) {
+      uff::TraceLine82 trace;
+      trace.description = sp.name;
+      for (const auto& l : mesh->lines) {
+        if (!trace.nodes.empty()) trace.nodes.push_back(0);  // lift the pen between lines
+        trace.nodes.push_back(l.nodeA);
+        trace.nodes.push_back(l.nodeB);
+      }
+      uffFile.datasets.push_back(uff::makeDataset(trace));
+    }
+  }
+  auto sets = store.frfSets();
+  if (!sets) return fail(err, "export", sets.error());
+  int exportedSets = 0;
+  for (const auto& s : *sets) {
+    if (onlySet && s.id != *onlySet) continue;
+    auto frf = store.frfSet(s.id);
+    if (!frf) return fail(err, "export", frf.error());
+    auto records = uff::fromFrfMatrix(*frf);
+    if (!records) return fail(err, "export", records.error());
+    for (auto& r : *records) {
+      r.binary = binary;
+      uffFile.datasets.push_back(uff::makeDataset(r));
+    }
+    ++exportedSets;
+  }
+  if (onlySet && exportedSets == 0) {
+    err << "mozzi-cli project export: no FRF set with id " << *onlySet << " in " << file << "\n";
+    return kExitFailure;
+  }
+  auto modal = store.modalResults();
+  if (!modal) return fail(err, "export", modal.error());
+  int exportedModal = 0;
+  if (!onlySet) {
+    for (const auto& m : *modal) {
+      auto table = store.modalResult(m.id);
+      if (!table) return fail(err, "export", table.error());
+      uff::ModalData data;
+      data.dofs = table->dofs;
+      const auto nm = static_cast<Eigen::Index>(table->modes.size());
+      data.frequencyHz.resize(nm);
+      data.dampingRatio.resize(nm);
+      data.modalMass = core::Vector::Zero(nm);
+      data.shapes = core::ComplexMatrix::Zero(static_cast<Eigen::Index>(table->dofs.size()), nm);
+      for (Eigen::Index k = 0; k < nm; ++k) {
+        const auto& mode = table->modes[static_cast<std::size_t>(k)];
+        data.frequencyHz[k] = mode.frequencyHz;
+        data.dampingRatio[k] = mode.dampingRatio;
+        if (mode.shape.size() == data.shapes.rows()) data.shapes.col(k) = mode.shape;
+        data.complexShapes = data.complexShapes || !mode.shape.imag().isZero(0.0);
+      }
+      auto records = uff::fromModalData(data);
+      if (!records) {
+        // 55 stores one vector per node in global axes; a result on other DOFs
+        // stays in the project (export it as CSV) and the user is told.
+        err << "mozzi-cli project export: warning: modal result " << m.id << " '" << m.name
+            << "' not exported: " << records.error().describe() << "\n";
+        ++warnings;
+        continue;
+      }
+      for (auto& r : *records) uffFile.datasets.push_back(uff::makeDataset(r));
+      ++exportedModal;
+    }
+  }
+  uff::WriteOptions options;
+  options.encoding = binary ? uff::Encoding58::Binary : uff::Encoding58::Ascii;
+  if (auto r = uff::writeFile(outPath, uffFile, options); !r) return fail(err, "export", r.error());
+  out << "wrote " << outPath << ": " << uffFile.datasets.size() << " datasets (" << exportedSets << " FRF sets, "
+      << exportedModal << " modal results" << (warnings ? ", " + std::to_string(warnings) + " skipped" : "")
+      << ")\n";
+  return kExitOk;
+}
+
+int exportCsv(const core::io::ProjectStore& store, const std::string& file, const std::string& outPath,
+              std::optional<std::int64_t> onlySet, std::ostream& out, std::ostream& err) {
+  auto sets = store.frfSets();
+  if (!sets) return fail(err, "export", sets.error());
+  if (!onlySet) {
+    if (sets->size() != 1) {
+      err << "mozzi-cli project export: " << file << " holds " << sets->size()
+          << " FRF sets; choose one with --frf-set ID (see 'project info')\n";
+      return sets->empty() ? kExitFailure : kExitUsage;
+    }
+    onlySet = sets->front().id;
+  }
+  auto frf = store.frfSet(*onlySet);
+  if (!frf) return fail(err, "export", frf.error());
+  if (auto r = core::io::csv::exportFrfCsv(*frf, outPath); !r) return fail(err, "export", r.error());
+  out << "wrote " << outPath << ": FRF set " << *onlySet << ", " << frf->lineCount() << " lines, "
+      << frf->responseCount() << " x " << frf->referenceCount() << " FRFs\n";
+  return kExitOk;
+}
+
 int projectCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const auto parsed = ParsedArgs::parse(args, OptionSpec{{}, {"--json"}});
+  const auto parsed = ParsedArgs::parse(args, OptionSpec{{"--uff", "--csv", "--frf-set"}, {"--json", "--binary"}});
   if (!parsed || parsed->positional().size() != 2) {
-    err << "mozzi-cli project: " << (parsed ? "expected a subcommand and a file" : parsed.error().describe())
-        << "\nUsage: mozzi-cli project info|new|demo FILE.mozzi\n";
+    err << "mozzi-cli project: " << (parsed ? "expected a subcommand and a file" : parsed.error().describe()) << "\n"
+        << kUsage;
     return kExitUsage;
   }
   const std::string& sub = parsed->positional()[0];
   const std::string& file = parsed->positional()[1];
   if (sub == "new") {
     auto store = core::io::ProjectStore::create(file, buildinfo::kMozziVersion);
-    if (!store) {
-      err << "mozzi-cli project new: " << store.error().describe() << "\n";
-      return kExitFailure;
-    }
+    if (!store) return fail(err, "new", store.error());
     out << "created " << file << " (schema " << store->schemaVersion() << ")\n";
     return kExitOk;
   }
   if (sub == "demo") {
-    if (auto r = devices::sim::createDemoProject(file, buildinfo::kMozziVersion); !r) {
-      err << "mozzi-cli project demo: " << r.error().describe() << "\n";
-      return kExitFailure;
-    }
+    if (auto r = devices::sim::createDemoProject(file, buildinfo::kMozziVersion); !r) return fail(err, "demo", r.error());
     out << "created demo project " << file << " with " << devices::sim::virtualSpecimens().size()
         << " virtual specimens\n";
     return kExitOk;
   }
-  if (sub == "info") {
+  if (sub == "info") return info(file, parsed->flag("--json"), out, err);
+  if (sub == "export") {
+    const auto uffPath = parsed->value("--uff");
+    const auto csvPath = parsed->value("--csv");
+    if (uffPath.has_value() == csvPath.has_value()) {
+      err << "mozzi-cli project export: give exactly one of --uff OUT.uff or --csv OUT.csv\n" << kUsage;
+      return kExitUsage;
+    }
+    std::optional<std::int64_t> onlySet;
+    if (auto number = parsed->number("--frf-set"); !number) {
+      err << "mozzi-cli project export: " << number.error().describe() << "\n";
+      return kExitUsage;
+    } else if (number->has_value()) {
+      onlySet = static_cast<std::int64_t>(**number);
+      if (static_cast<double>(*onlySet) != **number || *onlySet <= 0) {
+        err << "mozzi-cli project export: --frf-set needs a positive whole id\n";
+        return kExitUsage;
+      }
+    }
+    if (csvPath && parsed->flag("--binary")) {
+      err << "mozzi-cli project export: --binary applies to --uff only\n";
+      return kExitUsage;
+    }
     auto store = core::io::ProjectStore::open(file, core::io::ProjectStore::OpenMode::ReadOnly);
-    if (!store) {
-      err << "mozzi-cli project info: " << store.error().describe() << "\n";
-      return kExitFailure;
-    }
-    auto summary = store->summary();
-    if (!summary) {
-      err << "mozzi-cli project info: " << summary.error().describe() << "\n";
-      return kExitFailure;
-    }
-    out << "project " << file << "\n  schema " << summary->schemaVersion << ", created " << summary->createdUtc
-        << " by Mozzi " << summary->mozziVersion << "\n  specimens: " << summary->specimens.size() << "\n";
-    for (const auto& sp : summary->specimens) out << "    " << sp.name << " [" << sp.kind << "]\n";
-    for (const auto& c : summary->counts) out << "  " << c.table << ": " << c.rows << " rows\n";
-    return kExitOk;
+    if (!store) return fail(err, "export", store.error());
+    if (uffPath) return exportUff(*store, file, *uffPath, parsed->flag("--binary"), onlySet, out, err);
+    return exportCsv(*store, file, *csvPath, onlySet, out, err);
   }
-  err << "mozzi-cli project: unknown subcommand '" << sub << "'\nUsage: mozzi-cli project info|new|demo FILE.mozzi\n";
+  err << "mozzi-cli project: unknown subcommand '" << sub << "'\n" << kUsage;
   return kExitUsage;
 }
 
-const CommandRegistrar kRegistrar({"project", "info|new|demo FILE.mozzi",
-                                   "Create a project (empty or the demo) or summarise one", projectCommand});
+const CommandRegistrar kRegistrar({"project", "info|new|demo|export FILE.mozzi [--json] [--uff OUT.uff | --csv OUT.csv]",
+                                   "Create a project (empty or the demo), summarise it, or export its FRFs and modes",
+                                   projectCommand});
 
 }  // namespace
 }  // namespace mozzi::cli
