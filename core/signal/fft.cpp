@@ -22,7 +22,6 @@ template <class T>
 AlignedBuffer<T>::AlignedBuffer(std::size_t count)
     : data_(static_cast<T*>(fftw_malloc(sizeof(T) * (count == 0 ? 1 : count)))), size_(count) {
   if (data_ == nullptr) throw std::bad_alloc();
-  std::memset(static_cast<void*>(data_), 0, sizeof(T) * (count == 0 ? 1 : count));
 }
 
 template <class T>

@@ -15,7 +15,7 @@
 namespace mozzi::core::signal {
 
 // Heap block aligned as FFTW wants it (fftw_malloc), for inputs and outputs of
-// RealFft::forward; move-only.
+// RealFft::forward; move-only. Contents start uninitialised.
 template <class T>
 class AlignedBuffer {
  public:

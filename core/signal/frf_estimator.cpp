@@ -114,14 +114,18 @@ Result<SpectralAverager> SpectralAverager::create(const TimeRecord& layout, cons
   auto fft = RealFft::forLength(a.n_);
   if (!fft) return fft.error();
   a.fft_ = *fft;
-  auto wr = makeWindow(options.referenceWindow, a.n_, a.sampleRateHz_, a.preTrigger_);
-  if (!wr) return wr.error();
-  auto wx = makeWindow(options.responseWindow, a.n_, a.sampleRateHz_, a.preTrigger_);
-  if (!wx) return wx.error();
-  a.refWindow_ = std::move(*wr);
-  a.respWindow_ = std::move(*wx);
   a.refRect_ = isRectangular(options.referenceWindow);
   a.respRect_ = isRectangular(options.responseWindow);
+  if (!a.refRect_) {  // rectangular windows are applied by copying, no vector needed
+    auto wr = makeWindow(options.referenceWindow, a.n_, a.sampleRateHz_, a.preTrigger_);
+    if (!wr) return wr.error();
+    a.refWindow_ = std::move(*wr);
+  }
+  if (!a.respRect_) {
+    auto wx = makeWindow(options.responseWindow, a.n_, a.sampleRateHz_, a.preTrigger_);
+    if (!wx) return wx.error();
+    a.respWindow_ = std::move(*wx);
+  }
   const Eigen::Index nf = a.fft_->lineCount();
   a.frequencyHz_ = Vector::LinSpaced(nf, 0.0, static_cast<double>(nf - 1)) * (a.sampleRateHz_ / static_cast<double>(a.n_));
   const auto no = static_cast<Eigen::Index>(a.responses_.size());
@@ -130,7 +134,8 @@ Result<SpectralAverager> SpectralAverager::create(const TimeRecord& layout, cons
   a.sfx_ = ComplexMatrix::Zero(nf, no);
   a.in_ = std::make_shared<AlignedBuffer<double>>(static_cast<std::size_t>(a.n_));
   a.fSpec_ = std::make_shared<AlignedBuffer<std::complex<double>>>(static_cast<std::size_t>(nf));
-  a.xSpec_ = std::make_shared<AlignedBuffer<std::complex<double>>>(static_cast<std::size_t>(nf));
+  a.xSpec_ = std::make_shared<AlignedBuffer<std::complex<double>>>(static_cast<std::size_t>(nf) *
+                                                                   std::max<std::size_t>(1, a.responses_.size()));
   return a;
 }
 
@@ -169,6 +174,7 @@ Result<void> SpectralAverager::add(const TimeRecord& hit) {
   double* in = in_->data();
   auto transform = [&](Eigen::Index c, const Vector& w, bool rect, std::complex<double>* out) -> Result<void> {
     const double* x = hit.samples.col(c).data();
+    // into the aligned input (FFTW's SIMD alignment can exceed Eigen's)
     if (rect) {
       std::copy(x, x + n_, in);
     } else {
@@ -191,38 +197,28 @@ Result<void> SpectralAverager::add(const TimeRecord& hit) {
   };
 
   std::complex<double>* f = fSpec_->data();
-  std::complex<double>* x = xSpec_->data();
   if (auto ok = transform(reference_, refWindow_, refRect_, f); !ok) return ok.error();
-  double forceEnergy = 0.0;
-  for (Eigen::Index k = 0; k < nf; ++k) forceEnergy += std::norm(f[k]);
+  const double forceEnergy = Eigen::Map<const ComplexVector>(f, nf).squaredNorm();
   if (!(forceEnergy > 0.0)) {
     return makeError(ErrorCode::InvalidArgument, "force is zero (after the force window): no excitation to divide by",
                      where + ", " + channelWhere(hit, reference_));
   }
-  // Validate every response before touching the accumulators, so a bad hit
-  // leaves the average unchanged.
-  const bool single = responses_.size() == 1;
-  for (std::size_t o = 0; o < responses_.size() && !single; ++o) {
-    const Eigen::Index c = responses_[o];
-    const double* xs = hit.samples.col(c).data();
-    for (Eigen::Index i = 0; i < n_; ++i) {
-      if (!std::isfinite(xs[i])) {
-        return makeError(ErrorCode::InvalidArgument, "sample is NaN or infinite",
-                         where + ", " + channelWhere(hit, c) + ", sample " + std::to_string(i));
-      }
-    }
-  }
+  // Every response transformed and checked before any accumulator changes, so
+  // a bad hit leaves the average untouched.
   for (std::size_t o = 0; o < responses_.size(); ++o) {
-    if (auto ok = transform(responses_[o], respWindow_, respRect_, x); !ok) return ok.error();
-    std::complex<double>* sfx = sfx_.col(static_cast<Eigen::Index>(o)).data();
-    double* sxx = sxx_.col(static_cast<Eigen::Index>(o)).data();
-    for (Eigen::Index k = 0; k < nf; ++k) {
-      sfx[k] += std::conj(f[k]) * x[k];  // conj(F) X
-      sxx[k] += std::norm(x[k]);         // |X|^2
+    if (auto ok = transform(responses_[o], respWindow_, respRect_, xSpec_->data() + o * static_cast<std::size_t>(nf)); !ok) {
+      return ok.error();
     }
   }
-  double* sff = sff_.data();
-  for (Eigen::Index k = 0; k < nf; ++k) sff[k] += std::norm(f[k]);
+  // Accumulate with Eigen's packet math (SIMD complex products without the
+  // NaN-recovery path of std::complex; the inputs are known finite here).
+  const Eigen::Map<const ComplexVector> fv(f, nf);
+  sff_.array() += fv.real().array().square() + fv.imag().array().square();
+  for (std::size_t o = 0; o < responses_.size(); ++o) {
+    const Eigen::Map<const ComplexVector> xv(xSpec_->data() + o * static_cast<std::size_t>(nf), nf);
+    sfx_.col(static_cast<Eigen::Index>(o)).array() += fv.conjugate().array() * xv.array();  // conj(F) X
+    sxx_.col(static_cast<Eigen::Index>(o)).array() += xv.real().array().square() + xv.imag().array().square();  // |X|^2
+  }
   ++hits_;
   return {};
 }
@@ -236,6 +232,13 @@ Vector esdScale(Eigen::Index nf, Eigen::Index n, double fs, int hits) {
   return s;
 }
 }  // namespace
+
+void SpectralAverager::reset() {
+  sff_.setZero();
+  sxx_.setZero();
+  sfx_.setZero();
+  hits_ = 0;
+}
 
 Vector SpectralAverager::gff() const {
   if (hits_ == 0) return Vector::Zero(sff_.size());
@@ -275,11 +278,11 @@ Result<FrfMatrix> SpectralAverager::frf(FrfEstimator estimator) const {
     for (Eigen::Index o = 0; o < no; ++o) {
       const Complex gfx = sfx_(k, o);
       const double gxx = sxx_(k, o);
-      const double g2 = std::norm(gfx);
+      const double g2 = gfx.real() * gfx.real() + gfx.imag() * gfx.imag();  // |G_fx|^2 (std::norm goes through hypot)
       // gamma^2 = |G_fx|^2 / (G_ff G_xx); 0 when the response is exactly zero
       coh(k, o) = gxx > 0.0 ? std::clamp(g2 / (gff * gxx), 0.0, 1.0) : 0.0;
       if (estimator == FrfEstimator::H1) {
-        h(k, o) = gfx / gff;  // H1 = G_fx / G_ff
+        h(k, o) = Complex(gfx.real() / gff, gfx.imag() / gff);  // H1 = G_fx / G_ff
         continue;
       }
       if (!(g2 > 0.0)) {

@@ -61,6 +61,9 @@ class SpectralAverager {
   // channel DOFs; NaN samples and an all-zero windowed force are errors.
   Result<void> add(const TimeRecord& hit);
 
+  // Forgets every hit, keeps layout, windows and plan (next measurement point).
+  void reset();
+
   int hitCount() const { return hits_; }
   Eigen::Index referenceChannel() const { return reference_; }
   const std::vector<Eigen::Index>& responseChannels() const { return responses_; }
@@ -96,7 +99,8 @@ class SpectralAverager {
   ComplexMatrix sfx_;
   int hits_ = 0;
   std::shared_ptr<AlignedBuffer<double>> in_;
-  std::shared_ptr<AlignedBuffer<std::complex<double>>> fSpec_, xSpec_;
+  std::shared_ptr<AlignedBuffer<std::complex<double>>> fSpec_;
+  std::shared_ptr<AlignedBuffer<std::complex<double>>> xSpec_;  // nf per response, back to back
 };
 
 // The lines of `frf` with fLo <= f <= fHi (FRFs and coherence), e.g. to drop
