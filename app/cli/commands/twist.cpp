@@ -1,6 +1,7 @@
 // mozzi-cli twist static|dynamic|modal FILE.csv and mozzi-cli mozzi FILE.csv:
 // twist and Mozzi axes from plate measurements (thesis §1.2 to §1.5).
 // Input formats are documented in docs/cli/stiffness.md.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -9,6 +10,8 @@
 
 #include "app/cli/args.h"
 #include "app/cli/command.h"
+#include "core/common/dof.h"
+#include "core/io/csv/csv_exchange.h"
 #include "core/stiffness/dynamic_twist.h"
 #include "core/stiffness/plate_motion.h"
 #include "core/stiffness/screw_axis.h"
@@ -49,7 +52,7 @@ bool toNumber(const std::string& t, double& v) {
   return end == t.c_str() + t.size() && std::isfinite(v);
 }
 
-core::Result<PlateCsv> readPlateCsv(const std::string& path, bool needSensors) {
+core::Result<PlateCsv> readPlateCsv(const std::string& path, bool needSensors, bool needRows = true) {
   std::ifstream in(path);
   if (!in) return core::makeError(core::ErrorCode::IoError, "cannot open file", path);
   PlateCsv csv;
@@ -95,7 +98,7 @@ core::Result<PlateCsv> readPlateCsv(const std::string& path, bool needSensors) {
                            "at least 3 'sensor,u,v' rows are needed, found " + std::to_string(csv.sensors.size()),
                            path);
   }
-  if (csv.rows.empty()) return core::makeError(core::ErrorCode::ParseError, "no data rows", path);
+  if (needRows && csv.rows.empty()) return core::makeError(core::ErrorCode::ParseError, "no data rows", path);
   return csv;
 }
 
@@ -233,6 +236,32 @@ int twistDynamic(const ParsedArgs& args, const std::string& file, std::ostream& 
   return kExitOk;
 }
 
+int printModal(const ParsedArgs& args, const st::ModalAxis& modal, std::ostream& out) {
+  const st::ModalAxis* r = &modal;
+  if (args.flag("--json")) {
+    nlohmann::json rec = nlohmann::json::array();
+    for (Eigen::Index i = 0; i < r->receptance.size(); ++i) {
+      rec.push_back({{"magnitude_m_per_N", std::abs(r->receptance(i))}, {"phase_deg", std::arg(r->receptance(i)) * kDeg}});
+    }
+    out << nlohmann::json{{"frequency_Hz", r->frequencyHz},
+                          {"method", st::phasorAxisCaseName(r->axis.method)},
+                          {"max_phase_deviation_deg", r->axis.maxPhaseDeviation * kDeg},
+                          {"axis", axisJson(r->axis.axis.axis)},
+                          {"receptance", rec},
+                          {"low_confidence", r->axis.lowConfidence},
+                          {"note", r->axis.note}}
+               .dump(2)
+        << "\n";
+  } else {
+    out << "modal twist axis at " << r->frequencyHz << " Hz: " << st::phasorAxisCaseName(r->axis.method)
+        << " case (phases within " << r->axis.maxPhaseDeviation * kDeg << " deg of 0/180)\n";
+    printAxis(out, r->axis.axis.axis);
+    if (r->axis.lowConfidence) out << "  LOW CONFIDENCE: " << r->axis.note << "\n";
+  }
+  return kExitOk;
+}
+
+
 int twistModal(const ParsedArgs& args, const std::string& file, std::ostream& out, std::ostream& err) {
   auto freq = args.number("--freq");
   if (!freq) return fail(err, "twist modal", freq.error());
@@ -240,9 +269,42 @@ int twistModal(const ParsedArgs& args, const std::string& file, std::ostream& ou
     err << "mozzi-cli twist modal: --freq HZ is required\n";
     return kExitUsage;
   }
-  auto csv = readPlateCsv(file, true);
+  const auto frfFile = args.value("--frf");
+  auto csv = readPlateCsv(file, true, !frfFile);
   if (!csv) return fail(err, "twist modal", csv.error());
   const std::size_t ns = csv->sensors.size();
+  if (frfFile) {
+    // FRFs in the shared CSV exchange format (core/io/csv); the sensors of FILE
+    // are matched to --responses DOFs in order, or to the first responses.
+    auto frf = core::io::csv::importFrfCsv(*frfFile);
+    if (!frf) return fail(err, "twist modal", frf.error());
+    std::vector<int> cols;
+    if (const auto list = args.value("--responses")) {
+      std::istringstream s(*list);
+      std::string item;
+      while (std::getline(s, item, ',')) {
+        auto dof = core::parseDof(item);
+        if (!dof) return fail(err, "twist modal", dof.error());
+        const auto it = std::find(frf->responses.begin(), frf->responses.end(), *dof);
+        if (it == frf->responses.end()) {
+          return fail(err, "twist modal",
+                      core::makeError(core::ErrorCode::NotFound, "response " + item + " is not in the FRF file", *frfFile));
+        }
+        cols.push_back(static_cast<int>(it - frf->responses.begin()));
+      }
+    } else {
+      for (std::size_t i = 0; i < ns && i < frf->responses.size(); ++i) cols.push_back(static_cast<int>(i));
+    }
+    st::PhasorAxisOptions o;
+    if (auto tol = args.number("--phase-tol-deg"); !tol) {
+      return fail(err, "twist modal", tol.error());
+    } else if (*tol) {
+      o.phaseTolerance = **tol / kDeg;
+    }
+    auto r = st::modalTwistAxis(*frf, cols, 0, **freq, csv->sensors, csv->hasLoad ? csv->load : Vector2::Zero(), o);
+    if (!r) return fail(err, "twist modal", r.error());
+    return printModal(args, *r, out);
+  }
   if (csv->rows.front().size() != 1 + 2 * ns) {
     return fail(err, "twist modal",
                 core::makeError(core::ErrorCode::ParseError, "rows need freq_Hz, then Re, Im per accelerometer", file));
@@ -282,35 +344,15 @@ int twistModal(const ParsedArgs& args, const std::string& file, std::ostream& ou
   }
   auto r = st::modalTwistAxis(frf, cols, 0, **freq, csv->sensors, csv->hasLoad ? csv->load : Vector2::Zero(), o);
   if (!r) return fail(err, "twist modal", r.error());
-  if (args.flag("--json")) {
-    nlohmann::json rec = nlohmann::json::array();
-    for (Eigen::Index i = 0; i < r->receptance.size(); ++i) {
-      rec.push_back({{"magnitude_m_per_N", std::abs(r->receptance(i))}, {"phase_deg", std::arg(r->receptance(i)) * kDeg}});
-    }
-    out << nlohmann::json{{"frequency_Hz", r->frequencyHz},
-                          {"method", st::phasorAxisCaseName(r->axis.method)},
-                          {"max_phase_deviation_deg", r->axis.maxPhaseDeviation * kDeg},
-                          {"axis", axisJson(r->axis.axis.axis)},
-                          {"receptance", rec},
-                          {"low_confidence", r->axis.lowConfidence},
-                          {"note", r->axis.note}}
-               .dump(2)
-        << "\n";
-  } else {
-    out << "modal twist axis at " << r->frequencyHz << " Hz: " << st::phasorAxisCaseName(r->axis.method)
-        << " case (phases within " << r->axis.maxPhaseDeviation * kDeg << " deg of 0/180)\n";
-    printAxis(out, r->axis.axis.axis);
-    if (r->axis.lowConfidence) out << "  LOW CONFIDENCE: " << r->axis.note << "\n";
-  }
-  return kExitOk;
+  return printModal(args, *r, out);
 }
 
 const char* kTwistUsage =
     "Usage: mozzi-cli twist static|dynamic|modal FILE.csv [--freq HZ] [--type accelerance|mobility|receptance] "
-    "[--phase-tol-deg D] [--json]\n";
+    "[--frf FRF.csv [--responses DOF,DOF,DOF]] [--phase-tol-deg D] [--json]\n";
 
 int twistCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const auto parsed = ParsedArgs::parse(args, OptionSpec{{"--freq", "--type", "--phase-tol-deg"}, {"--json"}});
+  const auto parsed = ParsedArgs::parse(args, OptionSpec{{"--freq", "--type", "--phase-tol-deg", "--frf", "--responses"}, {"--json"}});
   if (!parsed || parsed->positional().size() != 2) {
     err << "mozzi-cli twist: " << (parsed ? "expected a mode and a file" : parsed.error().describe()) << "\n"
         << kTwistUsage;

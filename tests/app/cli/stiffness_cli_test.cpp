@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "app/cli/command.h"
+#include "core/io/csv/csv_exchange.h"
 
 namespace mozzi::cli {
 namespace {
@@ -51,6 +52,7 @@ TEST(StiffnessCli, TwistStaticSingleLoadJson) {
 TEST(StiffnessCli, TwistStaticRampTable) {
   // Ramp of +-300 N, k_lat = 167 kN/m at the load point, rigid rotation about z = -0.1 (beta = 90 deg).
   std::ostringstream csv;
+  csv.precision(17);  // round-trip doubles, so the exact synthetic values come back
   csv << "sensor,0.2,-0.3\nsensor,0,-0.3\nsensor,0,0\nsensor,0.2,0\nload,0.1,-0.651\n";
   for (int k = 0; k <= 20; ++k) {
     const double f = -300 + 30 * k;
@@ -148,6 +150,39 @@ TEST(StiffnessCli, ForkLumpedAndBicycle) {
   EXPECT_NEAR(jb["torsion"]["stiffness_with_wheel_Nm_per_rad"].get<double>(), 1208.0, 0.002 * 1208.0);
   EXPECT_EQ(run({"fork", "lumped"}).code, kExitUsage);
   EXPECT_EQ(run({"fork", "nothing"}).code, kExitUsage);
+}
+
+
+// Modal axis from FRFs in the shared CSV exchange format (core/io/csv): three
+// accelerances of one real mode shape; the in-phase axis is the shape's axis
+// (the notes.md eq. 5 plane, crossing z = 0 at x = -0.10 m).
+TEST(StiffnessCli, TwistModalReadsTheSharedFrfCsv) {
+  core::FrfMatrix frf;
+  frf.type = core::FrfType::Accelerance;
+  frf.frequencyHz = core::Vector::LinSpaced(11, 60.0, 70.0);
+  for (int i = 0; i < 3; ++i) frf.responses.push_back(core::Dof{21 + i, core::Direction::Y, false});
+  frf.references.push_back(core::Dof{1, core::Direction::Y, false});
+  const double shape[3] = {1.0e-3, 0.6e-3, 0.2e-3};
+  core::ComplexMatrix h(11, 3);
+  for (int k = 0; k < 11; ++k) {
+    const double r = frf.frequencyHz(k) / 65.0;
+    const core::Complex q = 1.0 / core::Complex(1 - r * r, 0.04 * r);
+    for (int i = 0; i < 3; ++i) h(k, i) = q * shape[i];
+  }
+  frf.h.push_back(h);
+  const std::string frfPath = std::string(MOZZI_BINARY_DIR) + "/stiffness_cli_frf.csv";
+  ASSERT_TRUE(core::io::csv::exportFrfCsv(frf, frfPath).ok());
+  const auto geom = writeTemp("geom.csv", "sensor,0.2,-0.3\nsensor,0,-0.3\nsensor,0,0\nload,0,-0.5\n");
+  const auto r = run({"twist", "modal", geom, "--frf", frfPath, "--freq", "65", "--responses", "21:+Y,22:+Y,23:+Y",
+                      "--json"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["method"], "in-phase");
+  const double pu = j["axis"]["point_m"][0], pv = j["axis"]["point_m"][1];
+  const double du = j["axis"]["direction"][0], dv = j["axis"]["direction"][1];
+  EXPECT_NEAR(pu + (0.0 - pv) / dv * du, -0.10, 1e-9);
+  EXPECT_EQ(run({"twist", "modal", geom, "--frf", frfPath, "--freq", "65", "--responses", "99:+Y,22:+Y,23:+Y"}).code,
+            kExitFailure);
 }
 
 }  // namespace
