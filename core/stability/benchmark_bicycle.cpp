@@ -66,15 +66,15 @@ Result<BenchmarkParameters> loadBenchmarkParameters(const std::string& path) {
   }
   BenchmarkParameters p;
   const std::pair<const char*, double*> fields[] = {
-      {"w", &p.w},       {"c", &p.c},       {"lambda", &p.lambda}, {"g", &p.g},       {"rR", &p.rR},
-      {"mR", &p.mR},     {"IRxx", &p.IRxx}, {"IRyy", &p.IRyy},     {"xB", &p.xB},     {"zB", &p.zB},
-      {"mB", &p.mB},     {"IBxx", &p.IBxx}, {"IBxz", &p.IBxz},     {"IByy", &p.IByy}, {"IBzz", &p.IBzz},
-      {"xH", &p.xH},     {"zH", &p.zH},     {"mH", &p.mH},         {"IHxx", &p.IHxx}, {"IHxz", &p.IHxz},
-      {"IHyy", &p.IHyy}, {"IHzz", &p.IHzz}, {"rF", &p.rF},         {"mF", &p.mF},     {"IFxx", &p.IFxx},
-      {"IFyy", &p.IFyy}};
+      {"w", &p.w},       {"c", &p.c},       {"lambda", &p.lambda}, {"g", &p.g},       {"rR", &p.rR}, {"mR", &p.mR},
+      {"IRxx", &p.IRxx}, {"IRyy", &p.IRyy}, {"xB", &p.xB},         {"zB", &p.zB},     {"mB", &p.mB}, {"IBxx", &p.IBxx},
+      {"IBxz", &p.IBxz}, {"IByy", &p.IByy}, {"IBzz", &p.IBzz},     {"xH", &p.xH},     {"zH", &p.zH}, {"mH", &p.mH},
+      {"IHxx", &p.IHxx}, {"IHxz", &p.IHxz}, {"IHyy", &p.IHyy},     {"IHzz", &p.IHzz}, {"rF", &p.rF}, {"mF", &p.mF},
+      {"IFxx", &p.IFxx}, {"IFyy", &p.IFyy}};
   for (const auto& [name, field] : fields) {
     const auto it = values.find(name);
-    if (it == values.end()) return makeError(ErrorCode::ParseError, std::string("missing parameter '") + name + "'", path);
+    if (it == values.end())
+      return makeError(ErrorCode::ParseError, std::string("missing parameter '") + name + "'", path);
     *field = it->second;
   }
   if (auto ok = validate(p); !ok) return ok.error();
@@ -82,20 +82,21 @@ Result<BenchmarkParameters> loadBenchmarkParameters(const std::string& path) {
 }
 
 Result<void> validate(const BenchmarkParameters& p) {
-  const std::pair<const char*, double> positive[] = {{"w", p.w},   {"g", p.g},   {"rR", p.rR},  {"rF", p.rF},
-                                                     {"mR", p.mR}, {"mB", p.mB}, {"mH", p.mH}, {"mF", p.mF},
-                                                     {"IRxx", p.IRxx}, {"IRyy", p.IRyy}, {"IFxx", p.IFxx},
-                                                     {"IFyy", p.IFyy}};
+  const std::pair<const char*, double> positive[] = {
+      {"w", p.w},   {"g", p.g},   {"rR", p.rR},     {"rF", p.rF},     {"mR", p.mR},     {"mB", p.mB},
+      {"mH", p.mH}, {"mF", p.mF}, {"IRxx", p.IRxx}, {"IRyy", p.IRyy}, {"IFxx", p.IFxx}, {"IFyy", p.IFyy}};
   for (const auto& [name, x] : positive) {
     if (!(x > 0.0) || !std::isfinite(x)) {
-      return makeError(ErrorCode::InvalidArgument, "must be positive and finite", std::string("benchmark parameter ") + name);
+      return makeError(ErrorCode::InvalidArgument, "must be positive and finite",
+                       std::string("benchmark parameter ") + name);
     }
   }
   if (!(std::fabs(p.lambda) < M_PI / 2.0)) {
-    return makeError(ErrorCode::InvalidArgument, "steer axis tilt must be within (-pi/2, pi/2)", "benchmark parameter lambda");
+    return makeError(ErrorCode::InvalidArgument, "steer axis tilt must be within (-pi/2, pi/2)",
+                     "benchmark parameter lambda");
   }
-  for (const auto& [name, xx, xz, zz] : {std::tuple<const char*, double, double, double>{"B", p.IBxx, p.IBxz, p.IBzz},
-                                          {"H", p.IHxx, p.IHxz, p.IHzz}}) {
+  for (const auto& [name, xx, xz, zz] :
+       {std::tuple<const char*, double, double, double>{"B", p.IBxx, p.IBxz, p.IBzz}, {"H", p.IHxx, p.IHxz, p.IHzz}}) {
     Eigen::Matrix2d I;
     I << xx, xz, xz, zz;
     if (!I.allFinite() || Eigen::LLT<Eigen::Matrix2d>(I).info() != Eigen::Success) {
@@ -116,8 +117,8 @@ Result<BicycleModel> benchmarkModel(const BenchmarkParameters& p) {
   const double mT = p.mR + p.mB + p.mH + p.mF;
   const double xT = (p.xB * p.mB + p.xH * p.mH + p.w * p.mF) / mT;
   const double zT = (-p.rR * p.mR + p.zB * p.mB + p.zH * p.mH - p.rF * p.mF) / mT;
-  const double ITxx = p.IRxx + p.IBxx + p.IHxx + p.IFxx + p.mR * p.rR * p.rR + p.mB * p.zB * p.zB +
-                      p.mH * p.zH * p.zH + p.mF * p.rF * p.rF;
+  const double ITxx = p.IRxx + p.IBxx + p.IHxx + p.IFxx + p.mR * p.rR * p.rR + p.mB * p.zB * p.zB + p.mH * p.zH * p.zH +
+                      p.mF * p.rF * p.rF;
   const double ITxz = p.IBxz + p.IHxz - p.mB * p.xB * p.zB - p.mH * p.xH * p.zH + p.mF * p.w * p.rF;
   const double IRzz = p.IRxx, IFzz = p.IFxx;  // Appendix A: wheels are rotationally symmetric
   const double ITzz = IRzz + p.IBzz + p.IHzz + IFzz + p.mB * p.xB * p.xB + p.mH * p.xH * p.xH + p.mF * p.w * p.w;

@@ -16,13 +16,13 @@ namespace mozzi::core::stability {
 // Coordinates: x forward, y right, z down, origin at the rear contact point.
 // Lengths m, masses kg, inertias kg m^2 about the body's centre of mass.
 struct BenchmarkParameters {
-  double w = 0, c = 0, lambda = 0, g = 0;               // wheel base, trail, steer axis tilt, gravity
-  double rR = 0, mR = 0, IRxx = 0, IRyy = 0;            // rear wheel R
-  double xB = 0, zB = 0, mB = 0;                        // rear body and frame B
+  double w = 0, c = 0, lambda = 0, g = 0;     // wheel base, trail, steer axis tilt, gravity
+  double rR = 0, mR = 0, IRxx = 0, IRyy = 0;  // rear wheel R
+  double xB = 0, zB = 0, mB = 0;              // rear body and frame B
   double IBxx = 0, IBxz = 0, IByy = 0, IBzz = 0;
-  double xH = 0, zH = 0, mH = 0;                        // front handlebar and fork H
+  double xH = 0, zH = 0, mH = 0;  // front handlebar and fork H
   double IHxx = 0, IHxz = 0, IHyy = 0, IHzz = 0;
-  double rF = 0, mF = 0, IFxx = 0, IFyy = 0;            // front wheel F
+  double rF = 0, mF = 0, IFxx = 0, IFyy = 0;  // front wheel F
 };
 
 // Table 1 of Meijaard et al. (2007), typed from the paper.

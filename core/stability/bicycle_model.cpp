@@ -10,7 +10,9 @@ namespace mozzi::core::stability {
 
 namespace {
 
-bool allFinite(const Matrix& m) { return m.allFinite(); }
+bool allFinite(const Matrix& m) {
+  return m.allFinite();
+}
 
 // Solves the fixed-size state matrix without heap allocation for n = 2, 3.
 template <int N>
@@ -48,7 +50,8 @@ Result<void> validate(const BicycleModel& model) {
                        std::string("BicycleModel.") + name);
     }
     if (!allFinite(*m)) {
-      return makeError(ErrorCode::InvalidArgument, "matrix has a non-finite entry", std::string("BicycleModel.") + name);
+      return makeError(ErrorCode::InvalidArgument, "matrix has a non-finite entry",
+                       std::string("BicycleModel.") + name);
     }
   }
   if (!std::isfinite(model.g)) return makeError(ErrorCode::InvalidArgument, "gravity is not finite", "BicycleModel.g");

@@ -15,12 +15,12 @@
 namespace mozzi::core::stability {
 
 struct BicycleModel {
-  Matrix M;   // mass matrix [kg m^2]
-  Matrix C1;  // velocity-proportional damping-like matrix [kg m]
-  Matrix K0;  // gravity stiffness, multiplied by g [kg m]
-  Matrix K2;  // velocity-squared stiffness [kg]
-  Matrix C;   // structural damping of the compliant joint [N m s/rad]
-  Matrix K;   // structural stiffness of the compliant joint [N m/rad]
+  Matrix M;                              // mass matrix [kg m^2]
+  Matrix C1;                             // velocity-proportional damping-like matrix [kg m]
+  Matrix K0;                             // gravity stiffness, multiplied by g [kg m]
+  Matrix K2;                             // velocity-squared stiffness [kg]
+  Matrix C;                              // structural damping of the compliant joint [N m s/rad]
+  Matrix K;                              // structural stiffness of the compliant joint [N m/rad]
   double g = 9.81;                       // gravity [m/s^2]
   std::vector<std::string> coordinates;  // "roll", "steer", "bend", "torsion"
 

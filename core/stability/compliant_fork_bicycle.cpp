@@ -4,8 +4,12 @@
 
 namespace mozzi::core::stability {
 
-ForkBending thesisSteelForkBending() { return {5635.0, 0.8, 0.21}; }  // thesis §6.5, Figure 51
-ForkTorsion thesisSteelForkTorsion() { return {1938.0, 0.3, 0.0}; }   // thesis §6.4, eq. 54-55
+ForkBending thesisSteelForkBending() {
+  return {5635.0, 0.8, 0.21};
+}  // thesis §6.5, Figure 51
+ForkTorsion thesisSteelForkTorsion() {
+  return {1938.0, 0.3, 0.0};
+}  // thesis §6.4, eq. 54-55
 
 Result<VehicleTopology> bicycleTopology(const BenchmarkParameters& p, ForkJoint joint, double jointGeometry) {
   if (auto ok = validate(p); !ok) return ok.error();
@@ -13,16 +17,17 @@ Result<VehicleTopology> bicycleTopology(const BenchmarkParameters& p, ForkJoint 
     return makeError(ErrorCode::InvalidArgument, "joint position is not finite", "fork joint");
   }
   const double sl = std::sin(p.lambda), cl = std::cos(p.lambda);
-  const Vector3 steerAxis(sl, 0.0, cl);     // pointing down and forward; tilted back by lambda
-  const Vector3 bendAxis(cl, 0.0, -sl);     // x_F of eq. 62: perpendicular to the steer axis, in the plane
+  const Vector3 steerAxis(sl, 0.0, cl);  // pointing down and forward; tilted back by lambda
+  const Vector3 bendAxis(cl, 0.0, -sl);  // x_F of eq. 62: perpendicular to the steer axis, in the plane
   const Vector3 frontCentre(p.w, 0.0, -p.rF);
 
   VehicleTopology t;
   t.g = p.g;
   t.coordinates = {"roll", "steer"};
-  t.joints.push_back({"roll", Vector3::Zero(), Vector3::UnitX(), 0});            // about the rear ground line
+  t.joints.push_back({"roll", Vector3::Zero(), Vector3::UnitX(), 0});             // about the rear ground line
   t.joints.push_back({"pitch", Vector3(0.0, 0.0, -p.rR), Vector3::UnitY(), -1});  // rear frame pitch (2nd order)
-  t.joints.push_back({"steer", Vector3(p.w + p.c, 0.0, 0.0), steerAxis, 1});      // steer axis meets the ground c ahead of Q
+  t.joints.push_back(
+      {"steer", Vector3(p.w + p.c, 0.0, 0.0), steerAxis, 1});  // steer axis meets the ground c ahead of Q
   std::vector<int> frontChain = {0, 1, 2};
   if (joint == ForkJoint::Bending) {
     // eq. 64: the wheel centre moves by -h_W beta laterally; axis h_W up the fork.

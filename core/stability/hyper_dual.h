@@ -26,7 +26,9 @@ inline HyperDual operator+(const HyperDual& x, const HyperDual& y) {
 inline HyperDual operator-(const HyperDual& x, const HyperDual& y) {
   return {x.a - y.a, x.e1 - y.e1, x.e2 - y.e2, x.e12 - y.e12};
 }
-inline HyperDual operator-(const HyperDual& x) { return {-x.a, -x.e1, -x.e2, -x.e12}; }
+inline HyperDual operator-(const HyperDual& x) {
+  return {-x.a, -x.e1, -x.e2, -x.e12};
+}
 inline HyperDual operator*(const HyperDual& x, const HyperDual& y) {
   return {x.a * y.a, x.a * y.e1 + x.e1 * y.a, x.a * y.e2 + x.e2 * y.a,
           x.a * y.e12 + x.e1 * y.e2 + x.e2 * y.e1 + x.e12 * y.a};
@@ -35,8 +37,12 @@ inline HyperDual operator*(const HyperDual& x, const HyperDual& y) {
 inline HyperDual applyScalar(const HyperDual& x, double f0, double f1, double f2) {
   return {f0, f1 * x.e1, f1 * x.e2, f1 * x.e12 + f2 * x.e1 * x.e2};
 }
-inline HyperDual sin(const HyperDual& x) { return applyScalar(x, std::sin(x.a), std::cos(x.a), -std::sin(x.a)); }
-inline HyperDual cos(const HyperDual& x) { return applyScalar(x, std::cos(x.a), -std::sin(x.a), -std::cos(x.a)); }
+inline HyperDual sin(const HyperDual& x) {
+  return applyScalar(x, std::sin(x.a), std::cos(x.a), -std::sin(x.a));
+}
+inline HyperDual cos(const HyperDual& x) {
+  return applyScalar(x, std::cos(x.a), -std::sin(x.a), -std::cos(x.a));
+}
 // sqrt needs x.a > 0; callers evaluate it only near 1 (cosine of a small tilt).
 inline HyperDual sqrt(const HyperDual& x) {
   const double s = std::sqrt(x.a);

@@ -29,7 +29,9 @@ double share(const Root& r, const std::string& name, const std::vector<std::stri
 }
 
 // MAC = |a^H b|^2 / (|a|^2 |b|^2), shapes are unit norm.
-double mac(const ComplexVector& a, const ComplexVector& b) { return std::norm(a.dot(b)); }
+double mac(const ComplexVector& a, const ComplexVector& b) {
+  return std::norm(a.dot(b));
+}
 
 // Names of the roots at one speed from their eigenvalues and shapes (before
 // the track vote).
@@ -117,10 +119,12 @@ Result<SpeedPoint> solveAtSpeed(const StabilitySystem& s, double v) {
   if (!A) return A.error();
   if (s.shapeRows.size() != s.shapeNames.size() || s.shapeIsRate.size() != s.shapeNames.size() ||
       s.shapeNames.empty()) {
-    return makeError(ErrorCode::InvalidArgument, "shape rows, names and rate flags differ in length", "stability system");
+    return makeError(ErrorCode::InvalidArgument, "shape rows, names and rate flags differ in length",
+                     "stability system");
   }
   for (int row : s.shapeRows)
-    if (row < 0 || row >= A->rows()) return makeError(ErrorCode::InvalidArgument, "shape row out of range", "stability system");
+    if (row < 0 || row >= A->rows())
+      return makeError(ErrorCode::InvalidArgument, "shape row out of range", "stability system");
   const Vector scale = balanceInPlace(*A);
   Eigen::EigenSolver<Matrix> es(*A, true);
   if (es.info() != Eigen::Success) {
@@ -343,12 +347,14 @@ Result<StabilitySweep> sweepOnGrid(const StabilitySystem& s, const std::vector<d
 
 }  // namespace
 
-Result<StabilitySweep> sweepSpeeds(const StabilitySystem& s, const std::vector<double>& speeds, double maxTrackingStep) {
+Result<StabilitySweep> sweepSpeeds(const StabilitySystem& s, const std::vector<double>& speeds,
+                                   double maxTrackingStep) {
   if (speeds.empty()) return makeError(ErrorCode::InvalidArgument, "no speeds", "speeds");
   for (size_t k = 0; k < speeds.size(); ++k) {
     if (!std::isfinite(speeds[k])) return makeError(ErrorCode::InvalidArgument, "speed is not finite", "speeds");
     if (k > 0 && !(speeds[k] > speeds[k - 1])) {
-      return makeError(ErrorCode::InvalidArgument, "speeds must increase strictly", "speeds[" + std::to_string(k) + "]");
+      return makeError(ErrorCode::InvalidArgument, "speeds must increase strictly",
+                       "speeds[" + std::to_string(k) + "]");
     }
   }
   if (!(maxTrackingStep > 0.0)) {

@@ -41,10 +41,10 @@ struct SpeedPoint {
 
 struct ModeEvent {
   std::string mode;
-  double v = 0.0;         // [m/s]
-  std::string kind;       // "stabilises" or "destabilises" (real part crosses zero), "pair born", "pair splits"
-  double lambda = 0.0;    // eigenvalue at the event (0 for a crossing; the double real root for births/splits)
-  double frequency = 0.0; // imaginary part at a crossing [rad/s]
+  double v = 0.0;          // [m/s]
+  std::string kind;        // "stabilises" or "destabilises" (real part crosses zero), "pair born", "pair splits"
+  double lambda = 0.0;     // eigenvalue at the event (0 for a crossing; the double real root for births/splits)
+  double frequency = 0.0;  // imaginary part at a crossing [rad/s]
 };
 
 struct StabilitySweep {

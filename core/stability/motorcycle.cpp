@@ -39,14 +39,15 @@ Result<SharpParameters> loadSharpParameters(const std::string& path) {
     values[name] = x;
   }
   const std::pair<const char*, double*> fields[] = {
-      {"Mf", &p.Mf},   {"Mr", &p.Mr},     {"Zf", &p.Zf},   {"Irx", &p.Irx},   {"Irz", &p.Irz},
-      {"Crxz", &p.Crxz}, {"Ifx", &p.Ifx}, {"Ifz", &p.Ifz}, {"ify", &p.ify},   {"iry_plus_lambda_i", &p.iry},
-      {"a", &p.a},     {"b", &p.b},       {"e", &p.e},     {"f", &p.f},       {"h", &p.h},
-      {"Rf", &p.Rf},   {"Rr", &p.Rr},     {"t", &p.t},     {"eps", &p.eps},   {"Cf1", &p.Cf1},
-      {"Cf2", &p.Cf2}, {"Cr1", &p.Cr1},   {"Cr2", &p.Cr2}, {"K", &p.K},       {"sigma", &p.sigma}};
+      {"Mf", &p.Mf},     {"Mr", &p.Mr},   {"Zf", &p.Zf},   {"Irx", &p.Irx}, {"Irz", &p.Irz},
+      {"Crxz", &p.Crxz}, {"Ifx", &p.Ifx}, {"Ifz", &p.Ifz}, {"ify", &p.ify}, {"iry_plus_lambda_i", &p.iry},
+      {"a", &p.a},       {"b", &p.b},     {"e", &p.e},     {"f", &p.f},     {"h", &p.h},
+      {"Rf", &p.Rf},     {"Rr", &p.Rr},   {"t", &p.t},     {"eps", &p.eps}, {"Cf1", &p.Cf1},
+      {"Cf2", &p.Cf2},   {"Cr1", &p.Cr1}, {"Cr2", &p.Cr2}, {"K", &p.K},     {"sigma", &p.sigma}};
   for (const auto& [name, field] : fields) {
     const auto it = values.find(name);
-    if (it == values.end()) return makeError(ErrorCode::ParseError, std::string("missing parameter '") + name + "'", path);
+    if (it == values.end())
+      return makeError(ErrorCode::ParseError, std::string("missing parameter '") + name + "'", path);
     *field = it->second;
   }
   const std::pair<const char*, double> positive[] = {
@@ -55,7 +56,8 @@ Result<SharpParameters> loadSharpParameters(const std::string& path) {
   for (const auto& [name, x] : positive) {
     if (!(x > 0.0)) return makeError(ErrorCode::InvalidArgument, "must be positive", path + ": parameter " + name);
   }
-  if (!(std::fabs(p.eps) < M_PI / 2.0)) return makeError(ErrorCode::InvalidArgument, "caster out of range", path + ": eps");
+  if (!(std::fabs(p.eps) < M_PI / 2.0))
+    return makeError(ErrorCode::InvalidArgument, "caster out of range", path + ": eps");
   return p;
 }
 
@@ -73,7 +75,9 @@ Result<LumpedForkModel> thesisLumpedForkModel(int model) {
 
 namespace {
 
-Matrix3 parallelAxis(const Vector3& r) { return r.squaredNorm() * Matrix3::Identity() - r * r.transpose(); }
+Matrix3 parallelAxis(const Vector3& r) {
+  return r.squaredNorm() * Matrix3::Identity() - r * r.transpose();
+}
 
 }  // namespace
 
@@ -89,7 +93,8 @@ Result<MotorcycleModel> MotorcycleModel::build(const SharpParameters& p, const s
   // Front frame mass centre: (a + e) along e1, f down the steer axis, from the
   // ground point below the rear mass centre.
   const Vector3 comF = Vector3(p.b, 0.0, 0.0) + (p.a + p.e) * e1 + p.f * s;
-  if (!(xQ > 0.0)) return makeError(ErrorCode::InvalidArgument, "front contact is not ahead of the rear", "geometry a, b, t");
+  if (!(xQ > 0.0))
+    return makeError(ErrorCode::InvalidArgument, "front contact is not ahead of the rear", "geometry a, b, t");
   Matrix3 IF = p.Ifx * e1 * e1.transpose() + p.Ifz * s * s.transpose();
   Matrix3 IR;
   IR << p.Irx, 0.0, p.Crxz, 0.0, 0.0, 0.0, p.Crxz, 0.0, p.Irz;
@@ -158,8 +163,8 @@ Result<Matrix> MotorcycleModel::stateMatrix(double u) const {
   F.block(2, iq, n, n) = -(p_.g * lin_.K0 + jointStiffness_);
   F.block(0, iw, N, N) = -(u * lin_.Gfull + jointDamping_);
   F.col(iw + 1) -= u * lin_.Mfull.col(0);  // y_P'' = v_lat' + u r
-  F.col(iY) += lin_.front.lateral;          // Y_f at the front contact
-  F.col(iY + 1) += lin_.rear.lateral;       // Y_r at the rear contact
+  F.col(iY) += lin_.front.lateral;         // Y_f at the front contact
+  F.col(iY + 1) += lin_.rear.lateral;      // Y_r at the rear contact
   const Eigen::PartialPivLU<Matrix> lu(lin_.Mfull);
   Matrix A = Matrix::Zero(S, S);
   A.block(iq, iw + 2, n, n).setIdentity();
@@ -168,7 +173,7 @@ Result<Matrix> MotorcycleModel::stateMatrix(double u) const {
   auto tyre = [&](const ContactRows& c, double C1, double C2, int row) {
     const double k = u / p_.sigma;
     for (int j = 0; j < n; ++j) A(row, iq + j) += k * (C1 * c.heading(2 + j) + C2 * c.camber(2 + j));
-    A(row, iw) += -k * C1 * c.lateral(0) / u;  // v_lat
+    A(row, iw) += -k * C1 * c.lateral(0) / u;      // v_lat
     A(row, iw + 1) += -k * C1 * c.lateral(1) / u;  // r: contact x times yaw rate
     for (int j = 0; j < n; ++j) A(row, iw + 2 + j) += -k * C1 * c.lateral(2 + j) / u;
     A(row, row) -= k;

@@ -28,17 +28,17 @@ namespace mozzi::core::stability {
 // f = its distance down the steer axis from the foot of a; t = trail measured
 // perpendicular to the steer axis (normal trail); eps = caster angle.
 struct SharpParameters {
-  double Mf = 0, Mr = 0, Zf = 0;                 // masses [kg], front tyre load as tabulated [N]
-  double Irx = 0, Irz = 0, Crxz = 0;             // rear frame inertias [kg m^2] (Crxz: x-z product, z down)
-  double Ifx = 0, Ifz = 0;                       // front frame inertias normal to / along the steer axis
-  double ify = 0, iry = 0;                       // wheel spin inertias (rear includes the engine)
-  double a = 0, b = 0, e = 0, f = 0, h = 0;      // geometry [m]
-  double Rf = 0, Rr = 0, t = 0, eps = 0;         // wheel radii, trail [m], caster [rad]
-  double Cf1 = 0, Cf2 = 0, Cr1 = 0, Cr2 = 0;     // side-slip and camber stiffnesses [N/rad]
-  double K = 0;                                  // steering damper [N m s/rad]
-  double sigma = 0;                              // relaxation length [m]
+  double Mf = 0, Mr = 0, Zf = 0;              // masses [kg], front tyre load as tabulated [N]
+  double Irx = 0, Irz = 0, Crxz = 0;          // rear frame inertias [kg m^2] (Crxz: x-z product, z down)
+  double Ifx = 0, Ifz = 0;                    // front frame inertias normal to / along the steer axis
+  double ify = 0, iry = 0;                    // wheel spin inertias (rear includes the engine)
+  double a = 0, b = 0, e = 0, f = 0, h = 0;   // geometry [m]
+  double Rf = 0, Rr = 0, t = 0, eps = 0;      // wheel radii, trail [m], caster [rad]
+  double Cf1 = 0, Cf2 = 0, Cr1 = 0, Cr2 = 0;  // side-slip and camber stiffnesses [N/rad]
+  double K = 0;                               // steering damper [N m s/rad]
+  double sigma = 0;                           // relaxation length [m]
   double g = 9.81;
-  std::string trust;                             // the file's note on how far the values can be trusted
+  std::string trust;  // the file's note on how far the values can be trusted
 };
 
 // Reads the name,value_si,... CSV of shared/data/motorcycle (comment lines
@@ -49,11 +49,11 @@ Result<SharpParameters> loadSharpParameters(const std::string& path);
 // Thesis §4.2, Table 12: lumped model of the enduro fork's lateral bending.
 struct LumpedForkModel {
   std::string name;
-  double stiffness = 0.0;  // k_i [N m/rad]
-  double damping = 0.0;    // c_i [N m s/rad]
-  double inertia = 0.0;    // J_i, vibrating inertia about the bending axis [kg m^2]
-  double mass = 0.0;       // M_i, wheel plus unsprung mass [kg]
-  double massArm = 0.0;    // distance from the bending axis down to that mass [m]
+  double stiffness = 0.0;        // k_i [N m/rad]
+  double damping = 0.0;          // c_i [N m s/rad]
+  double inertia = 0.0;          // J_i, vibrating inertia about the bending axis [kg m^2]
+  double mass = 0.0;             // M_i, wheel plus unsprung mass [kg]
+  double massArm = 0.0;          // distance from the bending axis down to that mass [m]
   double axisFromContact = 0.0;  // L_i, bending axis distance from the contact point [m] (reported only)
 };
 

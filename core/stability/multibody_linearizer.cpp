@@ -13,7 +13,9 @@ namespace {
 
 using HD3 = std::array<HyperDual, 3>;
 
-HD3 toHD(const Vector3& v) { return {HyperDual(v.x()), HyperDual(v.y()), HyperDual(v.z())}; }
+HD3 toHD(const Vector3& v) {
+  return {HyperDual(v.x()), HyperDual(v.y()), HyperDual(v.z())};
+}
 
 // Rodrigues: R(u, theta) p = p cos + (u x p) sin + u (u . p)(1 - cos)
 HD3 rotate(const Vector3& u, const HyperDual& theta, const HD3& p) {
@@ -158,8 +160,8 @@ Result<Linearization> linearize(const VehicleTopology& t) {
   qe[n].e1 = 1.0;
   const auto [Vc, zc] = energyAndContact(t, qe);
   if (std::fabs(zc.e1) < 1e-9) {
-    return makeError(ErrorCode::NumericalFailure, "rear-frame pitch does not lift the front wheel (degenerate geometry)",
-                     "vehicle topology");
+    return makeError(ErrorCode::NumericalFailure,
+                     "rear-frame pitch does not lift the front wheel (degenerate geometry)", "vehicle topology");
   }
   // Lagrange multiplier of the front contact: the static front ground force.
   const double nu = Vc.e1 / zc.e1;

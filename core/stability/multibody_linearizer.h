@@ -42,12 +42,12 @@ struct Joint {
 
 struct Body {
   std::string name;
-  double mass = 0.0;                    // [kg]
-  Vector3 com = Vector3::Zero();        // mass centre in the reference configuration [m]
-  Matrix3 inertia = Matrix3::Zero();    // inertia tensor about the mass centre, x y z axes [kg m^2]
-  double spinInertia = 0.0;             // polar inertia of a rolling wheel about its axle (+y) [kg m^2]
-  double rollingRadius = 0.0;           // wheel radius (spin rate -v/r) [m]; 0: no spin
-  std::vector<int> joints;              // joints from the ground outwards (indices into the joint list)
+  double mass = 0.0;                  // [kg]
+  Vector3 com = Vector3::Zero();      // mass centre in the reference configuration [m]
+  Matrix3 inertia = Matrix3::Zero();  // inertia tensor about the mass centre, x y z axes [kg m^2]
+  double spinInertia = 0.0;           // polar inertia of a rolling wheel about its axle (+y) [kg m^2]
+  double rollingRadius = 0.0;         // wheel radius (spin rate -v/r) [m]; 0: no spin
+  std::vector<int> joints;            // joints from the ground outwards (indices into the joint list)
 };
 
 struct VehicleTopology {
@@ -68,9 +68,9 @@ struct ContactRows {
 };
 
 struct Linearization {
-  Matrix Mfull;  // N x N, N = 2 + n
-  Matrix Gfull;  // N x N, multiply by v
-  Matrix K0;     // n x n gravity stiffness / g on q (includes the ground reaction)
+  Matrix Mfull;            // N x N, N = 2 + n
+  Matrix Gfull;            // N x N, multiply by v
+  Matrix K0;               // n x n gravity stiffness / g on q (includes the ground reaction)
   double frontLoad = 0.0;  // static vertical ground force on the front wheel [N]
   ContactRows rear, front;
   int n = 0;

@@ -74,7 +74,8 @@ Result<double> brentRoot(const std::function<double(double)>& f, double a, doubl
     fa = fb;
     b += (std::fabs(d) > tol) ? d : (m > 0.0 ? tol : -tol);
     fb = f(b);
-    if (!std::isfinite(fb)) return makeError(ErrorCode::NumericalFailure, "function is not finite inside the bracket", what);
+    if (!std::isfinite(fb))
+      return makeError(ErrorCode::NumericalFailure, "function is not finite inside the bracket", what);
   }
   return makeError(ErrorCode::NumericalFailure, "Brent iteration did not converge in 200 steps", what);
 }

@@ -55,10 +55,9 @@ TEST(BenchmarkBicycle, ParametersFileMatchesTable1AsTyped) {
 TEST(BenchmarkBicycle, MatricesMatchThePublishedEntries) {
   const BicycleModel m = model();
   const std::map<std::string, double> ours = {
-      {"M11", m.M(0, 0)},     {"M12", m.M(0, 1)},     {"M22", m.M(1, 1)},     {"C1_11", m.C1(0, 0)},
-      {"C1_12", m.C1(0, 1)},  {"C1_21", m.C1(1, 0)},  {"C1_22", m.C1(1, 1)},  {"K0_11", m.K0(0, 0)},
-      {"K0_12", m.K0(0, 1)},  {"K0_22", m.K0(1, 1)},  {"K2_11", m.K2(0, 0)},  {"K2_12", m.K2(0, 1)},
-      {"K2_21", m.K2(1, 0)},  {"K2_22", m.K2(1, 1)}};
+      {"M11", m.M(0, 0)},    {"M12", m.M(0, 1)},    {"M22", m.M(1, 1)},    {"C1_11", m.C1(0, 0)}, {"C1_12", m.C1(0, 1)},
+      {"C1_21", m.C1(1, 0)}, {"C1_22", m.C1(1, 1)}, {"K0_11", m.K0(0, 0)}, {"K0_12", m.K0(0, 1)}, {"K0_22", m.K0(1, 1)},
+      {"K2_11", m.K2(0, 0)}, {"K2_12", m.K2(0, 1)}, {"K2_21", m.K2(1, 0)}, {"K2_22", m.K2(1, 1)}};
   EXPECT_DOUBLE_EQ(m.M(1, 0), m.M(0, 1));
   EXPECT_DOUBLE_EQ(m.K0(1, 0), m.K0(0, 1));
   int checked = 0;
@@ -88,7 +87,7 @@ TEST(BenchmarkBicycle, EigenvaluesMatchTable2) {
     double castering = std::stod(row[1]);
     if (v == 7.0) {
       EXPECT_NEAR(castering, -18.15788466125262, 1e-14);  // the misprinted entry as stored
-      castering = -18.157884661252021;                     // exact (README)
+      castering = -18.157884661252021;                    // exact (README)
     }
     const double capsize = std::stod(row[2]), weaveRe = std::stod(row[3]), weaveIm = std::stod(row[4]);
     auto ev = m.eigenvalues(v);

@@ -86,7 +86,8 @@ void printText(std::ostream& out, const std::string& model, const st::StabilityS
   if (sweep.events.empty()) out << "  none in this speed range\n";
   for (const auto& e : sweep.events) {
     out << "  " << e.mode << " " << e.kind << " at " << std::setprecision(6) << e.v << " m/s";
-    if (e.kind == "stabilises" || e.kind == "destabilises") out << " (" << std::setprecision(3) << e.frequency << " rad/s)";
+    if (e.kind == "stabilises" || e.kind == "destabilises")
+      out << " (" << std::setprecision(3) << e.frequency << " rad/s)";
     out << "\n";
   }
   out.unsetf(std::ios::floatfield);
@@ -224,12 +225,12 @@ int stabilityCommand(const std::vector<std::string>& args, std::ostream& out, st
   return kExitOk;
 }
 
-const CommandRegistrar kRegistrar({"stability",
-                                   "bicycle [--params FILE] [--fork-bending k,c,hW | --fork-torsion k,c] --speeds A:B:STEP "
-                                   "[--json] | motorcycle --params FILE [--fork-model 1|2|3|rigid] --speeds A:B:STEP "
-                                   "[--json]",
-                                   "Eigenvalues against speed with mode names and critical speeds (weave, capsize, wobble)",
-                                   stabilityCommand});
+const CommandRegistrar kRegistrar(
+    {"stability",
+     "bicycle [--params FILE] [--fork-bending k,c,hW | --fork-torsion k,c] --speeds A:B:STEP "
+     "[--json] | motorcycle --params FILE [--fork-model 1|2|3|rigid] --speeds A:B:STEP "
+     "[--json]",
+     "Eigenvalues against speed with mode names and critical speeds (weave, capsize, wobble)", stabilityCommand});
 
 }  // namespace
 }  // namespace mozzi::cli

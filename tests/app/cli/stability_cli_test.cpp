@@ -60,8 +60,8 @@ TEST(StabilityCli, ForkTorsionAddsTheTorsionMode) {
 }
 
 TEST(StabilityCli, MotorcycleWithLumpedFork) {
-  const CliRun r = run({"stability", "motorcycle", "--params", kSharp, "--fork-model", "1", "--speeds", "5:40:5",
-                        "--json"});
+  const CliRun r =
+      run({"stability", "motorcycle", "--params", kSharp, "--fork-model", "1", "--speeds", "5:40:5", "--json"});
   ASSERT_EQ(r.code, kExitOk) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j["speeds"].size(), 8u);
@@ -78,7 +78,8 @@ TEST(StabilityCli, UsageAndInputErrors) {
   EXPECT_EQ(run({"stability", "bicycle"}).code, kExitUsage);
   EXPECT_EQ(run({"stability", "bicycle", "--speeds", "0:10"}).code, kExitUsage);
   EXPECT_EQ(run({"stability", "bicycle", "--speeds", "0:10:0"}).code, kExitUsage);
-  const CliRun both = run({"stability", "bicycle", "--fork-bending", "1,1,0.2", "--fork-torsion", "1,1", "--speeds", "0:1:1"});
+  const CliRun both =
+      run({"stability", "bicycle", "--fork-bending", "1,1,0.2", "--fork-torsion", "1,1", "--speeds", "0:1:1"});
   EXPECT_EQ(both.code, kExitUsage);
   EXPECT_NE(both.err.find("not both"), std::string::npos);
   const CliRun bad = run({"stability", "bicycle", "--fork-bending", "1,x,0.2", "--speeds", "0:1:1"});

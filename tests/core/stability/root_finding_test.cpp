@@ -37,7 +37,8 @@ TEST(SpeedGrid, InclusiveAndValidated) {
 
 TEST(ModeTracking, SingleDegreeOfFreedomOscillator) {
   // m x'' + (c0 - v c1) x' + k x = 0: negative damping grows with v, so the
-  // mode destabilises exactly at v = c0 / c1 = 2.5 with frequency sqrt(k/m) = 40 rad/s (a steer oscillation above 30 rad/s is named wobble).
+  // mode destabilises exactly at v = c0 / c1 = 2.5 with frequency sqrt(k/m) = 40 rad/s (a steer oscillation above 30
+  // rad/s is named wobble).
   StabilitySystem s;
   s.stateMatrix = [](double v) -> Result<Matrix> {
     Matrix A(2, 2);
