@@ -89,6 +89,46 @@ ComplexMatrix lagSums(const ComplexMatrix& series, const Vector& f, double dt, l
   return out;
 }
 
+// Roots of the monic real polynomial z^m + sum_{j<m} a_j z^j by the
+// Aberth-Ehrlich iteration, warm-started from the previous order's roots (the
+// stable ones barely move), new guesses on the unit circle. O(m^2) per sweep
+// against O(m^3) for a companion QR; false when it does not converge, and the
+// caller falls back to the companion matrix.
+bool aberthRoots(const Eigen::Ref<const Vector>& a, const std::vector<Complex>& warm, std::vector<Complex>& roots) {
+  const Eigen::Index m = a.size();
+  roots.assign(static_cast<std::size_t>(m), Complex(0.0, 0.0));
+  const Eigen::Index reuse = std::min<Eigen::Index>(m, static_cast<Eigen::Index>(warm.size()));
+  for (Eigen::Index i = 0; i < reuse; ++i) roots[static_cast<std::size_t>(i)] = warm[static_cast<std::size_t>(i)];
+  for (Eigen::Index i = reuse; i < m; ++i) {
+    const double t = kTwoPi * (static_cast<double>(i - reuse) + 0.37) / static_cast<double>(m - reuse) + 0.1;
+    roots[static_cast<std::size_t>(i)] = std::polar(1.05, t);
+  }
+  for (int sweep = 0; sweep < 40; ++sweep) {
+    double worst = 0.0;
+    for (Eigen::Index i = 0; i < m; ++i) {
+      Complex& z = roots[static_cast<std::size_t>(i)];
+      // Horner: p and p'.
+      Complex pz(1.0, 0.0), dp(0.0, 0.0);
+      for (Eigen::Index j = m - 1; j >= 0; --j) {
+        dp = dp * z + pz;
+        pz = pz * z + a[j];
+      }
+      if (pz == Complex(0.0, 0.0)) continue;
+      const Complex ratio = pz / dp;
+      Complex sum(0.0, 0.0);
+      for (Eigen::Index j = 0; j < m; ++j) {
+        if (j != i) sum += 1.0 / (z - roots[static_cast<std::size_t>(j)]);
+      }
+      const Complex w = ratio / (1.0 - ratio * sum);
+      if (!std::isfinite(w.real()) || !std::isfinite(w.imag())) return false;
+      z -= w;
+      worst = std::max(worst, std::abs(w) / std::max(1.0, std::abs(z)));
+    }
+    if (worst < 1e-11) return true;  // relative step; the roots are not better conditioned than this at order 100+
+  }
+  return false;
+}
+
 }  // namespace
 
 char poleStatusSymbol(PoleStatus status) {
@@ -221,6 +261,7 @@ Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const Plsc
   Matrix g = Matrix::Zero(nb, nb);  // running sum_{j<=m} sum_o w_oj^T w_oj (lower triangle)
   std::size_t nextOrder = 0;
   std::vector<StabilizationPole> previous;
+  std::vector<Complex> warmRoots;  // all roots of the previous order (ni = 1)
   for (Eigen::Index j = 0; j < n1 && nextOrder < orders.size(); ++j) {
     Eigen::Map<const Matrix> wj(wt.col(j).data(), nb, no);  // wj(c, o) = W_o(j, c)
     g.selfadjointView<Eigen::Lower>().rankUpdate(wj);
@@ -244,16 +285,54 @@ Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const Plsc
       return makeError(ErrorCode::NumericalFailure, "denominator coefficients are not finite",
                        where + ", order " + std::to_string(m));
     }
-    // Block companion matrix: eigenvalues z_r, eigenvectors [l; z l; ...].
-    Matrix comp = Matrix::Zero(mb, mb);
-    if (m > 1) comp.topRightCorner(mb - ni, mb - ni).setIdentity();
-    // Bottom block row: z^m l = -sum_j alpha_j z^j l, i.e. A(z) l = 0.
-    for (Eigen::Index jj = 0; jj < m; ++jj) comp.block(mb - ni, jj * ni, ni, ni) = -alpha.block(jj * ni, 0, ni, ni);
-    const bool needVectors = ni > 1;
-    Eigen::EigenSolver<Matrix> es(comp, needVectors);
-    if (es.info() != Eigen::Success) {
-      return makeError(ErrorCode::NumericalFailure, "companion eigenproblem did not converge",
-                       where + ", order " + std::to_string(m));
+    // Poles z_r: eigenvalues of the companion matrix of A(z). For ni = 1 the
+    // upper Hessenberg form (first row -a_{m-1} .. -a_0, ones below the
+    // diagonal) goes straight to the real Schur iteration, skipping the
+    // Hessenberg reduction; for ni > 1 the block companion (bottom block row
+    // -alpha_j, z^m l = -sum_j alpha_j z^j l) is reduced first. Eigenvalues only:
+    // null vectors of the small A(z_r) give shapes and participations below.
+    ComplexVector zr;
+    std::vector<Complex> roots;
+    if (ni == 1 && aberthRoots(alpha.col(0).head(mb), warmRoots, roots)) {
+      zr = Eigen::Map<const ComplexVector>(roots.data(), mb);
+      warmRoots = roots;
+    } else if (ni == 1) {
+      warmRoots.clear();
+      Matrix hess = Matrix::Zero(mb, mb);
+      for (Eigen::Index jj = 0; jj < mb; ++jj) hess(0, jj) = -alpha(mb - 1 - jj, 0);
+      if (mb > 1) hess.diagonal(-1).setOnes();
+      Eigen::RealSchur<Matrix> schur(mb);
+      schur.computeFromHessenberg(hess, Matrix(), false);
+      if (schur.info() != Eigen::Success) {
+        return makeError(ErrorCode::NumericalFailure, "companion eigenproblem did not converge",
+                         where + ", order " + std::to_string(m));
+      }
+      const Matrix& t = schur.matrixT();
+      zr.resize(mb);
+      for (Eigen::Index q = 0; q < mb;) {
+        if (q + 1 < mb && t(q + 1, q) != 0.0) {
+          // 2 x 2 block [a b; c d]: eigenvalues (a + d)/2 +- sqrt(((a - d)/2)^2 + b c).
+          const double p0 = 0.5 * (t(q, q) + t(q + 1, q + 1));
+          const Complex disc = std::sqrt(Complex(0.25 * (t(q, q) - t(q + 1, q + 1)) * (t(q, q) - t(q + 1, q + 1)) +
+                                                 t(q, q + 1) * t(q + 1, q)));
+          zr[q] = p0 + disc;
+          zr[q + 1] = p0 - disc;
+          q += 2;
+        } else {
+          zr[q] = t(q, q);
+          ++q;
+        }
+      }
+    } else {
+      Matrix comp = Matrix::Zero(mb, mb);
+      if (m > 1) comp.topRightCorner(mb - ni, mb - ni).setIdentity();
+      for (Eigen::Index jj = 0; jj < m; ++jj) comp.block(mb - ni, jj * ni, ni, ni) = -alpha.block(jj * ni, 0, ni, ni);
+      Eigen::EigenSolver<Matrix> es(comp, false);
+      if (es.info() != Eigen::Success) {
+        return makeError(ErrorCode::NumericalFailure, "companion eigenproblem did not converge",
+                         where + ", order " + std::to_string(m));
+      }
+      zr = es.eigenvalues();
     }
     // Numerator per output: beta_o = -R_m^-1 S_o,m alpha = -L_m^-T (W_o,m alpha).
     Matrix beta(static_cast<Eigen::Index>(m + 1), no * ni);
@@ -264,8 +343,8 @@ Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const Plsc
     beta = -beta;
 
     std::vector<StabilizationPole> current;
-    for (Eigen::Index r = 0; r < mb; ++r) {
-      const Complex z = es.eigenvalues()[r];
+    for (Eigen::Index r = 0; r < zr.size(); ++r) {
+      const Complex z = zr[r];
       if (std::abs(z) == 0.0) continue;
       const Complex lambda = std::log(z) / dt;
       if (lambda.imag() <= 0.0) continue;
@@ -276,19 +355,20 @@ Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const Plsc
       p.pole = lambda;
       p.frequencyHz = fr;
       p.zeta = zr;
-      // H_o = B_o A^-1 ~ (B_o(z_r) v) w^T / (z - z_r): v (right null vector of
-      // A(z_r), first block of the companion eigenvector) builds the shape, w
-      // (left null vector, w^T A(z_r) = 0) is the participation vector.
-      ComplexVector v = needVectors ? ComplexVector(es.eigenvectors().col(r).head(ni)) : ComplexVector::Ones(1);
-      if (needVectors) {
+      // H_o = B_o A^-1 ~ (B_o(z_r) v) w^T / (z - z_r): v, the right null vector
+      // of A(z_r), builds the shape; w (w^T A(z_r) = 0) is the participation
+      // vector. From A = U S V^H: v = last column of V, w = conj(last column of U).
+      ComplexVector v = ComplexVector::Ones(1);
+      if (ni > 1) {
         ComplexMatrix az = ComplexMatrix::Zero(ni, ni);
         Complex zp(1.0, 0.0);
         for (int q = 0; q <= m; ++q) {
           az += zp * alpha.block(static_cast<Eigen::Index>(q) * ni, 0, ni, ni).cast<Complex>();
           zp *= z;
         }
-        Eigen::JacobiSVD<ComplexMatrix> svd(az.transpose(), Eigen::ComputeFullV);
-        p.participation = svd.matrixV().col(ni - 1);
+        Eigen::JacobiSVD<ComplexMatrix> svd(az, Eigen::ComputeFullU | Eigen::ComputeFullV);
+        v = svd.matrixV().col(ni - 1);
+        p.participation = svd.matrixU().col(ni - 1).conjugate();
         Eigen::Index imax = 0;
         p.participation.cwiseAbs().maxCoeff(&imax);
         p.participation /= p.participation[imax];

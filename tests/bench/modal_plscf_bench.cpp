@@ -1,0 +1,106 @@
+// pLSCF stabilization timing (issue 5 targets: ModeLAB beam chart, 9 FRFs x
+// 48,000 lines, orders up to 120 under 0.05 s; 100 FRFs x 20,000 lines,
+// orders up to 120, under 0.2 s single reference and 2 s with three).
+// Results and commands: docs/performance/modal.md.
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/io/modelab_ascii.h"
+#include "core/modal/plscf.h"
+
+namespace mozzi::core::modal {
+namespace {
+
+const FrfMatrix& beam() {
+  static const FrfMatrix frf = [] {
+    std::vector<std::string> files;
+    std::vector<Dof> hammers;
+    for (int i = 1; i <= 9; ++i) {
+      char name[96];
+      std::snprintf(name, sizeof name, "%s/modelab-beam/SignalCalc/ASCII%05d/Hxysv%05d.txt", MOZZI_SHARED_DATA_DIR, i, i);
+      files.emplace_back(name);
+      hammers.push_back(Dof{i, Direction::X, false});
+    }
+    return io::readSignalCalcRovingHammer(files, hammers, Dof{4, Direction::X, true}, FrfType::Accelerance).value();
+  }();
+  return frf;
+}
+
+// 100 responses x `refs` references, 20,000 lines (0 .. 2000 Hz at 0.1 Hz),
+// 20 modes with random real shapes, 1% noise.
+FrfMatrix synthetic(int refs) {
+  std::mt19937 rng(3);
+  std::normal_distribution<double> nd(0.0, 1.0);
+  const int no = 100, nm = 20, nf = 20000;
+  Matrix phi(no, nm);
+  for (int o = 0; o < no; ++o)
+    for (int r = 0; r < nm; ++r) phi(o, r) = nd(rng);
+  FrfMatrix frf;
+  frf.frequencyHz = Vector::LinSpaced(nf, 0.1, 0.1 * nf);
+  for (int o = 0; o < no; ++o) frf.responses.push_back(Dof{o + 1, Direction::Z, false});
+  for (int i = 0; i < refs; ++i) frf.references.push_back(frf.responses[static_cast<std::size_t>(17 * i + 3)]);
+  frf.type = FrfType::Accelerance;
+  std::vector<Complex> poles;
+  for (int r = 0; r < nm; ++r) poles.push_back(poleFromFrequencyDamping(80.0 + 90.0 * r, 0.005 + 0.001 * r));
+  for (int i = 0; i < refs; ++i) {
+    const int ref = 17 * i + 3;
+    ComplexMatrix h(nf, no);
+    for (int k = 0; k < nf; ++k) {
+      const double w = 2 * M_PI * frf.frequencyHz[k];
+      const Complex iw(0.0, w);
+      for (int o = 0; o < no; ++o) {
+        Complex acc(0.0, 0.0);
+        for (int r = 0; r < nm; ++r) {
+          const Complex res = phi(o, r) * phi(ref, r) / Complex(0.0, 2.0 * poles[static_cast<std::size_t>(r)].imag());
+          acc += res / (iw - poles[static_cast<std::size_t>(r)]) + std::conj(res) / (iw - std::conj(poles[static_cast<std::size_t>(r)]));
+        }
+        h(k, o) = -w * w * acc * Complex(1.0 + 0.01 * nd(rng), 0.01 * nd(rng));
+      }
+    }
+    frf.h.push_back(std::move(h));
+  }
+  return frf;
+}
+
+void runStabilization(benchmark::State& state, const FrfMatrix& frf, double lo, double hi) {
+  PlscfOptions opt;
+  opt.bandLowHz = lo;
+  opt.bandHighHz = hi;
+  opt.minOrder = 2;
+  opt.maxOrder = static_cast<int>(state.range(0));
+  opt.orderStep = 1;
+  std::size_t poles = 0;
+  for (auto _ : state) {
+    auto d = plscfStabilization(frf, opt);
+    if (!d.ok()) {
+      state.SkipWithError(d.error().describe().c_str());
+      return;
+    }
+    poles = d->poles.size();
+    benchmark::DoNotOptimize(poles);
+  }
+  state.counters["poles"] = static_cast<double>(poles);
+}
+
+void BM_BeamChart(benchmark::State& state) { runStabilization(state, beam(), 65.0, 1000.0); }
+BENCHMARK(BM_BeamChart)->Arg(60)->Arg(120)->Unit(benchmark::kMillisecond);
+
+void BM_Synthetic100x20000_OneRef(benchmark::State& state) {
+  static const FrfMatrix frf = synthetic(1);
+  runStabilization(state, frf, 0.1, 2000.0);
+}
+BENCHMARK(BM_Synthetic100x20000_OneRef)->Arg(30)->Arg(60)->Arg(120)->Unit(benchmark::kMillisecond);
+
+void BM_Synthetic100x20000_ThreeRefs(benchmark::State& state) {
+  static const FrfMatrix frf = synthetic(3);
+  runStabilization(state, frf, 0.1, 2000.0);
+}
+BENCHMARK(BM_Synthetic100x20000_ThreeRefs)->Arg(40)->Arg(120)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace mozzi::core::modal
