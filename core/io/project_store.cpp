@@ -234,6 +234,15 @@ Result<std::int64_t> ProjectStore::addSpecimen(const std::string& name, const st
   return id;
 }
 
+Result<void> ProjectStore::checkpoint() {
+  if (auto r = requireWritable(); !r) return r;
+  int logFrames = 0, checkpointed = 0;
+  if (sqlite3_wal_checkpoint_v2(db_, nullptr, SQLITE_CHECKPOINT_PASSIVE, &logFrames, &checkpointed) != SQLITE_OK) {
+    return sqliteError(db_, "cannot checkpoint the write-ahead log", path_);
+  }
+  return {};
+}
+
 Result<void> ProjectStore::deleteSpecimen(std::int64_t specimenId) {
   if (auto r = requireWritable(); !r) return r.error();
   const std::string where = path_ + ", specimen " + std::to_string(specimenId);

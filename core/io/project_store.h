@@ -91,6 +91,11 @@ class ProjectStore {
   // The technician's later verdict on a hit (re-accept, reject with reasons).
   Result<void> setHitAcceptance(std::int64_t hitId, bool accepted, std::uint32_t qualityFlags,
                                 const std::string& reasons);
+  // Copies committed WAL pages into the database file (PASSIVE checkpoint,
+  // never blocks readers). Meant for the idle time between hits: with it the
+  // WAL never reaches SQLite's auto-checkpoint size during a campaign, so no
+  // commit pays for a checkpoint (docs/performance/project.md).
+  Result<void> checkpoint();
   SampleEncoding hitEncoding() const { return hitEncoding_; }
   void setHitEncoding(SampleEncoding encoding) { hitEncoding_ = encoding; }
 

@@ -480,6 +480,18 @@ TEST_F(ProjectDataTest, NothingIsWrittenOutsideATransaction) {
   EXPECT_EQ(counter.outside, 0);
 }
 
+TEST_F(ProjectDataTest, CheckpointMovesTheWalIntoTheDatabase) {
+  const std::int64_t c = campaign();
+  ASSERT_TRUE(store_->commitHit(makeHit(c, 1)).ok());
+  const auto before = fs::file_size(file("p.mozzi"));
+  ASSERT_TRUE(store_->checkpoint().ok());
+  // The 256 KiB hit now lives in the main file, not only in the WAL.
+  EXPECT_GE(fs::file_size(file("p.mozzi")), before + 262144);
+  auto h = store_->hit(1);
+  ASSERT_TRUE(h.ok());
+  EXPECT_EQ(h->samples.rows(), 16384);
+}
+
 TEST_F(ProjectDataTest, ReadOnlyStoreRefusesEveryWrite) {
   auto second = ProjectStore::open(file("p.mozzi"));
   ASSERT_TRUE(second.ok());
@@ -491,6 +503,7 @@ TEST_F(ProjectDataTest, ReadOnlyStoreRefusesEveryWrite) {
   c.name = "x";
   EXPECT_EQ(second->addCampaign(c).error().code, ErrorCode::Locked);
   EXPECT_EQ(second->deleteSpecimen(specimen_).error().code, ErrorCode::Locked);
+  EXPECT_EQ(second->checkpoint().error().code, ErrorCode::Locked);
   // Reading works while the first instance writes.
   auto s = second->summary();
   ASSERT_TRUE(s.ok()) << s.error().describe();
