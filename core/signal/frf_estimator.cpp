@@ -132,10 +132,9 @@ Result<SpectralAverager> SpectralAverager::create(const TimeRecord& layout, cons
   a.sff_ = Vector::Zero(nf);
   a.sxx_ = Matrix::Zero(nf, no);
   a.sfx_ = ComplexMatrix::Zero(nf, no);
-  a.in_ = std::make_shared<AlignedBuffer<double>>(static_cast<std::size_t>(a.n_));
+  a.in_ = std::make_shared<AlignedBuffer<double>>(static_cast<std::size_t>(a.n_) * (a.responses_.size() + 1));
   a.fSpec_ = std::make_shared<AlignedBuffer<std::complex<double>>>(static_cast<std::size_t>(nf));
-  a.xSpec_ = std::make_shared<AlignedBuffer<std::complex<double>>>(static_cast<std::size_t>(nf) *
-                                                                   std::max<std::size_t>(1, a.responses_.size()));
+  a.xSpec_ = std::make_shared<AlignedBuffer<std::complex<double>>>(static_cast<std::size_t>(nf));
   return a;
 }
 
@@ -171,51 +170,47 @@ Result<void> SpectralAverager::add(const TimeRecord& hit) {
     }
   }
   const Eigen::Index nf = fft_->lineCount();
-  double* in = in_->data();
-  auto transform = [&](Eigen::Index c, const Vector& w, bool rect, std::complex<double>* out) -> Result<void> {
+  // Stage 1: every channel (windowed) into its aligned input block and checked
+  // finite before anything is accumulated, so a bad hit leaves the average
+  // untouched. The sum of a block is finite exactly when its samples are
+  // (NaN and inf propagate even through zero window weights).
+  std::vector<Eigen::Index> order{reference_};
+  order.insert(order.end(), responses_.begin(), responses_.end());
+  for (std::size_t j = 0; j < order.size(); ++j) {
+    const Eigen::Index c = order[j];
+    const bool isRef = j == 0;
     const double* x = hit.samples.col(c).data();
-    // into the aligned input (FFTW's SIMD alignment can exceed Eigen's)
-    if (rect) {
+    double* in = in_->data() + j * static_cast<std::size_t>(n_);
+    if (isRef ? refRect_ : respRect_) {
       std::copy(x, x + n_, in);
     } else {
-      const double* wp = w.data();
+      const double* wp = isRef ? refWindow_.data() : respWindow_.data();
       for (Eigen::Index i = 0; i < n_; ++i) in[i] = x[i] * wp[i];
     }
-    fft_->forward(in, out);
-    // X_0 = sum of all windowed samples: non-finite exactly when a sample is
-    // (NaN and inf propagate even through zero window weights).
-    if (!std::isfinite(out[0].real())) {
+    if (!std::isfinite(Eigen::Map<const Vector>(in, n_).sum())) {
       for (Eigen::Index i = 0; i < n_; ++i) {
         if (!std::isfinite(x[i])) {
           return makeError(ErrorCode::InvalidArgument, "sample is NaN or infinite",
                            where + ", " + channelWhere(hit, c) + ", sample " + std::to_string(i));
         }
       }
-      return makeError(ErrorCode::NumericalFailure, "spectrum overflowed", where + ", " + channelWhere(hit, c));
+      return makeError(ErrorCode::NumericalFailure, "samples too large: their sum overflows", where + ", " + channelWhere(hit, c));
     }
-    return {};
-  };
-
+  }
   std::complex<double>* f = fSpec_->data();
-  if (auto ok = transform(reference_, refWindow_, refRect_, f); !ok) return ok.error();
-  const double forceEnergy = Eigen::Map<const ComplexVector>(f, nf).squaredNorm();
-  if (!(forceEnergy > 0.0)) {
+  fft_->forward(in_->data(), f);
+  const Eigen::Map<const ComplexVector> fv(f, nf);
+  if (!(fv.squaredNorm() > 0.0)) {
     return makeError(ErrorCode::InvalidArgument, "force is zero (after the force window): no excitation to divide by",
                      where + ", " + channelWhere(hit, reference_));
   }
-  // Every response transformed and checked before any accumulator changes, so
-  // a bad hit leaves the average untouched.
+  // Stage 2: each response transformed and accumulated at once, while its
+  // spectrum is still in cache, with Eigen's packet math (SIMD complex
+  // products without std::complex's NaN-recovery path; inputs are finite).
+  sff_.array() += fv.real().array().square() + fv.imag().array().square();  // |F|^2
+  const Eigen::Map<const ComplexVector> xv(xSpec_->data(), nf);
   for (std::size_t o = 0; o < responses_.size(); ++o) {
-    if (auto ok = transform(responses_[o], respWindow_, respRect_, xSpec_->data() + o * static_cast<std::size_t>(nf)); !ok) {
-      return ok.error();
-    }
-  }
-  // Accumulate with Eigen's packet math (SIMD complex products without the
-  // NaN-recovery path of std::complex; the inputs are known finite here).
-  const Eigen::Map<const ComplexVector> fv(f, nf);
-  sff_.array() += fv.real().array().square() + fv.imag().array().square();
-  for (std::size_t o = 0; o < responses_.size(); ++o) {
-    const Eigen::Map<const ComplexVector> xv(xSpec_->data() + o * static_cast<std::size_t>(nf), nf);
+    fft_->forward(in_->data() + (o + 1) * static_cast<std::size_t>(n_), xSpec_->data());
     sfx_.col(static_cast<Eigen::Index>(o)).array() += fv.conjugate().array() * xv.array();  // conj(F) X
     sxx_.col(static_cast<Eigen::Index>(o)).array() += xv.real().array().square() + xv.imag().array().square();  // |X|^2
   }

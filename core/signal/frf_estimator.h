@@ -98,9 +98,9 @@ class SpectralAverager {
   Matrix sxx_;
   ComplexMatrix sfx_;
   int hits_ = 0;
-  std::shared_ptr<AlignedBuffer<double>> in_;
+  std::shared_ptr<AlignedBuffer<double>> in_;  // n per channel (reference first), back to back
   std::shared_ptr<AlignedBuffer<std::complex<double>>> fSpec_;
-  std::shared_ptr<AlignedBuffer<std::complex<double>>> xSpec_;  // nf per response, back to back
+  std::shared_ptr<AlignedBuffer<std::complex<double>>> xSpec_;  // one response spectrum at a time
 };
 
 // The lines of `frf` with fLo <= f <= fHi (FRFs and coherence), e.g. to drop
