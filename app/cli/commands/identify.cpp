@@ -1,0 +1,188 @@
+// mozzi-cli identify: modal identification of the FRFs in a UFF file
+// (docs/cli/identify.md). pLSCF + LSFD + Ceres refinement (standard errors), or
+// single-mode peak picking / circle fit over the band.
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <ostream>
+#include <string>
+
+#include "app/cli/args.h"
+#include "app/cli/command.h"
+#include "core/io/uff/uff.h"
+#include "core/modal/plscf.h"
+#include "core/modal/refine.h"
+#include "core/modal/sdof.h"
+#include "core/modal/shape_tools.h"
+
+namespace mozzi::cli {
+namespace {
+
+namespace md = core::modal;
+namespace uff = core::io::uff;
+
+constexpr const char* kUsage =
+    "Usage: mozzi-cli identify FRF.uff --band LO:HI [--method plscf|circle|peak] [--max-order N]\n"
+    "                          [--stabilization OUT.csv] [--modes OUT.uff] [--json]\n";
+
+int usage(std::ostream& err, const std::string& why) {
+  err << "mozzi-cli identify: " << why << "\n" << kUsage;
+  return kExitUsage;
+}
+
+int fail(std::ostream& err, const core::Error& e) {
+  err << "mozzi-cli identify: " << e.describe() << "\n";
+  return kExitFailure;
+}
+
+struct Row {
+  double f = 0, zeta = 0;
+  std::optional<double> fStd, zStd;
+  double mpc = 0;
+};
+
+int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  OptionSpec spec;
+  spec.valued = {"--band", "--method", "--max-order", "--stabilization", "--modes"};
+  spec.flags = {"--json"};
+  auto parsed = ParsedArgs::parse(args, spec);
+  if (!parsed) return usage(err, parsed.error().message);
+  if (parsed->positional().size() != 1) return usage(err, "expected one FRF file");
+  const auto bandText = parsed->value("--band");
+  if (!bandText) return usage(err, "--band LO:HI is required");
+  double lo = 0, hi = 0;
+  {
+    const auto colon = bandText->find(':');
+    char* end = nullptr;
+    bool ok = colon != std::string::npos;
+    if (ok) {
+      const std::string a = bandText->substr(0, colon), b = bandText->substr(colon + 1);
+      lo = std::strtod(a.c_str(), &end);
+      ok = !a.empty() && *end == '\0';
+      hi = std::strtod(b.c_str(), &end);
+      ok = ok && !b.empty() && *end == '\0' && std::isfinite(lo) && std::isfinite(hi) && lo >= 0 && hi > lo;
+    }
+    if (!ok) return usage(err, "--band must be LO:HI in Hz with 0 <= LO < HI (got '" + *bandText + "')");
+  }
+  const std::string method = parsed->value("--method").value_or("plscf");
+  if (method != "plscf" && method != "circle" && method != "peak") {
+    return usage(err, "unknown --method '" + method + "' (available: plscf, circle, peak)");
+  }
+  int maxOrder = 60;
+  auto mo = parsed->number("--max-order");
+  if (!mo) return usage(err, mo.error().message);
+  if (mo->has_value()) {
+    if (!(**mo >= 8 && **mo <= 400 && std::floor(**mo) == **mo)) return usage(err, "--max-order must be an integer in 8..400");
+    maxOrder = static_cast<int>(**mo);
+  }
+
+  auto file = uff::readFile(parsed->positional()[0]);
+  if (!file) return fail(err, file.error());
+  auto frf = uff::toFrfMatrix(*file);
+  if (!frf) return fail(err, frf.error());
+
+  md::ModalModel model;
+  std::vector<Row> rows;
+  if (method == "plscf") {
+    md::PlscfOptions opt;
+    opt.bandLowHz = lo;
+    opt.bandHighHz = hi;
+    opt.maxOrder = maxOrder;
+    auto res = md::identifyPlscf(*frf, opt);
+    if (auto csv = parsed->value("--stabilization")) {
+      auto diag = res ? core::Result<md::StabilizationDiagram>(res->diagram) : md::plscfStabilization(*frf, opt);
+      if (!diag) return fail(err, diag.error());
+      if (auto w = md::writeStabilizationCsv(*diag, *csv); !w) return fail(err, w.error());
+    }
+    if (!res) return fail(err, res.error());
+    md::RefineOptions ro;
+    ro.bandLowHz = lo;
+    ro.bandHighHz = hi;
+    auto refined = md::refineModalModel(*frf, res->model, ro);
+    if (!refined) return fail(err, refined.error());
+    model = refined->model;
+    for (std::size_t r = 0; r < model.modes.size(); ++r) {
+      rows.push_back({model.modes[r].frequencyHz(), model.modes[r].zeta(), refined->frequencyStdHz[r],
+                      refined->zetaStd[r], 0.0});
+    }
+  } else {
+    if (parsed->value("--stabilization")) return usage(err, "--stabilization needs --method plscf");
+    auto est = method == "peak" ? md::peakPicking(*frf, 0, lo, hi) : md::circleFit(*frf, 0, lo, hi);
+    if (!est) return fail(err, est.error());
+    model.responses = frf->responses;
+    model.references = {frf->references[0]};
+    md::Mode mode;
+    mode.pole = md::poleFromFrequencyDamping(est->frequencyHz, est->zeta);
+    mode.residue = est->residue;
+    model.modes.push_back(mode);
+    rows.push_back({est->frequencyHz, est->zeta, std::nullopt, std::nullopt, 0.0});
+  }
+  auto shapes = md::modeShapes(model, 0);
+  if (!shapes) return fail(err, shapes.error());
+  for (std::size_t r = 0; r < rows.size(); ++r) rows[r].mpc = md::mpc(shapes->shapes.col(static_cast<Eigen::Index>(r)));
+
+  if (auto modesPath = parsed->value("--modes")) {
+    uff::ModalData data;
+    data.dofs = model.responses;
+    const auto nm = static_cast<Eigen::Index>(rows.size());
+    data.frequencyHz.resize(nm);
+    data.dampingRatio.resize(nm);
+    data.modalMass = core::Vector::Zero(nm);
+    data.shapes = shapes->shapes;
+    data.complexShapes = true;
+    for (std::size_t i = 0; i < data.dofs.size(); ++i) {
+      if (data.dofs[i].negative) {  // 55 stores +X..+RZ: flip the sign with the direction
+        data.dofs[i].negative = false;
+        data.shapes.row(static_cast<Eigen::Index>(i)) *= -1.0;
+      }
+    }
+    for (Eigen::Index r = 0; r < nm; ++r) {
+      data.frequencyHz[r] = rows[static_cast<std::size_t>(r)].f;
+      data.dampingRatio[r] = rows[static_cast<std::size_t>(r)].zeta;
+      if (shapes->normalisation == md::Normalisation::UnitModalMass) data.modalMass[r] = 1.0;
+    }
+    auto records = uff::fromModalData(data);
+    if (!records) return fail(err, records.error());
+    uff::UffFile outFile;
+    for (auto& rec : *records) outFile.datasets.push_back(uff::makeDataset(std::move(rec)));
+    if (auto w = uff::writeFile(*modesPath, outFile); !w) return fail(err, w.error());
+  }
+
+  if (parsed->flag("--json")) {
+    nlohmann::json j;
+    j["method"] = method;
+    j["band_hz"] = {lo, hi};
+    j["normalisation"] = shapes->normalisation == md::Normalisation::UnitModalMass ? "unit modal mass" : "max component";
+    j["modes"] = nlohmann::json::array();
+    for (const auto& r : rows) {
+      nlohmann::json m = {{"frequency_hz", r.f}, {"zeta", r.zeta}, {"eta", 2 * r.zeta}, {"mpc", r.mpc}};
+      m["frequency_std"] = r.fStd ? nlohmann::json(*r.fStd) : nlohmann::json(nullptr);
+      m["zeta_std"] = r.zStd ? nlohmann::json(*r.zStd) : nlohmann::json(nullptr);
+      j["modes"].push_back(m);
+    }
+    out << j.dump(2) << "\n";
+    return kExitOk;
+  }
+  out << "mode  frequency_hz   zeta       eta        frequency_std  zeta_std    mpc\n";
+  char buf[256];
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const auto& row = rows[r];
+    char fs[32] = "-", zs[32] = "-";
+    if (row.fStd) std::snprintf(fs, sizeof fs, "%.3g", *row.fStd);
+    if (row.zStd) std::snprintf(zs, sizeof zs, "%.3g", *row.zStd);
+    std::snprintf(buf, sizeof buf, "%-5zu %-14.6f %-10.6f %-10.6f %-14s %-11s %.4f\n", r + 1, row.f, row.zeta,
+                  2 * row.zeta, fs, zs, row.mpc);
+    out << buf;
+  }
+  return kExitOk;
+}
+
+const CommandRegistrar kRegistrar({"identify",
+                                   "FRF.uff --band LO:HI [--method plscf|circle|peak] [--max-order N] "
+                                   "[--stabilization OUT.csv] [--modes OUT.uff] [--json]",
+                                   "Modal identification: frequencies, damping (zeta, eta), standard errors, MPC",
+                                   identifyCommand});
+
+}  // namespace
+}  // namespace mozzi::cli
