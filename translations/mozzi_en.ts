@@ -22,7 +22,7 @@
 <context>
     <name>mozzi::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+223"/>
+        <location filename="../app/gui/main_window.cpp" line="+235"/>
         <source>&amp;File</source>
         <translation type="unfinished"></translation>
     </message>
@@ -73,6 +73,11 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>&amp;Universal File (UFF)...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>&amp;Quit</source>
         <translation type="unfinished"></translation>
     </message>
@@ -83,12 +88,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+60"/>
+        <location line="+61"/>
         <source>Project</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-60"/>
         <source>Properties</source>
         <translation type="unfinished"></translation>
     </message>
@@ -149,18 +154,18 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+79"/>
+        <location line="+120"/>
         <source>Item</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-79"/>
-        <location line="+80"/>
+        <location line="-120"/>
+        <location line="+121"/>
         <source>Count</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-79"/>
+        <location line="-120"/>
         <source>Property</source>
         <translation type="unfinished"></translation>
     </message>
@@ -170,7 +175,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+31"/>
         <source>Mozzi</source>
         <translation type="unfinished"></translation>
     </message>
@@ -186,16 +191,27 @@
     </message>
     <message>
         <location line="+3"/>
+        <location line="+255"/>
         <source>Could not read the project.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-248"/>
         <source>Specimens</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+12"/>
+        <source>FRF sets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Modal results</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Data</source>
         <translation type="unfinished"></translation>
     </message>
@@ -221,11 +237,13 @@
     </message>
     <message>
         <location line="+2"/>
+        <location line="+7"/>
+        <location line="+5"/>
         <source>Name</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-11"/>
         <source>Kind</source>
         <translation type="unfinished"></translation>
     </message>
@@ -235,18 +253,58 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>Mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 nodes, %2 lines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Source</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frequency lines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Response/reference pairs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Method</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Band</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Modes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+23"/>
         <source>Where: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+38"/>
-        <location line="+61"/>
+        <location line="+164"/>
         <source>Open Project</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-61"/>
+        <location line="-164"/>
         <source>Could not open %1.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -262,12 +320,12 @@
     </message>
     <message>
         <location line="+6"/>
-        <location line="+43"/>
+        <location line="+146"/>
         <source>New Project</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-43"/>
+        <location line="-146"/>
         <source>Could not create %1.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -293,12 +351,12 @@
     </message>
     <message>
         <location line="+6"/>
-        <location line="+35"/>
+        <location line="+138"/>
         <source>Save Project As</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-35"/>
+        <location line="-138"/>
         <source>Could not save the project as %1.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -320,6 +378,71 @@
     <message>
         <location line="+5"/>
         <source>Exported the work area to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Cannot show the mesh: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cannot place the mesh: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n trace line segment(s) name nodes the mesh does not have and are not drawn</source>
+        <translation>
+            <numerusform>%n trace line segment names nodes the mesh does not have and is not drawn</numerusform>
+            <numerusform>%n trace line segments name nodes the mesh does not have and are not drawn</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>FRF Set</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Could not read the FRF set.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>FRF: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+9"/>
+        <location line="+7"/>
+        <source>Import</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source>Could not add a specimen for %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Could not import %1; the project is unchanged.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Imported %1: %2 nodes, %3 lines, %4 FRFs, %5 modes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Import Universal File</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Universal files (*.uff *.unv);;All files (*)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

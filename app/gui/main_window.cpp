@@ -28,7 +28,9 @@
 #include "app/gui/project_document.h"
 #include "core/common/versions.h"
 #include "devices/common/versions.h"
+#include "core/geometry/mesh_placement.h"
 #include "views/panels/project_overview.h"
+#include "views/plots/frf_plot.h"
 #include "views/scene/scene_view.h"
 
 // Resources compiled into the static mozzi_app library must be registered by
@@ -45,6 +47,7 @@ namespace {
 
 constexpr int kMaxRecentFiles = 8;
 constexpr int kRoleTable = Qt::UserRole + 1;
+constexpr int kRoleId = Qt::UserRole + 4;  // row id of a specimen, FRF set or modal result
 
 const char* const kSettingsGeometry = "window/geometry";
 const char* const kSettingsState = "window/state";
@@ -116,6 +119,8 @@ void MainWindow::createActions() {
   connect(saveAsAction_, &QAction::triggered, this, &MainWindow::onSaveAs);
   closeProjectAction_ = new QAction(this);
   connect(closeProjectAction_, &QAction::triggered, document_, &ProjectDocument::close);
+  importUffAction_ = new QAction(this);
+  connect(importUffAction_, &QAction::triggered, this, &MainWindow::onImportUff);
   exportImageAction_ = new QAction(this);
   connect(exportImageAction_, &QAction::triggered, this, &MainWindow::onExportImage);
   quitAction_ = new QAction(this);
@@ -160,6 +165,7 @@ void MainWindow::createMenus() {
   fileMenu_->addAction(closeProjectAction_);
   fileMenu_->addSeparator();
   importMenu_ = fileMenu_->addMenu(QString());
+  importMenu_->addAction(importUffAction_);
   exportMenu_ = fileMenu_->addMenu(QString());
   exportMenu_->addAction(exportImageAction_);
   fileMenu_->addSeparator();
@@ -187,6 +193,12 @@ void MainWindow::createDocks() {
   projectTree_->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
   connect(projectTree_, &QTreeWidget::currentItemChanged, this,
           [this](QTreeWidgetItem* current) { showProperties(current); });
+  // Double-click (or Enter) on an FRF set plots it.
+  connect(projectTree_, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) {
+    if (item && item->data(0, kRoleTable).toString() == QLatin1String("frf-set")) {
+      openFrfSet(item->data(0, kRoleId).toLongLong());
+    }
+  });
   projectDock_ = new QDockWidget(this);
   projectDock_->setObjectName(QStringLiteral("projectDock"));
   projectDock_->setWidget(projectTree_);
@@ -230,6 +242,7 @@ void MainWindow::retranslateUi() {
   importMenu_->setTitle(tr("&Import"));
   exportMenu_->setTitle(tr("&Export"));
   exportImageAction_->setText(tr("Work Area as &Image..."));
+  importUffAction_->setText(tr("&Universal File (UFF)..."));
   quitAction_->setText(tr("&Quit"));
   viewMenu_->setTitle(tr("&View"));
   projectDock_->setWindowTitle(tr("Project"));
@@ -280,6 +293,7 @@ void MainWindow::refreshFromDocument() {
   properties_->setRowCount(0);
   const bool open = document_->isOpen();
   saveAsAction_->setEnabled(open);
+  importUffAction_->setEnabled(open && !document_->isReadOnly());
   closeProjectAction_->setEnabled(open);
   integrityAction_->setEnabled(open);
   if (!open) {
@@ -301,11 +315,38 @@ void MainWindow::refreshFromDocument() {
   root->setData(0, kRoleTable, QStringLiteral("project"));
   auto* specimens = new QTreeWidgetItem(root, {tr("Specimens"), QString::number(summary->specimens.size())});
   specimens->setData(0, kRoleTable, QStringLiteral("specimen"));
+  QTreeWidgetItem* selected = root;
   for (const auto& sp : summary->specimens) {
     auto* item = new QTreeWidgetItem(specimens, {QString::fromStdString(sp.name)});
     item->setData(0, kRoleTable, QStringLiteral("specimen-row"));
     item->setData(0, Qt::UserRole + 2, QString::fromStdString(sp.kind));
     item->setData(0, Qt::UserRole + 3, QString::fromStdString(sp.description));
+    item->setData(0, kRoleId, QVariant::fromValue<qlonglong>(sp.id));
+    if (sp.id == currentSpecimen_) selected = item;
+  }
+  if (auto sets = document_->frfSets(); sets && !sets->empty()) {
+    auto* group = new QTreeWidgetItem(root, {tr("FRF sets"), QString::number(sets->size())});
+    for (const auto& set : *sets) {
+      auto* item = new QTreeWidgetItem(group, {QString::fromStdString(set.name),
+                                               QString::number(set.responseCount * set.referenceCount)});
+      item->setData(0, kRoleTable, QStringLiteral("frf-set"));
+      item->setData(0, kRoleId, QVariant::fromValue<qlonglong>(set.id));
+      item->setData(0, Qt::UserRole + 2, QString::fromStdString(set.source));
+      item->setData(0, Qt::UserRole + 3, QStringLiteral("%1|%2").arg(set.lineCount).arg(static_cast<int>(set.type)));
+    }
+    projectTree_->expandItem(group);
+  }
+  if (auto results = document_->modalResults(); results && !results->empty()) {
+    auto* group = new QTreeWidgetItem(root, {tr("Modal results"), QString::number(results->size())});
+    for (const auto& result : *results) {
+      auto* item = new QTreeWidgetItem(group, {QString::fromStdString(result.name), QString::number(result.modeCount)});
+      item->setData(0, kRoleTable, QStringLiteral("modal-result"));
+      item->setData(0, kRoleId, QVariant::fromValue<qlonglong>(result.id));
+      item->setData(0, Qt::UserRole + 2, QString::fromStdString(result.method));
+      item->setData(0, Qt::UserRole + 3,
+                    QStringLiteral("%1 - %2 Hz").arg(result.bandLowHz, 0, 'f', 1).arg(result.bandHighHz, 0, 'f', 1));
+    }
+    projectTree_->expandItem(group);
   }
   auto* data = new QTreeWidgetItem(root, {tr("Data")});
   for (const auto& count : summary->counts) {
@@ -315,7 +356,7 @@ void MainWindow::refreshFromDocument() {
   }
   projectTree_->expandItem(root);
   projectTree_->expandItem(specimens);
-  projectTree_->setCurrentItem(root);
+  projectTree_->setCurrentItem(selected);
 }
 
 void MainWindow::showProperties(QTreeWidgetItem* item) {
@@ -331,6 +372,19 @@ void MainWindow::showProperties(QTreeWidgetItem* item) {
     rows << qMakePair(tr("Name"), item->text(0));
     rows << qMakePair(tr("Kind"), item->data(0, Qt::UserRole + 2).toString());
     rows << qMakePair(tr("Description"), item->data(0, Qt::UserRole + 3).toString());
+    showSpecimenMesh(item->data(0, kRoleId).toLongLong());
+    rows << qMakePair(tr("Mesh"), tr("%1 nodes, %2 lines").arg(scene_->meshPointCount()).arg(scene_->meshLineCount()));
+  } else if (role == QLatin1String("frf-set")) {
+    const QStringList detail = item->data(0, Qt::UserRole + 3).toString().split(QLatin1Char('|'));
+    rows << qMakePair(tr("Name"), item->text(0));
+    rows << qMakePair(tr("Source"), item->data(0, Qt::UserRole + 2).toString());
+    rows << qMakePair(tr("Frequency lines"), detail.value(0));
+    rows << qMakePair(tr("Response/reference pairs"), item->text(1));
+  } else if (role == QLatin1String("modal-result")) {
+    rows << qMakePair(tr("Name"), item->text(0));
+    rows << qMakePair(tr("Method"), item->data(0, Qt::UserRole + 2).toString());
+    rows << qMakePair(tr("Band"), item->data(0, Qt::UserRole + 3).toString());
+    rows << qMakePair(tr("Modes"), item->text(1));
   } else {
     rows << qMakePair(tr("Item"), item->text(0));
     if (!item->text(1).isEmpty()) rows << qMakePair(tr("Count"), item->text(1));
@@ -442,6 +496,109 @@ bool MainWindow::exportWorkAreaImage(const QString& path) {
   }
   log(tr("Exported the work area to %1").arg(QDir::toNativeSeparators(path)));
   return true;
+}
+
+void MainWindow::showSpecimenMesh(std::int64_t specimenId) {
+  currentSpecimen_ = specimenId;
+  auto mesh = document_->mesh(specimenId);
+  if (!mesh) {
+    scene_->clearMesh();
+    log(tr("Cannot show the mesh: %1").arg(QString::fromStdString(mesh.error().describe())));
+    return;
+  }
+  auto positions = core::geometry::globalNodePositions(*mesh);
+  if (!positions) {
+    scene_->clearMesh();
+    log(tr("Cannot place the mesh: %1").arg(QString::fromStdString(positions.error().describe())));
+    return;
+  }
+  scene_->showMesh(*mesh, *positions);
+  if (scene_->skippedLineCount() > 0) {
+    log(tr("%n trace line segment(s) name nodes the mesh does not have and are not drawn", nullptr,
+           scene_->skippedLineCount()));
+  }
+}
+
+bool MainWindow::selectSpecimen(std::int64_t specimenId) {
+  for (QTreeWidgetItem* item : projectTree_->findItems(QStringLiteral("*"), Qt::MatchWildcard | Qt::MatchRecursive)) {
+    if (item->data(0, kRoleTable).toString() == QLatin1String("specimen-row") &&
+        item->data(0, kRoleId).toLongLong() == specimenId) {
+      projectTree_->setCurrentItem(item);
+      return true;
+    }
+  }
+  return false;
+}
+
+bool MainWindow::openFrfSet(std::int64_t frfSetId) {
+  const QString key = QStringLiteral("frf-%1").arg(frfSetId);
+  for (int i = 0; i < tabs_->count(); ++i) {
+    if (tabs_->widget(i)->property("mozziKey").toString() == key) {
+      tabs_->setCurrentIndex(i);
+      return true;
+    }
+  }
+  auto frf = document_->frfSet(frfSetId);
+  if (!frf) {
+    showError(tr("FRF Set"), tr("Could not read the FRF set."), frf.error());
+    return false;
+  }
+  QString name = QString::number(frfSetId);
+  if (auto sets = document_->frfSets()) {
+    for (const auto& set : *sets) {
+      if (set.id == frfSetId) name = QString::fromStdString(set.name);
+    }
+  }
+  auto* plot = new views::FrfPlot(tabs_);
+  plot->setProperty("mozziKey", key);
+  plot->setFrfs(std::make_shared<const core::FrfMatrix>(std::move(frf).value()));
+  tabs_->setCurrentIndex(tabs_->addTab(plot, tr("FRF: %1").arg(name)));
+  return true;
+}
+
+bool MainWindow::importUff(const QString& path) {
+  if (!document_->isOpen()) return false;
+  std::int64_t specimen = currentSpecimen_;
+  auto summary = document_->summary();
+  if (!summary) {
+    showError(tr("Import"), tr("Could not read the project."), summary.error());
+    return false;
+  }
+  bool known = false;
+  for (const auto& sp : summary->specimens) known = known || sp.id == specimen;
+  if (!known) specimen = summary->specimens.empty() ? 0 : summary->specimens.front().id;
+  if (specimen == 0) {
+    auto id = document_->addSpecimen(QFileInfo(path).completeBaseName(), QStringLiteral("imported"));
+    if (!id) {
+      showError(tr("Import"), tr("Could not add a specimen for %1.").arg(QDir::toNativeSeparators(path)), id.error());
+      return false;
+    }
+    specimen = *id;
+  }
+  auto report = document_->importUff(path, specimen);
+  if (!report) {
+    showError(tr("Import"), tr("Could not import %1; the project is unchanged.").arg(QDir::toNativeSeparators(path)),
+              report.error());
+    return false;
+  }
+  currentSpecimen_ = specimen;
+  refreshFromDocument();
+  log(tr("Imported %1: %2 nodes, %3 lines, %4 FRFs, %5 modes")
+          .arg(QDir::toNativeSeparators(path))
+          .arg(report->nodes)
+          .arg(report->lines)
+          .arg(report->frfPairs)
+          .arg(report->modes));
+  for (const auto& note : report->notes) log(QStringLiteral("  ") + QString::fromStdString(note));
+  if (report->frfSetId) openFrfSet(*report->frfSetId);
+  else if (report->nodes > 0) tabs_->setCurrentWidget(scene_);
+  return true;
+}
+
+void MainWindow::onImportUff() {
+  const QString path = QFileDialog::getOpenFileName(this, tr("Import Universal File"), projectFolder(),
+                                                    tr("Universal files (*.uff *.unv);;All files (*)"));
+  if (!path.isEmpty()) importUff(path);
 }
 
 void MainWindow::onNew() {

@@ -7,6 +7,7 @@
 #include <QMessageBox>
 #include <QPointer>
 #include <QStringList>
+#include <cstdint>
 
 class QAction;
 class QActionGroup;
@@ -48,6 +49,14 @@ class MainWindow : public QMainWindow {
   bool createDemoProject(const QString& path);
   bool saveProjectAs(const QString& path);
   bool exportWorkAreaImage(const QString& path);
+  // Imports a UFF file into the selected specimen (a new specimen named after
+  // the file when the project has none).
+  bool importUff(const QString& path);
+  // Selects a specimen in the tree: its mesh goes to the 3-D view.
+  bool selectSpecimen(std::int64_t specimenId);
+  // Opens (or raises) a tab plotting a stored FRF set.
+  bool openFrfSet(std::int64_t frfSetId);
+  std::int64_t currentSpecimen() const { return currentSpecimen_; }
 
   // Switches the interface language ("en", "it"); returns false if unknown.
   bool setLanguage(const QString& code);
@@ -83,6 +92,8 @@ class MainWindow : public QMainWindow {
   void onOpen();
   void onSaveAs();
   void onExportImage();
+  void onImportUff();
+  void showSpecimenMesh(std::int64_t specimenId);
   void onCreateDemo();
   void onCheckIntegrity();
   void onAbout();
@@ -113,6 +124,7 @@ class MainWindow : public QMainWindow {
   QAction* saveAsAction_ = nullptr;
   QAction* closeProjectAction_ = nullptr;
   QAction* exportImageAction_ = nullptr;
+  QAction* importUffAction_ = nullptr;
   QAction* quitAction_ = nullptr;
   QAction* clearRecentAction_ = nullptr;
   QAction* resetLayoutAction_ = nullptr;
@@ -127,6 +139,7 @@ class MainWindow : public QMainWindow {
   QTranslator* translator_ = nullptr;
   QByteArray defaultState_;
   QPointer<QMessageBox> errorBox_;
+  std::int64_t currentSpecimen_ = 0;
 };
 
 }  // namespace app

@@ -8,6 +8,7 @@
 
 #include "core/common/result.h"
 #include "core/io/project_store.h"
+#include "core/io/uff_import.h"
 
 namespace mozzi {
 namespace app {
@@ -29,6 +30,15 @@ class ProjectDocument : public QObject {
   core::Result<void> createDemo(const QString& path);
   core::Result<void> saveAs(const QString& path);
   void close();
+
+  // Imports a UFF file into the specimen (see core::io::importUff).
+  core::Result<core::io::UffImportReport> importUff(const QString& path, std::int64_t specimenId);
+  core::Result<std::int64_t> addSpecimen(const QString& name, const QString& kind);
+  // Read access for the views; each fails cleanly when no project is open.
+  core::Result<core::io::StoredMesh> mesh(std::int64_t specimenId) const;
+  core::Result<std::vector<core::io::FrfSetInfo>> frfSets() const;
+  core::Result<core::FrfMatrix> frfSet(std::int64_t id) const;
+  core::Result<std::vector<core::io::ModalResultInfo>> modalResults() const;
 
  signals:
   void changed();

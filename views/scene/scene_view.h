@@ -4,6 +4,10 @@
 // added by the mesh and animation views built on top of it.
 
 #include <QWidget>
+#include <vector>
+
+#include "core/common/eigen_types.h"
+#include "core/io/project_records.h"
 
 class QVTKOpenGLNativeWidget;
 class vtkRenderer;
@@ -27,11 +31,23 @@ class SceneView : public QWidget {
   // surface format of its own (STYLE 12).
   static void prepareSurfaceFormat();
 
+  // Draws a mesh: nodes as dots at their global positions (one per mesh node,
+  // same order), lines as segments between node labels. Segments naming a
+  // node the mesh lacks are skipped and counted. Replaces any mesh shown.
+  void showMesh(const core::io::StoredMesh& mesh, const std::vector<core::Vector3>& globalPositions);
+  void clearMesh();
+  int meshPointCount() const { return meshPoints_; }
+  int meshLineCount() const { return meshLines_; }
+  int skippedLineCount() const { return skippedLines_; }
+
  private:
   QVTKOpenGLNativeWidget* vtkWidget_ = nullptr;
   struct Pipeline;
   Pipeline* pipeline_ = nullptr;
   int framesRendered_ = 0;
+  int meshPoints_ = 0;
+  int meshLines_ = 0;
+  int skippedLines_ = 0;
 };
 
 }  // namespace views

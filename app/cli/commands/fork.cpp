@@ -21,18 +21,40 @@ const char* kUsage =
     "                             --f-bend-wheel HZ --eta-bend-wheel ETA --f-bend-alone HZ [--json]\n";
 
 nlohmann::json modelJson(const st::LumpedModel& m) {
-  return {{"stiffness_Nm_per_rad", m.stiffness}, {"arm_m", m.arm},           {"inertia_kgm2", m.inertia},
-          {"pure_moment_kgm2", m.pureMoment},   {"frequency_Hz", m.frequencyHz}, {"damping_Nms_per_rad", m.damping},
+  return {{"stiffness_Nm_per_rad", m.stiffness},
+          {"arm_m", m.arm},
+          {"inertia_kgm2", m.inertia},
+          {"pure_moment_kgm2", m.pureMoment},
+          {"frequency_Hz", m.frequencyHz},
+          {"damping_Nms_per_rad", m.damping},
           {"zeta", m.zeta}};
 }
 
 int forkCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const auto parsed = ParsedArgs::parse(
-      args, OptionSpec{{"--k", "--l1", "--l2", "--wheel-centre", "--mass", "--wheel-inertia", "--freq", "--zeta",
-                        "--fork-mass", "--wheel-mass", "--wheel-radius", "--hub-mass", "--hub-radius", "--hub-length",
-                        "--tip-distance", "--max-bend-arm", "--f-tors-wheel", "--eta-tors-wheel", "--f-tors-alone",
-                        "--f-tors-alone2", "--f-bend-wheel", "--eta-bend-wheel", "--f-bend-alone"},
-                       {"--json"}});
+  const auto parsed = ParsedArgs::parse(args, OptionSpec{{"--k",
+                                                          "--l1",
+                                                          "--l2",
+                                                          "--wheel-centre",
+                                                          "--mass",
+                                                          "--wheel-inertia",
+                                                          "--freq",
+                                                          "--zeta",
+                                                          "--fork-mass",
+                                                          "--wheel-mass",
+                                                          "--wheel-radius",
+                                                          "--hub-mass",
+                                                          "--hub-radius",
+                                                          "--hub-length",
+                                                          "--tip-distance",
+                                                          "--max-bend-arm",
+                                                          "--f-tors-wheel",
+                                                          "--eta-tors-wheel",
+                                                          "--f-tors-alone",
+                                                          "--f-tors-alone2",
+                                                          "--f-bend-wheel",
+                                                          "--eta-bend-wheel",
+                                                          "--f-bend-alone"},
+                                                         {"--json"}});
   if (!parsed || parsed->positional().size() != 1) {
     err << "mozzi-cli fork: " << (parsed ? "expected 'lumped' or 'bicycle'" : parsed.error().describe()) << "\n"
         << kUsage;
@@ -73,7 +95,8 @@ int forkCommand(const std::vector<std::string>& args, std::ostream& out, std::os
       return kExitFailure;
     }
     if (json) {
-      out << nlohmann::json{{"model1", modelJson(r->model1)}, {"model2", modelJson(r->model2)},
+      out << nlohmann::json{{"model1", modelJson(r->model1)},
+                            {"model2", modelJson(r->model2)},
                             {"model3", modelJson(r->model3)}}
                  .dump(2)
           << "\n";

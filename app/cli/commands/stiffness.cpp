@@ -18,10 +18,10 @@ const char* kUsage =
     "         (--fork --alpha-deg DEG | --beta-twist-deg DEG --beta-bend-deg DEG --beta-tors-deg DEG) [--json]\n";
 
 int stiffnessCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const auto parsed = ParsedArgs::parse(
-      args, OptionSpec{{"--k-twist", "--a-twist", "--a-bend", "--a-tors", "--alpha-deg", "--beta-twist-deg",
-                        "--beta-bend-deg", "--beta-tors-deg"},
-                       {"--json", "--fork"}});
+  const auto parsed =
+      ParsedArgs::parse(args, OptionSpec{{"--k-twist", "--a-twist", "--a-bend", "--a-tors", "--alpha-deg",
+                                          "--beta-twist-deg", "--beta-bend-deg", "--beta-tors-deg"},
+                                         {"--json", "--fork"}});
   if (!parsed || parsed->positional().size() != 1 || parsed->positional()[0] != "decompose") {
     err << "mozzi-cli stiffness: " << (parsed ? "expected the subcommand 'decompose'" : parsed.error().describe())
         << "\n"

@@ -86,10 +86,10 @@ core::Result<PlateCsv> readPlateCsv(const std::string& path, bool needSensors, b
       row.push_back(v);
     }
     if (!csv.rows.empty() && row.size() != csv.rows.front().size()) {
-      return core::makeError(core::ErrorCode::ParseError,
-                             "row has " + std::to_string(row.size()) + " fields, expected " +
-                                 std::to_string(csv.rows.front().size()),
-                             where);
+      return core::makeError(
+          core::ErrorCode::ParseError,
+          "row has " + std::to_string(row.size()) + " fields, expected " + std::to_string(csv.rows.front().size()),
+          where);
     }
     csv.rows.push_back(std::move(row));
   }
@@ -103,19 +103,15 @@ core::Result<PlateCsv> readPlateCsv(const std::string& path, bool needSensors, b
 }
 
 nlohmann::json axisJson(const st::PlateAxis& a) {
-  return {{"point_m", {a.point(0), a.point(1)}},
-          {"direction", {a.direction(0), a.direction(1)}},
-          {"beta_deg", a.beta * kDeg},
-          {"beta_sigma_deg", a.betaSigma * kDeg},
-          {"offset_sigma_m", a.offsetSigma},
-          {"rotation", a.rotation},
+  return {{"point_m", {a.point(0), a.point(1)}}, {"direction", {a.direction(0), a.direction(1)}},
+          {"beta_deg", a.beta * kDeg},           {"beta_sigma_deg", a.betaSigma * kDeg},
+          {"offset_sigma_m", a.offsetSigma},     {"rotation", a.rotation},
           {"rotation_sigma", a.rotationSigma}};
 }
 
 void printAxis(std::ostream& out, const st::PlateAxis& a) {
   out << "  axis: point (" << a.point(0) << ", " << a.point(1) << ") m, beta " << a.beta * kDeg << " +- "
-      << a.betaSigma * kDeg << " deg, offset sigma " << a.offsetSigma * 1e3 << " mm, rotation " << a.rotation
-      << "\n";
+      << a.betaSigma * kDeg << " deg, offset sigma " << a.offsetSigma * 1e3 << " mm, rotation " << a.rotation << "\n";
 }
 
 int fail(std::ostream& err, const std::string& cmd, const core::Error& e) {
@@ -126,7 +122,8 @@ int fail(std::ostream& err, const std::string& cmd, const core::Error& e) {
 int twistStatic(const ParsedArgs& args, const std::string& file, std::ostream& out, std::ostream& err) {
   auto csv = readPlateCsv(file, true);
   if (!csv) return fail(err, "twist static", csv.error());
-  if (!csv->hasLoad) return fail(err, "twist static", core::makeError(core::ErrorCode::ParseError, "no 'load,u,v' row", file));
+  if (!csv->hasLoad)
+    return fail(err, "twist static", core::makeError(core::ErrorCode::ParseError, "no 'load,u,v' row", file));
   const std::size_t ns = csv->sensors.size();
   if (csv->rows.front().size() != ns + 1) {
     return fail(err, "twist static",
@@ -145,7 +142,8 @@ int twistStatic(const ParsedArgs& args, const std::string& file, std::ostream& o
     core::Matrix d(static_cast<Eigen::Index>(csv->rows.size()), static_cast<Eigen::Index>(ns));
     for (std::size_t k = 0; k < csv->rows.size(); ++k) {
       f(static_cast<Eigen::Index>(k)) = csv->rows[k][0];
-      for (std::size_t i = 0; i < ns; ++i) d(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(i)) = csv->rows[k][i + 1];
+      for (std::size_t i = 0; i < ns; ++i)
+        d(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(i)) = csv->rows[k][i + 1];
     }
     auto r = st::staticTwistTest(csv->sensors, f, d, csv->load);
     if (!r) return fail(err, "twist static", r.error());
@@ -207,7 +205,8 @@ int twistDynamic(const ParsedArgs& args, const std::string& file, std::ostream& 
   auto res = st::dynamicTwistSweep(csv->sensors, sweep, csv->load);
   if (!res) return fail(err, "twist dynamic", res.error());
   nlohmann::json arr = nlohmann::json::array();
-  if (!args.flag("--json")) out << "freq_Hz  method  beta_deg  beta_sigma_deg  point_u_m  point_v_m  k_lat_N_per_m  k_tw_Nm_per_rad  note\n";
+  if (!args.flag("--json"))
+    out << "freq_Hz  method  beta_deg  beta_sigma_deg  point_u_m  point_v_m  k_lat_N_per_m  k_tw_Nm_per_rad  note\n";
   for (const auto& s : *res) {
     if (!s.axis) {
       if (args.flag("--json")) {
@@ -228,8 +227,8 @@ int twistDynamic(const ParsedArgs& args, const std::string& file, std::ostream& 
                      {"note", s.axis->note}});
     } else {
       out << s.frequencyHz << "  " << st::phasorAxisCaseName(s.axis->method) << "  " << a.beta * kDeg << "  "
-          << a.betaSigma * kDeg << "  " << a.point(0) << "  " << a.point(1) << "  " << s.dynamicLateralStiffness
-          << "  " << s.dynamicTwistStiffness << "  " << s.axis->note << "\n";
+          << a.betaSigma * kDeg << "  " << a.point(0) << "  " << a.point(1) << "  " << s.dynamicLateralStiffness << "  "
+          << s.dynamicTwistStiffness << "  " << s.axis->note << "\n";
     }
   }
   if (args.flag("--json")) out << arr.dump(2) << "\n";
@@ -241,7 +240,8 @@ int printModal(const ParsedArgs& args, const st::ModalAxis& modal, std::ostream&
   if (args.flag("--json")) {
     nlohmann::json rec = nlohmann::json::array();
     for (Eigen::Index i = 0; i < r->receptance.size(); ++i) {
-      rec.push_back({{"magnitude_m_per_N", std::abs(r->receptance(i))}, {"phase_deg", std::arg(r->receptance(i)) * kDeg}});
+      rec.push_back(
+          {{"magnitude_m_per_N", std::abs(r->receptance(i))}, {"phase_deg", std::arg(r->receptance(i)) * kDeg}});
     }
     out << nlohmann::json{{"frequency_Hz", r->frequencyHz},
                           {"method", st::phasorAxisCaseName(r->axis.method)},
@@ -260,7 +260,6 @@ int printModal(const ParsedArgs& args, const st::ModalAxis& modal, std::ostream&
   }
   return kExitOk;
 }
-
 
 int twistModal(const ParsedArgs& args, const std::string& file, std::ostream& out, std::ostream& err) {
   auto freq = args.number("--freq");
@@ -287,8 +286,9 @@ int twistModal(const ParsedArgs& args, const std::string& file, std::ostream& ou
         if (!dof) return fail(err, "twist modal", dof.error());
         const auto it = std::find(frf->responses.begin(), frf->responses.end(), *dof);
         if (it == frf->responses.end()) {
-          return fail(err, "twist modal",
-                      core::makeError(core::ErrorCode::NotFound, "response " + item + " is not in the FRF file", *frfFile));
+          return fail(
+              err, "twist modal",
+              core::makeError(core::ErrorCode::NotFound, "response " + item + " is not in the FRF file", *frfFile));
         }
         cols.push_back(static_cast<int>(it - frf->responses.begin()));
       }
@@ -352,7 +352,8 @@ const char* kTwistUsage =
     "[--frf FRF.csv [--responses DOF,DOF,DOF]] [--phase-tol-deg D] [--json]\n";
 
 int twistCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const auto parsed = ParsedArgs::parse(args, OptionSpec{{"--freq", "--type", "--phase-tol-deg", "--frf", "--responses"}, {"--json"}});
+  const auto parsed =
+      ParsedArgs::parse(args, OptionSpec{{"--freq", "--type", "--phase-tol-deg", "--frf", "--responses"}, {"--json"}});
   if (!parsed || parsed->positional().size() != 2) {
     err << "mozzi-cli twist: " << (parsed ? "expected a mode and a file" : parsed.error().describe()) << "\n"
         << kTwistUsage;
@@ -383,8 +384,9 @@ int mozziCommand(const std::vector<std::string>& args, std::ostream& out, std::o
     auto csv = readPlateCsv(file, true);
     if (!csv) return fail(err, "mozzi", csv.error());
     if (csv->rows.size() != 1 || csv->rows[0].size() != csv->sensors.size()) {
-      return fail(err, "mozzi",
-                  core::makeError(core::ErrorCode::ParseError, "--planar needs one row of lateral displacements", file));
+      return fail(
+          err, "mozzi",
+          core::makeError(core::ErrorCode::ParseError, "--planar needs one row of lateral displacements", file));
     }
     st::PlaneFitOptions o;
     if (*sigma) o.sigmaFloor = **sigma;
@@ -438,10 +440,10 @@ int mozziCommand(const std::vector<std::string>& args, std::ostream& out, std::o
                .dump(2)
         << "\n";
   } else {
-    out << "Mozzi (screw) axis from " << n << " points\n  direction (" << r->direction.transpose()
-        << ") +- " << r->directionSigma << " rad\n  point nearest origin (" << r->point.transpose() << ") m +- "
-        << r->pointSigma << "\n  pitch " << r->pitch << " +- " << r->pitchSigma << " m/rad, rotation " << r->angle
-        << " rad, condition " << r->conditionNumber << "\n";
+    out << "Mozzi (screw) axis from " << n << " points\n  direction (" << r->direction.transpose() << ") +- "
+        << r->directionSigma << " rad\n  point nearest origin (" << r->point.transpose() << ") m +- " << r->pointSigma
+        << "\n  pitch " << r->pitch << " +- " << r->pitchSigma << " m/rad, rotation " << r->angle << " rad, condition "
+        << r->conditionNumber << "\n";
     if (r->lowConfidence) out << "  LOW CONFIDENCE: " << r->note << "\n";
   }
   return kExitOk;

@@ -25,6 +25,8 @@
 
 #include "app/gui/main_window.h"
 #include "app/gui/project_document.h"
+#include "core/io/uff/uff.h"
+#include "views/plots/frf_plot.h"
 #include "devices/sim/virtual_specimens.h"
 #include "views/panels/project_overview.h"
 #include "views/scene/scene_view.h"
@@ -45,6 +47,9 @@ class MainWindowTest : public QObject {
   void languageSwitchesToItalianAndBack();
   void aboutListsTheLinkedLibraryVersions();
   void sceneRendersWithOpenGl();
+  void importedGeometryIsDrawnInThe3dView();
+  void importedFrfsOpenAPlotTab();
+  void unreadableImportLeavesTheProjectUnchanged();
   void screenshot();
 
  private:
@@ -170,6 +175,9 @@ void MainWindowTest::missingAndCorruptFilesShowAClearMessageAndKeepTheWindowUsab
   // Still usable: menus enabled, a good project opens.
   QVERIFY(window_->menuBar()->isEnabled());
   QVERIFY(window_->openProject(file(QStringLiteral("menus.mozzi"))));
+  // Opening the project that is already open (Open Recent) keeps it writable.
+  QVERIFY(window_->openProject(file(QStringLiteral("menus.mozzi"))));
+  QVERIFY(!window_->document()->isReadOnly());
 }
 
 void MainWindowTest::demoProjectFillsTreeOverviewAndProperties() {
@@ -189,8 +197,9 @@ void MainWindowTest::demoProjectFillsTreeOverviewAndProperties() {
   tree->setCurrentItem(specimens->child(0));
   auto* properties = window_->findChild<QTableWidget*>(QStringLiteral("propertiesTable"));
   QVERIFY(properties);
-  QCOMPARE(properties->rowCount(), 3);
+  QCOMPARE(properties->rowCount(), 4);  // name, kind, description, mesh
   QCOMPARE(properties->item(0, 1)->text(), QString::fromStdString(mozzi::devices::sim::virtualSpecimens()[0].name));
+  QCOMPARE(properties->item(3, 0)->text(), QStringLiteral("Mesh"));
   QVERIFY(window_->windowTitle().contains(QStringLiteral("demo.mozzi")));
 }
 
@@ -276,6 +285,88 @@ void MainWindowTest::sceneRendersWithOpenGl() {
   const QColor centre = image.pixelColor(image.width() / 2, image.height() / 2);
   QVERIFY2(centre.lightness() > 150, qPrintable(centre.name()));
   window_->workArea()->setCurrentIndex(0);
+}
+
+// The TestLab file has 36 nodes in 36 local coordinate systems and three trace
+// lines drawing 30 segments (counted by hand from the file).
+void MainWindowTest::importedGeometryIsDrawnInThe3dView() {
+  QVERIFY(window_->newProject(file(QStringLiteral("import-geometry.mozzi"))));
+  const QString uff = QStringLiteral(MOZZI_SHARED_DATA_DIR "/uff/TestLab 161 164 18 15 82.uff");
+  QVERIFY(window_->importUff(uff));
+  auto* scene = window_->findChild<mozzi::views::SceneView*>();
+  QCOMPARE(window_->workArea()->currentWidget(), static_cast<QWidget*>(scene));
+  QCOMPARE(scene->meshPointCount(), 36);
+  QCOMPARE(scene->meshLineCount(), 30);
+  QCOMPARE(scene->skippedLineCount(), 0);
+  // The specimen created for the file is selected and its properties say so.
+  auto* properties = window_->findChild<QTableWidget*>(QStringLiteral("propertiesTable"));
+  bool meshRow = false;
+  for (int r = 0; r < properties->rowCount(); ++r) {
+    meshRow = meshRow || properties->item(r, 1)->text() == QStringLiteral("36 nodes, 30 lines");
+  }
+  QVERIFY(meshRow);
+  scene->render();
+  const QString folder = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR", QDir::tempPath());
+  QDir().mkpath(folder);
+  QVERIFY(window_->grab().save(QDir(folder).filePath(QStringLiteral("scene_testlab.png"))));
+  window_->workArea()->setCurrentIndex(0);
+}
+
+void MainWindowTest::importedFrfsOpenAPlotTab() {
+  QVERIFY(window_->createDemoProject(file(QStringLiteral("import-frf.mozzi"))));
+  // A two-response FRF file written by Mozzi's own UFF writer.
+  mozzi::core::FrfMatrix frf;
+  const int n = 400;
+  frf.frequencyHz = mozzi::core::Vector::LinSpaced(n, 1.0, 400.0);
+  frf.responses = {{3, mozzi::core::Direction::Z, false}, {4, mozzi::core::Direction::Z, false}};
+  frf.references = {{1, mozzi::core::Direction::Z, true}};
+  frf.type = mozzi::core::FrfType::Accelerance;
+  frf.h.emplace_back(n, 2);
+  for (int k = 0; k < n; ++k) {
+    const double w = 2 * M_PI * frf.frequencyHz[k];
+    frf.h[0](k, 0) = -w * w / mozzi::core::Complex(1e6 - w * w, 20.0 * w);
+    frf.h[0](k, 1) = 0.5 * frf.h[0](k, 0);
+  }
+  auto records = mozzi::core::io::uff::fromFrfMatrix(frf);
+  QVERIFY(records.ok());
+  mozzi::core::io::uff::UffFile uffFile;
+  for (auto& r : *records) uffFile.datasets.push_back(mozzi::core::io::uff::makeDataset(std::move(r)));
+  const QString path = file(QStringLiteral("frf.uff"));
+  QVERIFY(mozzi::core::io::uff::writeFile(path.toStdString(), uffFile).ok());
+
+  const int tabsBefore = window_->workArea()->count();
+  QVERIFY(window_->importUff(path));
+  QCOMPARE(window_->workArea()->count(), tabsBefore + 1);
+  auto* plot = qobject_cast<mozzi::views::FrfPlot*>(window_->workArea()->currentWidget());
+  QVERIFY(plot);
+  QCOMPARE(plot->pairCount(), 2);
+  QCOMPARE(plot->shownSamples(), size_t(n));
+  auto* tree = window_->findChild<QTreeWidget*>(QStringLiteral("projectTree"));
+  const auto groups = tree->findItems(QStringLiteral("FRF sets"), Qt::MatchExactly | Qt::MatchRecursive);
+  QCOMPARE(groups.size(), 1);
+  QCOMPARE(groups[0]->childCount(), 1);
+  QCOMPARE(groups[0]->child(0)->text(0), QStringLiteral("frf.uff"));
+  // Activating the set again raises the same tab instead of opening another.
+  emit tree->itemActivated(groups[0]->child(0), 0);
+  QCOMPARE(window_->workArea()->count(), tabsBefore + 1);
+}
+
+void MainWindowTest::unreadableImportLeavesTheProjectUnchanged() {
+  QVERIFY(window_->createDemoProject(file(QStringLiteral("import-bad.mozzi"))));
+  auto before = window_->document()->summary();
+  QVERIFY(before.ok());
+  QFile bad(file(QStringLiteral("bad.uff")));
+  QVERIFY(bad.open(QIODevice::WriteOnly));
+  bad.write("    -1\n    58\nthis is not a dataset 58\n");
+  bad.close();
+  QVERIFY(!window_->importUff(bad.fileName()));
+  QVERIFY(window_->errorBox() && window_->errorBox()->isVisible());
+  QVERIFY2(window_->errorBox()->text().contains(QStringLiteral("unchanged")), qPrintable(window_->errorBox()->text()));
+  window_->errorBox()->close();
+  auto after = window_->document()->summary();
+  QVERIFY(after.ok());
+  QCOMPARE(after->counts.size(), before->counts.size());
+  for (size_t i = 0; i < before->counts.size(); ++i) QCOMPARE(after->counts[i].rows, before->counts[i].rows);
 }
 
 void MainWindowTest::screenshot() {

@@ -1,0 +1,158 @@
+// mozzi-cli wheelchair: the five-DOF wheelchair model of thesis §7.2 in
+// steady turning and slalom, and the stiffness studies of §7.3/§7.4.
+// Options and output: docs/cli/tire.md.
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "app/cli/args.h"
+#include "app/cli/command.h"
+#include "core/stability/wheelchair_model.h"
+
+namespace mozzi::cli {
+namespace {
+
+namespace st = core::stability;
+using Json = nlohmann::json;
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+const char* kUsage =
+    "Usage: mozzi-cli wheelchair steady [--speed M/S] [--torque NM] [chair options] [--json]\n"
+    "       mozzi-cli wheelchair slalom [--speed M/S] [--torque NM] [--frequency HZ] [--duration S]\n"
+    "                                   [--out HISTORY.csv] [chair options] [--json]\n"
+    "       mozzi-cli wheelchair sensitivity --stiffness cornering|aligning [--speed] [--torque]\n"
+    "                                   [--slalom-torque NM] [--frequency HZ] [--duration S] [--json]\n"
+    "chair options: --mass KG --yaw-inertia KGM2 --rear-axle-behind M --caster-ahead M --half-track M\n"
+    "               --cornering-stiffness N/RAD --aligning-stiffness NM/RAD (per rear tyre)\n";
+
+int usage(std::ostream& err, const std::string& msg) {
+  err << "mozzi-cli wheelchair: " << msg << "\n" << kUsage;
+  return kExitUsage;
+}
+
+Json steadyJson(const st::SteadyTurn& s) {
+  return {{"u_m_s", s.u}, {"v_m_s", s.v}, {"yaw_rate_rad_s", s.r}, {"radius_m", s.radius},
+          {"slip_right_rad", s.slipRight}, {"slip_left_rad", s.slipLeft}, {"caster_right_rad", s.deltaRight},
+          {"caster_left_rad", s.deltaLeft}, {"common_torque_nm", s.commonTorque}};
+}
+
+Json slalomJson(const st::SlalomSummary& s) {
+  return {{"lateral_amplitude_m", s.lateralAmplitude}, {"slip_amplitude_right_rad", s.slipAmplitudeRight},
+          {"slip_amplitude_left_rad", s.slipAmplitudeLeft}, {"slip_mean_right_rad", s.slipMeanRight},
+          {"slip_mean_left_rad", s.slipMeanLeft}};
+}
+
+int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const OptionSpec spec{{"--speed", "--torque", "--frequency", "--duration", "--out", "--stiffness", "--slalom-torque",
+                         "--mass", "--yaw-inertia", "--rear-axle-behind", "--caster-ahead", "--half-track",
+                         "--cornering-stiffness", "--aligning-stiffness"},
+                        {"--json"}};
+  const auto a = ParsedArgs::parse(args, spec);
+  if (!a) return usage(err, a.error().describe());
+  if (a->positional().size() != 1) return usage(err, "expected one subcommand");
+  st::WheelchairParameters p;
+  double speed = 4.0 / 3.6, torque = 6.0, frequency = 0.25, duration = 20.0, slalomTorque = 10.0;
+  const std::vector<std::pair<const char*, double*>> numbers = {
+      {"--speed", &speed}, {"--torque", &torque}, {"--frequency", &frequency}, {"--duration", &duration},
+      {"--slalom-torque", &slalomTorque}, {"--mass", &p.mass}, {"--yaw-inertia", &p.yawInertia},
+      {"--rear-axle-behind", &p.rearAxleBehindCoM}, {"--caster-ahead", &p.casterAheadOfCoM},
+      {"--half-track", &p.rearHalfTrack}, {"--cornering-stiffness", &p.rearCorneringStiffness},
+      {"--aligning-stiffness", &p.rearAligningStiffness}};
+  for (const auto& [name, target] : numbers) {
+    auto v = a->number(name);
+    if (!v) return usage(err, v.error().describe());
+    if (*v) *target = **v;
+  }
+  const std::string& sub = a->positional()[0];
+  const bool json = a->flag("--json");
+  if (sub == "steady") {
+    auto s = st::steadyTurn(p, speed, torque);
+    if (!s) {
+      err << "mozzi-cli wheelchair steady: " << s.error().describe() << "\n";
+      return kExitFailure;
+    }
+    if (json) {
+      out << steadyJson(*s).dump(2) << "\n";
+    } else {
+      char line[240];
+      std::snprintf(line, sizeof line,
+                    "steady turn at u = %.3f m/s, T_R - T_L = %.2f Nm: radius %.3f m, yaw rate %.4f rad/s\n"
+                    "  rear slip angles: right %.4f deg, left %.4f deg; caster angles: right %.2f deg, left %.2f deg\n",
+                    s->u, torque, s->radius, s->r, s->slipRight / kDeg, s->slipLeft / kDeg, s->deltaRight / kDeg,
+                    s->deltaLeft / kDeg);
+      out << line;
+    }
+    return kExitOk;
+  }
+  if (sub == "slalom") {
+    if (!a->value("--torque")) torque = slalomTorque;  // slalom default 10 Nm
+    auto h = st::simulate(p, st::slalomManoeuvre(speed, torque, frequency, duration));
+    if (!h) {
+      err << "mozzi-cli wheelchair slalom: " << h.error().describe() << "\n";
+      return kExitFailure;
+    }
+    auto s = st::summariseSlalom(*h, std::min(duration * 0.5, 2.0 / frequency));
+    if (!s) {
+      err << "mozzi-cli wheelchair slalom: " << s.error().describe() << "\n";
+      return kExitFailure;
+    }
+    if (auto file = a->value("--out")) {
+      std::ofstream f(*file);
+      if (!f) {
+        err << "mozzi-cli wheelchair slalom: cannot write " << *file << "\n";
+        return kExitFailure;
+      }
+      f << "t_s,x_m,y_m,psi_rad,u_m_s,v_m_s,r_rad_s,caster_right_rad,caster_left_rad,slip_right_rad,slip_left_rad,"
+           "torque_right_nm,torque_left_nm\n";
+      for (const auto& x : *h)
+        f << x.t << "," << x.x << "," << x.y << "," << x.psi << "," << x.u << "," << x.v << "," << x.r << ","
+          << x.deltaRight << "," << x.deltaLeft << "," << x.slipRight << "," << x.slipLeft << "," << x.torqueRight
+          << "," << x.torqueLeft << "\n";
+    }
+    if (json) {
+      out << slalomJson(*s).dump(2) << "\n";
+    } else {
+      char line[240];
+      std::snprintf(line, sizeof line,
+                    "slalom at u = %.3f m/s, T_R - T_L = %.2f cos(2 pi %.2f t) Nm: lateral amplitude %.3f m\n"
+                    "  rear slip amplitude: right %.4f deg, left %.4f deg\n",
+                    speed, torque, frequency, s->lateralAmplitude, s->slipAmplitudeRight / kDeg,
+                    s->slipAmplitudeLeft / kDeg);
+      out << line;
+    }
+    return kExitOk;
+  }
+  if (sub == "sensitivity") {
+    const auto which = a->value("--stiffness");
+    if (!which || (*which != "cornering" && *which != "aligning"))
+      return usage(err, "sensitivity needs --stiffness cornering|aligning");
+    auto cases = st::stiffnessSensitivity(
+        p, *which == "cornering" ? st::WheelchairStiffness::Cornering : st::WheelchairStiffness::Aligning,
+        {0.5, 1.0, 2.0}, speed, torque, slalomTorque, frequency, duration);
+    if (!cases) {
+      err << "mozzi-cli wheelchair sensitivity: " << cases.error().describe() << "\n";
+      return kExitFailure;
+    }
+    Json j = Json::array();
+    if (!json) out << *which << " stiffness x   radius [m]  slip R [deg]  slip L [deg]  slalom y [m]  slalom slip R [deg]\n";
+    for (const auto& c : *cases) {
+      j.push_back({{"factor", c.factor}, {"steady", steadyJson(c.steady)}, {"slalom", slalomJson(c.slalom)}});
+      char line[200];
+      std::snprintf(line, sizeof line, "  %4.1f           %8.3f     %8.4f      %8.4f      %8.4f      %8.4f\n", c.factor,
+                    c.steady.radius, c.steady.slipRight / kDeg, c.steady.slipLeft / kDeg, c.slalom.lateralAmplitude,
+                    c.slalom.slipAmplitudeRight / kDeg);
+      if (!json) out << line;
+    }
+    if (json) out << j.dump(2) << "\n";
+    return kExitOk;
+  }
+  return usage(err, "unknown subcommand '" + sub + "'");
+}
+
+const CommandRegistrar kRegistrar({"wheelchair", "steady|slalom|sensitivity [options] [--json]",
+                                   "Wheelchair manoeuvres with measured tyre stiffnesses (thesis §7.2-§7.4)",
+                                   wheelchairCommand});
+
+}  // namespace
+}  // namespace mozzi::cli
