@@ -97,7 +97,17 @@ class Usb1608FsPlusDevice final : public Device {
     state_ = DeviceState::Closed;
   }
 
+  // A session that ended by itself (completed, unplugged, ...) leaves its
+  // thread to be joined; after that the device is configured again.
+  void reapEndedSession() {
+    if (state_ == DeviceState::Running && ended_ && worker_.joinable()) {
+      worker_.join();
+      state_ = DeviceState::Configured;
+    }
+  }
+
   core::Result<AcquisitionConfig> configure(const AcquisitionConfig& requested) override {
+    reapEndedSession();
     if (!transport_) return core::makeError(core::ErrorCode::InvalidArgument, "open the device first", descriptor_.label());
     if (state_ == DeviceState::Running) return core::makeError(core::ErrorCode::InvalidArgument, "stop the acquisition first", descriptor_.label());
     auto applied = validateConfig(caps_, requested);
@@ -115,8 +125,14 @@ class Usb1608FsPlusDevice final : public Device {
   }
 
   core::Result<void> start(StreamSink sink) override {
+    reapEndedSession();
     if (state_ != DeviceState::Configured) return core::makeError(core::ErrorCode::InvalidArgument, "configure the device before starting", descriptor_.label());
     sink_ = std::move(sink);
+    {
+      std::lock_guard<std::mutex> l(queueMutex_);
+      queue_.clear();
+    }
+    ended_ = false;
     auto ok = startScan(config_.scanCount);
     if (!ok) return ok;
     StreamHeader h;
@@ -253,6 +269,7 @@ class Usb1608FsPlusDevice final : public Device {
     for (const auto& p : rest)
       if (!full && !p.stopRequest) full = absorb(p);
     emitBlocks(true);
+    ended_ = true;
     sink_(StreamEvent(StreamEnd{reason, delivered_, message}));
   }
 
@@ -347,6 +364,7 @@ class Usb1608FsPlusDevice final : public Device {
   std::condition_variable queueCv_;
   std::deque<Packet> queue_;
   std::atomic<bool> stopRequested_{false};
+  std::atomic<bool> ended_{false};
   std::unique_ptr<ScanAssembler> assembler_;
   std::vector<std::int32_t> pending_;
   std::int64_t pendingScans_ = 0;

@@ -70,7 +70,17 @@ class SimDevice final : public SimulatedRig {
     state_ = DeviceState::Closed;
   }
 
+  // A session that ended by itself (completed, unplugged, ...) leaves its
+  // thread to be joined; after that the device is configured again.
+  void reapEndedSession() {
+    if (state_ == DeviceState::Running && ended_ && worker_.joinable()) {
+      worker_.join();
+      state_ = DeviceState::Configured;
+    }
+  }
+
   core::Result<AcquisitionConfig> configure(const AcquisitionConfig& requested) override {
+    reapEndedSession();
     if (state_ == DeviceState::Closed) return core::makeError(core::ErrorCode::InvalidArgument, "open the device first", descriptor_.label());
     if (state_ == DeviceState::Running) return core::makeError(core::ErrorCode::InvalidArgument, "stop the acquisition first", descriptor_.label());
     auto applied = validateConfig(caps_, requested);
@@ -88,9 +98,11 @@ class SimDevice final : public SimulatedRig {
   }
 
   core::Result<void> start(StreamSink sink) override {
+    reapEndedSession();
     if (state_ != DeviceState::Configured) return core::makeError(core::ErrorCode::InvalidArgument, "configure the device before starting", descriptor_.label());
     sink_ = std::move(sink);
     stopRequested_ = false;
+    ended_ = false;
     {
       std::lock_guard<std::mutex> l(countersMutex_);
       counters_ = FaultCounters{};
@@ -134,7 +146,10 @@ class SimDevice final : public SimulatedRig {
     std::int64_t next = 0;       // sample index of the simulated clock
     std::int64_t delivered = 0;  // scans handed on
     core::Matrix physical;
-    auto end = [&](EndReason r, const std::string& m) { sink_(StreamEvent(StreamEnd{r, delivered, m})); };
+    auto end = [&](EndReason r, const std::string& m) {
+      ended_ = true;
+      sink_(StreamEvent(StreamEnd{r, delivered, m}));
+    };
     for (;;) {
       if (stopRequested_) return end(EndReason::Stopped, "stopped by the user");
       if (config_.scanCount > 0 && next >= config_.scanCount)
@@ -202,6 +217,7 @@ class SimDevice final : public SimulatedRig {
   std::vector<ChannelChain> chains_;
   std::atomic<DeviceState> state_{DeviceState::Closed};
   std::atomic<bool> stopRequested_{false};
+  std::atomic<bool> ended_{false};
   StreamSink sink_;
   std::thread worker_;
   mutable std::mutex countersMutex_;

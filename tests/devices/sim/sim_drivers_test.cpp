@@ -181,6 +181,29 @@ TEST(SimulatedFaults, StopEndsAContinuousRealTimeSession) {
   EXPECT_EQ(dev->state(), DeviceState::Configured);
 }
 
+TEST(SimulatedFaults, ASessionThatEndedByItselfCanBeFollowedByAnother) {
+  auto cfg = hammerConfig(1000.0, 0.5);
+  auto dev = makeHammerStationDriver()->create(DeviceDescriptor{"sim-hammer", "", 0, 0, "", "sim:0"}).value();
+  ASSERT_TRUE(dev->open().ok());
+  ASSERT_TRUE(dev->configure(cfg).ok());
+  for (int run = 0; run < 2; ++run) {
+    StreamCollector col;
+    ASSERT_TRUE(dev->start(col.sink()).ok()) << "run " << run;
+    ASSERT_TRUE(col.waitForEnd(10s));
+    EXPECT_EQ(col.end()->reason, EndReason::Completed);
+    EXPECT_EQ(col.scans(), 500);
+  }
+  // A start while a session runs is refused.
+  cfg.scanCount = 0;
+  cfg.parameters["sim.realtime"] = true;
+  ASSERT_TRUE(dev->configure(cfg).ok());
+  StreamCollector col;
+  ASSERT_TRUE(dev->start(col.sink()).ok());
+  EXPECT_FALSE(dev->start(col.sink()).ok());
+  dev->stop();
+  EXPECT_EQ(col.end()->reason, EndReason::Stopped);
+}
+
 TEST(StiffnessRig, SineAmplitudeFallsLogarithmically) {
   EXPECT_DOUBLE_EQ(actuatorSineAmplitude(1000.0, 1.0), 1000.0);
   EXPECT_NEAR(actuatorSineAmplitude(1000.0, 45.0), 200.0, 1e-9);
