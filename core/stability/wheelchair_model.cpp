@@ -283,11 +283,13 @@ Result<std::vector<SensitivityCase>> stiffnessSensitivity(const WheelchairParame
     auto st = steadyTurn(q, speed, turnTorque);
     if (!st) return st.error();
     c.steady = *st;
+    if (!std::isfinite(f) || f <= 0.0 || f * duration < 3.0)
+      return makeError(ErrorCode::InvalidArgument,
+                       "the slalom needs at least 3 cycles (2 to settle, 1 to measure): raise the duration or frequency",
+                       kWhere);
     auto hist = simulate(q, slalomManoeuvre(speed, slalomTorque, f, duration));
     if (!hist) return hist.error();
-    // Summary over whole cycles after the first two (start transient).
-    const double from = duration - std::floor(f * duration - 2.0 + 1e-9) / f;
-    auto sum = summariseSlalom(*hist, std::max(from, 2.0 / f));
+    auto sum = summariseSlalom(*hist, 2.0 / f);  // after two cycles of start transient
     if (!sum) return sum.error();
     c.slalom = *sum;
     out.push_back(c);

@@ -1,0 +1,149 @@
+// mozzi-cli tire / wheelchair as a user runs them: CSV in, numbers out.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "app/cli/command.h"
+
+namespace mozzi::cli {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct CliRun {
+  int code;
+  std::string out;
+  std::string err;
+};
+
+CliRun run(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  const int code = runCli(args, out, err);
+  return {code, out.str(), err.str()};
+}
+
+std::string tempPath(const std::string& name) { return std::string(MOZZI_BINARY_DIR) + "/tire_cli_" + name; }
+
+// First-order tyre, sigma = 0.15 m, a = 0.07 m, V = 5 km/h, 10 cycles at
+// each §5.1 frequency, 200 Hz, no noise.
+std::string writeYawTest() {
+  const std::string path = tempPath("yaw.csv");
+  std::ofstream f(path);
+  f << std::setprecision(17) << "# synthetic harmonic yaw test\nfrequency_hz,time_s,yaw_rate_rad_s,lateral_force_n\n";
+  const double V = 5.0 / 3.6, a = 0.07, sigma = 0.15, psi0 = 1.5 * kPi / 180;
+  for (double fr : {0.42, 0.84, 1.26, 1.68, 2.10}) {
+    const double w = 2 * kPi * fr;
+    const std::complex<double> h = 19500.0 * std::complex<double>(V, -w * a) / std::complex<double>(V, w * sigma);
+    const int n = static_cast<int>(std::round(10 * 200.0 / fr));
+    for (int i = 0; i < n; ++i) {
+      const double t = i / 200.0;
+      f << fr << "," << t << "," << psi0 * w * std::cos(w * t) << ","
+        << std::abs(h) * psi0 * std::sin(w * t + std::arg(h)) << "\n";
+    }
+  }
+  return path;
+}
+
+TEST(TireCli, RelaxationRecoversSigmaFromACsvTest) {
+  const auto r = run({"tire", "relaxation", writeYawTest(), "--half-length", "0.07", "--json"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["mean_sigma_m"].get<double>(), 0.15, 1e-9);  // exact sines, 17-digit CSV
+  EXPECT_EQ(j["points_in_band"].get<int>(), 3);
+  EXPECT_EQ(j["points"].size(), 5u);
+}
+
+TEST(TireCli, RelaxationReportsBadInput) {
+  EXPECT_EQ(run({"tire", "relaxation", writeYawTest()}).code, kExitUsage);  // no --half-length
+  const auto missing = run({"tire", "relaxation", tempPath("absent.csv"), "--half-length", "0.07"});
+  EXPECT_EQ(missing.code, kExitFailure);
+  EXPECT_NE(missing.err.find("cannot open"), std::string::npos);
+  const auto still = run({"tire", "relaxation", writeYawTest(), "--half-length", "0.07", "--speed", "0"});
+  EXPECT_EQ(still.code, kExitFailure);
+  EXPECT_NE(still.err.find("speed"), std::string::npos);
+  const std::string bad = tempPath("bad.csv");
+  std::ofstream(bad) << "frequency_hz,time_s,yaw_rate_rad_s,lateral_force_n\n1,0,0.1,abc\n";
+  const auto parse = run({"tire", "relaxation", bad, "--half-length", "0.07"});
+  EXPECT_EQ(parse.code, kExitFailure);
+  EXPECT_NE(parse.err.find(":2"), std::string::npos) << parse.err;  // names the line
+}
+
+TEST(TireCli, PredictThesisTyreGivesTheEquation48Terms) {
+  const auto r = run({"tire", "predict", "--thesis-tyre", "120/70 R17", "--json"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["pressures"].size(), 7u);
+  const auto& p2 = j["pressures"][4];  // 2 bar
+  EXPECT_DOUBLE_EQ(p2["pressure_bar"].get<double>(), 2.0);
+  // eq. 48 by hand with Table 16/17 and the documented assumptions
+  // (C = 13 x 1500 N/rad, lambda = 1): m = 1 - 19500 tan(1.5 deg)/4500.
+  const double C = 19500, m = 1 - C * std::tan(1.5 * kPi / 180) / 4500.0;
+  const double sigma = 0.070 * m + C * (1 / 1906e3 + 1 / 463e3 + 1 / 1239e3 + 1 / 4690e3);
+  EXPECT_NEAR(p2["sigma_m"].get<double>(), sigma, 1e-12);
+}
+
+TEST(TireCli, RingPrintsModalStiffness) {
+  const auto r = run({"tire", "ring", "--modes", "0:100:0.02,1:80:0.03", "--mass", "4", "--radius", "0.3", "--json"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const double w0 = 2 * kPi * 100;
+  EXPECT_NEAR(j["modes"][0]["modal_stiffness_n_per_m"].get<double>(), 3.2 * w0 * w0, 1e-6);  // eq. 46, m_0 = 0.8 x 4
+  EXPECT_EQ(run({"tire", "ring", "--modes", "0:100", "--mass", "4", "--radius", "0.3"}).code, kExitUsage);
+}
+
+TEST(TireCli, SteadyGivesCorneringStiffnessAndRejectsNonMonotonicSweeps) {
+  const std::string path = tempPath("sweep.csv");
+  {
+    std::ofstream f(path);
+    f << std::setprecision(17) << "slip_deg,camber_deg,load_n,pressure_bar,force_n,torque_nm\n";
+    for (int i = 0; i <= 5; ++i) f << i << ",0,400,4," << 4000.0 * i * kPi / 180 << "," << -30.0 * i * kPi / 180 << "\n";
+    for (int i = 1; i <= 10; ++i) f << "0," << i << ",400,4," << 300.0 * i * kPi / 180 << "," << 2.0 * i * kPi / 180 << "\n";
+  }
+  const auto r = run({"tire", "steady", path, "--json"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  bool slip = false, camber = false;
+  for (const auto& s : j["sweeps"]) {
+    if (s["sweep"] == "slip") {
+      slip = true;
+      EXPECT_NEAR(s["cornering_stiffness_n_per_rad"].get<double>(), 4000.0, 1e-6);  // exact linear data
+      EXPECT_NEAR(s["aligning_torque_stiffness_nm_per_rad"].get<double>(), -30.0, 1e-8);
+    } else {
+      camber = true;
+      EXPECT_NEAR(s["camber_stiffness_n_per_rad"].get<double>(), 300.0, 1e-6);
+    }
+  }
+  EXPECT_TRUE(slip && camber);
+  const std::string bad = tempPath("sweep_bad.csv");
+  std::ofstream(bad) << "slip_deg,camber_deg,load_n,pressure_bar,force_n,torque_nm\n0,0,400,4,0,0\n2,0,400,4,10,1\n"
+                        "1,0,400,4,5,1\n3,0,400,4,15,1\n4,0,400,4,20,1\n";
+  const auto nm = run({"tire", "steady", bad});
+  EXPECT_EQ(nm.code, kExitFailure);
+  EXPECT_NE(nm.err.find("monotonic"), std::string::npos) << nm.err;
+}
+
+TEST(WheelchairCli, SteadyAndSensitivity) {
+  const auto r = run({"wheelchair", "steady", "--json"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["radius_m"].get<double>(), 0.5);
+  const auto s = run({"wheelchair", "sensitivity", "--stiffness", "aligning", "--json", "--duration", "12"});
+  ASSERT_EQ(s.code, kExitOk) << s.err;
+  const auto k = nlohmann::json::parse(s.out);
+  ASSERT_EQ(k.size(), 3u);
+  EXPECT_LT(k[0]["steady"]["radius_m"].get<double>(), k[2]["steady"]["radius_m"].get<double>());  // §7.4
+  EXPECT_EQ(run({"wheelchair", "steady", "--speed", "0"}).code, kExitFailure);
+  EXPECT_EQ(run({"wheelchair", "sensitivity"}).code, kExitUsage);
+  const auto shortRun = run({"wheelchair", "sensitivity", "--stiffness", "cornering", "--duration", "8"});
+  EXPECT_EQ(shortRun.code, kExitFailure);  // 2 cycles at 0.25 Hz
+  EXPECT_NE(shortRun.err.find("3 cycles"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mozzi::cli
