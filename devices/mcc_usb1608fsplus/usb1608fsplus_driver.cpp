@@ -93,6 +93,7 @@ class Usb1608FsPlusDevice final : public Device {
 
   void close() override {
     stop();
+    if (transport_) transport_->setDisconnectCallback(nullptr);
     transport_.reset();
     state_ = DeviceState::Closed;
   }
@@ -153,6 +154,7 @@ class Usb1608FsPlusDevice final : public Device {
     pendingScans_ = 0;
     stopRequested_ = false;
     state_ = DeviceState::Running;
+    transport_->setDisconnectCallback([this] { push(Packet{usb::TransferStatus::NoDevice, {}, false}); });
     worker_ = std::thread([this] { run(); });
     return {};
   }

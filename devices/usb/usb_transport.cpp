@@ -44,6 +44,12 @@ std::string readSerial(libusb_device_handle* h, const libusb_device_descriptor& 
   return n > 0 ? std::string(reinterpret_cast<char*>(buf), static_cast<std::size_t>(n)) : std::string();
 }
 
+int hotplugCallback(libusb_context*, libusb_device* device, libusb_hotplug_event event, void* self) {
+  if (event == LIBUSB_HOTPLUG_EVENT_DEVICE_LEFT)
+    static_cast<UsbTransport*>(self)->deviceLeft(libusb_get_bus_number(device), libusb_get_device_address(device));
+  return 0;  // stay registered
+}
+
 }  // namespace
 
 core::Error UsbTransport::usbError(int code, const std::string& what) const { return libusbError(code, what, info_.busPath()); }
@@ -114,11 +120,33 @@ core::Result<std::unique_ptr<UsbTransport>> UsbTransport::open(std::uint16_t ven
   libusb_set_auto_detach_kernel_driver(t->handle_, 1);
   r = libusb_claim_interface(t->handle_, 0);
   if (r != 0) return t->usbError(r, "interface 0 could not be claimed");
+  if (libusb_has_capability(LIBUSB_CAP_HAS_HOTPLUG)) {
+    // Unplug is also seen by the transfers (status NO_DEVICE); the hotplug
+    // callback covers the moments when none is in flight.
+    const int h = libusb_hotplug_register_callback(t->context_, LIBUSB_HOTPLUG_EVENT_DEVICE_LEFT, LIBUSB_HOTPLUG_NO_FLAGS, vendorId,
+                                                   productId, LIBUSB_HOTPLUG_MATCH_ANY, &hotplugCallback, t.get(),
+                                                   &t->hotplugHandle_);
+    t->hotplugRegistered_ = h == LIBUSB_SUCCESS;
+  }
   t->eventThread_ = std::thread([p = t.get()] { p->eventLoop(); });
   return t;
 }
 
+void UsbTransport::deviceLeft(std::uint8_t bus, std::uint8_t address) {
+  if (bus != info_.bus || address != info_.address) return;
+  disconnected_ = true;
+  std::lock_guard<std::mutex> l(hotplugMutex_);
+  if (onDisconnect_) onDisconnect_();
+}
+
+void UsbTransport::setDisconnectCallback(std::function<void()> callback) {
+  std::lock_guard<std::mutex> l(hotplugMutex_);
+  onDisconnect_ = std::move(callback);
+}
+
 UsbTransport::~UsbTransport() {
+  setDisconnectCallback(nullptr);
+  if (hotplugRegistered_) libusb_hotplug_deregister_callback(context_, hotplugHandle_);
   stopBulkIn();
   if (handle_) {
     libusb_release_interface(handle_, 0);

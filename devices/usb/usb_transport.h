@@ -76,6 +76,11 @@ class UsbTransport {
   // Cancels the ring and waits until every transfer has come back; idempotent.
   void stopBulkIn();
   bool disconnected() const { return disconnected_.load(); }
+  // Called on the event thread when libusb's hotplug monitor reports that this
+  // device left (where the platform supports hotplug); set before streaming.
+  void setDisconnectCallback(std::function<void()> callback);
+  // Entry point of libusb's hotplug callback (event thread): a device left.
+  void deviceLeft(std::uint8_t bus, std::uint8_t address);
   std::int64_t transfersCompleted() const { return completed_.load(); }
 
  private:
@@ -100,6 +105,10 @@ class UsbTransport {
   int inFlight_ = 0;
   bool resubmit_ = false;
   BulkCallback callback_;
+  std::mutex hotplugMutex_;
+  std::function<void()> onDisconnect_;
+  int hotplugHandle_ = 0;
+  bool hotplugRegistered_ = false;
 };
 
 }  // namespace mozzi::devices::usb

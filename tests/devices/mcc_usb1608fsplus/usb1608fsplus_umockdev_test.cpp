@@ -514,6 +514,23 @@ TEST_F(Usb1608Umockdev, UnplugMidScanEndsCleanlyWithTheDataSoFar) {
   for (std::int64_t k = 0; k < received; ++k) ASSERT_EQ(raw[static_cast<std::size_t>(k) * 8 + 3], modelCode(k, 3)) << k;
 }
 
+TEST_F(Usb1608Umockdev, HotplugRemovalEndsAnIdleSession) {
+  // No transfer fails (the pacer is silent and the timeout long): only the
+  // kernel's "remove" uevent, seen by libusb's hotplug monitor, ends it.
+  Device& dev = openDevice();
+  model_.silent = true;
+  auto cfg = config(1000.0, 1, 0);
+  cfg.parameters["usb.transfer_timeout_ms"] = std::int64_t{60000};
+  ASSERT_TRUE(dev.configure(cfg).ok());
+  StreamCollector col;
+  ASSERT_TRUE(dev.start(col.sink()).ok());
+  umockdev_testbed_uevent(testbed_, sysPath_, "remove");
+  umockdev_testbed_remove_device(testbed_, sysPath_);
+  ASSERT_TRUE(col.waitForEnd(10s)) << "the hotplug callback must end the session";
+  dev.stop();
+  EXPECT_EQ(col.end()->reason, EndReason::Disconnected);
+}
+
 TEST_F(Usb1608Umockdev, TransferTimeoutEndsTheSession) {
   Device& dev = openDevice();
   model_.silent = true;
