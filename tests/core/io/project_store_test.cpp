@@ -116,5 +116,51 @@ TEST_F(ProjectStoreTest, SaveAsCopiesEverythingAndKeepsTheOriginalOpen) {
   EXPECT_FALSE(fs::exists(file("copy.mozzi.part")));
 }
 
+TEST_F(ProjectStoreTest, SchemaVersionsAreEnforced) {
+  {
+    auto store = ProjectStore::create(file("v.mozzi"), "0.1.0");
+    ASSERT_TRUE(store.ok());
+  }
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(file("v.mozzi").c_str(), &db), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(db, "PRAGMA user_version = 99", nullptr, nullptr, nullptr), SQLITE_OK);
+  sqlite3_close(db);
+  auto newer = ProjectStore::open(file("v.mozzi"));
+  ASSERT_FALSE(newer.ok());
+  EXPECT_EQ(newer.error().code, ErrorCode::Unsupported);
+  EXPECT_NE(newer.error().message.find("schema 99"), std::string::npos) << newer.error().describe();
+
+  // A Mozzi file whose creation never committed (user_version 0) is refused,
+  // not silently re-created.
+  ASSERT_EQ(sqlite3_open(file("v.mozzi").c_str(), &db), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(db, "PRAGMA user_version = 0", nullptr, nullptr, nullptr), SQLITE_OK);
+  sqlite3_close(db);
+  auto unfinished = ProjectStore::open(file("v.mozzi"));
+  ASSERT_FALSE(unfinished.ok());
+  EXPECT_NE(unfinished.error().message.find("no schema"), std::string::npos) << unfinished.error().describe();
+}
+
+TEST_F(ProjectStoreTest, EveryTableOfTheSchemaIsCounted) {
+  auto store = ProjectStore::create(file("t.mozzi"), "0.1.0");
+  ASSERT_TRUE(store.ok());
+  auto summary = store->summary();
+  ASSERT_TRUE(summary.ok());
+  // Schema 1 defines 26 tables; the summary counts all but `meta`.
+  sqlite3_stmt* stmt = nullptr;
+  ASSERT_EQ(sqlite3_prepare_v2(store->connection(),
+                               "SELECT count(*) FROM sqlite_schema WHERE type = 'table' AND name <> 'meta'", -1, &stmt,
+                               nullptr),
+            SQLITE_OK);
+  ASSERT_EQ(sqlite3_step(stmt), SQLITE_ROW);
+  EXPECT_EQ(sqlite3_column_int(stmt, 0), 25);
+  sqlite3_finalize(stmt);
+  EXPECT_EQ(summary->counts.size(), 25u);
+  // Foreign keys are enforced on every connection the store opens.
+  ASSERT_EQ(sqlite3_prepare_v2(store->connection(), "PRAGMA foreign_keys", -1, &stmt, nullptr), SQLITE_OK);
+  ASSERT_EQ(sqlite3_step(stmt), SQLITE_ROW);
+  EXPECT_EQ(sqlite3_column_int(stmt, 0), 1);
+  sqlite3_finalize(stmt);
+}
+
 }  // namespace
 }  // namespace mozzi::core::io
