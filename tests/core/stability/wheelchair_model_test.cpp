@@ -93,6 +93,13 @@ TEST(WheelchairSteadyTurn, CorneringStiffnessStudyOfSection73) {
   EXPECT_LT((*cases)[1].slalom.lateralAmplitude, (*cases)[2].slalom.lateralAmplitude);
   EXPECT_GT((*cases)[0].slalom.slipAmplitudeRight, (*cases)[1].slalom.slipAmplitudeRight);
   EXPECT_GT((*cases)[1].slalom.slipAmplitudeRight, (*cases)[2].slalom.slipAmplitudeRight);
+  // "the right wheel shows a positive mean value, the left wheel shows a
+  // negative mean value": alpha_i = (v - b r)/(u -+ r w) divides the same
+  // numerator by the faster wheel speed on the outside of each half-cycle.
+  for (const auto& c : *cases) {
+    EXPECT_GT(c.slalom.slipMeanRight, 0.0);
+    EXPECT_LT(c.slalom.slipMeanLeft, 0.0);
+  }
 }
 
 TEST(WheelchairSteadyTurn, AligningStiffnessStudyOfSection74) {
