@@ -4,6 +4,8 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include "app/cli/args.h"
 #include "app/cli/command.h"
@@ -110,35 +112,52 @@ std::string textLine(const uff::Dataset& d) {
   return s;
 }
 
+// Streams the file: only the summary of each dataset is kept, so a file
+// larger than memory can be listed.
 int info(const std::string& path, bool json, std::ostream& out, std::ostream& err) {
-  auto file = uff::readFile(path);
-  if (!file) {
-    err << "mozzi-cli uff info: " << file.error().describe() << "\n";
+  auto reader = uff::DatasetReader::open(path);
+  if (!reader) {
+    err << "mozzi-cli uff info: " << reader.error().describe() << "\n";
     return kExitFailure;
   }
   std::map<int, int> counts;
-  for (const auto& d : file->datasets) ++counts[d.type];
+  nlohmann::json list = nlohmann::json::array();
+  std::vector<std::string> lines;
+  for (;;) {
+    auto d = reader->next();
+    if (!d) {
+      err << "mozzi-cli uff info: " << d.error().describe() << "\n";
+      return kExitFailure;
+    }
+    if (!d->has_value()) break;
+    ++counts[(*d)->type];
+    if (json) {
+      list.push_back(datasetJson(**d));
+    } else {
+      lines.push_back(textLine(**d));
+    }
+  }
+  const auto& warnings = reader->warnings();
   if (json) {
     nlohmann::json j;
     j["file"] = path;
-    j["datasets"] = nlohmann::json::array();
-    for (const auto& d : file->datasets) j["datasets"].push_back(datasetJson(d));
+    j["datasets"] = std::move(list);
     j["counts"] = nlohmann::json::object();
     for (const auto& [type, n] : counts) j["counts"][std::to_string(type)] = n;
     j["warnings"] = nlohmann::json::array();
-    for (const auto& w : file->warnings) {
+    for (const auto& w : warnings) {
       j["warnings"].push_back({{"type", w.datasetType}, {"line", w.line}, {"message", w.message}});
     }
     // Vendor text may be Latin-1: invalid UTF-8 is replaced, not fatal.
     out << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     return kExitOk;
   }
-  out << path << ": " << file->datasets.size() << " datasets\n";
+  out << path << ": " << lines.size() << " datasets\n";
   for (const auto& [type, n] : counts) out << "  dataset " << type << ": " << n << "\n";
-  for (const auto& d : file->datasets) out << textLine(d) << "\n";
-  if (!file->warnings.empty()) {
-    out << file->warnings.size() << " warnings\n";
-    for (const auto& w : file->warnings) out << "  " << w.describe() << "\n";
+  for (const auto& l : lines) out << l << "\n";
+  if (!warnings.empty()) {
+    out << warnings.size() << " warnings\n";
+    for (const auto& w : warnings) out << "  " << w.describe() << "\n";
   }
   return kExitOk;
 }

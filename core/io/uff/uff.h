@@ -305,6 +305,8 @@ struct WriteOptions {
 // format: E13.5 for single, E20.12/D25.16/D25.17 for double precision fields.
 // A dataset that cannot be written (SkippedDataset, inconsistent sizes, NaN in
 // a field the format cannot hold) is an error naming the dataset.
+// writeFile and writeBytes leave SkippedDataset entries out (their content
+// is not kept when reading) and write everything else in order.
 Result<void> writeDataset(std::ostream& out, const Dataset& dataset, const WriteOptions& options = {});
 Result<void> writeFile(const std::string& path, const UffFile& file, const WriteOptions& options = {});
 Result<std::string> writeBytes(const UffFile& file, const WriteOptions& options = {});
