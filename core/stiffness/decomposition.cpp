@@ -66,8 +66,8 @@ Result<Decomposition> decomposeStiffness(const DecompositionInput& in) {
   out.torsStiffness = in.torsArm / b;
   if (!(out.bendStiffness > 0.0) || !(out.torsStiffness > 0.0)) {
     return makeError(ErrorCode::NumericalFailure,
-                     "non-physical decomposition (k_bend = " + fmt(out.bendStiffness) + ", k_tors = " +
-                         fmt(out.torsStiffness) +
+                     "non-physical decomposition (k_bend = " + fmt(out.bendStiffness) +
+                         ", k_tors = " + fmt(out.torsStiffness) +
                          " Nm/rad): the static axis does not lie between the bending and torsion axes with these "
                          "arms and directions",
                      where);
@@ -125,16 +125,15 @@ Result<Decomposition> decomposeForkStiffness(const ForkDecompositionInput& in) {
   const double rhs = in.twistArm * in.twistArm / in.twistStiffness;
   Decomposition out;
   out.bendStiffness = (in.bendArm * in.bendArm + in.torsArm * in.bendArm * t) / rhs;  // from eq. 35 + 36
-  out.torsStiffness = out.bendStiffness * in.torsArm / (in.bendArm * t);            // eq. 36
+  out.torsStiffness = out.bendStiffness * in.torsArm / (in.bendArm * t);              // eq. 36
   out.bendCompliancePerArm = in.bendArm / out.bendStiffness;
   out.torsCompliancePerArm = in.torsArm / out.torsStiffness;
   out.determinant = in.bendArm * std::cos(in.alpha) + in.torsArm * std::sin(in.alpha);
   const double back = in.bendArm * in.bendArm / out.bendStiffness + in.torsArm * in.torsArm / out.torsStiffness;
   out.balanceResidual = (rhs - back) / rhs;
   const double rot = in.twistArm / in.twistStiffness;
-  out.rotationResidual = (out.bendCompliancePerArm * std::cos(in.alpha) +
-                          out.torsCompliancePerArm * std::sin(in.alpha) - rot) /
-                         rot;
+  out.rotationResidual =
+      (out.bendCompliancePerArm * std::cos(in.alpha) + out.torsCompliancePerArm * std::sin(in.alpha) - rot) / rot;
   return out;
 }
 

@@ -32,8 +32,8 @@ struct DecompositionInput {
 };
 
 struct Decomposition {
-  double bendStiffness = 0.0;  // k_bend [Nm/rad]
-  double torsStiffness = 0.0;  // k_tors [Nm/rad]
+  double bendStiffness = 0.0;         // k_bend [Nm/rad]
+  double torsStiffness = 0.0;         // k_tors [Nm/rad]
   double bendCompliancePerArm = 0.0;  // A = a_bend / k_bend [rad/(N m)... per unit force: rad/N]
   double torsCompliancePerArm = 0.0;  // B
   // eq. 24: a_tw^2/k_tw - (a_bend^2/k_bend + a_tors^2/k_tors), relative to a_tw^2/k_tw (0 by construction)

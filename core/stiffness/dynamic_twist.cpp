@@ -54,8 +54,7 @@ Result<PhasorAxis> phasorTwistAxis(const std::vector<Vector2>& points, const Com
   const double noise = 3.0 * options.plane.sigmaFloor;
   for (Eigen::Index i = 0; i < n; ++i) {
     if (std::abs(phasors(i)) <= noise) continue;
-    out.maxPhaseDeviation =
-        std::max(out.maxPhaseDeviation, distanceFromZeroOrPi(std::arg(phasors(i)) - phiRef));
+    out.maxPhaseDeviation = std::max(out.maxPhaseDeviation, distanceFromZeroOrPi(std::arg(phasors(i)) - phiRef));
   }
   if (out.maxPhaseDeviation <= options.phaseTolerance) {
     // Eq. 9 at the instant omega t = -phi_ref: y_i = |Y_i| cos(phi_i - phi_ref),
@@ -182,10 +181,10 @@ Result<ModalAxis> modalTwistAxis(const FrfMatrix& frf, const std::vector<int>& r
                      "modal twist axis");
   }
   if (responses.size() != points.size()) {
-    return makeError(ErrorCode::InvalidArgument,
-                     std::to_string(responses.size()) + " FRF columns but " + std::to_string(points.size()) +
-                         " sensor points",
-                     "modal twist axis");
+    return makeError(
+        ErrorCode::InvalidArgument,
+        std::to_string(responses.size()) + " FRF columns but " + std::to_string(points.size()) + " sensor points",
+        "modal twist axis");
   }
   const auto nf = frf.lineCount();
   if (nf < 1 || !std::isfinite(frequencyHz) || frequencyHz <= 0.0 || frequencyHz < frf.frequencyHz(0) ||
@@ -219,7 +218,8 @@ Result<ModalAxis> modalTwistAxis(const FrfMatrix& frf, const std::vector<int>& r
   PhasorAxisOptions o = options;
   o.plane.sigmaFloor = 0.0;
   auto axis = phasorTwistAxis(points, out.receptance, loadPoint, o);
-  if (!axis) return makeError(axis.error().code, axis.error().message, "modal twist axis at " + fmt(frequencyHz) + " Hz");
+  if (!axis)
+    return makeError(axis.error().code, axis.error().message, "modal twist axis at " + fmt(frequencyHz) + " Hz");
   out.axis = std::move(*axis);
   return out;
 }

@@ -32,11 +32,11 @@ struct PhasorAxisOptions {
 
 struct PhasorAxis {
   PhasorAxisCase method = PhasorAxisCase::InPhase;
-  TwistAxis axis;                       // in-phase axis, or the averaged one
-  double maxPhaseDeviation = 0.0;       // largest distance of a relative phase from {0, pi} [rad]
-  std::vector<PlateAxis> instantAxes;   // three-instant case: the axis at each sensor's maximum
-  double betaSpread = 0.0;              // three-instant case: max |beta_j - beta_mean| [rad]
-  double offsetSpread = 0.0;            // three-instant case: max distance of the instant feet from the mean [m]
+  TwistAxis axis;                      // in-phase axis, or the averaged one
+  double maxPhaseDeviation = 0.0;      // largest distance of a relative phase from {0, pi} [rad]
+  std::vector<PlateAxis> instantAxes;  // three-instant case: the axis at each sensor's maximum
+  double betaSpread = 0.0;             // three-instant case: max |beta_j - beta_mean| [rad]
+  double offsetSpread = 0.0;           // three-instant case: max distance of the instant feet from the mean [m]
   bool lowConfidence = false;
   std::string note;
 };
@@ -52,8 +52,8 @@ Result<PhasorAxis> phasorTwistAxis(const std::vector<Vector2>& points, const Com
 // phases [rad] from the sine fit; optionally the load-cell amplitude [N] and phase.
 struct SweepPoint {
   double frequencyHz = 0.0;
-  Vector amplitude;  // per laser [m]
-  Vector phase;      // per laser [rad]
+  Vector amplitude;             // per laser [m]
+  Vector phase;                 // per laser [rad]
   double forceAmplitude = 0.0;  // [N]; 0 when unknown
   double forcePhase = 0.0;      // [rad]
 };

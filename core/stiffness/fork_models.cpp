@@ -15,14 +15,16 @@ std::string fmt(double v) {
   return s.str();
 }
 
-bool positiveFinite(double v) { return std::isfinite(v) && v > 0.0; }
+bool positiveFinite(double v) {
+  return std::isfinite(v) && v > 0.0;
+}
 
 Result<void> checkParameters(const BicycleForkParameters& p) {
   const struct {
     const char* name;
     double v;
-  } items[] = {{"fork mass", p.forkMass},     {"wheel mass", p.wheelMass},   {"wheel radius", p.wheelRadius},
-               {"hub mass", p.hubMass},       {"hub radius", p.hubRadius},   {"hub length", p.hubLength},
+  } items[] = {{"fork mass", p.forkMass},       {"wheel mass", p.wheelMass},   {"wheel radius", p.wheelRadius},
+               {"hub mass", p.hubMass},         {"hub radius", p.hubRadius},   {"hub length", p.hubLength},
                {"tip distance", p.tipDistance}, {"max bend arm", p.maxBendArm}};
   for (const auto& it : items) {
     if (!positiveFinite(it.v)) {
@@ -162,10 +164,10 @@ Result<BicycleBending> bicycleForkBending(const BicycleForkParameters& p, double
   }
   const double h = std::sqrt(num / den);
   if (h > p.maxBendArm) {
-    return makeError(ErrorCode::NumericalFailure,
-                     "the stiffness curves meet at h_W = " + fmt(h) + " m, beyond the fixing point (" +
-                         fmt(p.maxBendArm) + " m)",
-                     where);
+    return makeError(
+        ErrorCode::NumericalFailure,
+        "the stiffness curves meet at h_W = " + fmt(h) + " m, beyond the fixing point (" + fmt(p.maxBendArm) + " m)",
+        where);
   }
   BicycleBending out;
   out.bendArm = h;

@@ -39,14 +39,14 @@ Result<ForkLumpedModels> forkLumpedModels(const ForkLumpedInput& in);
 
 // ---- §6.4, §6.5: bicycle forks ------------------------------------------
 struct BicycleForkParameters {
-  double forkMass = 0.0;       // m_fork [kg]
-  double wheelMass = 0.0;      // m_F [kg]
-  double wheelRadius = 0.0;    // r_F [m]
-  double hubMass = 0.0;        // fake hub of the fork-alone test [kg]
-  double hubRadius = 0.0;      // [m]
-  double hubLength = 0.0;      // [m]
-  double tipDistance = 0.0;    // d: blade tips to the torsion (steering) axis [m]
-  double maxBendArm = 0.460;   // h_W range upper end: the lower jaw fixing point [m] (§6.5)
+  double forkMass = 0.0;      // m_fork [kg]
+  double wheelMass = 0.0;     // m_F [kg]
+  double wheelRadius = 0.0;   // r_F [m]
+  double hubMass = 0.0;       // fake hub of the fork-alone test [kg]
+  double hubRadius = 0.0;     // [m]
+  double hubLength = 0.0;     // [m]
+  double tipDistance = 0.0;   // d: blade tips to the torsion (steering) axis [m]
+  double maxBendArm = 0.460;  // h_W range upper end: the lower jaw fixing point [m] (§6.5)
 };
 
 // Inertias about the torsion (steering) axis:
@@ -73,21 +73,21 @@ Result<double> seriesStiffness(double k1, double k2);
 Result<double> modalDamping(double stiffness, double inertia, double zeta);
 
 struct BicycleTorsion {
-  double inertiaWithWheel = 0.0, inertiaAlone = 0.0;   // [kg m^2]
-  double stiffnessWithWheel = 0.0;                     // [Nm/rad]
-  double stiffnessAlone = 0.0;                         // [Nm/rad] (series of the modes when two are given)
+  double inertiaWithWheel = 0.0, inertiaAlone = 0.0;  // [kg m^2]
+  double stiffnessWithWheel = 0.0;                    // [Nm/rad]
+  double stiffnessAlone = 0.0;                        // [Nm/rad] (series of the modes when two are given)
   double stiffnessAloneMode1 = 0.0, stiffnessAloneMode2 = 0.0;
-  double damping = 0.0;                                // from the with-wheel data [Nms/rad]
+  double damping = 0.0;  // from the with-wheel data [Nms/rad]
 };
 // fAlone2Hz <= 0 when the fork alone shows a single torsion mode.
 Result<BicycleTorsion> bicycleForkTorsion(const BicycleForkParameters& p, double fWithWheelHz, double etaWithWheel,
                                           double fAloneHz, double fAlone2Hz = 0.0);
 
 struct BicycleBending {
-  double bendArm = 0.0;      // h_W where the two stiffness curves meet [m]
-  double stiffness = 0.0;    // k_beta at h_W [Nm/rad]
+  double bendArm = 0.0;    // h_W where the two stiffness curves meet [m]
+  double stiffness = 0.0;  // k_beta at h_W [Nm/rad]
   double inertiaWithWheel = 0.0;
-  double damping = 0.0;      // from the with-wheel lateral mode [Nms/rad]
+  double damping = 0.0;        // from the with-wheel lateral mode [Nms/rad]
   double crossingAngle = 0.0;  // relative slope difference of the curves at h_W (small: ill-conditioned)
 };
 // Errors when the curves do not meet inside [0, maxBendArm].

@@ -10,7 +10,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double cross2(const Vector2& a, const Vector2& b) { return a(0) * b(1) - a(1) * b(0); }
+double cross2(const Vector2& a, const Vector2& b) {
+  return a(0) * b(1) - a(1) * b(0);
+}
 
 std::string fmt(double v) {
   std::ostringstream s;
@@ -21,7 +23,9 @@ std::string fmt(double v) {
 
 }  // namespace
 
-double PlateAxis::signedArm(const Vector2& p) const { return cross2(p - point, direction); }
+double PlateAxis::signedArm(const Vector2& p) const {
+  return cross2(p - point, direction);
+}
 
 Result<Vector2> PlateAxis::pointAtV(double v) const {
   if (std::abs(direction(1)) < 1e-12) {
@@ -43,10 +47,10 @@ Result<PlaneFit> fitPlane(const std::vector<Vector2>& points, const std::vector<
                      "twist axis: sensor points");
   }
   if (static_cast<Eigen::Index>(w.size()) != n) {
-    return makeError(ErrorCode::InvalidArgument,
-                     std::to_string(points.size()) + " sensor points but " + std::to_string(w.size()) +
-                         " displacements",
-                     "twist axis: displacements");
+    return makeError(
+        ErrorCode::InvalidArgument,
+        std::to_string(points.size()) + " sensor points but " + std::to_string(w.size()) + " displacements",
+        "twist axis: displacements");
   }
   for (Eigen::Index i = 0; i < n; ++i) {
     if (!points[i].allFinite() || !std::isfinite(w[i])) {
@@ -199,7 +203,8 @@ Result<LinearRegression> linearRegression(const std::vector<double>& x, const st
   double mx = 0, my = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(x[i]) || !std::isfinite(y[i])) {
-      return makeError(ErrorCode::InvalidArgument, "non-finite sample", "linear regression: sample " + std::to_string(i + 1));
+      return makeError(ErrorCode::InvalidArgument, "non-finite sample",
+                       "linear regression: sample " + std::to_string(i + 1));
     }
     mx += x[i];
     my += y[i];
@@ -240,8 +245,8 @@ Result<StaticTwistResult> staticTwistTest(const std::vector<Vector2>& points, co
   if (displacements.rows() != nk || displacements.cols() != ns) {
     return makeError(ErrorCode::InvalidArgument,
                      "displacement table is " + std::to_string(displacements.rows()) + " x " +
-                         std::to_string(displacements.cols()) + ", expected " + std::to_string(nk) +
-                         " samples x " + std::to_string(ns) + " sensors",
+                         std::to_string(displacements.cols()) + ", expected " + std::to_string(nk) + " samples x " +
+                         std::to_string(ns) + " sensors",
                      "static twist test");
   }
   if (nk < 3) {
@@ -268,7 +273,8 @@ Result<StaticTwistResult> staticTwistTest(const std::vector<Vector2>& points, co
     std::vector<double> di(static_cast<std::size_t>(nk));
     for (Eigen::Index k = 0; k < nk; ++k) di[static_cast<std::size_t>(k)] = displacements(k, i);
     auto reg = linearRegression(fv, di);
-    if (!reg) return makeError(reg.error().code, reg.error().message, "static twist test: sensor " + std::to_string(i + 1));
+    if (!reg)
+      return makeError(reg.error().code, reg.error().message, "static twist test: sensor " + std::to_string(i + 1));
     compliance[static_cast<std::size_t>(i)] = reg->slope;
     seMax = std::max(seMax, reg->slopeSe);
   }
@@ -303,8 +309,8 @@ Result<StaticTwistResult> staticTwistTest(const std::vector<Vector2>& points, co
   }
   if (reg->slope < 3.0 * reg->slopeSe) {
     return makeError(ErrorCode::NumericalFailure,
-                     "the load-point displacement is not resolved above the noise (slope " + fmt(reg->slope) +
-                         " +- " + fmt(reg->slopeSe) + " m/N)",
+                     "the load-point displacement is not resolved above the noise (slope " + fmt(reg->slope) + " +- " +
+                         fmt(reg->slopeSe) + " m/N)",
                      "static twist test: load point");
   }
   out.lateralStiffness = 1.0 / reg->slope;

@@ -32,13 +32,13 @@ inline constexpr double kLaserResolution = 4e-6;
 // point p out of plane by  w = rotation * signedArm(p),
 //   signedArm(p) = cross2(p - point, direction) = (p_u - q_u) d_v - (p_v - q_v) d_u.
 struct PlateAxis {
-  Vector2 point = Vector2::Zero();      // foot of the perpendicular from the reference point [m]
-  Vector2 direction = Vector2(0, 1);    // unit vector; normalised so beta is in (-pi/2, pi/2]
-  double rotation = 0.0;                // signed rotation about `direction` [rad] (or rad/N per unit load)
-  double beta = 0.0;                    // angle from the v (z) axis to the axis, towards u [rad] (§1.7 beta)
-  double betaSigma = 0.0;               // standard uncertainty of beta [rad]
-  double offsetSigma = 0.0;             // std. uncertainty of the axis position normal to itself at the reference point [m]
-  double rotationSigma = 0.0;           // std. uncertainty of `rotation`
+  Vector2 point = Vector2::Zero();    // foot of the perpendicular from the reference point [m]
+  Vector2 direction = Vector2(0, 1);  // unit vector; normalised so beta is in (-pi/2, pi/2]
+  double rotation = 0.0;              // signed rotation about `direction` [rad] (or rad/N per unit load)
+  double beta = 0.0;                  // angle from the v (z) axis to the axis, towards u [rad] (§1.7 beta)
+  double betaSigma = 0.0;             // standard uncertainty of beta [rad]
+  double offsetSigma = 0.0;    // std. uncertainty of the axis position normal to itself at the reference point [m]
+  double rotationSigma = 0.0;  // std. uncertainty of `rotation`
   double signedArm(const Vector2& p) const;
   // Point of the axis at in-plane coordinate v (eq. 13 parametrises the Mozzi
   // axis by z_P); an error when the axis is parallel to the u axis.
@@ -126,9 +126,9 @@ struct StaticTwistResult {
   LinearRegression loadPoint;     // load-point displacement [m] against force [N]
   double lateralStiffness = 0.0;  // k_lat = F / x_lat [N/m] (eq. 29, 31)
   double lateralStiffnessSe = 0.0;
-  double twistArm = 0.0;          // a_tw = |distance of the load point from the axis| [m]
+  double twistArm = 0.0;  // a_tw = |distance of the load point from the axis| [m]
   double twistArmSigma = 0.0;
-  double twistStiffness = 0.0;    // k_tw = k_lat a_tw^2 [Nm/rad] (eq. 30, 32)
+  double twistStiffness = 0.0;  // k_tw = k_lat a_tw^2 [Nm/rad] (eq. 30, 32)
   double twistStiffnessSigma = 0.0;
   double positiveBranchStiffness = 0.0;  // 0 when that branch has too few samples
   double negativeBranchStiffness = 0.0;

@@ -34,7 +34,9 @@ Eigen::Matrix<double, 7, 1> screwParams(const Eigen::Matrix<double, 6, 1>& x) {
 
 }  // namespace
 
-double ScrewAxis::distance(const Vector3& q) const { return (q - point).cross(direction).norm(); }
+double ScrewAxis::distance(const Vector3& q) const {
+  return (q - point).cross(direction).norm();
+}
 
 Result<ScrewAxis> screwAxis(const Matrix& points, const Matrix& displacements, const ScrewAxisOptions& options) {
   const Eigen::Index n = points.rows();
@@ -42,8 +44,8 @@ Result<ScrewAxis> screwAxis(const Matrix& points, const Matrix& displacements, c
     return makeError(ErrorCode::InvalidArgument, "points and displacements must both be n x 3", "screw axis");
   }
   if (n < 3) {
-    return makeError(ErrorCode::InvalidArgument,
-                     "at least 3 non-collinear points are needed, got " + std::to_string(n), "screw axis");
+    return makeError(ErrorCode::InvalidArgument, "at least 3 non-collinear points are needed, got " + std::to_string(n),
+                     "screw axis");
   }
   if (!points.allFinite() || !displacements.allFinite()) {
     return makeError(ErrorCode::InvalidArgument, "non-finite coordinate or displacement", "screw axis");
@@ -140,8 +142,9 @@ Result<ScrewAxis> screwAxisFromPhasors(const Matrix& points, const ComplexMatrix
   r->phaseResidual = rot.imag().norm() / rn;
   if (r->phaseResidual > options.maxPhaseResidual) {
     r->lowConfidence = true;
-    r->note += std::string(r->note.empty() ? "" : "; ") + "displacements are not in phase (|Im|/|Re| = " +
-               fmt(r->phaseResidual) + "): the screw axis moves during the cycle";
+    r->note += std::string(r->note.empty() ? "" : "; ") +
+               "displacements are not in phase (|Im|/|Re| = " + fmt(r->phaseResidual) +
+               "): the screw axis moves during the cycle";
   }
   return r;
 }

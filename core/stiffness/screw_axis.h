@@ -19,10 +19,10 @@
 namespace mozzi::core::stiffness {
 
 struct ScrewAxisOptions {
-  double sigmaFloor = 0.0;         // displacement standard deviation floor [m]
-  double minRotationSnr = 3.0;     // |w| below this many sigmas: pure translation, refused
-  double maxCondition = 1e3;       // condition number of the scaled design above which the result is flagged
-  double maxPhaseResidual = 0.1;   // phasor input: |Im| / |Re| after phase alignment above which it is flagged
+  double sigmaFloor = 0.0;        // displacement standard deviation floor [m]
+  double minRotationSnr = 3.0;    // |w| below this many sigmas: pure translation, refused
+  double maxCondition = 1e3;      // condition number of the scaled design above which the result is flagged
+  double maxPhaseResidual = 0.1;  // phasor input: |Im| / |Re| after phase alignment above which it is flagged
 };
 
 struct ScrewAxis {
@@ -33,11 +33,11 @@ struct ScrewAxis {
   double pitch = 0.0;                     // h = (w . d_O)/|w|^2 [m/rad]
   double angle = 0.0;                     // |w| [rad]
   // First-order standard uncertainties.
-  double directionSigma = 0.0;  // angular [rad]
-  double pointSigma = 0.0;      // rms over the three coordinates of p [m]
-  double pitchSigma = 0.0;      // [m/rad]
-  Matrix covariance;            // 6x6 of (d_O, w)
-  double sigma = 0.0;           // displacement standard deviation used [m]
+  double directionSigma = 0.0;   // angular [rad]
+  double pointSigma = 0.0;       // rms over the three coordinates of p [m]
+  double pitchSigma = 0.0;       // [m/rad]
+  Matrix covariance;             // 6x6 of (d_O, w)
+  double sigma = 0.0;            // displacement standard deviation used [m]
   double conditionNumber = 0.0;  // of the centred, length-scaled design matrix
   double phaseResidual = 0.0;    // phasor input only
   bool lowConfidence = false;

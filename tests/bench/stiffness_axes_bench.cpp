@@ -16,7 +16,9 @@ using mozzi::core::Vector2;
 
 const std::vector<Vector2> kLayout{{0.2, -0.3}, {0, -0.3}, {0, 0}, {0.2, 0}};
 
-double rigid(const Vector2& p, double theta) { return theta * (-(p(1) + 0.1)) + 1e-5 * p(0); }
+double rigid(const Vector2& p, double theta) {
+  return theta * (-(p(1) + 0.1)) + 1e-5 * p(0);
+}
 
 void BM_StaticTwistAxis4Lasers(benchmark::State& state) {
   std::vector<double> w;

@@ -15,7 +15,9 @@ namespace {
 // axis at L2 = 0.846 m, wheel 8 kg + unsprung 3 kg at 0.405 m below L1 (wheel
 // centre 0.265 m above the contact point), wheel diametrical inertia 0.278
 // kgm^2, measured lateral mode 22.3 Hz with zeta = 2.4 % (Table 11).
-ForkLumpedInput table12Input() { return {28e3, 0.670, 0.846, 0.670 - 0.405, 11.0, 0.278, 22.3, 0.024}; }
+ForkLumpedInput table12Input() {
+  return {28e3, 0.670, 0.846, 0.670 - 0.405, 11.0, 0.278, 22.3, 0.024};
+}
 
 TEST(ThesisTable12, LumpedForkModels) {
   const auto m = forkLumpedModels(table12Input());
@@ -48,7 +50,9 @@ TEST(ThesisTable12, LumpedForkModels) {
 // Table 21 (masses, hub, wheel radius). The blade-tip distance d of eq. 52 is
 // not printed; d = 0.060 m (a round value) is the single assumed input, and with
 // it all four torsional stiffnesses below are reproduced.
-BicycleForkParameters carbon() { return {0.393, 1.334, 0.350, 0.094, 0.004, 0.225, 0.060, 0.460}; }
+BicycleForkParameters carbon() {
+  return {0.393, 1.334, 0.350, 0.094, 0.004, 0.225, 0.060, 0.460};
+}
 BicycleForkParameters steel() {
   auto p = carbon();
   p.forkMass = 1.336;
@@ -135,7 +139,7 @@ TEST(ThesisSection65, SteelForkBendingFromThePrintedEquations) {
   EXPECT_NEAR(b->bendArm, hb, 2e-5);
   EXPECT_NEAR(b->bendArm, 0.1818, 0.0005);
   EXPECT_NEAR(b->stiffness, 5160.0, 0.002 * 5160.0);
-  EXPECT_NEAR(b->damping, 0.8, 0.05);  // measured 0.751
+  EXPECT_NEAR(b->damping, 0.8, 0.05);                 // measured 0.751
   EXPECT_GT((5635.0 - b->stiffness) / 5635.0, 0.05);  // the documented gap
 }
 

@@ -128,7 +128,7 @@ TEST(ThesisTables10And13, ForkDecompositionFromPrintedInputs) {
   } rows[] = {{"Table 10 simple (fork A)", 56.1e3, 0.517, 0.67, 0.066, 45.5, 15e3, 28e3, 3e3, 1e3, 1e3},
               {"Table 13 (fork B)", 109.3e3, 0.452, 0.528, 0.083, 41.2, 22e3, 35e3, 6e3, 1e3, 1e3}};
   for (const auto& r : rows) {
-    const double kTw = r.kLat * r.aTw * r.aTw;  // eq. 30
+    const double kTw = r.kLat * r.aTw * r.aTw;       // eq. 30
     EXPECT_NEAR(kTw, r.kTwPrinted, 0.5e3) << r.row;  // printed to 1 kNm/rad
     const auto d = decomposeForkStiffness({kTw, r.aTw, r.aB, r.aT, r.alphaDeg * kPi / 180});
     ASSERT_TRUE(d.ok()) << r.row << ": " << d.error().describe();

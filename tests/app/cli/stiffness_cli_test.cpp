@@ -88,7 +88,7 @@ TEST(StiffnessCli, TwistDynamicAndModal) {
   const auto r2 = run({"twist", "modal", m, "--freq", "67", "--type", "receptance"});
   ASSERT_EQ(r2.code, kExitOk) << r2.err;
   EXPECT_NE(r2.out.find("in-phase case"), std::string::npos);
-  EXPECT_EQ(run({"twist", "modal", m}).code, kExitUsage);            // --freq missing
+  EXPECT_EQ(run({"twist", "modal", m}).code, kExitUsage);                     // --freq missing
   EXPECT_EQ(run({"twist", "modal", m, "--freq", "500"}).code, kExitFailure);  // outside band
 }
 
@@ -127,8 +127,8 @@ TEST(StiffnessCli, DecomposeForkTable13) {
   EXPECT_NEAR(j["bending_stiffness_Nm_per_rad"].get<double>(), 35e3, 500);
   EXPECT_NEAR(j["torsion_stiffness_Nm_per_rad"].get<double>(), 6e3, 500);
   EXPECT_EQ(run({"stiffness", "decompose", "--k-twist", "1"}).code, kExitUsage);
-  EXPECT_EQ(run({"stiffness", "decompose", "--k-twist", "1", "--a-twist", "0.5", "--a-bend", "0.5", "--a-tors",
-                 "0.1", "--fork", "--alpha-deg", "0"})
+  EXPECT_EQ(run({"stiffness", "decompose", "--k-twist", "1", "--a-twist", "0.5", "--a-bend", "0.5", "--a-tors", "0.1",
+                 "--fork", "--alpha-deg", "0"})
                 .code,
             kExitFailure);
 }
@@ -141,17 +141,41 @@ TEST(StiffnessCli, ForkLumpedAndBicycle) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["model2"]["stiffness_Nm_per_rad"].get<double>(), 78.4e3, 0.002 * 78.4e3);
   EXPECT_NEAR(j["model3"]["inertia_kgm2"].get<double>(), 1.426, 0.0005);
-  const auto b = run({"fork", "bicycle", "--fork-mass", "0.393", "--wheel-mass", "1.334", "--wheel-radius", "0.35",
-                      "--hub-mass", "0.094", "--hub-radius", "0.004", "--hub-length", "0.225", "--tip-distance",
-                      "0.06", "--f-tors-wheel", "19.3", "--eta-tors-wheel", "0.1004", "--f-tors-alone", "191.2",
-                      "--f-bend-wheel", "21.3", "--eta-bend-wheel", "0.0424", "--f-bend-alone", "64", "--json"});
+  const auto b = run({"fork",
+                      "bicycle",
+                      "--fork-mass",
+                      "0.393",
+                      "--wheel-mass",
+                      "1.334",
+                      "--wheel-radius",
+                      "0.35",
+                      "--hub-mass",
+                      "0.094",
+                      "--hub-radius",
+                      "0.004",
+                      "--hub-length",
+                      "0.225",
+                      "--tip-distance",
+                      "0.06",
+                      "--f-tors-wheel",
+                      "19.3",
+                      "--eta-tors-wheel",
+                      "0.1004",
+                      "--f-tors-alone",
+                      "191.2",
+                      "--f-bend-wheel",
+                      "21.3",
+                      "--eta-bend-wheel",
+                      "0.0424",
+                      "--f-bend-alone",
+                      "64",
+                      "--json"});
   ASSERT_EQ(b.code, kExitOk) << b.err;
   const auto jb = nlohmann::json::parse(b.out);
   EXPECT_NEAR(jb["torsion"]["stiffness_with_wheel_Nm_per_rad"].get<double>(), 1208.0, 0.002 * 1208.0);
   EXPECT_EQ(run({"fork", "lumped"}).code, kExitUsage);
   EXPECT_EQ(run({"fork", "nothing"}).code, kExitUsage);
 }
-
 
 // Modal axis from FRFs in the shared CSV exchange format (core/io/csv): three
 // accelerances of one real mode shape; the in-phase axis is the shape's axis
@@ -173,8 +197,8 @@ TEST(StiffnessCli, TwistModalReadsTheSharedFrfCsv) {
   const std::string frfPath = std::string(MOZZI_BINARY_DIR) + "/stiffness_cli_frf.csv";
   ASSERT_TRUE(core::io::csv::exportFrfCsv(frf, frfPath).ok());
   const auto geom = writeTemp("geom.csv", "sensor,0.2,-0.3\nsensor,0,-0.3\nsensor,0,0\nload,0,-0.5\n");
-  const auto r = run({"twist", "modal", geom, "--frf", frfPath, "--freq", "65", "--responses", "21:+Y,22:+Y,23:+Y",
-                      "--json"});
+  const auto r =
+      run({"twist", "modal", geom, "--frf", frfPath, "--freq", "65", "--responses", "21:+Y,22:+Y,23:+Y", "--json"});
   ASSERT_EQ(r.code, kExitOk) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["method"], "in-phase");

@@ -56,7 +56,8 @@ TEST(PhasorTwistAxis, GeneralPhasesUseTheThreeInstantMethod) {
   // Each instant axis is the plane of y_i(t_j) = |Y_i| cos(phi_i - phi_j): check one directly.
   for (std::size_t j = 0; j < 3; ++j) {
     std::vector<double> w;
-    for (int i = 0; i < 3; ++i) w.push_back(std::abs(y(i)) * std::cos(std::arg(y(i)) - std::arg(y(static_cast<Eigen::Index>(j)))));
+    for (int i = 0; i < 3; ++i)
+      w.push_back(std::abs(y(i)) * std::cos(std::arg(y(i)) - std::arg(y(static_cast<Eigen::Index>(j)))));
     const auto s = staticTwistAxis(kLayout, w, Vector2(0, 0));
     ASSERT_TRUE(s.ok());
     EXPECT_NEAR(s->axis.beta, r->instantAxes[j].beta, 1e-12);
@@ -132,12 +133,12 @@ TEST(ModalTwistAxis, FromAccelerometerFrfs) {
   EXPECT_EQ(r->axis.method, PhasorAxisCase::InPhase);
   EXPECT_NEAR(r->axis.axis.axis.beta, beta0, 1e-9);
   // At resonance the receptance is -i shape / (2 zeta k): phase -pi/2 relative to the shape.
-  EXPECT_NEAR(std::abs(r->receptance(0)), std::abs(shape(0)) / (2 * zeta * 1e5), 1e-9 * std::abs(shape(0)) / (2 * zeta * 1e5));
+  EXPECT_NEAR(std::abs(r->receptance(0)), std::abs(shape(0)) / (2 * zeta * 1e5),
+              1e-9 * std::abs(shape(0)) / (2 * zeta * 1e5));
   EXPECT_FALSE(modalTwistAxis(frf, {0, 1, 2}, 0, 500.0, kLayout, Vector2(0, 0)).ok());
   EXPECT_FALSE(modalTwistAxis(frf, {0, 1, 7}, 0, 50.0, kLayout, Vector2(0, 0)).ok());
   EXPECT_FALSE(modalTwistAxis(frf, {0, 1}, 0, 50.0, kLayout, Vector2(0, 0)).ok());
 }
-
 
 // Two close modes with different shapes (like Fig. 6, fork A at 67 Hz): between
 // them the FRF phases are general, so the tool switches to the three-instant

@@ -34,7 +34,9 @@ TEST(ForkLumpedModels, OneDofRelationsHold) {
   EXPECT_FALSE(forkLumpedModels(in).ok());
 }
 
-BicycleForkParameters params() { return {0.4, 1.3, 0.35, 0.1, 0.005, 0.2, 0.05, 0.46}; }
+BicycleForkParameters params() {
+  return {0.4, 1.3, 0.35, 0.1, 0.005, 0.2, 0.05, 0.46};
+}
 
 TEST(BicycleFork, TorsionSeriesAndDamping) {
   const auto p = params();
@@ -63,7 +65,8 @@ TEST(BicycleFork, BendingArmIsTheCurveIntersection) {
   double best = 1e9, hbest = -1;
   for (int i = 0; i <= 460000; ++i) {
     const double h = i * 1e-6;
-    const double diff = std::abs(modalStiffness(fw, bendInertiaWithWheel(p, h)) - modalStiffness(fa, bendInertiaForkAlone(p, h)));
+    const double diff =
+        std::abs(modalStiffness(fw, bendInertiaWithWheel(p, h)) - modalStiffness(fa, bendInertiaForkAlone(p, h)));
     if (diff < best) {
       best = diff;
       hbest = h;

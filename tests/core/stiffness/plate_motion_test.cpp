@@ -198,8 +198,8 @@ TEST(PlanarMozzi, SolvesEq16ForAnyLayoutAsTheNotesClosedForm) {
   for (double zP : {-0.3, 0.0, 0.4}) {
     const auto p = m->twist.axis.pointAtV(zP);
     ASSERT_TRUE(p.ok());
-    EXPECT_NEAR((*p)(0), notesYP(pts, dx, zP), 1e-12);          // notes' general eq. 17
-    EXPECT_NEAR((*p)(0), dxQ / thZ + thY / thZ * zP, 1e-12);     // eq. 13
+    EXPECT_NEAR((*p)(0), notesYP(pts, dx, zP), 1e-12);        // notes' general eq. 17
+    EXPECT_NEAR((*p)(0), dxQ / thZ + thY / thZ * zP, 1e-12);  // eq. 13
   }
 }
 
@@ -268,7 +268,7 @@ struct Ramp {
   std::vector<Vector2> pts{{0.2, -0.3}, {0, -0.3}, {0, 0}, {0.2, 0}};
   Vector2 load{0.1, -0.6};
   Vector2 q{0.1 + 0.551 * std::cos(0.3), -0.6 - 0.551 * std::sin(0.3)};  // axis point at 0.551 m from the load
-  Vector2 d{std::sin(0.3), std::cos(0.3)};                                // perpendicular to (load - q)
+  Vector2 d{std::sin(0.3), std::cos(0.3)};                               // perpendicular to (load - q)
   Vector force;
   Matrix disp;
   Ramp(double kLat, double noiseSigma, double negativeScale = 1.0, unsigned seed = 3) {
@@ -344,7 +344,7 @@ TEST(StaticTwistTest, SingleLoadGivesEq29And30) {
   ASSERT_GT(xlat, 0.0);
   const auto r = staticTwistSingleLoad(pts, w, 300.0, load);
   ASSERT_TRUE(r.ok()) << r.error().describe();
-  EXPECT_NEAR(r->lateralStiffness, 300.0 / xlat, 1e-9 * 300.0 / xlat);                 // eq. 29
+  EXPECT_NEAR(r->lateralStiffness, 300.0 / xlat, 1e-9 * 300.0 / xlat);  // eq. 29
   EXPECT_NEAR(r->twistArm, std::abs(arm), 1e-12);
   EXPECT_NEAR(r->twistStiffness, 300.0 / xlat * arm * arm, 1e-9 * r->twistStiffness);  // eq. 30
   // The same load in the other sense with displacements reversed gives the same stiffness.

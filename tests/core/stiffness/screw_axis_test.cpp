@@ -49,8 +49,8 @@ TEST(ScrewAxis, ReproducesTheNotesExample) {
 // >= 97 % of the trials.
 TEST(ScrewAxis, NoiseIsWithinTheReportedUncertainty) {
   Matrix p(8, 3);
-  p << 0.2, 0, -0.3, 0, 0, -0.3, 0, 0, 0, 0.2, 0.05, 0, 0.1, 0.1, -0.1, -0.1, 0.05, 0.1, 0.3, -0.05, 0.2, 0.0,
-      0.2, -0.2;
+  p << 0.2, 0, -0.3, 0, 0, -0.3, 0, 0, 0, 0.2, 0.05, 0, 0.1, 0.1, -0.1, -0.1, 0.05, 0.1, 0.3, -0.05, 0.2, 0.0, 0.2,
+      -0.2;
   const Vector3 w(0.001, -0.002, 0.004), dO(0.2e-3, 0.1e-3, -0.3e-3);
   const Matrix clean = move(p, w, dO);
   const auto exact = screwAxis(p, clean);
@@ -114,7 +114,8 @@ TEST(ScrewAxis, PhasorsWithACommonPhase) {
               1e-12);
   EXPECT_NEAR(r->pitch, 0.0295238095238095, 1e-12);
   EXPECT_LT(r->phaseResidual, 1e-12);
-  const ComplexMatrix mixed = d.cast<Complex>() + Complex(0, 0.5) * move(plate(), Vector3(0.01, 0, 0), Vector3::Zero()).cast<Complex>();
+  const ComplexMatrix mixed =
+      d.cast<Complex>() + Complex(0, 0.5) * move(plate(), Vector3(0.01, 0, 0), Vector3::Zero()).cast<Complex>();
   const auto m = screwAxisFromPhasors(plate(), mixed);
   ASSERT_TRUE(m.ok());
   EXPECT_TRUE(m->lowConfidence);
