@@ -328,6 +328,8 @@ Result<MfAligningFit> fitMfAligning(const std::vector<SteadyStatePoint>& data, c
     if (s.cambers < 2) held.insert({"qBz4", "qBz5", "qDz3", "qDz4", "qDz8", "qDz9", "qEz5", "qHz3", "qHz4", "ppz2"});
     if (s.cambers < 3) held.insert("qDz4");
     if (!s.camberTwoSided) held.insert("qBz5");
+    // B_r = qBz9 + qBz10 B_y C_y: B_y C_y = K_ya/D_y is one number at one condition.
+    if (s.loads < 2 && s.pressures < 2 && s.cambers < 2) held.insert("qBz10");
   }
   std::vector<std::string> heldNames;
   auto mask = freeMask(mfAligningNames(), options.fixed, held, heldNames, where);

@@ -37,7 +37,7 @@ const char* kUsage =
     "                               --half-length A | --contact PRESSURES.csv) [--friction L] [--trail T]\n"
     "                               [--frequencies f1,f2,...] [--json]\n"
     "       mozzi-cli tire steady SWEEP.csv [--window DEG] [--magic-formula] [--nominal-load N]\n"
-    "                               [--nominal-pressure BAR] [--radius M] [--json]\n";
+    "                               [--nominal-pressure BAR] [--radius M] [--hold NAME,...] [--json]\n";
 
 // ---- small CSV reader: header row, comma separated, '#' comments --------------
 struct Table {
@@ -466,9 +466,22 @@ int steady(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
       meanLoad += r[cl] / t->rows.size(), meanP += r[cp] * 1e5 / t->rows.size();
     }
     tr::MfConstants c{nomLoad.value_or(meanLoad), nomP ? *nomP * 1e5 : meanP, radius.value_or(0.3)};
-    auto lat = tr::fitMfLateral(pts, c);
+    tr::MfFitOptions latOpt, alOpt;  // --hold a,b,...: names of either set
+    if (auto hold = a.value("--hold")) {
+      std::stringstream ss(*hold);
+      std::string name;
+      while (std::getline(ss, name, ',')) {
+        name = trim(name);
+        const auto& ln = tr::mfLateralNames();
+        const auto& an = tr::mfAligningNames();
+        if (std::find(ln.begin(), ln.end(), name) != ln.end()) latOpt.fixed.insert(name);
+        else if (std::find(an.begin(), an.end(), name) != an.end()) alOpt.fixed.insert(name);
+        else return usage(err, "--hold: unknown Magic Formula coefficient '" + name + "'");
+      }
+    }
+    auto lat = tr::fitMfLateral(pts, c, latOpt);
     if (!lat) return fail(err, "steady --magic-formula", lat.error());
-    auto al = tr::fitMfAligning(pts, c, lat->value);
+    auto al = tr::fitMfAligning(pts, c, lat->value, alOpt);
     if (!al) return fail(err, "steady --magic-formula", al.error());
     Json lj, aj;
     for (int i = 0; i < tr::kMfLateralCount; ++i)
@@ -502,7 +515,7 @@ int tireCommand(const std::vector<std::string>& args, std::ostream& out, std::os
   const OptionSpec spec{{"--half-length", "--speed", "--force-sign", "--band", "--modes", "--mass", "--radius",
                          "--belt-share", "--thesis-tyre", "--stiffness", "--cornering-stiffness", "--load",
                          "--contact", "--friction", "--trail", "--frequencies", "--damping-ratio", "--window",
-                         "--nominal-load", "--nominal-pressure"},
+                         "--nominal-load", "--nominal-pressure", "--hold"},
                         {"--json", "--magic-formula"}};
   const auto parsed = ParsedArgs::parse(args, spec);
   if (!parsed) return usage(err, parsed.error().describe());

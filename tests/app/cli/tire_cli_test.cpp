@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "app/cli/command.h"
+#include "core/tire/magic_formula.h"
 
 namespace mozzi::cli {
 namespace {
@@ -126,6 +127,44 @@ TEST(TireCli, SteadyGivesCorneringStiffnessAndRejectsNonMonotonicSweeps) {
   const auto nm = run({"tire", "steady", bad});
   EXPECT_EQ(nm.code, kExitFailure);
   EXPECT_NE(nm.err.find("monotonic"), std::string::npos) << nm.err;
+}
+
+TEST(TireCli, SteadyMagicFormulaFitsOneSweepAndHoldsWhatItCannotDetermine) {
+  // One two-sided slip sweep (-10..10 deg) at 1500 N, 2 bar, camber 0 from a
+  // known set whose held coefficients equal the defaults: the free ones are
+  // recovered (exact data, 17 digits: 1e-6 relative).
+  namespace tr = core::tire;
+  tr::MfLateralCoefficients p = tr::mfLateralDefaults();
+  p[0] = 1.35, p[1] = 1.1, p[8] = 14.0;  // pCy1, pDy1, pKy1
+  tr::MfAligningCoefficients q = tr::mfAligningDefaults();
+  q[8] = 0.08;  // qDz1
+  q[12] = 0.003;  // qDz6: with M_zr = 0 (qDz6 = 0) qBz9 has no effect and the covariance is singular
+  const tr::MfConstants c{1500.0, 2e5, 0.3};
+  const std::string path = tempPath("mf.csv");
+  {
+    std::ofstream f(path);
+    f << std::setprecision(17) << "slip_deg,camber_deg,load_n,pressure_bar,force_n,torque_nm\n";
+    for (int i = -10; i <= 10; ++i) {
+      const double a = i * kPi / 180;
+      f << i << ",0,1500,2," << tr::mfLateralForce(p, c, a, 0, 1500, 2e5) << ","
+        << tr::mfAligningTorque(q, p, c, a, 0, 1500, 2e5) << "\n";
+    }
+  }
+  const auto r = run({"tire", "steady", path, "--magic-formula", "--json"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const auto j = nlohmann::json::parse(r.out)["magic_formula"];
+  EXPECT_NEAR(j["lateral"]["pKy1"]["value"].get<double>(), 14.0, 1e-6 * 14);
+  EXPECT_NEAR(j["lateral"]["pDy1"]["value"].get<double>(), 1.1, 1e-6 * 1.1);
+  EXPECT_NEAR(j["aligning"]["qDz1"]["value"].get<double>(), 0.08, 1e-6 * 0.08);
+  EXPECT_FALSE(j["lateral"]["ppy1"]["free"].get<bool>());
+  EXPECT_FALSE(j["aligning"]["qBz10"]["free"].get<bool>());
+  // The user can hold more: qEz4 at its default 0 (its true value).
+  const auto h = run({"tire", "steady", path, "--magic-formula", "--hold", "qEz4,pHy1", "--json"});
+  ASSERT_EQ(h.code, kExitOk) << h.err;
+  const auto k = nlohmann::json::parse(h.out)["magic_formula"];
+  EXPECT_FALSE(k["aligning"]["qEz4"]["free"].get<bool>());
+  EXPECT_FALSE(k["lateral"]["pHy1"]["free"].get<bool>());
+  EXPECT_EQ(run({"tire", "steady", path, "--magic-formula", "--hold", "zz9"}).code, kExitUsage);
 }
 
 TEST(WheelchairCli, SteadyAndSensitivity) {
