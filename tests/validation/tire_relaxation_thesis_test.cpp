@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "core/tire/relaxation_prediction.h"
 #include "core/tire/ring_model.h"
