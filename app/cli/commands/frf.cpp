@@ -92,15 +92,32 @@ core::Result<std::vector<Hit>> hitsFromUff(const uff::UffFile& file, const std::
       ch.name = core::formatDof(*dof);
       ch.transducer.kind = kindFromUff(f.ordinateNumerator.specificDataType);
       ch.transducer.unit = f.ordinateNumerator.unitsLabel;
-      if (reference) {
-        if (ch.dof == *reference) {
-          ch.transducer.kind = sg::TransducerKind::Force;
-        } else if (ch.transducer.kind == sg::TransducerKind::Force) {
-          ch.transducer.kind = sg::TransducerKind::Other;  // a second force channel is not the reference
-        }
-      }
       r.channels.push_back(ch);
       r.samples.col(static_cast<Eigen::Index>(c)) = f.real;
+    }
+    if (reference) {
+      // The named DOF is the reference: among channels at that DOF (a driving
+      // point has force and response there) prefer the one typed as force.
+      std::optional<std::size_t> pick;
+      for (std::size_t c = 0; c < r.channels.size(); ++c) {
+        if (r.channels[c].dof != *reference) continue;
+        if (!pick || (r.channels[c].transducer.kind == sg::TransducerKind::Force &&
+                      r.channels[*pick].transducer.kind != sg::TransducerKind::Force)) {
+          pick = c;
+        }
+      }
+      if (!pick) {
+        return core::makeError(core::ErrorCode::NotFound,
+                               "no channel at the reference DOF " + core::formatDof(*reference), where);
+      }
+      for (std::size_t c = 0; c < r.channels.size(); ++c) {
+        auto& kind = r.channels[c].transducer.kind;
+        if (c == *pick) {
+          kind = sg::TransducerKind::Force;
+        } else if (kind == sg::TransducerKind::Force) {
+          kind = sg::TransducerKind::Other;  // another force channel is not the reference
+        }
+      }
     }
     hits.push_back(std::move(hit));
   }
