@@ -68,8 +68,8 @@ WheelchairState toOutput(const WheelchairParameters& p, const Manoeuvre& m, doub
   const Forces f = rearForces(p, s[3], s[4], s[5]);
   o.slipRight = f.slipR, o.slipLeft = f.slipL;
   const double dT = m.differentialTorque ? m.differentialTorque(t) : 0.0;
-  const double sumT = m.speedHold ? -p.mass * s[4] * s[5] * p.rearWheelRadius
-                                  : (m.commonTorque ? m.commonTorque(t) : 0.0);
+  const double sumT =
+      m.speedHold ? -p.mass * s[4] * s[5] * p.rearWheelRadius : (m.commonTorque ? m.commonTorque(t) : 0.0);
   o.torqueRight = 0.5 * (sumT + dT);
   o.torqueLeft = 0.5 * (sumT - dT);
   return o;
@@ -93,15 +93,14 @@ double steadyCaster(const WheelchairParameters& p, double yc, double u, double v
 }  // namespace
 
 Result<void> validate(const WheelchairParameters& p) {
-  const std::pair<const char*, double> positive[] = {
-      {"mass", p.mass},
-      {"yaw inertia", p.yawInertia},
-      {"rear half-track", p.rearHalfTrack},
-      {"caster half-track", p.casterHalfTrack},
-      {"caster trail", p.casterTrail},
-      {"rear wheel radius", p.rearWheelRadius},
-      {"rear cornering stiffness", p.rearCorneringStiffness},
-      {"caster cornering stiffness", p.casterCorneringStiffness}};
+  const std::pair<const char*, double> positive[] = {{"mass", p.mass},
+                                                     {"yaw inertia", p.yawInertia},
+                                                     {"rear half-track", p.rearHalfTrack},
+                                                     {"caster half-track", p.casterHalfTrack},
+                                                     {"caster trail", p.casterTrail},
+                                                     {"rear wheel radius", p.rearWheelRadius},
+                                                     {"rear cornering stiffness", p.rearCorneringStiffness},
+                                                     {"caster cornering stiffness", p.casterCorneringStiffness}};
   for (const auto& [name, value] : positive)
     if (!std::isfinite(value) || value <= 0.0)
       return makeError(ErrorCode::InvalidArgument, std::string(name) + " must be positive", kWhere);
@@ -116,7 +115,8 @@ Result<void> validate(const WheelchairParameters& p) {
   if (std::abs(p.casterAligningStiffness - p.casterTrail * p.casterCorneringStiffness) <
       1e-9 * p.casterTrail * p.casterCorneringStiffness)
     return makeError(ErrorCode::InvalidArgument,
-                     "caster equilibrium is degenerate: C_Mc = e C_c leaves the caster slip angle undetermined", kWhere);
+                     "caster equilibrium is degenerate: C_Mc = e C_c leaves the caster slip angle undetermined",
+                     kWhere);
   return {};
 }
 
@@ -210,7 +210,8 @@ Result<std::vector<WheelchairState>> simulate(const WheelchairParameters& p, con
     }
     for (double x : s)
       if (!std::isfinite(x))
-        return makeError(ErrorCode::NumericalFailure, "state became non-finite", where + " at t = " + std::to_string(t));
+        return makeError(ErrorCode::NumericalFailure, "state became non-finite",
+                         where + " at t = " + std::to_string(t));
     if (s[3] <= 0.0 || std::abs(s[5]) * p.rearHalfTrack >= s[3])
       return makeError(ErrorCode::NumericalFailure, "forward speed of a rear wheel reached zero: slip angle undefined",
                        where + " at t = " + std::to_string(t));
@@ -276,17 +277,19 @@ Result<std::vector<SensitivityCase>> stiffnessSensitivity(const WheelchairParame
     if (!std::isfinite(k) || k <= 0.0)
       return makeError(ErrorCode::InvalidArgument, "stiffness factor must be positive", kWhere);
     WheelchairParameters q = p;
-    if (which == WheelchairStiffness::Cornering) q.rearCorneringStiffness *= k;
-    else q.rearAligningStiffness *= k;
+    if (which == WheelchairStiffness::Cornering)
+      q.rearCorneringStiffness *= k;
+    else
+      q.rearAligningStiffness *= k;
     SensitivityCase c;
     c.factor = k;
     auto st = steadyTurn(q, speed, turnTorque);
     if (!st) return st.error();
     c.steady = *st;
     if (!std::isfinite(f) || f <= 0.0 || f * duration < 3.0)
-      return makeError(ErrorCode::InvalidArgument,
-                       "the slalom needs at least 3 cycles (2 to settle, 1 to measure): raise the duration or frequency",
-                       kWhere);
+      return makeError(
+          ErrorCode::InvalidArgument,
+          "the slalom needs at least 3 cycles (2 to settle, 1 to measure): raise the duration or frequency", kWhere);
     auto hist = simulate(q, slalomManoeuvre(speed, slalomTorque, f, duration));
     if (!hist) return hist.error();
     auto sum = summariseSlalom(*hist, 2.0 / f);  // after two cycles of start transient

@@ -36,27 +36,27 @@ namespace mozzi::core::stability {
 struct WheelchairParameters {
   // Assumed (the thesis prints no chair data): 110 kg with 71% on the rear
   // axle gives 384 N per rear wheel, the 400 N reference load of §7.1.
-  double mass = 110.0;              // chair + user + rear wheels [kg]
-  double yawInertia = 7.0;          // about G, vertical [kg m^2]
-  double rearAxleBehindCoM = 0.13;  // b [m]
-  double casterAheadOfCoM = 0.32;   // a_f [m] (wheelbase 0.45 m)
-  double rearHalfTrack = 0.28;      // w [m]
-  double casterHalfTrack = 0.20;    // w_f [m]
-  double casterTrail = 0.05;        // e [m]
-  double rearWheelRadius = 0.305;   // R_w [m], 24 inch
-  double rearWheelSpinInertia = 0.10;    // J_s per wheel [kg m^2]
-  double rearCorneringStiffness = 4000.0;  // C_alpha per rear tyre [N/rad] (10 F_z/rad at 400 N)
-  double rearAligningStiffness = 30.0;     // C_M per rear tyre [N m/rad] (7.5 mm pneumatic trail)
+  double mass = 110.0;                       // chair + user + rear wheels [kg]
+  double yawInertia = 7.0;                   // about G, vertical [kg m^2]
+  double rearAxleBehindCoM = 0.13;           // b [m]
+  double casterAheadOfCoM = 0.32;            // a_f [m] (wheelbase 0.45 m)
+  double rearHalfTrack = 0.28;               // w [m]
+  double casterHalfTrack = 0.20;             // w_f [m]
+  double casterTrail = 0.05;                 // e [m]
+  double rearWheelRadius = 0.305;            // R_w [m], 24 inch
+  double rearWheelSpinInertia = 0.10;        // J_s per wheel [kg m^2]
+  double rearCorneringStiffness = 4000.0;    // C_alpha per rear tyre [N/rad] (10 F_z/rad at 400 N)
+  double rearAligningStiffness = 30.0;       // C_M per rear tyre [N m/rad] (7.5 mm pneumatic trail)
   double casterCorneringStiffness = 1500.0;  // C_c [N/rad], only for the caster equilibrium check
   double casterAligningStiffness = 5.0;      // C_Mc [N m/rad]
 };
 
 struct WheelchairState {
   double t = 0.0;
-  double x = 0.0, y = 0.0, psi = 0.0;  // G in the road frame [m], yaw [rad]
-  double u = 0.0, v = 0.0, r = 0.0;    // chair-axis velocity of G [m/s], yaw rate [rad/s]
-  double deltaRight = 0.0, deltaLeft = 0.0;  // caster angles [rad], positive to the left
-  double slipRight = 0.0, slipLeft = 0.0;    // rear-wheel slip angles alpha_i [rad]
+  double x = 0.0, y = 0.0, psi = 0.0;          // G in the road frame [m], yaw [rad]
+  double u = 0.0, v = 0.0, r = 0.0;            // chair-axis velocity of G [m/s], yaw rate [rad/s]
+  double deltaRight = 0.0, deltaLeft = 0.0;    // caster angles [rad], positive to the left
+  double slipRight = 0.0, slipLeft = 0.0;      // rear-wheel slip angles alpha_i [rad]
   double torqueRight = 0.0, torqueLeft = 0.0;  // propulsive torques [N m]
 };
 
@@ -65,7 +65,7 @@ struct SteadyTurn {
   double radius = 0.0;               // of G's path: sqrt(u^2 + v^2)/|r| [m]
   double slipRight = 0.0, slipLeft = 0.0;
   double deltaRight = 0.0, deltaLeft = 0.0;
-  double commonTorque = 0.0;         // T_R + T_L needed to hold u [N m]
+  double commonTorque = 0.0;  // T_R + T_L needed to hold u [N m]
 };
 
 // Errors for every parameter out of range (mass, inertias, lengths, stiffness
@@ -80,13 +80,13 @@ Result<void> validate(const WheelchairParameters& p);
 Result<SteadyTurn> steadyTurn(const WheelchairParameters& p, double speed, double differentialTorque);
 
 struct Manoeuvre {
-  double speed = 1.11;                             // u at t = 0 [m/s] (4 km/h, §7.1 disc speed)
+  double speed = 1.11;                               // u at t = 0 [m/s] (4 km/h, §7.1 disc speed)
   std::function<double(double)> differentialTorque;  // T_R - T_L [N m] against t [s]
   std::function<double(double)> commonTorque;        // T_R + T_L, used only without speedHold
   bool speedHold = true;
-  double duration = 10.0;       // [s]
-  double timeStep = 1e-3;       // RK4 step upper bound [s] (reduced to a fifth of the fastest tyre time constant)
-  double outputInterval = 0.01; // [s]
+  double duration = 10.0;        // [s]
+  double timeStep = 1e-3;        // RK4 step upper bound [s] (reduced to a fifth of the fastest tyre time constant)
+  double outputInterval = 0.01;  // [s]
 };
 
 // Time history from straight running (v = r = delta = 0). Errors: bad
@@ -100,7 +100,7 @@ Manoeuvre slalomManoeuvre(double speed, double torqueAmplitude, double frequency
 Manoeuvre steadyTurningManoeuvre(double speed, double torque, double rampTime, double duration);
 
 struct SlalomSummary {
-  double lateralAmplitude = 0.0;   // half peak-to-peak of y, linear drift removed [m]
+  double lateralAmplitude = 0.0;                             // half peak-to-peak of y, linear drift removed [m]
   double slipAmplitudeRight = 0.0, slipAmplitudeLeft = 0.0;  // half peak-to-peak [rad]
   double slipMeanRight = 0.0, slipMeanLeft = 0.0;            // [rad]
 };

@@ -13,10 +13,59 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-enum L { pCy1, pDy1, pDy2, pDy3, pEy1, pEy2, pEy3, pEy4, pKy1, pKy2, pKy3, pHy1, pHy2, pHy3, pVy1, pVy2, pVy3, pVy4,
-         ppy1, ppy2, ppy3, ppy4 };
-enum A { qBz1, qBz2, qBz3, qBz4, qBz5, qBz9, qBz10, qCz1, qDz1, qDz2, qDz3, qDz4, qDz6, qDz7, qDz8, qDz9, qEz1,
-         qEz2, qEz3, qEz4, qEz5, qHz1, qHz2, qHz3, qHz4, ppz1, ppz2 };
+enum L {
+  pCy1,
+  pDy1,
+  pDy2,
+  pDy3,
+  pEy1,
+  pEy2,
+  pEy3,
+  pEy4,
+  pKy1,
+  pKy2,
+  pKy3,
+  pHy1,
+  pHy2,
+  pHy3,
+  pVy1,
+  pVy2,
+  pVy3,
+  pVy4,
+  ppy1,
+  ppy2,
+  ppy3,
+  ppy4
+};
+enum A {
+  qBz1,
+  qBz2,
+  qBz3,
+  qBz4,
+  qBz5,
+  qBz9,
+  qBz10,
+  qCz1,
+  qDz1,
+  qDz2,
+  qDz3,
+  qDz4,
+  qDz6,
+  qDz7,
+  qDz8,
+  qDz9,
+  qEz1,
+  qEz2,
+  qEz3,
+  qEz4,
+  qEz5,
+  qHz1,
+  qHz2,
+  qHz3,
+  qHz4,
+  ppz1,
+  ppz2
+};
 
 struct Condition {
   double alpha, gamma, load, pressure;
@@ -45,8 +94,7 @@ LateralParts<T> lateral(const T* p, const MfConstants& c, const Condition& x) {
   const double sgn = ay < T(0.0) ? -1.0 : 1.0;
   const T ey = (p[pEy1] + p[pEy2] * dfz) * (1.0 - (p[pEy3] + p[pEy4] * g) * sgn);
   o.kya = p[pKy1] * c.nominalLoad * (1.0 + p[ppy1] * dpi) *
-          sin(2.0 * atan(x.load / (p[pKy2] * c.nominalLoad * (1.0 + p[ppy2] * dpi)))) *
-          (1.0 - p[pKy3] * std::abs(g));
+          sin(2.0 * atan(x.load / (p[pKy2] * c.nominalLoad * (1.0 + p[ppy2] * dpi)))) * (1.0 - p[pKy3] * std::abs(g));
   o.by = o.kya / (o.cy * dy);
   const T bx = o.by * ay;
   o.fy = dy * sin(o.cy * atan(bx - ey * (bx - atan(bx)))) + o.svy;
@@ -72,7 +120,8 @@ T aligning(const T* q, const LateralParts<double>& lat, const MfConstants& c, co
   const T t = dt * cos(ct * atan(btat - et * (btat - atan(btat)))) * std::cos(x.alpha);
   const double ar = x.alpha + lat.shy + lat.svy / lat.kya;
   const T br = q[qBz9] + q[qBz10] * lat.by * lat.cy;
-  const T dr = x.load * c.unloadedRadius * (q[qDz6] + q[qDz7] * dfz + (q[qDz8] + q[qDz9] * dfz) * (1.0 + q[ppz2] * dpi) * g);
+  const T dr =
+      x.load * c.unloadedRadius * (q[qDz6] + q[qDz7] * dfz + (q[qDz8] + q[qDz9] * dfz) * (1.0 + q[ppz2] * dpi) * g);
   const T mzr = dr * cos(atan(br * ar)) * std::cos(x.alpha);
   return -t * (lat.fy - lat.svy) + mzr;
 }
@@ -126,9 +175,9 @@ DataSpread spread(const std::vector<SteadyStatePoint>& d) {
     gNeg |= x.camber < -1e-6;
     gPos |= x.camber > 1e-6;
   }
-  s.pressures = distinct(p, 1.0);    // 1 Pa
-  s.loads = distinct(l, 1e-3);       // 1 mN
-  s.cambers = distinct(g, 1e-6);     // 1 urad
+  s.pressures = distinct(p, 1.0);  // 1 Pa
+  s.loads = distinct(l, 1e-3);     // 1 mN
+  s.cambers = distinct(g, 1e-6);   // 1 urad
   s.slipTwoSided = slipNeg && slipPos;
   s.camberTwoSided = gNeg && gPos;
   return s;
@@ -140,7 +189,8 @@ Result<void> checkData(const std::vector<SteadyStatePoint>& d, const char* where
     const std::string at = std::string(where) + ", point " + std::to_string(i + 1);
     if (!std::isfinite(x.slip) || !std::isfinite(x.camber) || !std::isfinite(x.force) || !std::isfinite(x.torque))
       return makeError(ErrorCode::InvalidArgument, "angle, force or torque is NaN or infinite", at);
-    if (!std::isfinite(x.load) || x.load <= 0.0) return makeError(ErrorCode::InvalidArgument, "vertical load must be positive", at);
+    if (!std::isfinite(x.load) || x.load <= 0.0)
+      return makeError(ErrorCode::InvalidArgument, "vertical load must be positive", at);
     if (!std::isfinite(x.pressure) || x.pressure <= 0.0)
       return makeError(ErrorCode::InvalidArgument, "inflation pressure must be positive", at);
   }
@@ -190,7 +240,8 @@ Result<MfFit<N>> solve(ceres::Problem& problem, std::array<double, N>& x, const 
   if (!summary.IsSolutionUsable() || summary.termination_type == ceres::NO_CONVERGENCE)
     return makeError(ErrorCode::NumericalFailure, "Magic Formula fit did not converge: " + summary.message, where);
   for (double v : x)
-    if (!std::isfinite(v)) return makeError(ErrorCode::NumericalFailure, "fit produced a non-finite coefficient", where);
+    if (!std::isfinite(v))
+      return makeError(ErrorCode::NumericalFailure, "fit produced a non-finite coefficient", where);
   const double rss = 2.0 * summary.final_cost;
   const double s2 = rss / (n - nFree);
   ceres::Covariance::Options copt;
@@ -239,7 +290,7 @@ const std::array<std::string, kMfLateralCount>& mfLateralNames() {
 const std::array<std::string, kMfAligningCount>& mfAligningNames() {
   static const std::array<std::string, kMfAligningCount> n = {
       "qBz1", "qBz2", "qBz3", "qBz4", "qBz5", "qBz9", "qBz10", "qCz1", "qDz1", "qDz2", "qDz3", "qDz4", "qDz6", "qDz7",
-      "qDz8", "qDz9", "qEz1", "qEz2", "qEz3", "qEz4", "qEz5", "qHz1", "qHz2", "qHz3", "qHz4", "ppz1", "ppz2"};
+      "qDz8", "qDz9", "qEz1", "qEz2", "qEz3", "qEz4", "qEz5",  "qHz1", "qHz2", "qHz3", "qHz4", "ppz1", "ppz2"};
   return n;
 }
 
@@ -288,7 +339,7 @@ Result<MfLateralFit> fitMfLateral(const std::vector<SteadyStatePoint>& data, con
     if (s.loads < 2) held.insert({"pDy2", "pEy2", "pHy2", "pVy2", "pVy4", "pKy2", "ppy2"});
     if (s.cambers < 2) held.insert({"pDy3", "pEy4", "pKy3", "pHy3", "pVy3", "pVy4"});
     if (s.cambers < 3) held.insert("pDy3");
-    if (!s.camberTwoSided) held.insert("pKy3");  // |gamma| and gamma alias on one side
+    if (!s.camberTwoSided) held.insert("pKy3");          // |gamma| and gamma alias on one side
     if (!s.slipTwoSided) held.insert({"pEy3", "pEy4"});  // sgn(alpha) constant
   }
   std::vector<std::string> heldNames;

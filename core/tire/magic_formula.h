@@ -54,9 +54,9 @@ const std::array<std::string, kMfLateralCount>& mfLateralNames();
 const std::array<std::string, kMfAligningCount>& mfAligningNames();
 
 struct MfConstants {
-  double nominalLoad = 1500.0;    // F_z0 [N]
-  double nominalPressure = 2e5;   // p0 [Pa]
-  double unloadedRadius = 0.3;    // R0 [m]
+  double nominalLoad = 1500.0;   // F_z0 [N]
+  double nominalPressure = 2e5;  // p0 [Pa]
+  double unloadedRadius = 0.3;   // R0 [m]
 };
 
 // A neutral starting/default set: zero shifts, zero load, camber and pressure

@@ -10,7 +10,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-bool finite(double x) { return std::isfinite(x); }
+bool finite(double x) {
+  return std::isfinite(x);
+}
 
 std::string hz(double f) {
   std::ostringstream s;
@@ -32,7 +34,8 @@ Result<RelaxationFromPhase> relaxationLengthFromPhaseLag(double phaseLagRad, dou
     return makeError(ErrorCode::InvalidArgument, "phase lag, frequency, speed and half-length must be finite", where);
   if (speed <= 0.0) return makeError(ErrorCode::InvalidArgument, "forward speed V must be positive", where);
   if (omega <= 0.0) return makeError(ErrorCode::InvalidArgument, "excitation frequency must be positive", where);
-  if (halfLength < 0.0) return makeError(ErrorCode::InvalidArgument, "contact half-length a must not be negative", where);
+  if (halfLength < 0.0)
+    return makeError(ErrorCode::InvalidArgument, "contact half-length a must not be negative", where);
   if (phaseLagStdError < 0.0) return makeError(ErrorCode::InvalidArgument, "phase standard error is negative", where);
   // theta = phi - atan(w a/V) is the carcass + contact lag atan(w sigma/V); it
   // must lie in (0, pi/2): at pi/2 the denominator of eq. 28 is zero.
@@ -41,19 +44,21 @@ Result<RelaxationFromPhase> relaxationLengthFromPhaseLag(double phaseLagRad, dou
   constexpr double kMargin = 1e-9;
   if (theta <= 0.0) {
     std::ostringstream m;
-    m << "phase lag " << phaseLagRad * 180.0 / kPi << " deg is not larger than the contact-patch lag atan(w a/V) = "
-      << std::atan(k * halfLength) * 180.0 / kPi << " deg: no positive relaxation length explains it";
+    m << "phase lag " << phaseLagRad * 180.0 / kPi
+      << " deg is not larger than the contact-patch lag atan(w a/V) = " << std::atan(k * halfLength) * 180.0 / kPi
+      << " deg: no positive relaxation length explains it";
     return makeError(ErrorCode::NumericalFailure, m.str(), where);
   }
   if (theta >= kPi / 2.0 - kMargin) {
     std::ostringstream m;
     m << "phase lag " << phaseLagRad * 180.0 / kPi
-      << " deg reaches atan(w a/V) + 90 deg: the denominator of eq. 28 a (w/V)^2 tan(phi) - w/V is zero or changes sign";
+      << " deg reaches atan(w a/V) + 90 deg: the denominator of eq. 28 a (w/V)^2 tan(phi) - w/V is zero or changes "
+         "sign";
     return makeError(ErrorCode::NumericalFailure, m.str(), where);
   }
   const double t = std::tan(theta);
   RelaxationFromPhase r;
-  r.sigma = t / k;                                          // sigma = (V/w) tan(phi - atan(w a/V))
+  r.sigma = t / k;                                         // sigma = (V/w) tan(phi - atan(w a/V))
   r.sigmaStdError = (1.0 + t * t) / k * phaseLagStdError;  // d sigma/d phi = (V/w) sec^2(theta)
   return r;
 }
@@ -63,7 +68,8 @@ Result<HarmonicYawResult> relaxationFromHarmonicYaw(const std::vector<HarmonicYa
   const char* where = "harmonic yaw test (thesis §1.9)";
   if (records.empty()) return makeError(ErrorCode::InvalidArgument, "no excitation frequency recorded", where);
   if (!finite(s.speed) || s.speed <= 0.0)
-    return makeError(ErrorCode::InvalidArgument, "forward speed V must be positive (V = 0 has no relaxation length)", where);
+    return makeError(ErrorCode::InvalidArgument, "forward speed V must be positive (V = 0 has no relaxation length)",
+                     where);
   if (!finite(s.halfLength) || s.halfLength < 0.0)
     return makeError(ErrorCode::InvalidArgument, "contact half-length a must be finite and not negative", where);
   if (s.forceSign != 1.0 && s.forceSign != -1.0)
@@ -82,10 +88,10 @@ Result<HarmonicYawResult> relaxationFromHarmonicYaw(const std::vector<HarmonicYa
       return makeError(ErrorCode::InvalidArgument, "yaw rate and lateral force have different lengths", at);
     if (!finite(rec.sampleRateHz) || rec.sampleRateHz <= 0.0)
       return makeError(ErrorCode::InvalidArgument, "sample rate must be positive", at);
-    Result<signal::SineFit> rateFit = rec.excitationFrequencyHz > 0.0
-                                          ? signal::fitSineKnownFrequency(rec.yawRate, rec.sampleRateHz,
-                                                                          rec.excitationFrequencyHz)
-                                          : signal::fitSine(rec.yawRate, rec.sampleRateHz);
+    Result<signal::SineFit> rateFit =
+        rec.excitationFrequencyHz > 0.0
+            ? signal::fitSineKnownFrequency(rec.yawRate, rec.sampleRateHz, rec.excitationFrequencyHz)
+            : signal::fitSine(rec.yawRate, rec.sampleRateHz);
     if (!rateFit) return makeError(rateFit.error().code, "yaw-rate sine fit: " + rateFit.error().message, at);
     const double f = rateFit->frequencyHz;
     const double duration = static_cast<double>(rec.yawRate.size()) / rec.sampleRateHz;
@@ -139,7 +145,7 @@ Result<HarmonicYawResult> relaxationFromHarmonicYaw(const std::vector<HarmonicYa
     return makeError(ErrorCode::NumericalFailure, m.str(), where);
   }
   const double n = out.pointsInBand;
-  out.meanSigma = sum / n;                       // thesis §5.4: average of the band
+  out.meanSigma = sum / n;                        // thesis §5.4: average of the band
   out.meanSigmaStdError = std::sqrt(sumVar) / n;  // var(mean) = sum var_i / n^2
   out.bandScatter = n > 1 ? std::sqrt(std::max(0.0, (sumSq - n * out.meanSigma * out.meanSigma) / (n - 1))) : 0.0;
   return out;

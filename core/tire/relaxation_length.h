@@ -51,16 +51,16 @@ double firstOrderPhaseLag(double sigma, double omega, double speed, double halfL
 struct HarmonicYawRecord {
   double excitationFrequencyHz = 0.0;  // the commanded frequency; <= 0: estimated from the yaw rate
   double sampleRateHz = 0.0;
-  Vector yawRate;                      // gyro [rad/s] (any consistent unit; only the phase is used)
-  Vector lateralForce;                 // load cell [N]
+  Vector yawRate;       // gyro [rad/s] (any consistent unit; only the phase is used)
+  Vector lateralForce;  // load cell [N]
 };
 
 struct HarmonicYawSettings {
-  double speed = 5.0 / 3.6;       // V [m/s]; thesis §1.9: 5 km/h
-  double halfLength = 0.0;        // a [m], contact patch half-length (Table 17)
-  double forceSign = 1.0;         // -1 when the load cell reads positive for a negative F_y
-  double minCycles = 2.0;         // fewer cycles in a record: error (a sine fit needs them)
-  double bandLowHz = 0.84;        // averaging band, thesis §5.4 (0.84, 1.26, 1.68 Hz)
+  double speed = 5.0 / 3.6;  // V [m/s]; thesis §1.9: 5 km/h
+  double halfLength = 0.0;   // a [m], contact patch half-length (Table 17)
+  double forceSign = 1.0;    // -1 when the load cell reads positive for a negative F_y
+  double minCycles = 2.0;    // fewer cycles in a record: error (a sine fit needs them)
+  double bandLowHz = 0.84;   // averaging band, thesis §5.4 (0.84, 1.26, 1.68 Hz)
   double bandHighHz = 1.68;
 };
 

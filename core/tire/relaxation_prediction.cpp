@@ -15,8 +15,8 @@ Result<double> adhesionFraction(const ContactPatchInputs& in) {
     return makeError(ErrorCode::InvalidArgument, "friction coefficient must be positive", where);
   if (!std::isfinite(in.slipAngle) || std::abs(in.slipAngle) >= 1.5)
     return makeError(ErrorCode::InvalidArgument, "slip angle must be finite and well below 90 deg", where);
-  const double m = 1.0 - in.corneringStiffness * std::tan(std::abs(in.slipAngle)) /
-                             (3.0 * in.friction * in.verticalLoad);  // eq. 49
+  const double m =
+      1.0 - in.corneringStiffness * std::tan(std::abs(in.slipAngle)) / (3.0 * in.friction * in.verticalLoad);  // eq. 49
   if (m <= 0.0) {
     std::ostringstream s;
     s << "m = " << m << ": the whole contact patch slides at this slip angle (C tan(alpha) >= 3 lambda F_z)";
@@ -38,13 +38,16 @@ Result<RelaxationPrediction> predictRelaxationLength(const RingModel& ring, cons
   const double C = in.corneringStiffness;
   RelaxationPrediction p;
   p.adhesionFraction = *m;
-  p.contactPatch = in.halfLength * *m;                // a m
-  p.lateral = C / lateral->modalStiffness;            // C/C_y
-  p.camber = C / camber->modalStiffness;              // C r^2/C_xx, C_xx = C_1 r^2
-  for (const auto& mode : ring.modes) {               // C/C_res, eq. 50
-    if (mode.k == 2) p.cShaped = C / mode.modalStiffness;
-    else if (mode.k == 3) p.sShaped = C / mode.modalStiffness;
-    else if (mode.k >= 4) p.higherModes += C / mode.modalStiffness;
+  p.contactPatch = in.halfLength * *m;      // a m
+  p.lateral = C / lateral->modalStiffness;  // C/C_y
+  p.camber = C / camber->modalStiffness;    // C r^2/C_xx, C_xx = C_1 r^2
+  for (const auto& mode : ring.modes) {     // C/C_res, eq. 50
+    if (mode.k == 2)
+      p.cShaped = C / mode.modalStiffness;
+    else if (mode.k == 3)
+      p.sShaped = C / mode.modalStiffness;
+    else if (mode.k >= 4)
+      p.higherModes += C / mode.modalStiffness;
   }
   return p;
 }

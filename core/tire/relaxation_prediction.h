@@ -17,10 +17,10 @@
 namespace mozzi::core::tire {
 
 struct ContactPatchInputs {
-  double halfLength = 0.0;          // a [m] (Table 17)
-  double corneringStiffness = 0.0;  // C_bFalpha [N/rad]
-  double verticalLoad = 0.0;        // F_z [N]
-  double friction = 1.0;            // lambda
+  double halfLength = 0.0;                                  // a [m] (Table 17)
+  double corneringStiffness = 0.0;                          // C_bFalpha [N/rad]
+  double verticalLoad = 0.0;                                // F_z [N]
+  double friction = 1.0;                                    // lambda
   double slipAngle = 1.5 * 3.14159265358979323846 / 180.0;  // alpha [rad], §5.4: 1.5 deg
 };
 
@@ -30,16 +30,16 @@ Result<double> adhesionFraction(const ContactPatchInputs& in);
 
 // Per-term contributions of Fig. 43, all [m].
 struct RelaxationPrediction {
-  double adhesionFraction = 0.0;  // m
-  double contactPatch = 0.0;      // sigma_c = a m
-  double camber = 0.0;            // C/C_1 = C r^2/C_xx
-  double lateral = 0.0;           // C/C_0
-  double cShaped = 0.0;           // C/C_2
-  double sShaped = 0.0;           // C/C_3
-  double higherModes = 0.0;       // C sum_{k>=4} 1/C_k
+  double adhesionFraction = 0.0;                                       // m
+  double contactPatch = 0.0;                                           // sigma_c = a m
+  double camber = 0.0;                                                 // C/C_1 = C r^2/C_xx
+  double lateral = 0.0;                                                // C/C_0
+  double cShaped = 0.0;                                                // C/C_2
+  double sShaped = 0.0;                                                // C/C_3
+  double higherModes = 0.0;                                            // C sum_{k>=4} 1/C_k
   double residual() const { return cShaped + sShaped + higherModes; }  // C/C_res
   double carcass() const { return camber + lateral + residual(); }
-  double total() const { return contactPatch + carcass(); }           // eq. 48
+  double total() const { return contactPatch + carcass(); }  // eq. 48
 };
 
 // Needs modes k = 0 and k = 1 (eq. 48 has no meaning without them); k = 2, 3

@@ -29,7 +29,9 @@ Result<void> checkK(int k, std::set<int>& seen, const std::string& where) {
 
 }  // namespace
 
-double ringModalMassFactor(int k) { return k == 0 ? 1.0 : 0.5; }
+double ringModalMassFactor(int k) {
+  return k == 0 ? 1.0 : 0.5;
+}
 
 std::string ringModeName(int k) {
   switch (k) {
@@ -55,8 +57,7 @@ double RingModel::staticLateralCompliance() const {
 
 Complex RingModel::lateralCompliance(double omega, bool withDamping) const {
   Complex g(0.0, 0.0);
-  for (const auto& m : modes)
-    g += 1.0 / Complex(m.modalStiffness, withDamping ? omega * m.dampingCoefficient : 0.0);
+  for (const auto& m : modes) g += 1.0 / Complex(m.modalStiffness, withDamping ? omega * m.dampingCoefficient : 0.0);
   return g;
 }
 
@@ -81,8 +82,8 @@ Result<RingModel> identifyRingModel(const std::vector<RingModeInput>& in, const 
     m.naturalFrequencyHz = mi.naturalFrequencyHz;
     m.dampingRatio = mi.dampingRatio;
     const double w = 2.0 * kPi * mi.naturalFrequencyHz;
-    m.modalMass = model.ringMass * ringModalMassFactor(mi.k);               // eq. 45
-    m.modalStiffness = m.modalMass * w * w;                                 // eq. 46
+    m.modalMass = model.ringMass * ringModalMassFactor(mi.k);                                  // eq. 45
+    m.modalStiffness = m.modalMass * w * w;                                                    // eq. 46
     m.dampingCoefficient = 2.0 * mi.dampingRatio * std::sqrt(m.modalStiffness * m.modalMass);  // eq. 47 corrected
     model.modes.push_back(m);
   }
@@ -108,7 +109,7 @@ Result<RingModel> ringModelFromStiffness(const std::vector<RingStiffnessInput>& 
     RingMode m;
     m.k = mi.k;
     m.name = ringModeName(mi.k);
-    m.modalMass = model.ringMass * ringModalMassFactor(mi.k);                    // eq. 45
+    m.modalMass = model.ringMass * ringModalMassFactor(mi.k);  // eq. 45
     m.modalStiffness = mi.modalStiffness;
     m.naturalFrequencyHz = std::sqrt(m.modalStiffness / m.modalMass) / (2.0 * kPi);  // eq. 46 inverted
     m.dampingRatio = mi.dampingRatio;
@@ -119,14 +120,14 @@ Result<RingModel> ringModelFromStiffness(const std::vector<RingStiffnessInput>& 
   return model;
 }
 
-Result<ComplexVector> ringFrf(const RingModel& ring, const RingFrfInputs& in, VectorRef omega,
-                              RingFrfVariant variant) {
+Result<ComplexVector> ringFrf(const RingModel& ring, const RingFrfInputs& in, VectorRef omega, RingFrfVariant variant) {
   const char* where = "ring-model FRF (thesis appendix 1)";
   if (!std::isfinite(in.speed) || in.speed <= 0.0)
     return makeError(ErrorCode::InvalidArgument, "forward speed V must be positive", where);
   if (!std::isfinite(in.halfLength) || in.halfLength < 0.0 || !std::isfinite(in.contactRelaxation) ||
       in.contactRelaxation < 0.0)
-    return makeError(ErrorCode::InvalidArgument, "half-length and contact relaxation length must not be negative", where);
+    return makeError(ErrorCode::InvalidArgument, "half-length and contact relaxation length must not be negative",
+                     where);
   if (!std::isfinite(in.corneringStiffness) || in.corneringStiffness <= 0.0)
     return makeError(ErrorCode::InvalidArgument, "cornering stiffness must be positive", where);
   if (!std::isfinite(in.trail)) return makeError(ErrorCode::InvalidArgument, "trail must be finite", where);

@@ -31,15 +31,15 @@ double ringModalMassFactor(int k);
 std::string ringModeName(int k);
 
 struct RingModeInput {
-  int k = 0;                    // circumferential wave number, >= 0
+  int k = 0;  // circumferential wave number, >= 0
   double naturalFrequencyHz = 0.0;
-  double dampingRatio = 0.0;    // viscous zeta (not eta)
+  double dampingRatio = 0.0;  // viscous zeta (not eta)
 };
 
 struct RingModelSettings {
-  double tyreMass = 0.0;        // measured tyre mass [kg]
-  double beltShare = 0.8;       // ring share of the tyre mass (§5.3: 80%)
-  double ringRadius = 0.0;      // r [m], for C_xx = C_1 r^2 and C_zz
+  double tyreMass = 0.0;    // measured tyre mass [kg]
+  double beltShare = 0.8;   // ring share of the tyre mass (§5.3: 80%)
+  double ringRadius = 0.0;  // r [m], for C_xx = C_1 r^2 and C_zz
 };
 
 struct RingMode {
@@ -53,8 +53,8 @@ struct RingMode {
 };
 
 struct RingModel {
-  double ringMass = 0.0;    // m [kg]
-  double ringRadius = 0.0;  // r [m]
+  double ringMass = 0.0;        // m [kg]
+  double ringRadius = 0.0;      // r [m]
   std::vector<RingMode> modes;  // sorted by k, one per k
 
   const RingMode* mode(int k) const;
@@ -89,11 +89,11 @@ enum class RingFrfVariant {
 };
 
 struct RingFrfInputs {
-  double speed = 5.0 / 3.6;      // V [m/s]
-  double halfLength = 0.0;       // a [m]
-  double contactRelaxation = 0.0;  // sigma_c = a m [m] (eq. 48, 49)
+  double speed = 5.0 / 3.6;         // V [m/s]
+  double halfLength = 0.0;          // a [m]
+  double contactRelaxation = 0.0;   // sigma_c = a m [m] (eq. 48, 49)
   double corneringStiffness = 0.0;  // C_bFalpha [N/rad]
-  double trail = 0.0;            // t_0 [m], pneumatic trail (M_z = -t_0 F_y)
+  double trail = 0.0;               // t_0 [m], pneumatic trail (M_z = -t_0 F_y)
 };
 
 // F_y/psi_a [N/rad], appendix 1:

@@ -9,7 +9,8 @@ namespace mozzi::core::tire {
 Result<SlopeEstimate> slopeAtOrigin(VectorRef x, VectorRef y, double halfWindow, int degree) {
   const char* where = "slope at the origin (local regression)";
   if (x.size() != y.size()) return makeError(ErrorCode::InvalidArgument, "angle and value counts differ", where);
-  if (degree < 1 || degree > 3) return makeError(ErrorCode::InvalidArgument, "polynomial degree must be 1, 2 or 3", where);
+  if (degree < 1 || degree > 3)
+    return makeError(ErrorCode::InvalidArgument, "polynomial degree must be 1, 2 or 3", where);
   if (!std::isfinite(halfWindow) || halfWindow <= 0.0)
     return makeError(ErrorCode::InvalidArgument, "regression window must be positive", where);
   for (Eigen::Index i = 0; i < x.size(); ++i)
@@ -43,7 +44,8 @@ Result<SlopeEstimate> slopeAtOrigin(VectorRef x, VectorRef y, double halfWindow,
   // Points only far from zero would make c_1 an extrapolation: require the
   // window's data to start within 10% of the window from zero.
   if (lo > 0.1 * halfWindow || hi < -0.1 * halfWindow)
-    return makeError(ErrorCode::InvalidArgument, "the sweep does not reach zero angle: the slope at the origin would be extrapolated", where);
+    return makeError(ErrorCode::InvalidArgument,
+                     "the sweep does not reach zero angle: the slope at the origin would be extrapolated", where);
   Matrix X(n, degree + 1);
   Vector b(n);
   for (int r = 0; r < n; ++r) {
@@ -72,7 +74,8 @@ Result<SweepCharacteristics> characteriseSweep(const SteadyStateSweep& s, double
   if (s.angle.size() != s.force.size() || s.angle.size() != s.torque.size())
     return makeError(ErrorCode::InvalidArgument, "angle, force and torque counts differ", where);
   if (!std::isfinite(s.verticalLoad) || s.verticalLoad <= 0.0)
-    return makeError(ErrorCode::InvalidArgument, "vertical load must be positive (normalised forces divide by it)", where);
+    return makeError(ErrorCode::InvalidArgument, "vertical load must be positive (normalised forces divide by it)",
+                     where);
   SweepCharacteristics c;
   auto f = slopeAtOrigin(s.angle, s.force, halfWindow, degree);
   if (!f) return makeError(f.error().code, f.error().message, std::string(where) + ", force: " + f.error().where);

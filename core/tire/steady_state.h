@@ -20,8 +20,8 @@ namespace mozzi::core::tire {
 struct SlopeEstimate {
   double slope = 0.0;
   double slopeStdError = 0.0;
-  double intercept = 0.0;   // c_0: force or torque at zero angle (conicity, ply steer, offset)
-  int points = 0;           // n used
+  double intercept = 0.0;  // c_0: force or torque at zero angle (conicity, ply steer, offset)
+  int points = 0;          // n used
   int degree = 0;
 };
 
@@ -42,10 +42,10 @@ struct SteadyStateSweep {
 };
 
 struct SweepCharacteristics {
-  SlopeEstimate forceSlope;   // cornering stiffness [N/rad] (slip sweep) or camber stiffness (camber sweep)
-  SlopeEstimate torqueSlope;  // aligning torque stiffness [N m/rad] or twisting torque stiffness
-  Vector normalisedForce;     // F_y/F_z [-]
-  Vector normalisedTorque;    // M_z/F_z [m]
+  SlopeEstimate forceSlope;           // cornering stiffness [N/rad] (slip sweep) or camber stiffness (camber sweep)
+  SlopeEstimate torqueSlope;          // aligning torque stiffness [N m/rad] or twisting torque stiffness
+  Vector normalisedForce;             // F_y/F_z [-]
+  Vector normalisedTorque;            // M_z/F_z [m]
   double normalisedForceSlope = 0.0;  // (dF_y/dangle)/F_z [1/rad]
 };
 

@@ -75,9 +75,10 @@ Result<Table> readCsv(const std::string& path, const std::vector<std::string>& r
       continue;
     }
     if (cells.size() != t.header.size())
-      return makeError(ErrorCode::ParseError,
-                       "expected " + std::to_string(t.header.size()) + " columns, found " + std::to_string(cells.size()),
-                       path + ":" + std::to_string(n));
+      return makeError(
+          ErrorCode::ParseError,
+          "expected " + std::to_string(t.header.size()) + " columns, found " + std::to_string(cells.size()),
+          path + ":" + std::to_string(n));
     std::vector<double> row;
     for (std::size_t i = 0; i < cells.size(); ++i) {
       char* end = nullptr;
@@ -98,7 +99,8 @@ Result<Table> readCsv(const std::string& path, const std::vector<std::string>& r
 }
 
 // "a:b:c,d:e:f" -> rows of numbers.
-Result<std::vector<std::vector<double>>> parseTuples(const std::string& text, std::size_t width, const std::string& opt) {
+Result<std::vector<std::vector<double>>> parseTuples(const std::string& text, std::size_t width,
+                                                     const std::string& opt) {
   std::vector<std::vector<double>> out;
   std::stringstream ss(text);
   std::string item;
@@ -171,13 +173,17 @@ int relaxation(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     std::size_t j = i;
     while (j < t->rows.size() && t->rows[j][cf] == t->rows[i][cf]) ++j;
     const std::size_t n = j - i;
-    if (n < 4) return fail(err, "relaxation", makeError(ErrorCode::ParseError, "fewer than 4 samples at one frequency", file + ":" + std::to_string(t->lines[i])));
+    if (n < 4)
+      return fail(err, "relaxation",
+                  makeError(ErrorCode::ParseError, "fewer than 4 samples at one frequency",
+                            file + ":" + std::to_string(t->lines[i])));
     const double dt = (t->rows[j - 1][ct] - t->rows[i][ct]) / static_cast<double>(n - 1);
     for (std::size_t k = i + 1; k < j; ++k) {
       const double step = t->rows[k][ct] - t->rows[k - 1][ct];
       if (!(dt > 0.0) || std::abs(step - dt) > 1e-3 * dt)
-        return fail(err, "relaxation", makeError(ErrorCode::ParseError, "time_s is not uniformly sampled and increasing",
-                                                 file + ":" + std::to_string(t->lines[k])));
+        return fail(err, "relaxation",
+                    makeError(ErrorCode::ParseError, "time_s is not uniformly sampled and increasing",
+                              file + ":" + std::to_string(t->lines[k])));
     }
     tr::HarmonicYawRecord r;
     r.excitationFrequencyHz = t->rows[i][cf];
@@ -196,14 +202,21 @@ int relaxation(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
   if (a.flag("--json")) {
     Json pts = Json::array();
     for (const auto& p : res->points) {
-      Json j = {{"frequency_hz", p.frequencyHz}, {"phase_lag_rad", p.phaseLagRad},
-                {"phase_lag_std_error_rad", p.phaseLagStdError}, {"valid", p.valid}};
-      if (p.valid) j["sigma_m"] = p.sigma, j["sigma_std_error_m"] = p.sigmaStdError;
-      else j["note"] = p.note;
+      Json j = {{"frequency_hz", p.frequencyHz},
+                {"phase_lag_rad", p.phaseLagRad},
+                {"phase_lag_std_error_rad", p.phaseLagStdError},
+                {"valid", p.valid}};
+      if (p.valid)
+        j["sigma_m"] = p.sigma, j["sigma_std_error_m"] = p.sigmaStdError;
+      else
+        j["note"] = p.note;
       pts.push_back(j);
     }
-    out << Json{{"points", pts}, {"mean_sigma_m", res->meanSigma}, {"mean_sigma_std_error_m", res->meanSigmaStdError},
-                {"band_scatter_m", res->bandScatter}, {"points_in_band", res->pointsInBand},
+    out << Json{{"points", pts},
+                {"mean_sigma_m", res->meanSigma},
+                {"mean_sigma_std_error_m", res->meanSigmaStdError},
+                {"band_scatter_m", res->bandScatter},
+                {"points_in_band", res->pointsInBand},
                 {"band_hz", {s.bandLowHz, s.bandHighHz}}}
                .dump(2)
         << "\n";
@@ -222,8 +235,8 @@ int relaxation(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     out << line << (p.valid ? "" : p.note + "\n");
   }
   char line[160];
-  std::snprintf(line, sizeof line, "mean over %.2f-%.2f Hz (%d points): %.4f +- %.4f m (scatter %.4f m)\n",
-                s.bandLowHz, s.bandHighHz, res->pointsInBand, res->meanSigma, res->meanSigmaStdError, res->bandScatter);
+  std::snprintf(line, sizeof line, "mean over %.2f-%.2f Hz (%d points): %.4f +- %.4f m (scatter %.4f m)\n", s.bandLowHz,
+                s.bandHighHz, res->pointsInBand, res->meanSigma, res->meanSigmaStdError, res->bandScatter);
   out << line;
   return kExitOk;
 }
@@ -232,9 +245,13 @@ int relaxation(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
 Json ringJson(const tr::RingModel& r) {
   Json modes = Json::array();
   for (const auto& m : r.modes)
-    modes.push_back({{"k", m.k}, {"name", m.name}, {"natural_frequency_hz", m.naturalFrequencyHz},
-                     {"damping_ratio", m.dampingRatio}, {"modal_mass_kg", m.modalMass},
-                     {"modal_stiffness_n_per_m", m.modalStiffness}, {"damping_n_s_per_m", m.dampingCoefficient}});
+    modes.push_back({{"k", m.k},
+                     {"name", m.name},
+                     {"natural_frequency_hz", m.naturalFrequencyHz},
+                     {"damping_ratio", m.dampingRatio},
+                     {"modal_mass_kg", m.modalMass},
+                     {"modal_stiffness_n_per_m", m.modalStiffness},
+                     {"damping_n_s_per_m", m.dampingCoefficient}});
   return {{"ring_mass_kg", r.ringMass}, {"ring_radius_m", r.ringRadius}, {"modes", modes}};
 }
 
@@ -262,17 +279,24 @@ int ring(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
   tr::RingModelSettings s{*mass, share.value_or(0.8), *radius};
   auto r = tr::identifyRingModel(in, s);
   if (!r) return fail(err, "ring", r.error());
-  if (a.flag("--json")) out << ringJson(*r).dump(2) << "\n";
-  else printRing(*r, out);
+  if (a.flag("--json"))
+    out << ringJson(*r).dump(2) << "\n";
+  else
+    printRing(*r, out);
   return kExitOk;
 }
 
 // ---- predict ------------------------------------------------------------------
 int predict(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
   std::optional<double> C, load, half, friction, trail, mass, radius, zeta;
-  for (auto [n, v] : std::vector<std::pair<const char*, std::optional<double>*>>{
-           {"--cornering-stiffness", &C}, {"--load", &load}, {"--half-length", &half}, {"--friction", &friction},
-           {"--trail", &trail}, {"--mass", &mass}, {"--radius", &radius}, {"--damping-ratio", &zeta}})
+  for (auto [n, v] : std::vector<std::pair<const char*, std::optional<double>*>>{{"--cornering-stiffness", &C},
+                                                                                 {"--load", &load},
+                                                                                 {"--half-length", &half},
+                                                                                 {"--friction", &friction},
+                                                                                 {"--trail", &trail},
+                                                                                 {"--mass", &mass},
+                                                                                 {"--radius", &radius},
+                                                                                 {"--damping-ratio", &zeta}})
     if (!number(a, n, *v, err)) return kExitUsage;
   std::vector<tr::RingStiffnessInput> stiff;
   std::vector<std::pair<double, double>> contact;  // pressure [Pa], a [m]
@@ -288,9 +312,13 @@ int predict(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     };
     for (const auto& t : tr::thesisTyres())
       if (squash(t.size) == squash(*size)) found = &t;
-    if (!found) return usage(err, "unknown thesis tyre '" + *size + "' (120/70R17, 180/55R17, 110/70-16, 140/70-14, 120/70-12, 130/70-12)");
+    if (!found)
+      return usage(err, "unknown thesis tyre '" + *size +
+                            "' (120/70R17, 180/55R17, 110/70-16, 140/70-14, 120/70-12, 130/70-12)");
     label = found->size + " (thesis Tables 16, 17; assumed inputs in docs/validation/tire.md)";
-    stiff = {{0, found->lateralStiffness, z}, {1, found->camberStiffness, z}, {2, found->cShapedStiffness, z},
+    stiff = {{0, found->lateralStiffness, z},
+             {1, found->camberStiffness, z},
+             {2, found->cShapedStiffness, z},
              {3, found->sShapedStiffness, z}};
     fz = load.value_or(found->testLoad);
     cAlpha = C.value_or(tr::kAssumedNormalisedCorneringStiffness * fz);
@@ -301,7 +329,8 @@ int predict(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     if (half) contact = {{0.0, *half}};
   } else {
     const auto st = a.value("--stiffness");
-    if (!st || !C || !load) return usage(err, "predict needs --thesis-tyre, or --stiffness, --cornering-stiffness and --load");
+    if (!st || !C || !load)
+      return usage(err, "predict needs --thesis-tyre, or --stiffness, --cornering-stiffness and --load");
     auto tuples = parseTuples(*st, 2, "--stiffness");
     if (!tuples) return usage(err, tuples.error().describe());
     for (const auto& t : *tuples) stiff.push_back({static_cast<int>(t[0]), t[1], z});
@@ -313,7 +342,8 @@ int predict(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     } else if (auto file = a.value("--contact")) {
       auto t = readCsv(*file, {"pressure_bar", "half_length_m"});
       if (!t) return fail(err, "predict", t.error());
-      for (const auto& r : t->rows) contact.push_back({r[t->column("pressure_bar")] * 1e5, r[t->column("half_length_m")]});
+      for (const auto& r : t->rows)
+        contact.push_back({r[t->column("pressure_bar")] * 1e5, r[t->column("half_length_m")]});
     } else {
       return usage(err, "predict needs --half-length or --contact PRESSURES.csv");
     }
@@ -341,10 +371,16 @@ int predict(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
   for (std::size_t i = 0; i < pred->size(); ++i) {
     const auto& pp = (*pred)[i];
     const auto& r = pp.prediction;
-    Json j = {{"pressure_bar", pp.pressure / 1e5}, {"half_length_m", cases[i].contact.halfLength},
-              {"adhesion_fraction", r.adhesionFraction}, {"contact_patch_m", r.contactPatch},
-              {"camber_m", r.camber}, {"lateral_m", r.lateral}, {"c_shaped_m", r.cShaped},
-              {"s_shaped_m", r.sShaped}, {"higher_modes_m", r.higherModes}, {"sigma_m", r.total()}};
+    Json j = {{"pressure_bar", pp.pressure / 1e5},
+              {"half_length_m", cases[i].contact.halfLength},
+              {"adhesion_fraction", r.adhesionFraction},
+              {"contact_patch_m", r.contactPatch},
+              {"camber_m", r.camber},
+              {"lateral_m", r.lateral},
+              {"c_shaped_m", r.cShaped},
+              {"s_shaped_m", r.sShaped},
+              {"higher_modes_m", r.higherModes},
+              {"sigma_m", r.total()}};
     char line[200];
     std::snprintf(line, sizeof line, "  %7.2f  %6.3f  %5.3f  %7.4f  %6.4f  %7.4f  %7.4f  %7.4f   %8.4f\n",
                   pp.pressure / 1e5, cases[i].contact.halfLength, r.adhesionFraction, r.contactPatch, r.camber,
@@ -368,8 +404,10 @@ int predict(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
           sig.push_back(ok ? Json(s->sigma[k]) : Json(nullptr));
           if (!a.flag("--json")) {
             char c[64];
-            if (ok) std::snprintf(c, sizeof c, " %.2f Hz %.4f m", freqs[static_cast<std::size_t>(k)], s->sigma[k]);
-            else std::snprintf(c, sizeof c, " %.2f Hz out of range", freqs[static_cast<std::size_t>(k)]);
+            if (ok)
+              std::snprintf(c, sizeof c, " %.2f Hz %.4f m", freqs[static_cast<std::size_t>(k)], s->sigma[k]);
+            else
+              std::snprintf(c, sizeof c, " %.2f Hz out of range", freqs[static_cast<std::size_t>(k)]);
             out << c;
           }
         }
@@ -381,8 +419,12 @@ int predict(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     rows.push_back(j);
   }
   if (a.flag("--json"))
-    out << Json{{"tyre", label}, {"cornering_stiffness_n_per_rad", cAlpha}, {"load_n", fz}, {"friction", lambda},
-                {"ring", ringJson(*ringModel)}, {"pressures", rows}}
+    out << Json{{"tyre", label},
+                {"cornering_stiffness_n_per_rad", cAlpha},
+                {"load_n", fz},
+                {"friction", lambda},
+                {"ring", ringJson(*ringModel)},
+                {"pressures", rows}}
                .dump(2)
         << "\n";
   return kExitOk;
@@ -416,7 +458,8 @@ int steady(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
   }
   const double win = window.value_or(3.0) * kDeg;
   Json js = Json::array();
-  if (!a.flag("--json")) out << "steady-state slopes at the origin (local quadratic regression over +-" << win / kDeg << " deg)\n";
+  if (!a.flag("--json"))
+    out << "steady-state slopes at the origin (local quadratic regression over +-" << win / kDeg << " deg)\n";
   for (const auto& [key, idx] : sweeps) {
     if (idx.size() < 4) continue;  // a lone zero-angle point of the other sweep kind
     tr::SteadyStateSweep s;
@@ -434,22 +477,31 @@ int steady(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     auto c = tr::characteriseSweep(s, win, 2);
     if (!c) {
       auto e = c.error();
-      e.where = file + ", " + (key.camberSweep ? "camber" : "slip") + " sweep at " + std::to_string(key.load) +
-                " N, " + std::to_string(key.pressure) + " bar (line " + std::to_string(t->lines[idx.front()]) + "): " + e.where;
+      e.where = file + ", " + (key.camberSweep ? "camber" : "slip") + " sweep at " + std::to_string(key.load) + " N, " +
+                std::to_string(key.pressure) + " bar (line " + std::to_string(t->lines[idx.front()]) + "): " + e.where;
       return fail(err, "steady", e);
     }
     const char* fName = key.camberSweep ? "camber_stiffness_n_per_rad" : "cornering_stiffness_n_per_rad";
-    const char* mName = key.camberSweep ? "twisting_torque_stiffness_nm_per_rad" : "aligning_torque_stiffness_nm_per_rad";
-    js.push_back({{"sweep", key.camberSweep ? "camber" : "slip"}, {"load_n", key.load}, {"pressure_bar", key.pressure},
-                  {fName, c->forceSlope.slope}, {std::string(fName) + "_std_error", c->forceSlope.slopeStdError},
-                  {mName, c->torqueSlope.slope}, {std::string(mName) + "_std_error", c->torqueSlope.slopeStdError},
-                  {"normalised_force_slope_per_rad", c->normalisedForceSlope},
-                  {"normalised_force", std::vector<double>(c->normalisedForce.data(), c->normalisedForce.data() + c->normalisedForce.size())},
-                  {"normalised_torque_m", std::vector<double>(c->normalisedTorque.data(), c->normalisedTorque.data() + c->normalisedTorque.size())}});
+    const char* mName =
+        key.camberSweep ? "twisting_torque_stiffness_nm_per_rad" : "aligning_torque_stiffness_nm_per_rad";
+    js.push_back(
+        {{"sweep", key.camberSweep ? "camber" : "slip"},
+         {"load_n", key.load},
+         {"pressure_bar", key.pressure},
+         {fName, c->forceSlope.slope},
+         {std::string(fName) + "_std_error", c->forceSlope.slopeStdError},
+         {mName, c->torqueSlope.slope},
+         {std::string(mName) + "_std_error", c->torqueSlope.slopeStdError},
+         {"normalised_force_slope_per_rad", c->normalisedForceSlope},
+         {"normalised_force",
+          std::vector<double>(c->normalisedForce.data(), c->normalisedForce.data() + c->normalisedForce.size())},
+         {"normalised_torque_m",
+          std::vector<double>(c->normalisedTorque.data(), c->normalisedTorque.data() + c->normalisedTorque.size())}});
     if (!a.flag("--json")) {
       char line[240];
       std::snprintf(line, sizeof line,
-                    "  %-6s sweep  F_z %6.0f N  p %4.2f bar: %s %9.1f +- %6.1f N/rad (%.2f /rad of F_z), %s %8.2f +- %5.2f Nm/rad\n",
+                    "  %-6s sweep  F_z %6.0f N  p %4.2f bar: %s %9.1f +- %6.1f N/rad (%.2f /rad of F_z), %s %8.2f +- "
+                    "%5.2f Nm/rad\n",
                     key.camberSweep ? "camber" : "slip", key.load, key.pressure,
                     key.camberSweep ? "C_gamma" : "C_alpha", c->forceSlope.slope, c->forceSlope.slopeStdError,
                     c->normalisedForceSlope, key.camberSweep ? "C_twist" : "C_Mz", c->torqueSlope.slope,
@@ -474,9 +526,12 @@ int steady(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
         name = trim(name);
         const auto& ln = tr::mfLateralNames();
         const auto& an = tr::mfAligningNames();
-        if (std::find(ln.begin(), ln.end(), name) != ln.end()) latOpt.fixed.insert(name);
-        else if (std::find(an.begin(), an.end(), name) != an.end()) alOpt.fixed.insert(name);
-        else return usage(err, "--hold: unknown Magic Formula coefficient '" + name + "'");
+        if (std::find(ln.begin(), ln.end(), name) != ln.end())
+          latOpt.fixed.insert(name);
+        else if (std::find(an.begin(), an.end(), name) != an.end())
+          alOpt.fixed.insert(name);
+        else
+          return usage(err, "--hold: unknown Magic Formula coefficient '" + name + "'");
       }
     }
     auto lat = tr::fitMfLateral(pts, c, latOpt);
@@ -485,22 +540,29 @@ int steady(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     if (!al) return fail(err, "steady --magic-formula", al.error());
     Json lj, aj;
     for (int i = 0; i < tr::kMfLateralCount; ++i)
-      lj[tr::mfLateralNames()[i]] = {{"value", lat->value[i]}, {"std_error", lat->stdError[i]}, {"free", bool(lat->free[i])}};
+      lj[tr::mfLateralNames()[i]] = {
+          {"value", lat->value[i]}, {"std_error", lat->stdError[i]}, {"free", bool(lat->free[i])}};
     for (int i = 0; i < tr::kMfAligningCount; ++i)
-      aj[tr::mfAligningNames()[i]] = {{"value", al->value[i]}, {"std_error", al->stdError[i]}, {"free", bool(al->free[i])}};
-    result["magic_formula"] = {{"nominal_load_n", c.nominalLoad}, {"nominal_pressure_bar", c.nominalPressure / 1e5},
+      aj[tr::mfAligningNames()[i]] = {
+          {"value", al->value[i]}, {"std_error", al->stdError[i]}, {"free", bool(al->free[i])}};
+    result["magic_formula"] = {{"nominal_load_n", c.nominalLoad},
+                               {"nominal_pressure_bar", c.nominalPressure / 1e5},
                                {"unloaded_radius_m", c.unloadedRadius},
-                               {"lateral", lj}, {"lateral_rms_residual_n", lat->rmsResidual},
+                               {"lateral", lj},
+                               {"lateral_rms_residual_n", lat->rmsResidual},
                                {"lateral_held_by_data", lat->heldByData},
-                               {"aligning", aj}, {"aligning_rms_residual_nm", al->rmsResidual},
+                               {"aligning", aj},
+                               {"aligning_rms_residual_nm", al->rmsResidual},
                                {"aligning_held_by_data", al->heldByData}};
     if (!a.flag("--json")) {
       out << "Magic Formula (Pacejka 2002 style), F_z0 " << c.nominalLoad << " N, p0 " << c.nominalPressure / 1e5
           << " bar; F_y rms " << lat->rmsResidual << " N, M_z rms " << al->rmsResidual << " Nm\n";
       for (int i = 0; i < tr::kMfLateralCount; ++i)
-        if (lat->free[i]) out << "  " << tr::mfLateralNames()[i] << " = " << lat->value[i] << " +- " << lat->stdError[i] << "\n";
+        if (lat->free[i])
+          out << "  " << tr::mfLateralNames()[i] << " = " << lat->value[i] << " +- " << lat->stdError[i] << "\n";
       for (int i = 0; i < tr::kMfAligningCount; ++i)
-        if (al->free[i]) out << "  " << tr::mfAligningNames()[i] << " = " << al->value[i] << " +- " << al->stdError[i] << "\n";
+        if (al->free[i])
+          out << "  " << tr::mfAligningNames()[i] << " = " << al->value[i] << " +- " << al->stdError[i] << "\n";
       out << "  held (data cannot determine them):";
       for (const auto& n : lat->heldByData) out << " " << n;
       for (const auto& n : al->heldByData) out << " " << n;
@@ -512,10 +574,27 @@ int steady(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
 }
 
 int tireCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const OptionSpec spec{{"--half-length", "--speed", "--force-sign", "--band", "--modes", "--mass", "--radius",
-                         "--belt-share", "--thesis-tyre", "--stiffness", "--cornering-stiffness", "--load",
-                         "--contact", "--friction", "--trail", "--frequencies", "--damping-ratio", "--window",
-                         "--nominal-load", "--nominal-pressure", "--hold"},
+  const OptionSpec spec{{"--half-length",
+                         "--speed",
+                         "--force-sign",
+                         "--band",
+                         "--modes",
+                         "--mass",
+                         "--radius",
+                         "--belt-share",
+                         "--thesis-tyre",
+                         "--stiffness",
+                         "--cornering-stiffness",
+                         "--load",
+                         "--contact",
+                         "--friction",
+                         "--trail",
+                         "--frequencies",
+                         "--damping-ratio",
+                         "--window",
+                         "--nominal-load",
+                         "--nominal-pressure",
+                         "--hold"},
                         {"--json", "--magic-formula"}};
   const auto parsed = ParsedArgs::parse(args, spec);
   if (!parsed) return usage(err, parsed.error().describe());
@@ -528,9 +607,9 @@ int tireCommand(const std::vector<std::string>& args, std::ostream& out, std::os
   return usage(err, "unknown subcommand '" + sub + "'");
 }
 
-const CommandRegistrar kRegistrar({"tire", "relaxation|ring|predict|steady ... [--json]",
-                                   "Tyre relaxation length, ring modal model, prediction, steady-state and Magic Formula",
-                                   tireCommand});
+const CommandRegistrar kRegistrar(
+    {"tire", "relaxation|ring|predict|steady ... [--json]",
+     "Tyre relaxation length, ring modal model, prediction, steady-state and Magic Formula", tireCommand});
 
 }  // namespace
 }  // namespace mozzi::cli

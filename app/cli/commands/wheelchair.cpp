@@ -32,14 +32,22 @@ int usage(std::ostream& err, const std::string& msg) {
 }
 
 Json steadyJson(const st::SteadyTurn& s) {
-  return {{"u_m_s", s.u}, {"v_m_s", s.v}, {"yaw_rate_rad_s", s.r}, {"radius_m", s.radius},
-          {"slip_right_rad", s.slipRight}, {"slip_left_rad", s.slipLeft}, {"caster_right_rad", s.deltaRight},
-          {"caster_left_rad", s.deltaLeft}, {"common_torque_nm", s.commonTorque}};
+  return {{"u_m_s", s.u},
+          {"v_m_s", s.v},
+          {"yaw_rate_rad_s", s.r},
+          {"radius_m", s.radius},
+          {"slip_right_rad", s.slipRight},
+          {"slip_left_rad", s.slipLeft},
+          {"caster_right_rad", s.deltaRight},
+          {"caster_left_rad", s.deltaLeft},
+          {"common_torque_nm", s.commonTorque}};
 }
 
 Json slalomJson(const st::SlalomSummary& s) {
-  return {{"lateral_amplitude_m", s.lateralAmplitude}, {"slip_amplitude_right_rad", s.slipAmplitudeRight},
-          {"slip_amplitude_left_rad", s.slipAmplitudeLeft}, {"slip_mean_right_rad", s.slipMeanRight},
+  return {{"lateral_amplitude_m", s.lateralAmplitude},
+          {"slip_amplitude_right_rad", s.slipAmplitudeRight},
+          {"slip_amplitude_left_rad", s.slipAmplitudeLeft},
+          {"slip_mean_right_rad", s.slipMeanRight},
           {"slip_mean_left_rad", s.slipMeanLeft}};
 }
 
@@ -53,12 +61,18 @@ int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, s
   if (a->positional().size() != 1) return usage(err, "expected one subcommand");
   st::WheelchairParameters p;
   double speed = 4.0 / 3.6, torque = 6.0, frequency = 0.25, duration = 20.0, slalomTorque = 10.0;
-  const std::vector<std::pair<const char*, double*>> numbers = {
-      {"--speed", &speed}, {"--torque", &torque}, {"--frequency", &frequency}, {"--duration", &duration},
-      {"--slalom-torque", &slalomTorque}, {"--mass", &p.mass}, {"--yaw-inertia", &p.yawInertia},
-      {"--rear-axle-behind", &p.rearAxleBehindCoM}, {"--caster-ahead", &p.casterAheadOfCoM},
-      {"--half-track", &p.rearHalfTrack}, {"--cornering-stiffness", &p.rearCorneringStiffness},
-      {"--aligning-stiffness", &p.rearAligningStiffness}};
+  const std::vector<std::pair<const char*, double*>> numbers = {{"--speed", &speed},
+                                                                {"--torque", &torque},
+                                                                {"--frequency", &frequency},
+                                                                {"--duration", &duration},
+                                                                {"--slalom-torque", &slalomTorque},
+                                                                {"--mass", &p.mass},
+                                                                {"--yaw-inertia", &p.yawInertia},
+                                                                {"--rear-axle-behind", &p.rearAxleBehindCoM},
+                                                                {"--caster-ahead", &p.casterAheadOfCoM},
+                                                                {"--half-track", &p.rearHalfTrack},
+                                                                {"--cornering-stiffness", &p.rearCorneringStiffness},
+                                                                {"--aligning-stiffness", &p.rearAligningStiffness}};
   for (const auto& [name, target] : numbers) {
     auto v = a->number(name);
     if (!v) return usage(err, v.error().describe());
@@ -135,7 +149,8 @@ int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, s
       return kExitFailure;
     }
     Json j = Json::array();
-    if (!json) out << *which << " stiffness x   radius [m]  slip R [deg]  slip L [deg]  slalom y [m]  slalom slip R [deg]\n";
+    if (!json)
+      out << *which << " stiffness x   radius [m]  slip R [deg]  slip L [deg]  slalom y [m]  slalom slip R [deg]\n";
     for (const auto& c : *cases) {
       j.push_back({{"factor", c.factor}, {"steady", steadyJson(c.steady)}, {"slalom", slalomJson(c.slalom)}});
       char line[200];

@@ -29,7 +29,9 @@ CliRun run(const std::vector<std::string>& args) {
   return {code, out.str(), err.str()};
 }
 
-std::string tempPath(const std::string& name) { return std::string(MOZZI_BINARY_DIR) + "/tire_cli_" + name; }
+std::string tempPath(const std::string& name) {
+  return std::string(MOZZI_BINARY_DIR) + "/tire_cli_" + name;
+}
 
 // First-order tyre, sigma = 0.15 m, a = 0.07 m, V = 5 km/h, 10 cycles at
 // each §5.1 frequency, 200 Hz, no noise.
@@ -103,8 +105,10 @@ TEST(TireCli, SteadyGivesCorneringStiffnessAndRejectsNonMonotonicSweeps) {
   {
     std::ofstream f(path);
     f << std::setprecision(17) << "slip_deg,camber_deg,load_n,pressure_bar,force_n,torque_nm\n";
-    for (int i = 0; i <= 5; ++i) f << i << ",0,400,4," << 4000.0 * i * kPi / 180 << "," << -30.0 * i * kPi / 180 << "\n";
-    for (int i = 1; i <= 10; ++i) f << "0," << i << ",400,4," << 300.0 * i * kPi / 180 << "," << 2.0 * i * kPi / 180 << "\n";
+    for (int i = 0; i <= 5; ++i)
+      f << i << ",0,400,4," << 4000.0 * i * kPi / 180 << "," << -30.0 * i * kPi / 180 << "\n";
+    for (int i = 1; i <= 10; ++i)
+      f << "0," << i << ",400,4," << 300.0 * i * kPi / 180 << "," << 2.0 * i * kPi / 180 << "\n";
   }
   const auto r = run({"tire", "steady", path, "--json"});
   ASSERT_EQ(r.code, kExitOk) << r.err;
@@ -137,7 +141,7 @@ TEST(TireCli, SteadyMagicFormulaFitsOneSweepAndHoldsWhatItCannotDetermine) {
   tr::MfLateralCoefficients p = tr::mfLateralDefaults();
   p[0] = 1.35, p[1] = 1.1, p[8] = 14.0;  // pCy1, pDy1, pKy1
   tr::MfAligningCoefficients q = tr::mfAligningDefaults();
-  q[8] = 0.08;  // qDz1
+  q[8] = 0.08;    // qDz1
   q[12] = 0.003;  // qDz6: with M_zr = 0 (qDz6 = 0) qBz9 has no effect and the covariance is singular
   const tr::MfConstants c{1500.0, 2e5, 0.3};
   const std::string path = tempPath("mf.csv");

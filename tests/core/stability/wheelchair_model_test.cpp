@@ -10,7 +10,7 @@ namespace mozzi::core::stability {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kU = 4.0 / 3.6;  // §7.1 disc speed 4 km/h
+constexpr double kU = 4.0 / 3.6;     // §7.1 disc speed 4 km/h
 constexpr double kTurnTorque = 6.0;  // N m differential: radius about 1 m
 
 TEST(WheelchairSteadyTurn, SimulationSettlesOnTheAlgebraicSteadyState) {
@@ -50,7 +50,8 @@ TEST(WheelchairSteadyTurn, MatchesTheLinearClosedFormForGentleTurns) {
 
 TEST(WheelchairSteadyTurn, CorneringStiffnessStudyOfSection73) {
   const WheelchairParameters p;
-  auto cases = stiffnessSensitivity(p, WheelchairStiffness::Cornering, {0.5, 1.0, 2.0}, kU, kTurnTorque, 3.0, 0.5, 12.0);
+  auto cases =
+      stiffnessSensitivity(p, WheelchairStiffness::Cornering, {0.5, 1.0, 2.0}, kU, kTurnTorque, 3.0, 0.5, 12.0);
   ASSERT_TRUE(cases) << cases.error().describe();
   const auto& half = (*cases)[0].steady;
   const auto& nom = (*cases)[1].steady;

@@ -16,12 +16,12 @@ constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 MfLateralCoefficients trueLateral() {
   // A motorcycle-like tyre (F_z0 = 1500 N): peak mu 1.1, K_ya/F_z ~ 13/rad.
-  return {1.35, 1.1, -0.1, 2.0, -0.5, -0.2, 0.1, 0.05, 14.0, 1.8, 0.5,
-          0.002, 0.001, 0.05, 0.01, 0.005, 0.8, 0.1, -0.3, 0.5, -0.1, 0.1};
+  return {1.35,  1.1,   -0.1, 2.0,  -0.5,  -0.2, 0.1, 0.05, 14.0, 1.8,  0.5,
+          0.002, 0.001, 0.05, 0.01, 0.005, 0.8,  0.1, -0.3, 0.5,  -0.1, 0.1};
 }
 MfAligningCoefficients trueAligning() {
-  return {9.0, -1.5, 0.5, 0.3, -0.2, 10.0, 0.0, 1.2, 0.08, -0.01, 0.1, 0.5, 0.002, -0.001,
-          -0.1, 0.02, -1.5, 0.5, 0.0, 0.2, 0.3, 0.002, 0.001, 0.1, 0.05, -0.2, 0.1};
+  return {9.0,  -1.5, 0.5,  0.3, -0.2, 10.0, 0.0, 1.2,   0.08,  -0.01, 0.1,  0.5,  0.002, -0.001,
+          -0.1, 0.02, -1.5, 0.5, 0.0,  0.2,  0.3, 0.002, 0.001, 0.1,   0.05, -0.2, 0.1};
 }
 
 std::vector<SteadyStatePoint> synthesise(double noiseF, double noiseM, unsigned seed) {
@@ -120,7 +120,7 @@ TEST(MagicFormula, HoldsWhatOneConditionCannotDetermine) {
   for (auto p : synthesise(0, 0, 1))
     if (p.load == 1500.0 && p.pressure == 2e5 && p.camber == 0.0 && p.slip >= 0) d.push_back(p);
   MfFitOptions o;
-  o.fixed = {"pHy1", "pVy1", "pEy1"};  // 6 points cannot carry shifts and curvature too
+  o.fixed = {"pHy1", "pVy1", "pEy1"};           // 6 points cannot carry shifts and curvature too
   MfLateralCoefficients start = trueLateral();  // held ones true, free ones 10% off
   start[0] *= 1.1, start[1] *= 0.9, start[8] *= 1.1;
   auto fit = fitMfLateral(d, MfConstants{}, o, start);

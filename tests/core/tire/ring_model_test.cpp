@@ -15,8 +15,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 RingModel exampleRing(double zeta) {
   // 110/70-16 frequencies of the order §5.2 reports (100 Hz lateral, 170 Hz C).
-  auto r = identifyRingModel({{0, 103.0, zeta}, {1, 85.0, zeta}, {2, 183.0, zeta}, {3, 311.0, zeta}},
-                             {3.5, 0.8, 0.28});
+  auto r = identifyRingModel({{0, 103.0, zeta}, {1, 85.0, zeta}, {2, 183.0, zeta}, {3, 311.0, zeta}}, {3.5, 0.8, 0.28});
   EXPECT_TRUE(r) << r.error().describe();
   return *r;
 }
@@ -90,8 +89,8 @@ TEST(RingFrf, FirstOrderMatchesTheClosedFormAndImpliesSigmaOfEquation48) {
   auto h = ringFrf(ring, in, w, RingFrfVariant::FirstOrder);
   ASSERT_TRUE(h);
   for (Eigen::Index i = 0; i < w.size(); ++i) {
-    const Complex ref = in.corneringStiffness * Complex(in.speed, -w[i] * in.halfLength) /
-                        Complex(in.speed, w[i] * sigma);
+    const Complex ref =
+        in.corneringStiffness * Complex(in.speed, -w[i] * in.halfLength) / Complex(in.speed, w[i] * sigma);
     EXPECT_LT(std::abs((*h)[i] - ref), 1e-9 * std::abs(ref));
   }
   auto s = impliedRelaxationLength(ring, in, w, RingFrfVariant::FirstOrder);
