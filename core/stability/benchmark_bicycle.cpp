@@ -1,5 +1,7 @@
 #include "core/stability/benchmark_bicycle.h"
 
+#include "core/stability/parameter_file.h"
+
 #include <Eigen/Cholesky>
 #include <cmath>
 #include <fstream>
@@ -41,42 +43,16 @@ BenchmarkParameters meijaard2007Parameters() {
 }
 
 Result<BenchmarkParameters> loadBenchmarkParameters(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return makeError(ErrorCode::IoError, "cannot open benchmark parameter file", path);
-  std::map<std::string, double> values;
-  std::string line;
-  int lineNo = 0;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream row(line);
-    std::string name, value;
-    if (!std::getline(row, name, ',') || !std::getline(row, value, ',')) {
-      return makeError(ErrorCode::ParseError, "expected name,value", path + ":" + std::to_string(lineNo));
-    }
-    if (name == "name") continue;  // header
-    char* end = nullptr;
-    const double x = std::strtod(value.c_str(), &end);
-    if (end == value.c_str() || *end != '\0' || !std::isfinite(x)) {
-      return makeError(ErrorCode::ParseError, "value of '" + name + "' is not a number: '" + value + "'",
-                       path + ":" + std::to_string(lineNo));
-    }
-    values[name] = x;
-  }
+  auto file = readParameterFile(path, "benchmark bicycle");
+  if (!file) return file.error();
   BenchmarkParameters p;
-  const std::pair<const char*, double*> fields[] = {
+  const std::vector<std::pair<const char*, double*>> fields = {
       {"w", &p.w},       {"c", &p.c},       {"lambda", &p.lambda}, {"g", &p.g},       {"rR", &p.rR}, {"mR", &p.mR},
       {"IRxx", &p.IRxx}, {"IRyy", &p.IRyy}, {"xB", &p.xB},         {"zB", &p.zB},     {"mB", &p.mB}, {"IBxx", &p.IBxx},
       {"IBxz", &p.IBxz}, {"IByy", &p.IByy}, {"IBzz", &p.IBzz},     {"xH", &p.xH},     {"zH", &p.zH}, {"mH", &p.mH},
       {"IHxx", &p.IHxx}, {"IHxz", &p.IHxz}, {"IHyy", &p.IHyy},     {"IHzz", &p.IHzz}, {"rF", &p.rF}, {"mF", &p.mF},
       {"IFxx", &p.IFxx}, {"IFyy", &p.IFyy}};
-  for (const auto& [name, field] : fields) {
-    const auto it = values.find(name);
-    if (it == values.end())
-      return makeError(ErrorCode::ParseError, std::string("missing parameter '") + name + "'", path);
-    *field = it->second;
-  }
+  if (auto taken = takeParameters(*file, fields, path); !taken) return taken.error();
   if (auto ok = validate(p); !ok) return ok.error();
   return p;
 }

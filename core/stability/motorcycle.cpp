@@ -1,5 +1,7 @@
 #include "core/stability/motorcycle.h"
 
+#include "core/stability/parameter_file.h"
+
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <cmath>
@@ -10,46 +12,17 @@
 namespace mozzi::core::stability {
 
 Result<SharpParameters> loadSharpParameters(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return makeError(ErrorCode::IoError, "cannot open motorcycle parameter file", path);
-  std::map<std::string, double> values;
+  auto file = readParameterFile(path, "motorcycle");
+  if (!file) return file.error();
   SharpParameters p;
-  std::string line;
-  int lineNo = 0;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty()) continue;
-    if (line[0] == '#') {
-      p.trust += (p.trust.empty() ? "" : " ") + line.substr(line.find_first_not_of("# "));
-      continue;
-    }
-    std::istringstream row(line);
-    std::string name, value;
-    if (!std::getline(row, name, ',') || !std::getline(row, value, ',')) {
-      return makeError(ErrorCode::ParseError, "expected name,value_si,...", path + ":" + std::to_string(lineNo));
-    }
-    if (name == "name") continue;
-    char* end = nullptr;
-    const double x = std::strtod(value.c_str(), &end);
-    if (end == value.c_str() || *end != '\0' || !std::isfinite(x)) {
-      return makeError(ErrorCode::ParseError, "value of '" + name + "' is not a number: '" + value + "'",
-                       path + ":" + std::to_string(lineNo));
-    }
-    values[name] = x;
-  }
-  const std::pair<const char*, double*> fields[] = {
+  p.trust = file->comments;
+  const std::vector<std::pair<const char*, double*>> fields = {
       {"Mf", &p.Mf},     {"Mr", &p.Mr},   {"Zf", &p.Zf},   {"Irx", &p.Irx}, {"Irz", &p.Irz},
       {"Crxz", &p.Crxz}, {"Ifx", &p.Ifx}, {"Ifz", &p.Ifz}, {"ify", &p.ify}, {"iry_plus_lambda_i", &p.iry},
       {"a", &p.a},       {"b", &p.b},     {"e", &p.e},     {"f", &p.f},     {"h", &p.h},
       {"Rf", &p.Rf},     {"Rr", &p.Rr},   {"t", &p.t},     {"eps", &p.eps}, {"Cf1", &p.Cf1},
       {"Cf2", &p.Cf2},   {"Cr1", &p.Cr1}, {"Cr2", &p.Cr2}, {"K", &p.K},     {"sigma", &p.sigma}};
-  for (const auto& [name, field] : fields) {
-    const auto it = values.find(name);
-    if (it == values.end())
-      return makeError(ErrorCode::ParseError, std::string("missing parameter '") + name + "'", path);
-    *field = it->second;
-  }
+  if (auto taken = takeParameters(*file, fields, path); !taken) return taken.error();
   const std::pair<const char*, double> positive[] = {
       {"Mf", p.Mf}, {"Mr", p.Mr}, {"Irx", p.Irx}, {"Irz", p.Irz}, {"Ifx", p.Ifx}, {"Ifz", p.Ifz},
       {"Rf", p.Rf}, {"Rr", p.Rr}, {"h", p.h},     {"Cf1", p.Cf1}, {"Cr1", p.Cr1}, {"sigma", p.sigma}};

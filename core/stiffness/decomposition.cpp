@@ -1,5 +1,7 @@
 #include "core/stiffness/decomposition.h"
 
+#include "core/common/text.h"
+
 #include <cmath>
 #include <sstream>
 
@@ -7,13 +9,6 @@ namespace mozzi::core::stiffness {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(4);
-  s << v;
-  return s.str();
-}
 
 bool finite(std::initializer_list<double> v) {
   for (double x : v)
@@ -29,7 +24,7 @@ Result<Decomposition> decomposeStiffness(const DecompositionInput& in) {
     return makeError(ErrorCode::InvalidArgument, "non-finite input", where);
   }
   if (!(in.twistStiffness > 0.0)) {
-    return makeError(ErrorCode::InvalidArgument, "twist stiffness must be > 0, got " + fmt(in.twistStiffness), where);
+    return makeError(ErrorCode::InvalidArgument, "twist stiffness must be > 0, got " + formatNumber(in.twistStiffness), where);
   }
   if (in.twistArm == 0.0 || in.bendArm == 0.0 || in.torsArm == 0.0) {
     return makeError(ErrorCode::InvalidArgument,
@@ -66,8 +61,8 @@ Result<Decomposition> decomposeStiffness(const DecompositionInput& in) {
   out.torsStiffness = in.torsArm / b;
   if (!(out.bendStiffness > 0.0) || !(out.torsStiffness > 0.0)) {
     return makeError(ErrorCode::NumericalFailure,
-                     "non-physical decomposition (k_bend = " + fmt(out.bendStiffness) +
-                         ", k_tors = " + fmt(out.torsStiffness) +
+                     "non-physical decomposition (k_bend = " + formatNumber(out.bendStiffness) +
+                         ", k_tors = " + formatNumber(out.torsStiffness) +
                          " Nm/rad): the static axis does not lie between the bending and torsion axes with these "
                          "arms and directions",
                      where);
@@ -80,12 +75,12 @@ Result<Decomposition> decomposeStiffness(const DecompositionInput& in) {
   const double cond = (std::abs(in.bendArm) + std::abs(in.torsArm)) * (std::abs(sb) + std::abs(st)) / std::abs(det);
   if (cond > 100.0) {
     out.lowConfidence = true;
-    out.note = "ill-conditioned decomposition (error amplification " + fmt(cond) + ")";
+    out.note = "ill-conditioned decomposition (error amplification " + formatNumber(cond) + ")";
   }
   if (std::abs(out.rotationResidual) > 0.2) {
     out.lowConfidence = true;
     out.note += std::string(out.note.empty() ? "" : "; ") + "rotation magnitude (eq. 25/26) misses by " +
-                fmt(100 * out.rotationResidual) + "%: axes or arms inconsistent";
+                formatNumber(100 * out.rotationResidual) + "%: axes or arms inconsistent";
   }
   return out;
 }
@@ -116,7 +111,7 @@ Result<Decomposition> decomposeForkStiffness(const ForkDecompositionInput& in) {
   }
   if (!(in.alpha > 1e-6) || !(in.alpha < kPi / 2 - 1e-6)) {
     return makeError(ErrorCode::NumericalFailure,
-                     "twist-axis inclination " + fmt(in.alpha * 180 / kPi) +
+                     "twist-axis inclination " + formatNumber(in.alpha * 180 / kPi) +
                          " deg: at 0 the twist axis is the bending axis (no torsion seen), at 90 deg it is the "
                          "torsion axis (no bending seen); the decomposition is singular",
                      where);

@@ -1,5 +1,7 @@
 #include "core/stiffness/dynamic_twist.h"
 
+#include "core/common/text.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -10,13 +12,6 @@ namespace mozzi::core::stiffness {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(4);
-  s << v;
-  return s.str();
-}
 
 // Distance of an angle from the nearest of {0, pi} (mod 2 pi), in [0, pi/2].
 double distanceFromZeroOrPi(double a) {
@@ -125,10 +120,10 @@ Result<PhasorAxis> phasorTwistAxis(const std::vector<Vector2>& points, const Com
   mean.axis.rotation = rot / static_cast<double>(axes.size());
   out.axis = mean;
   out.lowConfidence = true;
-  out.note = "phases deviate up to " + fmt(out.maxPhaseDeviation * 180 / kPi) +
+  out.note = "phases deviate up to " + formatNumber(out.maxPhaseDeviation * 180 / kPi) +
              " deg from 0/pi: the axis moves during the cycle; averaged over " + std::to_string(axes.size()) +
-             " instants (inclination spread " + fmt(out.betaSpread * 180 / kPi) + " deg, position spread " +
-             fmt(out.offsetSpread * 1e3) + " mm)";
+             " instants (inclination spread " + formatNumber(out.betaSpread * 180 / kPi) + " deg, position spread " +
+             formatNumber(out.offsetSpread * 1e3) + " mm)";
   if (!failures.empty()) out.note += "; skipped " + failures.substr(0, failures.size() - 2);
   return out;
 }
@@ -143,7 +138,7 @@ Result<std::vector<SweepAxis>> dynamicTwistSweep(const std::vector<Vector2>& poi
     if (s.amplitude.size() != n || s.phase.size() != n) {
       return makeError(ErrorCode::InvalidArgument,
                        "amplitude/phase count differs from the " + std::to_string(n) + " sensors",
-                       "dynamic twist sweep: frequency " + fmt(s.frequencyHz) + " Hz");
+                       "dynamic twist sweep: frequency " + formatNumber(s.frequencyHz) + " Hz");
     }
     SweepAxis r;
     r.frequencyHz = s.frequencyHz;
@@ -190,7 +185,7 @@ Result<ModalAxis> modalTwistAxis(const FrfMatrix& frf, const std::vector<int>& r
   if (nf < 1 || !std::isfinite(frequencyHz) || frequencyHz <= 0.0 || frequencyHz < frf.frequencyHz(0) ||
       frequencyHz > frf.frequencyHz(nf - 1)) {
     return makeError(ErrorCode::InvalidArgument,
-                     "frequency " + fmt(frequencyHz) + " Hz is outside the measured band or not positive",
+                     "frequency " + formatNumber(frequencyHz) + " Hz is outside the measured band or not positive",
                      "modal twist axis");
   }
   Eigen::Index k = 0;
@@ -219,7 +214,7 @@ Result<ModalAxis> modalTwistAxis(const FrfMatrix& frf, const std::vector<int>& r
   o.plane.sigmaFloor = 0.0;
   auto axis = phasorTwistAxis(points, out.receptance, loadPoint, o);
   if (!axis)
-    return makeError(axis.error().code, axis.error().message, "modal twist axis at " + fmt(frequencyHz) + " Hz");
+    return makeError(axis.error().code, axis.error().message, "modal twist axis at " + formatNumber(frequencyHz) + " Hz");
   out.axis = std::move(*axis);
   return out;
 }

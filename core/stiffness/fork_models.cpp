@@ -1,5 +1,7 @@
 #include "core/stiffness/fork_models.h"
 
+#include "core/common/text.h"
+
 #include <cmath>
 #include <sstream>
 
@@ -7,13 +9,6 @@ namespace mozzi::core::stiffness {
 namespace {
 
 constexpr double kTwoPi = 6.28318530717958647692;
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(4);
-  s << v;
-  return s.str();
-}
 
 bool positiveFinite(double v) {
   return std::isfinite(v) && v > 0.0;
@@ -28,7 +23,7 @@ Result<void> checkParameters(const BicycleForkParameters& p) {
                {"tip distance", p.tipDistance}, {"max bend arm", p.maxBendArm}};
   for (const auto& it : items) {
     if (!positiveFinite(it.v)) {
-      return makeError(ErrorCode::InvalidArgument, std::string(it.name) + " must be > 0, got " + fmt(it.v),
+      return makeError(ErrorCode::InvalidArgument, std::string(it.name) + " must be > 0, got " + formatNumber(it.v),
                        "bicycle fork parameters (Table 21)");
     }
   }
@@ -166,7 +161,7 @@ Result<BicycleBending> bicycleForkBending(const BicycleForkParameters& p, double
   if (h > p.maxBendArm) {
     return makeError(
         ErrorCode::NumericalFailure,
-        "the stiffness curves meet at h_W = " + fmt(h) + " m, beyond the fixing point (" + fmt(p.maxBendArm) + " m)",
+        "the stiffness curves meet at h_W = " + formatNumber(h) + " m, beyond the fixing point (" + formatNumber(p.maxBendArm) + " m)",
         where);
   }
   BicycleBending out;

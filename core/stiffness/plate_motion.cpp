@@ -1,5 +1,7 @@
 #include "core/stiffness/plate_motion.h"
 
+#include "core/common/text.h"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -12,13 +14,6 @@ constexpr double kPi = 3.14159265358979323846;
 
 double cross2(const Vector2& a, const Vector2& b) {
   return a(0) * b(1) - a(1) * b(0);
-}
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(4);
-  s << v;
-  return s.str();
 }
 
 }  // namespace
@@ -85,7 +80,7 @@ Result<PlaneFit> fitPlane(const std::vector<Vector2>& points, const std::vector<
     return makeError(ErrorCode::NumericalFailure,
                      "sensor points are collinear (or coincide): the plate plane is undetermined (smallest/largest "
                      "singular value " +
-                         fmt(s(2) / s(0)) + ")",
+                         formatNumber(s(2) / s(0)) + ")",
                      "twist axis: sensor points");
   }
   const Vector xs = svd.solve(b);
@@ -124,7 +119,7 @@ Result<TwistAxis> axisFromPlane(const PlaneFit& plane, const Vector2& reference,
   }
   if (!(g > options.minRotationSnr * thetaSigma) || g == 0.0) {
     return makeError(ErrorCode::NumericalFailure,
-                     "the plate rotation (" + fmt(g) + ") is not resolved above its uncertainty (" + fmt(thetaSigma) +
+                     "the plate rotation (" + formatNumber(g) + ") is not resolved above its uncertainty (" + formatNumber(thetaSigma) +
                          "): the loaded plane is parallel to the unloaded one within the sensor noise (pure "
                          "translation, displacements at the sensor resolution), so the twist axis is at infinity",
                      "twist axis: plane intersection (eq. 6)");
@@ -160,11 +155,11 @@ Result<TwistAxis> axisFromPlane(const PlaneFit& plane, const Vector2& reference,
   out.axis.rotationSigma = thetaSigma;
   std::string note;
   if (out.axis.betaSigma > options.maxBetaSigma) {
-    note += "axis inclination uncertain (sigma " + fmt(out.axis.betaSigma * 180.0 / kPi) + " deg); ";
+    note += "axis inclination uncertain (sigma " + formatNumber(out.axis.betaSigma * 180.0 / kPi) + " deg); ";
   }
   if (out.axis.offsetSigma > options.maxOffsetSigmaRelative * plane.layoutSize) {
-    note += "axis position uncertain (sigma " + fmt(out.axis.offsetSigma * 1e3) + " mm at the reference point, " +
-            fmt(out.axis.offsetSigma / plane.layoutSize) + " of the sensor layout size); ";
+    note += "axis position uncertain (sigma " + formatNumber(out.axis.offsetSigma * 1e3) + " mm at the reference point, " +
+            formatNumber(out.axis.offsetSigma / plane.layoutSize) + " of the sensor layout size); ";
   }
   if (!note.empty()) {
     out.lowConfidence = true;
@@ -303,14 +298,14 @@ Result<StaticTwistResult> staticTwistTest(const std::vector<Vector2>& points, co
   out.loadPoint = *reg;
   if (!(reg->slope > 0.0)) {
     return makeError(ErrorCode::NumericalFailure,
-                     "the load point moves against the force (compliance " + fmt(reg->slope) +
+                     "the load point moves against the force (compliance " + formatNumber(reg->slope) +
                          " m/N): check the sign convention of the lasers and of the load cell",
                      "static twist test: load point");
   }
   if (reg->slope < 3.0 * reg->slopeSe) {
     return makeError(ErrorCode::NumericalFailure,
-                     "the load-point displacement is not resolved above the noise (slope " + fmt(reg->slope) + " +- " +
-                         fmt(reg->slopeSe) + " m/N)",
+                     "the load-point displacement is not resolved above the noise (slope " + formatNumber(reg->slope) + " +- " +
+                         formatNumber(reg->slopeSe) + " m/N)",
                      "static twist test: load point");
   }
   out.lateralStiffness = 1.0 / reg->slope;
@@ -346,13 +341,13 @@ Result<StaticTwistResult> staticTwistTest(const std::vector<Vector2>& points, co
   out.negativeBranchStiffness = branch(false);
   if (reg->rSquared < options.minR2) {
     out.linear = false;
-    note += "load-displacement not linear (R^2 = " + fmt(reg->rSquared) + "); ";
+    note += "load-displacement not linear (R^2 = " + formatNumber(reg->rSquared) + "); ";
   }
   if (out.positiveBranchStiffness > 0 && out.negativeBranchStiffness > 0) {
     const double rel = std::abs(out.positiveBranchStiffness - out.negativeBranchStiffness) / out.lateralStiffness;
     if (rel > options.branchTolerance) {
       out.linear = false;
-      note += "positive and negative load branches differ by " + fmt(100 * rel) + "% (play or contact change); ";
+      note += "positive and negative load branches differ by " + formatNumber(100 * rel) + "% (play or contact change); ";
     }
   }
   if (out.axis.lowConfidence) note += out.axis.note + "; ";
@@ -376,7 +371,7 @@ Result<StaticTwistResult> staticTwistSingleLoad(const std::vector<Vector2>& poin
   const double xlat = axis->plane.evaluate(loadPoint);
   if (!(xlat / force > 0.0)) {
     return makeError(ErrorCode::NumericalFailure,
-                     "the load point moves against the force (x_lat = " + fmt(xlat) + " m, F = " + fmt(force) +
+                     "the load point moves against the force (x_lat = " + formatNumber(xlat) + " m, F = " + formatNumber(force) +
                          " N): check the sign convention",
                      "static twist: load point");
   }

@@ -1,5 +1,7 @@
 #include "core/stiffness/screw_axis.h"
 
+#include "core/common/text.h"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -7,13 +9,6 @@
 
 namespace mozzi::core::stiffness {
 namespace {
-
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(4);
-  s << v;
-  return s.str();
-}
 
 Matrix3 skew(const Vector3& a) {
   Matrix3 m;
@@ -96,8 +91,8 @@ Result<ScrewAxis> screwAxis(const Matrix& points, const Matrix& displacements, c
   const double angleSigma = std::sqrt(std::max(0.0, (u0.transpose() * cov.block<3, 3>(3, 3) * u0)(0, 0)));
   if (!(out.angle > options.minRotationSnr * angleSigma) || out.angle == 0.0) {
     return makeError(ErrorCode::NumericalFailure,
-                     "the rotation (" + fmt(out.angle) + " rad) is not resolved above its uncertainty (" +
-                         fmt(angleSigma) + " rad): pure translation, the screw axis is at infinity",
+                     "the rotation (" + formatNumber(out.angle) + " rad) is not resolved above its uncertainty (" +
+                         formatNumber(angleSigma) + " rad): pure translation, the screw axis is at infinity",
                      "screw axis");
   }
   const auto y = screwParams(x);
@@ -120,7 +115,7 @@ Result<ScrewAxis> screwAxis(const Matrix& points, const Matrix& displacements, c
   out.pitchSigma = std::sqrt(std::max(0.0, cy(6, 6)));
   if (cond > options.maxCondition) {
     out.lowConfidence = true;
-    out.note = "ill-conditioned point layout (condition number " + fmt(cond) + ")";
+    out.note = "ill-conditioned point layout (condition number " + formatNumber(cond) + ")";
   }
   return out;
 }
@@ -143,7 +138,7 @@ Result<ScrewAxis> screwAxisFromPhasors(const Matrix& points, const ComplexMatrix
   if (r->phaseResidual > options.maxPhaseResidual) {
     r->lowConfidence = true;
     r->note += std::string(r->note.empty() ? "" : "; ") +
-               "displacements are not in phase (|Im|/|Re| = " + fmt(r->phaseResidual) +
+               "displacements are not in phase (|Im|/|Re| = " + formatNumber(r->phaseResidual) +
                "): the screw axis moves during the cycle";
   }
   return r;

@@ -8,21 +8,10 @@
 #include <sstream>
 
 #include "core/common/versions.h"
+#include "cli_run.h"
 
 namespace mozzi::cli {
 namespace {
-
-struct CliRun {
-  int code;
-  std::string out;
-  std::string err;
-};
-
-CliRun run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = runCli(args, out, err);
-  return {code, out.str(), err.str()};
-}
 
 TEST(Cli, VersionListsTheLinkedLibraries) {
   const CliRun r = run({"--version"});

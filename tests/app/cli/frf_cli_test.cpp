@@ -14,6 +14,7 @@
 #include "app/cli/command.h"
 #include "core/io/uff/uff.h"
 #include "core/signal/hit_synthesis.h"
+#include "cli_run.h"
 
 namespace mozzi::cli {
 namespace {
@@ -79,15 +80,9 @@ class FrfCli : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 
-  struct Run {
-    int code;
-    std::string out, err;
-  };
-  Run run(std::vector<std::string> args) {
-    std::ostringstream out, err;
+  CliRun run(std::vector<std::string> args) {
     args.insert(args.begin(), "frf");
-    const int code = runCli(args, out, err);
-    return {code, out.str(), err.str()};
+    return cli::run(args);
   }
 
   std::filesystem::path dir_;
@@ -96,7 +91,7 @@ class FrfCli : public ::testing::Test {
 
 TEST_F(FrfCli, AveragesAcceptedHitsAndWritesFrfsMatchingTheory) {
   const std::string out = (dir_ / "frf.uff").string();
-  const Run r = run({hits_, "--estimator", "H1", "--force-window", "0.02", "--out", out, "--json"});
+  const CliRun r = run({hits_, "--estimator", "H1", "--force-window", "0.02", "--out", out, "--json"});
   ASSERT_EQ(r.code, kExitOk) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["hits_accepted"], 3);
@@ -144,7 +139,7 @@ TEST_F(FrfCli, AveragesAcceptedHitsAndWritesFrfsMatchingTheory) {
 }
 
 TEST_F(FrfCli, TextSummaryAndExponentialWindow) {
-  const Run r = run({hits_, "--estimator", "hv", "--exp-window", "0.5", "--reference", "1:+Z"});
+  const CliRun r = run({hits_, "--estimator", "hv", "--exp-window", "0.5", "--reference", "1:+Z"});
   ASSERT_EQ(r.code, kExitOk) << r.err;
   std::printf("%s", r.out.c_str());
   EXPECT_NE(r.out.find("3 accepted, 1 rejected"), std::string::npos) << r.out;
@@ -159,11 +154,11 @@ TEST_F(FrfCli, UsageAndInputErrors) {
   EXPECT_EQ(run({hits_, "--estimator", "H1", "--exp-window", "-1"}).code, kExitUsage);
   EXPECT_EQ(run({hits_, "--estimator", "H1", "--reference", "zz"}).code, kExitUsage);
   EXPECT_EQ(run({hits_, "--estimator", "H1", "--bogus"}).code, kExitUsage);
-  const Run missing = run({(dir_ / "none.uff").string(), "--estimator", "H1"});
+  const CliRun missing = run({(dir_ / "none.uff").string(), "--estimator", "H1"});
   EXPECT_EQ(missing.code, kExitFailure);
   EXPECT_NE(missing.err.find("none.uff"), std::string::npos) << missing.err;
   // a reference DOF that no channel has: no force channel
-  const Run noRef = run({hits_, "--estimator", "H1", "--reference", "9:+X"});
+  const CliRun noRef = run({hits_, "--estimator", "H1", "--reference", "9:+X"});
   EXPECT_EQ(noRef.code, kExitFailure) << noRef.out;
 }
 

@@ -11,20 +11,10 @@
 #include "app/cli/command.h"
 #include "core/io/uff/uff.h"
 #include "core/modal/synthetic_system.h"
+#include "cli_run.h"
 
 namespace mozzi::cli {
 namespace {
-
-struct CliRun {
-  int code;
-  std::string out, err;
-};
-
-CliRun run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = runCli(args, out, err);
-  return {code, out.str(), err.str()};
-}
 
 std::string tempPath(const std::string& name) {
   return std::string(MOZZI_BINARY_DIR) + "/identify_cli_" + name;

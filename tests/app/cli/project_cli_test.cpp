@@ -17,24 +17,13 @@
 #include "core/io/csv/csv_exchange.h"
 #include "core/io/project_store.h"
 #include "core/io/uff/uff.h"
+#include "cli_run.h"
 
 namespace mozzi::cli {
 namespace {
 
 namespace fs = std::filesystem;
 using namespace mozzi::core;
-
-struct CliRun {
-  int code;
-  std::string out;
-  std::string err;
-};
-
-CliRun run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = runCli(args, out, err);
-  return {code, out.str(), err.str()};
-}
 
 FrfMatrix sdofFrf() {
   // Accelerance of m = 2 kg, fn = 60 Hz, zeta = 1.5 %: A = -w^2 / (m (wn^2 - w^2 + 2 i zeta wn w)).

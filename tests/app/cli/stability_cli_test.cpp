@@ -5,21 +5,10 @@
 #include <sstream>
 
 #include "app/cli/command.h"
+#include "cli_run.h"
 
 namespace mozzi::cli {
 namespace {
-
-struct CliRun {
-  int code;
-  std::string out;
-  std::string err;
-};
-
-CliRun run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = runCli(args, out, err);
-  return {code, out.str(), err.str()};
-}
 
 const std::string kSharp = std::string(MOZZI_SHARED_DATA_DIR) + "/motorcycle/sharp1971-parameters.csv";
 

@@ -10,21 +10,10 @@
 
 #include "app/cli/command.h"
 #include "core/io/csv/csv_exchange.h"
+#include "cli_run.h"
 
 namespace mozzi::cli {
 namespace {
-
-struct CliRun {
-  int code;
-  std::string out;
-  std::string err;
-};
-
-CliRun run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = runCli(args, out, err);
-  return {code, out.str(), err.str()};
-}
 
 std::string writeTemp(const std::string& name, const std::string& text) {
   const std::string path = std::string(MOZZI_BINARY_DIR) + "/stiffness_cli_" + name;

@@ -11,23 +11,12 @@
 
 #include "app/cli/command.h"
 #include "core/tire/magic_formula.h"
+#include "cli_run.h"
 
 namespace mozzi::cli {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-struct CliRun {
-  int code;
-  std::string out;
-  std::string err;
-};
-
-CliRun run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = runCli(args, out, err);
-  return {code, out.str(), err.str()};
-}
 
 std::string tempPath(const std::string& name) {
   return std::string(MOZZI_BINARY_DIR) + "/tire_cli_" + name;

@@ -11,23 +11,12 @@
 
 #include "app/cli/command.h"
 #include "core/io/uff/uff.h"
+#include "cli_run.h"
 
 namespace mozzi::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CliRun {
-  int code;
-  std::string out;
-  std::string err;
-};
-
-CliRun run(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = runCli(args, out, err);
-  return {code, out.str(), err.str()};
-}
 
 std::string data(const std::string& name) { return std::string(MOZZI_SHARED_DATA_DIR) + "/uff/" + name; }
 
