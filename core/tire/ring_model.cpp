@@ -61,8 +61,15 @@ Complex RingModel::lateralCompliance(double omega, bool withDamping) const {
   return g;
 }
 
-Result<RingModel> identifyRingModel(const std::vector<RingModeInput>& in, const RingModelSettings& s) {
-  const char* where = "ring modal model (thesis §5.3)";
+namespace {
+
+// The loop both constructors share: settings and k checked, ring mass from the
+// belt share, modal mass by eq. 45; `complete` fills the modal stiffness and
+// natural frequency (eq. 46, one way or the other) or says why the input is
+// unusable; damping by the corrected eq. 47, c = 2 zeta sqrt(K m).
+template <class Input, class Complete>
+Result<RingModel> buildRingModel(const std::vector<Input>& in, const RingModelSettings& s, const char* where,
+                                 Complete complete) {
   if (auto ok = checkSettings(s, where); !ok) return ok.error();
   if (in.empty()) return makeError(ErrorCode::InvalidArgument, "no mode given", where);
   RingModel model;
@@ -72,18 +79,14 @@ Result<RingModel> identifyRingModel(const std::vector<RingModeInput>& in, const 
   for (const auto& mi : in) {
     const std::string at = std::string(where) + ", mode k=" + std::to_string(mi.k);
     if (auto ok = checkK(mi.k, seen, at); !ok) return ok.error();
-    if (!std::isfinite(mi.naturalFrequencyHz) || mi.naturalFrequencyHz <= 0.0)
-      return makeError(ErrorCode::InvalidArgument, "natural frequency must be positive", at);
     if (!std::isfinite(mi.dampingRatio) || mi.dampingRatio < 0.0)
       return makeError(ErrorCode::InvalidArgument, "damping ratio must be finite and not negative", at);
     RingMode m;
     m.k = mi.k;
     m.name = ringModeName(mi.k);
-    m.naturalFrequencyHz = mi.naturalFrequencyHz;
+    m.modalMass = model.ringMass * ringModalMassFactor(mi.k);  // eq. 45
+    if (const char* problem = complete(mi, m)) return makeError(ErrorCode::InvalidArgument, problem, at);
     m.dampingRatio = mi.dampingRatio;
-    const double w = 2.0 * kPi * mi.naturalFrequencyHz;
-    m.modalMass = model.ringMass * ringModalMassFactor(mi.k);                                  // eq. 45
-    m.modalStiffness = m.modalMass * w * w;                                                    // eq. 46
     m.dampingCoefficient = 2.0 * mi.dampingRatio * std::sqrt(m.modalStiffness * m.modalMass);  // eq. 47 corrected
     model.modes.push_back(m);
   }
@@ -91,33 +94,29 @@ Result<RingModel> identifyRingModel(const std::vector<RingModeInput>& in, const 
   return model;
 }
 
+}  // namespace
+
+Result<RingModel> identifyRingModel(const std::vector<RingModeInput>& in, const RingModelSettings& s) {
+  return buildRingModel(in, s, "ring modal model (thesis §5.3)",
+                        [](const RingModeInput& mi, RingMode& m) -> const char* {
+                          if (!std::isfinite(mi.naturalFrequencyHz) || mi.naturalFrequencyHz <= 0.0)
+                            return "natural frequency must be positive";
+                          const double w = 2.0 * kPi * mi.naturalFrequencyHz;
+                          m.naturalFrequencyHz = mi.naturalFrequencyHz;
+                          m.modalStiffness = m.modalMass * w * w;  // eq. 46
+                          return nullptr;
+                        });
+}
+
 Result<RingModel> ringModelFromStiffness(const std::vector<RingStiffnessInput>& in, const RingModelSettings& s) {
-  const char* where = "ring modal model from stiffnesses (thesis §5.3, Table 16)";
-  if (auto ok = checkSettings(s, where); !ok) return ok.error();
-  if (in.empty()) return makeError(ErrorCode::InvalidArgument, "no mode given", where);
-  RingModel model;
-  model.ringMass = s.beltShare * s.tyreMass;
-  model.ringRadius = s.ringRadius;
-  std::set<int> seen;
-  for (const auto& mi : in) {
-    const std::string at = std::string(where) + ", mode k=" + std::to_string(mi.k);
-    if (auto ok = checkK(mi.k, seen, at); !ok) return ok.error();
-    if (!std::isfinite(mi.modalStiffness) || mi.modalStiffness <= 0.0)
-      return makeError(ErrorCode::InvalidArgument, "modal stiffness must be positive", at);
-    if (!std::isfinite(mi.dampingRatio) || mi.dampingRatio < 0.0)
-      return makeError(ErrorCode::InvalidArgument, "damping ratio must be finite and not negative", at);
-    RingMode m;
-    m.k = mi.k;
-    m.name = ringModeName(mi.k);
-    m.modalMass = model.ringMass * ringModalMassFactor(mi.k);  // eq. 45
-    m.modalStiffness = mi.modalStiffness;
-    m.naturalFrequencyHz = std::sqrt(m.modalStiffness / m.modalMass) / (2.0 * kPi);  // eq. 46 inverted
-    m.dampingRatio = mi.dampingRatio;
-    m.dampingCoefficient = 2.0 * mi.dampingRatio * std::sqrt(m.modalStiffness * m.modalMass);
-    model.modes.push_back(m);
-  }
-  std::sort(model.modes.begin(), model.modes.end(), [](const RingMode& a, const RingMode& b) { return a.k < b.k; });
-  return model;
+  return buildRingModel(in, s, "ring modal model from stiffnesses (thesis §5.3, Table 16)",
+                        [](const RingStiffnessInput& mi, RingMode& m) -> const char* {
+                          if (!std::isfinite(mi.modalStiffness) || mi.modalStiffness <= 0.0)
+                            return "modal stiffness must be positive";
+                          m.modalStiffness = mi.modalStiffness;
+                          m.naturalFrequencyHz = std::sqrt(m.modalStiffness / m.modalMass) / (2.0 * kPi);  // eq. 46 inverted
+                          return nullptr;
+                        });
 }
 
 Result<ComplexVector> ringFrf(const RingModel& ring, const RingFrfInputs& in, VectorRef omega, RingFrfVariant variant) {
