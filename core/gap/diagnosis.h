@@ -1,0 +1,53 @@
+#pragma once
+// Diagnosis of the sim-to-real gap (shared/GAP.md steps 0 to 9): calibrate the
+// model's own parameters, locate the gap, screen and fit every catalogue
+// effect, compare the likelihood-ratio improvement with a threshold calibrated
+// by parametric bootstrap, check ambiguity and held-out data, and give a verdict.
+
+#include <string>
+#include <vector>
+
+#include "core/common/result.h"
+#include "core/gap/gap_problem.h"
+
+namespace mozzi::core::gap {
+
+enum class Verdict { Effect, None, Ambiguous, Partial, Unexplained, NotIdentifiable };
+const char* verdictName(Verdict verdict);  // "effect", "none", "ambiguous", ...
+
+struct DiagnosisOptions {
+  std::vector<std::string> effects;  // restrict the catalogue to these names; empty = all
+  int multistarts = 8;               // per nonlinear fit (GAP.md: 5 to 20)
+  int bootstrapSamples = 200;        // null calibration of the threshold
+  double alpha = 0.05;               // false-attribution level of the threshold
+  unsigned long long seed = 1;       // every random draw is seeded: reproducible reports
+};
+
+struct RankedEffect {
+  Candidate candidate;              // effect, location, parameter definitions
+  std::vector<double> parameters;   // fitted sizes
+  std::vector<double> stdErrors;    // from the final Jacobian; empty when not identifiable
+  double likelihoodRatio = 0.0;     // 2 (NLL_baseline - NLL_effect)
+  double aicc = 0.0;                // tie-break only
+  double heldOutImprovement = 0.0;  // relative drop of held-out residual (cross-validation)
+  bool identifiable = true;         // projected signature above the noise scale
+  GapMetrics gapAfter;
+  double shrinkPct = 0.0;           // 100 (1 - gap_after.overall / gap_before.overall)
+};
+
+struct Diagnosis {
+  std::string dataKind;
+  std::vector<Parameter> calibration;      // definitions
+  std::vector<double> calibrated;          // fitted theta
+  GapMetrics gapBefore;                    // at the calibrated baseline
+  std::vector<GapEntry> where;             // the flagged rows carrying most of the gap
+  double threshold = 0.0;                  // bootstrap (1 - alpha) quantile of max LR under no effect
+  std::vector<RankedEffect> ranking;       // best first
+  Verdict verdict = Verdict::None;
+  std::vector<int> verdictSet;             // indices into ranking (several when ambiguous)
+  std::string explanation;                 // one paragraph a user can read (and the separating measurement)
+};
+
+Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& options);
+
+}  // namespace mozzi::core::gap

@@ -1,0 +1,87 @@
+#pragma once
+// The sim-to-real gap as a statistical problem (design: shared/GAP.md).
+//
+// A GapProblem holds a model, measured data and its noise model, and evaluates
+// whitened residuals r_j = (prediction_j - measured_j) / sigma_j for
+//  - the model's own uncertain parameters theta (calibrated first, with bounds
+//    and optional Gaussian priors: "calibrate before you blame"), and
+//  - optionally one candidate effect k of the catalogue with its parameters phi_k
+//    (the "augmentation" of the model; phi_k at `Parameter::nominal` means the
+//    effect is absent).
+// The engine (diagnosis.h) does not know whether the residuals come from FRFs,
+// modes, tyre relaxation lengths or stability-mode frequencies: structural,
+// tyre and stability problems are implementations of this interface.
+
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/common/result.h"
+
+namespace mozzi::core::gap {
+
+struct Parameter {
+  std::string name;         // "k_scale", "added_mass", "eta"
+  std::string unit;         // SI unit, "" for dimensionless
+  double nominal = 0.0;     // start value; for an effect, the "absent" value
+  double lower = 0.0;       // bounds (Ceres parameter bounds)
+  double upper = 0.0;
+  double priorSigma = 0.0;  // > 0: Gaussian prior N(nominal, priorSigma) as a residual block
+};
+
+// One candidate of the catalogue at one location.
+struct Candidate {
+  std::string effect;                 // catalogue name, e.g. "mass_loading"
+  std::vector<std::string> location;  // DOF labels in the model's own format; empty when global
+  std::vector<Parameter> parameters;  // the effect's size(s)
+};
+
+// A labelled gap figure for "where" tables and before/after comparisons.
+struct GapEntry {
+  std::string kind;    // "band", "dof", "mode", "condition", "overall"
+  std::string label;   // "100-200 Hz", "21+Z", "mode 3", "2.0 bar"
+  double value = 0.0;  // the gap in the row's own measure (relative residual, % error...)
+  double z = 0.0;      // value in units of its measurement uncertainty (0 when not applicable)
+  bool flagged = false;  // significant after Holm correction over the rows of its kind
+  // Named extra figures: "frequency_error_pct", "zeta_error_pct", "mac",
+  // "measured", "predicted", ...
+  std::vector<std::pair<std::string, double>> details;
+};
+
+struct GapMetrics {
+  std::string residualName = "frf_residual";  // what `overall` measures
+  double overall = 0.0;                       // e.g. relative FRF residual norm
+  std::vector<GapEntry> entries;
+};
+
+class GapProblem {
+ public:
+  virtual ~GapProblem() = default;
+
+  // What kind of data this is ("frf", "modes", "relaxation", "stability").
+  virtual std::string dataKind() const = 0;
+  virtual std::vector<Parameter> calibrationParameters() const = 0;
+  virtual std::vector<Candidate> candidates() const = 0;
+  virtual int residualCount() const = 0;
+
+  // Whitened residuals for calibration parameters theta and, when candidate >= 0,
+  // that candidate's parameters phi. Returns false where the model cannot be
+  // evaluated (e.g. a singular matrix): the fitter treats it as infeasible.
+  virtual bool residuals(const double* theta, int candidate, const double* phi, double* r) const = 0;
+
+  // Group of each residual for held-out checks (frequency bands, conditions);
+  // all zero when the data cannot be split.
+  virtual std::vector<int> folds() const { return std::vector<int>(static_cast<size_t>(residualCount()), 0); }
+
+  // The same problem with the measured data replaced by the prediction at
+  // (theta, candidate, phi) plus noise drawn from the problem's noise model:
+  // the parametric bootstrap and the ambiguity check simulate from it.
+  virtual std::unique_ptr<GapProblem> simulated(const double* theta, int candidate, const double* phi,
+                                                std::mt19937_64& rng) const = 0;
+
+  // The gap as a user reads it (step 2 of GAP.md), for the given parameters.
+  virtual GapMetrics metrics(const double* theta, int candidate, const double* phi) const = 0;
+};
+
+}  // namespace mozzi::core::gap
