@@ -4,6 +4,7 @@
 // effect, compare the likelihood-ratio improvement with a threshold calibrated
 // by parametric bootstrap, check ambiguity and held-out data, and give a verdict.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,10 @@ struct DiagnosisOptions {
   int bootstrapSamples = 200;        // null calibration of the threshold
   double alpha = 0.05;               // false-attribution level of the threshold
   unsigned long long seed = 1;       // every random draw is seeded: reproducible reports
+  // Called now and then with the fraction done (0..1) and the current step;
+  // returning false cancels (diagnose then returns ErrorCode::Cancelled).
+  // The workbench runs the diagnosis off the GUI thread and uses this.
+  std::function<bool(double fraction, const std::string& step)> progress;
 };
 
 struct RankedEffect {

@@ -55,6 +55,18 @@ struct GapMetrics {
   std::vector<GapEntry> entries;
 };
 
+// Measured against predicted along one abscissa (frequency, pressure, speed),
+// for the "before / after" overlay of the workbench view and the report.
+struct OverlayCurve {
+  std::string label;        // "21+Z / 1+Z", "relaxation length"
+  std::string xLabel;       // "Frequency [Hz]", "Pressure [bar]"
+  std::string yLabel;       // "|H| [m/s^2/N]", "sigma [m]"
+  bool logY = false;        // plot y on a logarithmic axis (FRF magnitudes)
+  std::vector<double> x;
+  std::vector<double> measured;
+  std::vector<double> predicted;
+};
+
 class GapProblem {
  public:
   virtual ~GapProblem() = default;
@@ -82,6 +94,15 @@ class GapProblem {
 
   // The gap as a user reads it (step 2 of GAP.md), for the given parameters.
   virtual GapMetrics metrics(const double* theta, int candidate, const double* phi) const = 0;
+
+  // Curves for the overlay (one per measured FRF, mode set or condition
+  // series); empty when the problem has nothing to plot.
+  virtual std::vector<OverlayCurve> overlay(const double* theta, int candidate, const double* phi) const {
+    (void)theta;
+    (void)candidate;
+    (void)phi;
+    return {};
+  }
 };
 
 }  // namespace mozzi::core::gap
