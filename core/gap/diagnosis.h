@@ -29,7 +29,9 @@ struct DiagnosisOptions {
 };
 
 struct RankedEffect {
+  int candidateIndex = -1;          // index into problem.candidates()
   Candidate candidate;              // effect, location, parameter definitions
+  std::vector<double> theta;        // calibration parameters refitted jointly with the effect
   std::vector<double> parameters;   // fitted sizes
   std::vector<double> stdErrors;    // from the final Jacobian; empty when not identifiable
   double likelihoodRatio = 0.0;     // 2 (NLL_baseline - NLL_effect)
