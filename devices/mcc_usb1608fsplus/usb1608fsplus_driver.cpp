@@ -8,6 +8,7 @@
 #include <mutex>
 #include <thread>
 
+#include "devices/common/threaded_device.h"
 #include "devices/mcc_usb1608fsplus/usb1608fsplus_protocol.h"
 #include "devices/usb/usb_transport.h"
 
@@ -55,14 +56,10 @@ struct Packet {
   bool stopRequest = false;
 };
 
-class Usb1608FsPlusDevice final : public Device {
+class Usb1608FsPlusDevice final : public ThreadedDevice {
  public:
-  explicit Usb1608FsPlusDevice(DeviceDescriptor d) : descriptor_(std::move(d)), caps_(makeCapabilities()) {}
+  explicit Usb1608FsPlusDevice(DeviceDescriptor d) : ThreadedDevice(std::move(d), makeCapabilities()) {}
   ~Usb1608FsPlusDevice() override { close(); }
-
-  const DeviceDescriptor& descriptor() const override { return descriptor_; }
-  Capabilities capabilities() const override { return caps_; }
-  DeviceState state() const override { return state_.load(); }
 
   core::Result<void> open() override {
     if (transport_) return {};
@@ -87,7 +84,7 @@ class Usb1608FsPlusDevice final : public Device {
     // A scan left running by another program would stall our requests.
     auto stop = transport_->controlOut(kAInScanStop, 0, 0, {});
     if (!stop) return fail(stop.error());
-    state_ = DeviceState::Open;
+    setState(DeviceState::Open);
     return {};
   }
 
@@ -95,78 +92,38 @@ class Usb1608FsPlusDevice final : public Device {
     stop();
     if (transport_) transport_->setDisconnectCallback(nullptr);
     transport_.reset();
-    state_ = DeviceState::Closed;
+    setState(DeviceState::Closed);
   }
 
-  // A session that ended by itself (completed, unplugged, ...) leaves its
-  // thread to be joined; after that the device is configured again.
-  void reapEndedSession() {
-    if (state_ == DeviceState::Running && ended_ && worker_.joinable()) {
-      worker_.join();
-      state_ = DeviceState::Configured;
-    }
-  }
-
-  core::Result<AcquisitionConfig> configure(const AcquisitionConfig& requested) override {
-    reapEndedSession();
-    if (!transport_) return core::makeError(core::ErrorCode::InvalidArgument, "open the device first", descriptor_.label());
-    if (state_ == DeviceState::Running) return core::makeError(core::ErrorCode::InvalidArgument, "stop the acquisition first", descriptor_.label());
-    auto applied = validateConfig(caps_, requested);
-    if (!applied) return applied.error();
-    auto period = pacerPeriodFor(applied->sampleRateHz, static_cast<int>(applied->channels.size()));
+ protected:
+  core::Result<void> prepareConfig(AcquisitionConfig& applied) override {
+    auto period = pacerPeriodFor(applied.sampleRateHz, static_cast<int>(applied.channels.size()));
     if (!period) return period.error();
-    applied->sampleRateHz = rateForPacerPeriod(*period);
-    config_ = *applied;
+    applied.sampleRateHz = rateForPacerPeriod(*period);
     pacerPeriod_ = *period;
-    chains_ = chainsFor(caps_, config_);
-    for (std::size_t i = 0; i < chains_.size(); ++i)
-      chains_[i].calibration = calibration_[config_.channels[i].rangeCode][static_cast<std::size_t>(config_.channels[i].input)];
-    state_ = DeviceState::Configured;
-    return config_;
+    return {};
   }
 
-  core::Result<void> start(StreamSink sink) override {
-    reapEndedSession();
-    if (state_ != DeviceState::Configured) return core::makeError(core::ErrorCode::InvalidArgument, "configure the device before starting", descriptor_.label());
-    sink_ = std::move(sink);
+  void calibrateChains(std::vector<ChannelChain>& chains) override {
+    for (std::size_t i = 0; i < chains.size(); ++i)
+      chains[i].calibration = calibration_[config_.channels[i].rangeCode][static_cast<std::size_t>(config_.channels[i].input)];
+  }
+
+  core::Result<void> beginSession() override {
     {
       std::lock_guard<std::mutex> l(queueMutex_);
       queue_.clear();
     }
-    ended_ = false;
     auto ok = startScan(config_.scanCount);
     if (!ok) return ok;
-    StreamHeader h;
-    h.sampleRateHz = config_.sampleRateHz;
-    h.startTime = std::chrono::system_clock::now();
-    h.device = descriptor_.label();
-    for (std::size_t i = 0; i < chains_.size(); ++i) {
-      core::signal::Channel ch;
-      ch.name = config_.channels[i].name.empty() ? caps_.inputs[static_cast<std::size_t>(config_.channels[i].input)].name : config_.channels[i].name;
-      ch.transducer = config_.channels[i].transducer;
-      ch.dof = config_.channels[i].dof;
-      ch.fullScale = chains_[i].fullScaleEngineering();
-      h.channels.push_back(ch);
-    }
-    sink_(StreamEvent(std::move(h)));
     delivered_ = 0;
     pending_.clear();
     pendingScans_ = 0;
-    stopRequested_ = false;
-    state_ = DeviceState::Running;
     transport_->setDisconnectCallback([this] { push(Packet{usb::TransferStatus::NoDevice, {}, false}); });
-    worker_ = std::thread([this] { run(); });
     return {};
   }
 
-  void stop() override {
-    if (worker_.joinable()) {
-      stopRequested_ = true;
-      push(Packet{usb::TransferStatus::Cancelled, {}, true});
-      worker_.join();
-    }
-    if (state_ == DeviceState::Running) state_ = DeviceState::Configured;
-  }
+  void interruptSession() override { push(Packet{usb::TransferStatus::Cancelled, {}, true}); }
 
  private:
   core::Result<void> fail(core::Error e) {
@@ -233,14 +190,8 @@ class Usb1608FsPlusDevice final : public Device {
       b.raw.assign(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(n * static_cast<std::int64_t>(nc)));
       pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(n * static_cast<std::int64_t>(nc)));
       pendingScans_ -= n;
-      b.values.resize(n, static_cast<Eigen::Index>(nc));
-      for (std::int64_t s = 0; s < n; ++s)
-        for (std::size_t c = 0; c < nc; ++c)
-          b.values(s, static_cast<Eigen::Index>(c)) = chains_[c].engineeringFromRaw(b.raw[static_cast<std::size_t>(s) * nc + c]);
       delivered_ += n;
-      auto overloads = detectOverloads(b, chains_);
-      sink_(StreamEvent(std::move(b)));
-      for (auto& o : overloads) sink_(StreamEvent(o));
+      emitBlock(std::move(b));
     }
   }
 
@@ -271,11 +222,10 @@ class Usb1608FsPlusDevice final : public Device {
     for (const auto& p : rest)
       if (!full && !p.stopRequest) full = absorb(p);
     emitBlocks(true);
-    ended_ = true;
-    sink_(StreamEvent(StreamEnd{reason, delivered_, message}));
+    endSession(reason, delivered_, message);
   }
 
-  void run() {
+  void runSession() override {
     for (;;) {
       Packet p = pop();
       if (p.stopRequest) return finish(EndReason::Stopped, "stopped by the user");
@@ -301,7 +251,7 @@ class Usb1608FsPlusDevice final : public Device {
         case usb::TransferStatus::Overflow:
           return finish(EndReason::Error, "the device sent more data than requested (USB overflow)");
         case usb::TransferStatus::Cancelled:
-          if (stopRequested_) return finish(EndReason::Stopped, "stopped by the user");
+          if (stopRequested()) return finish(EndReason::Stopped, "stopped by the user");
           break;  // a sibling transfer cancelled during recovery
         case usb::TransferStatus::Error:
           if (transport_->disconnected())
@@ -336,8 +286,8 @@ class Usb1608FsPlusDevice final : public Device {
     auto halt = transport_->clearHalt(kBulkInEndpoint);
     auto fifo = transport_->controlOut(kAInClearFifo, 0, 0, {});
     emitBlocks(true);  // hand on every complete scan before the gap
-    const bool restart = parameterText(config_.parameters, "overrun.policy", "restart") == "restart" && halt && fifo && !stopRequested_;
-    sink_(StreamEvent(OverrunEvent{delivered_, -1, restart, detail}));
+    const bool restart = parameterText(config_.parameters, "overrun.policy", "restart") == "restart" && halt && fifo && !stopRequested();
+    emit(StreamEvent(OverrunEvent{delivered_, -1, restart, detail}));
     if (!restart) {
       finish(EndReason::Overrun, detail);
       return false;
@@ -352,21 +302,12 @@ class Usb1608FsPlusDevice final : public Device {
     return true;
   }
 
-  DeviceDescriptor descriptor_;
-  Capabilities caps_;
   std::unique_ptr<usb::UsbTransport> transport_;
   CalibrationTable calibration_{};
-  AcquisitionConfig config_;
   std::uint32_t pacerPeriod_ = 0;
-  std::vector<ChannelChain> chains_;
-  std::atomic<DeviceState> state_{DeviceState::Closed};
-  StreamSink sink_;
-  std::thread worker_;
   std::mutex queueMutex_;
   std::condition_variable queueCv_;
   std::deque<Packet> queue_;
-  std::atomic<bool> stopRequested_{false};
-  std::atomic<bool> ended_{false};
   std::unique_ptr<ScanAssembler> assembler_;
   std::vector<std::int32_t> pending_;
   std::int64_t pendingScans_ = 0;

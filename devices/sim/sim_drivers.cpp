@@ -50,89 +50,41 @@ class SignalModel {
 class SimDevice final : public SimulatedRig {
  public:
   SimDevice(DeviceDescriptor d, Capabilities caps, std::unique_ptr<SignalModel> model)
-      : descriptor_(std::move(d)), caps_(std::move(caps)), model_(std::move(model)) {}
+      : SimulatedRig(std::move(d), std::move(caps)), model_(std::move(model)) {}
   ~SimDevice() override { close(); }
 
-  const DeviceDescriptor& descriptor() const override { return descriptor_; }
-  Capabilities capabilities() const override { return caps_; }
-  DeviceState state() const override { return state_.load(); }
   FaultCounters counters() const override {
     std::lock_guard<std::mutex> l(countersMutex_);
     return counters_;
   }
 
   core::Result<void> open() override {
-    if (state_ == DeviceState::Closed) state_ = DeviceState::Open;
+    if (state() == DeviceState::Closed) setState(DeviceState::Open);
     return {};
   }
   void close() override {
     stop();
-    state_ = DeviceState::Closed;
+    setState(DeviceState::Closed);
   }
 
-  // A session that ended by itself (completed, unplugged, ...) leaves its
-  // thread to be joined; after that the device is configured again.
-  void reapEndedSession() {
-    if (state_ == DeviceState::Running && ended_ && worker_.joinable()) {
-      worker_.join();
-      state_ = DeviceState::Configured;
-    }
+ protected:
+  core::Result<void> prepareConfig(AcquisitionConfig& applied) override { return model_->prepare(applied); }
+
+  // A fixed, slightly non-ideal device calibration so that the simulated
+  // codes exercise the whole pipeline (slope and intercept as a real
+  // USB-1608FS-Plus table would hold them).
+  void calibrateChains(std::vector<ChannelChain>& chains) override {
+    for (auto& c : chains) c.calibration = DeviceCalibration{1.0002, -3.0};
   }
 
-  core::Result<AcquisitionConfig> configure(const AcquisitionConfig& requested) override {
-    reapEndedSession();
-    if (state_ == DeviceState::Closed) return core::makeError(core::ErrorCode::InvalidArgument, "open the device first", descriptor_.label());
-    if (state_ == DeviceState::Running) return core::makeError(core::ErrorCode::InvalidArgument, "stop the acquisition first", descriptor_.label());
-    auto applied = validateConfig(caps_, requested);
-    if (!applied) return applied.error();
-    auto ok = model_->prepare(*applied);
-    if (!ok) return ok.error();
-    config_ = *applied;
-    chains_ = chainsFor(caps_, config_);
-    // A fixed, slightly non-ideal device calibration so that the simulated
-    // codes exercise the whole pipeline (slope and intercept as a real
-    // USB-1608FS-Plus table would hold them).
-    for (auto& c : chains_) c.calibration = DeviceCalibration{1.0002, -3.0};
-    state_ = DeviceState::Configured;
-    return config_;
-  }
-
-  core::Result<void> start(StreamSink sink) override {
-    reapEndedSession();
-    if (state_ != DeviceState::Configured) return core::makeError(core::ErrorCode::InvalidArgument, "configure the device before starting", descriptor_.label());
-    sink_ = std::move(sink);
-    stopRequested_ = false;
-    ended_ = false;
-    {
-      std::lock_guard<std::mutex> l(countersMutex_);
-      counters_ = FaultCounters{};
-    }
-    StreamHeader h;
-    h.sampleRateHz = config_.sampleRateHz;
-    h.startTime = std::chrono::system_clock::now();
-    h.device = descriptor_.label();
-    for (std::size_t i = 0; i < chains_.size(); ++i) {
-      core::signal::Channel ch;
-      ch.name = config_.channels[i].name.empty() ? caps_.inputs[static_cast<std::size_t>(config_.channels[i].input)].name : config_.channels[i].name;
-      ch.transducer = config_.channels[i].transducer;
-      ch.dof = config_.channels[i].dof;
-      ch.fullScale = chains_[i].fullScaleEngineering();
-      h.channels.push_back(ch);
-    }
-    sink_(StreamEvent(std::move(h)));
-    state_ = DeviceState::Running;
-    worker_ = std::thread([this] { run(); });
+  core::Result<void> beginSession() override {
+    std::lock_guard<std::mutex> l(countersMutex_);
+    counters_ = FaultCounters{};
     return {};
   }
 
-  void stop() override {
-    stopRequested_ = true;
-    if (worker_.joinable()) worker_.join();
-    if (state_ == DeviceState::Running) state_ = DeviceState::Configured;
-  }
-
  private:
-  void run() {
+  void runSession() override {
     const double fs = config_.sampleRateHz;
     const bool realtime = parameterBool(config_.parameters, "sim.realtime", true);
     const double pOverrun = parameterReal(config_.parameters, "fault.overrun_probability", 0.0);
@@ -146,12 +98,9 @@ class SimDevice final : public SimulatedRig {
     std::int64_t next = 0;       // sample index of the simulated clock
     std::int64_t delivered = 0;  // scans handed on
     core::Matrix physical;
-    auto end = [&](EndReason r, const std::string& m) {
-      ended_ = true;
-      sink_(StreamEvent(StreamEnd{r, delivered, m}));
-    };
+    auto end = [&](EndReason r, const std::string& m) { endSession(r, delivered, m); };
     for (;;) {
-      if (stopRequested_) return end(EndReason::Stopped, "stopped by the user");
+      if (stopRequested()) return end(EndReason::Stopped, "stopped by the user");
       if (config_.scanCount > 0 && next >= config_.scanCount)
         return end(EndReason::Completed, std::to_string(config_.scanCount) + " scans acquired");
       if (disconnectS > 0.0 && static_cast<double>(next) >= disconnectS * fs) {
@@ -168,7 +117,7 @@ class SimDevice final : public SimulatedRig {
       if (config_.scanCount > 0) n = std::min(n, config_.scanCount - next);
       if (pOverrun > 0.0 && uniform(rng) < pOverrun) {
         // The block is lost: report it and skip it on the simulated clock.
-        sink_(StreamEvent(OverrunEvent{next, n, true, "simulated FIFO overrun (fault injection)"}));
+        emit(StreamEvent(OverrunEvent{next, n, true, "simulated FIFO overrun (fault injection)"}));
         std::lock_guard<std::mutex> l(countersMutex_);
         ++counters_.overruns;
         counters_.lostScans += n;
@@ -189,37 +138,17 @@ class SimDevice final : public SimulatedRig {
       b.firstSample = next;
       const std::size_t nc = chains_.size();
       b.raw.resize(static_cast<std::size_t>(n) * nc);
-      b.values.resize(n, static_cast<Eigen::Index>(nc));
       for (std::int64_t s = 0; s < n; ++s)
-        for (std::size_t c = 0; c < nc; ++c) {
-          const std::int32_t raw = chains_[c].rawFromEngineering(physical(s, static_cast<Eigen::Index>(c)));
-          b.raw[static_cast<std::size_t>(s) * nc + c] = raw;
-          b.values(s, static_cast<Eigen::Index>(c)) = chains_[c].engineeringFromRaw(raw);
-        }
+        for (std::size_t c = 0; c < nc; ++c)
+          b.raw[static_cast<std::size_t>(s) * nc + c] = chains_[c].rawFromEngineering(physical(s, static_cast<Eigen::Index>(c)));
       next += n;
       delivered += n;
-      if (realtime) {
-        const auto due = wallStart + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                         std::chrono::duration<double>(static_cast<double>(next) / fs));
-        while (!stopRequested_ && std::chrono::steady_clock::now() < due)
-          std::this_thread::sleep_for(std::min<std::chrono::steady_clock::duration>(due - std::chrono::steady_clock::now(), std::chrono::milliseconds(20)));
-      }
-      auto overloads = detectOverloads(b, chains_);
-      sink_(StreamEvent(std::move(b)));
-      for (auto& o : overloads) sink_(StreamEvent(o));
+      if (realtime) paceTo(wallStart, static_cast<double>(next) / fs);
+      emitBlock(std::move(b));
     }
   }
 
-  DeviceDescriptor descriptor_;
-  Capabilities caps_;
   std::unique_ptr<SignalModel> model_;
-  AcquisitionConfig config_;
-  std::vector<ChannelChain> chains_;
-  std::atomic<DeviceState> state_{DeviceState::Closed};
-  std::atomic<bool> stopRequested_{false};
-  std::atomic<bool> ended_{false};
-  StreamSink sink_;
-  std::thread worker_;
   mutable std::mutex countersMutex_;
   FaultCounters counters_;
 };

@@ -14,6 +14,7 @@
 #include <memory>
 
 #include "devices/common/driver.h"
+#include "devices/common/threaded_device.h"
 
 namespace mozzi::devices::sim {
 
@@ -29,8 +30,9 @@ struct FaultCounters {
 };
 
 // Every simulated device is a SimulatedRig; tests read its counters.
-class SimulatedRig : public Device {
+class SimulatedRig : public ThreadedDevice {
  public:
+  using ThreadedDevice::ThreadedDevice;
   virtual FaultCounters counters() const = 0;
 };
 
