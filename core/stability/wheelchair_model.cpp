@@ -120,11 +120,45 @@ Result<void> validate(const WheelchairParameters& p) {
   return {};
 }
 
-Result<SteadyTurn> steadyTurn(const WheelchairParameters& p, double u, double dT) {
-  if (auto ok = validate(p); !ok) return ok.error();
+namespace {
+
+Result<void> checkSpeed(double u) {
   if (!std::isfinite(u) || u <= 0.0)
     return makeError(ErrorCode::InvalidArgument, "forward speed must be positive (a chair at rest has no slip angle)",
                      std::string(kWhere) + ", steady turning");
+  return {};
+}
+
+Error innerWheelStopped() {
+  return makeError(ErrorCode::NumericalFailure, "the inner rear wheel would roll backwards: turn too tight", kWhere);
+}
+
+// Checks and derived quantities shared by both steady-turn definitions.
+Result<SteadyTurn> finishSteadyTurn(const WheelchairParameters& p, double u, double v, double r, double dT) {
+  if (std::abs(r) * p.rearHalfTrack >= u) return innerWheelStopped();
+  SteadyTurn s;
+  s.u = u, s.v = v, s.r = r;
+  s.differentialTorque = dT;
+  const Forces f = rearForces(p, u, v, r);
+  s.slipRight = f.slipR, s.slipLeft = f.slipL;
+  if (std::max(std::abs(f.slipR), std::abs(f.slipL)) > 10.0 * kPi / 180.0) {
+    std::ostringstream msg;
+    msg << "rear slip angle " << std::max(std::abs(f.slipR), std::abs(f.slipL)) * 180 / kPi
+        << " deg is outside the small-angle linear tyre of §7.2";
+    return makeError(ErrorCode::NumericalFailure, msg.str(), kWhere);
+  }
+  s.radius = r != 0.0 ? std::hypot(u, v) / std::abs(r) : HUGE_VAL;
+  s.deltaRight = steadyCaster(p, -p.casterHalfTrack, u, v, r);
+  s.deltaLeft = steadyCaster(p, p.casterHalfTrack, u, v, r);
+  s.commonTorque = -p.mass * v * r * p.rearWheelRadius;
+  return s;
+}
+
+}  // namespace
+
+Result<SteadyTurn> steadyTurn(const WheelchairParameters& p, double u, double dT) {
+  if (auto ok = validate(p); !ok) return ok.error();
+  if (auto ok = checkSpeed(u); !ok) return ok.error();
   if (!std::isfinite(dT)) return makeError(ErrorCode::InvalidArgument, "differential torque must be finite", kWhere);
   const double m = p.mass, b = p.rearAxleBehindCoM, w = p.rearHalfTrack, Rw = p.rearWheelRadius;
   const double Ca = p.rearCorneringStiffness, Cm = p.rearAligningStiffness;
@@ -151,23 +185,19 @@ Result<SteadyTurn> steadyTurn(const WheelchairParameters& p, double u, double dT
     if (std::abs(dv) < 1e-14 && std::abs(dr) < 1e-14) break;
     if (it == 99) return makeError(ErrorCode::NumericalFailure, "steady-turning solution did not converge", kWhere);
   }
-  if (std::abs(r) * w >= u)
-    return makeError(ErrorCode::NumericalFailure, "the inner rear wheel would roll backwards: turn too tight", kWhere);
-  SteadyTurn s;
-  s.u = u, s.v = v, s.r = r;
-  const Forces f = rearForces(p, u, v, r);
-  s.slipRight = f.slipR, s.slipLeft = f.slipL;
-  if (std::max(std::abs(f.slipR), std::abs(f.slipL)) > 10.0 * kPi / 180.0) {
-    std::ostringstream msg;
-    msg << "rear slip angle " << std::max(std::abs(f.slipR), std::abs(f.slipL)) * 180 / kPi
-        << " deg is outside the small-angle linear tyre of §7.2";
-    return makeError(ErrorCode::NumericalFailure, msg.str(), kWhere);
-  }
-  s.radius = r != 0.0 ? std::hypot(u, v) / std::abs(r) : HUGE_VAL;
-  s.deltaRight = steadyCaster(p, -p.casterHalfTrack, u, v, r);
-  s.deltaLeft = steadyCaster(p, p.casterHalfTrack, u, v, r);
-  s.commonTorque = -m * v * r * Rw;
-  return s;
+  return finishSteadyTurn(p, u, v, r, dT);
+}
+
+Result<SteadyTurn> steadyTurnAtYawRate(const WheelchairParameters& p, double u, double r) {
+  if (auto ok = validate(p); !ok) return ok.error();
+  if (auto ok = checkSpeed(u); !ok) return ok.error();
+  if (!std::isfinite(r)) return makeError(ErrorCode::InvalidArgument, "yaw rate must be finite", kWhere);
+  const double w = p.rearHalfTrack, Ca = p.rearCorneringStiffness;
+  if (std::abs(r) * w >= u) return innerWheelStopped();
+  // Lateral balance -C_alpha (v - b r) (1/(u + r w) + 1/(u - r w)) = m u r.
+  const double v = p.rearAxleBehindCoM * r - p.mass * r * (u * u - r * r * w * w) / (2.0 * Ca);
+  const double dT = p.rearWheelRadius * p.mass * u * r * (p.rearAxleBehindCoM + p.rearAligningStiffness / Ca) / w;
+  return finishSteadyTurn(p, u, v, r, dT);
 }
 
 Result<std::vector<WheelchairState>> simulate(const WheelchairParameters& p, const Manoeuvre& m) {
@@ -277,10 +307,8 @@ Result<std::vector<SensitivityCase>> stiffnessSensitivity(const WheelchairParame
     if (!std::isfinite(k) || k <= 0.0)
       return makeError(ErrorCode::InvalidArgument, "stiffness factor must be positive", kWhere);
     WheelchairParameters q = p;
-    if (which == WheelchairStiffness::Cornering)
-      q.rearCorneringStiffness *= k;
-    else
-      q.rearAligningStiffness *= k;
+    if (which != WheelchairStiffness::Aligning) q.rearCorneringStiffness *= k;
+    if (which != WheelchairStiffness::Cornering) q.rearAligningStiffness *= k;
     SensitivityCase c;
     c.factor = k;
     auto st = steadyTurn(q, speed, turnTorque);

@@ -65,7 +65,8 @@ struct SteadyTurn {
   double radius = 0.0;               // of G's path: sqrt(u^2 + v^2)/|r| [m]
   double slipRight = 0.0, slipLeft = 0.0;
   double deltaRight = 0.0, deltaLeft = 0.0;
-  double commonTorque = 0.0;  // T_R + T_L needed to hold u [N m]
+  double commonTorque = 0.0;        // T_R + T_L needed to hold u [N m]
+  double differentialTorque = 0.0;  // T_R - T_L: the input, or what a prescribed path needs [N m]
 };
 
 // Errors for every parameter out of range (mass, inertias, lengths, stiffness
@@ -73,11 +74,22 @@ struct SteadyTurn {
 Result<void> validate(const WheelchairParameters& p);
 
 // Steady turn at forward speed u [m/s] with differential torque
-// T_R - T_L [N m] (positive turns left). Newton on (v, r) from the linear
-// closed form r = w dT/R_w / (m u (b + C_M/C_alpha)); then the caster angles.
+// T_R - T_L [N m] (positive turns left). Newton on the force and moment
+// balance for (v, r), then the caster angles. Both wheels share v - b r, so
+// the balance has the closed form r = w dT/R_w / (m u (b + C_M/C_alpha))
+// (exact in this model, used as the start and checked by the tests).
 // Errors: u <= 0 (a wheelchair at rest has no slip angle), no convergence,
 // a slip angle above 10 deg (outside the linear tyre assumption).
 Result<SteadyTurn> steadyTurn(const WheelchairParameters& p, double speed, double differentialTorque);
+
+// Steady turn on a prescribed path: forward speed u and yaw rate r given, the
+// lateral velocity v and the differential torque that hold it returned. With
+// (u, r) fixed the lateral force sum F_y = m u r is fixed, both rear wheels
+// share v - b r, and the slip angles are exactly F_y/C_alpha-proportional:
+//   v - b r = -m r (u^2 - r^2 w^2)/(2 C_alpha),   alpha_R,L = (v - b r)/(u +- r w),
+//   T_R - T_L = R_w m u r (b + C_M/C_alpha)/w.
+// Errors as steadyTurn, and r w >= u (inner wheel stopped).
+Result<SteadyTurn> steadyTurnAtYawRate(const WheelchairParameters& p, double speed, double yawRate);
 
 struct Manoeuvre {
   double speed = 1.11;                               // u at t = 0 [m/s] (4 km/h, §7.1 disc speed)
@@ -108,13 +120,16 @@ struct SlalomSummary {
 Result<SlalomSummary> summariseSlalom(const std::vector<WheelchairState>& history, double fromTime);
 
 // §7.3/§7.4: the rear cornering or aligning stiffness scaled by each factor
-// (thesis: 0.5, 1, 2).
+// (thesis: 0.5, 1, 2), the other one held, at the same speed and torque input
+// (the thesis's study). `Tyre` scales both together (pneumatic trail
+// C_M/C_alpha held): not a thesis study, the reference case in which slip
+// angles scale exactly as 1/C_alpha (docs/validation/tire.md).
 struct SensitivityCase {
   double factor = 1.0;
   SteadyTurn steady;
   SlalomSummary slalom;
 };
-enum class WheelchairStiffness { Cornering, Aligning };
+enum class WheelchairStiffness { Cornering, Aligning, Tyre };
 Result<std::vector<SensitivityCase>> stiffnessSensitivity(const WheelchairParameters& p, WheelchairStiffness which,
                                                           const std::vector<double>& factors, double speed,
                                                           double turnTorque, double slalomTorque,

@@ -18,10 +18,10 @@ using Json = nlohmann::json;
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 const char* kUsage =
-    "Usage: mozzi-cli wheelchair steady [--speed M/S] [--torque NM] [chair options] [--json]\n"
+    "Usage: mozzi-cli wheelchair steady [--speed M/S] [--torque NM | --yaw-rate RAD/S] [chair options] [--json]\n"
     "       mozzi-cli wheelchair slalom [--speed M/S] [--torque NM] [--frequency HZ] [--duration S]\n"
     "                                   [--out HISTORY.csv] [chair options] [--json]\n"
-    "       mozzi-cli wheelchair sensitivity --stiffness cornering|aligning [--speed] [--torque]\n"
+    "       mozzi-cli wheelchair sensitivity --stiffness cornering|aligning|tyre [--speed] [--torque]\n"
     "                                   [--slalom-torque NM] [--frequency HZ] [--duration S] [--json]\n"
     "chair options: --mass KG --yaw-inertia KGM2 --rear-axle-behind M --caster-ahead M --half-track M\n"
     "               --cornering-stiffness N/RAD --aligning-stiffness NM/RAD (per rear tyre)\n";
@@ -40,7 +40,8 @@ Json steadyJson(const st::SteadyTurn& s) {
           {"slip_left_rad", s.slipLeft},
           {"caster_right_rad", s.deltaRight},
           {"caster_left_rad", s.deltaLeft},
-          {"common_torque_nm", s.commonTorque}};
+          {"common_torque_nm", s.commonTorque},
+          {"differential_torque_nm", s.differentialTorque}};
 }
 
 Json slalomJson(const st::SlalomSummary& s) {
@@ -52,9 +53,9 @@ Json slalomJson(const st::SlalomSummary& s) {
 }
 
 int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const OptionSpec spec{{"--speed", "--torque", "--frequency", "--duration", "--out", "--stiffness", "--slalom-torque",
-                         "--mass", "--yaw-inertia", "--rear-axle-behind", "--caster-ahead", "--half-track",
-                         "--cornering-stiffness", "--aligning-stiffness"},
+  const OptionSpec spec{{"--speed", "--torque", "--yaw-rate", "--frequency", "--duration", "--out", "--stiffness",
+                         "--slalom-torque", "--mass", "--yaw-inertia", "--rear-axle-behind", "--caster-ahead",
+                         "--half-track", "--cornering-stiffness", "--aligning-stiffness"},
                         {"--json"}};
   const auto a = ParsedArgs::parse(args, spec);
   if (!a) return usage(err, a.error().describe());
@@ -81,7 +82,11 @@ int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, s
   const std::string& sub = a->positional()[0];
   const bool json = a->flag("--json");
   if (sub == "steady") {
-    auto s = st::steadyTurn(p, speed, torque);
+    // --yaw-rate prescribes the path (u, r) and returns the torque it needs.
+    auto yawRate = a->number("--yaw-rate");
+    if (!yawRate) return usage(err, yawRate.error().describe());
+    if (*yawRate && a->value("--torque")) return usage(err, "give --torque or --yaw-rate, not both");
+    auto s = *yawRate ? st::steadyTurnAtYawRate(p, speed, **yawRate) : st::steadyTurn(p, speed, torque);
     if (!s) {
       err << "mozzi-cli wheelchair steady: " << s.error().describe() << "\n";
       return kExitFailure;
@@ -93,8 +98,8 @@ int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, s
       std::snprintf(line, sizeof line,
                     "steady turn at u = %.3f m/s, T_R - T_L = %.2f Nm: radius %.3f m, yaw rate %.4f rad/s\n"
                     "  rear slip angles: right %.4f deg, left %.4f deg; caster angles: right %.2f deg, left %.2f deg\n",
-                    s->u, torque, s->radius, s->r, s->slipRight / kDeg, s->slipLeft / kDeg, s->deltaRight / kDeg,
-                    s->deltaLeft / kDeg);
+                    s->u, s->differentialTorque, s->radius, s->r, s->slipRight / kDeg, s->slipLeft / kDeg,
+                    s->deltaRight / kDeg, s->deltaLeft / kDeg);
       out << line;
     }
     return kExitOk;
@@ -139,11 +144,14 @@ int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, s
   }
   if (sub == "sensitivity") {
     const auto which = a->value("--stiffness");
-    if (!which || (*which != "cornering" && *which != "aligning"))
-      return usage(err, "sensitivity needs --stiffness cornering|aligning");
-    auto cases = st::stiffnessSensitivity(
-        p, *which == "cornering" ? st::WheelchairStiffness::Cornering : st::WheelchairStiffness::Aligning,
-        {0.5, 1.0, 2.0}, speed, torque, slalomTorque, frequency, duration);
+    if (!which || (*which != "cornering" && *which != "aligning" && *which != "tyre"))
+      return usage(err, "sensitivity needs --stiffness cornering|aligning|tyre");
+    // cornering, aligning: the thesis's studies (§7.3, §7.4), one stiffness
+    // scaled, the other held; tyre: both together (pneumatic trail held).
+    const auto kind = *which == "cornering"  ? st::WheelchairStiffness::Cornering
+                      : *which == "aligning" ? st::WheelchairStiffness::Aligning
+                                             : st::WheelchairStiffness::Tyre;
+    auto cases = st::stiffnessSensitivity(p, kind, {0.5, 1.0, 2.0}, speed, torque, slalomTorque, frequency, duration);
     if (!cases) {
       err << "mozzi-cli wheelchair sensitivity: " << cases.error().describe() << "\n";
       return kExitFailure;

@@ -10,8 +10,8 @@
 #include <sstream>
 
 #include "app/cli/command.h"
-#include "core/tire/magic_formula.h"
 #include "cli_run.h"
+#include "core/tire/magic_formula.h"
 
 namespace mozzi::cli {
 namespace {
@@ -175,6 +175,32 @@ TEST(WheelchairCli, SteadyAndSensitivity) {
   const auto shortRun = run({"wheelchair", "sensitivity", "--stiffness", "cornering", "--duration", "8"});
   EXPECT_EQ(shortRun.code, kExitFailure);  // 2 cycles at 0.25 Hz
   EXPECT_NE(shortRun.err.find("3 cycles"), std::string::npos);
+}
+
+TEST(WheelchairCli, PrescribedYawRateAndWholeTyreScaling) {
+  // Round trip: the default steady turn (6 N m) and the path it produces,
+  // prescribed with --yaw-rate, must need the same 6 N m (Newton vs closed
+  // form; JSON prints 17 significant digits, so 1e-9 is rounding).
+  const auto r = run({"wheelchair", "steady", "--json"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  char rate[64];
+  std::snprintf(rate, sizeof rate, "%.17g", j["yaw_rate_rad_s"].get<double>());
+  const auto p = run({"wheelchair", "steady", "--yaw-rate", rate, "--json"});
+  ASSERT_EQ(p.code, kExitOk) << p.err;
+  const auto k = nlohmann::json::parse(p.out);
+  EXPECT_NEAR(k["differential_torque_nm"].get<double>(), 6.0, 6e-9);
+  EXPECT_NEAR(k["slip_right_rad"].get<double>(), j["slip_right_rad"].get<double>(),
+              1e-9 * std::abs(j["slip_right_rad"].get<double>()));
+  EXPECT_EQ(run({"wheelchair", "steady", "--yaw-rate", "1", "--torque", "3"}).code, kExitUsage);
+  EXPECT_EQ(run({"wheelchair", "steady", "--yaw-rate", "10"}).code, kExitFailure);  // inner wheel stopped
+  // Whole tyre halved (trail held): slip angles exactly double (the model's
+  // closed form, docs/validation/tire.md).
+  const auto t = run({"wheelchair", "sensitivity", "--stiffness", "tyre", "--json", "--duration", "12"});
+  ASSERT_EQ(t.code, kExitOk) << t.err;
+  const auto c = nlohmann::json::parse(t.out);
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_NEAR(c[0]["steady"]["slip_left_rad"].get<double>() / c[1]["steady"]["slip_left_rad"].get<double>(), 2.0, 2e-9);
 }
 
 }  // namespace
