@@ -16,12 +16,24 @@ namespace mozzi::core::gap {
 enum class Verdict { Effect, None, Ambiguous, Partial, Unexplained, NotIdentifiable };
 const char* verdictName(Verdict verdict);  // "effect", "none", "ambiguous", ...
 
+// How the bootstrap refits each simulated data set (docs/gap.md, "How the
+// diagnosis decides"): full nonlinear refits, or the linearisation about the
+// baseline (exact for linear-Gaussian problems, checked against full refits in
+// tests/core/gap/engine_bootstrap_test.cpp). Auto refits fully when
+// bootstrapSamples x (candidates + 1) x residualCount <= 2e7.
+enum class NullMethod { Auto, FullRefit, Linearised };
+
 struct DiagnosisOptions {
   std::vector<std::string> effects;  // restrict the catalogue to these names; empty = all
   int multistarts = 8;               // per nonlinear fit (GAP.md: 5 to 20)
   int bootstrapSamples = 200;        // null calibration of the threshold
   double alpha = 0.05;               // false-attribution level of the threshold
   unsigned long long seed = 1;       // every random draw is seeded: reproducible reports
+  NullMethod nullMethod = NullMethod::Auto;
+  int ambiguitySamples = 20;  // simulations from each of the top two for the flip probability
+  double flipLimit = 0.10;    // flip probability above which the top two are "ambiguous" (GAP.md: 10%)
+  double fitAlpha = 0.01;     // goodness-of-fit level for "the data are still far from the model"
+  int reportTop = 3;          // effects that get held-out checks, gap_after and shrink_pct
   // Called now and then with the fraction done (0..1) and the current step;
   // returning false cancels (diagnose then returns ErrorCode::Cancelled).
   // The workbench runs the diagnosis off the GUI thread and uses this.
@@ -40,6 +52,15 @@ struct RankedEffect {
   bool identifiable = true;         // projected signature above the noise scale
   GapMetrics gapAfter;
   double shrinkPct = 0.0;           // 100 (1 - gap_after.overall / gap_before.overall)
+  // Linear screen: smallest singular value of the projected signature over the
+  // parameter box (noise standard deviations), and per parameter the smallest
+  // size the threshold would detect (about half the time), in the parameter's unit.
+  double projectedSignature = 0.0;
+  std::vector<double> smallestDetectable;
+  double chiSquare = 0.0;           // |r|^2 after the fit (whitened data residuals)
+  double fitPValue = 1.0;           // chi-square goodness of fit after the fit
+  bool fitted = false;              // false when screened out (not identifiable) or the fit failed
+  std::string note;                 // why not identifiable (singular values, null direction), in words
 };
 
 struct Diagnosis {
@@ -49,6 +70,13 @@ struct Diagnosis {
   GapMetrics gapBefore;                    // at the calibrated baseline
   std::vector<GapEntry> where;             // the flagged rows carrying most of the gap
   double threshold = 0.0;                  // bootstrap (1 - alpha) quantile of max LR under no effect
+  bool thresholdLinearised = false;        // the bootstrap used the linearised refits
+  int bootstrapSamples = 0;
+  double chiSquare = 0.0;                  // baseline goodness of fit: |r|^2 of the whitened residuals
+  int dof = 0;                             // residual count minus free calibration parameters
+  double fitPValue = 1.0;                  // P(chi2_dof > chiSquare)
+  double flipProbability = -1.0;           // top-two ambiguity check; < 0 when not run
+  std::string separatingMeasurement;       // where the top two differ most (ambiguous verdicts)
   std::vector<RankedEffect> ranking;       // best first
   Verdict verdict = Verdict::None;
   std::vector<int> verdictSet;             // indices into ranking (several when ambiguous)
