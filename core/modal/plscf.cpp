@@ -12,6 +12,7 @@
 
 #include "core/modal/lsfd.h"
 #include "core/modal/shape_tools.h"
+#include "core/modal/stabilization.h"
 
 namespace mozzi::core::modal {
 
@@ -89,46 +90,6 @@ ComplexMatrix lagSums(const ComplexMatrix& series, const Vector& f, double dt, l
   return out;
 }
 
-// Roots of the monic real polynomial z^m + sum_{j<m} a_j z^j by the
-// Aberth-Ehrlich iteration, warm-started from the previous order's roots (the
-// stable ones barely move), new guesses on the unit circle. O(m^2) per sweep
-// against O(m^3) for a companion QR; false when it does not converge, and the
-// caller falls back to the companion matrix.
-bool aberthRoots(const Eigen::Ref<const Vector>& a, const std::vector<Complex>& warm, std::vector<Complex>& roots) {
-  const Eigen::Index m = a.size();
-  roots.assign(static_cast<std::size_t>(m), Complex(0.0, 0.0));
-  const Eigen::Index reuse = std::min<Eigen::Index>(m, static_cast<Eigen::Index>(warm.size()));
-  for (Eigen::Index i = 0; i < reuse; ++i) roots[static_cast<std::size_t>(i)] = warm[static_cast<std::size_t>(i)];
-  for (Eigen::Index i = reuse; i < m; ++i) {
-    const double t = kTwoPi * (static_cast<double>(i - reuse) + 0.37) / static_cast<double>(m - reuse) + 0.1;
-    roots[static_cast<std::size_t>(i)] = std::polar(1.05, t);
-  }
-  for (int sweep = 0; sweep < 40; ++sweep) {
-    double worst = 0.0;
-    for (Eigen::Index i = 0; i < m; ++i) {
-      Complex& z = roots[static_cast<std::size_t>(i)];
-      // Horner: p and p'.
-      Complex pz(1.0, 0.0), dp(0.0, 0.0);
-      for (Eigen::Index j = m - 1; j >= 0; --j) {
-        dp = dp * z + pz;
-        pz = pz * z + a[j];
-      }
-      if (pz == Complex(0.0, 0.0)) continue;
-      const Complex ratio = pz / dp;
-      Complex sum(0.0, 0.0);
-      for (Eigen::Index j = 0; j < m; ++j) {
-        if (j != i) sum += 1.0 / (z - roots[static_cast<std::size_t>(j)]);
-      }
-      const Complex w = ratio / (1.0 - ratio * sum);
-      if (!std::isfinite(w.real()) || !std::isfinite(w.imag())) return false;
-      z -= w;
-      worst = std::max(worst, std::abs(w) / std::max(1.0, std::abs(z)));
-    }
-    if (worst < 1e-11) return true;  // relative step; the roots are not better conditioned than this at order 100+
-  }
-  return false;
-}
-
 }  // namespace
 
 char poleStatusSymbol(PoleStatus status) {
@@ -145,26 +106,9 @@ char poleStatusSymbol(PoleStatus status) {
 Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const PlscfOptions& opt) {
   const std::string where = "pLSCF";
   if (auto ok = frf.validate(); !ok) return ok.error();
-  if (!(opt.bandLowHz >= 0.0) || !(opt.bandHighHz > opt.bandLowHz)) {
-    return makeError(ErrorCode::InvalidArgument, "band must satisfy 0 <= low < high (got " + hz(opt.bandLowHz) +
-                                                     " .. " + hz(opt.bandHighHz) + ")",
-                     where + ", band");
-  }
-  if (opt.minOrder < 1 || opt.maxOrder < opt.minOrder || opt.orderStep < 1) {
-    return makeError(ErrorCode::InvalidArgument,
-                     "order range must satisfy 1 <= min <= max and step >= 1 (got " + std::to_string(opt.minOrder) +
-                         ".." + std::to_string(opt.maxOrder) + " step " + std::to_string(opt.orderStep) + ")",
-                     where + ", orders");
-  }
-  std::vector<int> orders;
-  for (int m = opt.minOrder; m <= opt.maxOrder; m += opt.orderStep) orders.push_back(m);
-  if (static_cast<int>(orders.size()) < opt.minClusterSize + 1) {
-    return makeError(ErrorCode::InvalidArgument,
-                     "order range " + std::to_string(opt.minOrder) + ".." + std::to_string(opt.maxOrder) + " gives " +
-                         std::to_string(orders.size()) + " orders; judging stability needs at least " +
-                         std::to_string(opt.minClusterSize + 1),
-                     where + ", orders");
-  }
+  auto orderList = stabilizationOrders(opt, where);
+  if (!orderList) return orderList.error();
+  const std::vector<int>& orders = *orderList;
   const Eigen::Index nfAll = frf.lineCount();
   Eigen::Index k0 = 0;
   while (k0 < nfAll && frf.frequencyHz[k0] < opt.bandLowHz) ++k0;
@@ -194,8 +138,8 @@ Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const Plsc
   long fftSize = 0;
   double dt = 1.0 / (2.0 * f[nf - 1]);
   if (even) {
-    fftSize = niceFftSize(std::max<long>({static_cast<long>(std::ceil(2.0 * f[nf - 1] / df)) + 1,
-                                          static_cast<long>(nf), 2L * n + 2}));
+    fftSize = niceFftSize(
+        std::max<long>({static_cast<long>(std::ceil(2.0 * f[nf - 1] / df)) + 1, static_cast<long>(nf), 2L * n + 2}));
     dt = 1.0 / (static_cast<double>(fftSize) * df);
   }
 
@@ -236,7 +180,8 @@ Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const Plsc
   for (Eigen::Index o = 0; o < no; ++o)
     for (Eigen::Index l = 0; l < n1; ++l)
       for (Eigen::Index a = 0; a < ni; ++a)
-        for (Eigen::Index j = 0; j < n1; ++j) st(o * nb + l * ni + a, j) = -lag(static_cast<int>(l - j), 1 + o * ni + a).real();
+        for (Eigen::Index j = 0; j < n1; ++j)
+          st(o * nb + l * ni + a, j) = -lag(static_cast<int>(l - j), 1 + o * ni + a).real();
 
   // R is the Gram matrix of the numerator basis; for a narrow band far from
   // 0 Hz it is numerically singular (the basis is redundant). A ridge of
@@ -261,13 +206,16 @@ Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const Plsc
   Matrix g = Matrix::Zero(nb, nb);  // running sum_{j<=m} sum_o w_oj^T w_oj (lower triangle)
   std::size_t nextOrder = 0;
   std::vector<StabilizationPole> previous;
-  std::vector<Complex> warmRoots;  // all roots of the previous order (ni = 1)
+  MatrixPolynomialRoots roots;
+  Matrix alpha, beta;
+  ComplexVector zpow;
   for (Eigen::Index j = 0; j < n1 && nextOrder < orders.size(); ++j) {
     Eigen::Map<const Matrix> wj(wt.col(j).data(), nb, no);  // wj(c, o) = W_o(j, c)
     g.selfadjointView<Eigen::Lower>().rankUpdate(wj);
     const int m = static_cast<int>(j);
     if (m != orders[nextOrder]) continue;
     ++nextOrder;
+    const std::string at = where + ", order " + std::to_string(m);
     const Eigen::Index mb = static_cast<Eigen::Index>(m) * ni, mb1 = mb + ni;
     // M_m = T_m - G_m (leading (m+1) ni block), symmetric.
     Matrix mm = tmat.topLeftCorner(mb1, mb1);
@@ -275,143 +223,38 @@ Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const Plsc
     mm = mm.selfadjointView<Eigen::Lower>();
     Eigen::LDLT<Matrix> ldlt(mm.topLeftCorner(mb, mb));
     if (ldlt.info() != Eigen::Success) {
-      return makeError(ErrorCode::NumericalFailure, "reduced normal equations are singular",
-                       where + ", order " + std::to_string(m));
+      return makeError(ErrorCode::NumericalFailure, "reduced normal equations are singular", at);
     }
-    Matrix alpha(mb1, ni);  // [alpha_0; ...; alpha_{m-1}; I]
+    alpha.resize(mb1, ni);  // [alpha_0; ...; alpha_{m-1}; I]
     alpha.topRows(mb) = -ldlt.solve(mm.topRightCorner(mb, ni));
     alpha.bottomRows(ni).setIdentity();
     if (!alpha.allFinite()) {
-      return makeError(ErrorCode::NumericalFailure, "denominator coefficients are not finite",
-                       where + ", order " + std::to_string(m));
+      return makeError(ErrorCode::NumericalFailure, "denominator coefficients are not finite", at);
     }
-    // Poles z_r: eigenvalues of the companion matrix of A(z). For ni = 1 the
-    // upper Hessenberg form (first row -a_{m-1} .. -a_0, ones below the
-    // diagonal) goes straight to the real Schur iteration, skipping the
-    // Hessenberg reduction; for ni > 1 the block companion (bottom block row
-    // -alpha_j, z^m l = -sum_j alpha_j z^j l) is reduced first. Eigenvalues only:
-    // null vectors of the small A(z_r) give shapes and participations below.
-    ComplexVector zr;
-    std::vector<Complex> roots;
-    if (ni == 1 && aberthRoots(alpha.col(0).head(mb), warmRoots, roots)) {
-      zr = Eigen::Map<const ComplexVector>(roots.data(), mb);
-      warmRoots = roots;
-    } else if (ni == 1) {
-      warmRoots.clear();
-      Matrix hess = Matrix::Zero(mb, mb);
-      for (Eigen::Index jj = 0; jj < mb; ++jj) hess(0, jj) = -alpha(mb - 1 - jj, 0);
-      if (mb > 1) hess.diagonal(-1).setOnes();
-      Eigen::RealSchur<Matrix> schur(mb);
-      schur.computeFromHessenberg(hess, Matrix(), false);
-      if (schur.info() != Eigen::Success) {
-        return makeError(ErrorCode::NumericalFailure, "companion eigenproblem did not converge",
-                         where + ", order " + std::to_string(m));
-      }
-      const Matrix& t = schur.matrixT();
-      zr.resize(mb);
-      for (Eigen::Index q = 0; q < mb;) {
-        if (q + 1 < mb && t(q + 1, q) != 0.0) {
-          // 2 x 2 block [a b; c d]: eigenvalues (a + d)/2 +- sqrt(((a - d)/2)^2 + b c).
-          const double p0 = 0.5 * (t(q, q) + t(q + 1, q + 1));
-          const Complex disc = std::sqrt(Complex(0.25 * (t(q, q) - t(q + 1, q + 1)) * (t(q, q) - t(q + 1, q + 1)) +
-                                                 t(q, q + 1) * t(q + 1, q)));
-          zr[q] = p0 + disc;
-          zr[q + 1] = p0 - disc;
-          q += 2;
-        } else {
-          zr[q] = t(q, q);
-          ++q;
-        }
-      }
-    } else {
-      Matrix comp = Matrix::Zero(mb, mb);
-      if (m > 1) comp.topRightCorner(mb - ni, mb - ni).setIdentity();
-      for (Eigen::Index jj = 0; jj < m; ++jj) comp.block(mb - ni, jj * ni, ni, ni) = -alpha.block(jj * ni, 0, ni, ni);
-      Eigen::EigenSolver<Matrix> es(comp, false);
-      if (es.info() != Eigen::Success) {
-        return makeError(ErrorCode::NumericalFailure, "companion eigenproblem did not converge",
-                         where + ", order " + std::to_string(m));
-      }
-      zr = es.eigenvalues();
-    }
+    auto zr = roots.solve(alpha, ni, at);
+    if (!zr) return zr.error();
     // Numerator per output: beta_o = -R_m^-1 S_o,m alpha = -L_m^-T (W_o,m alpha).
-    Matrix beta(static_cast<Eigen::Index>(m + 1), no * ni);
+    beta.resize(m + 1, no * ni);
     for (Eigen::Index o = 0; o < no; ++o) {
       beta.middleCols(o * ni, ni) = wt.block(o * nb, 0, mb1, m + 1).transpose() * alpha;
     }
     lmat.topLeftCorner(m + 1, m + 1).transpose().triangularView<Eigen::Upper>().solveInPlace(beta);
     beta = -beta;
-
-    std::vector<StabilizationPole> current;
-    for (Eigen::Index r = 0; r < zr.size(); ++r) {
-      const Complex z = zr[r];
-      if (std::abs(z) == 0.0) continue;
-      const Complex lambda = std::log(z) / dt;
-      if (lambda.imag() <= 0.0) continue;
-      const double fr = poleFrequencyHz(lambda), zr = poleZeta(lambda);
-      if (fr < opt.bandLowHz || fr > opt.bandHighHz || !(zr > 0.0) || zr > opt.criteria.maxZeta) continue;
-      StabilizationPole p;
-      p.order = m;
-      p.pole = lambda;
-      p.frequencyHz = fr;
-      p.zeta = zr;
-      // H_o = B_o A^-1 ~ (B_o(z_r) v) w^T / (z - z_r): v, the right null vector
-      // of A(z_r), builds the shape; w (w^T A(z_r) = 0) is the participation
-      // vector. From A = U S V^H: v = last column of V, w = conj(last column of U).
-      ComplexVector v = ComplexVector::Ones(1);
-      if (ni > 1) {
-        ComplexMatrix az = ComplexMatrix::Zero(ni, ni);
-        Complex zp(1.0, 0.0);
-        for (int q = 0; q <= m; ++q) {
-          az += zp * alpha.block(static_cast<Eigen::Index>(q) * ni, 0, ni, ni).cast<Complex>();
-          zp *= z;
-        }
-        Eigen::JacobiSVD<ComplexMatrix> svd(az, Eigen::ComputeFullU | Eigen::ComputeFullV);
-        v = svd.matrixV().col(ni - 1);
-        p.participation = svd.matrixU().col(ni - 1).conjugate();
-        Eigen::Index imax = 0;
-        p.participation.cwiseAbs().maxCoeff(&imax);
-        p.participation /= p.participation[imax];
-      } else {
-        p.participation = v;
-      }
-      // shape_o = B_o(z) l = sum_j z^j beta_oj l.
-      p.shape.resize(no);
-      ComplexVector zpow(m + 1);
+    // Shape_o = B_o(z) v = sum_q z^q beta_oq v.
+    auto shape = [&](Complex z, const ComplexVector& v) {
+      zpow.resize(m + 1);
       zpow[0] = 1.0;
       for (int q = 1; q <= m; ++q) zpow[q] = zpow[q - 1] * z;
+      const Vector re = beta.transpose() * zpow.real(), im = beta.transpose() * zpow.imag();  // (o a)
+      ComplexVector s(no);
       for (Eigen::Index o = 0; o < no; ++o) {
         Complex acc(0.0, 0.0);
-        for (Eigen::Index a = 0; a < ni; ++a) {
-          Complex ba(0.0, 0.0);
-          for (int q = 0; q <= m; ++q) ba += zpow[q] * beta(q, o * ni + a);
-          acc += ba * v[a];
-        }
-        p.shape[o] = acc;
+        for (Eigen::Index a = 0; a < ni; ++a) acc += Complex(re[o * ni + a], im[o * ni + a]) * v[a];
+        s[o] = acc;
       }
-      // Stability against the previous evaluated order: nearest pole in frequency.
-      p.status = PoleStatus::New;
-      const StabilizationPole* best = nullptr;
-      for (const auto& q : previous) {
-        if (!best || std::abs(q.frequencyHz - fr) < std::abs(best->frequencyHz - fr)) best = &q;
-      }
-      if (best && std::abs(best->frequencyHz - fr) <= opt.criteria.frequencyTolerance * best->frequencyHz) {
-        const bool dampOk = std::abs(best->zeta - zr) <= opt.criteria.dampingTolerance * best->zeta;
-        const double vmac = opt.criteria.vector == StabilityVector::Participation
-                                ? mac(p.participation, best->participation)
-                                : mac(p.shape, best->shape);
-        const bool vecOk = vmac >= opt.criteria.macThreshold;
-        p.status = dampOk && vecOk ? PoleStatus::Stable
-                   : dampOk        ? PoleStatus::FrequencyDamping
-                   : vecOk         ? PoleStatus::FrequencyVector
-                                   : PoleStatus::Frequency;
-      }
-      current.push_back(std::move(p));
-    }
-    std::sort(current.begin(), current.end(),
-              [](const StabilizationPole& a, const StabilizationPole& b) { return a.frequencyHz < b.frequencyHz; });
-    diag.poles.insert(diag.poles.end(), current.begin(), current.end());
-    previous = std::move(current);
+      return s;
+    };
+    appendOrderPoles(m, alpha, ni, *zr, dt, shape, opt, previous, diag);
   }
   return diag;
 }
@@ -445,8 +288,9 @@ Result<std::vector<SelectedPole>> selectPoles(const StabilizationDiagram& diagra
       best->meanHz += (p->frequencyHz - best->meanHz) / static_cast<double>(best->members.size());
     }
   }
-  const int needed = std::max(opt.minClusterSize, static_cast<int>(std::ceil(opt.minClusterFraction *
-                                                                              static_cast<double>(diagram.orders.size()))));
+  const int needed =
+      std::max(opt.minClusterSize,
+               static_cast<int>(std::ceil(opt.minClusterFraction * static_cast<double>(diagram.orders.size()))));
   std::vector<SelectedPole> out;
   for (auto& c : clusters) {
     // One pole per order: the one nearest the cluster mean.
@@ -454,9 +298,9 @@ Result<std::vector<SelectedPole>> selectPoles(const StabilizationDiagram& diagra
       if (a->order != b->order) return a->order < b->order;
       return std::abs(a->frequencyHz - c.meanHz) < std::abs(b->frequencyHz - c.meanHz);
     });
-    c.members.erase(std::unique(c.members.begin(), c.members.end(),
-                                [](auto* a, auto* b) { return a->order == b->order; }),
-                    c.members.end());
+    c.members.erase(
+        std::unique(c.members.begin(), c.members.end(), [](auto* a, auto* b) { return a->order == b->order; }),
+        c.members.end());
     if (static_cast<int>(c.members.size()) < needed) continue;
     // Representative: medians over the upper half of the cluster's orders (low
     // orders carry the bias of an under-parameterised model).
@@ -490,9 +334,10 @@ Result<std::vector<SelectedPole>> selectPoles(const StabilizationDiagram& diagra
             [](const SelectedPole& a, const SelectedPole& b) { return std::abs(a.pole) < std::abs(b.pole); });
   if (out.empty()) {
     return makeError(ErrorCode::NotFound,
-                     "no stable mode in band " + hz(diagram.bandLowHz) + " .. " + hz(diagram.bandHighHz) + ": no pole "
-                         "stayed stable (frequency, damping and vector) over " + std::to_string(needed) +
-                         " orders; the band holds no identifiable mode or the FRFs are noise",
+                     "no stable mode in band " + hz(diagram.bandLowHz) + " .. " + hz(diagram.bandHighHz) +
+                         ": no pole "
+                         "stayed stable (frequency, damping and vector) over " +
+                         std::to_string(needed) + " orders; the band holds no identifiable mode or the FRFs are noise",
                      "pLSCF pole selection");
   }
   return out;
