@@ -25,6 +25,14 @@ namespace {
 constexpr std::uint8_t kVendorIn = LIBUSB_ENDPOINT_IN | LIBUSB_REQUEST_TYPE_VENDOR | LIBUSB_RECIPIENT_DEVICE;    // 0xC0
 constexpr std::uint8_t kVendorOut = LIBUSB_ENDPOINT_OUT | LIBUSB_REQUEST_TYPE_VENDOR | LIBUSB_RECIPIENT_DEVICE;  // 0x40
 
+int hotplugCallback(libusb_context*, libusb_device* device, libusb_hotplug_event event, void* self) {
+  if (event == LIBUSB_HOTPLUG_EVENT_DEVICE_LEFT)
+    static_cast<UsbTransport*>(self)->deviceLeft(libusb_get_bus_number(device), libusb_get_device_address(device));
+  return 0;  // stay registered
+}
+
+}  // namespace
+
 core::Error libusbError(int code, const std::string& what, const std::string& where) {
   const auto ec = code == LIBUSB_ERROR_ACCESS ? core::ErrorCode::Locked
                   : code == LIBUSB_ERROR_NO_DEVICE || code == LIBUSB_ERROR_NOT_FOUND ? core::ErrorCode::NotFound
@@ -37,20 +45,16 @@ core::Error libusbError(int code, const std::string& what, const std::string& wh
   return core::makeError(ec, what + ": " + libusb_error_name(code) + hint, where);
 }
 
-std::string readSerial(libusb_device_handle* h, const libusb_device_descriptor& d) {
-  if (d.iSerialNumber == 0) return {};
+std::string readStringDescriptor(libusb_device_handle* h, std::uint8_t index) {
+  if (index == 0) return {};
   unsigned char buf[128] = {};
-  const int n = libusb_get_string_descriptor_ascii(h, d.iSerialNumber, buf, sizeof(buf));
+  const int n = libusb_get_string_descriptor_ascii(h, index, buf, sizeof(buf));
   return n > 0 ? std::string(reinterpret_cast<char*>(buf), static_cast<std::size_t>(n)) : std::string();
 }
 
-int hotplugCallback(libusb_context*, libusb_device* device, libusb_hotplug_event event, void* self) {
-  if (event == LIBUSB_HOTPLUG_EVENT_DEVICE_LEFT)
-    static_cast<UsbTransport*>(self)->deviceLeft(libusb_get_bus_number(device), libusb_get_device_address(device));
-  return 0;  // stay registered
+static std::string readSerial(libusb_device_handle* h, const libusb_device_descriptor& d) {
+  return readStringDescriptor(h, d.iSerialNumber);
 }
-
-}  // namespace
 
 core::Error UsbTransport::usbError(int code, const std::string& what) const { return libusbError(code, what, info_.busPath()); }
 

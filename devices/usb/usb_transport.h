@@ -35,6 +35,12 @@ enum class TransferStatus {
 
 const char* transferStatusName(TransferStatus status);
 
+// A libusb error code as a core::Error: unplug -> NotFound, permission or busy
+// -> Locked (with the udev hint), the rest IoError; the message names `what`.
+core::Error libusbError(int code, const std::string& what, const std::string& where);
+// String descriptor `index` in ASCII; empty for index 0 or when unreadable.
+std::string readStringDescriptor(libusb_device_handle* handle, std::uint8_t index);
+
 struct UsbDeviceInfo {
   std::uint16_t vendorId = 0;
   std::uint16_t productId = 0;
