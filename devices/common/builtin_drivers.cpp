@@ -1,4 +1,5 @@
 #include "devices/common/driver.h"
+#include "devices/funcgen/funcgen_driver.h"
 #include "devices/mcc_usb1608fsplus/usb1608fsplus_driver.h"
 #include "devices/sim/sim_drivers.h"
 
@@ -12,6 +13,7 @@ DriverRegistry& builtinDrivers() {
     (void)r.add(mcc::makeUsb1608FsPlusDriver());
     (void)r.add(sim::makeHammerStationDriver());
     (void)r.add(sim::makeStiffnessRigDriver());
+    (void)r.add(funcgen::makeFunctionGeneratorDriver());
     return r;
   }();
   return registry;
