@@ -1,0 +1,409 @@
+#include "core/gap/diagnosis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "core/common/text.h"
+#include "core/gap/engine/bootstrap.h"
+#include "core/gap/engine/checks.h"
+#include "core/gap/engine/fit.h"
+#include "core/gap/engine/screen.h"
+#include "core/gap/engine/statistics.h"
+
+namespace mozzi::core::gap {
+
+const char* verdictName(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::Effect: return "effect";
+    case Verdict::None: return "none";
+    case Verdict::Ambiguous: return "ambiguous";
+    case Verdict::Partial: return "partial";
+    case Verdict::Unexplained: return "unexplained";
+    case Verdict::NotIdentifiable: return "not_identifiable";
+  }
+  return "none";
+}
+
+namespace {
+
+using engine::FitOptions;
+using engine::FitResult;
+using engine::Model;
+using engine::Scaled;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// Auto null method: full refits while samples x (candidates + 1) x residuals
+// stays below this many residual entries per refit pass (about a minute of
+// small-problem fitting on one core); beyond it the linearised bootstrap.
+constexpr double kFullRefitBudget = 2e7;
+// An LR difference below 2 (one AIC unit) does not separate two candidates;
+// only then does AICc order them (Burnham and Anderson 2002, §2.6).
+constexpr double kAiccTieBand = 2.0;
+
+std::string label(const Candidate& c) {
+  std::string s = c.effect;
+  if (!c.location.empty()) {
+    s += " at ";
+    for (std::size_t i = 0; i < c.location.size(); ++i) s += (i ? "-" : "") + c.location[i];
+  }
+  return s;
+}
+
+std::string sizes(const RankedEffect& e) {
+  std::string s;
+  for (std::size_t i = 0; i < e.parameters.size(); ++i) {
+    const Parameter& p = e.candidate.parameters[i];
+    s += (i ? ", " : "") + p.name + " = " + formatNumber(e.parameters[i], 3);
+    if (i < e.stdErrors.size()) s += " +- " + formatNumber(e.stdErrors[i], 2);
+    if (!p.unit.empty()) s += " " + p.unit;
+  }
+  return s;
+}
+
+double aicc(double nll, int k, int n) {
+  const double base = 2.0 * nll + 2.0 * k;
+  return n - k - 1 > 0 ? base + 2.0 * k * (k + 1.0) / (n - k - 1.0) : std::numeric_limits<double>::infinity();
+}
+
+int freeCount(const std::vector<Scaled>& s) {
+  return static_cast<int>(std::count_if(s.begin(), s.end(), [](const Scaled& x) { return !x.fixed; }));
+}
+
+std::string separating(const GapMetrics& a, const GapMetrics& b, const std::string& nameA, const std::string& nameB) {
+  double best = -1.0;
+  std::string out;
+  for (const auto& ea : a.entries) {
+    for (const auto& eb : b.entries) {
+      if (ea.kind != eb.kind || ea.label != eb.label) continue;
+      // In uncertainty units when the rows carry z-scores, else relative.
+      const double scale = std::max({std::abs(ea.value), std::abs(eb.value), 1e-300});
+      const double d = (ea.z != 0.0 && eb.z != 0.0) ? std::abs(ea.z - eb.z) : std::abs(ea.value - eb.value) / scale;
+      if (d > best) {
+        best = d;
+        out = ea.kind + " " + ea.label + " (" + nameA + ": " + formatNumber(ea.value, 3) + ", " + nameB + ": " +
+              formatNumber(eb.value, 3) + ")";
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& options) {
+  const std::string where = "gap diagnosis";
+  const int n = problem.residualCount();
+  if (n <= 0) return makeError(ErrorCode::InvalidArgument, "the problem has no residuals", where);
+  if (!(options.alpha > 0.0 && options.alpha < 0.5)) {
+    return makeError(ErrorCode::InvalidArgument, "alpha must lie in (0, 0.5)", where);
+  }
+  if (options.multistarts < 1) return makeError(ErrorCode::InvalidArgument, "multistarts must be at least 1", where);
+  if (options.bootstrapSamples < 20) {
+    return makeError(ErrorCode::InvalidArgument, "bootstrapSamples must be at least 20", where);
+  }
+  auto keepGoing = [&](double fraction, const std::string& step) {
+    return !options.progress || options.progress(std::clamp(fraction, 0.0, 1.0), step);
+  };
+  const auto cancelled = [&] { return makeError(ErrorCode::Cancelled, "diagnosis cancelled", where); };
+
+  Diagnosis d;
+  d.dataKind = problem.dataKind();
+  d.calibration = problem.calibrationParameters();
+  std::vector<Scaled> theta;
+  for (const auto& p : d.calibration) {
+    auto s = engine::scaleParameter(p, "calibration");
+    if (!s) return s.error();
+    theta.push_back(*s);
+  }
+  const auto candidates = problem.candidates();
+  std::set<std::string> known;
+  for (const auto& c : candidates) known.insert(c.effect);
+  for (const auto& e : options.effects) {
+    if (!known.count(e)) {
+      std::string list;
+      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+      return makeError(ErrorCode::InvalidArgument, "unknown effect '" + e + "' (this problem offers: " + list + ")",
+                       where);
+    }
+  }
+  std::vector<std::pair<int, std::vector<Scaled>>> selected;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const auto& c = candidates[i];
+    if (!options.effects.empty() &&
+        std::find(options.effects.begin(), options.effects.end(), c.effect) == options.effects.end()) {
+      continue;
+    }
+    std::vector<Scaled> phi;
+    for (const auto& p : c.parameters) {
+      auto s = engine::scaleParameter(p, "effect '" + label(c) + "'");
+      if (!s) return s.error();
+      phi.push_back(*s);
+    }
+    selected.emplace_back(static_cast<int>(i), std::move(phi));
+  }
+
+  // Step 1: calibrate theta (nominal start, then seeded random starts in the box).
+  if (!keepGoing(0.0, "calibration")) return cancelled();
+  Model base(problem, theta, -1, {});
+  std::vector<Eigen::VectorXd> starts{Eigen::VectorXd::Zero(base.parameterCount())};
+  auto rng = engine::seededRng(options.seed, 0, 0);
+  for (int i = 1; i < options.multistarts; ++i) starts.push_back(engine::randomStart(base, rng));
+  FitOptions full;
+  const FitResult fit0 = engine::fitModel(base, starts, full);
+  if (!fit0.ok) {
+    return makeError(ErrorCode::NumericalFailure, "the model cannot be evaluated at any calibration start", where);
+  }
+  const Eigen::VectorXd u0 = fit0.u;
+  d.calibrated = base.thetaX(u0);
+  d.chiSquare = fit0.chiSquare;
+  d.dof = std::max(1, n - freeCount(theta));
+  d.fitPValue = chiSquareSurvival(d.chiSquare, d.dof);
+
+  // Step 2: where (Holm over the rows of each kind).
+  d.gapBefore = problem.metrics(d.calibrated.data(), -1, nullptr);
+  applyHolmFlags(d.gapBefore, options.alpha);
+  for (const auto& e : d.gapBefore.entries) {
+    if (e.flagged) d.where.push_back(e);
+  }
+  std::stable_sort(d.where.begin(), d.where.end(),
+                   [](const GapEntry& a, const GapEntry& b) { return std::abs(a.z) > std::abs(b.z); });
+
+  // Step 3: linear screen.
+  if (!keepGoing(0.05, "screen")) return cancelled();
+  auto screened = engine::screenCandidates(base, u0, selected);
+  if (!screened) return screened.error();
+  const engine::Screen& screen = *screened;
+  std::vector<int> identifiable;
+  for (std::size_t c = 0; c < screen.candidates.size(); ++c) {
+    if (screen.candidates[c].identifiable) identifiable.push_back(static_cast<int>(c));
+  }
+
+  // Step 5 (before 4 so the fits can report against it): null calibration.
+  engine::NullOptions no;
+  no.samples = options.bootstrapSamples;
+  no.alpha = options.alpha;
+  no.seed = options.seed;
+  const double work = static_cast<double>(options.bootstrapSamples) * (identifiable.size() + 1.0) * n;
+  const bool linear = options.nullMethod == NullMethod::Linearised ||
+                      (options.nullMethod == NullMethod::Auto && work > kFullRefitBudget);
+  no.mode = linear ? engine::NullMode::Linearised : engine::NullMode::FullRefit;
+  no.progress = [&](double f) { return keepGoing(0.1 + 0.6 * f, "bootstrap"); };
+  auto null = engine::calibrateNull(base, u0, screen, identifiable, no);
+  if (!null) return null.error();
+  d.threshold = null->threshold;
+  d.thresholdLinearised = linear;
+  d.bootstrapSamples = options.bootstrapSamples;
+
+  // Step 4: nonlinear fit of every identifiable candidate jointly with theta.
+  Eigen::VectorXd rAug0;
+  if (!engine::Screen::augmentedResiduals(base, u0, rAug0)) {
+    return makeError(ErrorCode::NumericalFailure, "the calibrated baseline cannot be evaluated", where);
+  }
+  const int p = base.parameterCount();
+  std::vector<RankedEffect> fitted, unfitted;
+  std::vector<engine::FittedAlternative> alternatives;  // parallel to `fitted`
+  for (std::size_t c = 0; c < screen.candidates.size(); ++c) {
+    if (!keepGoing(0.7 + 0.15 * c / screen.candidates.size(), "candidate fits")) return cancelled();
+    const auto& sc = screen.candidates[c];
+    RankedEffect e;
+    e.candidateIndex = sc.index;
+    e.candidate = candidates[static_cast<std::size_t>(sc.index)];
+    e.projectedSignature = sc.sigmaMin;
+    for (std::size_t j = 0; j < sc.phi.size(); ++j) {
+      // LR of a size-delta effect ~ (delta |B_j|)^2: the threshold is reached at
+      // delta = sqrt(T) / |B_j| (detected about half the time).
+      const double bj = sc.projectedNorm[j];
+      e.smallestDetectable.push_back(bj > 0.0 ? std::sqrt(std::max(d.threshold, 0.0)) / bj * sc.phi[j].scale
+                                              : std::numeric_limits<double>::infinity());
+    }
+    e.parameters.clear();
+    for (const auto& ph : sc.phi) e.parameters.push_back(ph.def.nominal);
+    e.theta = d.calibrated;
+    if (!sc.identifiable) {
+      e.identifiable = false;
+      std::ostringstream note;
+      note << "not identifiable with these data: " << sc.reason << "; singular values of the whitened [J S] are";
+      for (Eigen::Index i = 0; i < sc.jointSingularValues.size(); ++i)
+        note << ' ' << formatNumber(sc.jointSingularValues[i], 3);
+      note << "; weakest direction (scaled theta, phi):";
+      for (Eigen::Index i = 0; i < sc.nullDirection.size(); ++i) note << ' ' << formatNumber(sc.nullDirection[i], 2);
+      e.note = note.str();
+      unfitted.push_back(std::move(e));
+      continue;
+    }
+    Model model(problem, theta, sc.index, sc.phi);
+    const int q = static_cast<int>(sc.phi.size());
+    Eigen::VectorXd s0 = Eigen::VectorXd::Zero(p + q), seed;
+    s0.head(p) = u0;
+    screen.linearRatio(static_cast<int>(c), rAug0, &seed);
+    Eigen::VectorXd s1 = s0;
+    s1.tail(q) = seed;
+    std::vector<Eigen::VectorXd> cstarts{s0, s1};
+    auto crng = engine::seededRng(options.seed, 10, static_cast<unsigned long long>(sc.index));
+    for (int i = 2; i < options.multistarts; ++i) {
+      Eigen::VectorXd r = engine::randomStart(model, crng);
+      r.head(p) = u0;
+      cstarts.push_back(r);
+    }
+    FitOptions fo;
+    fo.covariance = true;
+    const FitResult fit = engine::fitModel(model, cstarts, fo);
+    if (!fit.ok) {
+      e.identifiable = false;
+      e.note = "the model with this effect could not be fitted from any start";
+      unfitted.push_back(std::move(e));
+      continue;
+    }
+    e.fitted = true;
+    e.theta = model.thetaX(fit.u);
+    e.parameters = model.phiX(fit.u);
+    e.likelihoodRatio = std::max(0.0, 2.0 * (fit0.nll - fit.nll));
+    const int k = freeCount(theta) + freeCount(sc.phi);
+    e.aicc = aicc(fit.nll, k, n);
+    e.chiSquare = fit.chiSquare;
+    e.fitPValue = chiSquareSurvival(fit.chiSquare, std::max(1, n - k));
+    e.heldOutImprovement = kNaN;
+    if (fit.rankDeficient) {
+      e.identifiable = false;
+      std::ostringstream note;
+      note << "not identifiable at the fitted point: the whitened Jacobian is rank deficient (Ceres covariance "
+              "refused it); singular values";
+      for (Eigen::Index i = 0; i < fit.singularValues.size(); ++i)
+        note << ' ' << formatNumber(fit.singularValues[i], 3);
+      note << "; null direction (scaled theta, phi):";
+      for (Eigen::Index i = 0; i < fit.nullDirection.size(); ++i) note << ' ' << formatNumber(fit.nullDirection[i], 2);
+      e.note = note.str();
+    } else {
+      e.stdErrors.assign(fit.stdErrors.begin() + p, fit.stdErrors.end());
+    }
+    fitted.push_back(std::move(e));
+    alternatives.push_back({sc.index, sc.phi, fit.u});
+  }
+
+  // Rank: likelihood ratio, AICc only inside the tie band.
+  std::vector<std::size_t> order(fitted.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return fitted[a].likelihoodRatio > fitted[b].likelihoodRatio; });
+  for (std::size_t i = 0; i + 1 < order.size(); ++i) {
+    const auto& a = fitted[order[i]];
+    const auto& b = fitted[order[i + 1]];
+    if (a.likelihoodRatio - b.likelihoodRatio < kAiccTieBand && b.aicc < a.aicc) std::swap(order[i], order[i + 1]);
+  }
+  std::vector<engine::FittedAlternative> alt;
+  for (std::size_t i : order) {
+    d.ranking.push_back(fitted[i]);
+    alt.push_back(alternatives[i]);
+  }
+  const std::size_t fittedCount = d.ranking.size();
+  for (auto& e : unfitted) d.ranking.push_back(std::move(e));
+
+  // Steps 7 and 9: held-out checks, gap after and shrink for the top few.
+  for (std::size_t i = 0; i < fittedCount && static_cast<int>(i) < options.reportTop; ++i) {
+    if (!keepGoing(0.85 + 0.05 * i, "held-out checks")) return cancelled();
+    RankedEffect& e = d.ranking[i];
+    auto held = engine::heldOutImprovement(problem, theta, u0, alt[i]);
+    if (!held) return held.error();
+    e.heldOutImprovement = *held;
+    e.gapAfter = problem.metrics(e.theta.data(), e.candidateIndex, e.parameters.data());
+    e.shrinkPct = d.gapBefore.overall != 0.0 ? 100.0 * (1.0 - e.gapAfter.overall / d.gapBefore.overall) : 0.0;
+  }
+
+  // Step 6: ambiguity between the top two.
+  const bool significant = fittedCount > 0 && d.ranking[0].likelihoodRatio > d.threshold;
+  if (significant && fittedCount > 1) {
+    auto flip = engine::flipProbability(problem, theta, alt[0], alt[1], options.ambiguitySamples, options.seed,
+                                        [&] { return keepGoing(0.95, "ambiguity check"); });
+    if (!flip) return flip.error();
+    d.flipProbability = *flip;
+    if (d.flipProbability > options.flipLimit) {
+      const auto ma =
+          d.ranking[0].gapAfter.entries.empty()
+              ? problem.metrics(d.ranking[0].theta.data(), d.ranking[0].candidateIndex, d.ranking[0].parameters.data())
+              : d.ranking[0].gapAfter;
+      const auto mb =
+          problem.metrics(d.ranking[1].theta.data(), d.ranking[1].candidateIndex, d.ranking[1].parameters.data());
+      d.separatingMeasurement = separating(ma, mb, d.ranking[0].candidate.effect, d.ranking[1].candidate.effect);
+    }
+  }
+
+  // Step 8: verdict.
+  std::ostringstream ex;
+  ex << "Calibrated " << d.calibration.size() << " model parameter(s); the whitened residual chi-square is "
+     << formatNumber(d.chiSquare, 4) << " on " << d.dof << " degrees of freedom (p = " << formatNumber(d.fitPValue, 2)
+     << "). The attribution threshold is " << formatNumber(d.threshold, 3) << ", the "
+     << formatNumber(1 - options.alpha, 3) << " quantile of the largest likelihood ratio over " << identifiable.size()
+     << " identifiable candidate(s) in " << d.bootstrapSamples << " data sets simulated without an effect ("
+     << (linear ? "linearised refits" : "full refits") << (null->fromCache ? ", cached" : "") << "). ";
+  if (identifiable.empty()) {
+    d.verdict = Verdict::NotIdentifiable;
+    ex << "No candidate effect can be identified from these data:";
+    for (const auto& e : d.ranking) ex << " " << label(e.candidate) << " (" << e.note << ").";
+  } else if (!significant) {
+    const bool fitsWithinNoise = d.fitPValue >= options.fitAlpha;
+    d.verdict = fitsWithinNoise ? Verdict::None : Verdict::Unexplained;
+    ex << (fitsWithinNoise ? "The model fits within noise and no effect improves it significantly"
+                           : "The model does not fit within noise, yet no catalogue effect improves it significantly")
+       << " (best likelihood ratio " << formatNumber(fittedCount ? d.ranking[0].likelihoodRatio : 0.0, 3)
+       << "). Smallest detectable sizes:";
+    for (const auto& e : d.ranking) {
+      if (!e.fitted) continue;
+      ex << ' ' << label(e.candidate) << ':';
+      for (std::size_t j = 0; j < e.smallestDetectable.size(); ++j) {
+        ex << ' ' << e.candidate.parameters[j].name << ' ' << formatNumber(e.smallestDetectable[j], 2);
+      }
+      ex << ';';
+    }
+  } else {
+    const RankedEffect& best = d.ranking[0];
+    ex << "Best: " << label(best.candidate) << " with " << sizes(best) << ", likelihood ratio "
+       << formatNumber(best.likelihoodRatio, 4) << " against " << formatNumber(d.threshold, 3);
+    if (std::isfinite(best.heldOutImprovement)) {
+      ex << ", held-out residual " << formatNumber(100 * best.heldOutImprovement, 3) << "% lower";
+    }
+    ex << ", gap shrinks by " << formatNumber(best.shrinkPct, 3) << "%. ";
+    const double excess = std::max(d.chiSquare - d.dof, best.likelihoodRatio);
+    const double explained = excess > 0.0 ? best.likelihoodRatio / excess : 1.0;
+    const bool heldOutFails = std::isfinite(best.heldOutImprovement) && best.heldOutImprovement <= 0.0;
+    if (!best.identifiable) {
+      d.verdict = Verdict::NotIdentifiable;
+      d.verdictSet = {0};
+      ex << "Its size cannot be pinned down: " << best.note << '.';
+    } else if (heldOutFails) {
+      d.verdict = Verdict::Unexplained;
+      ex << "It does not improve the held-out data, so it is not attributed.";
+    } else if (best.fitPValue < options.fitAlpha) {
+      d.verdict = explained >= 0.5 ? Verdict::Partial : Verdict::Unexplained;
+      if (d.verdict == Verdict::Partial) d.verdictSet = {0};
+      ex << "After it the residual is still beyond noise (chi-square " << formatNumber(best.chiSquare, 4)
+         << ", p = " << formatNumber(best.fitPValue, 2) << "); it explains " << formatNumber(100 * explained, 3)
+         << "% of the excess, so the catalogue "
+         << (d.verdict == Verdict::Partial ? "explains the gap only in part." : "does not hold the cause.");
+    } else if (d.flipProbability > options.flipLimit) {
+      d.verdict = Verdict::Ambiguous;
+      d.verdictSet = {0, 1};
+      ex << "It cannot be told apart from " << label(d.ranking[1].candidate) << " (" << sizes(d.ranking[1])
+         << "): simulating from either fit, the other fits better in " << formatNumber(100 * d.flipProbability, 3)
+         << "% of the data sets. They differ most at " << d.separatingMeasurement
+         << "; a more precise measurement there would separate them.";
+    } else {
+      d.verdict = Verdict::Effect;
+      d.verdictSet = {0};
+      ex << "Attributed";
+      if (d.flipProbability >= 0.0) {
+        ex << " (the runner-up " << label(d.ranking[1].candidate) << " wins in "
+           << formatNumber(100 * d.flipProbability, 3) << "% of simulations)";
+      }
+      ex << '.';
+    }
+  }
+  d.explanation = ex.str();
+  if (!keepGoing(1.0, "done")) return cancelled();
+  return d;
+}
+
+}  // namespace mozzi::core::gap

@@ -1,0 +1,96 @@
+#include "core/gap/engine/checks.h"
+
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include "core/gap/engine/bootstrap.h"
+
+namespace mozzi::core::gap::engine {
+
+namespace {
+
+// Refits from warm starts: the truth and the other alternative's optimum are
+// both close, so a few dozen iterations suffice.
+FitOptions warmFit() {
+  FitOptions fo;
+  fo.maxIterations = 40;
+  fo.functionTolerance = 1e-9;
+  return fo;
+}
+
+Eigen::VectorXd withPhi(const Eigen::VectorXd& theta, const Eigen::VectorXd& phi) {
+  Eigen::VectorXd u(theta.size() + phi.size());
+  u << theta, phi;
+  return u;
+}
+
+}  // namespace
+
+Result<double> flipProbability(const GapProblem& problem, const std::vector<Scaled>& theta, const FittedAlternative& a,
+                               const FittedAlternative& b, int samples, unsigned long long seed,
+                               const std::function<bool()>& keepGoing) {
+  const std::string where = "ambiguity check";
+  const auto p = static_cast<Eigen::Index>(theta.size());
+  int flips = 0, total = 0;
+  const FittedAlternative* sides[2] = {&a, &b};
+  for (int side = 0; side < 2; ++side) {
+    const FittedAlternative& truth = *sides[side];
+    const FittedAlternative& other = *sides[1 - side];
+    Model truthModel(problem, theta, truth.candidate, truth.phi);
+    const auto thetaX = truthModel.thetaX(truth.u);
+    const auto phiX = truthModel.phiX(truth.u);
+    for (int i = 0; i < samples; ++i) {
+      if (keepGoing && !keepGoing()) return makeError(ErrorCode::Cancelled, "cancelled", where);
+      auto rng = seededRng(seed, 2 + static_cast<unsigned long long>(side), static_cast<unsigned long long>(i));
+      const auto sim = problem.simulated(thetaX.data(), truth.candidate, phiX.empty() ? nullptr : phiX.data(), rng);
+      if (!sim) return makeError(ErrorCode::NumericalFailure, "the problem could not simulate data", where);
+      Model mt(*sim, theta, truth.candidate, truth.phi), mo(*sim, theta, other.candidate, other.phi);
+      const FitResult ft = fitModel(mt, {truth.u}, warmFit());
+      // The other alternative from its own optimum and from the truth's theta.
+      const FitResult fo =
+          fitModel(mo, {other.u, withPhi(truth.u.head(p), Eigen::VectorXd::Zero(other.u.size() - p))}, warmFit());
+      if (!ft.ok || !fo.ok) continue;
+      ++total;
+      flips += fo.nll < ft.nll;
+    }
+  }
+  if (total == 0) return makeError(ErrorCode::NumericalFailure, "no simulated data set could be fitted", where);
+  return static_cast<double>(flips) / total;
+}
+
+Result<double> heldOutImprovement(const GapProblem& problem, const std::vector<Scaled>& theta,
+                                  const Eigen::VectorXd& uBaseline, const FittedAlternative& effect) {
+  const std::string where = "held-out check";
+  const std::vector<int> folds = problem.folds();
+  const std::set<int> distinct(folds.begin(), folds.end());
+  if (distinct.size() < 2 || static_cast<int>(folds.size()) != problem.residualCount()) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  const auto p = static_cast<Eigen::Index>(theta.size());
+  Model fullBase(problem, theta, -1, {}), fullEffect(problem, theta, effect.candidate, effect.phi);
+  Eigen::VectorXd r0(problem.residualCount()), r1(problem.residualCount());
+  double ss0 = 0.0, ss1 = 0.0;
+  for (int f : distinct) {
+    std::vector<int> in;
+    for (std::size_t j = 0; j < folds.size(); ++j) {
+      if (folds[j] != f) in.push_back(static_cast<int>(j));
+    }
+    Model base(problem, theta, -1, {}, in), eff(problem, theta, effect.candidate, effect.phi, in);
+    const FitResult fb = fitModel(base, {uBaseline}, warmFit());
+    const FitResult fe =
+        fitModel(eff, {effect.u, withPhi(uBaseline, Eigen::VectorXd::Zero(effect.u.size() - p))}, warmFit());
+    if (!fb.ok || !fe.ok || !fullBase.residuals(fb.u.data(), r0.data()) ||
+        !fullEffect.residuals(fe.u.data(), r1.data())) {
+      return makeError(ErrorCode::NumericalFailure, "a fold could not be refitted", where);
+    }
+    for (std::size_t j = 0; j < folds.size(); ++j) {
+      if (folds[j] != f) continue;
+      ss0 += r0[static_cast<Eigen::Index>(j)] * r0[static_cast<Eigen::Index>(j)];
+      ss1 += r1[static_cast<Eigen::Index>(j)] * r1[static_cast<Eigen::Index>(j)];
+    }
+  }
+  return ss0 > 0.0 ? 1.0 - ss1 / ss0 : 0.0;
+}
+
+}  // namespace mozzi::core::gap::engine

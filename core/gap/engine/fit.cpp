@@ -1,0 +1,342 @@
+#include "core/gap/engine/fit.h"
+
+#include <ceres/ceres.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "core/common/text.h"
+
+namespace mozzi::core::gap::engine {
+
+Result<Scaled> scaleParameter(const Parameter& p, const std::string& where) {
+  Scaled s;
+  s.def = p;
+  const std::string what = where + " parameter '" + p.name + "'";
+  if (!std::isfinite(p.nominal)) return makeError(ErrorCode::InvalidArgument, "nominal value is not finite", what);
+  if (std::isnan(p.lower) || std::isnan(p.upper) || p.lower > p.nominal || p.upper < p.nominal) {
+    return makeError(ErrorCode::InvalidArgument,
+                     "bounds [" + formatNumber(p.lower) + ", " + formatNumber(p.upper) + "] do not hold the nominal " +
+                         formatNumber(p.nominal),
+                     what);
+  }
+  if (p.priorSigma < 0.0 || std::isnan(p.priorSigma)) {
+    return makeError(ErrorCode::InvalidArgument, "prior sigma is negative", what);
+  }
+  if (p.lower == p.upper) {
+    s.fixed = true;
+    return s;
+  }
+  // The span of the box when finite, else the prior's sigma, else the size of
+  // the nominal: one unit of u is "the whole admissible range".
+  if (std::isfinite(p.lower) && std::isfinite(p.upper)) {
+    s.scale = p.upper - p.lower;
+  } else if (p.priorSigma > 0.0) {
+    s.scale = p.priorSigma;
+  } else {
+    s.scale = std::max(std::abs(p.nominal), 1.0);
+  }
+  s.uLower = std::isfinite(p.lower) ? (p.lower - p.nominal) / s.scale : -std::numeric_limits<double>::infinity();
+  s.uUpper = std::isfinite(p.upper) ? (p.upper - p.nominal) / s.scale : std::numeric_limits<double>::infinity();
+  return s;
+}
+
+Model::Model(const GapProblem& problem, std::vector<Scaled> theta, int candidate, std::vector<Scaled> phi,
+             std::vector<int> rows)
+    : problem_(problem),
+      theta_(std::move(theta)),
+      candidate_(candidate),
+      phi_(std::move(phi)),
+      rows_(std::move(rows)),
+      theta_buf_(theta_.size()),
+      phi_buf_(phi_.size()) {
+  if (!rows_.empty()) full_buf_.resize(static_cast<std::size_t>(problem_.residualCount()));
+}
+
+bool Model::residuals(const double* u, double* r) const {
+  for (std::size_t i = 0; i < theta_.size(); ++i) theta_buf_[i] = theta_[i].toX(u[i]);
+  for (std::size_t i = 0; i < phi_.size(); ++i) phi_buf_[i] = phi_[i].toX(u[theta_.size() + i]);
+  const double* phi = phi_.empty() ? nullptr : phi_buf_.data();
+  const int candidate = phi_.empty() ? -1 : candidate_;
+  bool ok;
+  if (rows_.empty()) {
+    ok = problem_.residuals(theta_buf_.data(), candidate, phi, r);
+    if (ok) {
+      for (int j = 0; j < problem_.residualCount(); ++j) ok = ok && std::isfinite(r[j]);
+    }
+    return ok;
+  }
+  ok = problem_.residuals(theta_buf_.data(), candidate, phi, full_buf_.data());
+  for (std::size_t j = 0; ok && j < rows_.size(); ++j) {
+    r[j] = full_buf_[static_cast<std::size_t>(rows_[j])];
+    ok = std::isfinite(r[j]);
+  }
+  return ok;
+}
+
+bool Model::jacobian(const Eigen::VectorXd& u, int first, int count, double h, Eigen::MatrixXd& jac) const {
+  const int n = residualCount();
+  jac.resize(n, count);
+  Eigen::VectorXd up(u), plus(n), minus(n);
+  for (int c = 0; c < count; ++c) {
+    const int i = first + c;
+    const Scaled& s = parameter(i);
+    if (s.fixed) {
+      jac.col(c).setZero();
+      continue;
+    }
+    // Central where both sides are inside the box, else one-sided: the model
+    // may be undefined outside its bounds (a negative mass).
+    double hi = u[i] + h <= s.uUpper ? h : 0.0;
+    double lo = u[i] - h >= s.uLower ? h : 0.0;
+    if (hi == 0.0 && lo == 0.0) return false;
+    up[i] = u[i] + hi;
+    if (hi > 0.0) {
+      if (!residuals(up.data(), plus.data())) return false;
+    } else if (!residuals(u.data(), plus.data())) {
+      return false;
+    }
+    up[i] = u[i] - lo;
+    if (lo > 0.0) {
+      if (!residuals(up.data(), minus.data())) return false;
+    } else if (!residuals(u.data(), minus.data())) {
+      return false;
+    }
+    up[i] = u[i];
+    jac.col(c) = (plus - minus) / (hi + lo);
+  }
+  return true;
+}
+
+int Model::priorCount() const {
+  int m = 0;
+  for (int i = 0; i < parameterCount(); ++i) m += parameter(i).def.priorSigma > 0.0 && !parameter(i).fixed;
+  return m;
+}
+
+void Model::priorResiduals(const double* u, double* r) const {
+  int m = 0;
+  for (int i = 0; i < parameterCount(); ++i) {
+    const Scaled& s = parameter(i);
+    if (s.def.priorSigma > 0.0 && !s.fixed) r[m++] = s.scale * u[i] / s.def.priorSigma;
+  }
+}
+
+void Model::priorJacobian(Eigen::MatrixXd& jac) const {
+  jac = Eigen::MatrixXd::Zero(priorCount(), parameterCount());
+  int m = 0;
+  for (int i = 0; i < parameterCount(); ++i) {
+    const Scaled& s = parameter(i);
+    if (s.def.priorSigma > 0.0 && !s.fixed) jac(m++, i) = s.scale / s.def.priorSigma;
+  }
+}
+
+std::vector<double> Model::thetaX(const Eigen::VectorXd& u) const {
+  std::vector<double> x(theta_.size());
+  for (std::size_t i = 0; i < theta_.size(); ++i) x[i] = theta_[i].toX(u[static_cast<Eigen::Index>(i)]);
+  return x;
+}
+
+std::vector<double> Model::phiX(const Eigen::VectorXd& u) const {
+  std::vector<double> x(phi_.size());
+  for (std::size_t i = 0; i < phi_.size(); ++i) x[i] = phi_[i].toX(u[static_cast<Eigen::Index>(theta_.size() + i)]);
+  return x;
+}
+
+namespace {
+
+// Step of the numerical Jacobian in u (a fraction of the bound span): small
+// against the curvature of any physical effect over its range, large against
+// the ~1e-12 rounding of an eigen-solution (error ~ 1e-12 / 1e-6).
+constexpr double kJacobianStep = 1e-6;
+
+// Data residuals as one cost with one 1-vector block per parameter.
+class DataCost : public ceres::CostFunction {
+ public:
+  explicit DataCost(const Model& model) : model_(model), u_(model.parameterCount()) {
+    set_num_residuals(model.residualCount());
+    for (int i = 0; i < model.parameterCount(); ++i) mutable_parameter_block_sizes()->push_back(1);
+  }
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    for (int i = 0; i < model_.parameterCount(); ++i) u_[i] = parameters[i][0];
+    if (!model_.residuals(u_.data(), residuals)) return false;
+    if (!jacobians) return true;
+    const int n = model_.residualCount();
+    for (int i = 0; i < model_.parameterCount(); ++i) {
+      if (!jacobians[i]) continue;
+      if (!model_.jacobian(u_, i, 1, kJacobianStep, col_)) return false;
+      std::copy(col_.data(), col_.data() + n, jacobians[i]);
+    }
+    return true;
+  }
+
+ private:
+  const Model& model_;
+  mutable Eigen::VectorXd u_;
+  mutable Eigen::MatrixXd col_;
+};
+
+// Gaussian prior N(nominal, sigma) on one parameter: r = scale u / sigma.
+class PriorCost : public ceres::SizedCostFunction<1, 1> {
+ public:
+  explicit PriorCost(double gain) : gain_(gain) {}
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    residuals[0] = gain_ * parameters[0][0];
+    if (jacobians && jacobians[0]) jacobians[0][0] = gain_;
+    return true;
+  }
+
+ private:
+  double gain_;
+};
+
+struct Built {
+  ceres::Problem problem;
+  std::vector<double> u;
+  Built() : problem(options()) {}
+  static ceres::Problem::Options options() {
+    ceres::Problem::Options o;
+    o.cost_function_ownership = ceres::TAKE_OWNERSHIP;
+    return o;
+  }
+};
+
+void build(const Model& model, const Eigen::VectorXd& start, Built& b) {
+  const int p = model.parameterCount();
+  b.u.assign(start.data(), start.data() + p);
+  std::vector<double*> blocks;
+  for (int i = 0; i < p; ++i) blocks.push_back(&b.u[static_cast<std::size_t>(i)]);
+  b.problem.AddResidualBlock(new DataCost(model), nullptr, blocks);
+  for (int i = 0; i < p; ++i) {
+    const Scaled& s = model.parameter(i);
+    if (s.fixed) {
+      b.problem.SetParameterBlockConstant(blocks[i]);
+      continue;
+    }
+    if (s.def.priorSigma > 0.0)
+      b.problem.AddResidualBlock(new PriorCost(s.scale / s.def.priorSigma), nullptr, blocks[i]);
+    if (std::isfinite(s.uLower)) b.problem.SetParameterLowerBound(blocks[i], 0, s.uLower);
+    if (std::isfinite(s.uUpper)) b.problem.SetParameterUpperBound(blocks[i], 0, s.uUpper);
+  }
+}
+
+double dataChiSquare(const Model& model, const Eigen::VectorXd& u) {
+  Eigen::VectorXd r(model.residualCount());
+  if (!model.residuals(u.data(), r.data())) return std::numeric_limits<double>::infinity();
+  return r.squaredNorm();
+}
+
+void covarianceAt(const Model& model, FitResult& fit) {
+  const int p = model.parameterCount();
+  // The whitened Jacobian with the prior rows, for the report either way.
+  Eigen::MatrixXd jd, jp;
+  if (!model.jacobian(fit.u, 0, p, kJacobianStep, jd)) {
+    fit.rankDeficient = true;
+    return;
+  }
+  model.priorJacobian(jp);
+  Eigen::MatrixXd jac(jd.rows() + jp.rows(), p);
+  jac << jd, jp;
+  std::vector<int> free;
+  for (int i = 0; i < p; ++i) {
+    if (!model.parameter(i).fixed) free.push_back(i);
+  }
+  Eigen::MatrixXd jf(jac.rows(), static_cast<Eigen::Index>(free.size()));
+  for (std::size_t c = 0; c < free.size(); ++c) jf.col(static_cast<Eigen::Index>(c)) = jac.col(free[c]);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(jf, Eigen::ComputeThinV);
+  fit.singularValues = svd.singularValues();
+  fit.nullDirection = Eigen::VectorXd::Zero(p);
+  if (!free.empty()) {
+    const Eigen::VectorXd v = svd.matrixV().col(static_cast<Eigen::Index>(free.size()) - 1);
+    for (std::size_t c = 0; c < free.size(); ++c) fit.nullDirection[free[c]] = v[static_cast<Eigen::Index>(c)];
+  }
+
+  Built b;
+  build(model, fit.u, b);
+  ceres::Covariance::Options co;
+  // Dense SVD refuses (Compute returns false) when sigma_min / sigma_max of the
+  // Jacobian is below sqrt(min_reciprocal_condition_number) = 1e-7: we report
+  // that as "not identifiable" instead of pseudo-inverting (GAP.md principles).
+  co.algorithm_type = ceres::DENSE_SVD;
+  co.min_reciprocal_condition_number = 1e-14;
+  co.null_space_rank = 0;
+  co.num_threads = 1;
+  ceres::Covariance covariance(co);
+  std::vector<std::pair<const double*, const double*>> pairs;
+  for (int i : free) pairs.emplace_back(&b.u[static_cast<std::size_t>(i)], &b.u[static_cast<std::size_t>(i)]);
+  if (!covariance.Compute(pairs, &b.problem)) {
+    fit.rankDeficient = true;
+    return;
+  }
+  fit.stdErrors.assign(static_cast<std::size_t>(p), 0.0);
+  for (int i : free) {
+    double var = 0.0;
+    covariance.GetCovarianceBlock(&b.u[static_cast<std::size_t>(i)], &b.u[static_cast<std::size_t>(i)], &var);
+    fit.stdErrors[static_cast<std::size_t>(i)] = model.parameter(i).scale * std::sqrt(std::max(var, 0.0));
+  }
+}
+
+}  // namespace
+
+Eigen::VectorXd clipToBox(const Model& model, Eigen::VectorXd u) {
+  for (int i = 0; i < model.parameterCount(); ++i) {
+    const Scaled& s = model.parameter(i);
+    u[i] = s.fixed ? 0.0 : std::clamp(u[i], s.uLower, s.uUpper);
+  }
+  return u;
+}
+
+Eigen::VectorXd randomStart(const Model& model, std::mt19937_64& rng) {
+  Eigen::VectorXd u(model.parameterCount());
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  for (int i = 0; i < model.parameterCount(); ++i) {
+    const Scaled& s = model.parameter(i);
+    if (s.fixed) {
+      u[i] = 0.0;
+    } else if (std::isfinite(s.uLower) && std::isfinite(s.uUpper)) {
+      u[i] = s.uLower + uniform(rng) * (s.uUpper - s.uLower);
+    } else {
+      u[i] = std::clamp(normal(rng), s.uLower, s.uUpper);
+    }
+  }
+  return u;
+}
+
+FitResult fitModel(const Model& model, const std::vector<Eigen::VectorXd>& starts, const FitOptions& options) {
+  FitResult best;
+  best.nll = std::numeric_limits<double>::infinity();
+  ceres::Solver::Options so;
+  so.linear_solver_type = ceres::DENSE_QR;
+  so.max_num_iterations = options.maxIterations;
+  so.function_tolerance = options.functionTolerance;
+  so.gradient_tolerance = 1e-12;
+  so.parameter_tolerance = 1e-10;
+  so.logging_type = ceres::SILENT;
+  so.minimizer_progress_to_stdout = false;
+  so.num_threads = 1;
+  for (const auto& start : starts) {
+    ++best.starts;
+    Built b;
+    build(model, clipToBox(model, start), b);
+    double cost0 = 0.0;
+    if (!b.problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost0, nullptr, nullptr, nullptr)) continue;
+    ceres::Solver::Summary summary;
+    ceres::Solve(so, &b.problem, &summary);
+    if (!std::isfinite(summary.final_cost)) continue;
+    ++best.feasibleStarts;
+    if (summary.final_cost < best.nll) {
+      best.ok = true;
+      best.nll = summary.final_cost;
+      best.u = Eigen::Map<const Eigen::VectorXd>(b.u.data(), static_cast<Eigen::Index>(b.u.size()));
+    }
+  }
+  if (!best.ok) return best;
+  best.chiSquare = dataChiSquare(model, best.u);
+  if (options.covariance) covarianceAt(model, best);
+  return best;
+}
+
+}  // namespace mozzi::core::gap::engine
