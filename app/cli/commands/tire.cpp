@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <sstream>
@@ -18,6 +17,7 @@
 #include "core/tire/ring_model.h"
 #include "core/tire/steady_state.h"
 #include "core/tire/thesis_tyres.h"
+#include "core/tire/tire_csv.h"
 
 namespace mozzi::cli {
 namespace {
@@ -39,89 +39,10 @@ const char* kUsage =
     "       mozzi-cli tire steady SWEEP.csv [--window DEG] [--magic-formula] [--nominal-load N]\n"
     "                               [--nominal-pressure BAR] [--radius M] [--hold NAME,...] [--json]\n";
 
-// ---- small CSV reader: header row, comma separated, '#' comments --------------
-struct Table {
-  std::vector<std::string> header;
-  std::vector<std::vector<double>> rows;
-  std::vector<int> lines;  // file line of each row
-  int column(const std::string& name) const {
-    const auto it = std::find(header.begin(), header.end(), name);
-    return it == header.end() ? -1 : static_cast<int>(it - header.begin());
-  }
-};
-
 std::string trim(const std::string& s) {
   const auto a = s.find_first_not_of(" \t\r");
   const auto b = s.find_last_not_of(" \t\r");
   return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
-}
-
-Result<Table> readCsv(const std::string& path, const std::vector<std::string>& required) {
-  std::ifstream in(path);
-  if (!in) return makeError(ErrorCode::IoError, "cannot open file", path);
-  Table t;
-  std::string line;
-  int n = 0;
-  while (std::getline(in, line)) {
-    ++n;
-    line = trim(line);
-    if (line.empty() || line[0] == '#') continue;
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(trim(cell));
-    if (t.header.empty()) {
-      t.header = cells;
-      continue;
-    }
-    if (cells.size() != t.header.size())
-      return makeError(
-          ErrorCode::ParseError,
-          "expected " + std::to_string(t.header.size()) + " columns, found " + std::to_string(cells.size()),
-          path + ":" + std::to_string(n));
-    std::vector<double> row;
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-      char* end = nullptr;
-      const double v = std::strtod(cells[i].c_str(), &end);
-      if (cells[i].empty() || end != cells[i].c_str() + cells[i].size() || !std::isfinite(v))
-        return makeError(ErrorCode::ParseError, "column " + t.header[i] + " is not a finite number: '" + cells[i] + "'",
-                         path + ":" + std::to_string(n));
-      row.push_back(v);
-    }
-    t.rows.push_back(row);
-    t.lines.push_back(n);
-  }
-  if (t.header.empty()) return makeError(ErrorCode::ParseError, "no header row", path);
-  for (const auto& r : required)
-    if (t.column(r) < 0) return makeError(ErrorCode::ParseError, "missing column '" + r + "'", path);
-  if (t.rows.empty()) return makeError(ErrorCode::ParseError, "no data rows", path);
-  return t;
-}
-
-// "a:b:c,d:e:f" -> rows of numbers.
-Result<std::vector<std::vector<double>>> parseTuples(const std::string& text, std::size_t width,
-                                                     const std::string& opt) {
-  std::vector<std::vector<double>> out;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    std::vector<double> v;
-    std::stringstream is(item);
-    std::string f;
-    while (std::getline(is, f, ':')) {
-      char* end = nullptr;
-      const double x = std::strtod(f.c_str(), &end);
-      if (f.empty() || end != f.c_str() + f.size() || !std::isfinite(x))
-        return makeError(ErrorCode::InvalidArgument, "'" + item + "' is not a list of numbers", opt);
-      v.push_back(x);
-    }
-    if (v.size() != width)
-      return makeError(ErrorCode::InvalidArgument,
-                       "'" + item + "' needs " + std::to_string(width) + " fields separated by ':'", opt);
-    out.push_back(v);
-  }
-  if (out.empty()) return makeError(ErrorCode::InvalidArgument, "empty list", opt);
-  return out;
 }
 
 int fail(std::ostream& err, const std::string& sub, const core::Error& e) {
@@ -157,47 +78,16 @@ int relaxation(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
   if (speed) s.speed = *speed;
   if (sign) s.forceSign = *sign;
   if (auto band = a.value("--band")) {
-    auto b = parseTuples(*band, 2, "--band");
+    auto b = tr::parseNumberTuples(*band, 2, "--band");
     if (!b || b->size() != 1) return usage(err, "--band needs LOW:HIGH in Hz");
     s.bandLowHz = (*b)[0][0], s.bandHighHz = (*b)[0][1];
   }
   const std::string& file = a.positional()[1];
-  auto t = readCsv(file, {"frequency_hz", "time_s", "yaw_rate_rad_s", "lateral_force_n"});
+  auto t = tr::readNumericTable(file, tr::harmonicYawColumns());
   if (!t) return fail(err, "relaxation", t.error());
-  const int cf = t->column("frequency_hz"), ct = t->column("time_s"), cr = t->column("yaw_rate_rad_s"),
-            cF = t->column("lateral_force_n");
-  // Consecutive rows with the same frequency form one record.
-  std::vector<tr::HarmonicYawRecord> recs;
-  std::size_t i = 0;
-  while (i < t->rows.size()) {
-    std::size_t j = i;
-    while (j < t->rows.size() && t->rows[j][cf] == t->rows[i][cf]) ++j;
-    const std::size_t n = j - i;
-    if (n < 4)
-      return fail(err, "relaxation",
-                  makeError(ErrorCode::ParseError, "fewer than 4 samples at one frequency",
-                            file + ":" + std::to_string(t->lines[i])));
-    const double dt = (t->rows[j - 1][ct] - t->rows[i][ct]) / static_cast<double>(n - 1);
-    for (std::size_t k = i + 1; k < j; ++k) {
-      const double step = t->rows[k][ct] - t->rows[k - 1][ct];
-      if (!(dt > 0.0) || std::abs(step - dt) > 1e-3 * dt)
-        return fail(err, "relaxation",
-                    makeError(ErrorCode::ParseError, "time_s is not uniformly sampled and increasing",
-                              file + ":" + std::to_string(t->lines[k])));
-    }
-    tr::HarmonicYawRecord r;
-    r.excitationFrequencyHz = t->rows[i][cf];
-    r.sampleRateHz = 1.0 / dt;
-    r.yawRate.resize(static_cast<Eigen::Index>(n));
-    r.lateralForce.resize(static_cast<Eigen::Index>(n));
-    for (std::size_t k = 0; k < n; ++k) {
-      r.yawRate[static_cast<Eigen::Index>(k)] = t->rows[i + k][cr];
-      r.lateralForce[static_cast<Eigen::Index>(k)] = t->rows[i + k][cF];
-    }
-    recs.push_back(std::move(r));
-    i = j;
-  }
-  auto res = tr::relaxationFromHarmonicYaw(recs, s);
+  auto recs = tr::harmonicYawRecords(*t, file);
+  if (!recs) return fail(err, "relaxation", recs.error());
+  auto res = tr::relaxationFromHarmonicYaw(*recs, s);
   if (!res) return fail(err, "relaxation", res.error());
   if (a.flag("--json")) {
     Json pts = Json::array();
@@ -272,7 +162,7 @@ int ring(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     return kExitUsage;
   const auto modesText = a.value("--modes");
   if (!modesText || !mass || !radius) return usage(err, "ring needs --modes, --mass and --radius");
-  auto tuples = parseTuples(*modesText, 3, "--modes");
+  auto tuples = tr::parseNumberTuples(*modesText, 3, "--modes");
   if (!tuples) return usage(err, tuples.error().describe());
   std::vector<tr::RingModeInput> in;
   for (const auto& t : *tuples) in.push_back({static_cast<int>(t[0]), t[1], t[2]});
@@ -331,7 +221,7 @@ int predict(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     const auto st = a.value("--stiffness");
     if (!st || !C || !load)
       return usage(err, "predict needs --thesis-tyre, or --stiffness, --cornering-stiffness and --load");
-    auto tuples = parseTuples(*st, 2, "--stiffness");
+    auto tuples = tr::parseNumberTuples(*st, 2, "--stiffness");
     if (!tuples) return usage(err, tuples.error().describe());
     for (const auto& t : *tuples) stiff.push_back({static_cast<int>(t[0]), t[1], z});
     fz = *load;
@@ -340,7 +230,7 @@ int predict(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     if (half) {
       contact = {{0.0, *half}};
     } else if (auto file = a.value("--contact")) {
-      auto t = readCsv(*file, {"pressure_bar", "half_length_m"});
+      auto t = tr::readNumericTable(*file, {"pressure_bar", "half_length_m"});
       if (!t) return fail(err, "predict", t.error());
       for (const auto& r : t->rows)
         contact.push_back({r[t->column("pressure_bar")] * 1e5, r[t->column("half_length_m")]});
@@ -358,7 +248,7 @@ int predict(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
   // Optional: sigma implied by the appendix-1 FRF phase at given frequencies (first pressure... each pressure).
   std::vector<double> freqs;
   if (auto fl = a.value("--frequencies")) {
-    auto tuples = parseTuples(*fl, 1, "--frequencies");
+    auto tuples = tr::parseNumberTuples(*fl, 1, "--frequencies");
     if (!tuples) return usage(err, tuples.error().describe());
     for (const auto& t : *tuples) freqs.push_back(t[0]);
   }
@@ -438,56 +328,30 @@ int steady(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
       !number(a, "--nominal-pressure", nomP, err) || !number(a, "--radius", radius, err))
     return kExitUsage;
   const std::string& file = a.positional()[1];
-  auto t = readCsv(file, {"slip_deg", "camber_deg", "load_n", "pressure_bar", "force_n", "torque_nm"});
+  auto t = tr::readNumericTable(file, tr::steadyStateColumns());
   if (!t) return fail(err, "steady", t.error());
-  const int cs = t->column("slip_deg"), cg = t->column("camber_deg"), cl = t->column("load_n"),
-            cp = t->column("pressure_bar"), cf = t->column("force_n"), cm = t->column("torque_nm");
-  // Sweeps: consecutive rows at the same load and pressure, slip sweep where camber = 0, camber sweep where slip = 0.
-  struct Key {
-    double load, pressure;
-    bool camberSweep;
-    bool operator<(const Key& o) const {
-      return std::tie(load, pressure, camberSweep) < std::tie(o.load, o.pressure, o.camberSweep);
-    }
-  };
-  std::map<Key, std::vector<std::size_t>> sweeps;
-  for (std::size_t i = 0; i < t->rows.size(); ++i) {
-    const auto& r = t->rows[i];
-    if (r[cg] == 0.0) sweeps[{r[cl], r[cp], false}].push_back(i);
-    if (r[cs] == 0.0) sweeps[{r[cl], r[cp], true}].push_back(i);
-  }
+  auto sweeps = tr::steadyStateSweeps(*t, file);
+  if (!sweeps) return fail(err, "steady", sweeps.error());
   const double win = window.value_or(3.0) * kDeg;
   Json js = Json::array();
   if (!a.flag("--json"))
     out << "steady-state slopes at the origin (local quadratic regression over +-" << win / kDeg << " deg)\n";
-  for (const auto& [key, idx] : sweeps) {
-    if (idx.size() < 4) continue;  // a lone zero-angle point of the other sweep kind
-    tr::SteadyStateSweep s;
-    s.verticalLoad = key.load;
-    s.pressure = key.pressure * 1e5;
-    s.angle.resize(static_cast<Eigen::Index>(idx.size()));
-    s.force.resizeLike(s.angle);
-    s.torque.resizeLike(s.angle);
-    for (std::size_t k = 0; k < idx.size(); ++k) {
-      const auto& r = t->rows[idx[k]];
-      s.angle[static_cast<Eigen::Index>(k)] = (key.camberSweep ? r[cg] : r[cs]) * kDeg;
-      s.force[static_cast<Eigen::Index>(k)] = r[cf];
-      s.torque[static_cast<Eigen::Index>(k)] = r[cm];
-    }
-    auto c = tr::characteriseSweep(s, win, 2);
+  for (const auto& sw : *sweeps) {
+    const bool camber = sw.camberSweep;
+    const double load = sw.sweep.verticalLoad, bar = sw.sweep.pressure / 1e5;
+    auto c = tr::characteriseSweep(sw.sweep, win, 2);
     if (!c) {
       auto e = c.error();
-      e.where = file + ", " + (key.camberSweep ? "camber" : "slip") + " sweep at " + std::to_string(key.load) + " N, " +
-                std::to_string(key.pressure) + " bar (line " + std::to_string(t->lines[idx.front()]) + "): " + e.where;
+      e.where = file + ", " + (camber ? "camber" : "slip") + " sweep at " + std::to_string(load) + " N, " +
+                std::to_string(bar) + " bar (line " + std::to_string(sw.firstLine) + "): " + e.where;
       return fail(err, "steady", e);
     }
-    const char* fName = key.camberSweep ? "camber_stiffness_n_per_rad" : "cornering_stiffness_n_per_rad";
-    const char* mName =
-        key.camberSweep ? "twisting_torque_stiffness_nm_per_rad" : "aligning_torque_stiffness_nm_per_rad";
+    const char* fName = camber ? "camber_stiffness_n_per_rad" : "cornering_stiffness_n_per_rad";
+    const char* mName = camber ? "twisting_torque_stiffness_nm_per_rad" : "aligning_torque_stiffness_nm_per_rad";
     js.push_back(
-        {{"sweep", key.camberSweep ? "camber" : "slip"},
-         {"load_n", key.load},
-         {"pressure_bar", key.pressure},
+        {{"sweep", camber ? "camber" : "slip"},
+         {"load_n", load},
+         {"pressure_bar", bar},
          {fName, c->forceSlope.slope},
          {std::string(fName) + "_std_error", c->forceSlope.slopeStdError},
          {mName, c->torqueSlope.slope},
@@ -502,21 +366,17 @@ int steady(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
       std::snprintf(line, sizeof line,
                     "  %-6s sweep  F_z %6.0f N  p %4.2f bar: %s %9.1f +- %6.1f N/rad (%.2f /rad of F_z), %s %8.2f +- "
                     "%5.2f Nm/rad\n",
-                    key.camberSweep ? "camber" : "slip", key.load, key.pressure,
-                    key.camberSweep ? "C_gamma" : "C_alpha", c->forceSlope.slope, c->forceSlope.slopeStdError,
-                    c->normalisedForceSlope, key.camberSweep ? "C_twist" : "C_Mz", c->torqueSlope.slope,
-                    c->torqueSlope.slopeStdError);
+                    camber ? "camber" : "slip", load, bar, camber ? "C_gamma" : "C_alpha", c->forceSlope.slope,
+                    c->forceSlope.slopeStdError, c->normalisedForceSlope, camber ? "C_twist" : "C_Mz",
+                    c->torqueSlope.slope, c->torqueSlope.slopeStdError);
       out << line;
     }
   }
   Json result = {{"sweeps", js}};
   if (a.flag("--magic-formula")) {
-    std::vector<tr::SteadyStatePoint> pts;
+    const std::vector<tr::SteadyStatePoint> pts = tr::steadyStatePoints(*t);
     double meanLoad = 0, meanP = 0;
-    for (const auto& r : t->rows) {
-      pts.push_back({r[cs] * kDeg, r[cg] * kDeg, r[cl], r[cp] * 1e5, r[cf], r[cm]});
-      meanLoad += r[cl] / t->rows.size(), meanP += r[cp] * 1e5 / t->rows.size();
-    }
+    for (const auto& q : pts) meanLoad += q.load / pts.size(), meanP += q.pressure / pts.size();
     tr::MfConstants c{nomLoad.value_or(meanLoad), nomP ? *nomP * 1e5 : meanP, radius.value_or(0.3)};
     tr::MfFitOptions latOpt, alOpt;  // --hold a,b,...: names of either set
     if (auto hold = a.value("--hold")) {
