@@ -3,7 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <string>
+
+#include <Eigen/Eigenvalues>
+
+#include "core/common/text.h"
 
 namespace mozzi::core::signal {
 
@@ -59,9 +64,13 @@ bool isRectangular(const WindowSpec& w) { return w.kind == WindowKind::Rectangul
 }  // namespace
 
 Result<FrfType> responseFrfType(const TimeRecord& record, Eigen::Index referenceChannel) {
+  return responseFrfType(record, std::vector<Eigen::Index>{referenceChannel});
+}
+
+Result<FrfType> responseFrfType(const TimeRecord& record, const std::vector<Eigen::Index>& referenceChannels) {
   std::optional<FrfType> type;
   for (Eigen::Index c = 0; c < record.channelCount(); ++c) {
-    if (c == referenceChannel) continue;
+    if (std::find(referenceChannels.begin(), referenceChannels.end(), c) != referenceChannels.end()) continue;
     FrfType t;
     switch (record.channels[static_cast<std::size_t>(c)].transducer.kind) {
       case TransducerKind::Acceleration: t = FrfType::Accelerance; break;
@@ -84,6 +93,89 @@ Result<FrfType> responseFrfType(const TimeRecord& record, Eigen::Index reference
   return *type;
 }
 
+namespace {
+// The references of `options` for `layout`, checked: in range, no repeats.
+Result<std::vector<Eigen::Index>> pickReferences(const TimeRecord& layout, const FrfOptions& options) {
+  std::vector<Eigen::Index> refs = options.referenceChannels;
+  if (refs.empty() && options.referenceChannel) refs.push_back(*options.referenceChannel);
+  if (refs.empty()) {
+    for (Eigen::Index c = 0; c < layout.channelCount(); ++c) {
+      if (layout.channels[static_cast<std::size_t>(c)].transducer.kind == TransducerKind::Force) refs.push_back(c);
+    }
+    if (refs.empty()) return findForceChannel(layout).error();  // its "no force channel" message
+  }
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    if (refs[i] < 0 || refs[i] >= layout.channelCount()) {
+      return makeError(ErrorCode::InvalidArgument,
+                       "reference channel " + std::to_string(refs[i]) + " does not exist (record has " +
+                           std::to_string(layout.channelCount()) + " channels)",
+                       "FRF options");
+    }
+    if (std::find(refs.begin(), refs.begin() + static_cast<std::ptrdiff_t>(i), refs[i]) !=
+        refs.begin() + static_cast<std::ptrdiff_t>(i)) {
+      return makeError(ErrorCode::InvalidArgument, "reference channel " + std::to_string(refs[i]) + " is named twice",
+                       "FRF options");
+    }
+  }
+  return refs;
+}
+
+// Per-thread scratch for add(): one windowed input block and the spectra of
+// every channel of a hit. Kept between calls and averagers (it only grows), so
+// an averager created per estimate does not page-fault fresh buffers.
+struct Workspace {
+  AlignedBuffer<double> in;
+  AlignedBuffer<std::complex<double>> spectra;
+};
+
+Workspace& workspace(Eigen::Index n, std::size_t spectraSize) {
+  thread_local Workspace ws;
+  if (ws.in.size() < static_cast<std::size_t>(n)) ws.in = AlignedBuffer<double>(static_cast<std::size_t>(n));
+  if (ws.spectra.size() < spectraSize) ws.spectra = AlignedBuffer<std::complex<double>>(spectraSize);
+  return ws;
+}
+
+// Spectrum stride: a whole number of 64-byte lines (FFTW's SIMD alignment for
+// every spectrum) plus one, so that the spectra streamed side by side in
+// accumulate() do not sit at the same offset modulo 4 KiB (cache-set aliasing).
+Eigen::Index spectrumStride(Eigen::Index nf) { return (nf + 3) / 4 * 4 + 4; }
+
+// dst = x (.* w), in cache-sized chunks so that the sum of squares, the
+// finiteness and zero-force check, reads the chunk back from L1. Returns
+// sum dst^2: finite exactly when every sample is (NaN and inf propagate, and a
+// finite sum of squares bounds every spectral product of the block).
+double windowInto(const double* x, const double* w, double* dst, Eigen::Index n) {
+  constexpr Eigen::Index kChunk = 2048;
+  double sumSq = 0.0;
+  for (Eigen::Index i0 = 0; i0 < n; i0 += kChunk) {
+    const Eigen::Index len = std::min(kChunk, n - i0);
+    Eigen::Map<Vector> d(dst + i0, len);
+    if (w != nullptr) {
+      d = Eigen::Map<const Vector>(x + i0, len).cwiseProduct(Eigen::Map<const Vector>(w + i0, len));
+    } else {
+      d = Eigen::Map<const Vector>(x + i0, len);
+    }
+    sumSq += d.squaredNorm();
+  }
+  return sumSq;
+}
+
+// acc_k += |s_k|^2 and acc_k += conj(a_k) b_k on interleaved (re, im) data:
+// plain loops the compiler vectorises (std::complex operators would go through
+// the NaN-recovering __muldc3 without -ffast-math; inputs are finite here).
+void addAbs2(const double* __restrict s, double* __restrict acc, Eigen::Index len) {
+  for (Eigen::Index k = 0; k < len; ++k) acc[k] += s[2 * k] * s[2 * k] + s[2 * k + 1] * s[2 * k + 1];
+}
+
+void addConjProduct(const double* __restrict a, const double* __restrict b, double* __restrict acc, Eigen::Index len) {
+  for (Eigen::Index k = 0; k < len; ++k) {
+    const double ar = a[2 * k], ai = a[2 * k + 1], br = b[2 * k], bi = b[2 * k + 1];
+    acc[2 * k] += ar * br + ai * bi;
+    acc[2 * k + 1] += ar * bi - ai * br;
+  }
+}
+}  // namespace
+
 Result<SpectralAverager> SpectralAverager::create(const TimeRecord& layout, const FrfOptions& options) {
   if (auto ok = layout.validate(); !ok) return ok.error();
   SpectralAverager a;
@@ -92,25 +184,21 @@ Result<SpectralAverager> SpectralAverager::create(const TimeRecord& layout, cons
   a.sampleRateHz_ = layout.sampleRateHz;
   a.preTrigger_ = layout.preTriggerSamples;
   for (const auto& ch : layout.channels) a.dofs_.push_back(ch.dof);
-  if (options.referenceChannel) {
-    if (*options.referenceChannel < 0 || *options.referenceChannel >= layout.channelCount()) {
-      return makeError(ErrorCode::InvalidArgument,
-                       "reference channel " + std::to_string(*options.referenceChannel) + " does not exist (record has " +
-                           std::to_string(layout.channelCount()) + " channels)",
-                       "FRF options");
-    }
-    a.reference_ = *options.referenceChannel;
-  } else {
-    auto ref = findForceChannel(layout);
-    if (!ref) return ref.error();
-    a.reference_ = *ref;
-  }
+  auto refs = pickReferences(layout, options);
+  if (!refs) return refs.error();
+  a.references_ = std::move(*refs);
   for (Eigen::Index c = 0; c < layout.channelCount(); ++c) {
-    if (c != a.reference_) a.responses_.push_back(c);
+    if (std::find(a.references_.begin(), a.references_.end(), c) == a.references_.end()) a.responses_.push_back(c);
   }
-  auto type = responseFrfType(layout, a.reference_);
+  auto type = responseFrfType(layout, a.references_);
   if (!type) return type.error();
   a.type_ = *type;
+  if (a.references_.size() > 1 && options.estimator != FrfEstimator::H1) {
+    return makeError(ErrorCode::Unsupported,
+                     std::string(frfEstimatorName(options.estimator)) + " takes one reference; with " +
+                         std::to_string(a.references_.size()) + " references use H1 (H = Gyf Gff^-1)",
+                     "FRF options");
+  }
   auto fft = RealFft::forLength(a.n_);
   if (!fft) return fft.error();
   a.fft_ = *fft;
@@ -128,14 +216,25 @@ Result<SpectralAverager> SpectralAverager::create(const TimeRecord& layout, cons
   }
   const Eigen::Index nf = a.fft_->lineCount();
   a.frequencyHz_ = Vector::LinSpaced(nf, 0.0, static_cast<double>(nf - 1)) * (a.sampleRateHz_ / static_cast<double>(a.n_));
+  const auto nr = static_cast<Eigen::Index>(a.references_.size());
   const auto no = static_cast<Eigen::Index>(a.responses_.size());
-  a.sff_ = Vector::Zero(nf);
-  a.sxx_ = Matrix::Zero(nf, no);
-  a.sfx_ = ComplexMatrix::Zero(nf, no);
-  a.in_ = std::make_shared<AlignedBuffer<double>>(static_cast<std::size_t>(a.n_) * (a.responses_.size() + 1));
-  a.fSpec_ = std::make_shared<AlignedBuffer<std::complex<double>>>(static_cast<std::size_t>(nf));
-  a.xSpec_ = std::make_shared<AlignedBuffer<std::complex<double>>>(static_cast<std::size_t>(nf));
+  for (Eigen::Index i = 0; i < nr; ++i) {
+    for (Eigen::Index j = i + 1; j < nr; ++j) a.pairs_.emplace_back(i, j);
+  }
+  for (Eigen::Index i = 0; i < nr; ++i) {
+    for (Eigen::Index o = 0; o < no; ++o) a.pairs_.emplace_back(i, nr + o);
+  }
+  a.nf_ = nf;
+  a.autoCount_ = nr + no;
+  a.crossOffset_ = (nf * a.autoCount_ + 7) / 8 * 8;
+  a.acc_ = PooledBuffer(static_cast<std::size_t>(a.crossOffset_ + 2 * nf * static_cast<Eigen::Index>(a.pairs_.size())));
   return a;
+}
+
+Eigen::Index SpectralAverager::crossIndex(Eigen::Index a, Eigen::Index b) const {
+  const auto nr = static_cast<Eigen::Index>(references_.size());
+  if (b < nr) return a * (2 * nr - a - 1) / 2 + (b - a - 1);  // reference pairs, row by row
+  return nr * (nr - 1) / 2 + a * static_cast<Eigen::Index>(responses_.size()) + (b - nr);
 }
 
 Result<void> SpectralAverager::add(const TimeRecord& hit) {
@@ -169,53 +268,60 @@ Result<void> SpectralAverager::add(const TimeRecord& hit) {
                        where + ", channel " + std::to_string(c));
     }
   }
+  // Stage 1: each channel windowed straight into the FFT input (one pass, the
+  // copy any caller holding Eigen columns needs anyway), checked, transformed
+  // into its slot of the workspace. Nothing is accumulated before every
+  // channel passed, so a bad hit leaves the average untouched.
   const Eigen::Index nf = fft_->lineCount();
-  // Stage 1: every channel (windowed) into its aligned input block and checked
-  // finite before anything is accumulated, so a bad hit leaves the average
-  // untouched. The sum of a block is finite exactly when its samples are
-  // (NaN and inf propagate even through zero window weights).
-  std::vector<Eigen::Index> order{reference_};
-  order.insert(order.end(), responses_.begin(), responses_.end());
-  for (std::size_t j = 0; j < order.size(); ++j) {
-    const Eigen::Index c = order[j];
-    const bool isRef = j == 0;
+  const Eigen::Index stride = spectrumStride(nf);
+  const std::size_t nr = references_.size();
+  const std::size_t channels = nr + responses_.size();
+  Workspace& ws = workspace(n_, static_cast<std::size_t>(stride) * channels);
+  for (std::size_t j = 0; j < channels; ++j) {
+    const bool isRef = j < nr;
+    const Eigen::Index c = isRef ? references_[j] : responses_[j - nr];
     const double* x = hit.samples.col(c).data();
-    double* in = in_->data() + j * static_cast<std::size_t>(n_);
-    if (isRef ? refRect_ : respRect_) {
-      std::copy(x, x + n_, in);
-    } else {
-      const double* wp = isRef ? refWindow_.data() : respWindow_.data();
-      for (Eigen::Index i = 0; i < n_; ++i) in[i] = x[i] * wp[i];
-    }
-    if (!std::isfinite(Eigen::Map<const Vector>(in, n_).sum())) {
+    const double* w = isRef ? (refRect_ ? nullptr : refWindow_.data()) : (respRect_ ? nullptr : respWindow_.data());
+    const double sumSq = windowInto(x, w, ws.in.data(), n_);
+    if (!std::isfinite(sumSq)) {
       for (Eigen::Index i = 0; i < n_; ++i) {
         if (!std::isfinite(x[i])) {
           return makeError(ErrorCode::InvalidArgument, "sample is NaN or infinite",
                            where + ", " + channelWhere(hit, c) + ", sample " + std::to_string(i));
         }
       }
-      return makeError(ErrorCode::NumericalFailure, "samples too large: their sum overflows", where + ", " + channelWhere(hit, c));
+      return makeError(ErrorCode::NumericalFailure, "samples too large: their sum of squares overflows",
+                       where + ", " + channelWhere(hit, c));
     }
+    if (isRef && !(sumSq > 0.0)) {
+      return makeError(ErrorCode::InvalidArgument,
+                       "force is zero (after the force window): no excitation to divide by",
+                       where + ", " + channelWhere(hit, c));
+    }
+    fft_->forward(ws.in.data(), ws.spectra.data() + static_cast<Eigen::Index>(j) * stride);
   }
-  std::complex<double>* f = fSpec_->data();
-  fft_->forward(in_->data(), f);
-  const Eigen::Map<const ComplexVector> fv(f, nf);
-  if (!(fv.squaredNorm() > 0.0)) {
-    return makeError(ErrorCode::InvalidArgument, "force is zero (after the force window): no excitation to divide by",
-                     where + ", " + channelWhere(hit, reference_));
-  }
-  // Stage 2: each response transformed and accumulated at once, while its
-  // spectrum is still in cache, with Eigen's packet math (SIMD complex
-  // products without std::complex's NaN-recovery path; inputs are finite).
-  sff_.array() += fv.real().array().square() + fv.imag().array().square();  // |F|^2
-  const Eigen::Map<const ComplexVector> xv(xSpec_->data(), nf);
-  for (std::size_t o = 0; o < responses_.size(); ++o) {
-    fft_->forward(in_->data() + (o + 1) * static_cast<std::size_t>(n_), xSpec_->data());
-    sfx_.col(static_cast<Eigen::Index>(o)).array() += fv.conjugate().array() * xv.array();  // conj(F) X
-    sxx_.col(static_cast<Eigen::Index>(o)).array() += xv.real().array().square() + xv.imag().array().square();  // |X|^2
-  }
+  accumulate(ws.spectra.data(), stride);
   ++hits_;
   return {};
+}
+
+void SpectralAverager::accumulate(const std::complex<double>* spectra, Eigen::Index stride) {
+  // Stage 2: one sweep over the lines in blocks that fit L1, every auto and
+  // cross product of a block done while its spectra are cached; each
+  // accumulator column is a contiguous stream read and written once per hit.
+  constexpr Eigen::Index kBlock = 512;
+  const Eigen::Index nf = autos().rows();
+  const auto spec = [&](Eigen::Index a, Eigen::Index k0) {
+    return reinterpret_cast<const double*>(spectra + a * stride + k0);
+  };
+  for (Eigen::Index k0 = 0; k0 < nf; k0 += kBlock) {
+    const Eigen::Index len = std::min(kBlock, nf - k0);
+    for (Eigen::Index a = 0; a < autos().cols(); ++a) addAbs2(spec(a, k0), autos().col(a).data() + k0, len);
+    for (std::size_t p = 0; p < pairs_.size(); ++p) {
+      addConjProduct(spec(pairs_[p].first, k0), spec(pairs_[p].second, k0),
+                     reinterpret_cast<double*>(cross().col(static_cast<Eigen::Index>(p)).data() + k0), len);
+    }
+  }
 }
 
 namespace {
@@ -226,53 +332,122 @@ Vector esdScale(Eigen::Index nf, Eigen::Index n, double fs, int hits) {
   if (n % 2 == 0) s[nf - 1] = 1.0 / (fs * fs * hits);
   return s;
 }
+
+std::string hz(double f) { return formatNumber(f, 6) + " Hz"; }
 }  // namespace
 
 void SpectralAverager::reset() {
-  sff_.setZero();
-  sxx_.setZero();
-  sfx_.setZero();
+  acc_.setZero();
   hits_ = 0;
 }
 
 Vector SpectralAverager::gff() const {
-  if (hits_ == 0) return Vector::Zero(sff_.size());
-  return sff_.cwiseProduct(esdScale(sff_.size(), n_, sampleRateHz_, hits_));
+  if (hits_ == 0) return Vector::Zero(autos().rows());
+  return autos().col(0).cwiseProduct(esdScale(autos().rows(), n_, sampleRateHz_, hits_));
 }
 
 Matrix SpectralAverager::gxx() const {
-  if (hits_ == 0) return Matrix::Zero(sxx_.rows(), sxx_.cols());
-  return esdScale(sxx_.rows(), n_, sampleRateHz_, hits_).asDiagonal() * sxx_;
+  const auto no = static_cast<Eigen::Index>(responses_.size());
+  if (hits_ == 0) return Matrix::Zero(autos().rows(), no);
+  return esdScale(autos().rows(), n_, sampleRateHz_, hits_).asDiagonal() * autos().rightCols(no);
 }
 
 ComplexMatrix SpectralAverager::gfx() const {
-  if (hits_ == 0) return ComplexMatrix::Zero(sfx_.rows(), sfx_.cols());
-  return esdScale(sfx_.rows(), n_, sampleRateHz_, hits_).cast<Complex>().asDiagonal() * sfx_;
+  const auto nr = static_cast<Eigen::Index>(references_.size());
+  const auto no = static_cast<Eigen::Index>(responses_.size());
+  if (hits_ == 0) return ComplexMatrix::Zero(autos().rows(), no);
+  const Eigen::Index first = crossIndex(0, nr);  // reference 0 with response 0, responses follow
+  return esdScale(autos().rows(), n_, sampleRateHz_, hits_).cast<Complex>().asDiagonal() * cross().middleCols(first, no);
+}
+
+ComplexMatrix SpectralAverager::referenceSpectralMatrix(Eigen::Index line) const {
+  const auto nr = static_cast<Eigen::Index>(references_.size());
+  ComplexMatrix g = ComplexMatrix::Zero(nr, nr);
+  if (hits_ == 0 || line < 0 || line >= autos().rows()) return g;
+  const double c = esdScale(autos().rows(), n_, sampleRateHz_, hits_)[line];
+  for (Eigen::Index i = 0; i < nr; ++i) {
+    g(i, i) = c * autos()(line, i);
+    for (Eigen::Index j = i + 1; j < nr; ++j) {
+      // cross() holds sum conj(f_i) f_j = E[f_j conj(f_i)] = Gff(j, i)
+      g(j, i) = c * cross()(line, crossIndex(i, j));
+      g(i, j) = std::conj(g(j, i));
+    }
+  }
+  return g;
+}
+
+namespace {
+// Condition number of D^-1/2 G D^-1/2 (D = diag G) for Hermitian G, with the
+// eigen decomposition kept for the solve; +inf when a diagonal entry is not
+// positive or the smallest eigenvalue is not.
+struct NormalisedInput {
+  Vector invSqrtDiag;
+  Eigen::SelfAdjointEigenSolver<ComplexMatrix> eig;
+  double condition = 1.0;
+
+  explicit NormalisedInput(Eigen::Index r) : invSqrtDiag(r), eig(r) {}
+
+  void compute(const ComplexMatrix& g) {
+    const Vector d = g.diagonal().real();
+    if (!(d.minCoeff() > 0.0)) {
+      condition = std::numeric_limits<double>::infinity();
+      return;
+    }
+    invSqrtDiag = d.cwiseSqrt().cwiseInverse();
+    eig.compute(invSqrtDiag.asDiagonal() * g * invSqrtDiag.asDiagonal());
+    const Vector& l = eig.eigenvalues();  // ascending
+    condition = l[0] > 0.0 ? l[l.size() - 1] / l[0] : std::numeric_limits<double>::infinity();
+  }
+};
+}  // namespace
+
+Vector SpectralAverager::referenceConditionNumber() const {
+  const Eigen::Index nf = autos().rows();
+  Vector cond = Vector::Ones(nf);
+  if (references_.size() < 2 || hits_ == 0) return cond;
+  NormalisedInput ni(static_cast<Eigen::Index>(references_.size()));
+  for (Eigen::Index k = 0; k < nf; ++k) {
+    ni.compute(referenceSpectralMatrix(k));
+    cond[k] = ni.condition;
+  }
+  return cond;
 }
 
 Result<FrfMatrix> SpectralAverager::frf(FrfEstimator estimator) const {
   const std::string where = std::string(frfEstimatorName(estimator)) + " estimate";
   if (hits_ == 0) return makeError(ErrorCode::InvalidArgument, "no hits were averaged", where);
-  const Eigen::Index nf = sff_.size();
-  const auto no = static_cast<Eigen::Index>(responses_.size());
   FrfMatrix m;
   m.frequencyHz = frequencyHz_;
-  m.references = {dofs_[static_cast<std::size_t>(reference_)]};
+  for (auto c : references_) m.references.push_back(dofs_[static_cast<std::size_t>(c)]);
   for (auto c : responses_) m.responses.push_back(dofs_[static_cast<std::size_t>(c)]);
   m.type = type_;
+  if (references_.size() == 1) return frfSingleReference(estimator, std::move(m));
+  if (estimator != FrfEstimator::H1) {
+    return makeError(ErrorCode::Unsupported,
+                     std::string(frfEstimatorName(estimator)) + " takes one reference; with " +
+                         std::to_string(references_.size()) + " references use H1 (H = Gyf Gff^-1)",
+                     where);
+  }
+  return frfMultipleReference(std::move(m));
+}
+
+Result<FrfMatrix> SpectralAverager::frfSingleReference(FrfEstimator estimator, FrfMatrix m) const {
+  const std::string where = std::string(frfEstimatorName(estimator)) + " estimate";
+  const Eigen::Index nf = autos().rows();
+  const auto no = static_cast<Eigen::Index>(responses_.size());
   ComplexMatrix h(nf, no);
   Matrix coh(nf, no);
   // The scale c_k cancels in every ratio below, so the raw sums are used.
   for (Eigen::Index k = 0; k < nf; ++k) {
-    const double gff = sff_[k];
+    const double gff = autos()(k, 0);
     if (!(gff > 0.0)) {
       return makeError(ErrorCode::NumericalFailure,
                        "force auto spectrum is zero at " + std::to_string(frequencyHz_[k]) + " Hz; H cannot be formed",
                        where + ", line " + std::to_string(k));
     }
     for (Eigen::Index o = 0; o < no; ++o) {
-      const Complex gfx = sfx_(k, o);
-      const double gxx = sxx_(k, o);
+      const Complex gfx = cross()(k, o);  // pair (0, 1 + o) is column o with one reference
+      const double gxx = autos()(k, 1 + o);
       const double g2 = gfx.real() * gfx.real() + gfx.imag() * gfx.imag();  // |G_fx|^2 (std::norm goes through hypot)
       // gamma^2 = |G_fx|^2 / (G_ff G_xx); 0 when the response is exactly zero
       coh(k, o) = gxx > 0.0 ? std::clamp(g2 / (gff * gxx), 0.0, 1.0) : 0.0;
@@ -297,8 +472,78 @@ Result<FrfMatrix> SpectralAverager::frf(FrfEstimator estimator) const {
       }
     }
   }
-  m.h = {std::move(h)};
-  m.coherence = {std::move(coh)};
+  m.h.push_back(std::move(h));  // (a braced list would copy the blocks)
+  m.coherence.push_back(std::move(coh));
+  return m;
+}
+
+Result<FrfMatrix> SpectralAverager::frfMultipleReference(FrfMatrix m) const {
+  const std::string where = "multiple-reference H1 estimate";
+  const Eigen::Index nf = autos().rows();
+  const auto nr = static_cast<Eigen::Index>(references_.size());
+  const auto no = static_cast<Eigen::Index>(responses_.size());
+  std::vector<ComplexMatrix> h(static_cast<std::size_t>(nr), ComplexMatrix(nf, no));
+  Matrix coh(nf, no);
+  NormalisedInput ni(nr);
+  ComplexMatrix gyf(no, nr), hk(no, nr);
+  std::vector<Eigen::Index> badLines;
+  double worst = 0.0;
+  Eigen::Index worstLine = 0;
+  // Raw sums again: the scale c_k is common to Gff, Gyf and Gyy at a line.
+  for (Eigen::Index k = 0; k < nf; ++k) {
+    const ComplexMatrix g = referenceSpectralMatrix(k);
+    for (Eigen::Index i = 0; i < nr; ++i) {
+      if (!(autos()(k, i) > 0.0)) {
+        return makeError(ErrorCode::NumericalFailure,
+                         "auto spectrum of reference " + formatDof(m.references[static_cast<std::size_t>(i)]) +
+                             " is zero at " + hz(frequencyHz_[k]) + "; H cannot be formed",
+                         where + ", line " + std::to_string(k));
+      }
+    }
+    ni.compute(g);
+    if (!(ni.condition <= options_.maxReferenceConditionNumber)) {
+      badLines.push_back(k);
+      if (!(ni.condition <= worst)) {
+        worst = ni.condition;
+        worstLine = k;
+      }
+      continue;
+    }
+    for (Eigen::Index i = 0; i < nr; ++i) {
+      for (Eigen::Index o = 0; o < no; ++o) gyf(o, i) = cross()(k, crossIndex(i, nr + o));  // E[y_o conj(f_i)]
+    }
+    // H = Gyf Gff^-1 with Gff^-1 = D V L^-1 V^H D (D = diag^-1/2, V L V^H the
+    // normalised matrix), well defined since the condition was checked.
+    const auto& v = ni.eig.eigenvectors();
+    const Vector invL = ni.eig.eigenvalues().cwiseInverse();
+    const ComplexMatrix gInv = ni.invSqrtDiag.asDiagonal() * v * invL.asDiagonal() * v.adjoint() *
+                               ni.invSqrtDiag.asDiagonal();
+    hk.noalias() = gyf * gInv;
+    for (Eigen::Index o = 0; o < no; ++o) {
+      // gamma^2_o = H_o Gyf_o^H / G_yoyo (real: a Hermitian form)
+      const double gyy = autos()(k, nr + o);
+      const double num = (hk.row(o) * gyf.row(o).adjoint()).value().real();
+      coh(k, o) = gyy > 0.0 ? std::clamp(num / gyy, 0.0, 1.0) : 0.0;
+      for (Eigen::Index i = 0; i < nr; ++i) h[static_cast<std::size_t>(i)](k, o) = hk(o, i);
+    }
+  }
+  if (!badLines.empty()) {
+    std::string lines;
+    for (std::size_t b = 0; b < std::min<std::size_t>(badLines.size(), 8); ++b) {
+      lines += (b ? ", " : "") + hz(frequencyHz_[badLines[b]]);
+    }
+    if (badLines.size() > 8) lines += ", ...";
+    return makeError(ErrorCode::NumericalFailure,
+                     "the references are correlated: their cross-spectral matrix Gff is ill-conditioned at " +
+                         std::to_string(badLines.size()) + " of " + std::to_string(nf) + " lines (" + lines +
+                         "; worst condition number " + formatNumber(worst, 3) + " at " + hz(frequencyHz_[worstLine]) +
+                         ", limit " + formatNumber(options_.maxReferenceConditionNumber, 3) +
+                         "), so the forces cannot be separated. Drive the references with independent signals, "
+                         "average more blocks than there are references, or use one reference",
+                     where);
+  }
+  m.h = std::move(h);
+  m.coherence.assign(static_cast<std::size_t>(nr), coh);
   return m;
 }
 
