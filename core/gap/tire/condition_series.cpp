@@ -23,8 +23,10 @@ int NumericTable::column(const std::string& name) const {
 }
 
 Result<NumericTable> readNumericCsv(const std::string& text, const std::string& source,
-                                    const std::vector<std::string>& required) {
+                                    const std::vector<std::string>& required,
+                                    const std::vector<std::string>& textColumns) {
   NumericTable t;
+  std::vector<int> textIndex;  // for each header column: its position in textColumns, or -1
   std::istringstream in(text);
   std::string line;
   int n = 0;
@@ -42,6 +44,10 @@ Result<NumericTable> readNumericCsv(const std::string& text, const std::string& 
       for (const auto& c : cells)
         if (c.empty()) return makeError(ErrorCode::ParseError, "empty column name in the header", where);
       t.header = cells;
+      for (const auto& c : cells) {
+        const auto it = std::find(textColumns.begin(), textColumns.end(), c);
+        textIndex.push_back(it == textColumns.end() ? -1 : static_cast<int>(it - textColumns.begin()));
+      }
       continue;
     }
     if (cells.size() != t.header.size())
@@ -49,7 +55,14 @@ Result<NumericTable> readNumericCsv(const std::string& text, const std::string& 
           ErrorCode::ParseError,
           "expected " + std::to_string(t.header.size()) + " columns, found " + std::to_string(cells.size()), where);
     std::vector<double> row;
+    std::vector<std::string> words(textColumns.size());
     for (std::size_t i = 0; i < cells.size(); ++i) {
+      if (textIndex[i] >= 0) {
+        if (cells[i].empty()) return makeError(ErrorCode::ParseError, "column " + t.header[i] + " is empty", where);
+        words[static_cast<std::size_t>(textIndex[i])] = cells[i];
+        row.push_back(0.0);
+        continue;
+      }
       char* end = nullptr;
       const double v = std::strtod(cells[i].c_str(), &end);
       if (cells[i].empty() || end != cells[i].c_str() + cells[i].size() || !std::isfinite(v))
@@ -58,6 +71,7 @@ Result<NumericTable> readNumericCsv(const std::string& text, const std::string& 
       row.push_back(v);
     }
     t.rows.push_back(std::move(row));
+    t.text.push_back(std::move(words));
     t.lines.push_back(n);
   }
   if (t.header.empty()) return makeError(ErrorCode::ParseError, "no header row", source);
@@ -67,12 +81,12 @@ Result<NumericTable> readNumericCsv(const std::string& text, const std::string& 
   return t;
 }
 
-Result<NumericTable> readNumericCsvFile(const std::string& path, const std::vector<std::string>& required) {
+Result<std::string> readTextFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return makeError(ErrorCode::IoError, "cannot open file", path);
   std::ostringstream text;
   text << in.rdbuf();
-  return readNumericCsv(text.str(), path, required);
+  return text.str();
 }
 
 bool whitenedResiduals(const std::vector<ConditionPoint>& points, const std::vector<double>& predicted, double* r) {

@@ -25,16 +25,20 @@ struct ConditionPoint {
 };
 
 // Header row of names, comma separated, '#' comments, every cell a finite
-// number. Errors name the file and line.
+// number except in the columns named in textColumns (kept as text, non-empty;
+// their numeric cell is 0). Errors name the file and line.
 struct NumericTable {
   std::vector<std::string> header;
   std::vector<std::vector<double>> rows;
-  std::vector<int> lines;  // file line of each row
+  std::vector<std::vector<std::string>> text;  // per row, the cells of the text columns in textColumns order
+  std::vector<int> lines;                      // file line of each row
   int column(const std::string& name) const;
 };
 Result<NumericTable> readNumericCsv(const std::string& text, const std::string& source,
-                                    const std::vector<std::string>& required);
-Result<NumericTable> readNumericCsvFile(const std::string& path, const std::vector<std::string>& required);
+                                    const std::vector<std::string>& required,
+                                    const std::vector<std::string>& textColumns = {});
+// The whole file as text (IoError naming the path).
+Result<std::string> readTextFile(const std::string& path);
 
 // r_j = (predicted_j - measured_j) / sigma_j. False when a prediction is not finite.
 bool whitenedResiduals(const std::vector<ConditionPoint>& points, const std::vector<double>& predicted, double* r);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -257,14 +256,6 @@ std::string squash(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
   return s;
 }
-
-Result<std::string> readText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return makeError(ErrorCode::IoError, "cannot open file", path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 }  // namespace
 
 Result<TireGapModel> parseTireGapModel(const std::string& jsonText, const std::string& source) {
@@ -419,11 +410,11 @@ Result<std::vector<ConditionPoint>> parseRelaxationCsv(const std::string& csvTex
 
 Result<std::unique_ptr<GapProblem>> loadTireGapProblem(const std::string& modelPath, const std::string& measuredPath,
                                                        const TireLoadOptions& options) {
-  auto modelText = readText(modelPath);
+  auto modelText = readTextFile(modelPath);
   if (!modelText) return modelText.error();
   auto model = parseTireGapModel(*modelText, modelPath);
   if (!model) return model.error();
-  auto csv = readText(measuredPath);
+  auto csv = readTextFile(measuredPath);
   if (!csv) return csv.error();
   auto points = parseRelaxationCsv(*csv, measuredPath);
   if (!points) return points.error();

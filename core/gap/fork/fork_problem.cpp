@@ -1,0 +1,171 @@
+#include "core/gap/fork/fork_problem.h"
+
+#include <cmath>
+#include <limits>
+
+#include "core/common/text.h"
+
+namespace mozzi::core::gap {
+
+namespace {
+constexpr double kTwoPi = 6.28318530717958647692;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+enum ForkEffect { kStiffnessLocation = 0, kBendingStiffness, kInertia, kResidualCompliance };
+
+bool positive(double v) {
+  return std::isfinite(v) && v > 0.0;
+}
+}  // namespace
+
+// ---- fork A lumped model (§4.2) ------------------------------------------------
+
+Result<std::unique_ptr<ForkLumpedGapProblem>> ForkLumpedGapProblem::create(const ForkLumpedGapInput& in) {
+  const char* where = "fork lumped gap problem (§4.2)";
+  // forkLumpedModels validates the shared inputs (and model 1 is the baseline).
+  auto models = stiffness::forkLumpedModels(in.fork);
+  if (!models) return models.error();
+  if (!positive(in.frequencySigmaHz))
+    return makeError(ErrorCode::InvalidArgument, "the frequency uncertainty must be positive", where);
+  if (!(in.torsionCompliance >= 0.0) || !std::isfinite(in.torsionCompliance))
+    return makeError(ErrorCode::InvalidArgument, "the torsion compliance must be >= 0", where);
+  if (!(in.fork.dynamicAxisArm > in.fork.wheelCentreHeight) || !(in.fork.staticAxisArm > in.fork.wheelCentreHeight))
+    return makeError(ErrorCode::InvalidArgument, "the bending axes must lie above the wheel centre", where);
+  std::vector<ConditionPoint> pts = {{"lateral mode [Hz]", 0.0, in.fork.measuredFrequencyHz, in.frequencySigmaHz, 0}};
+  if (in.withStatic) {
+    if (!positive(in.staticLateralStiffness) || !positive(in.staticSigma))
+      return makeError(ErrorCode::InvalidArgument, "static lateral stiffness and its uncertainty must be positive",
+                       where);
+    pts.push_back({"static lateral stiffness [N/m]", 1.0, in.staticLateralStiffness, in.staticSigma, 1});
+  }
+  return std::unique_ptr<ForkLumpedGapProblem>(new ForkLumpedGapProblem(in, std::move(pts)));
+}
+
+std::vector<Candidate> ForkLumpedGapProblem::candidates() const {
+  const std::string l2 = "bending axis at " + formatNumber(in_.fork.dynamicAxisArm, 3) + " m";
+  const std::string l1 = "bending axis at " + formatNumber(in_.fork.staticAxisArm, 3) + " m";
+  return {
+      {"stiffness_location", {l2}, {{"stiffness_scale", "", 1.0, 0.2, 10.0, 0.0}}},
+      {"bending_stiffness", {l1}, {{"stiffness_scale", "", 1.0, 0.2, 10.0, 0.0}}},
+      {"inertia", {l1}, {{"pure_moment", "kg m^2", 0.0, -1.5, 1.5, 0.0}}},
+      {"residual_compliance", {}, {{"static_share", "", 0.0, 0.0, 0.9, 0.0}}},
+  };
+}
+
+std::vector<double> ForkLumpedGapProblem::predict(int candidate, const double* phi) const {
+  const auto& f = in_.fork;
+  auto inertia = [&](double arm) {  // wheel + unsprung mass M at the wheel centre, J_wheel about its own diameter
+    const double d = arm - f.wheelCentreHeight;
+    return f.wheelInertia + f.vibratingMass * d * d;
+  };
+  double arm = f.staticAxisArm;            // where the spring and the rotation axis are
+  double kModal = f.staticBendStiffness;   // the stiffness the mode deforms
+  double kStatic = f.staticBendStiffness;  // the bending stiffness the static test sees at that arm
+  double J = inertia(arm);
+  switch (candidate) {
+    case -1: break;
+    case kStiffnessLocation:
+      arm = f.dynamicAxisArm;
+      kModal = kStatic = phi[0] * f.staticBendStiffness;
+      J = inertia(arm);
+      break;
+    case kBendingStiffness: kModal = kStatic = phi[0] * f.staticBendStiffness; break;
+    case kInertia: J += phi[0]; break;
+    case kResidualCompliance: kModal = f.staticBendStiffness / (1.0 - phi[0]); break;
+    default: return std::vector<double>(points_.size(), kNaN);
+  }
+  std::vector<double> out;
+  out.push_back(J > 0.0 && kModal > 0.0 ? std::sqrt(kModal / J) / kTwoPi : kNaN);          // f_n = sqrt(k/J) / 2pi
+  if (in_.withStatic) out.push_back(1.0 / (arm * arm / kStatic + in_.torsionCompliance));  // K_lat, series
+  return out;
+}
+
+bool ForkLumpedGapProblem::residuals(const double*, int candidate, const double* phi, double* r) const {
+  return whitenedResiduals(points_, predict(candidate, phi), r);
+}
+
+std::vector<int> ForkLumpedGapProblem::folds() const {
+  std::vector<int> f;
+  for (const auto& p : points_) f.push_back(p.fold);
+  return f;
+}
+
+std::unique_ptr<GapProblem> ForkLumpedGapProblem::simulated(const double*, int candidate, const double* phi,
+                                                            std::mt19937_64& rng) const {
+  return std::unique_ptr<GapProblem>(
+      new ForkLumpedGapProblem(in_, simulatedPoints(points_, predict(candidate, phi), rng)));
+}
+
+GapMetrics ForkLumpedGapProblem::metrics(const double*, int candidate, const double* phi) const {
+  auto m = conditionMetrics(points_, predict(candidate, phi), "relative_residual");
+  m.entries[0].kind = "mode";
+  return m;
+}
+
+// ---- estimates of one stiffness from several configurations (§6.4) -------------
+
+Result<std::unique_ptr<StiffnessEstimatesGapProblem>> StiffnessEstimatesGapProblem::create(
+    std::vector<StiffnessEstimate> estimates, std::string unit) {
+  const char* where = "stiffness estimates gap problem";
+  if (estimates.size() < 2)
+    return makeError(ErrorCode::InvalidArgument, "at least two estimates are needed to compare", where);
+  std::vector<ConditionPoint> pts;
+  for (std::size_t i = 0; i < estimates.size(); ++i) {
+    const auto& e = estimates[i];
+    if (!positive(e.value) || !positive(e.sigma))
+      return makeError(ErrorCode::InvalidArgument, "estimate and uncertainty must be positive", e.configuration);
+    for (const auto& p : pts)
+      if (p.label == e.configuration)
+        return makeError(ErrorCode::InvalidArgument, "configuration named twice", e.configuration);
+    pts.push_back({e.configuration, static_cast<double>(i), e.value, e.sigma, static_cast<int>(i)});
+  }
+  const double ref = estimates.front().value;
+  return std::unique_ptr<StiffnessEstimatesGapProblem>(
+      new StiffnessEstimatesGapProblem(std::move(pts), std::move(unit), ref));
+}
+
+std::vector<Parameter> StiffnessEstimatesGapProblem::calibrationParameters() const {
+  return {{"stiffness_scale", "", 1.0, 0.2, 5.0, 0.0}};  // k / first estimate
+}
+
+std::vector<Candidate> StiffnessEstimatesGapProblem::candidates() const {
+  std::vector<Candidate> c;
+  for (const auto& p : points_) c.push_back({"inertia_error", {p.label}, {{"inertia_scale", "", 1.0, 0.5, 2.0, 0.0}}});
+  c.push_back({"boundary_stiffness", {}, {{"compliance_ratio", "", 0.0, 0.0, 2.0, 0.0}}});
+  return c;
+}
+
+std::vector<double> StiffnessEstimatesGapProblem::predict(const double* theta, int candidate, const double* phi) const {
+  const int n = static_cast<int>(points_.size());
+  std::vector<double> out(points_.size(), theta[0] * reference_);
+  if (candidate >= 0 && candidate < n) {
+    // k_hat = (2 pi f)^2 I_assumed with (2 pi f)^2 = k / I_true: k / s.
+    out[static_cast<std::size_t>(candidate)] /= phi[0];
+  } else if (candidate == n) {
+    for (auto& v : out) v /= 1.0 + phi[0];  // series clamp: 1/k_hat = 1/k + rho/k
+  } else if (candidate != -1) {
+    out.assign(points_.size(), kNaN);
+  }
+  return out;
+}
+
+bool StiffnessEstimatesGapProblem::residuals(const double* theta, int candidate, const double* phi, double* r) const {
+  return whitenedResiduals(points_, predict(theta, candidate, phi), r);
+}
+
+std::vector<int> StiffnessEstimatesGapProblem::folds() const {
+  std::vector<int> f;
+  for (const auto& p : points_) f.push_back(p.fold);
+  return f;
+}
+
+std::unique_ptr<GapProblem> StiffnessEstimatesGapProblem::simulated(const double* theta, int candidate,
+                                                                    const double* phi, std::mt19937_64& rng) const {
+  return std::unique_ptr<GapProblem>(new StiffnessEstimatesGapProblem(
+      simulatedPoints(points_, predict(theta, candidate, phi), rng), unit_, reference_));
+}
+
+GapMetrics StiffnessEstimatesGapProblem::metrics(const double* theta, int candidate, const double* phi) const {
+  return conditionMetrics(points_, predict(theta, candidate, phi), "relative_residual");
+}
+
+}  // namespace mozzi::core::gap

@@ -1,0 +1,108 @@
+#pragma once
+// Gap problems of the thesis's fork worked examples (issue 10, shared/GAP.md
+// "Worked cases"), on the lumped models of core/stiffness/fork_models.h.
+//
+// ForkLumpedGapProblem (thesis §4.2, Tables 10 to 12): fork A's 1-DOF bending
+// model 1 — static stiffness k_1 at the static twist axis L_1, wheel and
+// unsprung mass M at the wheel centre — predicts 18.4 Hz against 22.3 Hz
+// measured. Data: that frequency and, optionally, the static lateral stiffness
+// at the contact point (Table 10: 56.1 kN/m), predicted as the bending spring
+// and the decomposition's torsion part in series,
+//   K_lat = 1 / (L_1^2 / k_1 + c_t),   c_t = L_t^2 / k_t  (Table 10: 0.066 m, 3 kNm/rad).
+// No calibration parameter: every input is a measurement. Catalogue, one
+// parameter each:
+//   stiffness_location   (model 2) the spring sits at the dynamic twist axis
+//                        L_2 (0.846 m) with stiffness s k_1; inertia about L_2.
+//   bending_stiffness    the spring stays at L_1 with stiffness s k_1.
+//   inertia              (model 3) a pure moment dJ added to the vibrating inertia.
+//   residual_compliance  a share rho of the static bending compliance belongs to
+//                        a part the bending mode does not deform (fixture, play):
+//                        the mode sees k_1 / (1 - rho), the static test all of it.
+// Folds: 0 the frequency, 1 the static stiffness.
+//
+// StiffnessEstimatesGapProblem (thesis §6.4): several estimates of one
+// stiffness from different test configurations (the carbon fork's torsion:
+// 1208 Nm/rad with the wheel, 1253 Nm/rad alone). Model: one stiffness k
+// (theta = k / first estimate). Catalogue: inertia_error at one configuration
+// (k_hat = k / s there: the configuration's inertia is s times the assumed),
+// boundary_stiffness (a clamp compliance in series, the same in every
+// configuration: k_hat = k / (1 + rho); not separable from k by construction).
+
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/common/result.h"
+#include "core/gap/gap_problem.h"
+#include "core/gap/tire/condition_series.h"
+#include "core/stiffness/fork_models.h"
+
+namespace mozzi::core::gap {
+
+struct ForkLumpedGapInput {
+  stiffness::ForkLumpedInput fork;      // k_1, L_1, L_2, wheel centre, M, J_wheel, measured f, zeta
+  double frequencySigmaHz = 0.0;        // standard uncertainty of the measured frequency
+  bool withStatic = false;              // add the static lateral stiffness as a datum
+  double staticLateralStiffness = 0.0;  // measured [N/m]
+  double staticSigma = 0.0;             // [N/m]
+  double torsionCompliance = 0.0;       // c_t [m/N], the torsion part of the static test
+};
+
+class ForkLumpedGapProblem : public GapProblem {
+ public:
+  static Result<std::unique_ptr<ForkLumpedGapProblem>> create(const ForkLumpedGapInput& in);
+
+  std::string dataKind() const override { return "modes"; }
+  std::vector<Parameter> calibrationParameters() const override { return {}; }
+  std::vector<Candidate> candidates() const override;
+  int residualCount() const override { return static_cast<int>(points_.size()); }
+  bool residuals(const double* theta, int candidate, const double* phi, double* r) const override;
+  std::vector<int> folds() const override;
+  std::unique_ptr<GapProblem> simulated(const double* theta, int candidate, const double* phi,
+                                        std::mt19937_64& rng) const override;
+  GapMetrics metrics(const double* theta, int candidate, const double* phi) const override;
+
+  // [frequency Hz, (static lateral stiffness N/m)] for the given effect.
+  std::vector<double> predict(int candidate, const double* phi) const;
+
+ private:
+  ForkLumpedGapProblem(ForkLumpedGapInput in, std::vector<ConditionPoint> points)
+      : in_(std::move(in)), points_(std::move(points)) {}
+  ForkLumpedGapInput in_;
+  std::vector<ConditionPoint> points_;
+};
+
+struct StiffnessEstimate {
+  std::string configuration;  // "with wheel", "fork alone"
+  double value = 0.0;         // [N m/rad] or [N/m]
+  double sigma = 0.0;         // standard uncertainty, same unit
+};
+
+class StiffnessEstimatesGapProblem : public GapProblem {
+ public:
+  static Result<std::unique_ptr<StiffnessEstimatesGapProblem>> create(std::vector<StiffnessEstimate> estimates,
+                                                                      std::string unit);
+
+  std::string dataKind() const override { return "stiffness"; }
+  std::vector<Parameter> calibrationParameters() const override;
+  std::vector<Candidate> candidates() const override;
+  int residualCount() const override { return static_cast<int>(points_.size()); }
+  bool residuals(const double* theta, int candidate, const double* phi, double* r) const override;
+  std::vector<int> folds() const override;
+  std::unique_ptr<GapProblem> simulated(const double* theta, int candidate, const double* phi,
+                                        std::mt19937_64& rng) const override;
+  GapMetrics metrics(const double* theta, int candidate, const double* phi) const override;
+
+  std::vector<double> predict(const double* theta, int candidate, const double* phi) const;
+  double reference() const { return reference_; }
+
+ private:
+  StiffnessEstimatesGapProblem(std::vector<ConditionPoint> points, std::string unit, double reference)
+      : points_(std::move(points)), unit_(std::move(unit)), reference_(reference) {}
+  std::vector<ConditionPoint> points_;
+  std::string unit_;
+  double reference_ = 1.0;  // theta = 1 is this stiffness (the first estimate)
+};
+
+}  // namespace mozzi::core::gap

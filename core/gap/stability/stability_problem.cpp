@@ -1,0 +1,330 @@
+#include "core/gap/stability/stability_problem.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "core/common/text.h"
+#include "core/stability/mode_tracking.h"
+
+namespace mozzi::core::gap {
+
+namespace {
+constexpr double kTwoPi = 6.28318530717958647692;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string pointLabel(const ModeFrequency& m) {
+  return m.mode + " " + formatNumber(m.speed, 4) + " m/s";
+}
+}  // namespace
+
+StabilityGapProblem::StabilityGapProblem(StabilityGapModel model, std::vector<ModeFrequency> modes)
+    : model_(std::move(model)), modes_(std::move(modes)) {
+  std::set<double> speeds;
+  for (const auto& m : modes_) speeds.insert(m.speed);
+  speeds_.assign(speeds.begin(), speeds.end());
+  const double lo = speeds_.front(), hi = speeds_.back();
+  const int bins = std::max(1, model_.speedFolds);
+  for (const auto& m : modes_) {
+    // Equal-width speed ranges: each fold holds out one range of speeds.
+    int fold = hi > lo ? static_cast<int>(bins * (m.speed - lo) / (hi - lo)) : 0;
+    fold = std::min(fold, bins - 1);
+    points_.push_back({pointLabel(m), m.speed, m.frequencyHz, m.sigmaHz, fold});
+  }
+}
+
+Result<std::unique_ptr<StabilityGapProblem>> StabilityGapProblem::create(StabilityGapModel model,
+                                                                         std::vector<ModeFrequency> measured) {
+  const char* where = "stability gap problem";
+  if (measured.empty()) return makeError(ErrorCode::InvalidArgument, "no measured mode frequencies", where);
+  if (!(model.trailRelSigma > 0.0) || !std::isfinite(model.trailRelSigma))
+    return makeError(ErrorCode::InvalidArgument, "the trail uncertainty must be positive", where);
+  if (!(model.trackingStep > 0.0)) return makeError(ErrorCode::InvalidArgument, "tracking step must be > 0", where);
+  for (const auto& m : measured) {
+    if (!(m.speed > 0.0) || !(m.frequencyHz > 0.0) || !(m.sigmaHz > 0.0) || !std::isfinite(m.speed) ||
+        !std::isfinite(m.frequencyHz) || !std::isfinite(m.sigmaHz))
+      return makeError(ErrorCode::InvalidArgument, "speed, frequency and uncertainty must be positive", pointLabel(m));
+    for (const auto& o : measured)
+      if (&o != &m && o.mode == m.mode && o.speed == m.speed)
+        return makeError(ErrorCode::InvalidArgument, "mode measured twice at one speed", pointLabel(m));
+  }
+  auto problem = std::unique_ptr<StabilityGapProblem>(new StabilityGapProblem(std::move(model), std::move(measured)));
+  const double theta = 1.0;
+  const auto pred = problem->predict(&theta, -1, nullptr);
+  for (std::size_t j = 0; j < pred.size(); ++j)
+    if (!std::isfinite(pred[j])) {
+      auto sys = problem->system(&theta, -1, nullptr);
+      return makeError(ErrorCode::InvalidArgument,
+                       sys ? "the nominal model has no oscillating mode of that name at that speed"
+                           : "the nominal model cannot be built: " + sys.error().describe(),
+                       problem->points_[j].label);
+    }
+  return problem;
+}
+
+std::vector<std::string> StabilityGapProblem::effectNames() const {
+  if (model_.vehicle == StabilityVehicle::Motorcycle) return {"fork_bending", "tyre_relaxation"};
+  return {"fork_bending", "fork_torsion"};
+}
+
+std::vector<Parameter> StabilityGapProblem::calibrationParameters() const {
+  return {{"trail_scale", "", 1.0, 0.7, 1.3, model_.trailRelSigma}};
+}
+
+std::vector<Candidate> StabilityGapProblem::candidates() const {
+  std::vector<Candidate> out;
+  for (const auto& name : effectNames()) {
+    if (name == "tyre_relaxation")
+      out.push_back({name, {"front and rear tyre"}, {{"sigma_scale", "", 1.0, 0.2, 5.0, 0.0}}});
+    else
+      out.push_back({name, {"front fork"}, {{"compliance_ratio", "", 0.0, 0.0, 5.0, 0.0}}});
+  }
+  return out;
+}
+
+Result<stability::StabilitySystem> StabilityGapProblem::system(const double* theta, int candidate,
+                                                               const double* phi) const {
+  const auto names = effectNames();
+  const std::string effect =
+      candidate >= 0 && candidate < static_cast<int>(names.size()) ? names[static_cast<std::size_t>(candidate)] : "";
+  if (candidate >= static_cast<int>(names.size()))
+    return makeError(ErrorCode::InvalidArgument, "no such candidate", "stability gap problem");
+  const double ratio = effect.empty() ? 0.0 : phi[0];
+  if (model_.vehicle == StabilityVehicle::Motorcycle) {
+    auto p = model_.motorcycle;
+    p.t *= theta[0];
+    std::optional<stability::LumpedForkModel> fork;
+    if (effect == "fork_bending" && ratio > 0.0) {
+      fork = model_.motorcycleFork;
+      fork->stiffness /= ratio;           // k = k_ref / phi
+      fork->damping /= std::sqrt(ratio);  // c = 2 zeta sqrt(k J): same zeta
+    }
+    if (effect == "tyre_relaxation") p.sigma *= ratio;
+    auto m = stability::MotorcycleModel::build(p, fork);
+    if (!m) return m.error();
+    return m->system();
+  }
+  auto p = model_.bicycle;
+  p.c *= theta[0];
+  Result<stability::BicycleModel> m = makeError(ErrorCode::InvalidArgument, "unset");
+  if (effect == "fork_bending" && ratio > 0.0) {
+    auto f = model_.bicycleBending;
+    f.stiffness /= ratio;
+    f.damping /= std::sqrt(ratio);
+    m = stability::forkBendingModel(p, f);
+  } else if (effect == "fork_torsion" && ratio > 0.0) {
+    auto f = model_.bicycleTorsion;
+    f.stiffness /= ratio;
+    f.damping /= std::sqrt(ratio);
+    m = stability::forkTorsionModel(p, f);
+  } else {
+    m = stability::benchmarkModel(p);
+  }
+  if (!m) return m.error();
+  return stability::bicycleSystem(*m);
+}
+
+std::vector<double> StabilityGapProblem::predict(const double* theta, int candidate, const double* phi) const {
+  std::vector<double> out(modes_.size(), kNaN);
+  auto sys = system(theta, candidate, phi);
+  if (!sys) return out;
+  auto sweep = stability::sweepSpeeds(*sys, speeds_, model_.trackingStep);
+  if (!sweep) return out;
+  for (std::size_t j = 0; j < modes_.size(); ++j) {
+    const auto it = std::lower_bound(speeds_.begin(), speeds_.end(), modes_[j].speed);
+    const auto& pt = sweep->points[static_cast<std::size_t>(it - speeds_.begin())];
+    for (const auto& r : pt.roots)
+      if (r.name == modes_[j].mode && r.lambda.imag() > 0.0) {
+        out[j] = r.lambda.imag() / kTwoPi;
+        break;
+      }
+  }
+  return out;
+}
+
+bool StabilityGapProblem::residuals(const double* theta, int candidate, const double* phi, double* r) const {
+  return whitenedResiduals(points_, predict(theta, candidate, phi), r);
+}
+
+std::vector<int> StabilityGapProblem::folds() const {
+  std::vector<int> f;
+  for (const auto& p : points_) f.push_back(p.fold);
+  return f;
+}
+
+std::unique_ptr<GapProblem> StabilityGapProblem::simulated(const double* theta, int candidate, const double* phi,
+                                                           std::mt19937_64& rng) const {
+  const auto sim = simulatedPoints(points_, predict(theta, candidate, phi), rng);
+  auto modes = modes_;
+  for (std::size_t j = 0; j < modes.size(); ++j) modes[j].frequencyHz = sim[j].measured;
+  return std::unique_ptr<GapProblem>(new StabilityGapProblem(model_, std::move(modes)));
+}
+
+GapMetrics StabilityGapProblem::metrics(const double* theta, int candidate, const double* phi) const {
+  std::vector<std::vector<std::pair<std::string, double>>> extra;
+  for (const auto& m : modes_) extra.push_back({{"speed_m_s", m.speed}});
+  return conditionMetrics(points_, predict(theta, candidate, phi), "frequency_residual", extra);
+}
+
+std::vector<OverlayCurve> StabilityGapProblem::overlay(const double* theta, int candidate, const double* phi) const {
+  const auto pred = predict(theta, candidate, phi);
+  std::vector<OverlayCurve> curves;
+  for (std::size_t j = 0; j < modes_.size(); ++j) {
+    auto it =
+        std::find_if(curves.begin(), curves.end(), [&](const OverlayCurve& c) { return c.label == modes_[j].mode; });
+    if (it == curves.end()) {
+      curves.push_back({modes_[j].mode, "Speed [m/s]", "Frequency [Hz]", false, {}, {}, {}});
+      it = curves.end() - 1;
+    }
+    it->x.push_back(modes_[j].speed);
+    it->measured.push_back(modes_[j].frequencyHz);
+    it->predicted.push_back(pred[j]);
+  }
+  return curves;
+}
+
+// ---- files ---------------------------------------------------------------------
+
+namespace {
+using Json = nlohmann::json;
+
+Result<double> optionalNumber(const Json& j, const char* key, double fallback, const std::string& where) {
+  if (!j.contains(key)) return fallback;
+  if (!j[key].is_number() || !std::isfinite(j[key].get<double>()))
+    return makeError(ErrorCode::ParseError, std::string("\"") + key + "\" must be a finite number", where);
+  return j[key].get<double>();
+}
+}  // namespace
+
+Result<StabilityGapModel> parseStabilityGapModel(const std::string& jsonText, const std::string& source,
+                                                 const std::string& baseDir) {
+  Json j = Json::parse(jsonText, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) return makeError(ErrorCode::ParseError, "not a JSON object", source);
+  if (!j.contains("schema") || !j["schema"].is_string() || j["schema"].get<std::string>() != "mozzi-stability-gap/1")
+    return makeError(ErrorCode::ParseError, "\"schema\" must be \"mozzi-stability-gap/1\"", source);
+  if (!j.contains("vehicle") || !j["vehicle"].is_string())
+    return makeError(ErrorCode::ParseError, "\"vehicle\" must be \"motorcycle\" or \"bicycle\"", source);
+  const std::string vehicle = j["vehicle"].get<std::string>();
+  StabilityGapModel m;
+  std::string paramPath;
+  if (j.contains("parameters")) {
+    if (!j["parameters"].is_string())
+      return makeError(ErrorCode::ParseError, "\"parameters\" must be a file path", source);
+    paramPath = j["parameters"].get<std::string>();
+    if (!paramPath.empty() && paramPath[0] != '/' && !baseDir.empty()) paramPath = baseDir + "/" + paramPath;
+  }
+  if (vehicle == "motorcycle") {
+    m.vehicle = StabilityVehicle::Motorcycle;
+    if (paramPath.empty())
+      return makeError(ErrorCode::ParseError, "a motorcycle needs \"parameters\" (Sharp 1971 CSV)", source);
+    auto p = stability::loadSharpParameters(paramPath);
+    if (!p) return p.error();
+    m.motorcycle = *p;
+    int forkModel = 1;
+    if (j.contains("fork_model")) {
+      if (!j["fork_model"].is_number_integer())
+        return makeError(ErrorCode::ParseError, "\"fork_model\" must be 1, 2 or 3 (thesis Table 12)", source);
+      forkModel = j["fork_model"].get<int>();
+    }
+    auto fork = stability::thesisLumpedForkModel(forkModel);
+    if (!fork) return makeError(fork.error().code, fork.error().message, source + ": fork_model");
+    m.motorcycleFork = *fork;
+    m.label = "motorcycle (Sharp 1971), fork bending as thesis Table 12 model " + std::to_string(forkModel);
+  } else if (vehicle == "bicycle") {
+    m.vehicle = StabilityVehicle::Bicycle;
+    if (paramPath.empty()) {
+      m.bicycle = stability::meijaard2007Parameters();
+    } else {
+      auto p = stability::loadBenchmarkParameters(paramPath);
+      if (!p) return p.error();
+      m.bicycle = *p;
+    }
+    m.bicycleBending = stability::thesisSteelForkBending();
+    m.bicycleTorsion = stability::thesisSteelForkTorsion();
+    if (j.contains("fork_bending")) {
+      const Json& b = j["fork_bending"];
+      const std::string w = source + ": fork_bending";
+      if (!b.is_object()) return makeError(ErrorCode::ParseError, "must be an object", w);
+      auto k = optionalNumber(b, "stiffness_n_m_per_rad", m.bicycleBending.stiffness, w);
+      auto c = optionalNumber(b, "damping_n_m_s_per_rad", m.bicycleBending.damping, w);
+      auto h = optionalNumber(b, "h_w_m", m.bicycleBending.hW, w);
+      for (const auto* r : {&k, &c, &h})
+        if (!*r) return r->error();
+      m.bicycleBending = {*k, *c, *h};
+    }
+    if (j.contains("fork_torsion")) {
+      const Json& b = j["fork_torsion"];
+      const std::string w = source + ": fork_torsion";
+      if (!b.is_object()) return makeError(ErrorCode::ParseError, "must be an object", w);
+      auto k = optionalNumber(b, "stiffness_n_m_per_rad", m.bicycleTorsion.stiffness, w);
+      auto c = optionalNumber(b, "damping_n_m_s_per_rad", m.bicycleTorsion.damping, w);
+      for (const auto* r : {&k, &c})
+        if (!*r) return r->error();
+      m.bicycleTorsion = {*k, *c, m.bicycleTorsion.axisOffset};
+    }
+    if (!(m.bicycleBending.stiffness > 0.0) || !(m.bicycleTorsion.stiffness > 0.0))
+      return makeError(ErrorCode::ParseError, "reference fork stiffnesses must be positive", source);
+    m.label = "benchmark bicycle (Meijaard et al. 2007), fork joints of thesis appendix 3";
+  } else {
+    return makeError(ErrorCode::ParseError, "\"vehicle\" must be \"motorcycle\" or \"bicycle\", not '" + vehicle + "'",
+                     source);
+  }
+  auto sigma = optionalNumber(j, "trail_rel_sigma", m.trailRelSigma, source);
+  if (!sigma) return sigma.error();
+  m.trailRelSigma = *sigma;
+  if (j.contains("speed_folds")) {
+    if (!j["speed_folds"].is_number_integer() || j["speed_folds"].get<int>() < 1 || j["speed_folds"].get<int>() > 50)
+      return makeError(ErrorCode::ParseError, "\"speed_folds\" must be an integer from 1 to 50", source);
+    m.speedFolds = j["speed_folds"].get<int>();
+  }
+  if (j.contains("label") && j["label"].is_string()) m.label = j["label"].get<std::string>();
+  return m;
+}
+
+Result<std::vector<ModeFrequency>> parseModeFrequencyCsv(const std::string& csvText, const std::string& source) {
+  auto t = readNumericCsv(csvText, source, {"speed_m_s", "mode", "frequency_hz", "uncertainty_hz"}, {"mode"});
+  if (!t) return t.error();
+  const int cs = t->column("speed_m_s"), cf = t->column("frequency_hz"), cu = t->column("uncertainty_hz");
+  std::vector<ModeFrequency> out;
+  for (std::size_t i = 0; i < t->rows.size(); ++i) {
+    const auto& r = t->rows[i];
+    const std::string where = source + ":" + std::to_string(t->lines[i]);
+    ModeFrequency m{t->text[i][0], r[cs], r[cf], r[cu]};
+    for (const auto& [v, name] :
+         {std::pair{m.speed, "speed_m_s"}, {m.frequencyHz, "frequency_hz"}, {m.sigmaHz, "uncertainty_hz"}})
+      if (!(v > 0.0)) return makeError(ErrorCode::ParseError, std::string(name) + " must be positive", where);
+    for (const auto& o : out)
+      if (o.mode == m.mode && o.speed == m.speed)
+        return makeError(ErrorCode::ParseError, "mode measured twice at one speed", where);
+    out.push_back(m);
+  }
+  return out;
+}
+
+Result<std::unique_ptr<GapProblem>> loadStabilityGapProblem(const std::string& modelPath,
+                                                            const std::string& measuredPath,
+                                                            const StabilityLoadOptions& options) {
+  auto text = readTextFile(modelPath);
+  if (!text) return text.error();
+  const auto slash = modelPath.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? std::string(".") : modelPath.substr(0, slash);
+  auto model = parseStabilityGapModel(*text, modelPath, dir);
+  if (!model) return model.error();
+  auto csv = readTextFile(measuredPath);
+  if (!csv) return csv.error();
+  auto modes = parseModeFrequencyCsv(*csv, measuredPath);
+  if (!modes) return modes.error();
+  std::vector<ModeFrequency> kept;
+  for (const auto& m : *modes)
+    if (m.speed >= options.minSpeed && m.speed <= options.maxSpeed) kept.push_back(m);
+  if (kept.empty())
+    return makeError(ErrorCode::InvalidArgument, "no measured speed inside the selected range", measuredPath);
+  auto problem = StabilityGapProblem::create(std::move(*model), std::move(kept));
+  if (!problem) return problem.error();
+  return std::unique_ptr<GapProblem>(std::move(*problem));
+}
+
+}  // namespace mozzi::core::gap
