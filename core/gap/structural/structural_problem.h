@@ -1,0 +1,85 @@
+#pragma once
+// The structural sim-to-real gap problems (shared/GAP.md, issue 10):
+//  - measured FRFs (UFF 58, any FRF type) against a structural model, and
+//  - identified modes (frequency, damping, shapes; UFF 55) against the model,
+// with the structural catalogue of candidate effects:
+//   mass_loading        added mass dm [kg] at a measured DOF
+//   boundary_stiffness  a grounded spring of the model scaled by s
+//   element_stiffness   a spring between two DOFs scaled by s
+//   residual_mode       an out-of-band mode loading DOF d: upper (compliance U
+//                       [m/N]) and lower (L [1/kg]) residual terms along the
+//                       static deflection shape under a load at d (FRFs only:
+//                       an out-of-band mode moves no in-band mode)
+//   hysteretic_damping  structural damping i eta K added (loss factor eta,
+//                       equal on every mode; with a "damping" calibration
+//                       parameter the fit can trade viscous for structural)
+//   exponential_window  every pole's decay + a = 1/tau [1/s]: the FRF at
+//                       s = i omega + a
+//   sensor_misalignment response channel at o reads cos(a) x_o + sin(a) x_p,
+//                       p another DOF of the same node and kind
+//
+// Receptance of the augmented model, in the generalised coordinates of
+// model_file.h (x = T q): H(s) = T (K_q (1 + i eta) + s C_q + s^2 M_q)^-1 T^T,
+// evaluated through the undamped modes of (K_q, M_q); mobility and accelerance
+// multiply by s and s^2.
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/common/frf_matrix.h"
+#include "core/common/result.h"
+#include "core/gap/gap_problem.h"
+#include "core/gap/structural/model_file.h"
+#include "core/io/uff/uff.h"
+
+namespace mozzi::core::gap::structural {
+
+struct StructuralOptions {
+  // Only lines in [bandLowHz, bandHighHz] are fitted (FRF data) / only modes in
+  // the band are paired (mode data).
+  double bandLowHz = 0.0;
+  double bandHighHz = std::numeric_limits<double>::infinity();
+  // Bands of the "where" table; empty = octave bands over the data.
+  std::vector<std::pair<double, double>> reportBands;
+  // FRF noise: relative standard deviation per real/imaginary component,
+  // sigma = |H_measured| max(relativeFloor, sqrt(1 - g^2) / (g sqrt(2 n_avg)))
+  // (the normalised random error of an H1 estimate from n_avg averages with
+  // coherence g, Bendat & Piersol, "Random data", eq. 9.65). Without coherence
+  // the floor alone.
+  double relativeFloor = 0.01;
+  int averages = 10;
+  // Mode data (GAP.md step 0): relative sigma floors of frequency and damping;
+  // shape components relative to the largest measured component.
+  double frequencySigmaFloor = 0.002;
+  double dampingSigmaFloor = 0.15;
+  double shapeSigma = 0.03;
+  double macPairing = 0.6;  // MAC below this: unpaired
+  // Held-out groups: the fitted lines (or modes) are split into this many
+  // contiguous frequency bands.
+  int folds = 4;
+};
+
+// The effect enumeration behind Candidate::effect.
+const std::vector<std::string>& structuralEffectNames();
+
+Result<std::unique_ptr<GapProblem>> makeFrfProblem(const StructuralModel& model, const FrfMatrix& measured,
+                                                   const StructuralOptions& options = {});
+
+// Measured modes: ModalData as read from UFF 55 (any normalisation; shapes are
+// compared through MAC and a least-squares scale factor).
+Result<std::unique_ptr<GapProblem>> makeModesProblem(const StructuralModel& model, const io::uff::ModalData& measured,
+                                                     const StructuralOptions& options = {});
+
+// Hungarian assignment (minimum total cost) of rows to columns of a cost
+// matrix; result[row] = column or -1 (more rows than columns).
+std::vector<int> hungarianAssignment(const Matrix& cost);
+
+// Pairs measured modes (columns of `measured`) with model modes (columns of
+// `model`) on the same DOFs by Hungarian assignment on 1 - MAC; a pair with
+// MAC below `minMac` is left unpaired. result[model mode] = measured mode or -1.
+std::vector<int> pairModesByMac(const ComplexMatrix& model, const ComplexMatrix& measured, double minMac);
+
+}  // namespace mozzi::core::gap::structural

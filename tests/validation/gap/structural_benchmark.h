@@ -1,0 +1,257 @@
+#pragma once
+// Benchmark generator for the structural sim-to-real gap (issue 10, GAP.md
+// "Testing it honestly"): three lumped structures of thesis magnitude, each
+// effect of the catalogue applied to a hidden truth, measurement noise, and
+// FRFs computed INDEPENDENTLY of core/gap (direct inversion of
+// K' + s C' + s^2 M' per line, no modal expansion), so a wrong modal sum or a
+// wrong effect implementation in the problem shows up as a misfit.
+//
+// Structures (masses and stiffnesses of the thesis' components: fork legs of
+// 1-2 kg on 1e5-1e6 N/m, a 2.5 kg wheel on a 1.5e5 N/m tyre, frame nodes of
+// 2-4 kg, a swing arm with a 1e4 N/m shock):
+//  - fork_wheel: crown, two leg stations and the axle, X (fore-aft) and Z
+//    (vertical) at each; steering-head clamp as grounded springs, tyre spring.
+//  - frame: five nodes of a closed loop, X and Y each, two engine mounts
+//    grounded.
+//  - swing_arm: pivot, mid-arm and axle with Z and X, pivot bearing grounded,
+//    shock between mid-arm Z and ground.
+// Each has Rayleigh damping (viscous C = alpha M + beta K, zeta 1-3%) and two
+// calibration parameters: a damping scale and a stiffness group with a 5% prior.
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/common/dof.h"
+#include "core/common/frf_matrix.h"
+#include "core/gap/structural/model_file.h"
+
+namespace mozzi::gap_bench {
+
+using core::Complex;
+using core::ComplexMatrix;
+using core::Matrix;
+using core::Vector;
+using core::gap::structural::StructuralModel;
+
+struct SpringSpec {
+  std::string name;
+  std::string a, b;  // labels; b = "ground"
+  double k;
+};
+
+struct Structure {
+  std::string name;
+  StructuralModel model;
+  std::vector<std::string> references;  // hammer DOFs
+  double bandLowHz = 0, bandHighHz = 0;
+  std::string calibratedGroup;  // springs the stiffness calibration parameter scales
+};
+
+inline StructuralModel buildModel(const std::string& name, const std::vector<std::string>& labels,
+                                  const std::vector<double>& masses, const std::vector<SpringSpec>& springs,
+                                  double alpha, double beta, const std::vector<std::string>& calibrated) {
+  StructuralModel m;
+  m.name = name;
+  const int n = static_cast<int>(labels.size());
+  for (const auto& l : labels) {
+    m.dofs.push_back(*core::parseDof(l));
+    m.labels.push_back(l);
+  }
+  m.t = Matrix::Identity(n, n);
+  m.m = Matrix::Zero(n, n);
+  for (int i = 0; i < n; ++i) m.m(i, i) = masses[static_cast<std::size_t>(i)];
+  m.k = Matrix::Zero(n, n);
+  for (const auto& s : springs) {
+    core::gap::structural::Spring sp;
+    sp.name = s.name;
+    sp.a = m.findDof(*core::parseDof(s.a));
+    sp.b = s.b == "ground" ? -1 : m.findDof(*core::parseDof(s.b));
+    sp.stiffness = s.k;
+    m.k(sp.a, sp.a) += s.k;
+    if (sp.b >= 0) {
+      m.k(sp.b, sp.b) += s.k;
+      m.k(sp.a, sp.b) -= s.k;
+      m.k(sp.b, sp.a) -= s.k;
+    }
+    m.springs.push_back(sp);
+  }
+  m.c = alpha * m.m + beta * m.k;
+  // Damping is never known well: a scale on C from 0 (no viscous damping) to 5.
+  m.parameters.push_back({"damping_scale", {"damping"}, 1.0, 0.0, 5.0, 0.0});
+  // One stiffness group calibrated with a 5% prior (the model's own uncertainty).
+  m.parameters.push_back({"k_group", calibrated, 1.0, 0.5, 2.0, 0.05});
+  return m;
+}
+
+// Rayleigh coefficients giving zeta1 at f1 and zeta2 at f2.
+inline std::pair<double, double> rayleigh(double f1, double z1, double f2, double z2) {
+  const double w1 = 2 * M_PI * f1, w2 = 2 * M_PI * f2;
+  // zeta = alpha / (2 w) + beta w / 2
+  Eigen::Matrix2d a;
+  a << 1 / (2 * w1), w1 / 2, 1 / (2 * w2), w2 / 2;
+  const Eigen::Vector2d x = a.inverse() * Eigen::Vector2d(z1, z2);
+  return {x[0], x[1]};
+}
+
+inline Structure forkWheel() {
+  Structure s;
+  s.name = "fork_wheel";
+  const std::vector<std::string> l = {"1+X", "1+Z", "2+X", "2+Z", "3+X", "3+Z", "4+X", "4+Z"};
+  const std::vector<double> mass = {1.8, 1.8, 1.2, 1.2, 1.0, 1.0, 2.5, 2.5};
+  const std::vector<SpringSpec> sp = {{"head_x", "1+X", "ground", 6.0e5}, {"head_z", "1+Z", "ground", 2.0e6},
+                                      {"leg_x12", "1+X", "2+X", 4.0e5},   {"leg_x23", "2+X", "3+X", 3.5e5},
+                                      {"leg_x34", "3+X", "4+X", 3.0e5},   {"leg_z12", "1+Z", "2+Z", 1.5e6},
+                                      {"leg_z23", "2+Z", "3+Z", 1.4e6},   {"leg_z34", "3+Z", "4+Z", 1.2e6},
+                                      {"tyre", "4+Z", "ground", 1.5e5},   {"brace", "3+X", "3+Z", 8.0e4}};
+  const auto [al, be] = rayleigh(30, 0.02, 300, 0.015);
+  s.model = buildModel(s.name, l, mass, sp, al, be, {"leg_z12", "leg_z23", "leg_z34"});
+  s.references = {"4+X"};
+  s.bandLowHz = 5;
+  s.bandHighHz = 500;
+  s.calibratedGroup = "leg_z";
+  return s;
+}
+
+inline Structure frame() {
+  Structure s;
+  s.name = "frame";
+  const std::vector<std::string> l = {"1+X", "1+Y", "2+X", "2+Y", "3+X", "3+Y", "4+X", "4+Y", "5+X", "5+Y"};
+  const std::vector<double> mass = {3.0, 3.0, 2.0, 2.0, 4.0, 4.0, 2.5, 2.5, 2.0, 2.0};
+  const std::vector<SpringSpec> sp = {
+      {"mount_1x", "1+X", "ground", 8.0e5}, {"mount_1y", "1+Y", "ground", 8.0e5}, {"mount_3x", "3+X", "ground", 5.0e5},
+      {"mount_3y", "3+Y", "ground", 5.0e5}, {"tube_x12", "1+X", "2+X", 6.0e5},    {"tube_x23", "2+X", "3+X", 4.0e5},
+      {"tube_x34", "3+X", "4+X", 5.0e5},    {"tube_x45", "4+X", "5+X", 3.0e5},    {"tube_x51", "5+X", "1+X", 7.0e5},
+      {"tube_y12", "1+Y", "2+Y", 2.0e5},    {"tube_y23", "2+Y", "3+Y", 2.5e5},    {"tube_y34", "3+Y", "4+Y", 1.8e5},
+      {"tube_y45", "4+Y", "5+Y", 2.2e5},    {"tube_y51", "5+Y", "1+Y", 3.0e5},    {"gusset", "4+X", "4+Y", 6.0e4}};
+  const auto [al, be] = rayleigh(40, 0.015, 300, 0.02);
+  s.model = buildModel(s.name, l, mass, sp, al, be, {"tube_y12", "tube_y23", "tube_y34", "tube_y45", "tube_y51"});
+  s.references = {"2+X", "4+Y"};
+  s.bandLowHz = 10;
+  s.bandHighHz = 450;
+  s.calibratedGroup = "tube_y";
+  return s;
+}
+
+inline Structure swingArm() {
+  Structure s;
+  s.name = "swing_arm";
+  const std::vector<std::string> l = {"1+X", "1+Z", "2+X", "2+Z", "3+X", "3+Z"};
+  const std::vector<double> mass = {1.5, 1.5, 2.0, 2.0, 3.0, 3.0};
+  const std::vector<SpringSpec> sp = {{"pivot_x", "1+X", "ground", 1.2e6}, {"pivot_z", "1+Z", "ground", 9.0e5},
+                                      {"arm_x12", "1+X", "2+X", 8.0e5},    {"arm_x23", "2+X", "3+X", 6.0e5},
+                                      {"arm_z12", "1+Z", "2+Z", 2.5e5},    {"arm_z23", "2+Z", "3+Z", 1.8e5},
+                                      {"shock", "2+Z", "ground", 4.0e4},   {"chain", "3+X", "3+Z", 5.0e4}};
+  const auto [al, be] = rayleigh(20, 0.025, 250, 0.015);
+  s.model = buildModel(s.name, l, mass, sp, al, be, {"arm_x12", "arm_x23"});
+  s.references = {"3+Z"};
+  s.bandLowHz = 4;
+  s.bandHighHz = 400;
+  s.calibratedGroup = "arm_x";
+  return s;
+}
+
+inline std::vector<Structure> structures() {
+  return {forkWheel(), frame(), swingArm()};
+}
+
+// ---------------------------------------------------------------------------
+// Truth: the nominal model with calibration offsets and at most one effect.
+
+struct Truth {
+  double dampingScale = 1.0;  // true damping relative to the model
+  double groupScale = 1.0;    // true stiffness of the calibrated group
+  Matrix dm;                  // added mass matrix (n x n), zero when none
+  Matrix dk;                  // stiffness change (n x n)
+  double eta = 0.0;           // structural damping i eta K
+  double decay = 0.0;         // exponential window 1/tau
+  int misDof = -1, misOther = -1;
+  double misAngle = 0.0;
+  // residual term H += (upper + lower / s^2) u u^T
+  Vector residualShape;
+  double residualModeHz = 0.0, residualModalConstant = 0.0;  // an out-of-band mode A u u^T / (w_x^2 + s^2)
+  // Out-of-catalogue: a tuned absorber (mass on a spring, own damper) at one DOF.
+  int absorberDof = -1;
+  double absorberMass = 0.0, absorberHz = 0.0, absorberZeta = 0.0;
+
+  explicit Truth(int n = 0) : dm(Matrix::Zero(n, n)), dk(Matrix::Zero(n, n)) {}
+};
+
+// Receptance of the truth at s, all DOFs: the absorber adds one coordinate
+// and is condensed out exactly (dynamic stiffness of a base-excited SDOF).
+inline ComplexMatrix truthReceptance(const StructuralModel& m, const Truth& t, Complex s) {
+  const Eigen::Index n = m.m.rows();
+  Matrix kGroup = Matrix::Zero(n, n);
+  const auto& params = m.parameters;
+  for (const auto& sp : m.springs) {
+    if (std::find(params[1].actsOn.begin(), params[1].actsOn.end(), sp.name) == params[1].actsOn.end()) continue;
+    kGroup(sp.a, sp.a) += sp.stiffness;
+    if (sp.b >= 0) {
+      kGroup(sp.b, sp.b) += sp.stiffness;
+      kGroup(sp.a, sp.b) -= sp.stiffness;
+      kGroup(sp.b, sp.a) -= sp.stiffness;
+    }
+  }
+  const Matrix k = m.k + (t.groupScale - 1.0) * kGroup + t.dk;
+  const Matrix mm = m.m + t.dm;
+  ComplexMatrix z =
+      k.cast<Complex>() * Complex(1.0, t.eta) + s * (t.dampingScale * m.c).cast<Complex>() + s * s * mm.cast<Complex>();
+  if (t.absorberDof >= 0) {
+    const double wa = 2 * M_PI * t.absorberHz;
+    const double ka = t.absorberMass * wa * wa, ca = 2 * t.absorberZeta * t.absorberMass * wa;
+    const Complex kc = ka + s * ca;
+    // Force on the host from a base-driven SDOF: kc - kc^2 / (kc + s^2 ma).
+    z(t.absorberDof, t.absorberDof) += kc - kc * kc / (kc + s * s * t.absorberMass);
+  }
+  ComplexMatrix h = z.partialPivLu().inverse();
+  if (t.residualShape.size() == n) {
+    const double wx = 2 * M_PI * t.residualModeHz;
+    const Complex term = t.residualModalConstant / (wx * wx + s * s);
+    h += term * (t.residualShape * t.residualShape.transpose()).cast<Complex>();
+  }
+  return h;
+}
+
+struct Measurement {
+  std::vector<std::string> responses;  // labels
+  std::vector<std::string> references;
+  double lowHz = 0, highHz = 0;
+  int lines = 0;
+  double relativeNoise = 0.01;  // per real/imaginary component, relative to |H|
+};
+
+// Noisy accelerances of the truth as a FrfMatrix (what the diagnosis gets).
+inline core::FrfMatrix measure(const StructuralModel& m, const Truth& t, const Measurement& spec,
+                               std::mt19937_64& rng) {
+  core::FrfMatrix frf;
+  frf.type = core::FrfType::Accelerance;
+  for (const auto& r : spec.responses) frf.responses.push_back(*core::parseDof(r));
+  for (const auto& r : spec.references) frf.references.push_back(*core::parseDof(r));
+  frf.frequencyHz = Vector::LinSpaced(spec.lines, spec.lowHz, spec.highHz);
+  const auto no = static_cast<Eigen::Index>(spec.responses.size());
+  frf.h.assign(spec.references.size(), ComplexMatrix(spec.lines, no));
+  std::normal_distribution<double> nd(0.0, 1.0);
+  for (int k = 0; k < spec.lines; ++k) {
+    const double w = 2 * M_PI * frf.frequencyHz[k];
+    // The exponential window multiplies the impulse response by exp(-a t):
+    // the windowed spectrum is H(s) at s = i omega + a, and the accelerance
+    // impulse response is windowed, so the s^2 factor is taken at that s too.
+    const Complex s(t.decay, w);
+    ComplexMatrix h = truthReceptance(m, t, s) * (s * s);
+    for (std::size_t i = 0; i < spec.references.size(); ++i) {
+      const int ri = m.findDof(frf.references[i]);
+      for (Eigen::Index o = 0; o < no; ++o) {
+        const int ro = m.findDof(frf.responses[static_cast<std::size_t>(o)]);
+        Complex v = h(ro, ri);
+        if (ro == t.misDof) v = std::cos(t.misAngle) * v + std::sin(t.misAngle) * h(t.misOther, ri);
+        const double sd = spec.relativeNoise * std::abs(v);
+        frf.h[i](k, o) = v + Complex(sd * nd(rng), sd * nd(rng));
+      }
+    }
+  }
+  return frf;
+}
+
+}  // namespace mozzi::gap_bench
