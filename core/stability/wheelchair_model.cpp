@@ -1,5 +1,6 @@
 #include "core/stability/wheelchair_model.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -268,34 +269,67 @@ Manoeuvre steadyTurningManoeuvre(double speed, double torque, double rampTime, d
   return m;
 }
 
-Result<SlalomSummary> summariseSlalom(const std::vector<WheelchairState>& h, double from) {
+Result<SlalomSummary> summariseSlalom(const std::vector<WheelchairState>& h, double from, double f) {
+  if (!std::isfinite(f) || f <= 0.0)
+    return makeError(ErrorCode::InvalidArgument, "slalom frequency must be positive", kWhere);
   SlalomSummary s;
-  // Linear drift of y removed first (least squares y = c0 + c1 t).
-  double st = 0, sy = 0, stt = 0, sty = 0;
-  int m = 0;
-  for (const auto& x : h)
-    if (x.t >= from) st += x.t, sy += x.y, stt += x.t * x.t, sty += x.t * x.y, ++m;
-  const double den = m * stt - st * st;
-  const double c1 = m >= 3 && den > 0 ? (m * sty - st * sy) / den : 0.0;
-  const double c0 = m > 0 ? (sy - c1 * st) / m : 0.0;
+  // The drift of y (a heading offset left by the start transient) is removed
+  // as c0 + c1 t fitted together with the slalom's fundamental
+  // a cos(wt) + b sin(wt): a straight line alone over a whole number of
+  // cycles correlates with the sine and takes a share of it.
+  // Whole cycles only, so that the slip means are not biased by a part cycle.
+  const double cycles = h.empty() ? 0.0 : std::floor((h.back().t - from) * f + 1e-9);
+  if (cycles < 1.0)
+    return makeError(ErrorCode::InvalidArgument, "less than one slalom cycle after the start time", kWhere);
+  const double to = from + cycles / f;
+  std::vector<std::size_t> idx;
+  for (std::size_t i = 0; i < h.size(); ++i)
+    if (h[i].t >= from && h[i].t < to - 1e-9) idx.push_back(i);
+  if (idx.size() < 5) return makeError(ErrorCode::InvalidArgument, "fewer than 5 samples after the start time", kWhere);
+  const double w = 2.0 * kPi * f;
+  Eigen::MatrixXd X(static_cast<Eigen::Index>(idx.size()), 4);
+  Eigen::VectorXd Y(X.rows());
+  for (Eigen::Index k = 0; k < X.rows(); ++k) {
+    const auto& x = h[idx[static_cast<std::size_t>(k)]];
+    X.row(k) << 1.0, x.t, std::cos(w * x.t), std::sin(w * x.t);
+    Y[k] = x.y;
+  }
+  const Eigen::Vector4d c = X.colPivHouseholderQr().solve(Y);
+  const double c0 = c[0], c1 = c[1];
   double ymin = HUGE_VAL, ymax = -HUGE_VAL, rmin = HUGE_VAL, rmax = -HUGE_VAL, lmin = HUGE_VAL, lmax = -HUGE_VAL;
   double sr = 0, sl = 0;
   int n = 0;
-  for (const auto& x : h) {
-    if (x.t < from) continue;
+  for (const std::size_t i : idx) {
+    const auto& x = h[i];
     const double y = x.y - c0 - c1 * x.t;
     ymin = std::min(ymin, y), ymax = std::max(ymax, y);
     rmin = std::min(rmin, x.slipRight), rmax = std::max(rmax, x.slipRight);
     lmin = std::min(lmin, x.slipLeft), lmax = std::max(lmax, x.slipLeft);
     sr += x.slipRight, sl += x.slipLeft, ++n;
   }
-  if (n < 3) return makeError(ErrorCode::InvalidArgument, "fewer than 3 samples after the start time", kWhere);
   s.lateralAmplitude = 0.5 * (ymax - ymin);
   s.slipAmplitudeRight = 0.5 * (rmax - rmin);
   s.slipAmplitudeLeft = 0.5 * (lmax - lmin);
   s.slipMeanRight = sr / n;
   s.slipMeanLeft = sl / n;
   return s;
+}
+
+Result<SlalomRun> runSlalom(const WheelchairParameters& p, double speed, double torque, double f, double duration) {
+  if (!std::isfinite(f) || f <= 0.0)
+    return makeError(ErrorCode::InvalidArgument, "slalom frequency must be positive", kWhere);
+  if (!std::isfinite(duration) || f * duration < 3.0)
+    return makeError(ErrorCode::InvalidArgument,
+                     "the slalom needs at least 3 cycles (2 to settle, 1 to measure): raise the duration or frequency",
+                     kWhere);
+  SlalomRun run;
+  auto hist = simulate(p, slalomManoeuvre(speed, torque, f, duration));
+  if (!hist) return hist.error();
+  run.history = std::move(*hist);
+  auto sum = summariseSlalom(run.history, 2.0 / f, f);  // after two cycles of start transient
+  if (!sum) return sum.error();
+  run.summary = *sum;
+  return run;
 }
 
 Result<std::vector<SensitivityCase>> stiffnessSensitivity(const WheelchairParameters& p, WheelchairStiffness which,
@@ -314,15 +348,9 @@ Result<std::vector<SensitivityCase>> stiffnessSensitivity(const WheelchairParame
     auto st = steadyTurn(q, speed, turnTorque);
     if (!st) return st.error();
     c.steady = *st;
-    if (!std::isfinite(f) || f <= 0.0 || f * duration < 3.0)
-      return makeError(
-          ErrorCode::InvalidArgument,
-          "the slalom needs at least 3 cycles (2 to settle, 1 to measure): raise the duration or frequency", kWhere);
-    auto hist = simulate(q, slalomManoeuvre(speed, slalomTorque, f, duration));
-    if (!hist) return hist.error();
-    auto sum = summariseSlalom(*hist, 2.0 / f);  // after two cycles of start transient
-    if (!sum) return sum.error();
-    c.slalom = *sum;
+    auto slalom = runSlalom(q, speed, slalomTorque, f, duration);
+    if (!slalom) return slalom.error();
+    c.slalom = slalom->summary;
     out.push_back(c);
   }
   return out;

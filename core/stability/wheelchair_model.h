@@ -116,8 +116,20 @@ struct SlalomSummary {
   double slipAmplitudeRight = 0.0, slipAmplitudeLeft = 0.0;  // half peak-to-peak [rad]
   double slipMeanRight = 0.0, slipMeanLeft = 0.0;            // [rad]
 };
-// Over the samples with t >= fromTime.
-Result<SlalomSummary> summariseSlalom(const std::vector<WheelchairState>& history, double fromTime);
+// Over the whole cycles from fromTime on; frequencyHz is the slalom's (the lateral
+// drift is fitted together with its fundamental). Errors: frequency not
+// positive, less than one cycle or fewer than 5 samples.
+Result<SlalomSummary> summariseSlalom(const std::vector<WheelchairState>& history, double fromTime, double frequencyHz);
+
+// The slalom manoeuvre simulated and summarised after two cycles of start
+// transient. Errors: frequency not positive or fewer than 3 cycles in the
+// duration (2 to settle, 1 to measure), and those of simulate.
+struct SlalomRun {
+  std::vector<WheelchairState> history;
+  SlalomSummary summary;
+};
+Result<SlalomRun> runSlalom(const WheelchairParameters& p, double speed, double torqueAmplitude, double frequencyHz,
+                            double duration);
 
 // §7.3/§7.4: the rear cornering or aligning stiffness scaled by each factor
 // (thesis: 0.5, 1, 2), the other one held, at the same speed and torque input

@@ -187,8 +187,8 @@ TEST(WheelchairStiffnessStudy, MatchedPathSlipIsLateralForceOverCorneringStiffne
     EXPECT_NEAR(back->r, r, kExact * r);
     EXPECT_NEAR(back->slipRight, half->slipRight, kExact * std::abs(half->slipRight));
   }
-  // And through the time simulation (RK4; after 15 s the slowest mode, yaw
-  // ~0.1 s, has decayed far below the 1e-6 tolerance).
+  // And through the time simulation (RK4; after 15 s the slowest mode,
+  // time constant about I_z/(m u (b + k)) = 0.5 s, has decayed to e^-29).
   auto onPath = steadyTurnAtYawRate(p, kU, r);
   ASSERT_TRUE(onPath);
   auto h = simulate(p, steadyTurningManoeuvre(kU, onPath->differentialTorque, 0.5, 15.0));

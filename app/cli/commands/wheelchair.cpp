@@ -3,6 +3,7 @@
 // Options and output: docs/cli/tire.md.
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <nlohmann/json.hpp>
 #include <ostream>
 
@@ -106,18 +107,16 @@ int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, s
   }
   if (sub == "slalom") {
     if (!a->value("--torque")) torque = slalomTorque;  // slalom default 10 Nm
-    auto h = st::simulate(p, st::slalomManoeuvre(speed, torque, frequency, duration));
-    if (!h) {
-      err << "mozzi-cli wheelchair slalom: " << h.error().describe() << "\n";
+    auto run = st::runSlalom(p, speed, torque, frequency, duration);
+    if (!run) {
+      err << "mozzi-cli wheelchair slalom: " << run.error().describe() << "\n";
       return kExitFailure;
     }
-    auto s = st::summariseSlalom(*h, std::min(duration * 0.5, 2.0 / frequency));
-    if (!s) {
-      err << "mozzi-cli wheelchair slalom: " << s.error().describe() << "\n";
-      return kExitFailure;
-    }
+    const auto* h = &run->history;
+    const auto* s = &run->summary;
     if (auto file = a->value("--out")) {
       std::ofstream f(*file);
+      f << std::setprecision(12);
       if (!f) {
         err << "mozzi-cli wheelchair slalom: cannot write " << *file << "\n";
         return kExitFailure;
