@@ -60,7 +60,9 @@ std::string channelWhere(const TimeRecord& r, Eigen::Index c) {
          formatDof(ch.dof) + ")";
 }
 
-bool isRectangular(const WindowSpec& w) { return w.kind == WindowKind::Rectangular && w.exponentialTauS == 0.0; }
+bool isRectangular(const WindowSpec& w) {
+  return w.kind == WindowKind::Rectangular && w.exponentialTauS == 0.0;
+}
 }  // namespace
 
 Result<FrfType> responseFrfType(const TimeRecord& record, Eigen::Index referenceChannel) {
@@ -138,7 +140,9 @@ Workspace& workspace(Eigen::Index n, std::size_t spectraSize) {
 // Spectrum stride: a whole number of 64-byte lines (FFTW's SIMD alignment for
 // every spectrum) plus one, so that the spectra streamed side by side in
 // accumulate() do not sit at the same offset modulo 4 KiB (cache-set aliasing).
-Eigen::Index spectrumStride(Eigen::Index nf) { return (nf + 3) / 4 * 4 + 4; }
+Eigen::Index spectrumStride(Eigen::Index nf) {
+  return (nf + 3) / 4 * 4 + 4;
+}
 
 // dst = x (.* w), in cache-sized chunks so that the sum of squares, the
 // finiteness and zero-force check, reads the chunk back from L1. Returns
@@ -215,7 +219,8 @@ Result<SpectralAverager> SpectralAverager::create(const TimeRecord& layout, cons
     a.respWindow_ = std::move(*wx);
   }
   const Eigen::Index nf = a.fft_->lineCount();
-  a.frequencyHz_ = Vector::LinSpaced(nf, 0.0, static_cast<double>(nf - 1)) * (a.sampleRateHz_ / static_cast<double>(a.n_));
+  a.frequencyHz_ =
+      Vector::LinSpaced(nf, 0.0, static_cast<double>(nf - 1)) * (a.sampleRateHz_ / static_cast<double>(a.n_));
   const auto nr = static_cast<Eigen::Index>(a.references_.size());
   const auto no = static_cast<Eigen::Index>(a.responses_.size());
   for (Eigen::Index i = 0; i < nr; ++i) {
@@ -249,7 +254,8 @@ Result<void> SpectralAverager::add(const TimeRecord& hit) {
                      where);
   }
   if (hit.channelCount() != static_cast<Eigen::Index>(dofs_.size()) || hit.samples.cols() != hit.channelCount()) {
-    return makeError(ErrorCode::InvalidArgument, "channel layout differs from the first hit (mismatched lengths)", where);
+    return makeError(ErrorCode::InvalidArgument, "channel layout differs from the first hit (mismatched lengths)",
+                     where);
   }
   if (hit.sampleCount() != n_) {
     return makeError(ErrorCode::InvalidArgument,
@@ -262,10 +268,10 @@ Result<void> SpectralAverager::add(const TimeRecord& hit) {
   }
   for (std::size_t c = 0; c < dofs_.size(); ++c) {
     if (hit.channels[c].dof != dofs_[c]) {
-      return makeError(ErrorCode::InvalidArgument,
-                       "channel DOF " + formatDof(hit.channels[c].dof) + " differs from the first hit's " +
-                           formatDof(dofs_[c]),
-                       where + ", channel " + std::to_string(c));
+      return makeError(
+          ErrorCode::InvalidArgument,
+          "channel DOF " + formatDof(hit.channels[c].dof) + " differs from the first hit's " + formatDof(dofs_[c]),
+          where + ", channel " + std::to_string(c));
     }
   }
   // Stage 1: each channel windowed straight into the FFT input (one pass, the
@@ -294,8 +300,7 @@ Result<void> SpectralAverager::add(const TimeRecord& hit) {
                        where + ", " + channelWhere(hit, c));
     }
     if (isRef && !(sumSq > 0.0)) {
-      return makeError(ErrorCode::InvalidArgument,
-                       "force is zero (after the force window): no excitation to divide by",
+      return makeError(ErrorCode::InvalidArgument, "force is zero (after the force window): no excitation to divide by",
                        where + ", " + channelWhere(hit, c));
     }
     fft_->forward(ws.in.data(), ws.spectra.data() + static_cast<Eigen::Index>(j) * stride);
@@ -333,7 +338,9 @@ Vector esdScale(Eigen::Index nf, Eigen::Index n, double fs, int hits) {
   return s;
 }
 
-std::string hz(double f) { return formatNumber(f, 6) + " Hz"; }
+std::string hz(double f) {
+  return formatNumber(f, 6) + " Hz";
+}
 }  // namespace
 
 void SpectralAverager::reset() {
@@ -357,23 +364,29 @@ ComplexMatrix SpectralAverager::gfx() const {
   const auto no = static_cast<Eigen::Index>(responses_.size());
   if (hits_ == 0) return ComplexMatrix::Zero(autos().rows(), no);
   const Eigen::Index first = crossIndex(0, nr);  // reference 0 with response 0, responses follow
-  return esdScale(autos().rows(), n_, sampleRateHz_, hits_).cast<Complex>().asDiagonal() * cross().middleCols(first, no);
+  return esdScale(autos().rows(), n_, sampleRateHz_, hits_).cast<Complex>().asDiagonal() *
+         cross().middleCols(first, no);
+}
+
+void SpectralAverager::rawReferenceMatrix(Eigen::Index line, ComplexMatrix& g) const {
+  const auto nr = static_cast<Eigen::Index>(references_.size());
+  g.resize(nr, nr);
+  for (Eigen::Index i = 0; i < nr; ++i) {
+    g(i, i) = autos()(line, i);
+    for (Eigen::Index j = i + 1; j < nr; ++j) {
+      // cross() holds sum conj(f_i) f_j = E[f_j conj(f_i)] = Gff(j, i)
+      g(j, i) = cross()(line, crossIndex(i, j));
+      g(i, j) = std::conj(g(j, i));
+    }
+  }
 }
 
 ComplexMatrix SpectralAverager::referenceSpectralMatrix(Eigen::Index line) const {
   const auto nr = static_cast<Eigen::Index>(references_.size());
-  ComplexMatrix g = ComplexMatrix::Zero(nr, nr);
-  if (hits_ == 0 || line < 0 || line >= autos().rows()) return g;
-  const double c = esdScale(autos().rows(), n_, sampleRateHz_, hits_)[line];
-  for (Eigen::Index i = 0; i < nr; ++i) {
-    g(i, i) = c * autos()(line, i);
-    for (Eigen::Index j = i + 1; j < nr; ++j) {
-      // cross() holds sum conj(f_i) f_j = E[f_j conj(f_i)] = Gff(j, i)
-      g(j, i) = c * cross()(line, crossIndex(i, j));
-      g(i, j) = std::conj(g(j, i));
-    }
-  }
-  return g;
+  if (hits_ == 0 || line < 0 || line >= nf_) return ComplexMatrix::Zero(nr, nr);
+  ComplexMatrix g;
+  rawReferenceMatrix(line, g);
+  return esdScale(nf_, n_, sampleRateHz_, hits_)[line] * g;
 }
 
 namespace {
@@ -406,8 +419,10 @@ Vector SpectralAverager::referenceConditionNumber() const {
   Vector cond = Vector::Ones(nf);
   if (references_.size() < 2 || hits_ == 0) return cond;
   NormalisedInput ni(static_cast<Eigen::Index>(references_.size()));
+  ComplexMatrix g;
   for (Eigen::Index k = 0; k < nf; ++k) {
-    ni.compute(referenceSpectralMatrix(k));
+    rawReferenceMatrix(k, g);  // the condition number does not depend on the scale
+    ni.compute(g);
     cond[k] = ni.condition;
   }
   return cond;
@@ -490,8 +505,9 @@ Result<FrfMatrix> SpectralAverager::frfMultipleReference(FrfMatrix m) const {
   double worst = 0.0;
   Eigen::Index worstLine = 0;
   // Raw sums again: the scale c_k is common to Gff, Gyf and Gyy at a line.
+  ComplexMatrix g;
   for (Eigen::Index k = 0; k < nf; ++k) {
-    const ComplexMatrix g = referenceSpectralMatrix(k);
+    rawReferenceMatrix(k, g);
     for (Eigen::Index i = 0; i < nr; ++i) {
       if (!(autos()(k, i) > 0.0)) {
         return makeError(ErrorCode::NumericalFailure,
@@ -516,8 +532,8 @@ Result<FrfMatrix> SpectralAverager::frfMultipleReference(FrfMatrix m) const {
     // normalised matrix), well defined since the condition was checked.
     const auto& v = ni.eig.eigenvectors();
     const Vector invL = ni.eig.eigenvalues().cwiseInverse();
-    const ComplexMatrix gInv = ni.invSqrtDiag.asDiagonal() * v * invL.asDiagonal() * v.adjoint() *
-                               ni.invSqrtDiag.asDiagonal();
+    const ComplexMatrix gInv =
+        ni.invSqrtDiag.asDiagonal() * v * invL.asDiagonal() * v.adjoint() * ni.invSqrtDiag.asDiagonal();
     hk.noalias() = gyf * gInv;
     for (Eigen::Index o = 0; o < no; ++o) {
       // gamma^2_o = H_o Gyf_o^H / G_yoyo (real: a Hermitian form)
@@ -528,11 +544,17 @@ Result<FrfMatrix> SpectralAverager::frfMultipleReference(FrfMatrix m) const {
     }
   }
   if (!badLines.empty()) {
+    // consecutive lines as ranges "40 Hz to 60 Hz", at most six of them
     std::string lines;
-    for (std::size_t b = 0; b < std::min<std::size_t>(badLines.size(), 8); ++b) {
-      lines += (b ? ", " : "") + hz(frequencyHz_[badLines[b]]);
+    int ranges = 0;
+    for (std::size_t b = 0; b < badLines.size() && ranges < 6; ++ranges) {
+      std::size_t e = b;
+      while (e + 1 < badLines.size() && badLines[e + 1] == badLines[e] + 1) ++e;
+      lines += (ranges ? ", " : "") + hz(frequencyHz_[badLines[b]]);
+      if (e > b) lines += " to " + hz(frequencyHz_[badLines[e]]);
+      b = e + 1;
+      if (ranges == 5 && b < badLines.size()) lines += ", ...";
     }
-    if (badLines.size() > 8) lines += ", ...";
     return makeError(ErrorCode::NumericalFailure,
                      "the references are correlated: their cross-spectral matrix Gff is ill-conditioned at " +
                          std::to_string(badLines.size()) + " of " + std::to_string(nf) + " lines (" + lines +

@@ -32,8 +32,8 @@
 // g = |gamma_12| the coherence amplitude between them.
 
 #include <optional>
-#include <utility>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/common/frf_matrix.h"
@@ -59,8 +59,8 @@ struct FrfOptions {
   // several references (100: coherence amplitude between two references up to
   // 0.98); above it the estimate is an error naming the lines.
   double maxReferenceConditionNumber = 100.0;
-  WindowSpec referenceWindow;                    // applied to the reference (force) channel
-  WindowSpec responseWindow;                     // applied to every response channel
+  WindowSpec referenceWindow;  // applied to the reference (force) channel
+  WindowSpec responseWindow;   // applied to every response channel
 
   // Hammer set-up: force window of the given width (and taper) on the force,
   // exponential window of time constant tau on every channel (force included,
@@ -129,6 +129,7 @@ class SpectralAverager {
   // Index of the cross accumulator sum conj(S_a) S_b, a < b (channels in
   // accumulation order: references, then responses).
   Eigen::Index crossIndex(Eigen::Index a, Eigen::Index b) const;
+  void rawReferenceMatrix(Eigen::Index line, ComplexMatrix& g) const;  // unscaled sums, into g
   void accumulate(const std::complex<double>* spectra, Eigen::Index stride);
 
   FrfOptions options_;

@@ -39,9 +39,13 @@ AlignedBuffer<double> acquire(std::size_t count) {
 }
 }  // namespace
 
-PooledBuffer::PooledBuffer(std::size_t count) : buffer_(acquire(count)), size_(count) { setZero(); }
+PooledBuffer::PooledBuffer(std::size_t count) : buffer_(acquire(count)), size_(count) {
+  setZero();
+}
 
-PooledBuffer::~PooledBuffer() { release(); }
+PooledBuffer::~PooledBuffer() {
+  release();
+}
 
 void PooledBuffer::release() {
   if (buffer_.data() == nullptr) return;
@@ -74,6 +78,8 @@ PooledBuffer& PooledBuffer::operator=(const PooledBuffer& other) {
   return *this;
 }
 
-void PooledBuffer::setZero() { std::fill(buffer_.data(), buffer_.data() + size_, 0.0); }
+void PooledBuffer::setZero() {
+  std::fill(buffer_.data(), buffer_.data() + size_, 0.0);
+}
 
 }  // namespace mozzi::core::signal

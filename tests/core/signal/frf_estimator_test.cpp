@@ -197,5 +197,74 @@ TEST(FrfEstimator, BadInputIsAClearError) {
   EXPECT_TRUE(avg->gxx().allFinite());
 }
 
+// Two forces and two responses built from circular delays, y1 = 2 f1(t-3) +
+// 0.5 f2(t-1) and y2 = -f2(t-4): the exact H matrix is known at every line, so
+// H = Gyf Gff^-1 must return it to rounding once two or more blocks make Gff
+// invertible; one block leaves Gff of rank 1 (an error).
+TEST(FrfEstimator, SeveralReferencesRecoverAnExactMatrix) {
+  const Eigen::Index n = 256;
+  std::vector<TimeRecord> blocks;
+  std::mt19937_64 rng(4);
+  std::normal_distribution<double> normal;
+  for (int b = 0; b < 3; ++b) {
+    TimeRecord r;
+    r.sampleRateHz = 1024.0;
+    r.channels.resize(4);
+    for (int c = 0; c < 4; ++c) {
+      r.channels[static_cast<std::size_t>(c)].dof = Dof{c + 1, Direction::X, false};
+      r.channels[static_cast<std::size_t>(c)].transducer.kind =
+          c < 2 ? TransducerKind::Force : TransducerKind::Velocity;
+    }
+    r.samples.resize(n, 4);
+    for (Eigen::Index i = 0; i < n; ++i) r.samples(i, 0) = normal(rng), r.samples(i, 1) = normal(rng);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      r.samples(i, 2) = 2.0 * r.samples((i - 3 + n) % n, 0) + 0.5 * r.samples((i - 1 + n) % n, 1);
+      r.samples(i, 3) = -r.samples((i - 4 + n) % n, 1);
+    }
+    blocks.push_back(std::move(r));
+  }
+  auto avg = SpectralAverager::create(blocks[0], FrfOptions{});  // both Force channels become references
+  ASSERT_TRUE(avg.ok()) << avg.error().describe();
+  EXPECT_EQ(avg->referenceCount(), 2);
+  ASSERT_TRUE(avg->add(blocks[0]).ok());
+  auto rankOne = avg->frf();
+  ASSERT_FALSE(rankOne.ok());
+  EXPECT_NE(rankOne.error().message.find("ill-conditioned"), std::string::npos);
+  // a copy is independent of the original (accumulators are not shared)
+  SpectralAverager copy = *avg;
+  ASSERT_TRUE(avg->add(blocks[1]).ok());
+  ASSERT_TRUE(avg->add(blocks[2]).ok());
+  EXPECT_EQ(copy.hitCount(), 1);
+  EXPECT_FALSE(copy.frf().ok());
+  auto frf = avg->frf();
+  ASSERT_TRUE(frf.ok()) << frf.error().describe();
+  EXPECT_EQ(frf->type, FrfType::Mobility);
+  ASSERT_TRUE(frf->validate().ok());
+  for (Eigen::Index k = 0; k < frf->lineCount(); ++k) {
+    const auto delay = [&](double d) { return std::polar(1.0, -2 * kPi * double(k) * d / double(n)); };
+    EXPECT_LT(std::abs(frf->h[0](k, 0) - 2.0 * delay(3)), 1e-10) << k;
+    EXPECT_LT(std::abs(frf->h[1](k, 0) - 0.5 * delay(1)), 1e-10) << k;
+    EXPECT_LT(std::abs(frf->h[0](k, 1)), 1e-10) << k;
+    EXPECT_LT(std::abs(frf->h[1](k, 1) + delay(4)), 1e-10) << k;
+    EXPECT_NEAR(frf->coherence[0](k, 0), 1.0, 1e-10);  // multiple coherence
+    EXPECT_EQ(frf->coherence[1](k, 0), frf->coherence[0](k, 0));
+  }
+  // Gff at a line is Hermitian, with the single-reference scaling on its diagonal
+  const ComplexMatrix g = avg->referenceSpectralMatrix(10);
+  EXPECT_LT((g - g.adjoint()).norm(), 1e-15 * g.norm());
+  EXPECT_DOUBLE_EQ(g(0, 0).real(), avg->gff()[10]);
+
+  // explicit reference lists: checked
+  FrfOptions dup;
+  dup.referenceChannels = {0, 0};
+  EXPECT_FALSE(SpectralAverager::create(blocks[0], dup).ok());
+  FrfOptions range;
+  range.referenceChannels = {0, 7};
+  EXPECT_FALSE(SpectralAverager::create(blocks[0], range).ok());
+  FrfOptions one;
+  one.referenceChannels = {0};  // the other force is then a response of kind Force: no FRF type
+  EXPECT_FALSE(SpectralAverager::create(blocks[0], one).ok());
+}
+
 }  // namespace
 }  // namespace mozzi::core::signal
