@@ -28,6 +28,9 @@ Result<std::unique_ptr<ForkLumpedGapProblem>> ForkLumpedGapProblem::create(const
     return makeError(ErrorCode::InvalidArgument, "the frequency uncertainty must be positive", where);
   if (!(in.torsionCompliance >= 0.0) || !std::isfinite(in.torsionCompliance))
     return makeError(ErrorCode::InvalidArgument, "the torsion compliance must be >= 0", where);
+  if (!positive(in.unsprungMass) || !positive(in.unsprungMassSigma) || !(in.unsprungMass < in.fork.vibratingMass))
+    return makeError(ErrorCode::InvalidArgument, "unsprung mass must be positive and part of the vibrating mass",
+                     where);
   if (!(in.fork.dynamicAxisArm > in.fork.wheelCentreHeight) || !(in.fork.staticAxisArm > in.fork.wheelCentreHeight))
     return makeError(ErrorCode::InvalidArgument, "the bending axes must lie above the wheel centre", where);
   std::vector<ConditionPoint> pts = {{"lateral mode [Hz]", 0.0, in.fork.measuredFrequencyHz, in.frequencySigmaHz, 0}};
@@ -38,6 +41,11 @@ Result<std::unique_ptr<ForkLumpedGapProblem>> ForkLumpedGapProblem::create(const
     pts.push_back({"static lateral stiffness [N/m]", 1.0, in.staticLateralStiffness, in.staticSigma, 1});
   }
   return std::unique_ptr<ForkLumpedGapProblem>(new ForkLumpedGapProblem(in, std::move(pts)));
+}
+
+std::vector<Parameter> ForkLumpedGapProblem::calibrationParameters() const {
+  return {
+      {"unsprung_mass", "kg", in_.unsprungMass, 0.5 * in_.unsprungMass, 1.5 * in_.unsprungMass, in_.unsprungMassSigma}};
 }
 
 std::vector<Candidate> ForkLumpedGapProblem::candidates() const {
@@ -51,11 +59,12 @@ std::vector<Candidate> ForkLumpedGapProblem::candidates() const {
   };
 }
 
-std::vector<double> ForkLumpedGapProblem::predict(int candidate, const double* phi) const {
+std::vector<double> ForkLumpedGapProblem::predict(const double* theta, int candidate, const double* phi) const {
   const auto& f = in_.fork;
+  const double mass = f.vibratingMass + (theta ? theta[0] - in_.unsprungMass : 0.0);
   auto inertia = [&](double arm) {  // wheel + unsprung mass M at the wheel centre, J_wheel about its own diameter
     const double d = arm - f.wheelCentreHeight;
-    return f.wheelInertia + f.vibratingMass * d * d;
+    return f.wheelInertia + mass * d * d;
   };
   double arm = f.staticAxisArm;            // where the spring and the rotation axis are
   double kModal = f.staticBendStiffness;   // the stiffness the mode deforms
@@ -79,8 +88,8 @@ std::vector<double> ForkLumpedGapProblem::predict(int candidate, const double* p
   return out;
 }
 
-bool ForkLumpedGapProblem::residuals(const double*, int candidate, const double* phi, double* r) const {
-  return whitenedResiduals(points_, predict(candidate, phi), r);
+bool ForkLumpedGapProblem::residuals(const double* theta, int candidate, const double* phi, double* r) const {
+  return whitenedResiduals(points_, predict(theta, candidate, phi), r);
 }
 
 std::vector<int> ForkLumpedGapProblem::folds() const {
@@ -89,14 +98,14 @@ std::vector<int> ForkLumpedGapProblem::folds() const {
   return f;
 }
 
-std::unique_ptr<GapProblem> ForkLumpedGapProblem::simulated(const double*, int candidate, const double* phi,
+std::unique_ptr<GapProblem> ForkLumpedGapProblem::simulated(const double* theta, int candidate, const double* phi,
                                                             std::mt19937_64& rng) const {
   return std::unique_ptr<GapProblem>(
-      new ForkLumpedGapProblem(in_, simulatedPoints(points_, predict(candidate, phi), rng)));
+      new ForkLumpedGapProblem(in_, simulatedPoints(points_, predict(theta, candidate, phi), rng)));
 }
 
-GapMetrics ForkLumpedGapProblem::metrics(const double*, int candidate, const double* phi) const {
-  auto m = conditionMetrics(points_, predict(candidate, phi), "relative_residual");
+GapMetrics ForkLumpedGapProblem::metrics(const double* theta, int candidate, const double* phi) const {
+  auto m = conditionMetrics(points_, predict(theta, candidate, phi), "relative_residual");
   m.entries[0].kind = "mode";
   return m;
 }

@@ -9,8 +9,8 @@
 // at the contact point (Table 10: 56.1 kN/m), predicted as the bending spring
 // and the decomposition's torsion part in series,
 //   K_lat = 1 / (L_1^2 / k_1 + c_t),   c_t = L_t^2 / k_t  (Table 10: 0.066 m, 3 kNm/rad).
-// No calibration parameter: every input is a measurement. Catalogue, one
-// parameter each:
+// Calibration theta: the unsprung mass (part of M, estimated rather than
+// weighed: §4.2 "3 kg"), with a Gaussian prior. Catalogue, one parameter each:
 //   stiffness_location   (model 2) the spring sits at the dynamic twist axis
 //                        L_2 (0.846 m) with stiffness s k_1; inertia about L_2.
 //   bending_stiffness    the spring stays at L_1 with stiffness s k_1.
@@ -47,6 +47,8 @@ struct ForkLumpedGapInput {
   double staticLateralStiffness = 0.0;  // measured [N/m]
   double staticSigma = 0.0;             // [N/m]
   double torsionCompliance = 0.0;       // c_t [m/N], the torsion part of the static test
+  double unsprungMass = 3.0;            // [kg], included in fork.vibratingMass (§4.2: 8 kg wheel + 3 kg)
+  double unsprungMassSigma = 0.5;       // [kg] prior standard uncertainty
 };
 
 class ForkLumpedGapProblem : public GapProblem {
@@ -54,7 +56,7 @@ class ForkLumpedGapProblem : public GapProblem {
   static Result<std::unique_ptr<ForkLumpedGapProblem>> create(const ForkLumpedGapInput& in);
 
   std::string dataKind() const override { return "modes"; }
-  std::vector<Parameter> calibrationParameters() const override { return {}; }
+  std::vector<Parameter> calibrationParameters() const override;
   std::vector<Candidate> candidates() const override;
   int residualCount() const override { return static_cast<int>(points_.size()); }
   bool residuals(const double* theta, int candidate, const double* phi, double* r) const override;
@@ -63,8 +65,9 @@ class ForkLumpedGapProblem : public GapProblem {
                                         std::mt19937_64& rng) const override;
   GapMetrics metrics(const double* theta, int candidate, const double* phi) const override;
 
-  // [frequency Hz, (static lateral stiffness N/m)] for the given effect.
-  std::vector<double> predict(int candidate, const double* phi) const;
+  // [frequency Hz, (static lateral stiffness N/m)] for the given effect;
+  // theta = nullptr means the nominal unsprung mass.
+  std::vector<double> predict(const double* theta, int candidate, const double* phi) const;
 
  private:
   ForkLumpedGapProblem(ForkLumpedGapInput in, std::vector<ConditionPoint> points)

@@ -9,6 +9,7 @@
 
 #include "core/common/text.h"
 #include "core/stability/mode_tracking.h"
+#include "core/tire/tire_csv.h"
 
 namespace mozzi::core::gap {
 
@@ -285,14 +286,52 @@ Result<StabilityGapModel> parseStabilityGapModel(const std::string& jsonText, co
 }
 
 Result<std::vector<ModeFrequency>> parseModeFrequencyCsv(const std::string& csvText, const std::string& source) {
-  auto t = readNumericCsv(csvText, source, {"speed_m_s", "mode", "frequency_hz", "uncertainty_hz"}, {"mode"});
-  if (!t) return t.error();
-  const int cs = t->column("speed_m_s"), cf = t->column("frequency_hz"), cu = t->column("uncertainty_hz");
+  // The "mode" column holds names: each is swapped for its row number so the
+  // numeric table reader (core/tire/tire_csv.h) checks every other cell with
+  // the file's own line numbers, then mapped back.
+  std::istringstream in(csvText);
+  std::ostringstream numeric;
+  std::vector<std::string> names;
+  std::string line;
+  int modeColumn = -2, n = 0;  // -2: header not seen yet
+  auto trim = [](const std::string& s) {
+    const auto a = s.find_first_not_of(" \t\r");
+    return a == std::string::npos ? std::string() : s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
+  };
+  while (std::getline(in, line)) {
+    ++n;
+    const std::string t = trim(line);
+    if (!t.empty() && t[0] != '#') {
+      std::vector<std::string> cells;
+      std::stringstream ss(t);
+      std::string cell;
+      while (std::getline(ss, cell, ',')) cells.push_back(trim(cell));
+      if (modeColumn == -2) {
+        const auto it = std::find(cells.begin(), cells.end(), "mode");
+        modeColumn = it == cells.end() ? -1 : static_cast<int>(it - cells.begin());
+      } else if (modeColumn >= 0 && modeColumn < static_cast<int>(cells.size())) {
+        std::string& name = cells[static_cast<std::size_t>(modeColumn)];
+        if (name.empty()) return makeError(ErrorCode::ParseError, "empty mode name", source + ":" + std::to_string(n));
+        names.push_back(name);
+        name = std::to_string(names.size() - 1);
+        std::string joined;
+        for (std::size_t i = 0; i < cells.size(); ++i) joined += (i ? "," : "") + cells[i];
+        if (!t.empty() && t.back() == ',') joined += ",";
+        numeric << joined << "\n";
+        continue;
+      }
+    }
+    numeric << line << "\n";
+  }
+  auto table = tire::parseNumericTable(numeric.str(), source, {"speed_m_s", "mode", "frequency_hz", "uncertainty_hz"});
+  if (!table) return table.error();
+  const int cs = table->column("speed_m_s"), cm = table->column("mode"), cf = table->column("frequency_hz"),
+            cu = table->column("uncertainty_hz");
   std::vector<ModeFrequency> out;
-  for (std::size_t i = 0; i < t->rows.size(); ++i) {
-    const auto& r = t->rows[i];
-    const std::string where = source + ":" + std::to_string(t->lines[i]);
-    ModeFrequency m{t->text[i][0], r[cs], r[cf], r[cu]};
+  for (std::size_t i = 0; i < table->rows.size(); ++i) {
+    const auto& r = table->rows[i];
+    const std::string where = source + ":" + std::to_string(table->lines[i]);
+    ModeFrequency m{names[static_cast<std::size_t>(r[cm])], r[cs], r[cf], r[cu]};
     for (const auto& [v, name] :
          {std::pair{m.speed, "speed_m_s"}, {m.frequencyHz, "frequency_hz"}, {m.sigmaHz, "uncertainty_hz"}})
       if (!(v > 0.0)) return makeError(ErrorCode::ParseError, std::string(name) + " must be positive", where);

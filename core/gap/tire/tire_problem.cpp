@@ -9,6 +9,7 @@
 #include "core/common/text.h"
 #include "core/tire/relaxation_prediction.h"
 #include "core/tire/thesis_tyres.h"
+#include "core/tire/tire_csv.h"
 
 namespace mozzi::core::gap {
 
@@ -390,7 +391,7 @@ Result<TireGapModel> parseTireGapModel(const std::string& jsonText, const std::s
 }
 
 Result<std::vector<ConditionPoint>> parseRelaxationCsv(const std::string& csvText, const std::string& source) {
-  auto t = readNumericCsv(csvText, source, {"pressure_bar", "sigma_m", "uncertainty_m"});
+  auto t = tire::parseNumericTable(csvText, source, {"pressure_bar", "sigma_m", "uncertainty_m"});
   if (!t) return t.error();
   const int cp = t->column("pressure_bar"), cs = t->column("sigma_m"), cu = t->column("uncertainty_m");
   std::vector<ConditionPoint> out;
