@@ -1,12 +1,14 @@
 // Throughput of the tyre identification steps: harmonic-yaw relaxation length
 // (5 frequencies x 10 cycles at 200 Hz, thesis §5.1), appendix-1 FRF over 1000
-// frequencies, and a Magic Formula lateral fit (189 points, 3 loads x 3 cambers x 21 slips).
+// frequencies, a Magic Formula lateral fit (189 points, 3 loads x 3 cambers x 21 slips),
+// and the wheelchair slalom of `mozzi-cli wheelchair slalom` (20 s, 0.25 Hz).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <complex>
 #include <random>
 
+#include "core/stability/wheelchair_model.h"
 #include "core/tire/magic_formula.h"
 #include "core/tire/relaxation_length.h"
 #include "core/tire/relaxation_prediction.h"
@@ -73,5 +75,11 @@ void BM_MagicFormulaLateralFit(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(tr::fitMfLateral(d, c));
 }
 BENCHMARK(BM_MagicFormulaLateralFit)->Unit(benchmark::kMillisecond);
+
+void BM_WheelchairSlalom(benchmark::State& state) {
+  const mozzi::core::stability::WheelchairParameters p;
+  for (auto _ : state) benchmark::DoNotOptimize(mozzi::core::stability::runSlalom(p, 4.0 / 3.6, 10.0, 0.25, 20.0));
+}
+BENCHMARK(BM_WheelchairSlalom)->Unit(benchmark::kMillisecond);
 
 }  // namespace
