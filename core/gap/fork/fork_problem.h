@@ -18,7 +18,7 @@
 //   residual_compliance  a share rho of the static bending compliance belongs to
 //                        a part the bending mode does not deform (fixture, play):
 //                        the mode sees k_1 / (1 - rho), the static test all of it.
-// Folds: 0 the frequency, 1 the static stiffness.
+// Folds: none (a frequency and a static stiffness cannot predict each other).
 //
 // StiffnessEstimatesGapProblem (thesis §6.4): several estimates of one
 // stiffness from different test configurations (the carbon fork's torsion:
