@@ -338,15 +338,14 @@ Result<std::vector<SelectedPole>> selectPoles(const StabilizationDiagram& diagra
                          ": no pole "
                          "stayed stable (frequency, damping and vector) over " +
                          std::to_string(needed) + " orders; the band holds no identifiable mode or the FRFs are noise",
-                     "pLSCF pole selection");
+                     "automatic pole selection");
   }
   return out;
 }
 
-Result<PlscfResult> identifyPlscf(const FrfMatrix& frf, const PlscfOptions& options) {
-  auto diagram = plscfStabilization(frf, options);
-  if (!diagram) return diagram.error();
-  auto selected = selectPoles(*diagram, options);
+Result<PlscfResult> modalModelFromDiagram(const FrfMatrix& frf, StabilizationDiagram diagram,
+                                          const PlscfOptions& options) {
+  auto selected = selectPoles(diagram, options);
   if (!selected) return selected.error();
   std::vector<Complex> poles;
   for (const auto& s : *selected) poles.push_back(s.pole);
@@ -357,10 +356,16 @@ Result<PlscfResult> identifyPlscf(const FrfMatrix& frf, const PlscfOptions& opti
   if (!model) return model.error();
   for (std::size_t r = 0; r < poles.size(); ++r) model->modes[r].participation = (*selected)[r].participation;
   PlscfResult out;
-  out.diagram = std::move(diagram).value();
+  out.diagram = std::move(diagram);
   out.selected = std::move(selected).value();
   out.model = std::move(model).value();
   return out;
+}
+
+Result<PlscfResult> identifyPlscf(const FrfMatrix& frf, const PlscfOptions& options) {
+  auto diagram = plscfStabilization(frf, options);
+  if (!diagram) return diagram.error();
+  return modalModelFromDiagram(frf, std::move(diagram).value(), options);
 }
 
 Result<void> writeStabilizationCsv(const StabilizationDiagram& diagram, const std::string& path) {

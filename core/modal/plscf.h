@@ -35,14 +35,14 @@ struct StabilityCriteria {
   double dampingTolerance = 0.05;    // |zeta_m - zeta_{m-1}| / zeta_{m-1}
   double macThreshold = 0.98;        // vector consistency between orders
   StabilityVector vector = StabilityVector::ShapeMac;
-  double maxZeta = 0.25;             // poles more damped than this are not physical candidates
+  double maxZeta = 0.25;  // poles more damped than this are not physical candidates
 };
 
 struct PlscfOptions {
   double bandLowHz = 0.0;
   double bandHighHz = 0.0;  // lines with bandLowHz <= f <= bandHighHz are fitted
   int minOrder = 2;
-  int maxOrder = 40;        // polynomial degree n; n ni poles
+  int maxOrder = 40;  // polynomial degree n; n ni poles
   int orderStep = 1;
   StabilityCriteria criteria;
   // Automatic selection: a cluster of stable poles is a physical mode when it
@@ -66,7 +66,7 @@ char poleStatusSymbol(PoleStatus status);
 
 struct StabilizationPole {
   int order = 0;
-  Complex pole;                 // lambda [rad/s]
+  Complex pole;  // lambda [rad/s]
   double frequencyHz = 0.0;
   double zeta = 0.0;
   PoleStatus status = PoleStatus::New;
@@ -75,10 +75,10 @@ struct StabilizationPole {
 };
 
 struct StabilizationDiagram {
-  std::vector<int> orders;             // evaluated orders
+  std::vector<int> orders;               // evaluated orders
   std::vector<StabilizationPole> poles;  // physical candidates of every order (band, 0 < zeta <= maxZeta)
   double bandLowHz = 0.0, bandHighHz = 0.0;
-  double samplingTime = 0.0;           // dt of the z-domain model [s]
+  double samplingTime = 0.0;  // dt of the z-domain model [s]
 };
 
 struct SelectedPole {
@@ -103,6 +103,11 @@ struct PlscfResult {
   std::vector<SelectedPole> selected;
   ModalModel model;  // LSFD residues for the selected poles, lower and upper residuals
 };
+
+// Automatic selection on a diagram (of pLSCF or LSCE) and LSFD over the band
+// with lower and upper residuals.
+Result<PlscfResult> modalModelFromDiagram(const FrfMatrix& frf, StabilizationDiagram diagram,
+                                          const PlscfOptions& options);
 
 // Whole chain: stabilization diagram, automatic selection, LSFD over the band
 // with lower and upper residuals.
