@@ -4,14 +4,13 @@
 //   receptance  H(omega) = (K - omega^2 M + i omega C)^-1, accelerance -omega^2 H
 // (thesis eq. 19 in the usual sign form, notes.md).
 //
-// Excitation: periodic random, i.e. per realisation a multisine on every DFT
-// line of the block with independent random phases for each force, run from
-// rest for three blocks (all modes decay by >= 3.26 1/s: transient below 3e-9
-// after 6 s) and measured on the fourth. The response is the exact state-
-// transition simulation (core/signal/mdof_simulation, first-order hold) on a
-// grid 32 times finer than the DAQ rate, sampled at the DAQ instants, so the
-// measured force samples are the multisine's own values and every block is
-// leakage-free with rectangular windows.
+// Excitation: periodic random (core/signal/shaker_synthesis), i.e. per block a
+// multisine on every DFT line with independent random phases for each force,
+// run from rest for three blocks (all modes decay by >= 3.26 1/s: transient
+// below 3e-9 after 6 s) and measured on the fourth; exact state-transition
+// simulation (core/signal/mdof_simulation, first-order hold) on a grid 32
+// times finer than the DAQ rate, so every block is leakage-free with
+// rectangular windows.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -22,6 +21,7 @@
 #include "core/signal/fft.h"
 #include "core/signal/frf_estimator.h"
 #include "core/signal/mdof_simulation.h"
+#include "core/signal/shaker_synthesis.h"
 
 namespace mozzi::core::signal {
 namespace {
@@ -64,7 +64,7 @@ LinearMdof twoDof() {
 
 struct Campaign {
   std::vector<TimeRecord> receptance;       // forces, then displacement of every DOF
-  std::vector<TimeRecord> accelerance;      // forces, then acceleration of every DOF
+  std::vector<TimeRecord> accelerance;      // the same forces, then acceleration of every DOF
   std::vector<ComplexMatrix> forceSpectra;  // per block: lines x forces (DFT of the force samples)
 };
 
@@ -72,91 +72,38 @@ struct CampaignSpec {
   std::vector<Eigen::Index> forcedDofs;
   int realisations = 16;
   std::uint64_t seed = 1;
-  double responseNoiseRms = 0.0;  // white noise on each response [EU]
-  // lines [lo, hi] on which the second force copies the first one's phases
-  // (a partially correlated pair); hi < lo: never
-  Eigen::Index copyLo = 1, copyHi = 0;
+  double responseNoiseRms = 0.0;        // white noise on each response [EU]
+  Eigen::Index copyLo = 1, copyHi = 0;  // lines where the second force copies the first's phases
 };
 
 Campaign simulate(const LinearMdof& sys, const CampaignSpec& spec) {
-  const Eigen::Index nd = sys.dofCount();
-  const auto nr = static_cast<Eigen::Index>(spec.forcedDofs.size());
-  const Eigen::Index nFine = kN * kFine, nf = kN / 2 + 1;
-  auto fft = RealFft::forLength(nFine);
-  auto daqFft = RealFft::forLength(kN);
-  std::mt19937_64 rng(spec.seed);
-  std::uniform_real_distribution<double> phase(0.0, 2.0 * kPi);
-  std::normal_distribution<double> normal;
-  // every line 0..nf-1 with equal power (DC and Nyquist real), scaled to kForceRms
-  const double lineAmp = kForceRms * std::sqrt(2.0 / static_cast<double>(nf));
+  ShakerTestSpec s;
+  s.sampleRateHz = kFs;
+  s.blockSamples = kN;
+  s.oversampling = kFine;
+  s.settleBlocks = kPeriods - 1;
+  s.forcedDofs = spec.forcedDofs;
+  s.forceRmsN = kForceRms;
+  s.blocks = spec.realisations;
+  s.seed = spec.seed;  // same seed: the same forces for both response kinds
+  s.responseNoiseRms = spec.responseNoiseRms;
+  s.correlatedFromLine = spec.copyLo;
+  s.correlatedToLine = spec.copyHi;
   Campaign c;
-  for (int r = 0; r < spec.realisations; ++r) {
-    Matrix force = Matrix::Zero(nFine * kPeriods, nd);
-    std::vector<double> firstPhases(static_cast<std::size_t>(nf));
-    for (Eigen::Index i = 0; i < nr; ++i) {
-      // one period on the fine grid by inverse FFT of the line spectrum
-      ComplexVector spectrum = ComplexVector::Zero(nFine / 2 + 1);
-      for (Eigen::Index k = 0; k < nf; ++k) {
-        double p = phase(rng);
-        if (i == 0) firstPhases[static_cast<std::size_t>(k)] = p;
-        if (i == 1 && k >= spec.copyLo && k <= spec.copyHi) p = firstPhases[static_cast<std::size_t>(k)];
-        const bool real = k == 0 || k == nf - 1;
-        // x(t) = sum_k a cos(2 pi k t / T + p): DFT coefficient a n / 2 e^{ip} (a n at a real line's cos)
-        spectrum[k] = real ? Complex(lineAmp * std::cos(p) * static_cast<double>(nFine), 0.0)
-                           : std::polar(lineAmp * 0.5 * static_cast<double>(nFine), p);
-      }
-      Vector period(nFine);
-      (*fft)->inverse(spectrum.data(), period.data());
-      period /= static_cast<double>(nFine);
-      for (Eigen::Index p = 0; p < kPeriods; ++p) {
-        force.col(spec.forcedDofs[static_cast<std::size_t>(i)]).segment(p * nFine, nFine) = period;
-      }
-    }
-    auto resp = simulateMdof(sys, force, kFs * static_cast<double>(kFine), ForceHold::FirstOrder);
-    EXPECT_TRUE(resp.ok()) << resp.error().describe();
-    TimeRecord rec;
-    rec.sampleRateHz = kFs;
-    rec.samples.resize(kN, nr + nd);
-    for (Eigen::Index i = 0; i < nr; ++i) {
-      Channel ch;
-      ch.transducer.kind = TransducerKind::Force;
-      ch.dof = Dof{static_cast<int>(spec.forcedDofs[static_cast<std::size_t>(i)]) + 1, Direction::Z, false};
-      rec.channels.push_back(ch);
-    }
-    for (Eigen::Index d = 0; d < nd; ++d) {
-      Channel ch;
-      ch.dof = Dof{static_cast<int>(d) + 1, Direction::Z, false};
-      rec.channels.push_back(ch);
-    }
-    const Eigen::Index first = (kPeriods - 1) * nFine;
-    TimeRecord acc = rec;
-    for (Eigen::Index j = 0; j < kN; ++j) {
-      const Eigen::Index t = first + j * kFine;
-      for (Eigen::Index i = 0; i < nr; ++i) {
-        rec.samples(j, i) = force(t, spec.forcedDofs[static_cast<std::size_t>(i)]);
-      }
-      rec.samples.row(j).tail(nd) = resp->displacement.row(t);
-      acc.samples.row(j).head(nr) = rec.samples.row(j).head(nr);
-      acc.samples.row(j).tail(nd) = resp->acceleration.row(t);
-    }
-    for (Eigen::Index j = 0; j < kN; ++j) {
-      for (Eigen::Index d = 0; d < nd; ++d) {
-        rec.samples(j, nr + d) += spec.responseNoiseRms * normal(rng);
-        acc.samples(j, nr + d) += spec.responseNoiseRms * normal(rng);
-      }
-    }
-    for (Eigen::Index d = 0; d < nd; ++d) {
-      rec.channels[static_cast<std::size_t>(nr + d)].transducer.kind = TransducerKind::Displacement;
-      acc.channels[static_cast<std::size_t>(nr + d)].transducer.kind = TransducerKind::Acceleration;
-    }
-    ComplexMatrix fs(nf, nr);
-    for (Eigen::Index i = 0; i < nr; ++i) {
-      Vector x = rec.samples.col(i);
-      fs.col(i) = *(*daqFft)->transform(x);
-    }
+  s.responseKind = TransducerKind::Displacement;
+  auto rec = synthesizeShakerBlocks(sys, s);
+  s.responseKind = TransducerKind::Acceleration;
+  auto acc = synthesizeShakerBlocks(sys, s);
+  EXPECT_TRUE(rec.ok() && acc.ok());
+  if (!rec.ok() || !acc.ok()) return c;
+  c.receptance = std::move(*rec);
+  c.accelerance = std::move(*acc);
+  auto daqFft = RealFft::forLength(kN);
+  const auto nr = static_cast<Eigen::Index>(spec.forcedDofs.size());
+  for (const auto& r : c.receptance) {
+    ComplexMatrix fs(kN / 2 + 1, nr);
+    for (Eigen::Index i = 0; i < nr; ++i) fs.col(i) = *(*daqFft)->transform(r.samples.col(i));
     c.forceSpectra.push_back(fs);
-    c.receptance.push_back(std::move(rec));
-    c.accelerance.push_back(std::move(acc));
   }
   return c;
 }

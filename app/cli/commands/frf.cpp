@@ -2,7 +2,10 @@
 // §1.6, §5.2). Reads UFF 58 time responses (function type 1), one hit per load
 // case (record 6), checks every hit, averages the accepted ones with H1, H2 or
 // Hv, writes FRFs and coherence as UFF 58 (function type 4 and 6) and prints a
-// summary. Documented in docs/cli/frf.md.
+// summary. With several force channels (or several --reference DOFs) the load
+// cases are blocks of a multiple-input test (shakers) and the FRF matrix comes
+// from H1 = Gyf Gff^-1 with multiple coherence (core/signal/frf_estimator.h).
+// Documented in docs/cli/frf.md.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -24,7 +27,7 @@ namespace uff = core::io::uff;
 
 constexpr const char* kUsage =
     "Usage: mozzi-cli frf HITS.uff --estimator H1|H2|Hv [--force-window S] [--exp-window TAU]\n"
-    "                 [--reference NODE:DIR] [--out FRF.uff] [--json]\n";
+    "                 [--reference NODE:DIR[,NODE:DIR...]] [--max-condition C] [--out FRF.uff] [--json]\n";
 
 // UFF record 9 specific data type -> transducer kind (8 displacement,
 // 11 velocity, 12 acceleration, 13 excitation force).
@@ -45,7 +48,7 @@ struct Hit {
 
 // Time-response records grouped by load case, channels in file order.
 core::Result<std::vector<Hit>> hitsFromUff(const uff::UffFile& file, const std::string& path,
-                                           const std::optional<core::Dof>& reference) {
+                                           const std::vector<core::Dof>& references) {
   std::map<int, std::vector<const uff::Function58*>> byCase;
   std::vector<int> order;
   for (const auto* f : file.all<uff::Function58>()) {
@@ -69,9 +72,8 @@ core::Result<std::vector<Hit>> hitsFromUff(const uff::UffFile& file, const std::
     }
     r.sampleRateHz = 1.0 / first.abscissaIncrement;
     // record 7 abscissa minimum < 0: the samples before t = 0 are the pre-trigger
-    r.preTriggerSamples = first.abscissaMin < 0.0
-                              ? static_cast<Eigen::Index>(std::lround(-first.abscissaMin * r.sampleRateHz))
-                              : 0;
+    r.preTriggerSamples =
+        first.abscissaMin < 0.0 ? static_cast<Eigen::Index>(std::lround(-first.abscissaMin * r.sampleRateHz)) : 0;
     const Eigen::Index n = first.pointCount();
     r.samples.resize(n, static_cast<Eigen::Index>(recs.size()));
     for (std::size_t c = 0; c < recs.size(); ++c) {
@@ -95,27 +97,32 @@ core::Result<std::vector<Hit>> hitsFromUff(const uff::UffFile& file, const std::
       r.channels.push_back(ch);
       r.samples.col(static_cast<Eigen::Index>(c)) = f.real;
     }
-    if (reference) {
-      // The named DOF is the reference: among channels at that DOF (a driving
-      // point has force and response there) prefer the one typed as force.
-      std::optional<std::size_t> pick;
-      for (std::size_t c = 0; c < r.channels.size(); ++c) {
-        if (r.channels[c].dof != *reference) continue;
-        if (!pick || (r.channels[c].transducer.kind == sg::TransducerKind::Force &&
-                      r.channels[*pick].transducer.kind != sg::TransducerKind::Force)) {
-          pick = c;
+    if (!references.empty()) {
+      // The named DOFs are the references: among channels at such a DOF (a
+      // driving point has force and response there) prefer the one typed as
+      // force. Other force channels are not references.
+      std::vector<std::size_t> picks;
+      for (const core::Dof& reference : references) {
+        std::optional<std::size_t> pick;
+        for (std::size_t c = 0; c < r.channels.size(); ++c) {
+          if (r.channels[c].dof != reference) continue;
+          if (!pick || (r.channels[c].transducer.kind == sg::TransducerKind::Force &&
+                        r.channels[*pick].transducer.kind != sg::TransducerKind::Force)) {
+            pick = c;
+          }
         }
-      }
-      if (!pick) {
-        return core::makeError(core::ErrorCode::NotFound,
-                               "no channel at the reference DOF " + core::formatDof(*reference), where);
+        if (!pick) {
+          return core::makeError(core::ErrorCode::NotFound,
+                                 "no channel at the reference DOF " + core::formatDof(reference), where);
+        }
+        picks.push_back(*pick);
       }
       for (std::size_t c = 0; c < r.channels.size(); ++c) {
         auto& kind = r.channels[c].transducer.kind;
-        if (c == *pick) {
+        if (std::find(picks.begin(), picks.end(), c) != picks.end()) {
           kind = sg::TransducerKind::Force;
         } else if (kind == sg::TransducerKind::Force) {
-          kind = sg::TransducerKind::Other;  // another force channel is not the reference
+          kind = sg::TransducerKind::Other;  // another force channel is not a reference
         }
       }
     }
@@ -130,37 +137,77 @@ std::string fmt(double v, const char* f = "%.4g") {
   return buf;
 }
 
+// The force channels of a hit after hitsFromUff: the references.
+std::vector<Eigen::Index> forceChannels(const sg::TimeRecord& r) {
+  std::vector<Eigen::Index> refs;
+  for (Eigen::Index c = 0; c < r.channelCount(); ++c) {
+    if (r.channels[static_cast<std::size_t>(c)].transducer.kind == sg::TransducerKind::Force) refs.push_back(c);
+  }
+  return refs;
+}
+
+std::string dofList(const std::vector<core::Dof>& dofs) {
+  std::string s;
+  for (std::size_t i = 0; i < dofs.size(); ++i) s += (i ? ", " : "") + core::formatDof(dofs[i]);
+  return s;
+}
+
 int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const auto parsed = ParsedArgs::parse(
-      args, OptionSpec{{"--estimator", "--force-window", "--exp-window", "--reference", "--out"}, {"--json"}});
+      args, OptionSpec{{"--estimator", "--force-window", "--exp-window", "--reference", "--max-condition", "--out"},
+                       {"--json"}});
   if (!parsed || parsed->positional().size() != 1 || !parsed->value("--estimator")) {
     err << "mozzi-cli frf: "
-        << (!parsed ? parsed.error().describe()
-                    : parsed->positional().size() != 1 ? std::string("expected one input file") : "--estimator is required")
-        << "\n" << kUsage;
+        << (!parsed                            ? parsed.error().describe()
+            : parsed->positional().size() != 1 ? std::string("expected one input file")
+                                               : "--estimator is required")
+        << "\n"
+        << kUsage;
     return kExitUsage;
   }
   const std::string path = parsed->positional()[0];
   auto estimator = sg::parseFrfEstimator(*parsed->value("--estimator"));
   auto forceWidth = parsed->number("--force-window");
   auto tau = parsed->number("--exp-window");
-  std::optional<core::Dof> reference;
+  auto maxCondition = parsed->number("--max-condition");
+  std::vector<core::Dof> references;
   if (auto ref = parsed->value("--reference")) {
-    auto dof = core::parseDof(*ref);
-    if (!dof) {
-      err << "mozzi-cli frf: " << dof.error().describe() << "\n" << kUsage;
-      return kExitUsage;
+    std::stringstream list(*ref);
+    for (std::string item; std::getline(list, item, ',');) {
+      auto dof = core::parseDof(item);
+      if (!dof) {
+        err << "mozzi-cli frf: --reference: " << dof.error().describe() << "\n" << kUsage;
+        return kExitUsage;
+      }
+      if (std::find(references.begin(), references.end(), *dof) != references.end()) {
+        err << "mozzi-cli frf: --reference names " << core::formatDof(*dof) << " twice\n" << kUsage;
+        return kExitUsage;
+      }
+      references.push_back(*dof);
     }
-    reference = *dof;
   }
-  if (!estimator || !forceWidth || !tau) {
+  if (!estimator || !forceWidth || !tau || !maxCondition) {
     err << "mozzi-cli frf: "
-        << (!estimator ? estimator.error().describe() : !forceWidth ? forceWidth.error().describe() : tau.error().describe())
-        << "\n" << kUsage;
+        << (!estimator    ? estimator.error().describe()
+            : !forceWidth ? forceWidth.error().describe()
+            : !tau        ? tau.error().describe()
+                          : maxCondition.error().describe())
+        << "\n"
+        << kUsage;
     return kExitUsage;
   }
   if ((forceWidth->has_value() && !(**forceWidth > 0.0)) || (tau->has_value() && !(**tau > 0.0))) {
     err << "mozzi-cli frf: --force-window and --exp-window take a positive time in seconds\n" << kUsage;
+    return kExitUsage;
+  }
+  if (maxCondition->has_value() && !(**maxCondition >= 1.0)) {
+    err << "mozzi-cli frf: --max-condition takes a condition number >= 1\n" << kUsage;
+    return kExitUsage;
+  }
+  if (references.size() > 1 && *estimator != sg::FrfEstimator::H1) {
+    err << "mozzi-cli frf: " << sg::frfEstimatorName(*estimator)
+        << " takes one reference; with several --reference DOFs use --estimator H1\n"
+        << kUsage;
     return kExitUsage;
   }
 
@@ -169,15 +216,19 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     err << "mozzi-cli frf: " << file.error().describe() << "\n";
     return kExitFailure;
   }
-  auto hits = hitsFromUff(*file, path, reference);
+  auto hits = hitsFromUff(*file, path, references);
   if (!hits) {
     err << "mozzi-cli frf: " << hits.error().describe() << "\n";
     return kExitFailure;
   }
 
   // Force window: the given width, tapered over a quarter of it.
-  const sg::FrfOptions options =
-      sg::FrfOptions::hammer(*estimator, *forceWidth, forceWidth->value_or(0.0) * 0.25, *tau);
+  sg::FrfOptions options = sg::FrfOptions::hammer(*estimator, *forceWidth, forceWidth->value_or(0.0) * 0.25, *tau);
+  options.referenceChannels = forceChannels(hits->front().record);
+  if (maxCondition->has_value()) options.maxReferenceConditionNumber = **maxCondition;
+  // Several references: the load cases are blocks of a shaker (random) test,
+  // not hammer hits, so only the overload check of the hit assessment applies.
+  const bool multiReference = options.referenceChannels.size() > 1;
   std::optional<sg::SpectralAverager> averager;
   nlohmann::json jsonHits = nlohmann::json::array();
   std::ostringstream text;
@@ -185,17 +236,32 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   double band10 = 0.0, band20 = 0.0;
   bool haveBand = false;
   for (const Hit& hit : *hits) {
-    auto q = sg::assessHit(hit.record);
+    sg::HitQualityOptions qo;
+    if (!options.referenceChannels.empty()) qo.referenceChannel = options.referenceChannels.front();
+    auto q = sg::assessHit(hit.record, qo);
     if (!q) {
       err << "mozzi-cli frf: load case " << hit.loadCase << ": " << q.error().describe() << "\n";
       return kExitFailure;
     }
-    nlohmann::json jh{{"load_case", hit.loadCase}, {"accepted", q->accepted}, {"reasons", q->reasons},
-                      {"pulse_width_s", q->pulseWidthS}, {"peak_force", q->peakForce}};
-    if (q->usableBand10dBHz) jh["usable_band_10db_hz"] = *q->usableBand10dBHz;
-    if (q->usableBand20dBHz) jh["usable_band_20db_hz"] = *q->usableBand20dBHz;
+    if (multiReference) {
+      q->accepted = true;
+      q->reasons.clear();
+      for (const auto& ch : q->channels) {
+        if (ch.clipped) {
+          q->accepted = false;
+          q->reasons.push_back("overload on " + ch.name + " (" + std::to_string(ch.clippedSamples) + " samples)");
+        }
+      }
+    }
+    nlohmann::json jh{{"load_case", hit.loadCase}, {"accepted", q->accepted}, {"reasons", q->reasons}};
+    if (!multiReference) {
+      jh["pulse_width_s"] = q->pulseWidthS;
+      jh["peak_force"] = q->peakForce;
+      if (q->usableBand10dBHz) jh["usable_band_10db_hz"] = *q->usableBand10dBHz;
+      if (q->usableBand20dBHz) jh["usable_band_20db_hz"] = *q->usableBand20dBHz;
+    }
     jsonHits.push_back(jh);
-    text << "  hit " << hit.loadCase << ": " << q->verdictText() << "\n";
+    text << "  " << (multiReference ? "block " : "hit ") << hit.loadCase << ": " << q->verdictText() << "\n";
     if (!q->accepted) {
       ++rejected;
       continue;
@@ -213,15 +279,17 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
       return kExitFailure;
     }
     ++accepted;
-    // usable band of the average: the narrowest accepted hit's
+    // usable band of the average: the narrowest accepted hit's (a shaker
+    // test's band is the excitation's, unknown here: up to Nyquist)
     const double nyquist = 0.5 * hit.record.sampleRateHz;
-    const double b10 = q->usableBand10dBHz.value_or(nyquist), b20 = q->usableBand20dBHz.value_or(nyquist);
+    const double b10 = multiReference ? nyquist : q->usableBand10dBHz.value_or(nyquist);
+    const double b20 = multiReference ? nyquist : q->usableBand20dBHz.value_or(nyquist);
     band10 = haveBand ? std::min(band10, b10) : b10;
     band20 = haveBand ? std::min(band20, b20) : b20;
     haveBand = true;
   }
   if (accepted == 0) {
-    err << "mozzi-cli frf: every hit was rejected\n" << text.str();
+    err << "mozzi-cli frf: every " << (multiReference ? "block" : "hit") << " was rejected\n" << text.str();
     return kExitFailure;
   }
   auto frf = averager->frf();
@@ -229,16 +297,27 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     err << "mozzi-cli frf: " << frf.error().describe() << "\n";
     return kExitFailure;
   }
-  // minimum coherence over (0, f_10] per response
+  // minimum (multiple) coherence over (0, f_10] per response; below Nyquist
+  // with several references (the Nyquist line of a real signal carries no phase)
+  const char* cohName = multiReference ? "multiple coherence" : "coherence";
   nlohmann::json jsonCoh = nlohmann::json::array();
   double minCoh = 1.0;
   for (Eigen::Index o = 0; o < frf->responseCount(); ++o) {
     double m = 1.0;
     for (Eigen::Index k = 1; k < frf->lineCount() && frf->frequencyHz[k] <= band10; ++k) {
+      if (multiReference && k == frf->lineCount() - 1) break;
       m = std::min(m, frf->coherence[0](k, o));
     }
     minCoh = std::min(minCoh, m);
-    jsonCoh.push_back({{"response", core::formatDof(frf->responses[static_cast<std::size_t>(o)])}, {"min_coherence", m}});
+    jsonCoh.push_back(
+        {{"response", core::formatDof(frf->responses[static_cast<std::size_t>(o)])}, {"min_coherence", m}});
+  }
+  double worstCondition = 1.0, worstConditionHz = 0.0;
+  if (multiReference) {
+    const core::Vector cond = averager->referenceConditionNumber();
+    Eigen::Index k = 0;
+    worstCondition = cond.maxCoeff(&k);
+    worstConditionHz = frf->frequencyHz[k];
   }
   if (auto outPath = parsed->value("--out")) {
     auto records = uff::fromFrfMatrix(*frf);
@@ -255,10 +334,14 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   }
   const double tauS = options.exponentialTauS();
   if (parsed->flag("--json")) {
+    nlohmann::json refs = nlohmann::json::array();
+    for (const auto& d : frf->references) refs.push_back(core::formatDof(d));
     nlohmann::json j{{"file", path},
                      {"estimator", sg::frfEstimatorName(*estimator)},
                      {"frf_type", core::frfTypeName(frf->type)},
                      {"reference", core::formatDof(frf->references[0])},
+                     {"references", refs},
+                     {"coherence_kind", multiReference ? "multiple" : "ordinary"},
                      {"hits_accepted", accepted},
                      {"hits_rejected", rejected},
                      {"hits", jsonHits},
@@ -268,16 +351,27 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
                      {"coherence", jsonCoh},
                      {"lines", frf->lineCount()},
                      {"frequency_step_hz", frf->frequencyHz[1] - frf->frequencyHz[0]}};
+    if (multiReference) {
+      j["max_reference_condition_number"] = worstCondition;
+      j["max_reference_condition_hz"] = worstConditionHz;
+    }
     if (tauS > 0.0) j["exponential_window"] = {{"tau_s", tauS}, {"added_decay_rate_per_s", 1.0 / tauS}};
     out << j.dump(2) << "\n";
     return kExitOk;
   }
   out << "FRF " << sg::frfEstimatorName(*estimator) << " (" << core::frfTypeName(frf->type) << ") from " << path
-      << ", reference " << core::formatDof(frf->references[0]) << "\n"
-      << "hits: " << accepted << " accepted, " << rejected << " rejected\n"
-      << text.str() << "usable band: 10 dB down at " << fmt(band10, "%.1f") << " Hz, 20 dB down at "
-      << fmt(band20, "%.1f") << " Hz\n"
-      << "minimum coherence up to " << fmt(band10, "%.1f") << " Hz: " << fmt(minCoh, "%.4f") << "\n";
+      << (multiReference ? ", references " : ", reference ") << dofList(frf->references) << "\n"
+      << (multiReference ? "blocks: " : "hits: ") << accepted << " accepted, " << rejected << " rejected\n"
+      << text.str();
+  if (multiReference) {
+    out << "reference conditioning: worst condition number of the normalised Gff " << fmt(worstCondition) << " at "
+        << fmt(worstConditionHz, "%.1f") << " Hz (limit " << fmt(options.maxReferenceConditionNumber) << ")\n"
+        << "minimum multiple coherence below Nyquist: " << fmt(minCoh, "%.4f") << "\n";
+  } else {
+    out << "usable band: 10 dB down at " << fmt(band10, "%.1f") << " Hz, 20 dB down at " << fmt(band20, "%.1f")
+        << " Hz\n"
+        << "minimum " << cohName << " up to " << fmt(band10, "%.1f") << " Hz: " << fmt(minCoh, "%.4f") << "\n";
+  }
   if (tauS > 0.0) {
     out << "exponential window tau = " << fmt(tauS) << " s adds " << fmt(1.0 / tauS)
         << " 1/s to every pole's decay: subtract it from identified zeta*omega_n\n";
@@ -287,8 +381,9 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
 
 const CommandRegistrar kRegistrar({"frf",
                                    "HITS.uff --estimator H1|H2|Hv [--force-window S] [--exp-window TAU] "
-                                   "[--reference NODE:DIR] [--out FRF.uff] [--json]",
-                                   "Hammer FRFs with coherence from UFF 58 time records, hit by hit checked",
+                                   "[--reference NODE:DIR[,NODE:DIR...]] [--max-condition C] [--out FRF.uff] [--json]",
+                                   "Hammer FRFs with coherence from UFF 58 time records, hit by hit checked; "
+                                   "several references: multiple-input H1 (shakers)",
                                    frfCommand});
 
 }  // namespace
