@@ -316,8 +316,9 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
   // Step 6: ambiguity between the top two.
   const bool significant = fittedCount > 0 && d.ranking[0].likelihoodRatio > d.threshold;
   if (significant && fittedCount > 1) {
-    auto flip = engine::flipProbability(problem, theta, alt[0], alt[1], options.ambiguitySamples, options.seed,
-                                        [&] { return keepGoing(0.95, "ambiguity check"); });
+    auto flip = engine::flipProbability(
+        problem, theta, alt[0], alt[1], d.ranking[0].likelihoodRatio - d.ranking[1].likelihoodRatio,
+        options.ambiguitySamples, options.seed, [&] { return keepGoing(0.95, "ambiguity check"); });
     if (!flip) return flip.error();
     d.flipProbability = *flip;
     if (d.flipProbability > options.flipLimit) {
@@ -387,7 +388,8 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
       d.verdict = Verdict::Ambiguous;
       d.verdictSet = {0, 1};
       ex << "It cannot be told apart from " << label(d.ranking[1].candidate) << " (" << sizes(d.ranking[1])
-         << "): simulating from either fit, the other fits better in " << formatNumber(100 * d.flipProbability, 3)
+         << ", likelihood ratio " << formatNumber(d.ranking[1].likelihoodRatio, 4)
+         << "): simulating from the fits, the ranking flips in up to " << formatNumber(100 * d.flipProbability, 3)
          << "% of the data sets. They differ most at " << d.separatingMeasurement
          << "; a more precise measurement there would separate them.";
     } else {
@@ -395,7 +397,7 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
       d.verdictSet = {0};
       ex << "Attributed";
       if (d.flipProbability >= 0.0) {
-        ex << " (the runner-up " << label(d.ranking[1].candidate) << " wins in "
+        ex << " (against the runner-up " << label(d.ranking[1].candidate) << " the ranking flips in "
            << formatNumber(100 * d.flipProbability, 3) << "% of simulations)";
       }
       ex << '.';

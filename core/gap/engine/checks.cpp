@@ -1,5 +1,6 @@
 #include "core/gap/engine/checks.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -28,11 +29,11 @@ Eigen::VectorXd withPhi(const Eigen::VectorXd& theta, const Eigen::VectorXd& phi
 }  // namespace
 
 Result<double> flipProbability(const GapProblem& problem, const std::vector<Scaled>& theta, const FittedAlternative& a,
-                               const FittedAlternative& b, int samples, unsigned long long seed,
+                               const FittedAlternative& b, double observedMargin, int samples, unsigned long long seed,
                                const std::function<bool()>& keepGoing) {
   const std::string where = "ambiguity check";
   const auto p = static_cast<Eigen::Index>(theta.size());
-  int flips = 0, total = 0;
+  int flips[2] = {0, 0}, total[2] = {0, 0};
   const FittedAlternative* sides[2] = {&a, &b};
   for (int side = 0; side < 2; ++side) {
     const FittedAlternative& truth = *sides[side];
@@ -51,12 +52,16 @@ Result<double> flipProbability(const GapProblem& problem, const std::vector<Scal
       const FitResult fo =
           fitModel(mo, {other.u, withPhi(truth.u.head(p), Eigen::VectorXd::Zero(other.u.size() - p))}, warmFit());
       if (!ft.ok || !fo.ok) continue;
-      ++total;
-      flips += fo.nll < ft.nll;
+      ++total[side];
+      // margin of a over b in this data set: 2 (NLL_b - NLL_a)
+      const double margin = side == 0 ? 2.0 * (fo.nll - ft.nll) : 2.0 * (ft.nll - fo.nll);
+      flips[side] += side == 0 ? margin < 0.0 : margin >= observedMargin;
     }
   }
-  if (total == 0) return makeError(ErrorCode::NumericalFailure, "no simulated data set could be fitted", where);
-  return static_cast<double>(flips) / total;
+  if (total[0] == 0 || total[1] == 0) {
+    return makeError(ErrorCode::NumericalFailure, "no simulated data set could be fitted", where);
+  }
+  return std::max(static_cast<double>(flips[0]) / total[0], static_cast<double>(flips[1]) / total[1]);
 }
 
 Result<double> heldOutImprovement(const GapProblem& problem, const std::vector<Scaled>& theta,

@@ -20,10 +20,15 @@ struct FittedAlternative {
   Eigen::VectorXd u;
 };
 
-// Fraction of simulations in which the other alternative fits better than the
-// one the data were simulated from; `samples` simulations from each side.
+// How plausible a flip of the top two is, from `samples` simulations of each
+// fitted alternative (a ranked first, with an observed margin
+// D = LR_a - LR_b >= 0): the larger of
+//   P_a(LR_b > LR_a)        were a the truth, b would win this often, and
+//   P_b(LR_a - LR_b >= D)   were b the truth, a would look this much better
+//                           this often (a parametric-bootstrap Cox test).
+// Both are small only when the data separate the two.
 Result<double> flipProbability(const GapProblem& problem, const std::vector<Scaled>& theta, const FittedAlternative& a,
-                               const FittedAlternative& b, int samples, unsigned long long seed,
+                               const FittedAlternative& b, double observedMargin, int samples, unsigned long long seed,
                                const std::function<bool()>& keepGoing);
 
 // 1 - sum_f SS_effect(f) / sum_f SS_baseline(f), where SS(f) is the squared

@@ -151,6 +151,10 @@ namespace {
 // against the curvature of any physical effect over its range, large against
 // the ~1e-12 rounding of an eigen-solution (error ~ 1e-12 / 1e-6).
 constexpr double kJacobianStep = 1e-6;
+// sigma_min / sigma_max of the whitened Jacobian below this is rank deficiency:
+// a parameter combination moves the residuals by less than 1e-7 of the best
+// determined one, beyond what a numerical Jacobian can resolve.
+constexpr double kRankTolerance = 1e-7;
 
 // Data residuals as one cost with one 1-vector block per parameter.
 class DataCost : public ceres::CostFunction {
@@ -253,6 +257,13 @@ void covarianceAt(const Model& model, FitResult& fit) {
     for (std::size_t c = 0; c < free.size(); ++c) fit.nullDirection[free[c]] = v[static_cast<Eigen::Index>(c)];
   }
 
+  // Ceres' dense-SVD covariance refuses the same matrices (sigma_min / sigma_max
+  // below sqrt(min_reciprocal_condition_number)); deciding here first keeps its
+  // log line out of reports.
+  if (free.empty() || !(fit.singularValues[fit.singularValues.size() - 1] > kRankTolerance * fit.singularValues[0])) {
+    fit.rankDeficient = true;
+    return;
+  }
   Built b;
   build(model, fit.u, b);
   ceres::Covariance::Options co;
@@ -260,7 +271,7 @@ void covarianceAt(const Model& model, FitResult& fit) {
   // Jacobian is below sqrt(min_reciprocal_condition_number) = 1e-7: we report
   // that as "not identifiable" instead of pseudo-inverting (GAP.md principles).
   co.algorithm_type = ceres::DENSE_SVD;
-  co.min_reciprocal_condition_number = 1e-14;
+  co.min_reciprocal_condition_number = kRankTolerance * kRankTolerance;
   co.null_space_rank = 0;
   co.num_threads = 1;
   ceres::Covariance covariance(co);

@@ -40,6 +40,10 @@ class LinearGapProblem : public GapProblem {
     return p;
   }
 
+  // Gaussian prior N(0, sigma^2) on every calibration parameter (0: none).
+  void setPrior(double sigma) { priorSigma_ = sigma; }
+  const Eigen::VectorXd& measured() const { return y_; }
+
   Eigen::VectorXd prediction(const double* theta, int k, const double* phi) const {
     Eigen::VectorXd pred = a_ * Eigen::Map<const Eigen::VectorXd>(theta, a_.cols());
     if (k >= 0) {
@@ -53,7 +57,7 @@ class LinearGapProblem : public GapProblem {
   std::vector<Parameter> calibrationParameters() const override {
     std::vector<Parameter> out;
     for (Eigen::Index j = 0; j < a_.cols(); ++j)
-      out.push_back({"theta" + std::to_string(j), "", 0.0, -100.0, 100.0, 0.0});
+      out.push_back({"theta" + std::to_string(j), "", 0.0, -100.0, 100.0, priorSigma_});
     return out;
   }
   std::vector<Candidate> candidates() const override {
@@ -111,6 +115,7 @@ class LinearGapProblem : public GapProblem {
   Eigen::VectorXd y_;
   double sigma_;
   int folds_;
+  double priorSigma_ = 0.0;
 };
 
 // Smooth, mutually non-orthogonal columns on t in [0, 1] (a polynomial
@@ -133,5 +138,69 @@ inline Eigen::VectorXd bump(int n, double centre, double width) {
   }
   return v;
 }
+
+}  // namespace mozzi::core::gap::testing
+
+namespace mozzi::core::gap::testing {
+
+// A mildly nonlinear problem: prediction = theta0 exp(-theta1 t) + theta0
+// (exp(phi b_k(t)) - 1), with b_k a bump at centre_k. The effect interacts
+// with the calibration (its signature scales with theta0) and is nonlinear in
+// phi, so the linearised bootstrap is an approximation here.
+class NonlinearGapProblem : public GapProblem {
+ public:
+  NonlinearGapProblem(int n, std::vector<double> centres, double sigma)
+      : n_(n), centres_(std::move(centres)), sigma_(sigma), y_(Eigen::VectorXd::Zero(n)) {}
+
+  Eigen::VectorXd prediction(const double* theta, int k, const double* phi) const {
+    Eigen::VectorXd pred(n_);
+    for (int i = 0; i < n_; ++i) {
+      const double t = (i + 0.5) / n_;
+      pred[i] = theta[0] * std::exp(-theta[1] * t);
+    }
+    if (k >= 0) {
+      const Eigen::VectorXd b = bump(n_, centres_[static_cast<std::size_t>(k)], 0.06);
+      pred += theta[0] * ((phi[0] * b).array().exp() - 1.0).matrix();
+    }
+    return pred;
+  }
+  void setMeasured(Eigen::VectorXd y) { y_ = std::move(y); }
+
+  std::string dataKind() const override { return "nonlinear"; }
+  std::vector<Parameter> calibrationParameters() const override {
+    return {{"amplitude", "", 1.0, 0.1, 10.0, 0.0}, {"decay", "1/s", 1.0, 0.0, 5.0, 0.5}};
+  }
+  std::vector<Candidate> candidates() const override {
+    std::vector<Candidate> out;
+    for (std::size_t k = 0; k < centres_.size(); ++k) {
+      out.push_back({"element_stiffness", {std::to_string(k + 1) + "+X"}, {{"log_factor", "", 0.0, -1.0, 1.0, 0.0}}});
+    }
+    return out;
+  }
+  int residualCount() const override { return n_; }
+  bool residuals(const double* theta, int k, const double* phi, double* r) const override {
+    Eigen::Map<Eigen::VectorXd>(r, n_) = (prediction(theta, k, phi) - y_) / sigma_;
+    return true;
+  }
+  std::unique_ptr<GapProblem> simulated(const double* theta, int k, const double* phi,
+                                        std::mt19937_64& rng) const override {
+    auto p = std::make_unique<NonlinearGapProblem>(*this);
+    p->y_ = prediction(theta, k, phi);
+    std::normal_distribution<double> noise(0.0, sigma_);
+    for (int i = 0; i < n_; ++i) p->y_[i] += noise(rng);
+    return p;
+  }
+  GapMetrics metrics(const double* theta, int k, const double* phi) const override {
+    GapMetrics m;
+    m.overall = (prediction(theta, k, phi) - y_).norm() / y_.norm();
+    return m;
+  }
+
+ private:
+  int n_;
+  std::vector<double> centres_;
+  double sigma_;
+  Eigen::VectorXd y_;
+};
 
 }  // namespace mozzi::core::gap::testing
