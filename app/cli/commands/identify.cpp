@@ -1,6 +1,6 @@
 // mozzi-cli identify: modal identification of the FRFs in a UFF file
-// (docs/cli/identify.md). pLSCF + LSFD + Ceres refinement (standard errors), or
-// single-mode peak picking / circle fit over the band.
+// (docs/cli/identify.md). pLSCF or LSCE + LSFD + Ceres refinement (standard
+// errors), or single-mode peak picking / circle fit over the band.
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -11,6 +11,7 @@
 #include "app/cli/args.h"
 #include "app/cli/command.h"
 #include "core/io/uff/uff.h"
+#include "core/modal/lsce.h"
 #include "core/modal/plscf.h"
 #include "core/modal/refine.h"
 #include "core/modal/sdof.h"
@@ -23,7 +24,7 @@ namespace md = core::modal;
 namespace uff = core::io::uff;
 
 constexpr const char* kUsage =
-    "Usage: mozzi-cli identify FRF.uff --band LO:HI [--method plscf|circle|peak] [--max-order N]\n"
+    "Usage: mozzi-cli identify FRF.uff --band LO:HI [--method plscf|lsce|circle|peak] [--max-order N]\n"
     "                          [--stabilization OUT.csv] [--modes OUT.uff] [--json]\n";
 
 int usage(std::ostream& err, const std::string& why) {
@@ -66,14 +67,15 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     if (!ok) return usage(err, "--band must be LO:HI in Hz with 0 <= LO < HI (got '" + *bandText + "')");
   }
   const std::string method = parsed->value("--method").value_or("plscf");
-  if (method != "plscf" && method != "circle" && method != "peak") {
-    return usage(err, "unknown --method '" + method + "' (available: plscf, circle, peak)");
+  if (method != "plscf" && method != "lsce" && method != "circle" && method != "peak") {
+    return usage(err, "unknown --method '" + method + "' (available: plscf, lsce, circle, peak)");
   }
   int maxOrder = 60;
   auto mo = parsed->number("--max-order");
   if (!mo) return usage(err, mo.error().message);
   if (mo->has_value()) {
-    if (!(**mo >= 8 && **mo <= 400 && std::floor(**mo) == **mo)) return usage(err, "--max-order must be an integer in 8..400");
+    if (!(**mo >= 8 && **mo <= 400 && std::floor(**mo) == **mo))
+      return usage(err, "--max-order must be an integer in 8..400");
     maxOrder = static_cast<int>(**mo);
   }
 
@@ -84,14 +86,17 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
 
   md::ModalModel model;
   std::vector<Row> rows;
-  if (method == "plscf") {
-    md::PlscfOptions opt;
+  if (method == "plscf" || method == "lsce") {
+    md::LsceOptions opt;  // the pLSCF options plus the LSCE window (defaults)
     opt.bandLowHz = lo;
     opt.bandHighHz = hi;
     opt.maxOrder = maxOrder;
-    auto res = md::identifyPlscf(*frf, opt);
+    const bool lsce = method == "lsce";
+    auto res = lsce ? md::identifyLsce(*frf, opt) : md::identifyPlscf(*frf, opt);
     if (auto csv = parsed->value("--stabilization")) {
-      auto diag = res ? core::Result<md::StabilizationDiagram>(res->diagram) : md::plscfStabilization(*frf, opt);
+      auto diag = res    ? core::Result<md::StabilizationDiagram>(res->diagram)
+                  : lsce ? md::lsceStabilization(*frf, opt)
+                         : md::plscfStabilization(*frf, opt);
       if (!diag) return fail(err, diag.error());
       if (auto w = md::writeStabilizationCsv(*diag, *csv); !w) return fail(err, w.error());
     }
@@ -103,11 +108,11 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     if (!refined) return fail(err, refined.error());
     model = refined->model;
     for (std::size_t r = 0; r < model.modes.size(); ++r) {
-      rows.push_back({model.modes[r].frequencyHz(), model.modes[r].zeta(), refined->frequencyStdHz[r],
-                      refined->zetaStd[r], 0.0});
+      rows.push_back(
+          {model.modes[r].frequencyHz(), model.modes[r].zeta(), refined->frequencyStdHz[r], refined->zetaStd[r], 0.0});
     }
   } else {
-    if (parsed->value("--stabilization")) return usage(err, "--stabilization needs --method plscf");
+    if (parsed->value("--stabilization")) return usage(err, "--stabilization needs --method plscf or lsce");
     auto est = method == "peak" ? md::peakPicking(*frf, 0, lo, hi) : md::circleFit(*frf, 0, lo, hi);
     if (!est) return fail(err, est.error());
     model.responses = frf->responses;
@@ -153,7 +158,8 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     nlohmann::json j;
     j["method"] = method;
     j["band_hz"] = {lo, hi};
-    j["normalisation"] = shapes->normalisation == md::Normalisation::UnitModalMass ? "unit modal mass" : "max component";
+    j["normalisation"] =
+        shapes->normalisation == md::Normalisation::UnitModalMass ? "unit modal mass" : "max component";
     j["modes"] = nlohmann::json::array();
     for (const auto& r : rows) {
       nlohmann::json m = {{"frequency_hz", r.f}, {"zeta", r.zeta}, {"eta", 2 * r.zeta}, {"mpc", r.mpc}};
@@ -179,7 +185,7 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
 }
 
 const CommandRegistrar kRegistrar({"identify",
-                                   "FRF.uff --band LO:HI [--method plscf|circle|peak] [--max-order N] "
+                                   "FRF.uff --band LO:HI [--method plscf|lsce|circle|peak] [--max-order N] "
                                    "[--stabilization OUT.csv] [--modes OUT.uff] [--json]",
                                    "Modal identification: frequencies, damping (zeta, eta), standard errors, MPC",
                                    identifyCommand});

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "app/cli/command.h"
+#include "cli_run.h"
 #include "core/io/uff/uff.h"
 #include "core/modal/synthetic_system.h"
-#include "cli_run.h"
 
 namespace mozzi::cli {
 namespace {
@@ -39,8 +39,8 @@ std::string writeSyntheticUff() {
 TEST(IdentifyCli, PlscfJsonCsvAndModes) {
   const std::string in = writeSyntheticUff();
   const std::string csv = tempPath("stab.csv"), modes = tempPath("modes.uff");
-  const CliRun r = run({"identify", in, "--band", "20:380", "--max-order", "40", "--json", "--stabilization", csv,
-                        "--modes", modes});
+  const CliRun r = run(
+      {"identify", in, "--band", "20:380", "--max-order", "40", "--json", "--stabilization", csv, "--modes", modes});
   ASSERT_EQ(r.code, kExitOk) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   const auto sys = core::modal::testing::sixModeSystem();
@@ -66,6 +66,47 @@ TEST(IdentifyCli, PlscfJsonCsvAndModes) {
   EXPECT_NEAR(modal->frequencyHz[3], 150.0, 0.15);
 }
 
+// --method lsce on the same file (it starts at 1 Hz: the missing lines below
+// are zero-filled, 1 Hz <= 5% of 380 Hz): the six modes within 0.1% and 5%
+// (0.2% noise: LSCE also holds the 10%-damped mode, tests/core/modal/lsce_test.cpp),
+// the stabilization CSV; a zoom record is refused with exit 1.
+TEST(IdentifyCli, LsceJsonAndZoomRefusal) {
+  const std::string in = writeSyntheticUff();
+  const std::string csv = tempPath("stab_lsce.csv");
+  const CliRun r = run(
+      {"identify", in, "--band", "20:380", "--method", "lsce", "--max-order", "40", "--json", "--stabilization", csv});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["method"], "lsce");
+  const auto sys = core::modal::testing::sixModeSystem();
+  ASSERT_EQ(j["modes"].size(), 6u);
+  for (int m = 0; m < 6; ++m) {
+    const auto& mode = j["modes"][static_cast<std::size_t>(m)];
+    EXPECT_LT(std::abs(mode["frequency_hz"].get<double>() - sys.fn[m]) / sys.fn[m], 1e-3) << "mode " << m + 1;
+    EXPECT_LT(std::abs(mode["zeta"].get<double>() - sys.zeta[m]) / sys.zeta[m], 0.05) << "mode " << m + 1;
+    EXPECT_GT(mode["zeta_std"].get<double>(), 0.0);
+  }
+  std::ifstream c(csv);
+  std::string header, first;
+  std::getline(c, header);
+  EXPECT_EQ(header, "order,frequency_hz,zeta,status");
+  EXPECT_TRUE(std::getline(c, first) && !first.empty());
+
+  // 60 .. 400 Hz zoom record: LSCE needs the FRFs from 0 Hz.
+  const auto zoomFrf = core::modal::testing::accelerances(sys, {2}, 60.0, 400.0, 0.1, 0.0, 3);
+  auto records = core::io::uff::fromFrfMatrix(zoomFrf);
+  ASSERT_TRUE(records.ok());
+  core::io::uff::UffFile file;
+  for (auto& rec : *records) file.datasets.push_back(core::io::uff::makeDataset(std::move(rec)));
+  const std::string zoom = tempPath("zoom.uff");
+  ASSERT_TRUE(core::io::uff::writeFile(zoom, file).ok());
+  const CliRun z = run({"identify", zoom, "--band", "70:380", "--method", "lsce"});
+  EXPECT_EQ(z.code, kExitFailure);
+  EXPECT_NE(z.err.find("baseband"), std::string::npos) << z.err;
+  // The same record is fine for pLSCF.
+  EXPECT_EQ(run({"identify", zoom, "--band", "70:380", "--max-order", "40"}).code, kExitOk);
+}
+
 TEST(IdentifyCli, PeakAndCircleOnOneMode) {
   const std::string in = writeSyntheticUff();
   for (const char* method : {"peak", "circle"}) {
@@ -83,9 +124,11 @@ TEST(IdentifyCli, PeakAndCircleOnOneMode) {
 
 TEST(IdentifyCli, UsageAndFailureExitCodes) {
   const std::string in = writeSyntheticUff();
-  EXPECT_EQ(run({"identify", in}).code, kExitUsage);                                   // no --band
-  EXPECT_EQ(run({"identify", in, "--band", "300:200"}).code, kExitUsage);              // LO >= HI
+  EXPECT_EQ(run({"identify", in}).code, kExitUsage);                       // no --band
+  EXPECT_EQ(run({"identify", in, "--band", "300:200"}).code, kExitUsage);  // LO >= HI
   EXPECT_EQ(run({"identify", in, "--band", "20:380", "--method", "x"}).code, kExitUsage);
+  EXPECT_EQ(run({"identify", in, "--band", "140:160", "--method", "peak", "--stabilization", "s.csv"}).code,
+            kExitUsage);
   EXPECT_EQ(run({"identify", tempPath("missing.uff"), "--band", "20:380"}).code, kExitFailure);
   const CliRun none = run({"identify", in, "--band", "100:130", "--max-order", "30"});  // no mode in band
   EXPECT_EQ(none.code, kExitFailure);
