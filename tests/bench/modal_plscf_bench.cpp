@@ -1,7 +1,7 @@
 // pLSCF stabilization timing (issue 5 targets: ModeLAB beam chart, 9 FRFs x
 // 48,000 lines, orders up to 120 under 0.05 s; 100 FRFs x 20,000 lines,
 // orders up to 120, under 0.2 s single reference and 2 s with three).
-// Results and commands: docs/performance/modal.md.
+// Results and commands: docs/performance/modal.md. Also LSCE on the beam.
 
 #include <benchmark/benchmark.h>
 
@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/io/modelab_ascii.h"
+#include "core/modal/lsce.h"
 #include "core/modal/plscf.h"
 
 namespace mozzi::core::modal {
@@ -22,7 +23,8 @@ const FrfMatrix& beam() {
     std::vector<Dof> hammers;
     for (int i = 1; i <= 9; ++i) {
       char name[96];
-      std::snprintf(name, sizeof name, "%s/modelab-beam/SignalCalc/ASCII%05d/Hxysv%05d.txt", MOZZI_SHARED_DATA_DIR, i, i);
+      std::snprintf(name, sizeof name, "%s/modelab-beam/SignalCalc/ASCII%05d/Hxysv%05d.txt", MOZZI_SHARED_DATA_DIR, i,
+                    i);
       files.emplace_back(name);
       hammers.push_back(Dof{i, Direction::X, false});
     }
@@ -57,7 +59,8 @@ FrfMatrix synthetic(int refs) {
         Complex acc(0.0, 0.0);
         for (int r = 0; r < nm; ++r) {
           const Complex res = phi(o, r) * phi(ref, r) / Complex(0.0, 2.0 * poles[static_cast<std::size_t>(r)].imag());
-          acc += res / (iw - poles[static_cast<std::size_t>(r)]) + std::conj(res) / (iw - std::conj(poles[static_cast<std::size_t>(r)]));
+          acc += res / (iw - poles[static_cast<std::size_t>(r)]) +
+                 std::conj(res) / (iw - std::conj(poles[static_cast<std::size_t>(r)]));
         }
         h(k, o) = -w * w * acc * Complex(1.0 + 0.01 * nd(rng), 0.01 * nd(rng));
       }
@@ -87,8 +90,32 @@ void runStabilization(benchmark::State& state, const FrfMatrix& frf, double lo, 
   state.counters["poles"] = static_cast<double>(poles);
 }
 
-void BM_BeamChart(benchmark::State& state) { runStabilization(state, beam(), 65.0, 1000.0); }
+void BM_BeamChart(benchmark::State& state) {
+  runStabilization(state, beam(), 65.0, 1000.0);
+}
 BENCHMARK(BM_BeamChart)->Arg(60)->Arg(120)->Unit(benchmark::kMillisecond);
+
+// LSCE on the beam (no target in issue 5; for comparison with pLSCF): impulse
+// responses 0 .. 1000 Hz, automatic window, same orders.
+void BM_BeamChartLsce(benchmark::State& state) {
+  LsceOptions opt;
+  opt.bandLowHz = 65.0;
+  opt.bandHighHz = 1000.0;
+  opt.minOrder = 2;
+  opt.maxOrder = static_cast<int>(state.range(0));
+  std::size_t poles = 0;
+  for (auto _ : state) {
+    auto d = lsceStabilization(beam(), opt);
+    if (!d.ok()) {
+      state.SkipWithError(d.error().describe().c_str());
+      return;
+    }
+    poles = d->poles.size();
+    benchmark::DoNotOptimize(poles);
+  }
+  state.counters["poles"] = static_cast<double>(poles);
+}
+BENCHMARK(BM_BeamChartLsce)->Arg(60)->Arg(120)->Unit(benchmark::kMillisecond);
 
 void BM_Synthetic100x20000_OneRef(benchmark::State& state) {
   static const FrfMatrix frf = synthetic(1);
