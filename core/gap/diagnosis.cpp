@@ -37,9 +37,13 @@ using engine::Scaled;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Auto null method: full refits while samples x (candidates + 1) x residuals
-// stays below this many residual entries per refit pass (about a minute of
-// small-problem fitting on one core); beyond it the linearised bootstrap.
-constexpr double kFullRefitBudget = 2e7;
+// stays below this; a refit costs ~5 us per residual entry on the small test
+// problems (engine_bootstrap_test), more for FRF synthesis, so 1e6 keeps the
+// full bootstrap within seconds to a minute; beyond it the linearised one.
+constexpr double kFullRefitBudget = 1e6;
+// A calibrated parameter this many prior sigmas from its nominal is worth a
+// sentence: candidates that can stand in for it gain likelihood from the prior.
+constexpr double kPriorTension = 3.0;
 // An LR difference below 2 (one AIC unit) does not separate two candidates;
 // only then does AICc order them (Burnham and Anderson 2002, §2.6).
 constexpr double kAiccTieBand = 2.0;
@@ -292,7 +296,11 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
   for (std::size_t i = 0; i + 1 < order.size(); ++i) {
     const auto& a = fitted[order[i]];
     const auto& b = fitted[order[i + 1]];
-    if (a.likelihoodRatio - b.likelihoodRatio < kAiccTieBand && b.aicc < a.aicc) std::swap(order[i], order[i + 1]);
+    // never across the threshold: significance is decided by LR alone
+    const bool sameSide = (a.likelihoodRatio > d.threshold) == (b.likelihoodRatio > d.threshold);
+    if (sameSide && a.likelihoodRatio - b.likelihoodRatio < kAiccTieBand && b.aicc < a.aicc) {
+      std::swap(order[i], order[i + 1]);
+    }
   }
   std::vector<engine::FittedAlternative> alt;
   for (std::size_t i : order) {
@@ -340,6 +348,16 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
      << formatNumber(1 - options.alpha, 3) << " quantile of the largest likelihood ratio over " << identifiable.size()
      << " identifiable candidate(s) in " << d.bootstrapSamples << " data sets simulated without an effect ("
      << (linear ? "linearised refits" : "full refits") << (null->fromCache ? ", cached" : "") << "). ";
+  for (std::size_t i = 0; i < d.calibration.size(); ++i) {
+    const Parameter& c = d.calibration[i];
+    const double pull = c.priorSigma > 0.0 ? std::abs(d.calibrated[i] - c.nominal) / c.priorSigma : 0.0;
+    if (pull > kPriorTension) {
+      ex << c.name << " calibrates to " << formatNumber(d.calibrated[i], 4) << ", " << formatNumber(pull, 2)
+         << " prior standard deviations from its nominal " << formatNumber(c.nominal, 4)
+         << ": an effect that can stand in for it gains likelihood from the prior alone (the threshold includes "
+            "this). ";
+    }
+  }
   if (identifiable.empty()) {
     d.verdict = Verdict::NotIdentifiable;
     ex << "No candidate effect can be identified from these data:";

@@ -20,7 +20,7 @@ const char* verdictName(Verdict verdict);  // "effect", "none", "ambiguous", ...
 // diagnosis decides"): full nonlinear refits, or the linearisation about the
 // baseline (exact for linear-Gaussian problems, checked against full refits in
 // tests/core/gap/engine_bootstrap_test.cpp). Auto refits fully when
-// bootstrapSamples x (candidates + 1) x residualCount <= 2e7.
+// bootstrapSamples x (candidates + 1) x residualCount <= 1e6.
 enum class NullMethod { Auto, FullRefit, Linearised };
 
 struct DiagnosisOptions {

@@ -126,7 +126,7 @@ TEST(EngineDiagnosis, PlantedSizeLiesWithinItsStandardErrorAsTheoryPredicts) {
     within2 += err <= 2.0;
   }
   std::printf("planted: found %d of %d; within 1 se %d, within 2 se %d\n", found, trials, within1, within2);
-  // Size 0.4 is ~8 standard errors (se = sigma / |P s| ~ 0.05): found every
+  // Size 0.4 is 6.5 standard errors (se = sigma / |P s| = 0.062): found every
   // time but for the ~1% goodness-of-fit failures; GAP.md asks >= 90% top-1.
   EXPECT_GE(found, 95);
   // Gaussian estimate with exact covariance: P(|err| <= 1) = 0.683, sd over
