@@ -193,7 +193,7 @@ class FunctionGeneratorDevice final : public Device {
                              valid.error().message + " (" + key + " at " +
                                  core::formatNumber(parameterReal(*params, "actuator.newtons_per_volt", 500.0)) +
                                  " N/V)",
-                             key);
+                             "parameter " + key);  // as applyParameters names them
     }
     AcquisitionConfig applied;
     applied.parameters = *params;
