@@ -46,7 +46,7 @@ struct StabilityGapModel {
   stability::ForkTorsion bicycleTorsion;      // reference torsion joint (phi = 1)
   double trailRelSigma = 0.05;                // prior on the trail scale
   int speedFolds = 3;                         // number of speed ranges for held-out checks
-  double trackingStep = 0.5;                  // [m/s] mode tracking grid between measured speeds
+  double trackingStep = 1.0;  // [m/s] mode tracking grid between measured speeds (Sharp 1971: same names as 0.25)
 };
 
 // One measured frequency: mode name as core/stability names it ("weave",
