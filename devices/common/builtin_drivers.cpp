@@ -13,6 +13,8 @@ DriverRegistry& builtinDrivers() {
     (void)r.add(mcc::makeUsb1608FsPlusDriver());
     (void)r.add(sim::makeHammerStationDriver());
     (void)r.add(sim::makeStiffnessRigDriver());
+    (void)r.add(sim::makeTyreTesterDriver());
+    (void)r.add(sim::makeReplayDriver());
     (void)r.add(funcgen::makeFunctionGeneratorDriver());
     return r;
   }();

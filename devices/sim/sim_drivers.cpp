@@ -9,6 +9,7 @@
 
 #include "core/signal/hit_synthesis.h"
 #include "devices/mcc_usb1608fsplus/usb1608fsplus_protocol.h"
+#include "devices/sim/sim_device.h"
 #include "devices/sim/specimen_models.h"
 
 namespace mozzi::devices::sim {
@@ -22,146 +23,6 @@ double actuatorSineAmplitude(double amplitudeAt1HzN, double frequencyHz) {
 }
 
 namespace {
-
-std::vector<ParameterSpec> commonParameters() {
-  return {
-      ParameterSpec{"sim.seed", "Random seed", ParameterType::Integer, "", 0.0, 4294967295.0, {}, std::int64_t{1},
-                    "same seed, same data: noise, hit timing and faults are reproducible"},
-      ParameterSpec{"sim.realtime", "Real-time pacing", ParameterType::Bool, "", std::nullopt, std::nullopt, {}, true,
-                    "deliver data at the pace of the simulated clock; off = as fast as the consumer takes it"},
-      ParameterSpec{"fault.overrun_probability", "Overrun probability per block", ParameterType::Real, "", 0.0, 1.0, {}, 0.0,
-                    "each block is lost with this probability and reported as an overrun"},
-      ParameterSpec{"fault.disconnect_after_s", "Disconnect after", ParameterType::Real, "s", 0.0, 1e6, {}, 0.0,
-                    "unplug the simulated device after this much data (0 = never)"},
-      ParameterSpec{"fault.timeout_after_s", "Time out after", ParameterType::Real, "s", 0.0, 1e6, {}, 0.0,
-                    "stop sending data after this much data, as a stalled transfer (0 = never)"},
-  };
-}
-
-// Physical values of the inputs for scans [first, first + n): n x inputs.
-class SignalModel {
- public:
-  virtual ~SignalModel() = default;
-  virtual core::Result<void> prepare(const AcquisitionConfig& config) = 0;
-  virtual void generate(std::int64_t first, Eigen::Index n, const std::vector<int>& inputs, core::Matrix& out,
-                        FaultCounters& counters) = 0;
-};
-
-class SimDevice final : public SimulatedRig {
- public:
-  SimDevice(DeviceDescriptor d, Capabilities caps, std::unique_ptr<SignalModel> model)
-      : SimulatedRig(std::move(d), std::move(caps)), model_(std::move(model)) {}
-  ~SimDevice() override { close(); }
-
-  FaultCounters counters() const override {
-    std::lock_guard<std::mutex> l(countersMutex_);
-    return counters_;
-  }
-
-  core::Result<void> open() override {
-    if (state() == DeviceState::Closed) setState(DeviceState::Open);
-    return {};
-  }
-  void close() override {
-    stop();
-    setState(DeviceState::Closed);
-  }
-
- protected:
-  core::Result<void> prepareConfig(AcquisitionConfig& applied) override { return model_->prepare(applied); }
-
-  // A fixed, slightly non-ideal device calibration so that the simulated
-  // codes exercise the whole pipeline (slope and intercept as a real
-  // USB-1608FS-Plus table would hold them).
-  void calibrateChains(std::vector<ChannelChain>& chains) override {
-    for (auto& c : chains) c.calibration = DeviceCalibration{1.0002, -3.0};
-  }
-
-  core::Result<void> beginSession() override {
-    std::lock_guard<std::mutex> l(countersMutex_);
-    counters_ = FaultCounters{};
-    return {};
-  }
-
- private:
-  void runSession() override {
-    const double fs = config_.sampleRateHz;
-    const bool realtime = parameterBool(config_.parameters, "sim.realtime", true);
-    const double pOverrun = parameterReal(config_.parameters, "fault.overrun_probability", 0.0);
-    const double disconnectS = parameterReal(config_.parameters, "fault.disconnect_after_s", 0.0);
-    const double timeoutS = parameterReal(config_.parameters, "fault.timeout_after_s", 0.0);
-    std::mt19937_64 rng(static_cast<std::uint64_t>(parameterInteger(config_.parameters, "sim.seed", 1)) * 7919u + 17u);
-    std::uniform_real_distribution<double> uniform(0.0, 1.0);
-    std::vector<int> inputs;
-    for (const auto& c : config_.channels) inputs.push_back(c.input);
-    const auto wallStart = std::chrono::steady_clock::now();
-    std::int64_t next = 0;       // sample index of the simulated clock
-    std::int64_t delivered = 0;  // scans handed on
-    core::Matrix physical;
-    auto end = [&](EndReason r, const std::string& m) { endSession(r, delivered, m); };
-    for (;;) {
-      if (stopRequested()) return end(EndReason::Stopped, "stopped by the user");
-      if (config_.scanCount > 0 && next >= config_.scanCount)
-        return end(EndReason::Completed, std::to_string(config_.scanCount) + " scans acquired");
-      if (disconnectS > 0.0 && static_cast<double>(next) >= disconnectS * fs) {
-        std::lock_guard<std::mutex> l(countersMutex_);
-        ++counters_.disconnects;
-        return end(EndReason::Disconnected, "the simulated device was unplugged (fault injection); the data so far was kept");
-      }
-      if (timeoutS > 0.0 && static_cast<double>(next) >= timeoutS * fs) {
-        std::lock_guard<std::mutex> l(countersMutex_);
-        ++counters_.timeouts;
-        return end(EndReason::Timeout, "no data within the transfer timeout (fault injection)");
-      }
-      std::int64_t n = config_.blockScans;
-      if (config_.scanCount > 0) n = std::min(n, config_.scanCount - next);
-      if (pOverrun > 0.0 && uniform(rng) < pOverrun) {
-        // The block is lost: report it and skip it on the simulated clock.
-        emit(StreamEvent(OverrunEvent{next, n, true, "simulated FIFO overrun (fault injection)"}));
-        std::lock_guard<std::mutex> l(countersMutex_);
-        ++counters_.overruns;
-        counters_.lostScans += n;
-        next += n;
-        continue;
-      }
-      physical.resize(n, static_cast<Eigen::Index>(inputs.size()));
-      {
-        FaultCounters local;
-        model_->generate(next, static_cast<Eigen::Index>(n), inputs, physical, local);
-        std::lock_guard<std::mutex> l(countersMutex_);
-        counters_.hits += local.hits;
-        counters_.doubleHits += local.doubleHits;
-        counters_.overloadHits += local.overloadHits;
-        counters_.scansGenerated += n;
-      }
-      DataBlock b;
-      b.firstSample = next;
-      const std::size_t nc = chains_.size();
-      b.raw.resize(static_cast<std::size_t>(n) * nc);
-      for (std::int64_t s = 0; s < n; ++s)
-        for (std::size_t c = 0; c < nc; ++c)
-          b.raw[static_cast<std::size_t>(s) * nc + c] = chains_[c].rawFromEngineering(physical(s, static_cast<Eigen::Index>(c)));
-      next += n;
-      delivered += n;
-      if (realtime) paceTo(wallStart, static_cast<double>(next) / fs);
-      emitBlock(std::move(b));
-    }
-  }
-
-  std::unique_ptr<SignalModel> model_;
-  mutable std::mutex countersMutex_;
-  FaultCounters counters_;
-};
-
-InputChannelSpec simInput(const std::string& name, bool iepe) {
-  InputChannelSpec in;
-  in.name = name;
-  in.ranges = mcc::ranges();  // the ranges of the USB-1608FS-Plus the rigs are wired to
-  in.couplings = {Coupling::Dc, Coupling::Ac};
-  in.iepeSupply = iepe;
-  in.resolutionBits = 16;
-  return in;
-}
 
 // ---------------------------------------------------------------- hammer station
 
@@ -195,7 +56,10 @@ class HammerModel final : public SignalModel {
     pOverload_ = parameterReal(config.parameters, "fault.overload_probability", 0.0);
     overloadFactor_ = parameterReal(config.parameters, "fault.overload_factor", 30.0);
     seed_ = static_cast<std::uint64_t>(parameterInteger(config.parameters, "sim.seed", 1));
-    preHit_ = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::llround(0.25 * fs_)));
+    // Quiet time before each hit: 0.25 s, or 15% of the interval when longer, so a
+    // record as long as the interval has its 10% pre-trigger before the first hit.
+    const double quietS = std::max(0.25, 0.15 * static_cast<double>(interval_) / fs_);
+    preHit_ = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::llround(quietS * fs_)));
     segmentIndex_ = -1;
     return {};
   }
@@ -262,10 +126,10 @@ Capabilities hammerCapabilities() {
   caps.rates = RateSpec{1.0, 51200.0, 204800.0, 0.0, true};
   caps.triggers = {TriggerKind::Immediate, TriggerKind::Software};
   caps.fifoSamples = mcc::kFifoSamples;
-  caps.parameters = commonParameters();
+  caps.parameters = commonSimParameters();
   std::vector<ParameterSpec> own = {
       ParameterSpec{"specimen", "Specimen", ParameterType::Choice, "", std::nullopt, std::nullopt, modalSpecimenKeys(),
-                    std::string("fork-a-without-wheel"), "virtual specimen with thesis modal parameters"},
+                    std::string("fork-a-without-wheel"), "virtual specimen with thesis modal parameters (Tables 6, 8, 11, 14, 16, 18, 19, 20; frames §2.1, §2.2)"},
       ParameterSpec{"hammer.tip", "Hammer tip", ParameterType::Choice, "", std::nullopt, std::nullopt, {"steel", "plastic", "rubber"},
                     std::string("plastic"), "contact time pi sqrt(m/k): steel 0.3 ms, plastic 1 ms, rubber 3 ms"},
       ParameterSpec{"hammer.peak_force", "Peak force", ParameterType::Real, "N", 1.0, 4000.0, {}, 200.0, "nominal peak of a hit (+/-10%)"},
@@ -296,7 +160,8 @@ class StiffnessModel final : public SignalModel {
     specimen_ = *spec;
     fs_ = config.sampleRateHz;
     sine_ = parameterText(config.parameters, "mode", "static-ramp") == "sine";
-    maxForce_ = parameterReal(config.parameters, "static.max_force", 1000.0);
+    maxForce_ = parameterReal(config.parameters, "static.max_force", 0.0);
+    if (maxForce_ <= 0.0) maxForce_ = specimen_.testForceN;  // the thesis's ramp for this specimen
     period_ = parameterReal(config.parameters, "static.period_s", 20.0);
     sineHz_ = parameterReal(config.parameters, "sine.frequency", 10.0);
     sineAmp_ = actuatorSineAmplitude(parameterReal(config.parameters, "sine.amplitude_1hz", 1000.0), sineHz_);
@@ -352,14 +217,14 @@ Capabilities stiffnessCapabilities() {
   caps.rates = RateSpec{1.0, 10000.0, 50000.0, 0.0, true};
   caps.triggers = {TriggerKind::Immediate};
   caps.fifoSamples = mcc::kFifoSamples;
-  caps.parameters = commonParameters();
+  caps.parameters = commonSimParameters();
   std::vector<ParameterSpec> own = {
       ParameterSpec{"specimen", "Specimen", ParameterType::Choice, "", std::nullopt, std::nullopt, staticSpecimenKeys(),
-                    std::string("frame-a-front-constrained"), "virtual specimen with thesis static stiffness and twist axis"},
+                    std::string("frame-a-front-constrained"), "virtual specimen with thesis static stiffness and twist axis (Tables 3, 4, 5, 7, 9, 10, 13)"},
       ParameterSpec{"mode", "Actuator mode", ParameterType::Choice, "", std::nullopt, std::nullopt, {"static-ramp", "sine"},
                     std::string("static-ramp"), "slow triangular ramp or sine excitation (§1.1)"},
-      ParameterSpec{"static.max_force", "Ramp peak force", ParameterType::Real, "N", 1.0, 5000.0, {}, 1000.0,
-                    "the actuator applies up to 5000 N statically (§1.1)"},
+      ParameterSpec{"static.max_force", "Ramp peak force", ParameterType::Real, "N", 0.0, 5000.0, {}, 0.0,
+                    "up to 5000 N (§1.1); 0 = the thesis's range for the specimen (±300 N, fork B ±500 N, swing-arms 1000 N assumed)"},
       ParameterSpec{"static.period_s", "Ramp period", ParameterType::Real, "s", 1.0, 3600.0, {}, 20.0, "0 -> +F -> -F -> 0"},
       ParameterSpec{"sine.frequency", "Sine frequency", ParameterType::Real, "Hz", 1.0, 45.0, {}, 10.0, "dynamic excitation up to 45 Hz (§1.1)"},
       ParameterSpec{"sine.amplitude_1hz", "Sine amplitude at 1 Hz", ParameterType::Real, "N", 1.0, 5000.0, {}, 1000.0,
@@ -370,39 +235,16 @@ Capabilities stiffnessCapabilities() {
   return caps;
 }
 
-class SimDriver final : public Driver {
- public:
-  using CapsFn = Capabilities (*)();
-  using ModelFn = std::unique_ptr<SignalModel> (*)();
-  SimDriver(std::string name, std::string description, std::string model, CapsFn caps, ModelFn makeModel)
-      : name_(std::move(name)), description_(std::move(description)), model_(std::move(model)), caps_(caps), makeModel_(makeModel) {}
-  std::string name() const override { return name_; }
-  std::string description() const override { return description_; }
-  bool simulated() const override { return true; }
-  core::Result<std::vector<DeviceDescriptor>> scan() override {
-    return std::vector<DeviceDescriptor>{DeviceDescriptor{name_, model_, 0, 0, "SIM-0001", "sim:0"}};
-  }
-  core::Result<std::unique_ptr<Device>> create(const DeviceDescriptor& d) override {
-    if (d.driver != name_) return core::makeError(core::ErrorCode::InvalidArgument, "descriptor of another driver", d.driver);
-    return std::unique_ptr<Device>(new SimDevice(d, caps_(), makeModel_()));
-  }
-
- private:
-  std::string name_, description_, model_;
-  CapsFn caps_;
-  ModelFn makeModel_;
-};
-
 }  // namespace
 
 std::unique_ptr<Driver> makeHammerStationDriver() {
-  return std::make_unique<SimDriver>("sim-hammer", "Simulated impact hammer station (virtual specimens, thesis §1.4, §1.6)",
+  return makeSimDriver("sim-hammer", "Simulated impact hammer station (virtual specimens, thesis §1.4, §1.6)",
                                      "Simulated impact hammer station", &hammerCapabilities,
                                      +[]() -> std::unique_ptr<SignalModel> { return std::make_unique<HammerModel>(); });
 }
 
 std::unique_ptr<Driver> makeStiffnessRigDriver() {
-  return std::make_unique<SimDriver>("sim-stiffness", "Simulated Motostiffmeter: actuator, load cell, four lasers (thesis §1.1)",
+  return makeSimDriver("sim-stiffness", "Simulated Motostiffmeter: actuator, load cell, four lasers (thesis §1.1)",
                                      "Simulated Motostiffmeter", &stiffnessCapabilities,
                                      +[]() -> std::unique_ptr<SignalModel> { return std::make_unique<StiffnessModel>(); });
 }

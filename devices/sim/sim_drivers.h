@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 
 #include "devices/common/driver.h"
 #include "devices/common/threaded_device.h"
@@ -44,6 +45,36 @@ std::unique_ptr<Driver> makeHammerStationDriver();
 // 1..45 Hz with amplitude falling logarithmically with frequency, load cell
 // +/-200 kg, four lasers of 20 mm range and 4 um resolution.
 std::unique_ptr<Driver> makeStiffnessRigDriver();
+
+// Mototiremeter (thesis §1.8, §1.9): rotating disk up to 50 km/h, yaw
+// (+/-10 deg, +/-6 by default) and camber (+/-54 deg, +/-45 by default) servos,
+// load cells for F_y, M_z and M_y, a rate gyro on the fork; a harmonic yaw test
+// (trigger mark at each frequency step, its level the step's frequency [Hz])
+// or steady side-slip and camber sweeps on one of the six thesis tyres.
+std::unique_ptr<Driver> makeTyreTesterDriver();
+
+// Assumed normalised camber stiffness (dF_y/dgamma)/F_z [1/rad] of the
+// simulated tyres (the thesis tabulates none for motorcycle tyres).
+inline constexpr double kAssumedNormalisedCamberStiffness = 0.9;
+
+// The tyre the tester simulates for a parameter map (defaults completed).
+struct TyreTesterSetup {
+  std::string tyre;                 // catalogue key, "tyre-120-70-r17"
+  double pressurePa = 2e5;
+  double load = 0.0;                // F_z [N]
+  double speed = 0.0;               // V [m/s]
+  double halfLength = 0.0;          // a [m], Table 17 at the pressure
+  double corneringStiffness = 0.0;  // C [N/rad]
+  double camberStiffness = 0.0;     // [N/rad]
+  double relaxationLength = 0.0;    // sigma [m] (eq. 48 unless set)
+  double outerRadius = 0.0;         // [m]
+};
+core::Result<TyreTesterSetup> tyreTesterSetup(const ParameterMap& parameters);
+// Table 17 contact half-length, linear in pressure between the tabulated ones.
+double tyreHalfLengthAt(const std::string& tyreKey, double pressurePa);
+
+// Plays time records back as a live acquisition (see replay_driver.cpp).
+std::unique_ptr<Driver> makeReplayDriver();
 
 // Half-sine contact time of a hammer of mass m on a tip of stiffness k:
 // T = pi sqrt(m / k) (linear contact spring, rigid specimen).

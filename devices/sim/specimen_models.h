@@ -15,6 +15,7 @@
 #include "core/common/eigen_types.h"
 #include "core/common/result.h"
 #include "core/signal/mdof_simulation.h"
+#include "devices/sim/specimen_catalogue.h"
 
 namespace mozzi::devices::sim {
 
@@ -29,19 +30,20 @@ struct ModalSpecimen {
   Eigen::Index excitedDof = 0;      // the hammer point (row of `shapes`)
 
   core::signal::LinearMdof toMdof() const;
+  // Static compliance between DOFs i and j, sum_r phi_ir phi_jr / w_r^2 [m/N].
+  double staticCompliance(Eigen::Index i, Eigen::Index j) const;
 };
 
-// Thesis Table 11 (left): fork A (enduro) without wheel, 38.6 Hz 2.2% lateral,
-// 41.2 Hz 1.8% longitudinal, 67.1 Hz 3.6% torsional.
-ModalSpecimen forkAWithoutWheel();
-// Thesis Table 11 (right): fork A with wheel, 22.3 Hz 2.4%, 23.5 Hz 1.4%, 67.2 Hz 5.9%.
-ModalSpecimen forkAWithWheel();
-// Thesis §2.1: frame A front-constrained modes 26.5 Hz (lateral), 56.8 Hz
-// (longitudinal), 77.0 Hz (torsional); damping not tabulated, 2% assumed.
-ModalSpecimen frameAFrontConstrainedModal();
-
+// The modal model of a catalogue specimen (specimen_catalogue.h): its
+// tabulated frequencies and damping (eta as zeta = eta / 2) on a small mesh of
+// max(3, modes) DOFs with generic, well-conditioned shapes (the thesis shows
+// its shapes only as figures). DOF 0 is the hammer point and, for specimens
+// with static data, the static load point: the modal masses are chosen so
+// that the model's static compliance there, sum_r phi_0r^2 / w_r^2, is the
+// tabulated 1/k_lat (thesis §1: the static compliance is the sum of the modal
+// compliances). Others use the catalogue's modal masses.
 core::Result<ModalSpecimen> modalSpecimen(const std::string& key);
-std::vector<std::string> modalSpecimenKeys();
+std::vector<std::string> modalSpecimenKeys();  // every catalogue key
 
 // Static behaviour under a lateral force F at the load point (plate coordinates
 // (u, v), displacement w normal to the plate): rotation F / (k_lat a_tw) about
@@ -58,12 +60,13 @@ struct StaticSpecimen {
   std::vector<core::Vector2> laserPoints;            // four lasers (u, v) [m]
 
   double displacementAt(const core::Vector2& p, double forceN) const;  // [m]
+  double testForceN = 300.0;  // the thesis's ramp amplitude for this specimen
 };
 
-// Thesis Table 3: frame A front-constrained, 167 kN/m, twist arm 0.551 m
-// (rotational stiffness 50.8 kNm/rad = 167e3 x 0.551^2).
-StaticSpecimen frameAFrontConstrainedStatic();
+// The static model of a catalogue specimen with static data: k_lat and a_tw
+// from its table, the twist axis inclined by the tabulated angle (forks,
+// Tables 10, 13) or an assumed 30 degrees in the plate plane, load point at the
+// plate origin, four lasers on a 200 mm x 150 mm plate around it.
 core::Result<StaticSpecimen> staticSpecimen(const std::string& key);
-std::vector<std::string> staticSpecimenKeys();
 
 }  // namespace mozzi::devices::sim

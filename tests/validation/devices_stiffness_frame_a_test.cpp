@@ -45,7 +45,7 @@ TEST(DevicesStiffnessFrameA, StaticRampGivesBackTable3) {
   ASSERT_EQ(col.end()->reason, EndReason::Completed);
   const core::Matrix v = col.values();
 
-  const auto spec = sim::frameAFrontConstrainedStatic();
+  const auto spec = sim::staticSpecimen("frame-a-front-constrained").value();
   const core::Vector force = v.col(0);
   const core::Matrix disp = v.rightCols(4);
   auto res = core::stiffness::staticTwistTest(spec.laserPoints, force, disp, spec.loadPoint);

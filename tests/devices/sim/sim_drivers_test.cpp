@@ -225,6 +225,7 @@ TEST(StiffnessRig, LasersQuantiseToFourMicrometres) {
   laser.transducer.sensitivityMvPerUnit = 1e6;  // 20 mm on +/-10 V: 1 V/mm
   c.channels.push_back(laser);
   c.parameters["sim.realtime"] = false;
+  c.parameters["static.max_force"] = 1000.0;  // the default follows the specimen (frame A: the thesis's 300 N)
   auto s = run(makeStiffnessRigDriver(), c);
   const core::Matrix v = s->collector.values();
   // DAQ LSB on the laser channel is 20 mm / 65536 = 0.305 um, far below the

@@ -1,0 +1,192 @@
+#pragma once
+// Campaigns on the simulated rigs for the validation tests: a hammer campaign
+// through the driver (calibration pipeline, quantisation), the software
+// trigger with 10% pre-trigger, H1 averaging and pLSCF identification; and a
+// static ramp on the stiffness rig processed by the static twist test.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "core/modal/plscf.h"
+#include "core/signal/frf_estimator.h"
+#include "core/stiffness/plate_motion.h"
+#include "devices/common/trigger.h"
+#include "devices/mcc_usb1608fsplus/usb1608fsplus_protocol.h"
+#include "devices/sim/sim_drivers.h"
+#include "devices/sim/specimen_models.h"
+
+namespace mozzi::devices::testing {
+
+struct HammerCampaign {
+  std::string specimen;
+  double sampleRateHz = 1024.0;
+  double recordSeconds = 2.0;  // one hit per recordSeconds + 1 s
+  int hits = 5;
+  double peakForceN = 200.0;
+  std::uint8_t responseRange = 4;  // USB-1608FS-Plus range code of the accelerometers
+  double bandLowHz = 0.0, bandHighHz = 0.0;
+  int maxOrder = 30;
+  std::uint64_t seed = 11;
+};
+
+struct CampaignResult {
+  core::modal::PlscfResult identification;
+  int records = 0;
+  bool overloaded = false;
+};
+
+// The smallest range of the DAQ that holds `peak` [V] with a factor 2 margin.
+inline std::uint8_t rangeFor(double peakVolts) {
+  std::uint8_t best = 0;
+  for (const auto& r : mcc::ranges())
+    if (r.maxVolts >= 2.0 * peakVolts && r.maxVolts < mcc::ranges()[best].maxVolts) best = r.code;
+  return best;
+}
+
+inline std::optional<CampaignResult> runHammerCampaign(const HammerCampaign& c) {
+  using namespace std::chrono_literals;
+  const double fs = c.sampleRateHz;
+  const double interval = c.recordSeconds + 1.0;
+  AcquisitionConfig cfg;
+  cfg.sampleRateHz = fs;
+  cfg.scanCount = static_cast<std::int64_t>(std::llround(c.hits * interval * fs));
+  auto spec = sim::modalSpecimen(c.specimen);
+  EXPECT_TRUE(spec.ok());
+  if (!spec) return std::nullopt;
+  ChannelConfig f;
+  f.input = 0;
+  f.name = "hammer";
+  f.rangeCode = 4;  // +/-1.25 V: 555 N full scale at 2.25 mV/N
+  f.transducer = core::signal::Transducer{core::signal::TransducerKind::Force, "PCB 086C03", "", 2.25, "N", true};
+  f.dof = spec->dofs[0];
+  cfg.channels.push_back(f);
+  for (int i = 1; i <= 3; ++i) {
+    ChannelConfig a;
+    a.input = i;
+    a.name = "acc " + core::formatDof(spec->dofs[static_cast<std::size_t>(i - 1)]);
+    a.rangeCode = c.responseRange;
+    a.transducer =
+        core::signal::Transducer{core::signal::TransducerKind::Acceleration, "PCB M352C65", "", 10.0, "m/s^2", true};
+    a.dof = spec->dofs[static_cast<std::size_t>(i - 1)];
+    cfg.channels.push_back(a);
+  }
+  cfg.parameters["sim.realtime"] = false;
+  cfg.parameters["specimen"] = c.specimen;
+  cfg.parameters["hammer.interval_s"] = interval;
+  cfg.parameters["hammer.peak_force"] = c.peakForceN;
+  cfg.parameters["sim.seed"] = static_cast<std::int64_t>(c.seed);
+
+  auto dev = sim::makeHammerStationDriver()->create(DeviceDescriptor{"sim-hammer", "", 0, 0, "", "sim:0"}).value();
+  EXPECT_TRUE(dev->open().ok());
+  auto applied = dev->configure(cfg);
+  EXPECT_TRUE(applied.ok()) << applied.error().describe();
+  if (!applied) return std::nullopt;
+  StreamCollector col;
+  EXPECT_TRUE(dev->start(col.sink()).ok());
+  EXPECT_TRUE(col.waitForEnd(120s));
+  dev->stop();
+  EXPECT_EQ(col.end()->reason, EndReason::Completed);
+
+  CampaignResult out;
+  out.overloaded = !col.overloads().empty();
+  const StreamHeader header = *col.header();
+  SoftwareTriggerConfig tc;
+  tc.channel = 0;
+  tc.level = 0.05 * c.peakForceN;  // far above the 0.05 N noise
+  tc.recordScans = static_cast<std::int64_t>(std::llround(c.recordSeconds * fs));
+  tc.preTriggerFraction = 0.1;
+  for (const auto& ch : header.channels) tc.fullScale.push_back(ch.fullScale);
+  auto trig = SoftwareTrigger::create(tc, 4);
+  EXPECT_TRUE(trig.ok());
+  if (!trig) return std::nullopt;
+  auto records = trig->feed(0, col.values());
+  out.records = static_cast<int>(records.size());
+
+  std::optional<core::signal::SpectralAverager> avg;
+  for (const auto& r : records) {
+    out.overloaded = out.overloaded || r.overloaded;
+    core::signal::TimeRecord tr;
+    tr.sampleRateHz = header.sampleRateHz;
+    tr.preTriggerSamples = r.preTriggerScans;
+    tr.channels = header.channels;
+    tr.samples = r.samples;
+    if (!avg) {
+      auto a = core::signal::SpectralAverager::create(tr, core::signal::FrfOptions{});
+      EXPECT_TRUE(a.ok()) << a.error().describe();
+      if (!a) return std::nullopt;
+      avg = std::move(*a);
+    }
+    auto added = avg->add(tr);
+    EXPECT_TRUE(added.ok()) << added.error().describe();
+  }
+  if (!avg) return std::nullopt;
+  auto frf = avg->frf();
+  EXPECT_TRUE(frf.ok()) << frf.error().describe();
+  if (!frf) return std::nullopt;
+  core::modal::PlscfOptions opt;
+  opt.bandLowHz = c.bandLowHz;
+  opt.bandHighHz = c.bandHighHz;
+  opt.maxOrder = c.maxOrder;
+  auto id = core::modal::identifyPlscf(*frf, opt);
+  EXPECT_TRUE(id.ok()) << id.error().describe();
+  if (!id) return std::nullopt;
+  out.identification = std::move(*id);
+  return out;
+}
+
+struct StaticRamp {
+  std::string specimen;
+  double maxForceN = 0.0;  // 0: the specimen's thesis range
+  double sampleRateHz = 100.0;
+  std::int64_t scans = 2000;  // one 20 s period: 0 -> +F -> -F -> 0
+};
+
+inline std::optional<core::stiffness::StaticTwistResult> runStaticRamp(const StaticRamp& r) {
+  using namespace std::chrono_literals;
+  AcquisitionConfig cfg;
+  cfg.sampleRateHz = r.sampleRateHz;
+  cfg.scanCount = r.scans;
+  ChannelConfig lc;
+  lc.input = 0;
+  lc.name = "load cell";
+  lc.transducer = core::signal::Transducer{
+      core::signal::TransducerKind::Force, "load cell +/-200 kg", "", 10000.0 / (200 * 9.80665), "N", false};
+  cfg.channels.push_back(lc);
+  for (int i = 1; i <= 4; ++i) {
+    ChannelConfig l;
+    l.input = i;
+    l.name = "laser " + std::to_string(i);
+    l.transducer = core::signal::Transducer{
+        core::signal::TransducerKind::Displacement, "laser 20 mm", "", 1e6, "m", false};  // 1 V/mm
+    cfg.channels.push_back(l);
+  }
+  cfg.parameters["sim.realtime"] = false;
+  cfg.parameters["specimen"] = r.specimen;
+  cfg.parameters["static.max_force"] = r.maxForceN;
+
+  auto dev = sim::makeStiffnessRigDriver()->create(DeviceDescriptor{"sim-stiffness", "", 0, 0, "", "sim:0"}).value();
+  EXPECT_TRUE(dev->open().ok());
+  auto applied = dev->configure(cfg);
+  EXPECT_TRUE(applied.ok()) << applied.error().describe();
+  if (!applied) return std::nullopt;
+  StreamCollector col;
+  EXPECT_TRUE(dev->start(col.sink()).ok());
+  EXPECT_TRUE(col.waitForEnd(60s));
+  dev->stop();
+  EXPECT_EQ(col.end()->reason, EndReason::Completed);
+  const core::Matrix v = col.values();
+  const auto spec = sim::staticSpecimen(r.specimen).value();
+  const core::Vector force = v.col(0);
+  const core::Matrix disp = v.rightCols(4);
+  auto res = core::stiffness::staticTwistTest(spec.laserPoints, force, disp, spec.loadPoint);
+  EXPECT_TRUE(res.ok()) << res.error().describe();
+  if (!res) return std::nullopt;
+  return *res;
+}
+
+}  // namespace mozzi::devices::testing
