@@ -70,8 +70,10 @@ FrfMatrix synthetic(int refs) {
   return frf;
 }
 
-void runStabilization(benchmark::State& state, const FrfMatrix& frf, double lo, double hi) {
-  PlscfOptions opt;
+// Times `estimator(frf, options)` (pLSCF or LSCE stabilization) over orders 2..range(0).
+template <typename Options, typename Estimator>
+void runStabilization(benchmark::State& state, const FrfMatrix& frf, double lo, double hi, Estimator estimator) {
+  Options opt;
   opt.bandLowHz = lo;
   opt.bandHighHz = hi;
   opt.minOrder = 2;
@@ -79,7 +81,7 @@ void runStabilization(benchmark::State& state, const FrfMatrix& frf, double lo, 
   opt.orderStep = 1;
   std::size_t poles = 0;
   for (auto _ : state) {
-    auto d = plscfStabilization(frf, opt);
+    auto d = estimator(frf, opt);
     if (!d.ok()) {
       state.SkipWithError(d.error().describe().c_str());
       return;
@@ -88,6 +90,10 @@ void runStabilization(benchmark::State& state, const FrfMatrix& frf, double lo, 
     benchmark::DoNotOptimize(poles);
   }
   state.counters["poles"] = static_cast<double>(poles);
+}
+
+void runStabilization(benchmark::State& state, const FrfMatrix& frf, double lo, double hi) {
+  runStabilization<PlscfOptions>(state, frf, lo, hi, plscfStabilization);
 }
 
 void BM_BeamChart(benchmark::State& state) {
@@ -98,22 +104,7 @@ BENCHMARK(BM_BeamChart)->Arg(60)->Arg(120)->Unit(benchmark::kMillisecond);
 // LSCE on the beam (no target in issue 5; for comparison with pLSCF): impulse
 // responses 0 .. 1000 Hz, automatic window, same orders.
 void BM_BeamChartLsce(benchmark::State& state) {
-  LsceOptions opt;
-  opt.bandLowHz = 65.0;
-  opt.bandHighHz = 1000.0;
-  opt.minOrder = 2;
-  opt.maxOrder = static_cast<int>(state.range(0));
-  std::size_t poles = 0;
-  for (auto _ : state) {
-    auto d = lsceStabilization(beam(), opt);
-    if (!d.ok()) {
-      state.SkipWithError(d.error().describe().c_str());
-      return;
-    }
-    poles = d->poles.size();
-    benchmark::DoNotOptimize(poles);
-  }
-  state.counters["poles"] = static_cast<double>(poles);
+  runStabilization<LsceOptions>(state, beam(), 65.0, 1000.0, lsceStabilization);
 }
 BENCHMARK(BM_BeamChartLsce)->Arg(60)->Arg(120)->Unit(benchmark::kMillisecond);
 

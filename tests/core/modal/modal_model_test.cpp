@@ -28,7 +28,9 @@ Chain chain() {
   return s;
 }
 
-std::vector<Dof> threeDofs() { return {Dof{1, Direction::Z}, Dof{2, Direction::Z}, Dof{3, Direction::Z}}; }
+std::vector<Dof> threeDofs() {
+  return {Dof{1, Direction::Z}, Dof{2, Direction::Z}, Dof{3, Direction::Z}};
+}
 
 // Synthesis from the modal model must equal (K - w^2 M + i w C)^-1 (thesis
 // eq. 19) at any frequency: both are exact, tolerance is rounding (1e-9 rel).
@@ -125,8 +127,8 @@ TEST(Lsfd, RecoversResiduesAndResiduals) {
   ModalModel truth = *full;
   truth.references = {full->references[2]};
   for (auto& md : truth.modes) md.residue = ComplexMatrix(md.residue.col(2));
-  truth.lowerResidual = ComplexMatrix::Constant(6, 1, Complex(0.05, 0.0));   // 1/kg
-  truth.upperResidual = ComplexMatrix::Constant(6, 1, Complex(2e-7, 0.0));   // m/N
+  truth.lowerResidual = ComplexMatrix::Constant(6, 1, Complex(0.05, 0.0));  // 1/kg
+  truth.upperResidual = ComplexMatrix::Constant(6, 1, Complex(2e-7, 0.0));  // m/N
   auto frf = synthesizeFrf(truth, Vector::LinSpaced(3001, 30.0, 330.0), FrfType::Mobility);
   ASSERT_TRUE(frf.ok()) << frf.error().describe();
   std::vector<Complex> all;

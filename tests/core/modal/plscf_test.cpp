@@ -74,16 +74,7 @@ TEST(Plscf, StabilizationDiagramMarksTrueModesStable) {
 }
 
 TEST(Plscf, PureNoiseGivesNoMode) {
-  FrfMatrix frf;
-  frf.frequencyHz = Vector::LinSpaced(4001, 0.0, 400.0);
-  frf.responses = testing::sixDofs();
-  frf.references = {frf.responses[0]};
-  std::mt19937 rng(99);
-  std::normal_distribution<double> nd(0.0, 1.0);
-  ComplexMatrix h(4001, 6);
-  for (Eigen::Index k = 0; k < h.rows(); ++k)
-    for (Eigen::Index o = 0; o < 6; ++o) h(k, o) = Complex(nd(rng), nd(rng));
-  frf.h.push_back(h);
+  const FrfMatrix frf = testing::pureNoise(99);
   auto res = identifyPlscf(frf, syntheticOptions());
   ASSERT_FALSE(res.ok()) << "invented " << res->model.modes.size() << " modes from noise";
   EXPECT_EQ(res.error().code, ErrorCode::NotFound);

@@ -13,7 +13,8 @@ FrfMatrix singleModeFrf(FrfType type) {
   ModalModel m;
   m.responses = {Dof{1, Direction::Z}, Dof{2, Direction::Z}};
   m.references = {m.responses[0]};
-  for (auto [f, z, a1, a2] : {std::tuple<double, double, double, double>{150.0, 0.005, 1.0, -0.6}, {300.0, 0.01, 0.8, 0.9}}) {
+  for (auto [f, z, a1, a2] :
+       {std::tuple<double, double, double, double>{150.0, 0.005, 1.0, -0.6}, {300.0, 0.01, 0.8, 0.9}}) {
     Mode md;
     md.pole = poleFromFrequencyDamping(f, z);
     md.residue.resize(2, 1);

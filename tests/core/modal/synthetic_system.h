@@ -15,9 +15,9 @@ namespace mozzi::core::modal::testing {
 
 struct SyntheticSystem {
   Matrix m, c, k;
-  Vector fn;     // Hz
+  Vector fn;  // Hz
   Vector zeta;
-  Matrix phi;    // mass-normalised shapes, columns
+  Matrix phi;  // mass-normalised shapes, columns
 };
 
 // Six modes like the forks of thesis Tables 19 and 20: two modes 1.5% apart at
@@ -56,8 +56,8 @@ inline std::vector<Dof> sixDofs() {
 
 // Accelerance column of reference `refs` on a 0.1 Hz grid from fLo to fHi, with
 // complex Gaussian noise of relative standard deviation `noise` per line.
-inline FrfMatrix accelerances(const SyntheticSystem& s, const std::vector<int>& refs, double fLo, double fHi,
-                              double df, double noise, unsigned seed) {
+inline FrfMatrix accelerances(const SyntheticSystem& s, const std::vector<int>& refs, double fLo, double fHi, double df,
+                              double noise, unsigned seed) {
   FrfMatrix frf;
   const int nf = static_cast<int>(std::round((fHi - fLo) / df)) + 1;
   frf.frequencyHz = Vector::LinSpaced(nf, fLo, fLo + df * (nf - 1));
@@ -78,6 +78,22 @@ inline FrfMatrix accelerances(const SyntheticSystem& s, const std::vector<int>& 
     }
     frf.h.push_back(std::move(h));
   }
+  return frf;
+}
+
+// Complex Gaussian noise only (unit variance per part), 0 .. 400 Hz at 0.1 Hz,
+// six responses, one reference: no mode to find.
+inline FrfMatrix pureNoise(unsigned seed) {
+  FrfMatrix frf;
+  frf.frequencyHz = Vector::LinSpaced(4001, 0.0, 400.0);
+  frf.responses = sixDofs();
+  frf.references = {frf.responses[0]};
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> nd(0.0, 1.0);
+  ComplexMatrix h(4001, 6);
+  for (Eigen::Index k = 0; k < h.rows(); ++k)
+    for (Eigen::Index o = 0; o < 6; ++o) h(k, o) = Complex(nd(rng), nd(rng));
+  frf.h.push_back(h);
   return frf;
 }
 
