@@ -6,13 +6,15 @@
 #include "app/cli/args.h"
 #include "app/cli/command.h"
 #include "devices/common/driver.h"
+#include "devices/sim/specimen_catalogue.h"
 
 namespace mozzi::cli {
 namespace {
 
 constexpr const char* kUsage =
     "Usage: mozzi-cli rig list [--json]\n"
-    "       mozzi-cli rig caps DRIVER [--json]\n";
+    "       mozzi-cli rig caps DRIVER [--file RECORDING] [--json]\n"
+    "  --file  for sim-replay: the UFF file whose channels to show\n";
 
 nlohmann::json valueJson(const devices::ParameterValue& v) {
   return std::visit([](const auto& x) { return nlohmann::json(x); }, v);
@@ -48,6 +50,29 @@ nlohmann::json capsJson(const devices::Capabilities& c) {
   return j;
 }
 
+// The virtual specimens of the simulated rigs, with the thesis sources of
+// their numbers (devices/sim/specimen_catalogue.h).
+nlohmann::json specimensJson() {
+  nlohmann::json all = nlohmann::json::array();
+  for (const auto& e : devices::sim::specimenCatalogue()) {
+    nlohmann::json modes = nlohmann::json::array();
+    for (std::size_t r = 0; r < e.modes.size(); ++r)
+      modes.push_back({{"frequency_hz", e.modes[r].frequencyHz}, {"damping", e.modes[r].damping}, {"zeta", e.zeta(r)},
+                       {"shape", e.modes[r].shape}});
+    nlohmann::json s = {{"key", e.key}, {"name", e.name}, {"kind", e.kind}, {"modal_source", e.modalSource},
+                        {"damping_measure", devices::sim::dampingMeasureName(e.damping)}, {"modes", modes}};
+    if (e.statics) {
+      const auto& st = *e.statics;
+      s["static_source"] = e.staticSource;
+      s["static"] = {{"lateral_stiffness_n_per_m", st.lateralStiffness}, {"twist_arm_m", st.twistArm},
+                     {"twist_stiffness_nm_per_rad", st.twistStiffness}, {"inclination_deg", st.inclinationDeg},
+                     {"inclination_tabulated", st.inclinationTabulated}, {"test_force_n", st.testForceN}};
+    }
+    all.push_back(s);
+  }
+  return all;
+}
+
 int list(bool json, std::ostream& out) {
   auto& reg = devices::builtinDrivers();
   std::vector<std::string> failures;
@@ -60,6 +85,7 @@ int list(bool json, std::ostream& out) {
     for (const auto& d : found)
       j["devices"].push_back({{"driver", d.driver}, {"model", d.model}, {"vid", d.vendorId}, {"pid", d.productId}, {"serial", d.serial}, {"bus", d.busPath}});
     j["scan_failures"] = failures;
+    j["specimens"] = specimensJson();
     out << j.dump(2) << "\n";
     return kExitOk;
   }
@@ -68,20 +94,33 @@ int list(bool json, std::ostream& out) {
   out << "Devices found:\n";
   for (const auto& d : found) out << "  " << d.driver << "  " << d.label() << "\n";
   for (const auto& f : failures) out << "  scan failed: " << f << "\n";
+  out << "Virtual specimens (simulated rigs):\n";
+  for (const auto& e : devices::sim::specimenCatalogue()) {
+    out << "  " << e.key << "  " << e.name << ": " << e.modes.size() << " modes (" << e.modalSource << ")";
+    if (e.statics) out << "; static " << e.staticSource;
+    out << "\n";
+  }
   return kExitOk;
 }
 
-int caps(const std::string& driver, bool json, std::ostream& out, std::ostream& err) {
+int caps(const std::string& driver, const std::string& file, bool json, std::ostream& out, std::ostream& err) {
   auto* d = devices::builtinDrivers().find(driver);
   if (!d) {
     err << "mozzi-cli rig caps: no driver named '" << driver << "' (see mozzi-cli rig list)\n";
     return kExitFailure;
   }
   // Capabilities are static data of the driver: no device needs to be present.
-  auto dev = d->create(devices::DeviceDescriptor{driver, "", 0, 0, "", ""});
+  // A replay's channels come from its recording: open it when one is named.
+  auto dev = d->create(devices::DeviceDescriptor{driver, "", 0, 0, "", file});
   if (!dev) {
     err << "mozzi-cli rig caps: " << dev.error().describe() << "\n";
     return kExitFailure;
+  }
+  if (!file.empty()) {
+    if (auto opened = (*dev)->open(); !opened) {
+      err << "mozzi-cli rig caps: " << opened.error().describe() << "\n";
+      return kExitFailure;
+    }
   }
   const auto j = capsJson((*dev)->capabilities());
   if (json) {
@@ -96,20 +135,22 @@ int caps(const std::string& driver, bool json, std::ostream& out, std::ostream& 
 }
 
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const auto parsed = ParsedArgs::parse(args, OptionSpec{{}, {"--json"}});
+  const auto parsed = ParsedArgs::parse(args, OptionSpec{{"--file"}, {"--json"}});
   if (!parsed) {
     err << parsed.error().describe() << "\n" << kUsage;
     return kExitUsage;
   }
   const auto& pos = parsed->positional();
   if (pos.size() == 1 && pos[0] == "list") return list(parsed->flag("--json"), out);
-  if (pos.size() == 2 && pos[0] == "caps") return caps(pos[1], parsed->flag("--json"), out, err);
+  if (pos.size() == 2 && pos[0] == "caps")
+    return caps(pos[1], parsed->value("--file").value_or(""), parsed->flag("--json"), out, err);
   err << kUsage;
   return kExitUsage;
 }
 
-const CommandRegistrar kRegistrar({"rig", "list | caps DRIVER [--json]",
-                                   "acquisition drivers, devices found, and their capabilities and parameters", &run});
+const CommandRegistrar kRegistrar({"rig", "list | caps DRIVER [--file RECORDING] [--json]",
+                                   "acquisition drivers, devices found, virtual specimens, and capabilities and parameters",
+                                   &run});
 
 }  // namespace
 }  // namespace mozzi::cli
