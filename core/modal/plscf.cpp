@@ -51,30 +51,37 @@ ComplexMatrix lagSums(const ComplexMatrix& series, const Vector& f, double dt, l
   ComplexMatrix out(2 * n + 1, ns);
   if (evenGrid) {
     const long N = fftSize;
+    // Chunks of series through one plan: a 16 N buffer instead of ns N (200 MB
+    // for 100 outputs x 3 references, whose page faults cost more than the FFTs).
+    const Eigen::Index chunk = std::min<Eigen::Index>(ns, 16);
     std::unique_ptr<fftw_complex[], FftwFree> buf(
-        static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * static_cast<std::size_t>(N * ns))));
+        static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * static_cast<std::size_t>(N * chunk))));
     int sizes[1] = {static_cast<int>(N)};
-    fftw_plan plan = fftw_plan_many_dft(1, sizes, static_cast<int>(ns), buf.get(), nullptr, 1, static_cast<int>(N),
+    fftw_plan plan = fftw_plan_many_dft(1, sizes, static_cast<int>(chunk), buf.get(), nullptr, 1, static_cast<int>(N),
                                         buf.get(), nullptr, 1, static_cast<int>(N), FFTW_BACKWARD, FFTW_ESTIMATE);
-    for (Eigen::Index s = 0; s < ns; ++s) {
-      fftw_complex* col = buf.get() + s * N;
-      for (Eigen::Index k = 0; k < nf; ++k) {
-        col[k][0] = series(k, s).real();
-        col[k][1] = series(k, s).imag();
+    for (Eigen::Index s0 = 0; s0 < ns; s0 += chunk) {
+      const Eigen::Index cs = std::min(chunk, ns - s0);
+      for (Eigen::Index c = 0; c < chunk; ++c) {
+        fftw_complex* col = buf.get() + c * N;
+        const Eigen::Index filled = c < cs ? nf : 0;
+        for (Eigen::Index k = 0; k < filled; ++k) {
+          col[k][0] = series(k, s0 + c).real();
+          col[k][1] = series(k, s0 + c).imag();
+        }
+        std::fill(reinterpret_cast<double*>(col + filled), reinterpret_cast<double*>(col + N), 0.0);
       }
-      std::fill(reinterpret_cast<double*>(col + nf), reinterpret_cast<double*>(col + N), 0.0);
+      fftw_execute(plan);
+      // Backward FFT: Y[d] = sum_k x_k exp(+i 2 pi k d / N); shift by f_0: exp(i 2 pi f_0 dt d).
+      for (int d = -n; d <= n; ++d) {
+        const Complex shift = std::polar(1.0, kTwoPi * f[0] * dt * d);
+        const long idx = d >= 0 ? d : N + d;
+        for (Eigen::Index c = 0; c < cs; ++c) {
+          const fftw_complex& y = buf[static_cast<std::size_t>(c * N + idx)];
+          out(d + n, s0 + c) = shift * Complex(y[0], y[1]);
+        }
+      }
     }
-    fftw_execute(plan);
     fftw_destroy_plan(plan);
-    // Backward FFT: Y[d] = sum_k x_k exp(+i 2 pi k d / N); shift by f_0: exp(i 2 pi f_0 dt d).
-    for (int d = -n; d <= n; ++d) {
-      const Complex shift = std::polar(1.0, kTwoPi * f[0] * dt * d);
-      const long idx = d >= 0 ? d : N + d;
-      for (Eigen::Index s = 0; s < ns; ++s) {
-        const fftw_complex& y = buf[static_cast<std::size_t>(s * N + idx)];
-        out(d + n, s) = shift * Complex(y[0], y[1]);
-      }
-    }
     return out;
   }
   out.setZero();
