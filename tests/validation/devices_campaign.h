@@ -22,6 +22,34 @@
 
 namespace mozzi::devices::testing {
 
+// One acquisition on an opened-or-not device: open, configure, start, wait for
+// the end, stop; what the stream held. nullopt (with the failure reported)
+// when any step fails.
+struct Acquired {
+  StreamHeader header;
+  core::Matrix values;
+  std::vector<TriggerEvent> triggers;
+  std::vector<OverloadEvent> overloads;
+  StreamEnd end;
+};
+
+inline std::optional<Acquired> acquire(Device& dev, const AcquisitionConfig& cfg,
+                                       std::chrono::seconds timeout = std::chrono::seconds(120)) {
+  auto opened = dev.open();
+  EXPECT_TRUE(opened.ok()) << opened.error().describe();
+  auto applied = dev.configure(cfg);
+  EXPECT_TRUE(applied.ok()) << applied.error().describe();
+  StreamCollector col;
+  if (!opened || !applied || !dev.start(col.sink()).ok() || !col.waitForEnd(timeout)) {
+    ADD_FAILURE() << "the acquisition on " << dev.descriptor().label() << " did not run to its end";
+    dev.stop();
+    return std::nullopt;
+  }
+  dev.stop();
+  EXPECT_TRUE(col.orderedAndContiguous());
+  return Acquired{*col.header(), col.values(), col.triggers(), col.overloads(), *col.end()};
+}
+
 struct HammerCampaign {
   std::string specimen;
   double sampleRateHz = 1024.0;
@@ -82,19 +110,13 @@ inline std::optional<CampaignResult> runHammerCampaign(const HammerCampaign& c) 
   cfg.parameters["sim.seed"] = static_cast<std::int64_t>(c.seed);
 
   auto dev = sim::makeHammerStationDriver()->create(DeviceDescriptor{"sim-hammer", "", 0, 0, "", "sim:0"}).value();
-  EXPECT_TRUE(dev->open().ok());
-  auto applied = dev->configure(cfg);
-  EXPECT_TRUE(applied.ok()) << applied.error().describe();
-  if (!applied) return std::nullopt;
-  StreamCollector col;
-  EXPECT_TRUE(dev->start(col.sink()).ok());
-  EXPECT_TRUE(col.waitForEnd(120s));
-  dev->stop();
-  EXPECT_EQ(col.end()->reason, EndReason::Completed);
+  auto run = acquire(*dev, cfg);
+  if (!run) return std::nullopt;
+  EXPECT_EQ(run->end.reason, EndReason::Completed);
 
   CampaignResult out;
-  out.overloaded = !col.overloads().empty();
-  const StreamHeader header = *col.header();
+  out.overloaded = !run->overloads.empty();
+  const StreamHeader& header = run->header;
   SoftwareTriggerConfig tc;
   tc.channel = 0;
   tc.level = 0.05 * c.peakForceN;  // far above the 0.05 N noise
@@ -104,7 +126,7 @@ inline std::optional<CampaignResult> runHammerCampaign(const HammerCampaign& c) 
   auto trig = SoftwareTrigger::create(tc, 4);
   EXPECT_TRUE(trig.ok());
   if (!trig) return std::nullopt;
-  auto records = trig->feed(0, col.values());
+  auto records = trig->feed(0, run->values);
   out.records = static_cast<int>(records.size());
 
   std::optional<core::signal::SpectralAverager> avg;
@@ -170,16 +192,10 @@ inline std::optional<core::stiffness::StaticTwistResult> runStaticRamp(const Sta
   cfg.parameters["static.max_force"] = r.maxForceN;
 
   auto dev = sim::makeStiffnessRigDriver()->create(DeviceDescriptor{"sim-stiffness", "", 0, 0, "", "sim:0"}).value();
-  EXPECT_TRUE(dev->open().ok());
-  auto applied = dev->configure(cfg);
-  EXPECT_TRUE(applied.ok()) << applied.error().describe();
-  if (!applied) return std::nullopt;
-  StreamCollector col;
-  EXPECT_TRUE(dev->start(col.sink()).ok());
-  EXPECT_TRUE(col.waitForEnd(60s));
-  dev->stop();
-  EXPECT_EQ(col.end()->reason, EndReason::Completed);
-  const core::Matrix v = col.values();
+  auto run = acquire(*dev, cfg, std::chrono::seconds(60));
+  if (!run) return std::nullopt;
+  EXPECT_EQ(run->end.reason, EndReason::Completed);
+  const core::Matrix& v = run->values;
   const auto spec = sim::staticSpecimen(r.specimen).value();
   const core::Vector force = v.col(0);
   const core::Matrix disp = v.rightCols(4);

@@ -16,6 +16,7 @@
 #include "core/tire/steady_state.h"
 #include "core/tire/thesis_tyres.h"
 #include "devices/sim/sim_drivers.h"
+#include "devices_campaign.h"
 
 namespace mozzi::devices {
 namespace {
@@ -34,26 +35,15 @@ ChannelConfig channel(int input, const char* name, core::signal::TransducerKind 
   return c;
 }
 
-struct Run {
-  StreamHeader header;
-  core::Matrix values;
-  std::vector<TriggerEvent> marks;
-};
-
-std::optional<Run> acquire(AcquisitionConfig cfg) {
+std::optional<testing::Acquired> acquire(AcquisitionConfig cfg) {
   cfg.parameters["sim.realtime"] = false;
   auto dev = sim::makeTyreTesterDriver()->create(DeviceDescriptor{"sim-tyre-tester", "", 0, 0, "", "sim:0"}).value();
-  EXPECT_TRUE(dev->open().ok());
-  auto applied = dev->configure(cfg);
-  EXPECT_TRUE(applied.ok()) << applied.error().describe();
-  if (!applied) return std::nullopt;
-  StreamCollector col;
-  EXPECT_TRUE(dev->start(col.sink()).ok());
-  EXPECT_TRUE(col.waitForEnd(60s));
-  dev->stop();
-  EXPECT_EQ(col.end()->reason, EndReason::Completed);
-  EXPECT_TRUE(col.overloads().empty());
-  return Run{*col.header(), col.values(), col.triggers()};
+  auto run = testing::acquire(*dev, cfg, 60s);
+  if (run) {
+    EXPECT_EQ(run->end.reason, EndReason::Completed);
+    EXPECT_TRUE(run->overloads.empty());
+  }
+  return run;
 }
 
 // The thesis yaw programme on one tyre; sigma from the analysis of the stream.
@@ -73,13 +63,13 @@ core::tire::HarmonicYawResult harmonicYaw(const std::string& tyre, double pressu
   if (sigma > 0) cfg.parameters["tyre.relaxation_length"] = sigma;
   auto run = acquire(cfg);
   EXPECT_TRUE(run.has_value());
-  EXPECT_EQ(run->marks.size(), 5u);
+  EXPECT_EQ(run->triggers.size(), 5u);
   std::vector<core::tire::HarmonicYawRecord> records;
-  for (std::size_t k = 0; k < run->marks.size(); ++k) {
-    const double f = run->marks[k].level;  // the tester marks each step with its frequency
+  for (std::size_t k = 0; k < run->triggers.size(); ++k) {
+    const double f = run->triggers[k].level;  // the tester marks each step with its frequency
     // Drop the first cycle: the start of each step excites the lag's transient.
-    const auto start = run->marks[k].sample + static_cast<std::int64_t>(std::llround(fs / f));
-    const auto end = k + 1 < run->marks.size() ? run->marks[k + 1].sample : run->values.rows();
+    const auto start = run->triggers[k].sample + static_cast<std::int64_t>(std::llround(fs / f));
+    const auto end = k + 1 < run->triggers.size() ? run->triggers[k + 1].sample : run->values.rows();
     core::tire::HarmonicYawRecord r;
     r.excitationFrequencyHz = f;
     r.sampleRateHz = fs;

@@ -13,6 +13,7 @@
 #include "core/io/uff/uff.h"
 #include "devices/common/driver.h"
 #include "devices/sim/sim_drivers.h"
+#include "validation/devices_campaign.h"
 
 namespace mozzi::devices {
 namespace {
@@ -89,27 +90,10 @@ AcquisitionConfig allChannels(double fs, bool realtime) {
   return cfg;
 }
 
-struct Replayed {
-  StreamHeader header;
-  core::Matrix values;
-  std::vector<TriggerEvent> marks;
-  StreamEnd end{EndReason::Error, 0, "not run"};
-};
-
-Replayed replay(const std::string& path, AcquisitionConfig cfg) {
+testing::Acquired replay(const std::string& path, AcquisitionConfig cfg) {
   auto dev = replayOf(path);
-  auto opened = dev->open();
-  EXPECT_TRUE(opened.ok()) << opened.error().describe();
-  auto applied = dev->configure(cfg);
-  EXPECT_TRUE(applied.ok()) << applied.error().describe();
-  StreamCollector col;
-  if (!applied || !dev->start(col.sink()).ok() || !col.waitForEnd(30s)) {
-    ADD_FAILURE() << "the replay did not run";
-    return Replayed{};
-  }
-  dev->stop();
-  EXPECT_TRUE(col.orderedAndContiguous());
-  return Replayed{*col.header(), col.values(), col.triggers(), *col.end()};
+  auto r = testing::acquire(*dev, cfg, 30s);
+  return r ? *r : testing::Acquired{{}, {}, {}, {}, StreamEnd{EndReason::Error, 0, "not run"}};
 }
 
 bool bitIdentical(const core::Matrix& a, const core::Matrix& b) {
@@ -148,8 +132,8 @@ TEST(ReplayDriver, DoubleAndSinglePrecisionRecordsComeBackBitForBit) {
     EXPECT_EQ(r.header.channels[0].transducer.kind, core::signal::TransducerKind::Force);
     EXPECT_EQ(core::formatDof(r.header.channels[2].dof), "3:-Y");
     // One mark per load case at its recorded trigger instant (100 pre-trigger samples).
-    ASSERT_EQ(r.marks.size(), 3u);
-    for (int i = 0; i < 3; ++i) EXPECT_EQ(r.marks[static_cast<std::size_t>(i)].sample, 1000 * i + 100);
+    ASSERT_EQ(r.triggers.size(), 3u);
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(r.triggers[static_cast<std::size_t>(i)].sample, 1000 * i + 100);
     std::remove(path.c_str());
   }
 }
