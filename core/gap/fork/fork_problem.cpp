@@ -33,12 +33,15 @@ Result<std::unique_ptr<ForkLumpedGapProblem>> ForkLumpedGapProblem::create(const
                      where);
   if (!(in.fork.dynamicAxisArm > in.fork.wheelCentreHeight) || !(in.fork.staticAxisArm > in.fork.wheelCentreHeight))
     return makeError(ErrorCode::InvalidArgument, "the bending axes must lie above the wheel centre", where);
+  // One fold for all: a frequency and a static stiffness are different
+  // quantities; fitting an effect on one cannot predict the other for every
+  // candidate (an inertia change has no static signature), so no held-out split.
   std::vector<ConditionPoint> pts = {{"lateral mode [Hz]", 0.0, in.fork.measuredFrequencyHz, in.frequencySigmaHz, 0}};
   if (in.withStatic) {
     if (!positive(in.staticLateralStiffness) || !positive(in.staticSigma))
       return makeError(ErrorCode::InvalidArgument, "static lateral stiffness and its uncertainty must be positive",
                        where);
-    pts.push_back({"static lateral stiffness [N/m]", 1.0, in.staticLateralStiffness, in.staticSigma, 1});
+    pts.push_back({"static lateral stiffness [N/m]", 1.0, in.staticLateralStiffness, in.staticSigma, 0});
   }
   return std::unique_ptr<ForkLumpedGapProblem>(new ForkLumpedGapProblem(in, std::move(pts)));
 }
@@ -88,26 +91,13 @@ std::vector<double> ForkLumpedGapProblem::predict(const double* theta, int candi
   return out;
 }
 
-bool ForkLumpedGapProblem::residuals(const double* theta, int candidate, const double* phi, double* r) const {
-  return whitenedResiduals(points_, predict(theta, candidate, phi), r);
-}
-
-std::vector<int> ForkLumpedGapProblem::folds() const {
-  // A frequency and a static stiffness are different quantities: fitting an
-  // effect on one cannot predict the other for every candidate (an inertia
-  // change has no static signature), so there is no held-out split here.
-  return std::vector<int>(points_.size(), 0);
-}
-
-std::unique_ptr<GapProblem> ForkLumpedGapProblem::simulated(const double* theta, int candidate, const double* phi,
-                                                            std::mt19937_64& rng) const {
-  return std::unique_ptr<GapProblem>(
-      new ForkLumpedGapProblem(in_, simulatedPoints(points_, predict(theta, candidate, phi), rng)));
+std::unique_ptr<GapProblem> ForkLumpedGapProblem::withPoints(std::vector<ConditionPoint> points) const {
+  return std::unique_ptr<GapProblem>(new ForkLumpedGapProblem(in_, std::move(points)));
 }
 
 GapMetrics ForkLumpedGapProblem::metrics(const double* theta, int candidate, const double* phi) const {
-  auto m = conditionMetrics(points_, predict(theta, candidate, phi), "relative_residual");
-  m.entries[0].kind = "mode";
+  auto m = ConditionSeriesProblem::metrics(theta, candidate, phi);
+  m.entries[0].kind = "mode";  // the lateral mode; the static stiffness stays a "condition"
   return m;
 }
 
@@ -126,7 +116,9 @@ Result<std::unique_ptr<StiffnessEstimatesGapProblem>> StiffnessEstimatesGapProbl
     for (const auto& p : pts)
       if (p.label == e.configuration)
         return makeError(ErrorCode::InvalidArgument, "configuration named twice", e.configuration);
-    pts.push_back({e.configuration, static_cast<double>(i), e.value, e.sigma, static_cast<int>(i)});
+    // One fold for all: each configuration's error acts on its own estimate
+    // only, so holding one out leaves nothing to predict it from.
+    pts.push_back({e.configuration, static_cast<double>(i), e.value, e.sigma, 0});
   }
   const double ref = estimates.front().value;
   return std::unique_ptr<StiffnessEstimatesGapProblem>(
@@ -158,24 +150,8 @@ std::vector<double> StiffnessEstimatesGapProblem::predict(const double* theta, i
   return out;
 }
 
-bool StiffnessEstimatesGapProblem::residuals(const double* theta, int candidate, const double* phi, double* r) const {
-  return whitenedResiduals(points_, predict(theta, candidate, phi), r);
-}
-
-std::vector<int> StiffnessEstimatesGapProblem::folds() const {
-  // Each configuration's error acts on its own estimate only: holding one out
-  // leaves nothing to predict it from, so no held-out split.
-  return std::vector<int>(points_.size(), 0);
-}
-
-std::unique_ptr<GapProblem> StiffnessEstimatesGapProblem::simulated(const double* theta, int candidate,
-                                                                    const double* phi, std::mt19937_64& rng) const {
-  return std::unique_ptr<GapProblem>(new StiffnessEstimatesGapProblem(
-      simulatedPoints(points_, predict(theta, candidate, phi), rng), unit_, reference_));
-}
-
-GapMetrics StiffnessEstimatesGapProblem::metrics(const double* theta, int candidate, const double* phi) const {
-  return conditionMetrics(points_, predict(theta, candidate, phi), "relative_residual");
+std::unique_ptr<GapProblem> StiffnessEstimatesGapProblem::withPoints(std::vector<ConditionPoint> points) const {
+  return std::unique_ptr<GapProblem>(new StiffnessEstimatesGapProblem(std::move(points), unit_, reference_));
 }
 
 }  // namespace mozzi::core::gap

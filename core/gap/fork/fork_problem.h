@@ -51,29 +51,27 @@ struct ForkLumpedGapInput {
   double unsprungMassSigma = 0.5;       // [kg] prior standard uncertainty
 };
 
-class ForkLumpedGapProblem : public GapProblem {
+class ForkLumpedGapProblem : public ConditionSeriesProblem {
  public:
   static Result<std::unique_ptr<ForkLumpedGapProblem>> create(const ForkLumpedGapInput& in);
 
   std::string dataKind() const override { return "modes"; }
   std::vector<Parameter> calibrationParameters() const override;
   std::vector<Candidate> candidates() const override;
-  int residualCount() const override { return static_cast<int>(points_.size()); }
-  bool residuals(const double* theta, int candidate, const double* phi, double* r) const override;
-  std::vector<int> folds() const override;
-  std::unique_ptr<GapProblem> simulated(const double* theta, int candidate, const double* phi,
-                                        std::mt19937_64& rng) const override;
   GapMetrics metrics(const double* theta, int candidate, const double* phi) const override;
 
   // [frequency Hz, (static lateral stiffness N/m)] for the given effect;
   // theta = nullptr means the nominal unsprung mass.
-  std::vector<double> predict(const double* theta, int candidate, const double* phi) const;
+  std::vector<double> predict(const double* theta, int candidate, const double* phi) const override;
+
+ protected:
+  std::unique_ptr<GapProblem> withPoints(std::vector<ConditionPoint> points) const override;
+  std::string residualName() const override { return "relative_residual"; }
 
  private:
   ForkLumpedGapProblem(ForkLumpedGapInput in, std::vector<ConditionPoint> points)
-      : in_(std::move(in)), points_(std::move(points)) {}
+      : ConditionSeriesProblem(std::move(points)), in_(std::move(in)) {}
   ForkLumpedGapInput in_;
-  std::vector<ConditionPoint> points_;
 };
 
 struct StiffnessEstimate {
@@ -82,7 +80,7 @@ struct StiffnessEstimate {
   double sigma = 0.0;         // standard uncertainty, same unit
 };
 
-class StiffnessEstimatesGapProblem : public GapProblem {
+class StiffnessEstimatesGapProblem : public ConditionSeriesProblem {
  public:
   static Result<std::unique_ptr<StiffnessEstimatesGapProblem>> create(std::vector<StiffnessEstimate> estimates,
                                                                       std::string unit);
@@ -90,20 +88,17 @@ class StiffnessEstimatesGapProblem : public GapProblem {
   std::string dataKind() const override { return "stiffness"; }
   std::vector<Parameter> calibrationParameters() const override;
   std::vector<Candidate> candidates() const override;
-  int residualCount() const override { return static_cast<int>(points_.size()); }
-  bool residuals(const double* theta, int candidate, const double* phi, double* r) const override;
-  std::vector<int> folds() const override;
-  std::unique_ptr<GapProblem> simulated(const double* theta, int candidate, const double* phi,
-                                        std::mt19937_64& rng) const override;
-  GapMetrics metrics(const double* theta, int candidate, const double* phi) const override;
 
-  std::vector<double> predict(const double* theta, int candidate, const double* phi) const;
+  std::vector<double> predict(const double* theta, int candidate, const double* phi) const override;
   double reference() const { return reference_; }
+
+ protected:
+  std::unique_ptr<GapProblem> withPoints(std::vector<ConditionPoint> points) const override;
+  std::string residualName() const override { return "relative_residual"; }
 
  private:
   StiffnessEstimatesGapProblem(std::vector<ConditionPoint> points, std::string unit, double reference)
-      : points_(std::move(points)), unit_(std::move(unit)), reference_(reference) {}
-  std::vector<ConditionPoint> points_;
+      : ConditionSeriesProblem(std::move(points)), unit_(std::move(unit)), reference_(reference) {}
   std::string unit_;
   double reference_ = 1.0;  // theta = 1 is this stiffness (the first estimate)
 };

@@ -22,19 +22,26 @@ std::string pointLabel(const ModeFrequency& m) {
 }
 }  // namespace
 
+namespace {
+// Equal-width speed ranges: each fold holds out one range of speeds.
+std::vector<ConditionPoint> speedPoints(const std::vector<ModeFrequency>& modes, int bins) {
+  double lo = modes.front().speed, hi = lo;
+  for (const auto& m : modes) lo = std::min(lo, m.speed), hi = std::max(hi, m.speed);
+  bins = std::max(1, bins);
+  std::vector<ConditionPoint> points;
+  for (const auto& m : modes) {
+    const int fold = hi > lo ? std::min(static_cast<int>(bins * (m.speed - lo) / (hi - lo)), bins - 1) : 0;
+    points.push_back({pointLabel(m), m.speed, m.frequencyHz, m.sigmaHz, fold});
+  }
+  return points;
+}
+}  // namespace
+
 StabilityGapProblem::StabilityGapProblem(StabilityGapModel model, std::vector<ModeFrequency> modes)
-    : model_(std::move(model)), modes_(std::move(modes)) {
+    : ConditionSeriesProblem(speedPoints(modes, model.speedFolds)), model_(std::move(model)), modes_(std::move(modes)) {
   std::set<double> speeds;
   for (const auto& m : modes_) speeds.insert(m.speed);
   speeds_.assign(speeds.begin(), speeds.end());
-  const double lo = speeds_.front(), hi = speeds_.back();
-  const int bins = std::max(1, model_.speedFolds);
-  for (const auto& m : modes_) {
-    // Equal-width speed ranges: each fold holds out one range of speeds.
-    int fold = hi > lo ? static_cast<int>(bins * (m.speed - lo) / (hi - lo)) : 0;
-    fold = std::min(fold, bins - 1);
-    points_.push_back({pointLabel(m), m.speed, m.frequencyHz, m.sigmaHz, fold});
-  }
 }
 
 Result<std::unique_ptr<StabilityGapProblem>> StabilityGapProblem::create(StabilityGapModel model,
@@ -146,28 +153,17 @@ std::vector<double> StabilityGapProblem::predict(const double* theta, int candid
   return out;
 }
 
-bool StabilityGapProblem::residuals(const double* theta, int candidate, const double* phi, double* r) const {
-  return whitenedResiduals(points_, predict(theta, candidate, phi), r);
-}
-
-std::vector<int> StabilityGapProblem::folds() const {
-  std::vector<int> f;
-  for (const auto& p : points_) f.push_back(p.fold);
-  return f;
-}
-
-std::unique_ptr<GapProblem> StabilityGapProblem::simulated(const double* theta, int candidate, const double* phi,
-                                                           std::mt19937_64& rng) const {
-  const auto sim = simulatedPoints(points_, predict(theta, candidate, phi), rng);
+std::unique_ptr<GapProblem> StabilityGapProblem::withPoints(std::vector<ConditionPoint> points) const {
   auto modes = modes_;
-  for (std::size_t j = 0; j < modes.size(); ++j) modes[j].frequencyHz = sim[j].measured;
+  for (std::size_t j = 0; j < modes.size(); ++j) modes[j].frequencyHz = points[j].measured;
   return std::unique_ptr<GapProblem>(new StabilityGapProblem(model_, std::move(modes)));
 }
 
-GapMetrics StabilityGapProblem::metrics(const double* theta, int candidate, const double* phi) const {
+std::vector<std::vector<std::pair<std::string, double>>> StabilityGapProblem::details(const double*, int,
+                                                                                      const double*) const {
   std::vector<std::vector<std::pair<std::string, double>>> extra;
   for (const auto& m : modes_) extra.push_back({{"speed_m_s", m.speed}});
-  return conditionMetrics(points_, predict(theta, candidate, phi), "frequency_residual", extra);
+  return extra;
 }
 
 std::vector<OverlayCurve> StabilityGapProblem::overlay(const double* theta, int candidate, const double* phi) const {

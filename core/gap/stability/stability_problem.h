@@ -58,7 +58,7 @@ struct ModeFrequency {
   double sigmaHz = 0.0;
 };
 
-class StabilityGapProblem : public GapProblem {
+class StabilityGapProblem : public ConditionSeriesProblem {
  public:
   static Result<std::unique_ptr<StabilityGapProblem>> create(StabilityGapModel model,
                                                              std::vector<ModeFrequency> measured);
@@ -66,18 +66,18 @@ class StabilityGapProblem : public GapProblem {
   std::string dataKind() const override { return "stability"; }
   std::vector<Parameter> calibrationParameters() const override;
   std::vector<Candidate> candidates() const override;
-  int residualCount() const override { return static_cast<int>(points_.size()); }
-  bool residuals(const double* theta, int candidate, const double* phi, double* r) const override;
-  std::vector<int> folds() const override;
-  std::unique_ptr<GapProblem> simulated(const double* theta, int candidate, const double* phi,
-                                        std::mt19937_64& rng) const override;
-  GapMetrics metrics(const double* theta, int candidate, const double* phi) const override;
   std::vector<OverlayCurve> overlay(const double* theta, int candidate, const double* phi) const override;
 
   // Predicted frequency [Hz] of every measured (mode, speed); NaN where the
   // model cannot be built or the mode is not oscillating there.
-  std::vector<double> predict(const double* theta, int candidate, const double* phi) const;
+  std::vector<double> predict(const double* theta, int candidate, const double* phi) const override;
   const std::vector<ModeFrequency>& measured() const { return modes_; }
+
+ protected:
+  std::unique_ptr<GapProblem> withPoints(std::vector<ConditionPoint> points) const override;
+  std::string residualName() const override { return "frequency_residual"; }
+  std::vector<std::vector<std::pair<std::string, double>>> details(const double* theta, int candidate,
+                                                                   const double* phi) const override;
 
  private:
   StabilityGapProblem(StabilityGapModel model, std::vector<ModeFrequency> modes);
@@ -86,7 +86,6 @@ class StabilityGapProblem : public GapProblem {
 
   StabilityGapModel model_;
   std::vector<ModeFrequency> modes_;
-  std::vector<ConditionPoint> points_;
   std::vector<double> speeds_;  // distinct measured speeds, increasing
 };
 

@@ -57,4 +57,28 @@ std::vector<ConditionPoint> simulatedPoints(const std::vector<ConditionPoint>& p
   return out;
 }
 
+bool ConditionSeriesProblem::residuals(const double* theta, int candidate, const double* phi, double* r) const {
+  return whitenedResiduals(points_, predict(theta, candidate, phi), r);
+}
+
+std::vector<int> ConditionSeriesProblem::folds() const {
+  std::vector<int> f;
+  for (const auto& p : points_) f.push_back(p.fold);
+  return f;
+}
+
+std::unique_ptr<GapProblem> ConditionSeriesProblem::simulated(const double* theta, int candidate, const double* phi,
+                                                              std::mt19937_64& rng) const {
+  return withPoints(simulatedPoints(points_, predict(theta, candidate, phi), rng));
+}
+
+GapMetrics ConditionSeriesProblem::metrics(const double* theta, int candidate, const double* phi) const {
+  return conditionMetrics(points_, predict(theta, candidate, phi), residualName(), details(theta, candidate, phi));
+}
+
+std::vector<std::vector<std::pair<std::string, double>>> ConditionSeriesProblem::details(const double*, int,
+                                                                                         const double*) const {
+  return {};
+}
+
 }  // namespace mozzi::core::gap

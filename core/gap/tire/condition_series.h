@@ -3,9 +3,10 @@
 // against inflation pressure, stability-mode frequency against speed, a fork's
 // frequency and static stiffness): the parts the tyre, stability and fork gap
 // problems share — whitened residuals, the "where" table per condition with
-// Holm-corrected flags (shared/GAP.md step 2) and the parametric-bootstrap copy
-// of the data.
+// Holm-corrected flags (shared/GAP.md step 2), the parametric-bootstrap copy
+// of the data, and a GapProblem base that needs only the prediction.
 
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -43,5 +44,33 @@ GapMetrics conditionMetrics(const std::vector<ConditionPoint>& points, const std
 // measured_j <- predicted_j + N(0, sigma_j).
 std::vector<ConditionPoint> simulatedPoints(const std::vector<ConditionPoint>& points,
                                             const std::vector<double>& predicted, std::mt19937_64& rng);
+
+// A gap problem whose data are ConditionPoints: residuals, folds (the points'
+// own), the bootstrap copy and the metrics follow from predict().
+class ConditionSeriesProblem : public GapProblem {
+ public:
+  int residualCount() const override { return static_cast<int>(points_.size()); }
+  bool residuals(const double* theta, int candidate, const double* phi, double* r) const override;
+  std::vector<int> folds() const override;
+  std::unique_ptr<GapProblem> simulated(const double* theta, int candidate, const double* phi,
+                                        std::mt19937_64& rng) const override;
+  GapMetrics metrics(const double* theta, int candidate, const double* phi) const override;
+
+  // The prediction at every point, in the points' unit; NaN where the model
+  // cannot be evaluated (residuals() then returns false).
+  virtual std::vector<double> predict(const double* theta, int candidate, const double* phi) const = 0;
+  const std::vector<ConditionPoint>& points() const { return points_; }
+
+ protected:
+  explicit ConditionSeriesProblem(std::vector<ConditionPoint> points) : points_(std::move(points)) {}
+  // The same problem with other measured values (same layout).
+  virtual std::unique_ptr<GapProblem> withPoints(std::vector<ConditionPoint> points) const = 0;
+  virtual std::string residualName() const = 0;
+  // Extra named figures per point for the metrics rows; empty for none.
+  virtual std::vector<std::vector<std::pair<std::string, double>>> details(const double* theta, int candidate,
+                                                                           const double* phi) const;
+
+  std::vector<ConditionPoint> points_;
+};
 
 }  // namespace mozzi::core::gap

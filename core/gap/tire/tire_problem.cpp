@@ -43,7 +43,7 @@ const std::vector<std::string>& tireEffectNames() {
 }
 
 TireGapProblem::TireGapProblem(TireGapModel model, std::vector<ConditionPoint> points)
-    : model_(std::move(model)), points_(std::move(points)) {}
+    : ConditionSeriesProblem(std::move(points)), model_(std::move(model)) {}
 
 Result<std::unique_ptr<TireGapProblem>> TireGapProblem::create(TireGapModel model,
                                                                std::vector<ConditionPoint> measured) {
@@ -191,36 +191,23 @@ std::vector<double> TireGapProblem::predict(const double* theta, int candidate, 
   return out;
 }
 
-bool TireGapProblem::residuals(const double* theta, int candidate, const double* phi, double* r) const {
-  return whitenedResiduals(points_, predict(theta, candidate, phi), r);
+std::unique_ptr<GapProblem> TireGapProblem::withPoints(std::vector<ConditionPoint> points) const {
+  return std::unique_ptr<GapProblem>(new TireGapProblem(model_, std::move(points)));
 }
 
-std::vector<int> TireGapProblem::folds() const {
-  std::vector<int> f;
-  for (const auto& pt : points_) f.push_back(pt.fold);
-  return f;
-}
-
-std::unique_ptr<GapProblem> TireGapProblem::simulated(const double* theta, int candidate, const double* phi,
-                                                      std::mt19937_64& rng) const {
-  return std::unique_ptr<GapProblem>(
-      new TireGapProblem(model_, simulatedPoints(points_, predict(theta, candidate, phi), rng)));
-}
-
-GapMetrics TireGapProblem::metrics(const double* theta, int candidate, const double* phi) const {
-  std::vector<double> predicted(points_.size(), kNaN);
+std::vector<std::vector<std::pair<std::string, double>>> TireGapProblem::details(const double* theta, int candidate,
+                                                                                 const double* phi) const {
   std::vector<std::vector<std::pair<std::string, double>>> extra(points_.size());
   Terms t;
   for (std::size_t j = 0; j < points_.size(); ++j) {
     const double pa = points_[j].x * 1e5;
     if (!predictOne(pa, theta, candidate, phi, t)) continue;
-    predicted[j] = t.sigma;
     extra[j] = {{"pressure_bar", points_[j].x},
                 {"half_length", halfLength(pa)},
                 {"contact_patch_term", t.contactPatch},
                 {"carcass_term", t.carcass}};
   }
-  return conditionMetrics(points_, predicted, "relaxation_residual", extra);
+  return extra;
 }
 
 std::vector<OverlayCurve> TireGapProblem::overlay(const double* theta, int candidate, const double* phi) const {

@@ -56,25 +56,24 @@ struct TireGapModel {
 
 // Measured relaxation lengths: one ConditionPoint per pressure, x in bar,
 // measured and sigma in m.
-class TireGapProblem : public GapProblem {
+class TireGapProblem : public ConditionSeriesProblem {
  public:
   static Result<std::unique_ptr<TireGapProblem>> create(TireGapModel model, std::vector<ConditionPoint> measured);
 
   std::string dataKind() const override { return "relaxation"; }
   std::vector<Parameter> calibrationParameters() const override;
   std::vector<Candidate> candidates() const override;
-  int residualCount() const override { return static_cast<int>(points_.size()); }
-  bool residuals(const double* theta, int candidate, const double* phi, double* r) const override;
-  std::vector<int> folds() const override;
-  std::unique_ptr<GapProblem> simulated(const double* theta, int candidate, const double* phi,
-                                        std::mt19937_64& rng) const override;
-  GapMetrics metrics(const double* theta, int candidate, const double* phi) const override;
   std::vector<OverlayCurve> overlay(const double* theta, int candidate, const double* phi) const override;
 
-  // Predicted sigma [m] at every measured pressure; false entries are NaN.
-  std::vector<double> predict(const double* theta, int candidate, const double* phi) const;
+  // Predicted sigma [m] at every measured pressure; NaN where not evaluable.
+  std::vector<double> predict(const double* theta, int candidate, const double* phi) const override;
   const TireGapModel& model() const { return model_; }
-  const std::vector<ConditionPoint>& points() const { return points_; }
+
+ protected:
+  std::unique_ptr<GapProblem> withPoints(std::vector<ConditionPoint> points) const override;
+  std::string residualName() const override { return "relaxation_residual"; }
+  std::vector<std::vector<std::pair<std::string, double>>> details(const double* theta, int candidate,
+                                                                   const double* phi) const override;
 
  private:
   TireGapProblem(TireGapModel model, std::vector<ConditionPoint> points);
@@ -85,7 +84,6 @@ class TireGapProblem : public GapProblem {
   double halfLength(double pressurePa) const;
 
   TireGapModel model_;
-  std::vector<ConditionPoint> points_;
 };
 
 // Catalogue names in candidate order.
