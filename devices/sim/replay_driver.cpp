@@ -18,6 +18,7 @@
 
 #include "core/io/uff/uff.h"
 #include "devices/common/threaded_device.h"
+#include "devices/sim/sim_device.h"
 #include "devices/sim/sim_drivers.h"
 
 namespace mozzi::devices::sim {
@@ -149,15 +150,7 @@ Capabilities replayCapabilities(const Recording* rec) {
   }
   caps.triggers = {TriggerKind::Immediate};
   caps.parameters = {
-      ParameterSpec{"sim.realtime",
-                    "Real-time pacing",
-                    ParameterType::Bool,
-                    "",
-                    std::nullopt,
-                    std::nullopt,
-                    {},
-                    true,
-                    "play at the recorded sample rate; off = as fast as the consumer takes it"},
+      realtimeParameter(),
       ParameterSpec{"replay.loop",
                     "Loop",
                     ParameterType::Bool,

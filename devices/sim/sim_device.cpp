@@ -8,6 +8,19 @@
 
 namespace mozzi::devices::sim {
 
+ParameterSpec realtimeParameter() {
+  return ParameterSpec{"sim.realtime",
+                       "Real-time pacing",
+                       ParameterType::Bool,
+                       "",
+                       std::nullopt,
+                       std::nullopt,
+                       {},
+                       true,
+                       "deliver data at the pace of the (simulated or recorded) clock; off = as fast as the consumer "
+                       "takes it"};
+}
+
 std::vector<ParameterSpec> commonSimParameters() {
   return {
       ParameterSpec{"sim.seed",
@@ -19,15 +32,7 @@ std::vector<ParameterSpec> commonSimParameters() {
                     {},
                     std::int64_t{1},
                     "same seed, same data: noise, hit timing and faults are reproducible"},
-      ParameterSpec{"sim.realtime",
-                    "Real-time pacing",
-                    ParameterType::Bool,
-                    "",
-                    std::nullopt,
-                    std::nullopt,
-                    {},
-                    true,
-                    "deliver data at the pace of the simulated clock; off = as fast as the consumer takes it"},
+      realtimeParameter(),
       ParameterSpec{"fault.overrun_probability",
                     "Overrun probability per block",
                     ParameterType::Real,

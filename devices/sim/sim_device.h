@@ -33,6 +33,8 @@ class SignalModel {
   }
 };
 
+// "sim.realtime": pace the stream at its clock, or as fast as it is taken.
+ParameterSpec realtimeParameter();
 // "sim.seed", "sim.realtime" and the "fault.*" switches.
 std::vector<ParameterSpec> commonSimParameters();
 // An input wired to the USB-1608FS-Plus ranges, DC or AC coupled.
