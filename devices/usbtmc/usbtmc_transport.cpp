@@ -249,6 +249,42 @@ core::Result<void> UsbtmcTransport::discardBulkIn() {
   return core::makeError(core::ErrorCode::IoError, "the Bulk-IN endpoint kept sending after the abort", where());
 }
 
+core::Result<void> UsbtmcTransport::pollUntilDone(const ControlSetup& check, bool clearOutHalt) {
+  const std::string name = classRequestName(check.request);
+  for (int i = 0; i < options_.abortPolls; ++i) {
+    auto c = control(check);
+    if (!c) return c.error();
+    std::uint8_t status = 0;
+    bool fifoHasData = false;
+    if (check.request == kCheckClearStatus) {
+      auto answer = parseCheckClearAnswer(*c);
+      if (!answer) return answer.error();
+      status = answer->status;
+      fifoHasData = answer->bulkInFifoHasData;
+    } else {
+      auto answer = parseCheckAbortAnswer(*c);
+      if (!answer) return answer.error();
+      status = answer->status;
+      fifoHasData = answer->bulkInFifoHasData;
+    }
+    if (status == static_cast<std::uint8_t>(Status::Success)) {
+      if (!clearOutHalt) return {};
+      const int r = libusb_clear_halt(handle_, info_.bulkOut);
+      if (r != 0) return fail(r, "clearing the Bulk-OUT halt after " + name + " failed");
+      return {};
+    }
+    if (status != static_cast<std::uint8_t>(Status::Pending))
+      return core::makeError(core::ErrorCode::IoError, name + " answered " + statusName(status), where());
+    // Pending: the device may hold Bulk-IN data that must be read out first.
+    if (fifoHasData) {
+      if (auto d = discardBulkIn(); !d) return d;
+    } else {
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+  }
+  return core::makeError(core::ErrorCode::IoError, name + " stayed pending", where());
+}
+
 core::Result<void> UsbtmcTransport::abortBulkOut(std::uint8_t tag) {
   auto a = control(initiateAbortBulkOut(tag, info_.bulkOut));
   if (!a) return a.error();
@@ -259,22 +295,8 @@ core::Result<void> UsbtmcTransport::abortBulkOut(std::uint8_t tag) {
   if (answer->status != static_cast<std::uint8_t>(Status::Success))
     return core::makeError(core::ErrorCode::IoError, "INITIATE_ABORT_BULK_OUT answered " + statusName(answer->status),
                            where());
-  for (int i = 0; i < options_.abortPolls; ++i) {
-    auto c = control(checkAbortBulkOutStatus(info_.bulkOut));
-    if (!c) return c.error();
-    auto check = parseCheckAbortAnswer(*c);
-    if (!check) return check.error();
-    if (check->status == static_cast<std::uint8_t>(Status::Success)) {
-      const int r = libusb_clear_halt(handle_, info_.bulkOut);
-      if (r != 0) return fail(r, "clearing the Bulk-OUT halt after the abort failed");
-      return {};
-    }
-    if (check->status != static_cast<std::uint8_t>(Status::Pending))
-      return core::makeError(core::ErrorCode::IoError,
-                             "CHECK_ABORT_BULK_OUT_STATUS answered " + statusName(check->status), where());
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  return core::makeError(core::ErrorCode::IoError, "the Bulk-OUT abort stayed pending", where());
+  // The abort ends with CLEAR_FEATURE(ENDPOINT_HALT) on Bulk-OUT.
+  return pollUntilDone(checkAbortBulkOutStatus(info_.bulkOut), true);
 }
 
 core::Result<void> UsbtmcTransport::abortBulkIn(std::uint8_t tag) {
@@ -287,22 +309,7 @@ core::Result<void> UsbtmcTransport::abortBulkIn(std::uint8_t tag) {
     return core::makeError(core::ErrorCode::IoError, "INITIATE_ABORT_BULK_IN answered " + statusName(answer->status),
                            where());
   if (auto d = discardBulkIn(); !d) return d;
-  for (int i = 0; i < options_.abortPolls; ++i) {
-    auto c = control(checkAbortBulkInStatus(info_.bulkIn));
-    if (!c) return c.error();
-    auto check = parseCheckAbortAnswer(*c);
-    if (!check) return check.error();
-    if (check->status == static_cast<std::uint8_t>(Status::Success)) return {};
-    if (check->status != static_cast<std::uint8_t>(Status::Pending))
-      return core::makeError(core::ErrorCode::IoError,
-                             "CHECK_ABORT_BULK_IN_STATUS answered " + statusName(check->status), where());
-    if (check->bulkInFifoHasData) {
-      if (auto d = discardBulkIn(); !d) return d;
-    } else {
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-  }
-  return core::makeError(core::ErrorCode::IoError, "the Bulk-IN abort stayed pending", where());
+  return pollUntilDone(checkAbortBulkInStatus(info_.bulkIn), false);
 }
 
 core::Result<void> UsbtmcTransport::clear() {
@@ -312,27 +319,8 @@ core::Result<void> UsbtmcTransport::clear() {
   if (!answer) return answer.error();
   if (answer->status != static_cast<std::uint8_t>(Status::Success))
     return core::makeError(core::ErrorCode::IoError, "INITIATE_CLEAR answered " + statusName(answer->status), where());
-  for (int i = 0; i < options_.abortPolls; ++i) {
-    auto c = control(checkClearStatus(info_.interfaceNumber));
-    if (!c) return c.error();
-    auto check = parseCheckClearAnswer(*c);
-    if (!check) return check.error();
-    if (check->status == static_cast<std::uint8_t>(Status::Success)) {
-      // The clear ends with CLEAR_FEATURE(ENDPOINT_HALT) on Bulk-OUT (USBTMC INITIATE_CLEAR).
-      const int r = libusb_clear_halt(handle_, info_.bulkOut);
-      if (r != 0) return fail(r, "clearing the Bulk-OUT halt after the device clear failed");
-      return {};
-    }
-    if (check->status != static_cast<std::uint8_t>(Status::Pending))
-      return core::makeError(core::ErrorCode::IoError, "CHECK_CLEAR_STATUS answered " + statusName(check->status),
-                             where());
-    if (check->bulkInFifoHasData) {
-      if (auto d = discardBulkIn(); !d) return d;
-    } else {
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-  }
-  return core::makeError(core::ErrorCode::IoError, "the device clear stayed pending", where());
+  // The clear, too, ends with CLEAR_FEATURE(ENDPOINT_HALT) on Bulk-OUT.
+  return pollUntilDone(checkClearStatus(info_.interfaceNumber), true);
 }
 
 core::Error UsbtmcTransport::timedOut(const std::string& what, unsigned timeoutMs,

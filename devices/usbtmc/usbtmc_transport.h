@@ -83,6 +83,10 @@ class UsbtmcTransport final : public MessageChannel {
   core::Error fail(int code, const std::string& what);
   core::Error gone() const;
   core::Result<void> discardBulkIn();
+  // Repeats a CHECK_* request while it answers PENDING (reading Bulk-IN out
+  // when the device says its FIFO holds data); on success clears the Bulk-OUT
+  // halt when asked.
+  core::Result<void> pollUntilDone(const ControlSetup& check, bool clearOutHalt);
   core::Result<void> recover(core::Result<void> abort);
   core::Error timedOut(const std::string& what, unsigned timeoutMs, const core::Result<void>& recovery) const;
 

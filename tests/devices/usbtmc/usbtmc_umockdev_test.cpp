@@ -150,6 +150,7 @@ TEST_F(UsbtmcUmockdev, WriteTimeoutAbortsTheTransferAndClearsTheHalt) {
   auto t = open();
   ASSERT_TRUE(t);
   ScpiSession s(*t, 200);
+  const std::size_t halts = model_.log().clearHalts.size();  // one from the clear on open
   model_.with([](UsbtmcDeviceModel& m) { m.holdBulkOut = true; });
   auto r = s.write("SOUR1:FREQ 10");
   ASSERT_FALSE(r.ok());
@@ -160,7 +161,9 @@ TEST_F(UsbtmcUmockdev, WriteTimeoutAbortsTheTransferAndClearsTheHalt) {
   ASSERT_GE(n, 2u);
   EXPECT_EQ(log.classRequests[n - 2], (std::pair<int, int>{kInitiateAbortBulkOut, 1}));
   EXPECT_EQ(log.classRequests[n - 1].first, kCheckAbortBulkOutStatus);
-  EXPECT_EQ(log.clearHalts.back(), 0x02u);  // CLEAR_FEATURE(ENDPOINT_HALT) on Bulk-OUT after the abort
+  // CLEAR_FEATURE(ENDPOINT_HALT) on Bulk-OUT after the abort.
+  EXPECT_EQ(std::vector<unsigned>(log.clearHalts.begin() + static_cast<std::ptrdiff_t>(halts), log.clearHalts.end()),
+            (std::vector<unsigned>{0x02}));
   ASSERT_TRUE(s.command("SOUR1:FREQ 10").ok());
   double f = 0.0;
   model_.with([&](UsbtmcDeviceModel& m) { f = m.instrument.channels[1].frequency; });
