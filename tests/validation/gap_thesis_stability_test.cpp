@@ -22,17 +22,21 @@ TEST(GapThesisStability, SharpPublishedFrequenciesAgainstTheTranscription) {
                            std::string(MOZZI_SHARED_DATA_DIR) + "/motorcycle/sharp1971-parameters.csv\"}";
   auto model = parseStabilityGapModel(json, "sharp", "");
   ASSERT_TRUE(model) << model.error().describe();
-  // Published Im(lambda) [rad/s] at 30-160 ft/s; 3 printed figures: half a unit
-  // of the last digit (0.05 rad/s) as the standard uncertainty.
-  const double u[] = {9.144, 15.24, 21.336, 30.48, 39.624, 48.768};
+  // Published Im(lambda) / 2 pi at 30-160 ft/s, 0.05 rad/s uncertainty (half a
+  // unit of the printed last digit): docs/gap/sharp1971-published-modes.csv,
+  // checked here against the README's table.
+  auto text = readTextFile(std::string(MOZZI_SOURCE_DIR) + "/docs/gap/sharp1971-published-modes.csv");
+  ASSERT_TRUE(text);
+  auto published = parseModeFrequencyCsv(*text, "sharp1971-published-modes.csv");
+  ASSERT_TRUE(published) << published.error().describe();
   const double weave[] = {4.56, 11.4, 16.8, 19.2, 20.4, 21.2};
   const double wobble[] = {55.5, 54.6, 54.0, 54.3, 55.6, 57.5};
-  std::vector<ModeFrequency> published;
-  for (int i = 0; i < 6; ++i) {
-    published.push_back({"weave", u[i], weave[i] / kTwoPi, 0.05 / kTwoPi});
-    published.push_back({"wobble", u[i], wobble[i] / kTwoPi, 0.05 / kTwoPi});
+  ASSERT_EQ(published->size(), 12u);
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_NEAR((*published)[2 * i].frequencyHz * kTwoPi, weave[i], 1e-4);  // 5 decimals in the file
+    EXPECT_NEAR((*published)[2 * i + 1].frequencyHz * kTwoPi, wobble[i], 1e-4);
   }
-  auto p = StabilityGapProblem::create(*model, published);
+  auto p = StabilityGapProblem::create(*model, *published);
   ASSERT_TRUE(p) << p.error().describe();
   DiagnosisOptions o;
   o.bootstrapSamples = 50;  // kept small: every refit sweeps the modes (about 1 ms per evaluation)
