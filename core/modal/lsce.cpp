@@ -58,6 +58,12 @@ Result<ImpulseResponses> impulseResponses(const FrfMatrix& frf, const LsceOption
                          hz(fN) + ")); use pLSCF for a zoom band",
                      where + ", frequency grid");
   }
+  if (kTop < 4) {
+    return makeError(ErrorCode::InvalidArgument,
+                     "band up to " + hz(opt.bandHighHz) + " holds " + std::to_string(top + 1) +
+                         " lines; LSCE needs the band from 0 Hz",
+                     where + ", band");
+  }
   const Eigen::Index no = frf.responseCount(), ni = frf.referenceCount();
   ImpulseResponses out;
   out.period = 2 * kTop;

@@ -178,6 +178,13 @@ TEST(Lsce, ZoomBandAndTooFewSamplesAreClearErrors) {
   ASSERT_FALSE(c.ok());
   EXPECT_EQ(c.error().code, ErrorCode::InvalidArgument);
   EXPECT_NE(c.error().message.find("impulse-response samples"), std::string::npos) << c.error().message;
+  // A band below the first spacing: no impulse response at all.
+  opt = syntheticOptions();
+  opt.bandLowHz = 0.0;
+  opt.bandHighHz = 0.05;
+  auto tiny = lsceStabilization(coarse, opt);
+  ASSERT_FALSE(tiny.ok());
+  EXPECT_EQ(tiny.error().code, ErrorCode::InvalidArgument) << tiny.error().describe();
   // Order range too small to judge stability.
   opt = syntheticOptions();
   opt.maxOrder = 4;
