@@ -29,6 +29,7 @@
 #include "core/common/versions.h"
 #include "devices/common/versions.h"
 #include "core/geometry/mesh_placement.h"
+#include "views/gap/model_test_view.h"
 #include "views/panels/project_overview.h"
 #include "views/plots/frf_plot.h"
 #include "views/scene/scene_view.h"
@@ -139,6 +140,8 @@ void MainWindow::createActions() {
   connect(demoAction_, &QAction::triggered, this, &MainWindow::onCreateDemo);
   integrityAction_ = new QAction(this);
   connect(integrityAction_, &QAction::triggered, this, &MainWindow::onCheckIntegrity);
+  modelTestAction_ = new QAction(this);
+  connect(modelTestAction_, &QAction::triggered, this, [this] { openModelTest(); });
   aboutAction_ = new QAction(this);
   aboutAction_->setMenuRole(QAction::AboutRole);
   connect(aboutAction_, &QAction::triggered, this, &MainWindow::onAbout);
@@ -178,6 +181,8 @@ void MainWindow::createMenus() {
   toolsMenu_ = menuBar()->addMenu(QString());
   toolsMenu_->addAction(demoAction_);
   toolsMenu_->addAction(integrityAction_);
+  toolsMenu_->addSeparator();
+  toolsMenu_->addAction(modelTestAction_);
 
   helpMenu_ = menuBar()->addMenu(QString());
   helpMenu_->addAction(aboutAction_);
@@ -261,6 +266,9 @@ void MainWindow::retranslateUi() {
   toolsMenu_->setTitle(tr("&Tools"));
   demoAction_->setText(tr("Create &Demo Project..."));
   integrityAction_->setText(tr("Check Project &Integrity"));
+  modelTestAction_->setText(tr("&Model vs Test..."));
+  modelTestAction_->setStatusTip(tr("Diagnose where a model and a test disagree and which unmodelled effect explains it"));
+  if (modelTest_) tabs_->setTabText(tabs_->indexOf(modelTest_), tr("Model vs Test"));
   helpMenu_->setTitle(tr("&Help"));
   aboutAction_->setText(tr("&About Mozzi"));
   aboutQtAction_->setText(tr("About &Qt"));
@@ -554,6 +562,20 @@ bool MainWindow::openFrfSet(std::int64_t frfSetId) {
   plot->setFrfs(std::make_shared<const core::FrfMatrix>(std::move(frf).value()));
   tabs_->setCurrentIndex(tabs_->addTab(plot, tr("FRF: %1").arg(name)));
   return true;
+}
+
+views::ModelTestView* MainWindow::openModelTest() {
+  if (!modelTest_) {
+    modelTest_ = new views::ModelTestView(tabs_);
+    modelTest_->setObjectName(QStringLiteral("modelTestTab"));
+    tabs_->addTab(modelTest_, tr("Model vs Test"));
+    connect(modelTest_, &views::ModelTestView::finished, this, [this](bool ok) {
+      log(ok ? tr("Model vs test: %1").arg(modelTest_->verdictText())
+             : tr("Model vs test: %1").arg(modelTest_->statusText()));
+    });
+  }
+  tabs_->setCurrentWidget(modelTest_);
+  return modelTest_;
 }
 
 bool MainWindow::importUff(const QString& path) {

@@ -26,6 +26,7 @@ namespace core {
 struct Error;
 }  // namespace core
 namespace views {
+class ModelTestView;
 class ProjectOverview;
 class SceneView;
 }  // namespace views
@@ -57,6 +58,8 @@ class MainWindow : public QMainWindow {
   // Opens (or raises) a tab plotting a stored FRF set.
   bool openFrfSet(std::int64_t frfSetId);
   std::int64_t currentSpecimen() const { return currentSpecimen_; }
+  // Opens (or raises) the "Model vs test" gap-diagnosis tab.
+  views::ModelTestView* openModelTest();
 
   // Switches the interface language ("en", "it"); returns false if unknown.
   bool setLanguage(const QString& code);
@@ -102,6 +105,7 @@ class MainWindow : public QMainWindow {
   QTabWidget* tabs_ = nullptr;
   views::ProjectOverview* overview_ = nullptr;
   views::SceneView* scene_ = nullptr;
+  QPointer<views::ModelTestView> modelTest_;
 
   QDockWidget* projectDock_ = nullptr;
   QDockWidget* propertiesDock_ = nullptr;
@@ -130,6 +134,7 @@ class MainWindow : public QMainWindow {
   QAction* resetLayoutAction_ = nullptr;
   QAction* demoAction_ = nullptr;
   QAction* integrityAction_ = nullptr;
+  QAction* modelTestAction_ = nullptr;
   QAction* aboutAction_ = nullptr;
   QAction* aboutQtAction_ = nullptr;
   QActionGroup* languageGroup_ = nullptr;

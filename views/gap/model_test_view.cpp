@@ -1,0 +1,669 @@
+#include "views/gap/model_test_view.h"
+
+#include <QBuffer>
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPixmap>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QTextBrowser>
+#include <QThread>
+#include <QVBoxLayout>
+#include <qwt_legend.h>
+#include <qwt_plot.h>
+#include <qwt_plot_curve.h>
+#include <qwt_plot_grid.h>
+#include <qwt_plot_renderer.h>
+#include <qwt_scale_engine.h>
+#include <qwt_symbol.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "core/common/text.h"
+#include "core/gap/diagnosis_json.h"
+#include "core/gap/problem_loader.h"
+
+namespace mozzi {
+namespace views {
+namespace {
+
+constexpr int kBootstrapDefault = 200;
+
+QString number(double value, int digits = 4) { return QString::fromStdString(core::formatNumber(value, digits)); }
+
+QString joined(const std::vector<std::string>& items) {
+  QStringList list;
+  for (const auto& item : items) list << QString::fromStdString(item);
+  return list.join(QStringLiteral(", "));
+}
+
+QColor verdictColour(core::gap::Verdict verdict) {
+  switch (verdict) {
+    case core::gap::Verdict::Effect: return QColor(42, 157, 143);
+    case core::gap::Verdict::None: return QColor(29, 53, 87);
+    case core::gap::Verdict::Ambiguous:
+    case core::gap::Verdict::Partial: return QColor(233, 150, 30);
+    case core::gap::Verdict::Unexplained:
+    case core::gap::Verdict::NotIdentifiable: return QColor(230, 57, 70);
+  }
+  return QColor(Qt::black);
+}
+
+QwtPlotCurve* addCurve(QwtPlot* plot, const QColor& colour, Qt::PenStyle style) {
+  auto* curve = new QwtPlotCurve;
+  curve->setPen(colour, 1.5, style);
+  curve->setRenderHint(QwtPlotItem::RenderAntialiased, true);
+  curve->attach(plot);
+  return curve;
+}
+
+QVector<QPointF> points(const std::vector<double>& x, const std::vector<double>& y, bool logY) {
+  QVector<QPointF> out;
+  const size_t n = std::min(x.size(), y.size());
+  out.reserve(static_cast<int>(n));
+  for (size_t i = 0; i < n; ++i) {
+    // A log axis cannot show zero or negative values: leave those points out.
+    if (!std::isfinite(y[i]) || (logY && y[i] <= 0.0)) continue;
+    out.append(QPointF(x[i], y[i]));
+  }
+  return out;
+}
+
+}  // namespace
+
+ModelTestView::ModelTestView(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+
+  auto* inputs = new QGridLayout;
+  modelLabel_ = new QLabel(this);
+  modelPath_ = new QLineEdit(this);
+  modelPath_->setObjectName(QStringLiteral("gapModelPath"));
+  browseModel_ = new QPushButton(this);
+  testLabel_ = new QLabel(this);
+  testPath_ = new QLineEdit(this);
+  testPath_->setObjectName(QStringLiteral("gapTestPath"));
+  browseTest_ = new QPushButton(this);
+  inputs->addWidget(modelLabel_, 0, 0);
+  inputs->addWidget(modelPath_, 0, 1);
+  inputs->addWidget(browseModel_, 0, 2);
+  inputs->addWidget(testLabel_, 1, 0);
+  inputs->addWidget(testPath_, 1, 1);
+  inputs->addWidget(browseTest_, 1, 2);
+
+  auto* options = new QHBoxLayout;
+  bandLabel_ = new QLabel(this);
+  bandLow_ = new QDoubleSpinBox(this);
+  bandHigh_ = new QDoubleSpinBox(this);
+  for (QDoubleSpinBox* box : {bandLow_, bandHigh_}) {
+    box->setRange(0.0, 1.0e6);
+    box->setDecimals(1);
+    box->setSuffix(QStringLiteral(" Hz"));
+  }
+  bootstrapLabel_ = new QLabel(this);
+  bootstrap_ = new QSpinBox(this);
+  bootstrap_->setRange(20, 5000);
+  bootstrap_->setValue(kBootstrapDefault);
+  multistartsLabel_ = new QLabel(this);
+  multistarts_ = new QSpinBox(this);
+  multistarts_->setRange(1, 100);
+  multistarts_->setValue(core::gap::DiagnosisOptions{}.multistarts);
+  load_ = new QPushButton(this);
+  run_ = new QPushButton(this);
+  run_->setObjectName(QStringLiteral("gapRun"));
+  cancel_ = new QPushButton(this);
+  cancel_->setEnabled(false);
+  export_ = new QPushButton(this);
+  export_->setEnabled(false);
+  options->addWidget(bandLabel_);
+  options->addWidget(bandLow_);
+  options->addWidget(bandHigh_);
+  options->addSpacing(12);
+  options->addWidget(bootstrapLabel_);
+  options->addWidget(bootstrap_);
+  options->addWidget(multistartsLabel_);
+  options->addWidget(multistarts_);
+  options->addStretch(1);
+  options->addWidget(load_);
+  options->addWidget(run_);
+  options->addWidget(cancel_);
+  options->addWidget(export_);
+
+  auto* progressRow = new QHBoxLayout;
+  progress_ = new QProgressBar(this);
+  progress_->setRange(0, 1000);
+  progress_->setValue(0);
+  status_ = new QLabel(this);
+  status_->setObjectName(QStringLiteral("gapStatus"));
+  status_->setWordWrap(true);
+  progressRow->addWidget(progress_, 1);
+  progressRow->addWidget(status_, 2);
+
+  layout->addLayout(inputs);
+  layout->addLayout(options);
+  layout->addLayout(progressRow);
+
+  auto* splitter = new QSplitter(Qt::Horizontal, this);
+  auto* left = new QWidget(splitter);
+  auto* leftLayout = new QVBoxLayout(left);
+  leftLayout->setContentsMargins(0, 0, 0, 0);
+  effectsLabel_ = new QLabel(left);
+  effects_ = new QListWidget(left);
+  effects_->setObjectName(QStringLiteral("gapEffects"));
+  verdict_ = new QLabel(left);
+  verdict_->setObjectName(QStringLiteral("gapVerdict"));
+  QFont big = verdict_->font();
+  big.setPointSizeF(big.pointSizeF() * 1.4);
+  big.setBold(true);
+  verdict_->setFont(big);
+  explanation_ = new QTextBrowser(left);
+  leftLayout->addWidget(effectsLabel_);
+  leftLayout->addWidget(effects_, 1);
+  leftLayout->addWidget(verdict_);
+  leftLayout->addWidget(explanation_, 2);
+
+  results_ = new QTabWidget(splitter);
+  whereTabs_ = new QTabWidget(results_);
+  whereTabs_->setObjectName(QStringLiteral("gapWhere"));
+  ranking_ = new QTableWidget(results_);
+  ranking_->setObjectName(QStringLiteral("gapRanking"));
+  ranking_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  ranking_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  ranking_->horizontalHeader()->setStretchLastSection(true);
+  auto* overlay = new QWidget(results_);
+  auto* overlayLayout = new QVBoxLayout(overlay);
+  overlayChoice_ = new QComboBox(overlay);
+  overlayChoice_->setObjectName(QStringLiteral("gapOverlayChoice"));
+  overlayPlot_ = new QwtPlot(overlay);
+  overlayPlot_->setObjectName(QStringLiteral("gapOverlayPlot"));
+  overlayPlot_->setCanvasBackground(Qt::white);
+  auto* grid = new QwtPlotGrid;
+  grid->setMajorPen(QColor(0, 0, 0, 40), 0.0, Qt::DotLine);
+  grid->attach(overlayPlot_);
+  overlayPlot_->insertLegend(new QwtLegend, QwtPlot::BottomLegend);
+  measuredCurve_ = addCurve(overlayPlot_, QColor(29, 53, 87), Qt::SolidLine);
+  beforeCurve_ = addCurve(overlayPlot_, QColor(230, 57, 70), Qt::DashLine);
+  afterCurve_ = addCurve(overlayPlot_, QColor(42, 157, 143), Qt::SolidLine);
+  overlayLayout->addWidget(overlayChoice_);
+  overlayLayout->addWidget(overlayPlot_, 1);
+  results_->addTab(whereTabs_, QString());
+  results_->addTab(ranking_, QString());
+  results_->addTab(overlay, QString());
+  splitter->addWidget(left);
+  splitter->addWidget(results_);
+  splitter->setStretchFactor(1, 3);
+  layout->addWidget(splitter, 1);
+
+  // Inputs changed: the loaded problem no longer matches them; run() reloads.
+  const auto stale = [this] { problem_.reset(); };
+  connect(modelPath_, &QLineEdit::textChanged, this, stale);
+  connect(testPath_, &QLineEdit::textChanged, this, stale);
+  connect(bandLow_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, stale);
+  connect(bandHigh_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, stale);
+  connect(browseModel_, &QPushButton::clicked, this, &ModelTestView::browseModel);
+  connect(browseTest_, &QPushButton::clicked, this, &ModelTestView::browseTest);
+  connect(load_, &QPushButton::clicked, this, [this] { loadInputs(); });
+  connect(run_, &QPushButton::clicked, this, [this] { run(); });
+  connect(cancel_, &QPushButton::clicked, this, &ModelTestView::cancel);
+  connect(export_, &QPushButton::clicked, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Diagnosis Report"), QString(),
+                                                      tr("HTML report (*.html)"));
+    if (path.isEmpty()) return;
+    QString error;
+    if (!exportReport(path, &error)) setStatus(error);
+  });
+  connect(overlayChoice_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+          [this](int index) { showOverlay(index); });
+  retranslate();
+}
+
+ModelTestView::~ModelTestView() {
+  // The worker holds only shared state; ask it to stop and wait so it never
+  // outlives the widget it reports to.
+  if (worker_) {
+    cancel();
+    worker_->wait();
+  }
+}
+
+void ModelTestView::setModelPath(const QString& path) { modelPath_->setText(path); }
+void ModelTestView::setTestPath(const QString& path) { testPath_->setText(path); }
+void ModelTestView::setBand(double lowHz, double highHz) {
+  bandLow_->setValue(lowHz);
+  bandHigh_->setValue(highHz);
+}
+void ModelTestView::setBootstrapSamples(int samples) { bootstrap_->setValue(samples); }
+void ModelTestView::setMultistarts(int starts) { multistarts_->setValue(starts); }
+void ModelTestView::setEffects(const QStringList& names) {
+  for (int i = 0; i < effects_->count(); ++i) {
+    QListWidgetItem* item = effects_->item(i);
+    item->setCheckState(names.contains(item->text()) ? Qt::Checked : Qt::Unchecked);
+  }
+}
+bool ModelTestView::isRunning() const { return worker_ && worker_->isRunning(); }
+QString ModelTestView::statusText() const { return status_->text(); }
+QString ModelTestView::verdictText() const { return verdict_->text(); }
+int ModelTestView::overlayCurveCount() const { return static_cast<int>(before_.size()); }
+
+void ModelTestView::setStatus(const QString& text) {
+  statusRaw_ = text;
+  status_->setText(text);
+}
+
+void ModelTestView::browseModel() {
+  const QString path = QFileDialog::getOpenFileName(
+      this, tr("Choose Model"), modelPath_->text(),
+      tr("Models (*.json *.uff *.unv);;All files (*)"));
+  if (!path.isEmpty()) setModelPath(path);
+}
+
+void ModelTestView::browseTest() {
+  const QString path = QFileDialog::getOpenFileName(
+      this, tr("Choose Test Data"), testPath_->text(),
+      tr("Test data (*.uff *.unv *.csv *.json);;All files (*)"));
+  if (!path.isEmpty()) setTestPath(path);
+}
+
+bool ModelTestView::loadInputs() {
+  if (isRunning()) return false;
+  if (modelPath_->text().isEmpty() || testPath_->text().isEmpty()) {
+    setStatus(tr("Choose a model file and a test file first."));
+    return false;
+  }
+  core::gap::LoadOptions options;
+  options.bandLowHz = bandLow_->value();
+  if (bandHigh_->value() > 0.0) options.bandHighHz = bandHigh_->value();  // 0 = to the last line
+  auto loaded = core::gap::loadGapProblem(modelPath_->text().toStdString(), testPath_->text().toStdString(), options);
+  if (!loaded.ok()) {
+    problem_.reset();
+    effects_->clear();
+    setStatus(tr("Cannot use these files: %1").arg(QString::fromStdString(loaded.error().describe())));
+    return false;
+  }
+  problem_ = std::shared_ptr<const core::gap::GapProblem>(std::move(loaded.value()));
+  std::set<std::string> names;
+  for (const auto& candidate : problem_->candidates()) names.insert(candidate.effect);
+  // A reload (new files or band) keeps the user's choices for effects still offered.
+  QStringList unticked;
+  for (int i = 0; i < effects_->count(); ++i) {
+    if (effects_->item(i)->checkState() != Qt::Checked) unticked << effects_->item(i)->text();
+  }
+  effects_->clear();
+  for (const auto& name : names) {
+    auto* item = new QListWidgetItem(QString::fromStdString(name), effects_);
+    item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+    item->setCheckState(unticked.contains(item->text()) ? Qt::Unchecked : Qt::Checked);
+  }
+  setStatus(tr("%1 data, %2 residuals, %3 candidate effects at their locations.")
+                .arg(QString::fromStdString(problem_->dataKind()))
+                .arg(problem_->residualCount())
+                .arg(problem_->candidates().size()));
+  return true;
+}
+
+bool ModelTestView::run() {
+  if (isRunning()) return false;
+  if (!problem_ && !loadInputs()) return false;
+  core::gap::DiagnosisOptions options;
+  options.bootstrapSamples = bootstrap_->value();
+  options.multistarts = multistarts_->value();
+  for (int i = 0; i < effects_->count(); ++i) {
+    if (effects_->item(i)->checkState() == Qt::Checked) options.effects.push_back(effects_->item(i)->text().toStdString());
+  }
+  if (options.effects.empty()) {
+    setStatus(tr("Tick at least one candidate effect."));
+    return false;
+  }
+  cancelRequested_ = std::make_shared<std::atomic<bool>>(false);
+  auto cancelFlag = cancelRequested_;
+  QPointer<ModelTestView> self(this);
+  options.progress = [self, cancelFlag](double fraction, const std::string& step) {
+    const QString text = QString::fromStdString(step);
+    QMetaObject::invokeMethod(
+        self.data(), [self, fraction, text] {
+          if (self) self->onProgress(fraction, text);
+        },
+        Qt::QueuedConnection);
+    return !cancelFlag->load();
+  };
+  result_.reset();
+  error_.clear();
+  auto problem = problem_;
+  running_ = problem_;
+  worker_ = QThread::create([this, problem, options] {
+    auto result = core::gap::diagnose(*problem, options);
+    if (result.ok()) {
+      result_ = std::move(result.value());
+    } else {
+      error_ = QString::fromStdString(result.error().describe());
+    }
+  });
+  connect(worker_, &QThread::finished, this, &ModelTestView::onFinished);
+  connect(worker_, &QThread::finished, worker_, &QObject::deleteLater);
+  run_->setEnabled(false);
+  load_->setEnabled(false);
+  cancel_->setEnabled(true);
+  progress_->setValue(0);
+  setStatus(tr("Diagnosing..."));
+  worker_->start();
+  return true;
+}
+
+void ModelTestView::cancel() {
+  if (cancelRequested_) cancelRequested_->store(true);
+}
+
+void ModelTestView::onProgress(double fraction, const QString& step) {
+  progress_->setValue(static_cast<int>(std::clamp(fraction, 0.0, 1.0) * 1000.0));
+  if (!step.isEmpty()) setStatus(step);
+}
+
+void ModelTestView::onFinished() {
+  run_->setEnabled(true);
+  load_->setEnabled(true);
+  cancel_->setEnabled(false);
+  const bool ok = result_.has_value();
+  if (ok) {
+    diagnosis_ = std::move(result_);
+    result_.reset();
+    diagnosed_ = running_;
+    progress_->setValue(1000);
+    setStatus(tr("Diagnosis done."));
+    showDiagnosis();
+  } else {
+    setStatus(tr("The diagnosis stopped: %1").arg(error_));
+  }
+  export_->setEnabled(diagnosis_.has_value());
+  emit finished(ok);
+}
+
+void ModelTestView::showDiagnosis() {
+  if (!diagnosis_) return;
+  const auto& d = *diagnosis_;
+  verdict_->setText(tr("Verdict: %1").arg(QString::fromLatin1(core::gap::verdictName(d.verdict))));
+  QPalette palette = verdict_->palette();
+  palette.setColor(QPalette::WindowText, verdictColour(d.verdict));
+  verdict_->setPalette(palette);
+  explanation_->setPlainText(QString::fromStdString(d.explanation));
+  fillWhere();
+  fillRanking();
+  computeOverlays();
+}
+
+void ModelTestView::fillWhere() {
+  while (whereTabs_->count() > 0) {
+    QWidget* page = whereTabs_->widget(0);
+    whereTabs_->removeTab(0);
+    delete page;
+  }
+  if (!diagnosis_) return;
+  const auto& entries = diagnosis_->gapBefore.entries;
+  std::vector<std::string> kinds;
+  for (const auto& entry : entries) {
+    if (std::find(kinds.begin(), kinds.end(), entry.kind) == kinds.end()) kinds.push_back(entry.kind);
+  }
+  for (const auto& kind : kinds) {
+    std::vector<const core::gap::GapEntry*> rows;
+    std::vector<std::string> detailNames;
+    for (const auto& entry : entries) {
+      if (entry.kind != kind) continue;
+      rows.push_back(&entry);
+      for (const auto& detail : entry.details) {
+        if (std::find(detailNames.begin(), detailNames.end(), detail.first) == detailNames.end())
+          detailNames.push_back(detail.first);
+      }
+    }
+    auto* table = new QTableWidget(static_cast<int>(rows.size()), 4 + static_cast<int>(detailNames.size()), whereTabs_);
+    table->setObjectName(QStringLiteral("gapWhere_%1").arg(QString::fromStdString(kind)));
+    table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    QStringList headers{tr("Item"), QString::fromStdString(diagnosis_->gapBefore.residualName), tr("z"),
+                        tr("Significant")};
+    for (const auto& name : detailNames) headers << QString::fromStdString(name);
+    table->setHorizontalHeaderLabels(headers);
+    for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
+      const auto& entry = *rows[static_cast<size_t>(r)];
+      table->setItem(r, 0, new QTableWidgetItem(QString::fromStdString(entry.label)));
+      table->setItem(r, 1, new QTableWidgetItem(number(entry.value)));
+      table->setItem(r, 2, new QTableWidgetItem(number(entry.z, 3)));
+      auto* flag = new QTableWidgetItem(entry.flagged ? tr("yes") : tr("no"));
+      if (entry.flagged) flag->setForeground(QColor(230, 57, 70));
+      table->setItem(r, 3, flag);
+      for (const auto& detail : entry.details) {
+        const auto at = std::find(detailNames.begin(), detailNames.end(), detail.first) - detailNames.begin();
+        table->setItem(r, 4 + static_cast<int>(at), new QTableWidgetItem(number(detail.second)));
+      }
+    }
+    table->resizeColumnsToContents();
+    whereTabs_->addTab(table, QString::fromStdString(kind));
+  }
+}
+
+void ModelTestView::fillRanking() {
+  ranking_->clear();
+  ranking_->setColumnCount(7);
+  ranking_->setHorizontalHeaderLabels({tr("Effect"), tr("Location"), tr("Size ± standard error"),
+                                       tr("Likelihood ratio"), tr("Threshold"), tr("Held-out gain"),
+                                       tr("Shrink")});
+  if (!diagnosis_) return;
+  const auto& d = *diagnosis_;
+  ranking_->setRowCount(static_cast<int>(d.ranking.size()));
+  for (int r = 0; r < static_cast<int>(d.ranking.size()); ++r) {
+    const auto& effect = d.ranking[static_cast<size_t>(r)];
+    QStringList sizes;
+    for (size_t p = 0; p < effect.parameters.size(); ++p) {
+      const auto& def = effect.candidate.parameters.size() > p ? effect.candidate.parameters[p] : core::gap::Parameter{};
+      QString text = QStringLiteral("%1 = %2").arg(QString::fromStdString(def.name), number(effect.parameters[p]));
+      if (p < effect.stdErrors.size()) text += QStringLiteral(" ± %1").arg(number(effect.stdErrors[p], 2));
+      if (!def.unit.empty()) text += QStringLiteral(" %1").arg(QString::fromStdString(def.unit));
+      sizes << text;
+    }
+    if (!effect.identifiable) sizes << tr("(not identifiable)");
+    ranking_->setItem(r, 0, new QTableWidgetItem(QString::fromStdString(effect.candidate.effect)));
+    ranking_->setItem(r, 1, new QTableWidgetItem(joined(effect.candidate.location)));
+    ranking_->setItem(r, 2, new QTableWidgetItem(sizes.join(QStringLiteral("; "))));
+    ranking_->setItem(r, 3, new QTableWidgetItem(number(effect.likelihoodRatio)));
+    ranking_->setItem(r, 4, new QTableWidgetItem(number(d.threshold)));
+    ranking_->setItem(r, 5, new QTableWidgetItem(QStringLiteral("%1 %").arg(number(100.0 * effect.heldOutImprovement, 3))));
+    ranking_->setItem(r, 6, new QTableWidgetItem(QStringLiteral("%1 %").arg(number(effect.shrinkPct, 3))));
+    const bool inVerdict = std::find(d.verdictSet.begin(), d.verdictSet.end(), r) != d.verdictSet.end();
+    if (inVerdict) {
+      for (int c = 0; c < ranking_->columnCount(); ++c) {
+        QFont font = ranking_->item(r, c)->font();
+        font.setBold(true);
+        ranking_->item(r, c)->setFont(font);
+      }
+    }
+  }
+  ranking_->resizeColumnsToContents();
+}
+
+void ModelTestView::computeOverlays() {
+  before_.clear();
+  after_.clear();
+  afterLabel_.clear();
+  if (!diagnosis_ || !diagnosed_) return;
+  const auto& d = *diagnosis_;
+  before_ = diagnosed_->overlay(d.calibrated.data(), -1, nullptr);
+  // "After" is the first effect of the verdict set, else the top-ranked one.
+  const core::gap::RankedEffect* best = nullptr;
+  if (!d.verdictSet.empty()) best = &d.ranking[static_cast<size_t>(d.verdictSet.front())];
+  else if (!d.ranking.empty()) best = &d.ranking.front();
+  if (best && best->candidateIndex >= 0 && best->theta.size() == d.calibrated.size()) {
+    after_ = diagnosed_->overlay(best->theta.data(), best->candidateIndex, best->parameters.data());
+    afterLabel_ = tr("model + %1").arg(QString::fromStdString(best->candidate.effect));
+  }
+  const QSignalBlocker block(overlayChoice_);
+  overlayChoice_->clear();
+  for (const auto& curve : before_) overlayChoice_->addItem(QString::fromStdString(curve.label));
+  if (!before_.empty()) showOverlay(0);
+}
+
+bool ModelTestView::showOverlay(int index) {
+  if (index < 0 || index >= static_cast<int>(before_.size())) return false;
+  const auto& curve = before_[static_cast<size_t>(index)];
+  if (overlayChoice_->currentIndex() != index) {
+    const QSignalBlocker block(overlayChoice_);
+    overlayChoice_->setCurrentIndex(index);
+  }
+  if (curve.logY) {
+    overlayPlot_->setAxisScaleEngine(QwtPlot::yLeft, new QwtLogScaleEngine);
+  } else {
+    overlayPlot_->setAxisScaleEngine(QwtPlot::yLeft, new QwtLinearScaleEngine);
+  }
+  overlayPlot_->setAxisAutoScale(QwtPlot::yLeft, true);
+  overlayPlot_->setAxisAutoScale(QwtPlot::xBottom, true);
+  overlayPlot_->setAxisTitle(QwtPlot::xBottom, QString::fromStdString(curve.xLabel));
+  overlayPlot_->setAxisTitle(QwtPlot::yLeft, QString::fromStdString(curve.yLabel));
+  measuredCurve_->setSamples(points(curve.x, curve.measured, curve.logY));
+  beforeCurve_->setSamples(points(curve.x, curve.predicted, curve.logY));
+  if (index < static_cast<int>(after_.size())) {
+    const auto& after = after_[static_cast<size_t>(index)];
+    afterCurve_->setSamples(points(after.x, after.predicted, after.logY));
+  } else {
+    afterCurve_->setSamples(QVector<QPointF>());
+  }
+  // Markers make sparse series (pressures, speeds) readable; FRFs are dense.
+  const bool sparse = curve.x.size() < 40;
+  measuredCurve_->setStyle(sparse ? QwtPlotCurve::NoCurve : QwtPlotCurve::Lines);
+  measuredCurve_->setSymbol(sparse ? new QwtSymbol(QwtSymbol::Ellipse, QBrush(QColor(29, 53, 87)),
+                                                   QPen(QColor(29, 53, 87)), QSize(7, 7))
+                                   : nullptr);
+  afterCurve_->setTitle(afterLabel_.isEmpty() ? tr("model + best effect") : afterLabel_);
+  overlayPlot_->replot();
+  return true;
+}
+
+QString ModelTestView::htmlReport() const {
+  if (!diagnosis_) return {};
+  const auto& d = *diagnosis_;
+  QString html;
+  html += QStringLiteral("<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>%1</title></head><body>")
+              .arg(tr("Model vs test").toHtmlEscaped());
+  html += QStringLiteral("<h1>%1</h1>").arg(tr("Model vs test").toHtmlEscaped());
+  html += QStringLiteral("<p>%1: %2<br>%3: %4</p>")
+              .arg(tr("Model").toHtmlEscaped(), modelPath_->text().toHtmlEscaped(), tr("Test").toHtmlEscaped(),
+                   testPath_->text().toHtmlEscaped());
+  html += QStringLiteral("<h2>%1</h2><p>%2</p>")
+              .arg(tr("Verdict: %1").arg(QString::fromLatin1(core::gap::verdictName(d.verdict))).toHtmlEscaped(),
+                   QString::fromStdString(d.explanation).toHtmlEscaped());
+  html += QStringLiteral("<h2>%1</h2><p>%2 = %3</p>")
+              .arg(tr("Gap before").toHtmlEscaped(), QString::fromStdString(d.gapBefore.residualName).toHtmlEscaped(),
+                   number(d.gapBefore.overall));
+  html += QStringLiteral("<table border=\"1\" cellspacing=\"0\" cellpadding=\"3\"><tr><th>%1</th><th>%2</th><th>%3</th><th>z</th></tr>")
+              .arg(tr("Kind").toHtmlEscaped(), tr("Item").toHtmlEscaped(), tr("Gap").toHtmlEscaped());
+  for (const auto& entry : d.where) {
+    html += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td></tr>")
+                .arg(QString::fromStdString(entry.kind).toHtmlEscaped(), QString::fromStdString(entry.label).toHtmlEscaped(),
+                     number(entry.value), number(entry.z, 3));
+  }
+  html += QStringLiteral("</table>");
+  html += QStringLiteral("<h2>%1</h2><table border=\"1\" cellspacing=\"0\" cellpadding=\"3\"><tr>").arg(tr("Ranked effects").toHtmlEscaped());
+  for (int c = 0; c < ranking_->columnCount(); ++c) {
+    html += QStringLiteral("<th>%1</th>").arg(ranking_->horizontalHeaderItem(c)->text().toHtmlEscaped());
+  }
+  html += QStringLiteral("</tr>");
+  for (int r = 0; r < ranking_->rowCount(); ++r) {
+    html += QStringLiteral("<tr>");
+    for (int c = 0; c < ranking_->columnCount(); ++c) {
+      const QTableWidgetItem* item = ranking_->item(r, c);
+      html += QStringLiteral("<td>%1</td>").arg(item ? item->text().toHtmlEscaped() : QString());
+    }
+    html += QStringLiteral("</tr>");
+  }
+  html += QStringLiteral("</table>");
+  if (!before_.empty()) {
+    // The overlay currently shown, rendered into the report as an inline PNG.
+    QPixmap pixmap(900, 450);
+    pixmap.fill(Qt::white);
+    QwtPlotRenderer renderer;
+    renderer.renderTo(overlayPlot_, pixmap);
+    QByteArray png;
+    QBuffer buffer(&png);
+    buffer.open(QIODevice::WriteOnly);
+    pixmap.save(&buffer, "PNG");
+    html += QStringLiteral("<h2>%1</h2><img alt=\"%2\" src=\"data:image/png;base64,%3\">")
+                .arg(tr("Measured and model, before and after").toHtmlEscaped(), overlayChoice_->currentText().toHtmlEscaped(),
+                     QString::fromLatin1(png.toBase64()));
+  }
+  html += QStringLiteral("</body></html>");
+  return html;
+}
+
+bool ModelTestView::exportReport(const QString& path, QString* error) const {
+  if (!diagnosis_) {
+    if (error) *error = tr("Nothing to export: run the diagnosis first.");
+    return false;
+  }
+  QFile html(path);
+  if (!html.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+    if (error) *error = tr("Cannot write %1: %2").arg(path, html.errorString());
+    return false;
+  }
+  html.write(htmlReport().toUtf8());
+  html.close();
+  const QFileInfo info(path);
+  QFile json(info.dir().filePath(info.completeBaseName() + QStringLiteral(".json")));
+  if (!json.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+    if (error) *error = tr("Cannot write %1: %2").arg(json.fileName(), json.errorString());
+    return false;
+  }
+  json.write(QByteArray::fromStdString(core::gap::diagnosisToJson(*diagnosis_).dump(2)));
+  return true;
+}
+
+void ModelTestView::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  QWidget::changeEvent(event);
+}
+
+void ModelTestView::retranslate() {
+  modelLabel_->setText(tr("Model"));
+  modelPath_->setPlaceholderText(tr("mozzi-model/1 JSON, UFF 55 modes, tyre or stability gap file"));
+  testLabel_->setText(tr("Test"));
+  testPath_->setPlaceholderText(tr("UFF 58 FRFs, identified modes, relaxation lengths or stability frequencies"));
+  browseModel_->setText(tr("Browse..."));
+  browseTest_->setText(tr("Browse..."));
+  bandLabel_->setText(tr("Band"));
+  bandLow_->setToolTip(tr("Lowest frequency used (0 = from the first line)"));
+  bandHigh_->setToolTip(tr("Highest frequency used (0 = to the last line)"));
+  bootstrapLabel_->setText(tr("Bootstrap samples"));
+  bootstrap_->setToolTip(tr("Simulated data sets that calibrate the false-attribution threshold"));
+  multistartsLabel_->setText(tr("Multistarts"));
+  multistarts_->setToolTip(tr("Starting points of every nonlinear fit (more are slower and safer)"));
+  effectsLabel_->setText(tr("Candidate effects"));
+  load_->setText(tr("Load"));
+  run_->setText(tr("Run Diagnosis"));
+  cancel_->setText(tr("Cancel"));
+  export_->setText(tr("Export Report..."));
+  results_->setTabText(0, tr("Where"));
+  results_->setTabText(1, tr("Ranked effects"));
+  results_->setTabText(2, tr("Overlay"));
+  measuredCurve_->setTitle(tr("measured"));
+  beforeCurve_->setTitle(tr("model"));
+  afterCurve_->setTitle(afterLabel_.isEmpty() ? tr("model + best effect") : afterLabel_);
+  if (!diagnosis_) verdict_->setText(tr("No diagnosis yet"));
+  if (diagnosis_) {
+    verdict_->setText(tr("Verdict: %1").arg(QString::fromLatin1(core::gap::verdictName(diagnosis_->verdict))));
+    fillRanking();
+  }
+}
+
+}  // namespace views
+}  // namespace mozzi

@@ -1,0 +1,142 @@
+#pragma once
+// "Model vs test": the workbench face of the sim-to-real gap diagnosis
+// (core/gap, shared/GAP.md). Choose a model file and a test file, run the
+// diagnosis off the GUI thread, read the gap by band, DOF, mode or condition,
+// the ranked candidate effects with sizes and standard errors, the verdict, and
+// the measured/model overlay before and after the best effect; export it all as
+// a report (HTML with the figures, plus the JSON the CLI writes).
+
+#include <QPointer>
+#include <QString>
+#include <QWidget>
+#include <atomic>
+#include <memory>
+#include <optional>
+
+#include "core/gap/diagnosis.h"
+#include "core/gap/gap_problem.h"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+class QTabWidget;
+class QTableWidget;
+class QTextBrowser;
+class QThread;
+class QwtPlot;
+class QwtPlotCurve;
+
+namespace mozzi {
+namespace views {
+
+class ModelTestView : public QWidget {
+  Q_OBJECT
+ public:
+  explicit ModelTestView(QWidget* parent = nullptr);
+  ~ModelTestView() override;
+
+  // What the buttons do; the GUI tests call these directly.
+  void setModelPath(const QString& path);
+  void setTestPath(const QString& path);
+  void setBand(double lowHz, double highHz);  // 0, 0 = the whole measured band
+  void setBootstrapSamples(int samples);
+  void setMultistarts(int starts);
+  // Ticks exactly the named candidate effects (after loadInputs()).
+  void setEffects(const QStringList& names);
+  // Reads both files and lists the candidate effects; false (and a message in
+  // the status line) when a file cannot be used.
+  bool loadInputs();
+  // Starts the diagnosis in a worker thread; false when inputs are missing or
+  // a run is under way. finished() is emitted when it ends (ok or not).
+  bool run();
+  void cancel();
+  bool isRunning() const;
+  // Writes the report: HTML at `path`, the JSON beside it (same name, .json).
+  bool exportReport(const QString& path, QString* error = nullptr) const;
+
+  const std::optional<core::gap::Diagnosis>& diagnosis() const { return diagnosis_; }
+  QString statusText() const;
+  QString verdictText() const;
+  QTableWidget* rankingTable() const { return ranking_; }
+  QTabWidget* whereTabs() const { return whereTabs_; }
+  QwtPlot* overlayPlot() const { return overlayPlot_; }
+  int overlayCurveCount() const;
+  // Selects the overlay curve (FRF or series) shown; false when out of range.
+  bool showOverlay(int index);
+
+ signals:
+  void finished(bool ok);
+
+ protected:
+  void changeEvent(QEvent* event) override;
+
+ private:
+  void retranslate();
+  void browseModel();
+  void browseTest();
+  void onProgress(double fraction, const QString& step);
+  void onFinished();
+  void showDiagnosis();
+  void fillWhere();
+  void fillRanking();
+  void computeOverlays();
+  void setStatus(const QString& text);
+  QString htmlReport() const;
+
+  QLineEdit* modelPath_ = nullptr;
+  QLineEdit* testPath_ = nullptr;
+  QPushButton* browseModel_ = nullptr;
+  QPushButton* browseTest_ = nullptr;
+  QLabel* modelLabel_ = nullptr;
+  QLabel* testLabel_ = nullptr;
+  QLabel* bandLabel_ = nullptr;
+  QDoubleSpinBox* bandLow_ = nullptr;
+  QDoubleSpinBox* bandHigh_ = nullptr;
+  QLabel* bootstrapLabel_ = nullptr;
+  QSpinBox* bootstrap_ = nullptr;
+  QLabel* multistartsLabel_ = nullptr;
+  QSpinBox* multistarts_ = nullptr;
+  QLabel* effectsLabel_ = nullptr;
+  QListWidget* effects_ = nullptr;
+  QPushButton* load_ = nullptr;
+  QPushButton* run_ = nullptr;
+  QPushButton* cancel_ = nullptr;
+  QPushButton* export_ = nullptr;
+  QProgressBar* progress_ = nullptr;
+  QLabel* status_ = nullptr;
+  QLabel* verdict_ = nullptr;
+  QTextBrowser* explanation_ = nullptr;
+  QTabWidget* results_ = nullptr;
+  QTabWidget* whereTabs_ = nullptr;
+  QTableWidget* ranking_ = nullptr;
+  QComboBox* overlayChoice_ = nullptr;
+  QwtPlot* overlayPlot_ = nullptr;
+  QwtPlotCurve* measuredCurve_ = nullptr;
+  QwtPlotCurve* beforeCurve_ = nullptr;
+  QwtPlotCurve* afterCurve_ = nullptr;
+
+  std::shared_ptr<const core::gap::GapProblem> problem_;    // loaded from the current inputs
+  std::shared_ptr<const core::gap::GapProblem> running_;    // the one under diagnosis
+  std::shared_ptr<const core::gap::GapProblem> diagnosed_;  // the one the shown diagnosis is of
+  std::optional<core::gap::Diagnosis> diagnosis_;
+  std::vector<core::gap::OverlayCurve> before_;
+  std::vector<core::gap::OverlayCurve> after_;
+  QString afterLabel_;
+
+  // Worker state: the thread writes result_ and error_, the GUI reads them
+  // after the thread has finished.
+  QPointer<QThread> worker_;
+  std::shared_ptr<std::atomic<bool>> cancelRequested_;
+  std::optional<core::gap::Diagnosis> result_;
+  QString error_;
+  QString statusRaw_;
+};
+
+}  // namespace views
+}  // namespace mozzi
