@@ -56,12 +56,19 @@ Result<ChannelMap> mapDof(const StructuralModel& model, const Dof& dof, const st
 
 // The augmented model at (theta, candidate, phi), in undamped modal form.
 struct ModalSystem {
-  Vector w2;           // omega_r^2, ascending
-  Matrix a;            // ndof x nq: T Phi, mass-normalised shapes at the physical DOFs
-  Vector cdiag;        // modal viscous damping 2 zeta_r omega_r (diagonal part)
-  Matrix cfull;        // Phi^T C Phi when not diagonal, else empty
-  double eta = 0.0;    // hysteretic loss factor
-  double decay = 0.0;  // exponential-window decay a [1/s]
+  Vector w2;     // omega_r^2, ascending
+  Matrix a;      // ndof x nq: T Phi, mass-normalised shapes at the physical DOFs
+  Vector cdiag;  // modal viscous damping 2 zeta_r omega_r (diagonal part)
+  Matrix cfull;  // Phi^T C Phi when not diagonal, else empty
+  // Non-proportional damping: first-order (state-space) modes of
+  // [0 I; -Omega^2 (1 + i eta), -Phi^T C Phi], so that
+  // H(s) = sum_j left_j right_j / (s - pole_j) (Ewins ch. 2.7); empty when the
+  // eigenvectors are too ill-conditioned (then a solve per line).
+  ComplexVector ssPoles;
+  ComplexMatrix ssLeft;   // ndof x 2nq
+  ComplexMatrix ssRight;  // 2nq x ndof
+  double eta = 0.0;       // hysteretic loss factor
+  double decay = 0.0;     // exponential-window decay a [1/s]
   const CandidateDef* effect = nullptr;
   double upper = 0.0, lower = 0.0;  // residual-mode terms
   double angle = 0.0;               // misalignment
@@ -280,7 +287,50 @@ class StructuralCore {
       // proportional C: take the cheap diagonal path.
       if (off.cwiseAbs().maxCoeff() > 1e-9 * diagMax) sys.cfull = ct;
     }
-    return sys.a.allFinite() && sys.w2.allFinite() && sys.cdiag.allFinite();
+    if (!(sys.a.allFinite() && sys.w2.allFinite() && sys.cdiag.allFinite())) return false;
+    if (sys.cfull.size() > 0) stateSpaceModes(sys);
+    return true;
+  }
+
+  static ComplexMatrix dynamicStiffness(const ModalSystem& sys, Complex s) {
+    ComplexMatrix z = s * sys.cfull.cast<Complex>();
+    for (Eigen::Index r = 0; r < sys.w2.size(); ++r) z(r, r) += sys.w2[r] * Complex(1.0, sys.eta) + s * s;
+    return z;
+  }
+
+  // The state-space expansion, kept only when it reproduces a direct solve at
+  // the geometric mean of the natural frequencies to 1e-9 (repeated poles give
+  // a defective eigenvector matrix; the per-line solve is then used).
+  static void stateSpaceModes(ModalSystem& sys) {
+    const Eigen::Index nq = sys.w2.size();
+    ComplexMatrix a = ComplexMatrix::Zero(2 * nq, 2 * nq);
+    a.topRightCorner(nq, nq).setIdentity();
+    for (Eigen::Index r = 0; r < nq; ++r) a(nq + r, r) = -sys.w2[r] * Complex(1.0, sys.eta);
+    a.bottomRightCorner(nq, nq) = -sys.cfull.cast<Complex>();
+    Eigen::ComplexEigenSolver<ComplexMatrix> eig(a);
+    if (eig.info() != Eigen::Success) return;
+    const ComplexMatrix& v = eig.eigenvectors();
+    Eigen::PartialPivLU<ComplexMatrix> lu(v);
+    const ComplexMatrix vinv = lu.inverse();
+    if (!vinv.allFinite()) return;
+    const ComplexMatrix left = v.topRows(nq), right = vinv.rightCols(nq);
+    double wmean = 0;
+    int count = 0;
+    for (Eigen::Index r = 0; r < nq; ++r)
+      if (sys.w2[r] > 0) {
+        wmean += 0.5 * std::log(sys.w2[r]);
+        ++count;
+      }
+    const Complex s0(0.0, count ? std::exp(wmean / count) : 1.0);
+    const ComplexMatrix direct = dynamicStiffness(sys, s0).partialPivLu().inverse();
+    ComplexMatrix expanded =
+        left *
+        (s0 * ComplexMatrix::Identity(2 * nq, 2 * nq) - ComplexMatrix(eig.eigenvalues().asDiagonal())).inverse() *
+        right;
+    if ((expanded - direct).norm() > 1e-9 * direct.norm()) return;
+    sys.ssPoles = eig.eigenvalues();
+    sys.ssLeft = sys.a.cast<Complex>() * left;
+    sys.ssRight = right * sys.a.transpose().cast<Complex>();
   }
 
   // Receptance between model DOFs (rows `resp`, columns `refs`) at Laplace
@@ -300,9 +350,16 @@ class StructuralCore {
               sys.a.row(resp[o]).transpose().cast<Complex>().cwiseProduct(weighted).sum();
         }
       }
+    } else if (sys.ssPoles.size() > 0) {
+      const ComplexVector inv = (s - sys.ssPoles.array()).inverse().matrix();
+      for (std::size_t i = 0; i < refs.size(); ++i) {
+        const ComplexVector weighted = inv.cwiseProduct(sys.ssRight.col(refs[i]));
+        for (std::size_t o = 0; o < resp.size(); ++o)
+          h(static_cast<Eigen::Index>(o), static_cast<Eigen::Index>(i)) =
+              sys.ssLeft.row(resp[o]).transpose().cwiseProduct(weighted).sum();
+      }
     } else {
-      ComplexMatrix z = s * sys.cfull.cast<Complex>();
-      for (Eigen::Index r = 0; r < nq; ++r) z(r, r) += sys.w2[r] * stiff + s * s;
+      const ComplexMatrix z = dynamicStiffness(sys, s);
       ComplexMatrix b(nq, static_cast<Eigen::Index>(refs.size()));
       for (std::size_t i = 0; i < refs.size(); ++i)
         b.col(static_cast<Eigen::Index>(i)) = sys.a.row(refs[i]).transpose().cast<Complex>();
@@ -549,9 +606,7 @@ GapMetrics FrfProblem::metrics(const double* theta, int candidate, const double*
                  {"lines", static_cast<double>(k1 - k0)}};
     return e;
   };
-  const GapEntry all = row("overall", "all", 0, nf, 0, no);
-  out.overall = all.value;
-  out.entries.push_back(all);
+  out.overall = row("overall", "all", 0, nf, 0, no).value;
   const double flo = data_.frequencyHz[0], fhi = data_.frequencyHz[nf - 1];
   auto bands = options_.reportBands.empty() ? octaveBands(flo, fhi) : options_.reportBands;
   std::size_t first = out.entries.size();
@@ -781,12 +836,7 @@ class ModesProblem final : public GapProblem {
     // damping and shape misfits in units of their sigma; about 1 at a fit
     // within noise).
     out.overall = r.empty() ? 0.0 : std::sqrt(chi2 / static_cast<double>(r.size()));
-    out.entries.push_back(GapEntry{"overall",
-                                   "all",
-                                   out.overall,
-                                   chiSquareZ(chi2, static_cast<double>(r.size())),
-                                   false,
-                                   {{"paired_modes", static_cast<double>(paired_.size())}}});
+
     std::size_t first = out.entries.size();
     for (int m : paired_) {
       const int j = pairs_[static_cast<std::size_t>(m)];

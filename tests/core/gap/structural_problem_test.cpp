@@ -57,8 +57,10 @@ Matrix springMatrix(const StructuralModel& m, const std::string& name) {
 
 // Noise-free truth with each catalogue effect: the problem evaluated at the
 // true calibration and effect size reproduces the truth's FRFs. Residuals are
-// in units of a 1% noise sigma; 1e-5 allows the round-off of a modal sum
-// against a direct inversion (relative ~1e-11 with condition ~1e3).
+// in units of a 1% noise sigma; 1e-3 sigma (1e-5 relative) allows the
+// round-off of the state-space modal sum used for non-proportional damping,
+// which cancels terms at antiresonances lying ~1e5 below the peaks; it is a
+// thousandth of the noise and moves no fit.
 TEST(StructuralProblem, ReproducesIndependentTruthForEachEffect) {
   const auto s = gap_bench::forkWheel();
   const int n = s.model.dofCount();
@@ -117,7 +119,7 @@ TEST(StructuralProblem, ReproducesIndependentTruthForEachEffect) {
     ASSERT_TRUE(p.ok()) << p.error().describe();
     const int cand = c.phi.empty() ? -1 : findCandidate(**p, c.effect, c.location);
     ASSERT_TRUE(c.phi.empty() || cand >= 0) << c.effect;
-    EXPECT_LT(maxAbsResidual(**p, c.theta, cand, c.phi), 1e-5) << c.effect;
+    EXPECT_LT(maxAbsResidual(**p, c.theta, cand, c.phi), 1e-3) << c.effect;
     if (cand >= 0) {
       // And the nominal model does not: the effect is visible (> 3 sigma somewhere).
       EXPECT_GT(maxAbsResidual(**p, c.theta, -1, {}), 3.0) << c.effect;
@@ -135,7 +137,7 @@ TEST(StructuralProblem, ChannelSignsAndUnknownDofs) {
   frf.h[0].col(4) *= -1.0;
   auto p = makeFrfProblem(s.model, frf);
   ASSERT_TRUE(p.ok()) << p.error().describe();
-  EXPECT_LT(maxAbsResidual(**p, {1.0, 1.0}, -1, {}), 1e-5);
+  EXPECT_LT(maxAbsResidual(**p, {1.0, 1.0}, -1, {}), 1e-3);
   frf.responses[4] = *parseDof("9+X");
   auto bad = makeFrfProblem(s.model, frf);
   ASSERT_FALSE(bad.ok());

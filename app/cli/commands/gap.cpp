@@ -1,0 +1,211 @@
+// mozzi-cli gap: sim-to-real gap diagnosis of a model against a test
+// (docs/cli/gap.md, shared/GAP.md): where the gap lies, which catalogue effect
+// explains it, and how far it shrinks.
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "app/cli/args.h"
+#include "app/cli/command.h"
+#include "core/common/text.h"
+#include "core/gap/diagnosis.h"
+#include "core/gap/diagnosis_json.h"
+#include "core/gap/problem_loader.h"
+
+namespace mozzi::cli {
+namespace {
+
+namespace gap = core::gap;
+
+constexpr const char* kSynopsis =
+    "--model MODEL --measured TEST [--band LO:HI] [--bands A:B,C:D...] [--effects a,b,...] [--json] "
+    "[--bootstrap N] [--seed S] [--multistarts N] [--noise-floor REL] [--averages N]";
+
+int usage(std::ostream& err, const std::string& why) {
+  err << "mozzi-cli gap: " << why << "\nUsage: mozzi-cli gap " << kSynopsis << "\n";
+  return kExitUsage;
+}
+
+int fail(std::ostream& err, const core::Error& e) {
+  err << "mozzi-cli gap: " << e.describe() << "\n";
+  return kExitFailure;
+}
+
+// "LO:HI" with 0 <= LO < HI, finite.
+bool parseRange(const std::string& text, double& lo, double& hi) {
+  const auto colon = text.find(':');
+  if (colon == std::string::npos) return false;
+  const std::string a = text.substr(0, colon), b = text.substr(colon + 1);
+  char* end = nullptr;
+  lo = std::strtod(a.c_str(), &end);
+  if (a.empty() || *end != '\0') return false;
+  hi = std::strtod(b.c_str(), &end);
+  if (b.empty() || *end != '\0') return false;
+  return std::isfinite(lo) && std::isfinite(hi) && lo >= 0 && hi > lo;
+}
+
+std::vector<std::string> splitComma(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream s(text);
+  std::string item;
+  while (std::getline(s, item, ','))
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+std::string detailText(const gap::GapEntry& e, const char* name, int digits = 4) {
+  for (const auto& d : e.details)
+    if (d.first == name) return std::isfinite(d.second) ? core::formatNumber(d.second, digits) : "-";
+  return "-";
+}
+
+std::string locationText(const gap::Candidate& c) {
+  if (c.location.empty()) return "(global)";
+  std::string s;
+  for (const auto& l : c.location) s += (s.empty() ? "" : " - ") + l;
+  return s;
+}
+
+void printMetrics(std::ostream& out, const gap::GapMetrics& m) {
+  char buf[256];
+  out << "Gap before (" << m.residualName << " " << core::formatNumber(m.overall, 3) << ")\n";
+  for (const char* kind : {"band", "dof", "mode"}) {
+    bool header = false;
+    for (const auto& e : m.entries) {
+      if (e.kind != kind) continue;
+      if (!header) {
+        if (std::string(kind) == "mode") {
+          out << "  mode                       value     z        f_err%    zeta_err%  MAC     flag\n";
+        } else {
+          out << "  " << kind << "                       value     z        flag\n";
+        }
+        header = true;
+      }
+      if (std::string(kind) == "mode") {
+        std::snprintf(buf, sizeof buf, "  %-26s %-9s %-8s %-9s %-10s %-7s %s\n", e.label.c_str(),
+                      core::formatNumber(e.value, 3).c_str(), core::formatNumber(e.z, 3).c_str(),
+                      detailText(e, "frequency_error_pct", 3).c_str(), detailText(e, "zeta_error_pct", 3).c_str(),
+                      detailText(e, "mac", 3).c_str(), e.flagged ? "*" : "");
+      } else {
+        std::snprintf(buf, sizeof buf, "  %-26s %-9s %-8s %s\n", e.label.c_str(),
+                      core::formatNumber(e.value, 3).c_str(), core::formatNumber(e.z, 3).c_str(), e.flagged ? "*" : "");
+      }
+      out << buf;
+    }
+  }
+}
+
+void printRanking(std::ostream& out, const gap::Diagnosis& d) {
+  out << "\nRanking (likelihood-ratio threshold " << core::formatNumber(d.threshold, 3) << ", bootstrap "
+      << d.bootstrapSamples << ")\n";
+  out << "  #  effect               location         size +/- SE                          LR        shrink%\n";
+  char buf[512];
+  for (std::size_t i = 0; i < d.ranking.size(); ++i) {
+    const auto& e = d.ranking[i];
+    std::string sizes;
+    for (std::size_t p = 0; p < e.candidate.parameters.size() && p < e.parameters.size(); ++p) {
+      const auto& def = e.candidate.parameters[p];
+      sizes += (sizes.empty() ? "" : ", ") + def.name + " " + core::formatNumber(e.parameters[p], 3);
+      if (p < e.stdErrors.size()) sizes += " +/- " + core::formatNumber(e.stdErrors[p], 2);
+      if (!def.unit.empty()) sizes += " " + def.unit;
+    }
+    if (!e.fitted) sizes = e.identifiable ? "(fit failed)" : "(not identifiable)";
+    const bool reported = !(e.gapAfter.entries.empty() && e.gapAfter.overall == 0.0);
+    std::snprintf(buf, sizeof buf, "  %-2zu %-20s %-16s %-36s %-9s %s\n", i + 1, e.candidate.effect.c_str(),
+                  locationText(e.candidate).c_str(), sizes.c_str(), core::formatNumber(e.likelihoodRatio, 3).c_str(),
+                  reported ? core::formatNumber(e.shrinkPct, 3).c_str() : "-");
+    out << buf;
+  }
+}
+
+int gapCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  OptionSpec spec;
+  spec.valued = {"--model",     "--measured", "--band",        "--bands",       "--effects",
+                 "--bootstrap", "--seed",     "--multistarts", "--noise-floor", "--averages"};
+  spec.flags = {"--json"};
+  auto parsed = ParsedArgs::parse(args, spec);
+  if (!parsed) return usage(err, parsed.error().message);
+  if (!parsed->positional().empty()) return usage(err, "unexpected argument '" + parsed->positional()[0] + "'");
+  const auto model = parsed->value("--model"), measured = parsed->value("--measured");
+  if (!model || !measured) return usage(err, "--model and --measured are required");
+
+  gap::LoadOptions load;
+  if (auto band = parsed->value("--band")) {
+    if (!parseRange(*band, load.bandLowHz, load.bandHighHz)) {
+      return usage(err, "--band must be LO:HI in Hz with 0 <= LO < HI (got '" + *band + "')");
+    }
+  }
+  if (auto bands = parsed->value("--bands")) {
+    for (const auto& b : splitComma(*bands)) {
+      double lo = 0, hi = 0;
+      if (!parseRange(b, lo, hi)) return usage(err, "--bands must be LO:HI,LO:HI,... in Hz (got '" + b + "')");
+      load.reportBands.emplace_back(lo, hi);
+    }
+  }
+  auto integer = [&](const char* name, int lowest, int highest, int& value) -> bool {
+    auto n = parsed->number(name);
+    if (!n) return false;
+    if (!n->has_value()) return true;
+    if (!(**n >= lowest && **n <= highest && std::floor(**n) == **n)) return false;
+    value = static_cast<int>(**n);
+    return true;
+  };
+  gap::DiagnosisOptions options;
+  int seed = 1;
+  if (!integer("--bootstrap", 0, 100000, options.bootstrapSamples))
+    return usage(err, "--bootstrap must be an integer in 0..100000");
+  if (!integer("--seed", 0, 2147483647, seed)) return usage(err, "--seed must be a non-negative integer");
+  if (!integer("--multistarts", 1, 100, options.multistarts))
+    return usage(err, "--multistarts must be an integer in 1..100");
+  if (!integer("--averages", 1, 100000, load.averages)) return usage(err, "--averages must be a positive integer");
+  options.seed = static_cast<unsigned long long>(seed);
+  if (auto nf = parsed->number("--noise-floor"); !nf || (nf->has_value() && !(**nf > 0 && **nf < 1))) {
+    return usage(err, "--noise-floor must be a relative sigma in (0, 1)");
+  } else if (nf->has_value()) {
+    load.relativeFloor = **nf;
+  }
+
+  auto problem = gap::loadGapProblem(*model, *measured, load);
+  if (!problem) return fail(err, problem.error());
+  if (auto effects = parsed->value("--effects")) {
+    std::set<std::string> known;
+    for (const auto& c : (*problem)->candidates()) known.insert(c.effect);
+    for (const auto& e : splitComma(*effects)) {
+      if (known.count(e) == 0) {
+        std::string list;
+        for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+        return usage(err, "unknown effect '" + e + "' for this model and test (available: " + list + ")");
+      }
+      options.effects.push_back(e);
+    }
+  }
+  auto diagnosis = gap::diagnose(**problem, options);
+  if (!diagnosis) return fail(err, diagnosis.error());
+
+  if (parsed->flag("--json")) {
+    out << gap::diagnosisToJson(*diagnosis).dump(2) << "\n";
+    return kExitOk;
+  }
+  printMetrics(out, diagnosis->gapBefore);
+  printRanking(out, *diagnosis);
+  out << "\nVerdict: " << gap::verdictName(diagnosis->verdict);
+  if (!diagnosis->verdictSet.empty()) {
+    const auto& best = diagnosis->ranking[static_cast<std::size_t>(diagnosis->verdictSet.front())];
+    out << " - " << best.candidate.effect << " at " << locationText(best.candidate) << ", gap "
+        << core::formatNumber(diagnosis->gapBefore.overall, 3) << " -> " << core::formatNumber(best.gapAfter.overall, 3)
+        << " (shrink " << core::formatNumber(best.shrinkPct, 3) << "%)";
+  }
+  out << "\n" << diagnosis->explanation << "\n";
+  return kExitOk;
+}
+
+const CommandRegistrar kRegistrar(
+    {"gap", kSynopsis, "Sim-to-real gap: where model and test disagree, which effect explains it, the shrink",
+     gapCommand});
+
+}  // namespace
+}  // namespace mozzi::cli

@@ -1,0 +1,102 @@
+#include "core/gap/problem_loader.h"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/gap/structural/model_file.h"
+#include "core/gap/structural/structural_problem.h"
+#include "core/io/uff/uff.h"
+
+namespace mozzi::core::gap {
+namespace {
+
+Result<std::string> readText(const std::string& path, const std::string& what) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return makeError(ErrorCode::IoError, "cannot open the " + what + " file", path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+bool looksLikeJson(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  return first != std::string::npos && text[first] == '{';
+}
+
+Result<std::unique_ptr<GapProblem>> loadStructural(const structural::StructuralModel& model,
+                                                   const std::string& measuredPath, const LoadOptions& options) {
+  structural::StructuralOptions so;
+  so.bandLowHz = options.bandLowHz;
+  so.bandHighHz = options.bandHighHz;
+  so.reportBands = options.reportBands;
+  so.relativeFloor = options.relativeFloor;
+  so.averages = options.averages;
+  auto file = io::uff::readFile(measuredPath);
+  if (!file) return file.error();
+  const bool hasFrf = [&] {
+    for (const auto* f : file->all<io::uff::Function58>())
+      if (f->functionType == io::uff::FunctionType::Frf) return true;
+    return false;
+  }();
+  if (hasFrf) {
+    auto frf = io::uff::toFrfMatrix(*file);
+    if (!frf) return Error{frf.error().code, frf.error().message, measuredPath + ": " + frf.error().where};
+    return structural::makeFrfProblem(model, *frf, so);
+  }
+  if (!file->all<io::uff::ModalData55>().empty()) {
+    auto modes = io::uff::toModalData(*file);
+    if (!modes) return Error{modes.error().code, modes.error().message, measuredPath + ": " + modes.error().where};
+    return structural::makeModesProblem(model, *modes, so);
+  }
+  return makeError(ErrorCode::NotFound, "the test file holds neither FRFs (dataset 58, function type 4) nor modes (55)",
+                   measuredPath);
+}
+
+}  // namespace
+
+Result<std::string> modelFileKind(const std::string& modelPath) {
+  auto text = readText(modelPath, "model");
+  if (!text) return text.error();
+  if (looksLikeJson(*text)) {
+    const auto root = nlohmann::json::parse(*text, nullptr, false);
+    if (root.is_discarded() || !root.is_object()) return makeError(ErrorCode::ParseError, "not valid JSON", modelPath);
+    if (!root.contains("schema") || !root["schema"].is_string()) {
+      return makeError(ErrorCode::ParseError, "schema: missing (expected e.g. \"mozzi-model/1\")", modelPath);
+    }
+    return root["schema"].get<std::string>();
+  }
+  return std::string("uff");
+}
+
+Result<std::unique_ptr<GapProblem>> loadGapProblem(const std::string& modelPath, const std::string& measuredPath,
+                                                   const LoadOptions& options) {
+  if (!(options.bandHighHz > options.bandLowHz)) {
+    return makeError(ErrorCode::InvalidArgument, "the band must have LO < HI", "--band");
+  }
+  auto kind = modelFileKind(modelPath);
+  if (!kind) return kind.error();
+  if (*kind == structural::kModelSchema) {
+    auto model = structural::readModelFile(modelPath);
+    if (!model) return model.error();
+    return loadStructural(*model, measuredPath, options);
+  }
+  if (*kind == "uff") {
+    auto file = io::uff::readFile(modelPath);
+    if (!file) return file.error();
+    auto modes = io::uff::toModalData(*file);
+    if (!modes) {
+      return makeError(
+          ErrorCode::ParseError,
+          "the model is neither a JSON model file nor a UFF modal model (dataset 55): " + modes.error().message,
+          modelPath);
+    }
+    auto model = structural::modelFromModalData(*modes, modelPath);
+    if (!model) return model.error();
+    return loadStructural(*model, measuredPath, options);
+  }
+  return makeError(ErrorCode::Unsupported,
+                   "unknown model schema '" + *kind + "' (known: mozzi-model/1, UFF 55 modal models)", modelPath);
+}
+
+}  // namespace mozzi::core::gap
