@@ -71,6 +71,13 @@ TEST(StabilityGapProblem, MotorcycleBaselineIsTheRigidForkSweep) {
     // The published values (stability_motorcycle_test: wobble 2%, weave 5%).
     EXPECT_NEAR(pred[j] / meas[j].frequencyHz, 1.0, 0.05) << meas[j].mode << " " << meas[j].speed;
   }
+  // Overlay: one curve per mode, against speed.
+  const auto curves = (*p)->overlay(&theta, -1, nullptr);
+  ASSERT_EQ(curves.size(), 2u);
+  EXPECT_EQ(curves[0].label, "weave");
+  EXPECT_EQ(curves[1].label, "wobble");
+  EXPECT_EQ(curves[1].x.size(), 6u);
+  EXPECT_DOUBLE_EQ(curves[1].predicted[0], pred[1]);
   const auto folds = (*p)->folds();
   // Speeds 9.1 to 48.8 m/s in three equal ranges: 9.1, 15.2, 21.3 | 30.5 | 39.6, 48.8.
   const int expected[] = {0, 0, 0, 0, 0, 0, 1, 1, 2, 2, 2, 2};

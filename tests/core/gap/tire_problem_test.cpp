@@ -183,6 +183,13 @@ TEST(TireGapProblem, MetricsFlagTheGapPerPressure) {
   for (const auto& e : exact->metrics(&theta, -1, nullptr).entries) EXPECT_FALSE(e.flagged);
   const auto folds = p->folds();
   for (int i = 0; i < 7; ++i) EXPECT_EQ(folds[static_cast<std::size_t>(i)], i);  // one held-out group per pressure
+  // Overlay for the workbench: measured and predicted against pressure.
+  const auto curves = p->overlay(&theta, -1, nullptr);
+  ASSERT_EQ(curves.size(), 1u);
+  EXPECT_EQ(curves[0].x.size(), 7u);
+  EXPECT_DOUBLE_EQ(curves[0].x[0], 0.5);
+  EXPECT_EQ(curves[0].predicted, p->predict(&theta, -1, nullptr));
+  EXPECT_DOUBLE_EQ(curves[0].measured[6], p->points()[6].measured);
 }
 
 TEST(TireGapProblem, SimulatedDataScatterAsTheNoiseModelSays) {
