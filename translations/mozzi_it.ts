@@ -22,7 +22,7 @@
 <context>
     <name>mozzi::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+235"/>
+        <location filename="../app/gui/main_window.cpp" line="+240"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -88,12 +88,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+61"/>
+        <location line="+64"/>
         <source>Project</source>
         <translation>Progetto</translation>
     </message>
     <message>
-        <location line="-60"/>
+        <location line="-63"/>
         <source>Properties</source>
         <translation>Proprietà</translation>
     </message>
@@ -129,6 +129,22 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>&amp;Model vs Test...</source>
+        <translation>&amp;Modello contro prova...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Diagnose where a model and a test disagree and which unmodelled effect explains it</source>
+        <translation>Diagnostica dove modello e prova non concordano e quale effetto non modellato lo spiega</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+300"/>
+        <source>Model vs Test</source>
+        <translation>Modello contro prova</translation>
+    </message>
+    <message>
+        <location line="-299"/>
         <source>&amp;Help</source>
         <translation>&amp;Aiuto</translation>
     </message>
@@ -191,12 +207,12 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+255"/>
+        <location line="+269"/>
         <source>Could not read the project.</source>
         <translation>Impossibile leggere il progetto.</translation>
     </message>
     <message>
-        <location line="-248"/>
+        <location line="-262"/>
         <source>Specimens</source>
         <translation>Provini</translation>
     </message>
@@ -299,12 +315,12 @@
     </message>
     <message>
         <location line="+38"/>
-        <location line="+164"/>
+        <location line="+178"/>
         <source>Open Project</source>
         <translation>Apri progetto</translation>
     </message>
     <message>
-        <location line="-164"/>
+        <location line="-178"/>
         <source>Could not open %1.</source>
         <translation>Impossibile aprire %1.</translation>
     </message>
@@ -320,12 +336,12 @@
     </message>
     <message>
         <location line="+6"/>
-        <location line="+146"/>
+        <location line="+160"/>
         <source>New Project</source>
         <translation>Nuovo progetto</translation>
     </message>
     <message>
-        <location line="-146"/>
+        <location line="-160"/>
         <source>Could not create %1.</source>
         <translation>Impossibile creare %1.</translation>
     </message>
@@ -351,12 +367,12 @@
     </message>
     <message>
         <location line="+6"/>
-        <location line="+138"/>
+        <location line="+152"/>
         <source>Save Project As</source>
         <translation>Salva progetto come</translation>
     </message>
     <message>
-        <location line="-138"/>
+        <location line="-152"/>
         <source>Could not save the project as %1.</source>
         <translation>Impossibile salvare il progetto come %1.</translation>
     </message>
@@ -414,7 +430,13 @@
         <translation>FRF: %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
+        <location line="+1"/>
+        <source>Model vs test: %1</source>
+        <translation>Modello contro prova: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <location line="+9"/>
         <location line="+7"/>
         <source>Import</source>
@@ -554,6 +576,314 @@
         <location line="+1"/>
         <source>Frequency [Hz]</source>
         <translation>Frequenza [Hz]</translation>
+    </message>
+</context>
+<context>
+    <name>mozzi::views::ModelTestView</name>
+    <message>
+        <location filename="../views/gap/model_test_view.cpp" line="+226"/>
+        <source>Export Diagnosis Report</source>
+        <translation>Esporta rapporto di diagnosi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>HTML report (*.html)</source>
+        <translation>Rapporto HTML (*.html)</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>Choose Model</source>
+        <translation>Scegli il modello</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Models (*.json *.uff *.unv);;All files (*)</source>
+        <translation>Modelli (*.json *.uff *.unv);;Tutti i file (*)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Choose Test Data</source>
+        <translation>Scegli i dati di prova</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Test data (*.uff *.unv *.csv *.json);;All files (*)</source>
+        <translation>Dati di prova (*.uff *.unv *.csv *.json);;Tutti i file (*)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Choose a model file and a test file first.</source>
+        <translation>Scegli prima un file di modello e un file di prova.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Cannot use these files: %1</source>
+        <translation>Impossibile usare questi file: %1</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 data, %2 residuals, %3 candidate effects at their locations.</source>
+        <translation>Dati %1, %2 residui, %3 effetti candidati nelle loro posizioni.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Tick at least one candidate effect.</source>
+        <translation>Seleziona almeno un effetto candidato.</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Diagnosing...</source>
+        <translation>Diagnosi in corso...</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Diagnosis done.</source>
+        <translation>Diagnosi completata.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The diagnosis stopped: %1</source>
+        <translation>La diagnosi si è interrotta: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+164"/>
+        <location line="+99"/>
+        <source>Verdict: %1</source>
+        <translation>Verdetto: %1</translation>
+    </message>
+    <message>
+        <location line="-227"/>
+        <location line="+134"/>
+        <source>Item</source>
+        <translation>Elemento</translation>
+    </message>
+    <message>
+        <location line="-134"/>
+        <source>z</source>
+        <translation>z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Significant</source>
+        <translation>Significativo</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>yes</source>
+        <translation>sì</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>no</source>
+        <translation>no</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Effect</source>
+        <translation>Effetto</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Location</source>
+        <translation>Posizione</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Size ± standard error</source>
+        <translation>Entità ± errore standard</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Likelihood ratio</source>
+        <translation>Rapporto di verosimiglianza</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Threshold</source>
+        <translation>Soglia</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Held-out gain</source>
+        <translation>Miglioramento sui dati esclusi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shrink</source>
+        <translation>Riduzione</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>(not identifiable)</source>
+        <translation>(non identificabile)</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>model + %1</source>
+        <translation>modello + %1</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <location line="+112"/>
+        <source>model + best effect</source>
+        <translation>modello + effetto migliore</translation>
+    </message>
+    <message>
+        <location line="-102"/>
+        <location line="+1"/>
+        <source>Model vs test</source>
+        <translation>Modello contro prova</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+76"/>
+        <source>Model</source>
+        <translation>Modello</translation>
+    </message>
+    <message>
+        <location line="-76"/>
+        <location line="+78"/>
+        <source>Test</source>
+        <translation>Prova</translation>
+    </message>
+    <message>
+        <location line="-72"/>
+        <source>Gap before</source>
+        <translation>Scarto iniziale</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Gap</source>
+        <translation>Scarto</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+79"/>
+        <source>Ranked effects</source>
+        <translation>Effetti in classifica</translation>
+    </message>
+    <message>
+        <location line="-54"/>
+        <source>Measured and model, before and after</source>
+        <translation>Misura e modello, prima e dopo</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Nothing to export: run the diagnosis first.</source>
+        <translation>Niente da esportare: esegui prima la diagnosi.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+8"/>
+        <source>Cannot write %1: %2</source>
+        <translation>Impossibile scrivere %1: %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>mozzi-model/1 JSON, UFF 55 modes, tyre or stability gap file</source>
+        <translation>JSON mozzi-model/1, modi UFF 55, file di scarto pneumatico o stabilità</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>UFF 58 FRFs, identified modes, relaxation lengths or stability frequencies</source>
+        <translation>FRF UFF 58, modi identificati, lunghezze di rilassamento o frequenze di stabilità</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>Browse...</source>
+        <translation>Sfoglia...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Band</source>
+        <translation>Banda</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lowest frequency used (0 = from the first line)</source>
+        <translation>Frequenza minima usata (0 = dalla prima riga)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Highest frequency used (0 = to the last line)</source>
+        <translation>Frequenza massima usata (0 = fino all&apos;ultima riga)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bootstrap samples</source>
+        <translation>Campioni bootstrap</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Simulated data sets that calibrate the false-attribution threshold</source>
+        <translation>Insiemi di dati simulati che tarano la soglia delle false attribuzioni</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Multistarts</source>
+        <translation>Partenze multiple</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Starting points of every nonlinear fit (more are slower and safer)</source>
+        <translation>Punti di partenza di ogni stima non lineare (di più: più lento e più sicuro)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Candidate effects</source>
+        <translation>Effetti candidati</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load</source>
+        <translation>Carica</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run Diagnosis</source>
+        <translation>Esegui diagnosi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cancel</source>
+        <translation>Annulla</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export Report...</source>
+        <translation>Esporta rapporto...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Where</source>
+        <translation>Dove</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Overlay</source>
+        <translation>Sovrapposizione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>measured</source>
+        <translation>misura</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>model</source>
+        <translation>modello</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No diagnosis yet</source>
+        <translation>Nessuna diagnosi</translation>
     </message>
 </context>
 <context>
