@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <string>
 
 #include <Eigen/Eigenvalues>
@@ -122,6 +125,39 @@ Result<std::vector<Eigen::Index>> pickReferences(const TimeRecord& layout, const
   return refs;
 }
 
+// The window of `spec`, shared with other averagers of the same layout: the
+// last few are kept, since a campaign creates one averager per measurement
+// point with the same windows and an exponential window costs an exp() per
+// sample (as long as a 65536-sample block's four FFTs).
+Result<std::shared_ptr<const Vector>> sharedWindow(const WindowSpec& spec, Eigen::Index n, double fs,
+                                                   Eigen::Index origin) {
+  struct Entry {
+    WindowSpec spec;
+    Eigen::Index n, origin;
+    double fs;
+    std::shared_ptr<const Vector> window;
+  };
+  constexpr std::size_t kKept = 4;
+  static std::mutex mutex;
+  static auto* cache = new std::vector<Entry>();  // never destroyed (used until exit)
+  const auto same = [&](const Entry& e) {
+    return e.n == n && e.origin == origin && e.fs == fs && e.spec.kind == spec.kind &&
+           e.spec.forceWidthS == spec.forceWidthS && e.spec.forceTaperS == spec.forceTaperS &&
+           e.spec.exponentialTauS == spec.exponentialTauS;
+  };
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (auto it = std::find_if(cache->begin(), cache->end(), same); it != cache->end()) return it->window;
+  }
+  auto w = makeWindow(spec, n, fs, origin);
+  if (!w) return w.error();
+  auto shared = std::make_shared<const Vector>(std::move(*w));
+  std::lock_guard<std::mutex> lock(mutex);
+  if (cache->size() == kKept) cache->erase(cache->begin());
+  cache->push_back(Entry{spec, n, origin, fs, shared});
+  return shared;
+}
+
 // Per-thread scratch for add(): one windowed input block and the spectra of
 // every channel of a hit. Kept between calls and averagers (it only grows), so
 // an averager created per estimate does not page-fault fresh buffers.
@@ -157,7 +193,7 @@ double windowInto(const double* x, const double* w, double* dst, Eigen::Index n)
     if (w != nullptr) {
       d = Eigen::Map<const Vector>(x + i0, len).cwiseProduct(Eigen::Map<const Vector>(w + i0, len));
     } else {
-      d = Eigen::Map<const Vector>(x + i0, len);
+      std::memcpy(dst + i0, x + i0, sizeof(double) * static_cast<std::size_t>(len));  // libc's widest copy
     }
     sumSq += d.squaredNorm();
   }
@@ -209,12 +245,12 @@ Result<SpectralAverager> SpectralAverager::create(const TimeRecord& layout, cons
   a.refRect_ = isRectangular(options.referenceWindow);
   a.respRect_ = isRectangular(options.responseWindow);
   if (!a.refRect_) {  // rectangular windows are applied by copying, no vector needed
-    auto wr = makeWindow(options.referenceWindow, a.n_, a.sampleRateHz_, a.preTrigger_);
+    auto wr = sharedWindow(options.referenceWindow, a.n_, a.sampleRateHz_, a.preTrigger_);
     if (!wr) return wr.error();
     a.refWindow_ = std::move(*wr);
   }
   if (!a.respRect_) {
-    auto wx = makeWindow(options.responseWindow, a.n_, a.sampleRateHz_, a.preTrigger_);
+    auto wx = sharedWindow(options.responseWindow, a.n_, a.sampleRateHz_, a.preTrigger_);
     if (!wx) return wx.error();
     a.respWindow_ = std::move(*wx);
   }
@@ -287,7 +323,7 @@ Result<void> SpectralAverager::add(const TimeRecord& hit) {
     const bool isRef = j < nr;
     const Eigen::Index c = isRef ? references_[j] : responses_[j - nr];
     const double* x = hit.samples.col(c).data();
-    const double* w = isRef ? (refRect_ ? nullptr : refWindow_.data()) : (respRect_ ? nullptr : respWindow_.data());
+    const double* w = isRef ? (refRect_ ? nullptr : refWindow_->data()) : (respRect_ ? nullptr : respWindow_->data());
     const double sumSq = windowInto(x, w, ws.in.data(), n_);
     if (!std::isfinite(sumSq)) {
       for (Eigen::Index i = 0; i < n_; ++i) {

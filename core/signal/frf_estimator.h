@@ -142,7 +142,7 @@ class SpectralAverager {
   std::vector<Eigen::Index> responses_;
   FrfType type_ = FrfType::Accelerance;
   Vector frequencyHz_;
-  Vector refWindow_, respWindow_;
+  std::shared_ptr<const Vector> refWindow_, respWindow_;  // shared, read-only (see sharedWindow)
   bool refRect_ = true, respRect_ = true;
   // Raw sums over hits (scaled on output), one column per channel or pair so
   // that each is a contiguous stream: autos()(k, a) = sum |S_a|^2 and
