@@ -64,6 +64,7 @@ struct HammerCampaign {
 
 struct CampaignResult {
   core::modal::PlscfResult identification;
+  std::vector<core::signal::TimeRecord> hits;  // the triggered records, in order
   int records = 0;
   bool overloaded = false;
 };
@@ -76,13 +77,13 @@ inline std::uint8_t rangeFor(double peakVolts) {
   return best;
 }
 
-inline std::optional<CampaignResult> runHammerCampaign(const HammerCampaign& c) {
-  using namespace std::chrono_literals;
-  const double fs = c.sampleRateHz;
+// Hammer (input 0, at DOF 1 of the specimen) and three accelerometers (DOFs
+// 1 to 3), one hit every recordSeconds + 1 s.
+inline std::optional<AcquisitionConfig> hammerConfig(const HammerCampaign& c) {
   const double interval = c.recordSeconds + 1.0;
   AcquisitionConfig cfg;
-  cfg.sampleRateHz = fs;
-  cfg.scanCount = static_cast<std::int64_t>(std::llround(c.hits * interval * fs));
+  cfg.sampleRateHz = c.sampleRateHz;
+  cfg.scanCount = static_cast<std::int64_t>(std::llround(c.hits * interval * c.sampleRateHz));
   auto spec = sim::modalSpecimen(c.specimen);
   EXPECT_TRUE(spec.ok());
   if (!spec) return std::nullopt;
@@ -108,35 +109,14 @@ inline std::optional<CampaignResult> runHammerCampaign(const HammerCampaign& c) 
   cfg.parameters["hammer.interval_s"] = interval;
   cfg.parameters["hammer.peak_force"] = c.peakForceN;
   cfg.parameters["sim.seed"] = static_cast<std::int64_t>(c.seed);
+  return cfg;
+}
 
-  auto dev = sim::makeHammerStationDriver()->create(DeviceDescriptor{"sim-hammer", "", 0, 0, "", "sim:0"}).value();
-  auto run = acquire(*dev, cfg);
-  if (!run) return std::nullopt;
-  EXPECT_EQ(run->end.reason, EndReason::Completed);
-
-  CampaignResult out;
-  out.overloaded = !run->overloads.empty();
-  const StreamHeader& header = run->header;
-  SoftwareTriggerConfig tc;
-  tc.channel = 0;
-  tc.level = 0.05 * c.peakForceN;  // far above the 0.05 N noise
-  tc.recordScans = static_cast<std::int64_t>(std::llround(c.recordSeconds * fs));
-  tc.preTriggerFraction = 0.1;
-  for (const auto& ch : header.channels) tc.fullScale.push_back(ch.fullScale);
-  auto trig = SoftwareTrigger::create(tc, 4);
-  EXPECT_TRUE(trig.ok());
-  if (!trig) return std::nullopt;
-  auto records = trig->feed(0, run->values);
-  out.records = static_cast<int>(records.size());
-
+// H1 averaging of the hits and pLSCF over the campaign's band.
+inline std::optional<core::modal::PlscfResult> identifyHits(const std::vector<core::signal::TimeRecord>& hits,
+                                                            const HammerCampaign& c) {
   std::optional<core::signal::SpectralAverager> avg;
-  for (const auto& r : records) {
-    out.overloaded = out.overloaded || r.overloaded;
-    core::signal::TimeRecord tr;
-    tr.sampleRateHz = header.sampleRateHz;
-    tr.preTriggerSamples = r.preTriggerScans;
-    tr.channels = header.channels;
-    tr.samples = r.samples;
+  for (const auto& tr : hits) {
     if (!avg) {
       auto a = core::signal::SpectralAverager::create(tr, core::signal::FrfOptions{});
       EXPECT_TRUE(a.ok()) << a.error().describe();
@@ -156,6 +136,41 @@ inline std::optional<CampaignResult> runHammerCampaign(const HammerCampaign& c) 
   opt.maxOrder = c.maxOrder;
   auto id = core::modal::identifyPlscf(*frf, opt);
   EXPECT_TRUE(id.ok()) << id.error().describe();
+  if (!id) return std::nullopt;
+  return std::move(*id);
+}
+
+inline std::optional<CampaignResult> runHammerCampaign(const HammerCampaign& c) {
+  auto cfg = hammerConfig(c);
+  if (!cfg) return std::nullopt;
+  auto dev = sim::makeHammerStationDriver()->create(DeviceDescriptor{"sim-hammer", "", 0, 0, "", "sim:0"}).value();
+  auto run = acquire(*dev, *cfg);
+  if (!run) return std::nullopt;
+  EXPECT_EQ(run->end.reason, EndReason::Completed);
+
+  CampaignResult out;
+  out.overloaded = !run->overloads.empty();
+  const StreamHeader& header = run->header;
+  SoftwareTriggerConfig tc;
+  tc.channel = 0;
+  tc.level = 0.05 * c.peakForceN;  // far above the 0.05 N noise
+  tc.recordScans = static_cast<std::int64_t>(std::llround(c.recordSeconds * c.sampleRateHz));
+  tc.preTriggerFraction = 0.1;
+  for (const auto& ch : header.channels) tc.fullScale.push_back(ch.fullScale);
+  auto trig = SoftwareTrigger::create(tc, 4);
+  EXPECT_TRUE(trig.ok());
+  if (!trig) return std::nullopt;
+  for (const auto& r : trig->feed(0, run->values)) {
+    out.overloaded = out.overloaded || r.overloaded;
+    core::signal::TimeRecord tr;
+    tr.sampleRateHz = header.sampleRateHz;
+    tr.preTriggerSamples = r.preTriggerScans;
+    tr.channels = header.channels;
+    tr.samples = r.samples;
+    out.hits.push_back(std::move(tr));
+  }
+  out.records = static_cast<int>(out.hits.size());
+  auto id = identifyHits(out.hits, c);
   if (!id) return std::nullopt;
   out.identification = std::move(*id);
   return out;
