@@ -28,6 +28,7 @@
 #include "core/io/uff/uff.h"
 #include "views/plots/frf_plot.h"
 #include "devices/sim/virtual_specimens.h"
+#include "views/gap/model_test_view.h"
 #include "views/panels/project_overview.h"
 #include "views/scene/scene_view.h"
 
@@ -50,6 +51,7 @@ class MainWindowTest : public QObject {
   void importedGeometryIsDrawnInThe3dView();
   void importedFrfsOpenAPlotTab();
   void unreadableImportLeavesTheProjectUnchanged();
+  void modelVsTestOpensOneTabThatFollowsTheLanguage();
   void screenshot();
 
  private:
@@ -367,6 +369,27 @@ void MainWindowTest::unreadableImportLeavesTheProjectUnchanged() {
   QVERIFY(after.ok());
   QCOMPARE(after->counts.size(), before->counts.size());
   for (size_t i = 0; i < before->counts.size(); ++i) QCOMPARE(after->counts[i].rows, before->counts[i].rows);
+}
+
+// Tools > Model vs Test opens the gap view once (a second call raises it) and
+// its tab title follows the interface language like every other tab.
+void MainWindowTest::modelVsTestOpensOneTabThatFollowsTheLanguage() {
+  mozzi::views::ModelTestView* view = window_->openModelTest();
+  QVERIFY(view);
+  QCOMPARE(window_->workArea()->currentWidget(), view);
+  const int tabs = window_->workArea()->count();
+  window_->workArea()->setCurrentIndex(0);
+  QCOMPARE(window_->openModelTest(), view);
+  QCOMPARE(window_->workArea()->count(), tabs);
+  QCOMPARE(window_->workArea()->currentWidget(), view);
+  const int index = window_->workArea()->indexOf(view);
+  QCOMPARE(window_->workArea()->tabText(index), QStringLiteral("Model vs Test"));
+  QVERIFY(window_->setLanguage(QStringLiteral("it")));
+  QCOMPARE(window_->workArea()->tabText(index), QStringLiteral("Modello contro prova"));
+  // Widgets get LanguageChange as a posted event: wait for it.
+  QTRY_VERIFY(view->verdictText().contains(QStringLiteral("Nessuna diagnosi")));
+  QVERIFY(window_->setLanguage(QStringLiteral("en")));
+  QCOMPARE(window_->workArea()->tabText(index), QStringLiteral("Model vs Test"));
 }
 
 void MainWindowTest::screenshot() {
