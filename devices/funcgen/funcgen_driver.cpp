@@ -11,6 +11,7 @@ namespace mozzi::devices::funcgen {
 namespace {
 
 constexpr const char* kDriverName = "usbtmc-funcgen";
+constexpr unsigned kProbeTimeoutMs = 1000;  // a generator answers SOUR1:FUNC? in milliseconds
 
 Capabilities deviceCapabilities(const GeneratorCapabilities& g) {
   Capabilities caps;
@@ -129,33 +130,15 @@ class FunctionGeneratorDevice final : public Device {
 
   core::Result<void> open() override {
     if (transport_) return {};
-    auto t = usbtmc::UsbtmcTransport::open(descriptor_.busPath);
-    if (!t) return t.error();
-    transport_ = std::move(*t);
-    session_ = std::make_unique<usbtmc::ScpiSession>(*transport_);
-    descriptor_.busPath = transport_->info().usb.busPath();
-    descriptor_.serial = transport_->info().usb.serial;
-    auto id = session_->identify();
-    if (!id) return fail(id.error());
-    genCaps_ = capabilitiesFor(*id);
-    descriptor_.model = id->manufacturer + " " + id->model;
-    // *CLS empties an error queue left by an earlier program, so the first
-    // checked command is not blamed for it.
-    if (auto r = session_->clearStatus(); !r) return fail(r.error());
-    generator_ = std::make_unique<FunctionGenerator>(*session_, genCaps_);
-    // A USBTMC instrument that does not know SOUR1:FUNC? is no generator.
-    if (auto f = session_->query("SOUR1:FUNC?"); !f) return fail(f.error());
-    auto errors = session_->drainErrors();
-    if (!errors) return fail(errors.error());
-    if (!errors->empty())
-      return fail(core::makeError(core::ErrorCode::Unsupported,
-                                  descriptor_.model + " does not answer SOUR1:FUNC?: not a function generator (" +
-                                      errors->front().message + ")",
-                                  transport_->where()));
-    for (int c = 1; c <= genCaps_.channels; ++c)
-      if (auto r = generator_->setOutput(c, false); !r) return fail(r.error());
-    state_ = DeviceState::Open;
-    return {};
+    auto r = openSession();
+    if (!r) {
+      // Nothing half-open stays behind: a later open() starts from scratch.
+      generator_.reset();
+      session_.reset();
+      transport_.reset();
+      genCaps_ = genericCapabilities();
+    }
+    return r;
   }
 
   void close() override {
@@ -235,6 +218,38 @@ class FunctionGeneratorDevice final : public Device {
   }
 
  private:
+  core::Result<void> openSession() {
+    auto t = usbtmc::UsbtmcTransport::open(descriptor_.busPath);
+    if (!t) return t.error();
+    transport_ = std::move(*t);
+    session_ = std::make_unique<usbtmc::ScpiSession>(*transport_);
+    descriptor_.busPath = transport_->info().usb.busPath();
+    descriptor_.serial = transport_->info().usb.serial;
+    auto id = session_->identify();
+    if (!id) return id.error();
+    genCaps_ = capabilitiesFor(*id);
+    descriptor_.model = id->manufacturer + " " + id->model;
+    // *CLS empties an error queue left by an earlier program, so the first
+    // checked command is not blamed for it.
+    if (auto r = session_->clearStatus(); !r) return r.error();
+    generator_ = std::make_unique<FunctionGenerator>(*session_, genCaps_);
+    // A USBTMC instrument that does not know SOUR1:FUNC? is no generator: it
+    // queues -113 "Undefined header" and sends nothing, so the query times out.
+    auto func = session_->query("SOUR1:FUNC?", kProbeTimeoutMs);
+    auto errors = session_->drainErrors();
+    if (!errors) return errors.error();
+    if (!errors->empty())
+      return core::makeError(core::ErrorCode::Unsupported,
+                             descriptor_.model + " does not know SOUR1:FUNC?: not a function generator (" +
+                                 std::to_string(errors->front().code) + ", " + errors->front().message + ")",
+                             transport_->where());
+    if (!func) return func.error();
+    for (int c = 1; c <= genCaps_.channels; ++c)
+      if (auto r = generator_->setOutput(c, false); !r) return r.error();
+    state_ = DeviceState::Open;
+    return {};
+  }
+
   core::Error fail(const core::Error& e) {
     if (transport_ && transport_->disconnected()) state_ = DeviceState::Open;
     return e;

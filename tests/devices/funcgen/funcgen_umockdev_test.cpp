@@ -79,6 +79,25 @@ TEST_F(FuncgenUmockdev, ScanAndOpenIdentifyTheGeneratorAndSwitchItsOutputsOff) {
   EXPECT_FALSE(out2);
 }
 
+TEST_F(FuncgenUmockdev, AnInstrumentThatIsNoGeneratorIsRefusedAndNothingStaysOpen) {
+  model_.with([](UsbtmcDeviceModel& m) {
+    m.instrument.generator = false;
+    m.instrument.idn = "Keysight Technologies,34465A,MY00000002,A.03.01";  // a DMM
+  });
+  auto dev = makeFunctionGeneratorDriver()->create(makeFunctionGeneratorDriver()->scan()->front());
+  ASSERT_TRUE(dev.ok());
+  auto r = (*dev)->open();
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().code, core::ErrorCode::Unsupported);
+  EXPECT_EQ(
+      r.error().message,
+      "Keysight Technologies 34465A does not know SOUR1:FUNC?: not a function generator (-113, Undefined header)");
+  EXPECT_EQ((*dev)->state(), DeviceState::Closed);
+  EXPECT_FALSE((*dev)->open().ok());  // tried again from scratch, not "already open"
+  const auto log = model_.log();
+  EXPECT_EQ(std::count(log.messages.begin(), log.messages.end(), "OUTP1 OFF\n"), 0);
+}
+
 TEST_F(FuncgenUmockdev, SineConfigureAndOutputOnWithExactBytes) {
   Device& dev = openDevice();
   const std::size_t before = log().messages.size();

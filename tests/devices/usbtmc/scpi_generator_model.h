@@ -35,6 +35,7 @@ class ScpiGeneratorModel {
   std::vector<std::string> received;  // every message, newline stripped
   std::map<int, Channel> channels{{1, {}}, {2, {}}};
   std::deque<std::pair<int, std::string>> errors;
+  bool generator = true;  // false: an instrument without SOURce/OUTPut commands (a DMM, a scope)
 
   // The answer to one message, if it is a query that gets one.
   std::optional<std::string> handle(std::string message) {
@@ -64,7 +65,7 @@ class ScpiGeneratorModel {
     }
     int n = 0;
     std::string rest;
-    if (!split(header, n, rest)) return undefined();
+    if (!generator || !split(header, n, rest)) return undefined();
     Channel& ch = channels[n];
     const bool query = !rest.empty() && rest.back() == '?';
     if (query) rest.pop_back();
