@@ -4,8 +4,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/gap/stability/stability_problem.h"
 #include "core/gap/structural/model_file.h"
 #include "core/gap/structural/structural_problem.h"
+#include "core/gap/tire/tire_problem.h"
 #include "core/io/uff/uff.h"
 
 namespace mozzi::core::gap {
@@ -76,6 +78,8 @@ Result<std::unique_ptr<GapProblem>> loadGapProblem(const std::string& modelPath,
   }
   auto kind = modelFileKind(modelPath);
   if (!kind) return kind.error();
+  if (*kind == "mozzi-tire-gap/1") return loadTireGapProblem(modelPath, measuredPath);
+  if (*kind == "mozzi-stability-gap/1") return loadStabilityGapProblem(modelPath, measuredPath);
   if (*kind == structural::kModelSchema) {
     auto model = structural::readModelFile(modelPath);
     if (!model) return model.error();
@@ -96,7 +100,9 @@ Result<std::unique_ptr<GapProblem>> loadGapProblem(const std::string& modelPath,
     return loadStructural(*model, measuredPath, options);
   }
   return makeError(ErrorCode::Unsupported,
-                   "unknown model schema '" + *kind + "' (known: mozzi-model/1, UFF 55 modal models)", modelPath);
+                   "unknown model schema '" + *kind +
+                       "' (known: mozzi-model/1, mozzi-tire-gap/1, mozzi-stability-gap/1, UFF 55 modal models)",
+                   modelPath);
 }
 
 }  // namespace mozzi::core::gap
