@@ -76,6 +76,7 @@ struct Diagnosis {
   int dof = 0;                             // residual count minus free calibration parameters
   double fitPValue = 1.0;                  // P(chi2_dof > chiSquare)
   double flipProbability = -1.0;           // top-two ambiguity check; < 0 when not run
+  bool flipEstimated = false;              // from the margin alone (LR_1 - LR_2 >= 36), not simulated
   std::string separatingMeasurement;       // where the top two differ most (ambiguous verdicts)
   std::vector<RankedEffect> ranking;       // best first
   Verdict verdict = Verdict::None;

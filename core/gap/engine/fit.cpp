@@ -76,7 +76,8 @@ bool Model::residuals(const double* u, double* r) const {
   return ok;
 }
 
-bool Model::jacobian(const Eigen::VectorXd& u, int first, int count, double h, Eigen::MatrixXd& jac) const {
+bool Model::jacobian(const Eigen::VectorXd& u, int first, int count, double h, Eigen::MatrixXd& jac,
+                     const Eigen::VectorXd* r0) const {
   const int n = residualCount();
   jac.resize(n, count);
   Eigen::VectorXd up(u), plus(n), minus(n);
@@ -85,6 +86,15 @@ bool Model::jacobian(const Eigen::VectorXd& u, int first, int count, double h, E
     const Scaled& s = parameter(i);
     if (s.fixed) {
       jac.col(c).setZero();
+      continue;
+    }
+    if (r0) {
+      const double step = u[i] + h <= s.uUpper ? h : -h;
+      up[i] = u[i] + step;
+      const bool ok = residuals(up.data(), plus.data());
+      up[i] = u[i];
+      if (!ok) return false;
+      jac.col(c) = (plus - *r0) / step;
       continue;
     }
     // Central where both sides are inside the box, else one-sided: the model
@@ -168,9 +178,12 @@ class DataCost : public ceres::CostFunction {
     if (!model_.residuals(u_.data(), residuals)) return false;
     if (!jacobians) return true;
     const int n = model_.residualCount();
+    const Eigen::VectorXd r0 = Eigen::Map<const Eigen::VectorXd>(residuals, n);
     for (int i = 0; i < model_.parameterCount(); ++i) {
       if (!jacobians[i]) continue;
-      if (!model_.jacobian(u_, i, 1, kJacobianStep, col_)) return false;
+      // Forward differences during the iterations (half the evaluations);
+      // the covariance below uses central ones.
+      if (!model_.jacobian(u_, i, 1, kJacobianStep, col_, &r0)) return false;
       std::copy(col_.data(), col_.data() + n, jacobians[i]);
     }
     return true;
@@ -328,23 +341,34 @@ FitResult fitModel(const Model& model, const std::vector<Eigen::VectorXd>& start
   so.logging_type = ceres::SILENT;
   so.minimizer_progress_to_stdout = false;
   so.num_threads = 1;
-  for (const auto& start : starts) {
-    ++best.starts;
+  const bool staged =
+      starts.size() > 1 && options.startIterations > 0 && options.startIterations < options.maxIterations;
+  if (staged) so.max_num_iterations = options.startIterations;
+  auto run = [&](const Eigen::VectorXd& start) {
     Built b;
     build(model, clipToBox(model, start), b);
     double cost0 = 0.0;
-    if (!b.problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost0, nullptr, nullptr, nullptr)) continue;
+    if (!b.problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost0, nullptr, nullptr, nullptr)) return;
     ceres::Solver::Summary summary;
     ceres::Solve(so, &b.problem, &summary);
-    if (!std::isfinite(summary.final_cost)) continue;
+    if (!std::isfinite(summary.final_cost)) return;
     ++best.feasibleStarts;
     if (summary.final_cost < best.nll) {
       best.ok = true;
       best.nll = summary.final_cost;
       best.u = Eigen::Map<const Eigen::VectorXd>(b.u.data(), static_cast<Eigen::Index>(b.u.size()));
     }
+  };
+  for (const auto& start : starts) {
+    ++best.starts;
+    run(start);
   }
   if (!best.ok) return best;
+  if (staged) {
+    so.max_num_iterations = options.maxIterations;
+    --best.feasibleStarts;  // the polish continues a start already counted
+    run(Eigen::VectorXd(best.u));
+  }
   best.chiSquare = dataChiSquare(model, best.u);
   if (options.covariance) covarianceAt(model, best);
   return best;

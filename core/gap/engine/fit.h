@@ -46,7 +46,10 @@ class Model {
   bool residuals(const double* u, double* r) const;
   // Central differences with step h in u (one-sided at a bound) for the
   // columns [first, first + count); false when a side cannot be evaluated.
-  bool jacobian(const Eigen::VectorXd& u, int first, int count, double h, Eigen::MatrixXd& jac) const;
+  // Given the residuals r0 at u, forward differences instead (backward at the
+  // upper bound): one evaluation per column instead of two.
+  bool jacobian(const Eigen::VectorXd& u, int first, int count, double h, Eigen::MatrixXd& jac,
+                const Eigen::VectorXd* r0 = nullptr) const;
   // Prior residuals (x - nominal) / priorSigma of the parameters that have one.
   int priorCount() const;
   void priorResiduals(const double* u, double* r) const;
@@ -66,6 +69,9 @@ class Model {
 
 struct FitOptions {
   int maxIterations = 100;
+  // With several starts, each runs at most this many iterations and only the
+  // best is then polished to maxIterations (0: every start runs to the end).
+  int startIterations = 0;
   double functionTolerance = 1e-10;
   bool covariance = false;  // std errors via ceres::Covariance at the optimum
 };
