@@ -69,6 +69,24 @@ TEST(GapTireCli, EffectsOptionRestrictsTheCatalogue) {
   for (const auto& e : j["ranking"]) EXPECT_TRUE(e["effect"] == "belt_modes" || e["effect"] == "trail_feedback");
 }
 
+// The stability schema goes through the same command (benchmark bicycle, so
+// the mode sweeps stay cheap): rigid-fork weave frequencies are a no-gap control.
+TEST(GapTireCli, StabilityModelThroughTheSameCommand) {
+  const auto model = writeTemp("bicycle.json", R"({"schema": "mozzi-stability-gap/1", "vehicle": "bicycle"})");
+  // Weave of the rigid benchmark bicycle, Meijaard et al. (2007) Table 2
+  // (shared/data/benchmark-bicycle/eigenvalues.csv): Im = 4.46486771 rad/s at
+  // 5 m/s and 5.87673061 rad/s at 6 m/s, as Hz to 5 decimals, 1% uncertainty.
+  const auto csv = writeTemp(
+      "weave.csv", "speed_m_s,mode,frequency_hz,uncertainty_hz\n5,weave,0.71061,0.0071\n6,weave,0.93531,0.0094\n");
+  const auto r = run({"gap", "--model", model, "--measured", csv, "--json", "--bootstrap", "50"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["data_kind"], "stability");
+  ASSERT_EQ(j["gap_before"]["conditions"].size(), 2u);
+  EXPECT_EQ(j["gap_before"]["conditions"][0]["label"], "weave 5 m/s");
+  EXPECT_EQ(j["verdict"], "none");
+}
+
 TEST(GapTireCli, BadFilesFailWithTheirPlace) {
   // A pressure outside the contact-patch table (0.5-4 bar): data error, exit 1.
   const auto csv = writeTemp("outside.csv", "pressure_bar,sigma_m,uncertainty_m\n6,0.15,0.01\n");
