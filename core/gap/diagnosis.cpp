@@ -340,6 +340,18 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
       e.note = "no covariance at the fitted point: the model could not be evaluated next to it";
     } else {
       e.stdErrors.assign(fit.stdErrors.begin() + p, fit.stdErrors.end());
+      for (int j = 0; j < q; ++j) {
+        const Scaled& ph = sc.phi[static_cast<std::size_t>(j)];
+        // A standard error wider than the whole admissible range: the data do
+        // not pin the size down although the Jacobian is not singular.
+        if (!ph.fixed && std::isfinite(ph.def.upper - ph.def.lower) &&
+            e.stdErrors[static_cast<std::size_t>(j)] > ph.def.upper - ph.def.lower) {
+          e.identifiable = false;
+          e.note = "not identifiable in practice: the standard error of " + ph.def.name + " (" +
+                   formatNumber(e.stdErrors[static_cast<std::size_t>(j)], 3) + ") exceeds its admissible range [" +
+                   formatNumber(ph.def.lower, 3) + ", " + formatNumber(ph.def.upper, 3) + "]";
+        }
+      }
     }
     fitted.push_back(std::move(e));
     alternatives.push_back({sc.index, sc.phi, fit.u});

@@ -180,6 +180,11 @@ TEST(EngineDiagnosis, SignatureAbsorbedByCalibrationIsNotIdentifiable) {
     EXPECT_NE(e.note.find("singular values"), std::string::npos) << e.note;
   }
   EXPECT_NE(d->ranking[0].note.find("absorbs"), std::string::npos) << d->ranking[0].note;
+  const auto j = diagnosisToJson(*d);
+  EXPECT_EQ(j["verdict"], "not_identifiable");
+  EXPECT_TRUE(j["best"].is_null());
+  EXPECT_TRUE(j["ranking"][0]["std_errors"].is_null());
+  EXPECT_FALSE(j["ranking"][0]["identifiable"].get<bool>());
 }
 
 TEST(EngineDiagnosis, OutOfCatalogueResidualIsNotACleanAttribution) {
