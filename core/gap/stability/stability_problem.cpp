@@ -194,6 +194,22 @@ Result<double> optionalNumber(const Json& j, const char* key, double fallback, c
     return makeError(ErrorCode::ParseError, std::string("\"") + key + "\" must be a finite number", where);
   return j[key].get<double>();
 }
+
+// The numbers of an optional object j[key] into the given fields (absent
+// numbers keep their value).
+Result<void> readOptionalObject(const Json& j, const char* key, const std::string& source,
+                                const std::vector<std::pair<const char*, double*>>& fields) {
+  if (!j.contains(key)) return {};
+  const Json& o = j[key];
+  const std::string where = source + ": " + key;
+  if (!o.is_object()) return makeError(ErrorCode::ParseError, "must be an object", where);
+  for (const auto& [name, value] : fields) {
+    auto v = optionalNumber(o, name, *value, where);
+    if (!v) return v.error();
+    *value = *v;
+  }
+  return {};
+}
 }  // namespace
 
 Result<StabilityGapModel> parseStabilityGapModel(const std::string& jsonText, const std::string& source,
@@ -241,27 +257,15 @@ Result<StabilityGapModel> parseStabilityGapModel(const std::string& jsonText, co
     }
     m.bicycleBending = stability::thesisSteelForkBending();
     m.bicycleTorsion = stability::thesisSteelForkTorsion();
-    if (j.contains("fork_bending")) {
-      const Json& b = j["fork_bending"];
-      const std::string w = source + ": fork_bending";
-      if (!b.is_object()) return makeError(ErrorCode::ParseError, "must be an object", w);
-      auto k = optionalNumber(b, "stiffness_n_m_per_rad", m.bicycleBending.stiffness, w);
-      auto c = optionalNumber(b, "damping_n_m_s_per_rad", m.bicycleBending.damping, w);
-      auto h = optionalNumber(b, "h_w_m", m.bicycleBending.hW, w);
-      for (const auto* r : {&k, &c, &h})
-        if (!*r) return r->error();
-      m.bicycleBending = {*k, *c, *h};
-    }
-    if (j.contains("fork_torsion")) {
-      const Json& b = j["fork_torsion"];
-      const std::string w = source + ": fork_torsion";
-      if (!b.is_object()) return makeError(ErrorCode::ParseError, "must be an object", w);
-      auto k = optionalNumber(b, "stiffness_n_m_per_rad", m.bicycleTorsion.stiffness, w);
-      auto c = optionalNumber(b, "damping_n_m_s_per_rad", m.bicycleTorsion.damping, w);
-      for (const auto* r : {&k, &c})
-        if (!*r) return r->error();
-      m.bicycleTorsion = {*k, *c, m.bicycleTorsion.axisOffset};
-    }
+    auto bending = readOptionalObject(j, "fork_bending", source,
+                                      {{"stiffness_n_m_per_rad", &m.bicycleBending.stiffness},
+                                       {"damping_n_m_s_per_rad", &m.bicycleBending.damping},
+                                       {"h_w_m", &m.bicycleBending.hW}});
+    if (!bending) return bending.error();
+    auto torsion = readOptionalObject(
+        j, "fork_torsion", source,
+        {{"stiffness_n_m_per_rad", &m.bicycleTorsion.stiffness}, {"damping_n_m_s_per_rad", &m.bicycleTorsion.damping}});
+    if (!torsion) return torsion.error();
     if (!(m.bicycleBending.stiffness > 0.0) || !(m.bicycleTorsion.stiffness > 0.0))
       return makeError(ErrorCode::ParseError, "reference fork stiffnesses must be positive", source);
     m.label = "benchmark bicycle (Meijaard et al. 2007), fork joints of thesis appendix 3";

@@ -191,6 +191,19 @@ TEST(StabilityGapLoader, RejectsBadInputs) {
             std::string::npos);
   EXPECT_NE(bad(R"({"schema": "mozzi-stability-gap/1", "vehicle": "bicycle", "speed_folds": 0})").find("speed_folds"),
             std::string::npos);
+  EXPECT_NE(bad(R"({"schema": "mozzi-stability-gap/1", "vehicle": "bicycle", "fork_torsion": 3})").find("fork_torsion"),
+            std::string::npos);
+  EXPECT_NE(bad(R"({"schema": "mozzi-stability-gap/1", "vehicle": "bicycle", "fork_bending": {"h_w_m": "high"}})")
+                .find("h_w_m"),
+            std::string::npos);
+  // Reference joints: given numbers replace the thesis steel fork's, the others stay (§6.5: 5635, 0.8, 0.21).
+  auto carbon = parseStabilityGapModel(
+      R"({"schema": "mozzi-stability-gap/1", "vehicle": "bicycle", "fork_bending": {"stiffness_n_m_per_rad": 5326}})",
+      "m.json", "");
+  ASSERT_TRUE(carbon) << carbon.error().describe();
+  EXPECT_EQ(carbon->bicycleBending.stiffness, 5326.0);
+  EXPECT_EQ(carbon->bicycleBending.damping, 0.8);
+  EXPECT_EQ(carbon->bicycleBending.hW, 0.21);
   auto csv = [](const std::string& text) {
     auto r = parseModeFrequencyCsv(text, "f.csv");
     EXPECT_FALSE(r);
