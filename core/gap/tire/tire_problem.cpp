@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "core/common/text.h"
 #include "core/tire/relaxation_prediction.h"
@@ -35,12 +34,6 @@ tire::RingModel withDamping(const tire::RingModel& ring, double zeta) {
   return out;
 }
 }  // namespace
-
-const std::vector<std::string>& tireEffectNames() {
-  static const std::vector<std::string> names = {"belt_modes", "carcass_damping", "trail_feedback",
-                                                 "contact_patch_fraction", "ring_pressure_stiffening"};
-  return names;
-}
 
 TireGapProblem::TireGapProblem(TireGapModel model, std::vector<ConditionPoint> points)
     : ConditionSeriesProblem(std::move(points)), model_(std::move(model)) {}
@@ -79,8 +72,9 @@ Result<std::unique_ptr<TireGapProblem>> TireGapProblem::create(TireGapModel mode
   const double pLo = model.contactPatch.front().first / 1e5, pHi = model.contactPatch.back().first / 1e5;
   for (std::size_t j = 0; j < measured.size(); ++j) {
     auto& pt = measured[j];
-    if (!(pt.sigma > 0.0) || !std::isfinite(pt.sigma) || !std::isfinite(pt.measured) || !(pt.measured > 0.0))
-      return makeError(ErrorCode::InvalidArgument, "relaxation length and its uncertainty must be positive",
+    if (!(pt.sigma > 0.0) || !std::isfinite(pt.sigma) || !std::isfinite(pt.measured) || !(pt.measured > 0.0) ||
+        !(pt.x > 0.0) || !std::isfinite(pt.x))
+      return makeError(ErrorCode::InvalidArgument, "pressure, relaxation length and its uncertainty must be positive",
                        pressureLabel(pt.x));
     if (model.contactPatch.size() > 1 && (pt.x < pLo - 1e-9 || pt.x > pHi + 1e-9))
       return makeError(ErrorCode::InvalidArgument,
@@ -111,7 +105,9 @@ double TireGapProblem::halfLength(double pressurePa) const {
   const auto& t = model_.contactPatch;
   if (t.size() == 1 || pressurePa <= t.front().first) return t.front().second;
   if (pressurePa >= t.back().first) return t.back().second;
-  auto hi = std::upper_bound(t.begin(), t.end(), std::make_pair(pressurePa, -1.0));
+  // front < p < back here, so hi is past the first entry.
+  auto hi = std::upper_bound(t.begin(), t.end(), pressurePa,
+                             [](double p, const std::pair<double, double>& e) { return p < e.first; });
   auto lo = hi - 1;
   const double u = (pressurePa - lo->first) / (hi->first - lo->first);
   return lo->second + u * (hi->second - lo->second);
@@ -179,6 +175,8 @@ bool TireGapProblem::predictOne(double pressurePa, const double* theta, int cand
       break;
     default: return false;
   }
+  // For the FRF-based effects the carcass part is what the phase adds beyond a m.
+  if (candidate == kCarcassDamping || candidate == kTrailFeedback) carcass = sigma - contact;
   out = {sigma, contact, carcass};
   return std::isfinite(sigma);
 }

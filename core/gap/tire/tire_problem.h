@@ -86,9 +86,6 @@ class TireGapProblem : public ConditionSeriesProblem {
   TireGapModel model_;
 };
 
-// Catalogue names in candidate order.
-const std::vector<std::string>& tireEffectNames();
-
 // Pressure range kept from the measured file [bar]; outside rows are dropped.
 struct TireLoadOptions {
   double minPressureBar = 0.0;
