@@ -131,6 +131,8 @@ class SpectralAverager {
   Eigen::Index crossIndex(Eigen::Index a, Eigen::Index b) const;
   void rawReferenceMatrix(Eigen::Index line, ComplexMatrix& g) const;  // unscaled sums, into g
   void accumulate(const std::complex<double>* spectra, Eigen::Index stride);
+  template <bool Add>
+  void accumulateBlocks(const std::complex<double>* spectra, Eigen::Index stride);
 
   FrfOptions options_;
   std::shared_ptr<const RealFft> fft_;
@@ -144,7 +146,7 @@ class SpectralAverager {
   Vector frequencyHz_;
   std::shared_ptr<const Vector> refWindow_, respWindow_;  // shared, read-only (see sharedWindow)
   bool refRect_ = true, respRect_ = true;
-  // Raw sums over hits (scaled on output), one column per channel or pair so
+  // Raw sums over hits (scaled on output; not defined while hits_ == 0), one column per channel or pair so
   // that each is a contiguous stream: autos()(k, a) = sum |S_a|^2 and
   // cross()(k, p) = sum conj(S_a) S_b for the pairs (a, b) in pairs_: every
   // reference pair a < b < R, then every (reference, response).

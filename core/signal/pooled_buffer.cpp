@@ -39,8 +39,8 @@ AlignedBuffer<double> acquire(std::size_t count) {
 }
 }  // namespace
 
-PooledBuffer::PooledBuffer(std::size_t count) : buffer_(acquire(count)), size_(count) {
-  setZero();
+PooledBuffer::PooledBuffer(std::size_t count, Init init) : buffer_(acquire(count)), size_(count) {
+  if (init == Init::Zero) setZero();
 }
 
 PooledBuffer::~PooledBuffer() {

@@ -16,7 +16,8 @@ namespace mozzi::core::signal {
 class PooledBuffer {
  public:
   PooledBuffer() = default;
-  explicit PooledBuffer(std::size_t count);  // count doubles, all zero
+  enum class Init { Zero, Uninitialised };
+  explicit PooledBuffer(std::size_t count, Init init = Init::Zero);  // count doubles
   ~PooledBuffer();
   PooledBuffer(PooledBuffer&& other) noexcept : buffer_(std::move(other.buffer_)), size_(other.size_) {
     other.size_ = 0;
