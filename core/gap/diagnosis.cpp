@@ -443,7 +443,7 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
     ex << (fitsWithinNoise ? "The model fits within noise and no effect improves it significantly"
                            : "The model does not fit within noise, yet no catalogue effect improves it significantly")
        << " (best likelihood ratio " << formatNumber(fittedCount ? d.ranking[0].likelihoodRatio : 0.0, 3)
-       << "). Smallest detectable sizes:";
+       << "). Smallest detectable changes from nominal (found about half the time at the threshold):";
     for (const auto& e : d.ranking) {
       if (!e.fitted) continue;
       ex << ' ' << label(e.candidate) << ':';
