@@ -167,8 +167,9 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
   std::vector<Eigen::VectorXd> starts{Eigen::VectorXd::Zero(base.parameterCount())};
   auto rng = engine::seededRng(options.seed, 0, 0);
   for (int i = 1; i < options.multistarts; ++i) starts.push_back(engine::randomStart(base, rng));
-  FitOptions full;
-  const FitResult fit0 = engine::fitModel(base, starts, full);
+  FitOptions calibration;
+  calibration.startIterations = kStartIterations;  // every start 20 iterations, the best polished
+  const FitResult fit0 = engine::fitModel(base, starts, calibration);
   if (!fit0.ok) {
     return makeError(ErrorCode::NumericalFailure, "the model cannot be evaluated at any calibration start", where);
   }
