@@ -444,26 +444,55 @@ ComplexMatrix SpectralAverager::referenceSpectralMatrix(Eigen::Index line) const
 }
 
 namespace {
-// Condition number of D^-1/2 G D^-1/2 (D = diag G) for Hermitian G, with the
-// eigen decomposition kept for the solve; +inf when a diagonal entry is not
-// positive or the smallest eigenvalue is not.
+// Condition number of D^-1/2 G D^-1/2 (D = diag G) for Hermitian G and G^-1
+// when it is finite; +inf when a diagonal entry is not positive or the
+// normalised matrix is singular. Two references (the usual two-shaker test)
+// in closed form: with c = G10 / sqrt(G00 G11) the normalised eigenvalues are
+// 1 +- |c|; more through the eigen decomposition. Buffers are kept between
+// lines (no allocation per line).
 struct NormalisedInput {
-  Vector invSqrtDiag;
+  Vector invSqrtDiag, invL;
   Eigen::SelfAdjointEigenSolver<ComplexMatrix> eig;
+  ComplexMatrix normalised, inverse;
   double condition = 1.0;
 
-  explicit NormalisedInput(Eigen::Index r) : invSqrtDiag(r), eig(r) {}
+  explicit NormalisedInput(Eigen::Index r) : invSqrtDiag(r), invL(r), eig(r), normalised(r, r), inverse(r, r) {}
 
   void compute(const ComplexMatrix& g) {
-    const Vector d = g.diagonal().real();
-    if (!(d.minCoeff() > 0.0)) {
-      condition = std::numeric_limits<double>::infinity();
+    const Eigen::Index r = g.rows();
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = 0; i < r; ++i) {
+      const double d = g(i, i).real();
+      if (!(d > 0.0)) {
+        condition = kInf;
+        return;
+      }
+      invSqrtDiag[i] = 1.0 / std::sqrt(d);
+    }
+    if (r == 2) {
+      const double a = g(0, 0).real(), d = g(1, 1).real();
+      const Complex b = g(1, 0);
+      const double c = std::abs(b) * invSqrtDiag[0] * invSqrtDiag[1];
+      condition = c < 1.0 ? (1.0 + c) / (1.0 - c) : kInf;
+      const double det = a * d - std::norm(b);
+      if (!(det > 0.0)) condition = kInf;
+      if (condition == kInf) return;
+      inverse(0, 0) = d / det;
+      inverse(1, 1) = a / det;
+      inverse(1, 0) = -b / det;
+      inverse(0, 1) = -std::conj(b) / det;
       return;
     }
-    invSqrtDiag = d.cwiseSqrt().cwiseInverse();
-    eig.compute(invSqrtDiag.asDiagonal() * g * invSqrtDiag.asDiagonal());
+    normalised.noalias() = invSqrtDiag.asDiagonal() * g * invSqrtDiag.asDiagonal();
+    eig.compute(normalised);
     const Vector& l = eig.eigenvalues();  // ascending
-    condition = l[0] > 0.0 ? l[l.size() - 1] / l[0] : std::numeric_limits<double>::infinity();
+    condition = l[0] > 0.0 ? l[r - 1] / l[0] : kInf;
+    if (condition == kInf) return;
+    // G^-1 = D V L^-1 V^H D (D = diag^-1/2, V L V^H the normalised matrix)
+    invL = l.cwiseInverse();
+    const auto& v = eig.eigenvectors();
+    normalised.noalias() = v * invL.asDiagonal() * v.adjoint();
+    inverse.noalias() = invSqrtDiag.asDiagonal() * normalised * invSqrtDiag.asDiagonal();
   }
 };
 }  // namespace
@@ -582,13 +611,8 @@ Result<FrfMatrix> SpectralAverager::frfMultipleReference(FrfMatrix m) const {
     for (Eigen::Index i = 0; i < nr; ++i) {
       for (Eigen::Index o = 0; o < no; ++o) gyf(o, i) = cross()(k, crossIndex(i, nr + o));  // E[y_o conj(f_i)]
     }
-    // H = Gyf Gff^-1 with Gff^-1 = D V L^-1 V^H D (D = diag^-1/2, V L V^H the
-    // normalised matrix), well defined since the condition was checked.
-    const auto& v = ni.eig.eigenvectors();
-    const Vector invL = ni.eig.eigenvalues().cwiseInverse();
-    const ComplexMatrix gInv =
-        ni.invSqrtDiag.asDiagonal() * v * invL.asDiagonal() * v.adjoint() * ni.invSqrtDiag.asDiagonal();
-    hk.noalias() = gyf * gInv;
+    // H = Gyf Gff^-1, well defined since the condition was checked
+    hk.noalias() = gyf * ni.inverse;
     for (Eigen::Index o = 0; o < no; ++o) {
       // gamma^2_o = H_o Gyf_o^H / G_yoyo (real: a Hermitian form)
       const double gyy = autos()(k, nr + o);

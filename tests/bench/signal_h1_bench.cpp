@@ -2,7 +2,7 @@
 // (issue 3 speed target): the whole estimate against the FFTs it needs, the
 // physical floor of the computation (40 real FFTs of 65536 points). The same
 // estimate in SciPy: tests/bench/signal_h1_scipy.py. Figures in
-// docs/performance/signal.md.
+// docs/performance/signal.md and docs/performance.md.
 #include <benchmark/benchmark.h>
 
 #include <random>
@@ -90,6 +90,29 @@ void BM_H1_4ch_65536_10hits_reused(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_H1_4ch_65536_10hits_reused)->Unit(benchmark::kMillisecond);
+
+// Two references (shakers) and two responses on the same data: the
+// multiple-input H1 = Gyf Gff^-1 with conditioning check and multiple
+// coherence per line (4 accumulated cross columns plus a 2 x 2 Hermitian
+// eigen-solve per line).
+void BM_H1_2ref_2resp_65536_10hits(benchmark::State& state) {
+  const auto& data = hits();
+  sg::FrfOptions opt;
+  opt.referenceChannels = {0, 1};
+  std::vector<sg::TimeRecord> twoRef = data;
+  for (auto& r : twoRef) r.channels[1].transducer.kind = sg::TransducerKind::Force;
+  for (auto _ : state) {
+    auto avg = sg::SpectralAverager::create(twoRef.front(), opt);
+    for (const auto& h : twoRef) {
+      auto ok = avg->add(h);
+      benchmark::DoNotOptimize(ok);
+    }
+    auto frf = avg->frf(sg::FrfEstimator::H1);
+    if (!frf) state.SkipWithError(frf.error().message.c_str());
+    benchmark::DoNotOptimize(frf);
+  }
+}
+BENCHMARK(BM_H1_2ref_2resp_65536_10hits)->Unit(benchmark::kMillisecond);
 
 // The floor: the 40 forward FFTs alone, same plan, each sample column copied
 // into FFTW-aligned input (as any caller holding Eigen data must) and

@@ -266,5 +266,49 @@ TEST(FrfEstimator, SeveralReferencesRecoverAnExactMatrix) {
   EXPECT_FALSE(SpectralAverager::create(blocks[0], one).ok());
 }
 
+// Three references go through the general path (eigen decomposition of the
+// normalised Gff instead of the 2 x 2 closed form): y = f1(t-1) - 2 f2(t-2) +
+// 0.25 f3(t-5), exact to rounding from four blocks.
+TEST(FrfEstimator, ThreeReferencesRecoverAnExactRow) {
+  const Eigen::Index n = 128;
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> normal;
+  auto avg = Result<SpectralAverager>(makeError(ErrorCode::InvalidArgument, "unset", "test"));
+  for (int b = 0; b < 4; ++b) {
+    TimeRecord r;
+    r.sampleRateHz = 256.0;
+    r.channels.resize(4);
+    for (int c = 0; c < 4; ++c) {
+      r.channels[static_cast<std::size_t>(c)].dof = Dof{c + 1, Direction::Y, false};
+      r.channels[static_cast<std::size_t>(c)].transducer.kind =
+          c < 3 ? TransducerKind::Force : TransducerKind::Acceleration;
+    }
+    r.samples.resize(n, 4);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      for (int c = 0; c < 3; ++c) r.samples(i, c) = normal(rng);
+    }
+    for (Eigen::Index i = 0; i < n; ++i) {
+      r.samples(i, 3) =
+          r.samples((i - 1 + n) % n, 0) - 2.0 * r.samples((i - 2 + n) % n, 1) + 0.25 * r.samples((i - 5 + n) % n, 2);
+    }
+    if (b == 0) avg = SpectralAverager::create(r, FrfOptions{});
+    ASSERT_TRUE(avg.ok());
+    ASSERT_TRUE(avg->add(r).ok());
+  }
+  auto frf = avg->frf();
+  ASSERT_TRUE(frf.ok()) << frf.error().describe();
+  ASSERT_EQ(frf->referenceCount(), 3);
+  const double gain[3] = {1.0, -2.0, 0.25};
+  const double delay[3] = {1.0, 2.0, 5.0};
+  for (Eigen::Index k = 0; k < frf->lineCount(); ++k) {
+    for (int i = 0; i < 3; ++i) {
+      const Complex h = gain[i] * std::polar(1.0, -2 * kPi * double(k) * delay[i] / double(n));
+      EXPECT_LT(std::abs(frf->h[static_cast<std::size_t>(i)](k, 0) - h), 1e-9) << k << " ref " << i;
+    }
+    EXPECT_NEAR(frf->coherence[0](k, 0), 1.0, 1e-9);
+  }
+  EXPECT_LT(avg->referenceConditionNumber().maxCoeff(), 1e3);
+}
+
 }  // namespace
 }  // namespace mozzi::core::signal
