@@ -166,6 +166,29 @@ std::vector<std::vector<std::pair<std::string, double>>> StabilityGapProblem::de
   return extra;
 }
 
+GapMetrics StabilityGapProblem::metrics(const double* theta, int candidate, const double* phi) const {
+  GapMetrics m = ConditionSeriesProblem::metrics(theta, candidate, phi);
+  auto sys = system(theta, candidate, phi);
+  if (!sys) return m;
+  auto grid = stability::speedGrid(0.5 * speeds_.front(), 1.5 * speeds_.back(), model_.trackingStep);
+  if (!grid) return m;
+  auto sweep = stability::sweepSpeeds(*sys, *grid, model_.trackingStep);
+  if (!sweep) return m;
+  std::vector<std::string> names;
+  for (const auto& md : modes_)
+    if (std::find(names.begin(), names.end(), md.mode) == names.end()) names.push_back(md.mode);
+  for (const auto& name : names) {
+    const auto v = sweep->criticalSpeed(name);
+    GapEntry e;
+    e.kind = "prediction";
+    e.label = name + " critical speed [m/s]";
+    e.value = v ? *v : 0.0;
+    e.details = {{"found", v ? 1.0 : 0.0}, {"from_m_s", grid->front()}, {"to_m_s", grid->back()}};
+    m.entries.push_back(std::move(e));
+  }
+  return m;
+}
+
 std::vector<OverlayCurve> StabilityGapProblem::overlay(const double* theta, int candidate, const double* phi) const {
   const auto pred = predict(theta, candidate, phi);
   std::vector<OverlayCurve> curves;

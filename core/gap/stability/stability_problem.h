@@ -67,6 +67,11 @@ class StabilityGapProblem : public ConditionSeriesProblem {
   std::vector<Parameter> calibrationParameters() const override;
   std::vector<Candidate> candidates() const override;
   std::vector<OverlayCurve> overlay(const double* theta, int candidate, const double* phi) const override;
+  // The condition rows, plus the downstream figures a user reads from the
+  // model (GAP.md step 9): one "prediction" row per measured mode with the
+  // first speed in [0.5 min, 1.5 max] of the measured speeds where its real part
+  // crosses zero (value in m/s, detail "found" 0 when none; z = 0, not tested).
+  GapMetrics metrics(const double* theta, int candidate, const double* phi) const override;
 
   // Predicted frequency [Hz] of every measured (mode, speed); NaN where the
   // model cannot be built or the mode is not oscillating there.
