@@ -434,7 +434,11 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
             "this). ";
     }
   }
-  if (identifiable.empty()) {
+  if (screen.candidates.empty()) {
+    d.verdict = d.fitPValue >= options.fitAlpha ? Verdict::None : Verdict::Unexplained;
+    ex << "There are no candidate effects to test; the calibrated model "
+       << (d.verdict == Verdict::None ? "fits within noise." : "does not fit within noise.");
+  } else if (identifiable.empty()) {
     d.verdict = Verdict::NotIdentifiable;
     ex << "No candidate effect can be identified from these data:";
     for (const auto& e : d.ranking) ex << " " << label(e.candidate) << " (" << e.note << ").";

@@ -332,6 +332,15 @@ Eigen::VectorXd randomStart(const Model& model, std::mt19937_64& rng) {
 FitResult fitModel(const Model& model, const std::vector<Eigen::VectorXd>& starts, const FitOptions& options) {
   FitResult best;
   best.nll = std::numeric_limits<double>::infinity();
+  if (model.parameterCount() == 0) {
+    // Nothing to fit (a model without calibration parameters): evaluate.
+    best.starts = best.feasibleStarts = 1;
+    best.u = Eigen::VectorXd(0);
+    best.chiSquare = dataChiSquare(model, best.u);
+    best.ok = std::isfinite(best.chiSquare);
+    best.nll = 0.5 * best.chiSquare;
+    return best;
+  }
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::DENSE_QR;
   so.max_num_iterations = options.maxIterations;

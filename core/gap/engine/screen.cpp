@@ -77,9 +77,13 @@ Result<Screen> screenCandidates(const Model& baseline, const Eigen::VectorXd& u0
   screen.augmentedRows = m;
   Eigen::MatrixXd jac(m, p);
   jac << jd, jp;
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(jac);
-  screen.thetaRank = static_cast<int>(qr.rank());
-  screen.basis = qr.householderQ() * Eigen::MatrixXd::Identity(m, screen.thetaRank);
+  if (p > 0) {
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(jac);
+    screen.thetaRank = static_cast<int>(qr.rank());
+    screen.basis = qr.householderQ() * Eigen::MatrixXd::Identity(m, screen.thetaRank);
+  } else {
+    screen.basis = Eigen::MatrixXd(m, 0);  // nothing to project out
+  }
   const std::vector<Scaled>& theta = baseline.theta();
 
   for (const auto& [index, scaled] : phi) {

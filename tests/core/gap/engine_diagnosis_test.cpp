@@ -232,6 +232,24 @@ TEST(EngineDiagnosis, OutOfCatalogueResidualIsNotACleanAttribution) {
   EXPECT_EQ(partial, 10);
 }
 
+TEST(EngineDiagnosis, DegenerateProblemsDoNotBreakIt) {
+  // No calibration parameters: the effect alone is fitted.
+  std::mt19937_64 rng(31);
+  const auto bare =
+      LinearGapProblem::generate(Eigen::MatrixXd(kN, 0), {{"mass_loading", bump(kN, 0.5, 0.05)}}, Eigen::VectorXd(0), 0,
+                                 Eigen::VectorXd::Constant(1, 1.0), Eigen::VectorXd::Zero(kN), kSigma, rng);
+  auto d = diagnose(*bare, fastOptions());
+  ASSERT_TRUE(d.ok()) << d.error().describe();
+  EXPECT_EQ(d->verdict, Verdict::Effect) << d->explanation;
+  EXPECT_NEAR(d->ranking[0].parameters[0], 1.0, 4 * d->ranking[0].stdErrors[0]);
+  // No candidates: the verdict rests on the goodness of fit alone.
+  const auto empty = make({}, -1, 0.0, 32);
+  d = diagnose(*empty, fastOptions());
+  ASSERT_TRUE(d.ok()) << d.error().describe();
+  EXPECT_TRUE(d->ranking.empty());
+  EXPECT_EQ(d->verdict, d->fitPValue >= 0.01 ? Verdict::None : Verdict::Unexplained);
+}
+
 TEST(EngineDiagnosis, RejectsBadOptionsAndHonoursCancel) {
   const auto problem = make(threeBumps(), -1, 0.0, 1);
   DiagnosisOptions o = fastOptions();
