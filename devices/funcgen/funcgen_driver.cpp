@@ -1,6 +1,7 @@
 #include "devices/funcgen/funcgen_driver.h"
 
 #include <atomic>
+#include <mutex>
 
 #include "core/common/text.h"
 #include "devices/funcgen/function_generator.h"
@@ -126,7 +127,7 @@ class FunctionGeneratorDevice final : public Device {
 
   const DeviceDescriptor& descriptor() const override { return descriptor_; }
   Capabilities capabilities() const override { return deviceCapabilities(genCaps_); }
-  DeviceState state() const override { return state_; }
+  DeviceState state() const override { return state_.load(); }
 
   core::Result<void> open() override {
     if (transport_) return {};
@@ -195,6 +196,7 @@ class FunctionGeneratorDevice final : public Device {
       return core::makeError(core::ErrorCode::InvalidArgument, "configure the generator before starting it",
                              descriptor_.label());
     if (auto r = generator_->setOutput(channel_, true); !r) return fail(r.error());
+    std::lock_guard<std::mutex> l(streamMutex_);
     sink_ = std::move(sink);
     StreamHeader h;
     h.startTime = std::chrono::system_clock::now();
@@ -212,8 +214,7 @@ class FunctionGeneratorDevice final : public Device {
       end.reason = transport_->disconnected() ? EndReason::Disconnected : EndReason::Error;
       end.message = r.error().describe();
     }
-    if (sink_) sink_(std::move(end));
-    sink_ = nullptr;
+    endStream(std::move(end));
     state_ = transport_->disconnected() ? DeviceState::Open : DeviceState::Configured;
   }
 
@@ -222,6 +223,8 @@ class FunctionGeneratorDevice final : public Device {
     auto t = usbtmc::UsbtmcTransport::open(descriptor_.busPath);
     if (!t) return t.error();
     transport_ = std::move(*t);
+    // Event thread: an unplug while the output runs (no traffic) ends the stream at once.
+    transport_->setDisconnectCallback([this] { onUnplug(); });
     session_ = std::make_unique<usbtmc::ScpiSession>(*transport_);
     descriptor_.busPath = transport_->info().usb.busPath();
     descriptor_.serial = transport_->info().usb.serial;
@@ -250,6 +253,24 @@ class FunctionGeneratorDevice final : public Device {
     return {};
   }
 
+  // The one end event of a stream; later calls do nothing. The lock is never
+  // held across I/O, so the event thread cannot wait on a transfer.
+  void endStream(StreamEnd end) {
+    std::lock_guard<std::mutex> l(streamMutex_);
+    if (!sink_) return;
+    sink_(std::move(end));
+    sink_ = nullptr;
+  }
+
+  void onUnplug() {
+    if (state_ != DeviceState::Running) return;
+    StreamEnd end;
+    end.reason = EndReason::Disconnected;
+    end.message = "the instrument was unplugged (" + descriptor_.label() + ")";
+    endStream(std::move(end));
+    state_ = DeviceState::Open;
+  }
+
   core::Error fail(const core::Error& e) {
     if (transport_ && transport_->disconnected()) state_ = DeviceState::Open;
     return e;
@@ -260,9 +281,10 @@ class FunctionGeneratorDevice final : public Device {
   std::unique_ptr<usbtmc::UsbtmcTransport> transport_;
   std::unique_ptr<usbtmc::ScpiSession> session_;
   std::unique_ptr<FunctionGenerator> generator_;
+  std::mutex streamMutex_;
   StreamSink sink_;
   int channel_ = 1;
-  DeviceState state_ = DeviceState::Closed;
+  std::atomic<DeviceState> state_{DeviceState::Closed};
 };
 
 class FunctionGeneratorDriver final : public Driver {

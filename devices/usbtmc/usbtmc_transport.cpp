@@ -71,6 +71,12 @@ std::vector<std::pair<libusb_device*, UsbtmcDeviceInfo>> usbtmcDevices(libusb_de
   return found;
 }
 
+int hotplugCallback(libusb_context*, libusb_device* device, libusb_hotplug_event event, void* self) {
+  if (event == LIBUSB_HOTPLUG_EVENT_DEVICE_LEFT)
+    static_cast<UsbtmcTransport*>(self)->deviceLeft(libusb_get_bus_number(device), libusb_get_device_address(device));
+  return 0;  // stay registered
+}
+
 unsigned remainingMs(Clock::time_point deadline) {
   const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
   return left > 1 ? static_cast<unsigned>(left) : 1u;  // libusb: 0 would mean "no timeout"
@@ -123,6 +129,20 @@ core::Result<std::unique_ptr<UsbtmcTransport>> UsbtmcTransport::open(const std::
   if (r != 0)
     return t->fail(r, "USBTMC interface " + std::to_string(t->info_.interfaceNumber) + " could not be claimed");
   t->claimed_ = true;
+  if (libusb_has_capability(LIBUSB_CAP_HAS_HOTPLUG)) {
+    const int h = libusb_hotplug_register_callback(
+        t->context_, LIBUSB_HOTPLUG_EVENT_DEVICE_LEFT, LIBUSB_HOTPLUG_NO_FLAGS, t->info_.usb.vendorId,
+        t->info_.usb.productId, LIBUSB_HOTPLUG_MATCH_ANY, &hotplugCallback, t.get(), &t->hotplugHandle_);
+    t->hotplugRegistered_ = h == LIBUSB_SUCCESS;
+  }
+  // Transfers are synchronous (libusb handles their events in the caller);
+  // this thread serves the hotplug monitor between them.
+  t->eventThread_ = std::thread([p = t.get()] {
+    while (!p->quit_.load()) {
+      timeval tv{0, 100000};  // 100 ms: bounds the latency of quit_
+      libusb_handle_events_timeout_completed(p->context_, &tv, nullptr);
+    }
+  });
   auto caps = t->control(getCapabilities(t->info_.interfaceNumber));
   if (!caps) return caps.error();
   auto parsed = parseCapabilities(*caps);
@@ -134,11 +154,28 @@ core::Result<std::unique_ptr<UsbtmcTransport>> UsbtmcTransport::open(const std::
 }
 
 UsbtmcTransport::~UsbtmcTransport() {
+  setDisconnectCallback(nullptr);
+  if (hotplugRegistered_) libusb_hotplug_deregister_callback(context_, hotplugHandle_);
   if (handle_) {
     if (claimed_) libusb_release_interface(handle_, info_.interfaceNumber);
-    libusb_close(handle_);
+    libusb_close(handle_);  // wakes the event thread
   }
+  quit_ = true;
+  if (context_) libusb_interrupt_event_handler(context_);
+  if (eventThread_.joinable()) eventThread_.join();
   if (context_) libusb_exit(context_);
+}
+
+void UsbtmcTransport::setDisconnectCallback(std::function<void()> callback) {
+  std::lock_guard<std::mutex> l(callbackMutex_);
+  onDisconnect_ = std::move(callback);
+}
+
+void UsbtmcTransport::deviceLeft(std::uint8_t bus, std::uint8_t address) {
+  if (bus != info_.usb.bus || address != info_.usb.address) return;
+  disconnected_ = true;
+  std::lock_guard<std::mutex> l(callbackMutex_);
+  if (onDisconnect_) onDisconnect_();
 }
 
 core::Error UsbtmcTransport::gone() const {

@@ -9,14 +9,19 @@
 //     packet, CHECK_ABORT_BULK_IN_STATUS until done;
 //   an abort that fails -> device clear (INITIATE_CLEAR, CHECK_CLEAR_STATUS,
 //     CLEAR_FEATURE(HALT) on Bulk-OUT), so the next command starts clean;
-//   stall -> clear the halt, report; no device -> "unplugged", every later
-//     call fails at once with the same clear error, nothing hangs.
+//   stall -> clear the halt, report; no device (a transfer's status, or the
+//     hotplug monitor on the transport's event thread) -> "unplugged", every
+//     later call fails at once with the same clear error, nothing hangs.
 // Codec (headers, tags, class requests): usbtmc_protocol.h.
 
+#include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "devices/usb/usb_transport.h"
@@ -61,7 +66,14 @@ class UsbtmcTransport final : public MessageChannel {
 
   const UsbtmcDeviceInfo& info() const { return info_; }
   const Capabilities& capabilities() const { return caps_; }
-  bool disconnected() const { return disconnected_; }
+  bool disconnected() const { return disconnected_.load(); }
+  // Called on the transport's event thread when libusb's hotplug monitor sees
+  // the instrument leave (where the platform has hotplug): an idle session
+  // learns of an unplug without waiting for its next transfer. Keep it short
+  // and do no I/O on this transport in it.
+  void setDisconnectCallback(std::function<void()> callback);
+  // Entry point of libusb's hotplug callback (event thread).
+  void deviceLeft(std::uint8_t bus, std::uint8_t address);
 
   core::Result<void> write(const std::string& message, unsigned timeoutMs) override;
   core::Result<std::string> read(unsigned timeoutMs) override;
@@ -98,7 +110,13 @@ class UsbtmcTransport final : public MessageChannel {
   std::uint8_t tag_ = 0;
   std::uint8_t statusTag_ = 1;
   bool claimed_ = false;
-  bool disconnected_ = false;
+  std::atomic<bool> disconnected_{false};
+  std::thread eventThread_;
+  std::atomic<bool> quit_{false};
+  std::mutex callbackMutex_;
+  std::function<void()> onDisconnect_;
+  int hotplugHandle_ = 0;
+  bool hotplugRegistered_ = false;
 };
 
 }  // namespace mozzi::devices::usbtmc

@@ -220,5 +220,26 @@ TEST_F(FuncgenUmockdev, UnplugWhileStoppingEndsTheStreamAsDisconnected) {
   EXPECT_EQ(dev.state(), DeviceState::Closed);
 }
 
+TEST_F(FuncgenUmockdev, HotplugRemovalEndsARunningOutputAtOnce) {
+  // No transfer is in flight while the output runs: only the kernel's
+  // "remove" uevent, seen by libusb's hotplug monitor on the transport's
+  // event thread, can tell; the stream must end without waiting for stop().
+  Device& dev = openDevice();
+  ASSERT_TRUE(dev.configure(sine(10.0, 500.0, 500.0)).ok());
+  StreamCollector col;
+  ASSERT_TRUE(dev.start(col.sink()).ok());
+  umockdev_testbed_uevent(testbed_, sysPath_, "remove");
+  umockdev_testbed_remove_device(testbed_, sysPath_);
+  ASSERT_TRUE(col.waitForEnd(std::chrono::seconds(10))) << "the hotplug callback must end the stream";
+  EXPECT_EQ(col.end()->reason, EndReason::Disconnected);
+  EXPECT_EQ(col.end()->message,
+            "the instrument was unplugged (Keysight Technologies 33522B (serial MY00000001, usb:1.5))");
+  EXPECT_EQ(dev.state(), DeviceState::Open);
+  const auto t0 = std::chrono::steady_clock::now();
+  dev.stop();  // already ended: nothing more is sent or emitted
+  dev.close();
+  EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(2));
+}
+
 }  // namespace
 }  // namespace mozzi::devices::funcgen

@@ -22,6 +22,7 @@
 #include <cstring>
 #include <deque>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -42,7 +43,8 @@ class UsbtmcDeviceModel {
     for (auto* d : pendingIn_) umockdev_ioctl_data_unref(d);
     for (auto* d : pendingInterrupt_) umockdev_ioctl_data_unref(d);
     for (auto* d : heldOut_) umockdev_ioctl_data_unref(d);
-    for (auto* d : completed_) umockdev_ioctl_data_unref(d);
+    for (auto& [client, queue] : completed_)
+      for (auto* d : queue) umockdev_ioctl_data_unref(d);
   }
 
   struct Log {
@@ -79,10 +81,11 @@ class UsbtmcDeviceModel {
         UMockdevIoctlData* urbd = umockdev_ioctl_data_resolve(arg, 0, sizeof(usbdevfs_urb), &err);
         if (!urbd) return finish(client, -1, EFAULT);
         umockdev_ioctl_data_ref(urbd);
+        owner_[urbd] = client;
         auto* urb = reinterpret_cast<usbdevfs_urb*>(urbd->data);
         if (urb->type == USBDEVFS_URB_TYPE_CONTROL) {
           control(urbd);
-          completed_.push_back(urbd);
+          complete(urbd);
         } else if (urb->endpoint == kModelBulkOut) {
           bulkOut(urbd);
         } else if (urb->endpoint == kModelBulkIn) {
@@ -94,16 +97,20 @@ class UsbtmcDeviceModel {
           pump();
         } else {
           setUrb(urbd, -EPIPE, 0);
-          completed_.push_back(urbd);
+          complete(urbd);
         }
         return finish(client, 0, 0);
       }
       case USBDEVFS_REAPURB:
       case USBDEVFS_REAPURBNDELAY: {
-        if (completed_.empty()) return finish(client, -1, unplugged_ ? ENODEV : EAGAIN);
+        // Each open file has its own URBs, as in usbfs: a second handle on
+        // the device (a scan while a session is open) never reaps ours.
+        auto& done = completed_[client];
+        if (done.empty()) return finish(client, -1, unplugged_ ? ENODEV : EAGAIN);
         UMockdevIoctlData* p = umockdev_ioctl_data_resolve(arg, 0, sizeof(void*), &err);
-        UMockdevIoctlData* urbd = completed_.front();
-        completed_.pop_front();
+        UMockdevIoctlData* urbd = done.front();
+        done.pop_front();
+        owner_.erase(urbd);
         umockdev_ioctl_data_set_ptr(p, 0, urbd);
         umockdev_ioctl_data_unref(urbd);
         return finish(client, 0, 0);
@@ -116,7 +123,7 @@ class UsbtmcDeviceModel {
               UMockdevIoctlData* urbd = *it;
               queue->erase(it);
               setUrb(urbd, -ENOENT, 0);  // usbfs reports an unlinked URB with -ENOENT
-              completed_.push_back(urbd);
+              complete(urbd);
               ++log_.discards;
               return finish(client, 0, 0);
             }
@@ -271,7 +278,7 @@ class UsbtmcDeviceModel {
     }
     log_.bulkOut.push_back(data);
     setUrb(urbd, 0, urb->buffer_length);
-    completed_.push_back(urbd);
+    complete(urbd);
     if (data.size() < 12 || data[2] != static_cast<std::uint8_t>(~data[1]) || data.size() % 4 != 0) {
       ++log_.protocolErrors;
       return;
@@ -303,7 +310,7 @@ class UsbtmcDeviceModel {
   void pump() {
     while (!pendingInterrupt_.empty() && !notifications_.empty()) {
       reply(pendingInterrupt_.front(), notifications_.front());
-      completed_.push_back(pendingInterrupt_.front());
+      complete(pendingInterrupt_.front());
       pendingInterrupt_.pop_front();
       notifications_.pop_front();
     }
@@ -336,7 +343,7 @@ class UsbtmcDeviceModel {
     } else {
       return;  // NAK: the host waits (and times out if nothing comes)
     }
-    completed_.push_back(urbd);
+    complete(urbd);
     pendingIn_.pop_front();
   }
 
@@ -345,7 +352,7 @@ class UsbtmcDeviceModel {
     for (auto* queue : {&pendingIn_, &pendingInterrupt_, &heldOut_}) {
       for (auto* d : *queue) {
         setUrb(d, -ESHUTDOWN, 0);
-        completed_.push_back(d);
+        complete(d);
       }
       queue->clear();
     }
@@ -353,7 +360,11 @@ class UsbtmcDeviceModel {
 
   std::mutex mu_;
   Log log_;
-  std::deque<UMockdevIoctlData*> pendingIn_, pendingInterrupt_, heldOut_, completed_;
+  void complete(UMockdevIoctlData* urbd) { completed_[owner_[urbd]].push_back(urbd); }
+
+  std::deque<UMockdevIoctlData*> pendingIn_, pendingInterrupt_, heldOut_;
+  std::map<UMockdevIoctlClient*, std::deque<UMockdevIoctlData*>> completed_;
+  std::map<UMockdevIoctlData*, UMockdevIoctlClient*> owner_;
   std::deque<Bytes> notifications_;
   std::string partial_, output_;
   std::uint8_t inRequestTag_ = 0, heldOutTag_ = 0;
