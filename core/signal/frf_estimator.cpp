@@ -472,7 +472,7 @@ struct NormalisedInput {
     if (r == 2) {
       const double a = g(0, 0).real(), d = g(1, 1).real();
       const Complex b = g(1, 0);
-      const double c = std::abs(b) * invSqrtDiag[0] * invSqrtDiag[1];
+      const double c = std::sqrt(std::norm(b)) * invSqrtDiag[0] * invSqrtDiag[1];  // (std::abs goes through hypot)
       condition = c < 1.0 ? (1.0 + c) / (1.0 - c) : kInf;
       const double det = a * d - std::norm(b);
       if (!(det > 0.0)) condition = kInf;
@@ -535,17 +535,33 @@ Result<FrfMatrix> SpectralAverager::frfSingleReference(FrfEstimator estimator, F
   const auto no = static_cast<Eigen::Index>(responses_.size());
   ComplexMatrix h(nf, no);
   Matrix coh(nf, no);
+  const auto au = autos();
+  const auto cr = cross();
   // The scale c_k cancels in every ratio below, so the raw sums are used.
+  if (estimator == FrfEstimator::H1 && au.col(0).minCoeff() > 0.0) {
+    // H1 = G_fx / G_ff and gamma^2 = |G_fx|^2 / (G_ff G_xx) as whole columns
+    // (vectorised; the per-line loop below is for H2, Hv and the error)
+    const Eigen::ArrayXd invGff = au.col(0).array().inverse();
+    for (Eigen::Index o = 0; o < no; ++o) {
+      const auto gfx = cr.col(o).array();  // pair (0, 1 + o) is column o with one reference
+      const auto gxx = au.col(1 + o).array();
+      h.col(o).array() = gfx * invGff.cast<Complex>();
+      coh.col(o).array() = (gxx > 0.0).select((gfx.abs2() * invGff / gxx).min(1.0).max(0.0), 0.0);
+    }
+    m.h.push_back(std::move(h));  // (a braced list would copy the blocks)
+    m.coherence.push_back(std::move(coh));
+    return m;
+  }
   for (Eigen::Index k = 0; k < nf; ++k) {
-    const double gff = autos()(k, 0);
+    const double gff = au(k, 0);
     if (!(gff > 0.0)) {
       return makeError(ErrorCode::NumericalFailure,
                        "force auto spectrum is zero at " + std::to_string(frequencyHz_[k]) + " Hz; H cannot be formed",
                        where + ", line " + std::to_string(k));
     }
     for (Eigen::Index o = 0; o < no; ++o) {
-      const Complex gfx = cross()(k, o);  // pair (0, 1 + o) is column o with one reference
-      const double gxx = autos()(k, 1 + o);
+      const Complex gfx = cr(k, o);  // pair (0, 1 + o) is column o with one reference
+      const double gxx = au(k, 1 + o);
       const double g2 = gfx.real() * gfx.real() + gfx.imag() * gfx.imag();  // |G_fx|^2 (std::norm goes through hypot)
       // gamma^2 = |G_fx|^2 / (G_ff G_xx); 0 when the response is exactly zero
       coh(k, o) = gxx > 0.0 ? std::clamp(g2 / (gff * gxx), 0.0, 1.0) : 0.0;
