@@ -111,10 +111,19 @@ Result<Screen> screenCandidates(const Model& baseline, const Eigen::VectorXd& u0
       span[j] = ph.fixed ? 0.0 : std::max(std::min(ph.uUpper, 1.0), std::min(-ph.uLower, 1.0));
       sc.projectedNorm.push_back(sc.projected.col(j).norm());
     }
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svdB(sc.projected * span.asDiagonal());
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svdS(sAug * span.asDiagonal());
-    sc.sigmaMin = svdB.singularValues()[q - 1];
-    const double sMin = svdS.singularValues()[q - 1];
+    // Over the free parameters only (a fixed one moves nothing by design).
+    std::vector<int> free;
+    for (int j = 0; j < q; ++j) {
+      if (!scaled[static_cast<std::size_t>(j)].fixed) free.push_back(j);
+    }
+    const auto nf = static_cast<Eigen::Index>(free.size());
+    Eigen::MatrixXd bFree(m, nf), sFree(m, nf);
+    for (Eigen::Index j = 0; j < nf; ++j) {
+      bFree.col(j) = sc.projected.col(free[static_cast<std::size_t>(j)]) * span[free[static_cast<std::size_t>(j)]];
+      sFree.col(j) = sAug.col(free[static_cast<std::size_t>(j)]) * span[free[static_cast<std::size_t>(j)]];
+    }
+    sc.sigmaMin = nf > 0 ? Eigen::JacobiSVD<Eigen::MatrixXd>(bFree).singularValues()[nf - 1] : 0.0;
+    const double sMin = nf > 0 ? Eigen::JacobiSVD<Eigen::MatrixXd>(sFree).singularValues()[nf - 1] : 0.0;
     sc.absorbedFraction = sMin > 0.0 ? 1.0 - sc.sigmaMin / sMin : 1.0;
 
     Eigen::MatrixXd both(m, p + q);
@@ -134,8 +143,8 @@ Result<Screen> screenCandidates(const Model& baseline, const Eigen::VectorXd& u0
       sc.identifiable = true;
     }
     if (sc.identifiable) {
-      Eigen::HouseholderQR<Eigen::MatrixXd> qb(sc.projected);
-      sc.basis = qb.householderQ() * Eigen::MatrixXd::Identity(m, q);
+      Eigen::HouseholderQR<Eigen::MatrixXd> qb(bFree);
+      sc.basis = qb.householderQ() * Eigen::MatrixXd::Identity(m, nf);
     }
     screen.candidates.push_back(std::move(sc));
   }
