@@ -54,6 +54,8 @@ Result<void> TimeRecord::validate() const {
       return makeError(ErrorCode::InvalidArgument, "transducer sensitivity must be positive (mV per unit)",
                        where + ", " + channelLabel(*this, c));
     }
+    // A finite (vectorised) sum means no NaN or inf; otherwise find the sample.
+    if (std::isfinite(samples.col(c).sum())) continue;
     for (Eigen::Index i = 0; i < samples.rows(); ++i) {
       if (!std::isfinite(samples(i, c))) {
         return makeError(ErrorCode::InvalidArgument, "sample is NaN or infinite",
