@@ -79,6 +79,17 @@ std::string sizes(const RankedEffect& e) {
   return s;
 }
 
+// "singular values 12.3 0.004; null direction (scaled theta, phi): 0.71 -0.71"
+std::string singularReport(const Eigen::VectorXd& values, const Eigen::VectorXd& direction, const char* valuesName,
+                           const char* directionName) {
+  std::ostringstream s;
+  s << valuesName;
+  for (Eigen::Index i = 0; i < values.size(); ++i) s << ' ' << formatNumber(values[i], 3);
+  s << "; " << directionName << " (scaled theta, phi):";
+  for (Eigen::Index i = 0; i < direction.size(); ++i) s << ' ' << formatNumber(direction[i], 2);
+  return s.str();
+}
+
 double aicc(double nll, int k, int n) {
   const double base = 2.0 * nll + 2.0 * k;
   return n - k - 1 > 0 ? base + 2.0 * k * (k + 1.0) / (n - k - 1.0) : std::numeric_limits<double>::infinity();
@@ -225,12 +236,9 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
   const std::size_t candidateCount = screen.candidates.size();
   auto notIdentifiable = [&](const engine::ScreenedCandidate& sc) {
     std::ostringstream note;
-    note << "not identifiable with these data: " << sc.reason << "; singular values of the whitened [J S] are";
-    for (Eigen::Index i = 0; i < sc.jointSingularValues.size(); ++i) {
-      note << ' ' << formatNumber(sc.jointSingularValues[i], 3);
-    }
-    note << "; weakest direction (scaled theta, phi):";
-    for (Eigen::Index i = 0; i < sc.nullDirection.size(); ++i) note << ' ' << formatNumber(sc.nullDirection[i], 2);
+    note << "not identifiable with these data: " << sc.reason << "; "
+         << singularReport(sc.jointSingularValues, sc.nullDirection, "singular values of the whitened [J S] are",
+                           "weakest direction");
     return note.str();
   };
 
@@ -329,12 +337,8 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
       e.identifiable = false;
       std::ostringstream note;
       note << "not identifiable at the fitted point: the whitened Jacobian is rank deficient (Ceres covariance "
-              "refused it); singular values";
-      for (Eigen::Index i = 0; i < fit.singularValues.size(); ++i) {
-        note << ' ' << formatNumber(fit.singularValues[i], 3);
-      }
-      note << "; null direction (scaled theta, phi):";
-      for (Eigen::Index i = 0; i < fit.nullDirection.size(); ++i) note << ' ' << formatNumber(fit.nullDirection[i], 2);
+              "refused it); "
+           << singularReport(fit.singularValues, fit.nullDirection, "singular values", "null direction");
       e.note = note.str();
     } else if (static_cast<int>(fit.stdErrors.size()) != p + q) {
       e.identifiable = false;
