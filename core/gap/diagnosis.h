@@ -48,7 +48,7 @@ struct RankedEffect {
   std::vector<double> stdErrors;    // from the final Jacobian; empty when not identifiable
   double likelihoodRatio = 0.0;     // 2 (NLL_baseline - NLL_effect)
   double aicc = 0.0;                // tie-break only
-  double heldOutImprovement = 0.0;  // relative drop of held-out residual (cross-validation)
+  double heldOutImprovement = 0.0;  // relative drop of held-out residual (cross-validation); NaN: one fold
   bool identifiable = true;         // projected signature above the noise scale
   GapMetrics gapAfter;
   double shrinkPct = 0.0;           // 100 (1 - gap_after.overall / gap_before.overall)
