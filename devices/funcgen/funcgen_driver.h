@@ -10,9 +10,10 @@
 // the generator's RAMP at 50% symmetry (a triangle -F .. +F over the period).
 // The device has no inputs: configure() takes no channels and returns the
 // setting read back from the instrument; start() switches the output on and
-// emits the header, stop() switches it off and emits the end. The output is
-// switched off on open and on close, so the actuator only moves between
-// start() and stop().
+// emits the header, stop() switches it off and emits the end; an unplug while
+// the output runs ends the stream at once ("device disconnected", from the
+// transport's hotplug monitor). The output is switched off on open and on
+// close, so the actuator only moves between start() and stop().
 
 #include <memory>
 
