@@ -51,37 +51,37 @@ struct RankedEffect {
   double heldOutImprovement = 0.0;  // relative drop of held-out residual (cross-validation); NaN: one fold
   bool identifiable = true;         // projected signature above the noise scale
   GapMetrics gapAfter;
-  double shrinkPct = 0.0;           // 100 (1 - gap_after.overall / gap_before.overall)
+  double shrinkPct = 0.0;  // 100 (1 - gap_after.overall / gap_before.overall)
   // Linear screen: smallest singular value of the projected signature over the
   // parameter box (noise standard deviations), and per parameter the smallest
   // size the threshold would detect (about half the time), in the parameter's unit.
   double projectedSignature = 0.0;
   std::vector<double> smallestDetectable;
-  double chiSquare = 0.0;           // |r|^2 after the fit (whitened data residuals)
-  double fitPValue = 1.0;           // chi-square goodness of fit after the fit
-  bool fitted = false;              // false when screened out (not identifiable) or the fit failed
-  std::string note;                 // why not identifiable (singular values, null direction), in words
+  double chiSquare = 0.0;  // |r|^2 after the fit (whitened data residuals)
+  double fitPValue = 1.0;  // chi-square goodness of fit after the fit
+  bool fitted = false;     // false when screened out (not identifiable) or the fit failed
+  std::string note;        // why not identifiable (singular values, null direction), in words
 };
 
 struct Diagnosis {
   std::string dataKind;
-  std::vector<Parameter> calibration;      // definitions
-  std::vector<double> calibrated;          // fitted theta
-  GapMetrics gapBefore;                    // at the calibrated baseline
-  std::vector<GapEntry> where;             // the flagged rows carrying most of the gap
-  double threshold = 0.0;                  // bootstrap (1 - alpha) quantile of max LR under no effect
-  bool thresholdLinearised = false;        // the bootstrap used the linearised refits
+  std::vector<Parameter> calibration;  // definitions
+  std::vector<double> calibrated;      // fitted theta
+  GapMetrics gapBefore;                // at the calibrated baseline
+  std::vector<GapEntry> where;         // the flagged rows carrying most of the gap
+  double threshold = 0.0;              // bootstrap (1 - alpha) quantile of max LR under no effect
+  bool thresholdLinearised = false;    // the bootstrap used the linearised refits
   int bootstrapSamples = 0;
-  double chiSquare = 0.0;                  // baseline goodness of fit: |r|^2 of the whitened residuals
-  int dof = 0;                             // residual count minus free calibration parameters
-  double fitPValue = 1.0;                  // P(chi2_dof > chiSquare)
-  double flipProbability = -1.0;           // top-two ambiguity check; < 0 when not run
-  bool flipEstimated = false;              // from the margin alone (LR_1 - LR_2 >= 36), not simulated
-  std::string separatingMeasurement;       // where the top two differ most (ambiguous verdicts)
-  std::vector<RankedEffect> ranking;       // best first
+  double chiSquare = 0.0;             // baseline goodness of fit: |r|^2 of the whitened residuals
+  int dof = 0;                        // residual count minus free calibration parameters
+  double fitPValue = 1.0;             // P(chi2_dof > chiSquare)
+  double flipProbability = -1.0;      // top-two ambiguity check; < 0 when not run
+  bool flipEstimated = false;         // from the margin alone (LR_1 - LR_2 >= 36), not simulated
+  std::string separatingMeasurement;  // where the top two differ most (ambiguous verdicts)
+  std::vector<RankedEffect> ranking;  // best first
   Verdict verdict = Verdict::None;
-  std::vector<int> verdictSet;             // indices into ranking (several when ambiguous)
-  std::string explanation;                 // one paragraph a user can read (and the separating measurement)
+  std::vector<int> verdictSet;  // indices into ranking (several when ambiguous)
+  std::string explanation;      // one paragraph a user can read (and the separating measurement)
 };
 
 Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& options);
