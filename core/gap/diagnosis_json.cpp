@@ -1,5 +1,6 @@
 #include "core/gap/diagnosis_json.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace mozzi::core::gap {
@@ -54,6 +55,17 @@ nlohmann::json effectToJson(const RankedEffect& e, double threshold) {
       {"shrink_pct",
        e.gapAfter.entries.empty() && e.gapAfter.overall == 0.0 ? nlohmann::json(nullptr) : number(e.shrinkPct)}};
   for (const auto& p : e.candidate.parameters) j["units"][p.name] = p.unit;
+  // Wald 95% interval (size +- 1.96 se), clipped to the parameter's bounds.
+  nlohmann::json interval = nullptr;
+  if (e.stdErrors.size() == e.parameters.size() && e.parameters.size() == e.candidate.parameters.size()) {
+    interval = nlohmann::json::object();
+    for (std::size_t i = 0; i < e.parameters.size(); ++i) {
+      const Parameter& p = e.candidate.parameters[i];
+      interval[p.name] = {number(std::max(p.lower, e.parameters[i] - 1.959964 * e.stdErrors[i])),
+                          number(std::min(p.upper, e.parameters[i] + 1.959964 * e.stdErrors[i]))};
+    }
+  }
+  j["interval_95"] = interval;
   if (!e.note.empty()) j["note"] = e.note;
   return j;
 }

@@ -104,6 +104,8 @@ TEST(EngineDiagnosis, JsonFollowsTheIssueSchema) {
   const auto& r0 = j["ranking"][0];
   EXPECT_DOUBLE_EQ(r0["parameters"]["size0"].get<double>(), d->ranking[0].parameters[0]);
   EXPECT_DOUBLE_EQ(r0["std_errors"]["size0"].get<double>(), d->ranking[0].stdErrors[0]);
+  EXPECT_NEAR(r0["interval_95"]["size0"][1].get<double>() - r0["interval_95"]["size0"][0].get<double>(),
+              2 * 1.959964 * d->ranking[0].stdErrors[0], 1e-12);
   for (const char* key : {"likelihood_ratio", "threshold", "aicc", "held_out_improvement"}) {
     EXPECT_TRUE(r0["criterion"][key].is_number()) << key;
   }
