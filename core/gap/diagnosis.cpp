@@ -395,6 +395,20 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
     e.shrinkPct = d.gapBefore.overall != 0.0 ? 100.0 * (1.0 - e.gapAfter.overall / d.gapBefore.overall) : 0.0;
   }
 
+  // Step 4, end: profile-likelihood interval of the top effect's sizes.
+  if (fittedCount > 0 && d.ranking[0].identifiable && !d.ranking[0].stdErrors.empty()) {
+    if (!keepGoing(0.93, "profile likelihood")) return cancelled();
+    for (std::size_t j = 0; j < d.ranking[0].stdErrors.size(); ++j) {
+      auto interval = engine::profileInterval(problem, theta, alt[0], static_cast<int>(j), d.ranking[0].stdErrors[j],
+                                              chiSquareQuantile(0.95, 1.0));
+      if (!interval) {
+        d.ranking[0].profileInterval.clear();
+        break;
+      }
+      d.ranking[0].profileInterval.push_back(*interval);
+    }
+  }
+
   // Step 6: ambiguity between the top two.
   const bool significant = fittedCount > 0 && d.ranking[0].likelihoodRatio > d.threshold;
   const double margin = fittedCount > 1 ? d.ranking[0].likelihoodRatio - d.ranking[1].likelihoodRatio : 0.0;

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/common/result.h"
@@ -41,11 +42,14 @@ struct DiagnosisOptions {
 };
 
 struct RankedEffect {
-  int candidateIndex = -1;          // index into problem.candidates()
-  Candidate candidate;              // effect, location, parameter definitions
-  std::vector<double> theta;        // calibration parameters refitted jointly with the effect
-  std::vector<double> parameters;   // fitted sizes
-  std::vector<double> stdErrors;    // from the final Jacobian; empty when not identifiable
+  int candidateIndex = -1;         // index into problem.candidates()
+  Candidate candidate;             // effect, location, parameter definitions
+  std::vector<double> theta;       // calibration parameters refitted jointly with the effect
+  std::vector<double> parameters;  // fitted sizes
+  std::vector<double> stdErrors;   // from the final Jacobian; empty when not identifiable
+  // 95% profile-likelihood interval per effect parameter (theta and the other
+  // parameters refitted); computed for the top-ranked effect only, else empty.
+  std::vector<std::pair<double, double>> profileInterval;
   double likelihoodRatio = 0.0;     // 2 (NLL_baseline - NLL_effect)
   double aicc = 0.0;                // tie-break only
   double heldOutImprovement = 0.0;  // relative drop of held-out residual (cross-validation); NaN: one fold

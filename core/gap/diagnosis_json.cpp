@@ -66,6 +66,15 @@ nlohmann::json effectToJson(const RankedEffect& e, double threshold) {
     }
   }
   j["interval_95"] = interval;
+  nlohmann::json profile = nullptr;
+  if (e.profileInterval.size() == e.candidate.parameters.size() && !e.profileInterval.empty()) {
+    profile = nlohmann::json::object();
+    for (std::size_t i = 0; i < e.profileInterval.size(); ++i) {
+      profile[e.candidate.parameters[i].name] = {number(e.profileInterval[i].first),
+                                                 number(e.profileInterval[i].second)};
+    }
+  }
+  j["profile_interval_95"] = profile;
   if (!e.note.empty()) j["note"] = e.note;
   return j;
 }

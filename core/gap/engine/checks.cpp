@@ -11,6 +11,8 @@ namespace mozzi::core::gap::engine {
 
 namespace {
 
+constexpr double kNaNValue = std::numeric_limits<double>::quiet_NaN();
+
 // Refits from warm starts: the truth and the other alternative's optimum are
 // both close, so a few dozen iterations suffice.
 FitOptions warmFit() {
@@ -96,6 +98,65 @@ Result<double> heldOutImprovement(const GapProblem& problem, const std::vector<S
     }
   }
   return ss0 > 0.0 ? 1.0 - ss1 / ss0 : 0.0;
+}
+
+Result<std::pair<double, double>> profileInterval(const GapProblem& problem, const std::vector<Scaled>& theta,
+                                                  const FittedAlternative& effect, int j, double stdError,
+                                                  double level) {
+  const std::string where = "profile likelihood";
+  const auto p = static_cast<Eigen::Index>(theta.size());
+  const Scaled& free = effect.phi[static_cast<std::size_t>(j)];
+  if (free.fixed || !(stdError > 0.0)) return makeError(ErrorCode::InvalidArgument, "nothing to profile", where);
+  Model full(problem, theta, effect.candidate, effect.phi);
+  const double best = fitModel(full, {effect.u}, warmFit()).nll;
+  const double xHat = free.toX(effect.u[p + j]);
+  // Effect parameter j pinned at x (a fixed parameter sits at its "nominal").
+  std::vector<Scaled> pinnedPhi = effect.phi;
+  Eigen::VectorXd warm = effect.u;
+  auto excess = [&](double x, bool& ok) {
+    pinnedPhi[static_cast<std::size_t>(j)].def.nominal = x;
+    pinnedPhi[static_cast<std::size_t>(j)].fixed = true;
+    Model pinned(problem, theta, effect.candidate, pinnedPhi);
+    Eigen::VectorXd start = warm;
+    start[p + j] = 0.0;
+    const FitResult f = fitModel(pinned, {start}, warmFit());
+    ok = f.ok;
+    if (f.ok) warm = f.u;
+    return f.ok ? 2.0 * (f.nll - best) : std::numeric_limits<double>::infinity();
+  };
+  double ends[2];
+  for (int side = 0; side < 2; ++side) {
+    const double dir = side == 0 ? -1.0 : 1.0;
+    const double bound = side == 0 ? free.def.lower : free.def.upper;
+    warm = effect.u;
+    double inside = xHat, outside = kNaNValue;
+    // Steps of 0.5, 1, 2, 3, ... standard errors until the level is crossed.
+    for (double k : {0.5, 1.0, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0}) {
+      double x = xHat + dir * k * stdError;
+      if (dir * (x - bound) >= 0.0) x = bound;
+      bool ok = false;
+      const double e = excess(x, ok);
+      if (!ok) return makeError(ErrorCode::NumericalFailure, "a profile point could not be fitted", where);
+      if (e > level) {
+        outside = x;
+        break;
+      }
+      inside = x;
+      if (x == bound) break;
+    }
+    if (std::isnan(outside)) {
+      ends[side] = inside;  // the level is not reached within the bounds (or 12 se)
+      continue;
+    }
+    for (int it = 0; it < 30 && std::abs(outside - inside) > 1e-4 * stdError; ++it) {
+      const double mid = 0.5 * (inside + outside);
+      bool ok = false;
+      (excess(mid, ok) > level ? outside : inside) = mid;
+      if (!ok) return makeError(ErrorCode::NumericalFailure, "a profile point could not be fitted", where);
+    }
+    ends[side] = 0.5 * (inside + outside);
+  }
+  return std::make_pair(ends[0], ends[1]);
 }
 
 }  // namespace mozzi::core::gap::engine

@@ -37,4 +37,14 @@ Result<double> flipProbability(const GapProblem& problem, const std::vector<Scal
 Result<double> heldOutImprovement(const GapProblem& problem, const std::vector<Scaled>& theta,
                                   const Eigen::VectorXd& uBaseline, const FittedAlternative& effect);
 
+// Profile-likelihood interval of effect parameter j (Venzon and Moolgavkar
+// 1988): the values x with 2 (min NLL given phi_j = x  -  NLL at the optimum)
+// <= `level` (3.84 for 95%), theta and the other effect parameters refitted at
+// every x. Stepped outwards from the optimum in multiples of `stdError`, then
+// bisected; an end stops at the parameter's bound when the level is not
+// reached within it.
+Result<std::pair<double, double>> profileInterval(const GapProblem& problem, const std::vector<Scaled>& theta,
+                                                  const FittedAlternative& effect, int j, double stdError,
+                                                  double level);
+
 }  // namespace mozzi::core::gap::engine

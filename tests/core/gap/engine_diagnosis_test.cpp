@@ -59,6 +59,12 @@ TEST(EngineDiagnosis, PlantedEffectIsFoundWithItsSize) {
   EXPECT_NEAR(d->ranking[0].parameters[0], 1.5, 4 * d->ranking[0].stdErrors[0]);
   // The planted bump is the whole systematic gap: after it only noise is left,
   // |noise| / |y| against |noise + bump| / |y| (here 0.017 against 0.072).
+  // Linear model: the profile likelihood is exactly quadratic, so its 95%
+  // interval is the Wald one, size +- 1.96 se (bisection to 1e-4 se).
+  ASSERT_EQ(d->ranking[0].profileInterval.size(), 1u);
+  const double se = d->ranking[0].stdErrors[0], size = d->ranking[0].parameters[0];
+  EXPECT_NEAR(d->ranking[0].profileInterval[0].first, size - 1.959964 * se, 1e-3 * se);
+  EXPECT_NEAR(d->ranking[0].profileInterval[0].second, size + 1.959964 * se, 1e-3 * se);
   EXPECT_GT(d->ranking[0].shrinkPct, 60.0);
   EXPECT_GT(d->ranking[0].heldOutImprovement, 0.5);
   EXPECT_LT(d->flipProbability, 0.1);
@@ -82,6 +88,10 @@ TEST(EngineDiagnosis, NonlinearEffectIsFoundWithItsSize) {
   // 4 standard errors: the estimate is asymptotically Gaussian; at ~20 se from
   // zero the curvature of exp() biases it by far less than one se.
   EXPECT_NEAR(d->ranking[0].parameters[0], 0.3, 4 * d->ranking[0].stdErrors[0]);
+  // exp() makes the profile asymmetric; it still brackets the estimate.
+  ASSERT_EQ(d->ranking[0].profileInterval.size(), 1u);
+  EXPECT_LT(d->ranking[0].profileInterval[0].first, d->ranking[0].parameters[0]);
+  EXPECT_GT(d->ranking[0].profileInterval[0].second, d->ranking[0].parameters[0]);
   // The jointly refitted calibration near its truth: sd ~ sigma / sqrt(n) ~
   // 0.01 for the amplitude and a few times that for the decay; loose bounds
   // (the test is about the effect).
