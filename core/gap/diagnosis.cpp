@@ -477,8 +477,13 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
     }
   } else {
     const RankedEffect& best = d.ranking[0];
-    ex << "Best: " << label(best.candidate) << " with " << sizes(best) << ", likelihood ratio "
-       << formatNumber(best.likelihoodRatio, 4) << " against " << formatNumber(d.threshold, 3);
+    ex << "Best: " << label(best.candidate) << " with " << sizes(best);
+    for (std::size_t j = 0; j < best.profileInterval.size(); ++j) {
+      ex << (j ? "; " : " (95% profile interval ") << best.candidate.parameters[j].name << " "
+         << formatNumber(best.profileInterval[j].first, 3) << " to " << formatNumber(best.profileInterval[j].second, 3)
+         << (j + 1 == best.profileInterval.size() ? ")" : "");
+    }
+    ex << ", likelihood ratio " << formatNumber(best.likelihoodRatio, 4) << " against " << formatNumber(d.threshold, 3);
     if (std::isfinite(best.heldOutImprovement)) {
       ex << ", held-out residual " << formatNumber(100 * best.heldOutImprovement, 3) << "% lower";
     }
