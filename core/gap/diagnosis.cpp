@@ -386,7 +386,7 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
 
   // Steps 7 and 9: held-out checks, gap after and shrink for the top few.
   for (std::size_t i = 0; i < fittedCount && static_cast<int>(i) < options.reportTop; ++i) {
-    if (!keepGoing(0.85 + 0.05 * i, "held-out checks")) return cancelled();
+    if (!keepGoing(0.85 + 0.07 * i / std::max(1, options.reportTop), "held-out checks")) return cancelled();
     RankedEffect& e = d.ranking[i];
     auto held = engine::heldOutImprovement(problem, theta, u0, alt[i]);
     if (!held) return held.error();
