@@ -319,9 +319,10 @@ Result<void> SpectralAverager::add(const TimeRecord& hit) {
           where + ", channel " + std::to_string(c));
     }
   }
-  // Stage 1: each channel windowed straight into the FFT input (one pass, the
-  // copy any caller holding Eigen columns needs anyway), checked, transformed
-  // into its slot of the workspace. Nothing is accumulated before every
+  // Stage 1: each channel windowed straight into the FFT input (one pass) or,
+  // with a rectangular window, read once for the check and transformed from
+  // the record's column itself (that pass brings it into L2 for the FFT),
+  // checked, transformed into its slot of the workspace. Nothing is accumulated before every
   // channel passed, so a bad hit leaves the average untouched.
   const Eigen::Index nf = fft_->lineCount();
   const Eigen::Index stride = spectrumStride(nf);
@@ -333,7 +334,10 @@ Result<void> SpectralAverager::add(const TimeRecord& hit) {
     const Eigen::Index c = isRef ? references_[j] : responses_[j - nr];
     const double* x = hit.samples.col(c).data();
     const double* w = isRef ? (refRect_ ? nullptr : refWindow_->data()) : (respRect_ ? nullptr : respWindow_->data());
-    const double sumSq = windowInto(x, w, ws.in.data(), n_);
+    // A rectangular window needs no copy: the FFT reads the column itself
+    // (RealFft::forward copies only when its alignment differs from the plan's).
+    const double sumSq =
+        w != nullptr ? windowInto(x, w, ws.in.data(), n_) : Eigen::Map<const Vector>(x, n_).squaredNorm();
     if (!std::isfinite(sumSq)) {
       for (Eigen::Index i = 0; i < n_; ++i) {
         if (!std::isfinite(x[i])) {
@@ -348,7 +352,7 @@ Result<void> SpectralAverager::add(const TimeRecord& hit) {
       return makeError(ErrorCode::InvalidArgument, "force is zero (after the force window): no excitation to divide by",
                        where + ", " + channelWhere(hit, c));
     }
-    fft_->forward(ws.in.data(), ws.spectra.data() + static_cast<Eigen::Index>(j) * stride);
+    fft_->forward(w != nullptr ? ws.in.data() : x, ws.spectra.data() + static_cast<Eigen::Index>(j) * stride);
   }
   accumulate(ws.spectra.data(), stride);
   ++hits_;
