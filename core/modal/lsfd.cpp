@@ -67,8 +67,8 @@ Result<ModalModel> lsfd(const FrfMatrix& frf, const std::vector<Complex>& poles,
     };
     for (const Complex& lam : poles) {
       const Complex a = 1.0 / (iw - lam), bb = 1.0 / (iw - std::conj(lam));
-      put(fn * (a + bb));                          // Re R
-      put(fn * Complex(0.0, 1.0) * (a - bb));      // Im R
+      put(fn * (a + bb));                      // Re R
+      put(fn * Complex(0.0, 1.0) * (a - bb));  // Im R
     }
     if (opt.upperResidual) {
       put(fn);

@@ -25,7 +25,8 @@ Result<void> checkSquare(const MatrixRef& a, Eigen::Index n, const char* name) {
                          ", expected " + std::to_string(n) + "x" + std::to_string(n),
                      "spatial model");
   }
-  if (!a.allFinite()) return makeError(ErrorCode::InvalidArgument, std::string(name) + " holds NaN or inf", "spatial model");
+  if (!a.allFinite())
+    return makeError(ErrorCode::InvalidArgument, std::string(name) + " holds NaN or inf", "spatial model");
   return {};
 }
 }  // namespace
@@ -35,7 +36,9 @@ Complex poleFromFrequencyDamping(double frequencyHz, double zeta) {
   return {-zeta * wn, wn * std::sqrt(std::max(0.0, 1.0 - zeta * zeta))};
 }
 
-double poleFrequencyHz(Complex pole) { return std::abs(pole) / kTwoPi; }
+double poleFrequencyHz(Complex pole) {
+  return std::abs(pole) / kTwoPi;
+}
 
 double poleZeta(Complex pole) {
   const double a = std::abs(pole);

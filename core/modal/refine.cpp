@@ -41,8 +41,8 @@ bool projectedResidual(const Problem& pb, const std::vector<Complex>& poles, dou
   for (Eigen::Index i = 0; i < frf.referenceCount(); ++i) {
     for (Eigen::Index o = 0; o < frf.responseCount(); ++o) {
       for (Eigen::Index k = pb.k0; k < pb.k0 + pb.nf; ++k) {
-        const Complex d = frf.h[static_cast<std::size_t>(i)](k, o) -
-                          synthesize(*fit, o, i, kTwoPi * frf.frequencyHz[k], frf.type);
+        const Complex d =
+            frf.h[static_cast<std::size_t>(i)](k, o) - synthesize(*fit, o, i, kTwoPi * frf.frequencyHz[k], frf.type);
         res[idx++] = d.real() / pb.scale;
         res[idx++] = d.imag() / pb.scale;
       }
@@ -54,7 +54,9 @@ bool projectedResidual(const Problem& pb, const std::vector<Complex>& poles, dou
 
 struct Functor {
   const Problem* pb;
-  bool operator()(double const* const* p, double* res) const { return projectedResidual(*pb, polesFrom(p, pb->modes), res, nullptr); }
+  bool operator()(double const* const* p, double* res) const {
+    return projectedResidual(*pb, polesFrom(p, pb->modes), res, nullptr);
+  }
 };
 }  // namespace
 
@@ -76,9 +78,10 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
                             (2 * pb.modes + (opt.lowerResidual ? 2 : 0) + (opt.upperResidual ? 2 : 0));
   const Eigen::Index npar = 2 * pb.modes + nlin;
   if (nres <= npar) {
-    return makeError(ErrorCode::InvalidArgument,
-                     "band holds " + std::to_string(pb.nf) + " lines, too few for " + std::to_string(npar) + " parameters",
-                     where + ", band");
+    return makeError(
+        ErrorCode::InvalidArgument,
+        "band holds " + std::to_string(pb.nf) + " lines, too few for " + std::to_string(npar) + " parameters",
+        where + ", band");
   }
   double ss = 0.0;
   for (const auto& h : frf.h) ss += h.middleRows(pb.k0, pb.nf).squaredNorm();
@@ -146,7 +149,8 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
   const Matrix jtj = jac.transpose() * jac;
   Eigen::LDLT<Matrix> ldlt(jtj);
   if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().minCoeff() > 0.0)) {
-    return makeError(ErrorCode::NumericalFailure, "J^T J is singular: a frequency or damping is not identifiable", where);
+    return makeError(ErrorCode::NumericalFailure, "J^T J is singular: a frequency or damping is not identifiable",
+                     where);
   }
   const Matrix cov = ldlt.solve(Matrix::Identity(jtj.rows(), jtj.cols()));
   // s^2 in the scaled units: SSR / (N - P); the parameters are in Hz and zeta directly.

@@ -34,8 +34,7 @@ Result<Band> band(const FrfMatrix& frf, Eigen::Index reference, double lo, doubl
 
 // FRF of `reference` converted to (i omega)^target / (i omega)^type.
 Complex as(const FrfMatrix& frf, Eigen::Index i, Eigen::Index k, Eigen::Index o, FrfType target) {
-  return frf.h[static_cast<std::size_t>(i)](k, o) *
-         frfConversionFactor(frf.type, target, kTwoPi * frf.frequencyHz[k]);
+  return frf.h[static_cast<std::size_t>(i)](k, o) * frfConversionFactor(frf.type, target, kTwoPi * frf.frequencyHz[k]);
 }
 }  // namespace
 
@@ -166,8 +165,8 @@ Result<SdofEstimate> circleFit(const FrfMatrix& frf, Eigen::Index reference, dou
     sumZ += weight * zs / nz;
   }
   if (!(sumWeights > 0.0)) {
-    return makeError(ErrorCode::NotFound, "no response traced a usable circle in the band (no mode, or band too narrow)",
-                     who);
+    return makeError(ErrorCode::NotFound,
+                     "no response traced a usable circle in the band (no mode, or band too narrow)", who);
   }
   SdofEstimate est;
   est.frequencyHz = sumF / sumWeights;

@@ -100,7 +100,8 @@ Result<ShapeSet> modeShapes(const ModalModel& model, Eigen::Index reference) {
     for (Eigen::Index r = 0; r < nm; ++r) {
       const Complex adp = set.shapes(set.drivingPointResponse, r);
       if (std::abs(adp) == 0.0) {
-        return makeError(ErrorCode::NumericalFailure, "driving-point residue is zero: the reference is a node of the mode",
+        return makeError(ErrorCode::NumericalFailure,
+                         "driving-point residue is zero: the reference is a node of the mode",
                          "mode shapes, mode " + std::to_string(r + 1));
       }
       // phi_o = A_oi / phi_i with phi_i = sqrt(A_ii) (unit modal mass).

@@ -20,16 +20,16 @@ std::string tempPath(const std::string& name) {
   return std::string(MOZZI_BINARY_DIR) + "/identify_cli_" + name;
 }
 
-// Six-mode synthetic accelerances (tests/core/modal/synthetic_system.h), 0.2%
-// noise, written as UFF 58 FRF records through the UFF writer.
-std::string writeSyntheticUff() {
+// Six-mode synthetic accelerances (tests/core/modal/synthetic_system.h) from
+// fLo to 400 Hz, written as UFF 58 FRF records through the UFF writer.
+std::string writeSyntheticUff(double fLo = 1.0, double noise = 0.002, const std::string& name = "six_modes.uff") {
   const auto sys = core::modal::testing::sixModeSystem();
-  const core::FrfMatrix frf = core::modal::testing::accelerances(sys, {2}, 1.0, 400.0, 0.1, 0.002, 3);
+  const core::FrfMatrix frf = core::modal::testing::accelerances(sys, {2}, fLo, 400.0, 0.1, noise, 3);
   auto records = core::io::uff::fromFrfMatrix(frf);
   EXPECT_TRUE(records.ok());
   core::io::uff::UffFile file;
   for (auto& r : *records) file.datasets.push_back(core::io::uff::makeDataset(std::move(r)));
-  const std::string path = tempPath("six_modes.uff");
+  const std::string path = tempPath(name);
   EXPECT_TRUE(core::io::uff::writeFile(path, file).ok());
   return path;
 }
@@ -93,13 +93,7 @@ TEST(IdentifyCli, LsceJsonAndZoomRefusal) {
   EXPECT_TRUE(std::getline(c, first) && !first.empty());
 
   // 60 .. 400 Hz zoom record: LSCE needs the FRFs from 0 Hz.
-  const auto zoomFrf = core::modal::testing::accelerances(sys, {2}, 60.0, 400.0, 0.1, 0.0, 3);
-  auto records = core::io::uff::fromFrfMatrix(zoomFrf);
-  ASSERT_TRUE(records.ok());
-  core::io::uff::UffFile file;
-  for (auto& rec : *records) file.datasets.push_back(core::io::uff::makeDataset(std::move(rec)));
-  const std::string zoom = tempPath("zoom.uff");
-  ASSERT_TRUE(core::io::uff::writeFile(zoom, file).ok());
+  const std::string zoom = writeSyntheticUff(60.0, 0.0, "zoom.uff");
   const CliRun z = run({"identify", zoom, "--band", "70:380", "--method", "lsce"});
   EXPECT_EQ(z.code, kExitFailure);
   EXPECT_NE(z.err.find("baseband"), std::string::npos) << z.err;
