@@ -114,6 +114,18 @@ void BM_Synthetic100x20000_OneRef(benchmark::State& state) {
 }
 BENCHMARK(BM_Synthetic100x20000_OneRef)->Arg(30)->Arg(60)->Arg(120)->Unit(benchmark::kMillisecond);
 
+// Scaling with the number of lines: the same 100 FRFs fitted over 0.1 Hz ..
+// range(0) x 0.1 Hz (5,000 / 10,000 / 20,000 lines), orders to 60.
+void BM_Synthetic100_OneRef_Lines(benchmark::State& state) {
+  static const FrfMatrix frf = synthetic(1);
+  runStabilization<PlscfOptions>(state, frf, 0.1, 0.1 * static_cast<double>(state.range(0)),
+                                 [](const FrfMatrix& f, PlscfOptions o) {
+                                   o.maxOrder = 60;  // range(0) is the line count here
+                                   return plscfStabilization(f, o);
+                                 });
+}
+BENCHMARK(BM_Synthetic100_OneRef_Lines)->Arg(5000)->Arg(10000)->Arg(20000)->Unit(benchmark::kMillisecond);
+
 void BM_Synthetic100x20000_ThreeRefs(benchmark::State& state) {
   static const FrfMatrix frf = synthetic(3);
   runStabilization(state, frf, 0.1, 2000.0);
