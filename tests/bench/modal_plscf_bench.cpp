@@ -126,6 +126,24 @@ void BM_Synthetic100_OneRef_Lines(benchmark::State& state) {
 }
 BENCHMARK(BM_Synthetic100_OneRef_Lines)->Arg(5000)->Arg(10000)->Arg(20000)->Unit(benchmark::kMillisecond);
 
+// Scaling with the number of FRFs: the first range(0) responses (25 / 50 /
+// 100) of the same set, 20,000 lines, orders to 60.
+void BM_Synthetic_OneRef_Frfs(benchmark::State& state) {
+  static const FrfMatrix all = synthetic(1);
+  const auto no = static_cast<Eigen::Index>(state.range(0));
+  FrfMatrix frf;
+  frf.frequencyHz = all.frequencyHz;
+  frf.responses.assign(all.responses.begin(), all.responses.begin() + no);
+  frf.references = all.references;
+  frf.type = all.type;
+  frf.h.push_back(all.h[0].leftCols(no));
+  runStabilization<PlscfOptions>(state, frf, 0.1, 2000.0, [](const FrfMatrix& f, PlscfOptions o) {
+    o.maxOrder = 60;  // range(0) is the FRF count here
+    return plscfStabilization(f, o);
+  });
+}
+BENCHMARK(BM_Synthetic_OneRef_Frfs)->Arg(25)->Arg(50)->Arg(100)->Unit(benchmark::kMillisecond);
+
 void BM_Synthetic100x20000_ThreeRefs(benchmark::State& state) {
   static const FrfMatrix frf = synthetic(3);
   runStabilization(state, frf, 0.1, 2000.0);
