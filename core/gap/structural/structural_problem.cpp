@@ -14,6 +14,9 @@
 namespace mozzi::core::gap::structural {
 namespace {
 
+// Coordinates up to which non-proportional damping is solved directly per line.
+constexpr Eigen::Index kDirectSolveLimit = 24;
+
 enum class Effect { MassLoading, Boundary, Element, ResidualMode, Hysteretic, Window, Misalignment };
 
 const char* effectName(Effect e) {
@@ -35,6 +38,7 @@ struct CandidateDef {
   int other = -1;   // DOF the misaligned channel leans towards
   int spring = -1;  // boundary / element spring
   Vector shape;     // residual-mode shape over all DOFs (max |.| = 1)
+  double wTop = 1;  // residual mode: top of the band [rad/s] (curvature term reference)
   Candidate candidate;
 };
 
@@ -70,8 +74,8 @@ struct ModalSystem {
   double eta = 0.0;       // hysteretic loss factor
   double decay = 0.0;     // exponential-window decay a [1/s]
   const CandidateDef* effect = nullptr;
-  double upper = 0.0, lower = 0.0;  // residual-mode terms
-  double angle = 0.0;               // misalignment
+  double upper = 0.0, curvature = 0.0, lower = 0.0;  // residual-mode terms
+  double angle = 0.0;                                // misalignment
 };
 
 // The model, its element matrices and the candidate list: the part shared by
@@ -112,8 +116,8 @@ class StructuralCore {
 
   // Candidates at the measured DOFs (`measured`: model DOF indices of all
   // channels, responses first; `responses`: the response channels).
-  void buildCandidates(const std::vector<int>& measured, const std::vector<int>& responses, bool frfData,
-                       double bandHighHz, const Vector& nominalW2) {
+  void buildCandidates(const std::vector<int>& measured, const std::vector<int>& responses,
+                       const std::vector<int>& references, bool frfData, double bandHighHz, const Vector& nominalW2) {
     std::vector<int> unique;
     for (int d : measured)
       if (std::find(unique.begin(), unique.end(), d) == unique.end()) unique.push_back(d);
@@ -142,8 +146,14 @@ class StructuralCore {
       defs.push_back(def);
     }
     if (frfData) {
+      // An out-of-band mode enters FRF column i as the quasi-static deflection
+      // under the load at reference i (upper residual, Ewins ch. 4), so the
+      // residual-mode candidates sit at the reference DOFs.
       const Matrix g = pseudoFlexibility(nominalW2);
-      for (int d : unique) {
+      std::vector<int> refs;
+      for (int d : references)
+        if (std::find(refs.begin(), refs.end(), d) == refs.end()) refs.push_back(d);
+      for (int d : refs) {
         CandidateDef def;
         def.effect = Effect::ResidualMode;
         def.dof = d;
@@ -152,12 +162,17 @@ class StructuralCore {
         def.shape = g.col(d) / g(d, d) * (g(d, d) < 0 ? -1.0 : 1.0);
         def.shape /= def.shape.cwiseAbs().maxCoeff();
         const double md = effectiveMass(d);
-        // Upper term up to 5x the model's own static compliance at d, lower
-        // term up to 5x the inverse effective mass: beyond that the "residual"
-        // would dominate the band and is no longer out of band.
+        // A mode above the band, A / (w_x^2 + s^2) = A / w_x^2 (1 - s^2 / w_x^2 + ...):
+        // the upper residual and its curvature term (the omega^2 growth,
+        // given as its value at the band's top); a lower residual L / s^2 for
+        // modes below the band. Upper terms up to 5x the model's own static
+        // compliance at d, lower up to 5x the inverse effective mass: beyond
+        // that the "residual" would dominate the band.
+        def.wTop = std::isfinite(bandHighHz) ? 2 * M_PI * bandHighHz : 1.0;
         def.candidate = {effectName(def.effect),
                          {label(d)},
                          {Parameter{"upper_residual", "m/N", 0.0, -5 * peak, 5 * peak, 0.0},
+                          Parameter{"upper_curvature", "m/N", 0.0, -5 * peak, 5 * peak, 0.0},
                           Parameter{"lower_residual", "1/kg", 0.0, -5 / md, 5 / md, 0.0}}};
         defs.push_back(def);
       }
@@ -259,8 +274,9 @@ class StructuralCore {
         case Effect::Element: k += (x - 1.0) * springK[static_cast<std::size_t>(def.spring)]; break;
         case Effect::ResidualMode:
           sys.upper = x;
-          sys.lower = phi[1];
-          if (!std::isfinite(sys.lower)) return false;
+          sys.curvature = phi[1];
+          sys.lower = phi[2];
+          if (!std::isfinite(sys.lower) || !std::isfinite(sys.curvature)) return false;
           break;
         case Effect::Hysteretic: sys.eta = x; break;
         case Effect::Window: sys.decay = x; break;
@@ -288,7 +304,11 @@ class StructuralCore {
       if (off.cwiseAbs().maxCoeff() > 1e-9 * diagMax) sys.cfull = ct;
     }
     if (!(sys.a.allFinite() && sys.w2.allFinite() && sys.cdiag.allFinite())) return false;
-    if (sys.cfull.size() > 0) stateSpaceModes(sys);
+    // Non-proportional damping: a direct solve per line is exact and cheap for
+    // lumped models; the state-space expansion (one eigenproblem, then sums)
+    // pays off for larger ones but loses digits in weakly coupled FRFs lying
+    // far below the peaks (its round-off scales with the largest terms).
+    if (sys.cfull.size() > 0 && sys.w2.size() > kDirectSolveLimit) stateSpaceModes(sys);
     return true;
   }
 
@@ -303,15 +323,29 @@ class StructuralCore {
   // a defective eigenvector matrix; the per-line solve is then used).
   static void stateSpaceModes(ModalSystem& sys) {
     const Eigen::Index nq = sys.w2.size();
-    ComplexMatrix a = ComplexMatrix::Zero(2 * nq, 2 * nq);
-    a.topRightCorner(nq, nq).setIdentity();
-    for (Eigen::Index r = 0; r < nq; ++r) a(nq + r, r) = -sys.w2[r] * Complex(1.0, sys.eta);
-    a.bottomRightCorner(nq, nq) = -sys.cfull.cast<Complex>();
-    Eigen::ComplexEigenSolver<ComplexMatrix> eig(a);
-    if (eig.info() != Eigen::Success) return;
-    const ComplexMatrix& v = eig.eigenvectors();
-    Eigen::PartialPivLU<ComplexMatrix> lu(v);
-    const ComplexMatrix vinv = lu.inverse();
+    ComplexVector poles;
+    ComplexMatrix v;
+    if (sys.eta == 0.0) {
+      // Real state matrix: the real Hessenberg QR is several times cheaper.
+      Matrix a = Matrix::Zero(2 * nq, 2 * nq);
+      a.topRightCorner(nq, nq).setIdentity();
+      a.bottomLeftCorner(nq, nq).diagonal() = -sys.w2;
+      a.bottomRightCorner(nq, nq) = -sys.cfull;
+      Eigen::EigenSolver<Matrix> eig(a);
+      if (eig.info() != Eigen::Success) return;
+      poles = eig.eigenvalues();
+      v = eig.eigenvectors();
+    } else {
+      ComplexMatrix a = ComplexMatrix::Zero(2 * nq, 2 * nq);
+      a.topRightCorner(nq, nq).setIdentity();
+      for (Eigen::Index r = 0; r < nq; ++r) a(nq + r, r) = -sys.w2[r] * Complex(1.0, sys.eta);
+      a.bottomRightCorner(nq, nq) = -sys.cfull.cast<Complex>();
+      Eigen::ComplexEigenSolver<ComplexMatrix> eig(a);
+      if (eig.info() != Eigen::Success) return;
+      poles = eig.eigenvalues();
+      v = eig.eigenvectors();
+    }
+    const ComplexMatrix vinv = v.partialPivLu().inverse();
     if (!vinv.allFinite()) return;
     const ComplexMatrix left = v.topRows(nq), right = vinv.rightCols(nq);
     double wmean = 0;
@@ -323,59 +357,88 @@ class StructuralCore {
       }
     const Complex s0(0.0, count ? std::exp(wmean / count) : 1.0);
     const ComplexMatrix direct = dynamicStiffness(sys, s0).partialPivLu().inverse();
-    ComplexMatrix expanded =
-        left *
-        (s0 * ComplexMatrix::Identity(2 * nq, 2 * nq) - ComplexMatrix(eig.eigenvalues().asDiagonal())).inverse() *
-        right;
+    const ComplexVector g = (s0 - poles.array()).inverse().matrix();
+    const ComplexMatrix expanded = left * g.asDiagonal() * right;
     if ((expanded - direct).norm() > 1e-9 * direct.norm()) return;
-    sys.ssPoles = eig.eigenvalues();
+    sys.ssPoles = poles;
     sys.ssLeft = sys.a.cast<Complex>() * left;
     sys.ssRight = right * sys.a.transpose().cast<Complex>();
   }
 
-  // Receptance between model DOFs (rows `resp`, columns `refs`) at Laplace
-  // variable s, before type conversion.
-  static ComplexMatrix receptance(const ModalSystem& sys, const std::vector<int>& resp, const std::vector<int>& refs,
-                                  Complex s) {
-    const Eigen::Index nq = sys.w2.size();
-    ComplexMatrix h(static_cast<Eigen::Index>(resp.size()), static_cast<Eigen::Index>(refs.size()));
-    const Complex stiff(1.0, sys.eta);
-    if (sys.cfull.size() == 0) {
-      ComplexVector inv(nq);
-      for (Eigen::Index r = 0; r < nq; ++r) inv[r] = 1.0 / (sys.w2[r] * stiff + s * sys.cdiag[r] + s * s);
-      for (std::size_t i = 0; i < refs.size(); ++i) {
-        const ComplexVector weighted = inv.cwiseProduct(sys.a.row(refs[i]).transpose().cast<Complex>());
-        for (std::size_t o = 0; o < resp.size(); ++o) {
-          h(static_cast<Eigen::Index>(o), static_cast<Eigen::Index>(i)) =
-              sys.a.row(resp[o]).transpose().cast<Complex>().cwiseProduct(weighted).sum();
+  // Receptance between model DOFs `resp` (rows) and `refs` (columns) in
+  // pole-residue form H(s) = P diag(g(s)) Q, set up once per evaluation:
+  // g_j = 1 / (s - pole_j) for the state-space modes, or
+  // g_r = 1 / (omega_r^2 (1 + i eta) + s c_r + s^2) for diagonal modal
+  // damping; a solve per line when the state-space modes were refused.
+  class Receptance {
+   public:
+    Receptance(const ModalSystem& sys, const std::vector<int>& resp, const std::vector<int>& refs)
+        : sys_(sys), resp_(resp), refs_(refs) {
+      const auto no = static_cast<Eigen::Index>(resp.size()), ni = static_cast<Eigen::Index>(refs.size());
+      if (sys.cfull.size() > 0 && sys.ssPoles.size() == 0) {
+        direct_ = true;
+        p_.resize(no, sys.w2.size());
+        q_.resize(sys.w2.size(), ni);
+        for (Eigen::Index o = 0; o < no; ++o) p_.row(o) = sys.a.row(resp[static_cast<std::size_t>(o)]).cast<Complex>();
+        for (Eigen::Index i = 0; i < ni; ++i)
+          q_.col(i) = sys.a.row(refs[static_cast<std::size_t>(i)]).transpose().cast<Complex>();
+        return;
+      }
+      const bool ss = sys.ssPoles.size() > 0;
+      const Eigen::Index terms = ss ? sys.ssPoles.size() : sys.w2.size();
+      p_.resize(no, terms);
+      q_.resize(terms, ni);
+      for (Eigen::Index o = 0; o < no; ++o)
+        p_.row(o) = ss ? ComplexMatrix(sys.ssLeft.row(resp[static_cast<std::size_t>(o)]))
+                       : ComplexMatrix(sys.a.row(resp[static_cast<std::size_t>(o)]).cast<Complex>());
+      for (Eigen::Index i = 0; i < ni; ++i)
+        q_.col(i) = ss ? ComplexMatrix(sys.ssRight.col(refs[static_cast<std::size_t>(i)]))
+                       : ComplexMatrix(sys.a.row(refs[static_cast<std::size_t>(i)]).transpose().cast<Complex>());
+      g_.resize(terms);
+      w_.resize(terms);
+    }
+
+    // H at s into h (rows x refs), before type conversion.
+    void at(Complex s, ComplexMatrix& h) {
+      if (direct_) {
+        h.noalias() = p_ * dynamicStiffness(sys_, s).partialPivLu().solve(q_);
+      } else {
+        if (sys_.ssPoles.size() > 0) {
+          g_ = (s - sys_.ssPoles.array()).inverse().matrix();
+        } else {
+          const Complex stiff(1.0, sys_.eta);
+          for (Eigen::Index r = 0; r < g_.size(); ++r) g_[r] = 1.0 / (sys_.w2[r] * stiff + s * sys_.cdiag[r] + s * s);
+        }
+        // Explicit sums: at these sizes (a few DOFs, tens of terms) a general
+        // product expression costs more in dispatch than in arithmetic.
+        const Eigen::Index terms = g_.size();
+        for (Eigen::Index i = 0; i < h.cols(); ++i) {
+          for (Eigen::Index j = 0; j < terms; ++j) w_[j] = g_[j] * q_(j, i);
+          for (Eigen::Index o = 0; o < h.rows(); ++o) {
+            Complex sum(0.0, 0.0);
+            for (Eigen::Index j = 0; j < terms; ++j) sum += p_(o, j) * w_[j];
+            h(o, i) = sum;
+          }
         }
       }
-    } else if (sys.ssPoles.size() > 0) {
-      const ComplexVector inv = (s - sys.ssPoles.array()).inverse().matrix();
-      for (std::size_t i = 0; i < refs.size(); ++i) {
-        const ComplexVector weighted = inv.cwiseProduct(sys.ssRight.col(refs[i]));
-        for (std::size_t o = 0; o < resp.size(); ++o)
-          h(static_cast<Eigen::Index>(o), static_cast<Eigen::Index>(i)) =
-              sys.ssLeft.row(resp[o]).transpose().cwiseProduct(weighted).sum();
+      if (sys_.effect && sys_.effect->effect == Effect::ResidualMode) {
+        const Complex term =
+            sys_.upper - sys_.curvature * s * s / (sys_.effect->wTop * sys_.effect->wTop) + sys_.lower / (s * s);
+        for (std::size_t o = 0; o < resp_.size(); ++o)
+          for (std::size_t i = 0; i < refs_.size(); ++i)
+            h(static_cast<Eigen::Index>(o), static_cast<Eigen::Index>(i)) +=
+                term * sys_.effect->shape[resp_[o]] * sys_.effect->shape[refs_[i]];
       }
-    } else {
-      const ComplexMatrix z = dynamicStiffness(sys, s);
-      ComplexMatrix b(nq, static_cast<Eigen::Index>(refs.size()));
-      for (std::size_t i = 0; i < refs.size(); ++i)
-        b.col(static_cast<Eigen::Index>(i)) = sys.a.row(refs[i]).transpose().cast<Complex>();
-      const ComplexMatrix x = z.partialPivLu().solve(b);
-      for (std::size_t o = 0; o < resp.size(); ++o)
-        h.row(static_cast<Eigen::Index>(o)) = sys.a.row(resp[o]).cast<Complex>() * x;
     }
-    if (sys.effect && sys.effect->effect == Effect::ResidualMode) {
-      const Complex term = sys.upper + sys.lower / (s * s);
-      for (std::size_t o = 0; o < resp.size(); ++o)
-        for (std::size_t i = 0; i < refs.size(); ++i)
-          h(static_cast<Eigen::Index>(o), static_cast<Eigen::Index>(i)) +=
-              term * sys.effect->shape[resp[o]] * sys.effect->shape[refs[i]];
-    }
-    return h;
-  }
+
+   private:
+    const ModalSystem& sys_;
+    const std::vector<int>& resp_;
+    const std::vector<int>& refs_;
+    bool direct_ = false;
+    ComplexMatrix p_, q_;
+    ComplexVector g_, w_;
+  };
 };
 
 double normalUpperTail(double z) {
@@ -520,19 +583,21 @@ class FrfProblem final : public GapProblem {
     const CandidateDef* mis = sys.effect && sys.effect->effect == Effect::Misalignment ? sys.effect : nullptr;
     const double ca = std::cos(sys.angle), sa = std::sin(sys.angle);
     const std::vector<int>& rows = mis ? evalDofs_ : respDofs_;
+    StructuralCore::Receptance receptance(sys, rows, refDofs_);
+    ComplexMatrix x(static_cast<Eigen::Index>(rows.size()), ni);
+    const long otherRow =
+        mis ? std::find(evalDofs_.begin() + static_cast<long>(respDofs_.size()), evalDofs_.end(), mis->other) -
+                  evalDofs_.begin()
+            : 0;
     for (Eigen::Index k = 0; k < nf; ++k) {
       const Complex s(sys.decay, 2 * M_PI * data_.frequencyHz[k]);
-      ComplexMatrix x = StructuralCore::receptance(sys, rows, refDofs_, s);
+      receptance.at(s, x);
       Complex factor(1.0, 0.0);
       for (int n = 0; n < order; ++n) factor *= s;
       for (Eigen::Index i = 0; i < ni; ++i) {
         for (Eigen::Index o = 0; o < no; ++o) {
           Complex v = x(o, i);
-          if (mis && respDofs_[static_cast<std::size_t>(o)] == mis->dof) {
-            const auto it =
-                std::find(evalDofs_.begin() + static_cast<long>(respDofs_.size()), evalDofs_.end(), mis->other);
-            v = ca * v + sa * x(it - evalDofs_.begin(), i);
-          }
+          if (mis && respDofs_[static_cast<std::size_t>(o)] == mis->dof) v = ca * v + sa * x(otherRow, i);
           h[static_cast<std::size_t>(i)](k, o) =
               factor * v * resp_[static_cast<std::size_t>(o)].sign * refs_[static_cast<std::size_t>(i)].sign;
         }
@@ -581,7 +646,7 @@ GapMetrics FrfProblem::metrics(const double* theta, int candidate, const double*
   }
   const Eigen::Index nf = data_.lineCount(), no = data_.responseCount(), ni = data_.referenceCount();
   // Per (line, response) sums over references: squared relative error and chi2.
-  Matrix rel2 = Matrix::Zero(nf, no), chi2 = Matrix::Zero(nf, no);
+  Matrix rel2 = Matrix::Zero(nf, no), chi2 = Matrix::Zero(nf, no), noise2 = Matrix::Zero(nf, no);
   for (Eigen::Index i = 0; i < ni; ++i)
     for (Eigen::Index o = 0; o < no; ++o)
       for (Eigen::Index k = 0; k < nf; ++k) {
@@ -589,6 +654,11 @@ GapMetrics FrfProblem::metrics(const double* theta, int candidate, const double*
         const Complex d = h[static_cast<std::size_t>(i)](k, o) - meas;
         const double s = sigma_[static_cast<std::size_t>(i)](k, o);
         rel2(k, o) += std::norm(d) / std::max(std::norm(meas), 1e-300);
+        const double rel =
+            relSigma_[(static_cast<std::size_t>(i) * static_cast<std::size_t>(no) + static_cast<std::size_t>(o)) *
+                          static_cast<std::size_t>(nf) +
+                      static_cast<std::size_t>(k)];
+        noise2(k, o) += 2 * rel * rel;  // expected |dH / H|^2 from noise alone (two components)
         chi2(k, o) += std::norm(d) / (s * s);
       }
   const double perCell = static_cast<double>(2 * ni);
@@ -600,9 +670,16 @@ GapMetrics FrfProblem::metrics(const double* theta, int candidate, const double*
     const double cells = static_cast<double>((k1 - k0) * (o1 - o0));
     const double r2 = rel2.block(k0, o0, k1 - k0, o1 - o0).sum();
     const double c2 = chi2.block(k0, o0, k1 - k0, o1 - o0).sum();
-    e.value = cells > 0 ? std::sqrt(r2 / (cells * ni)) : 0.0;
+    const double n2 = noise2.block(k0, o0, k1 - k0, o1 - o0).sum();
+    const double count = cells * static_cast<double>(ni);
+    // The gap is the relative FRF residual in excess of the noise:
+    // sqrt(max(0, mean |dH/H|^2 - mean 2 sigma_rel^2)); 0 for a model that
+    // fits within noise, so the shrink measures what an effect explains.
+    e.value = cells > 0 ? std::sqrt(std::max(0.0, r2 - n2) / count) : 0.0;
     e.z = chiSquareZ(c2, cells * perCell);
-    e.details = {{"chi2_per_residual", cells > 0 ? c2 / (cells * perCell) : 0.0},
+    e.details = {{"raw_residual", cells > 0 ? std::sqrt(r2 / count) : 0.0},
+                 {"noise_floor", cells > 0 ? std::sqrt(n2 / count) : 0.0},
+                 {"chi2_per_residual", cells > 0 ? c2 / (cells * perCell) : 0.0},
                  {"lines", static_cast<double>(k1 - k0)}};
     return e;
   };
@@ -1051,7 +1128,9 @@ Result<std::unique_ptr<GapProblem>> makeFrfProblem(const StructuralModel& model,
   if (!core->solve(theta.data(), -1, nullptr, nominal)) {
     return makeError(ErrorCode::NumericalFailure, "the model cannot be solved at its nominal parameters", model.name);
   }
-  core->buildCandidates(measuredDofs, responseDofs, true, data.frequencyHz[nf - 1], nominal.w2);
+  std::vector<int> referenceDofs;
+  for (const auto& c : refs) referenceDofs.push_back(c.dof);
+  core->buildCandidates(measuredDofs, responseDofs, referenceDofs, true, data.frequencyHz[nf - 1], nominal.w2);
   return std::unique_ptr<GapProblem>(std::make_unique<FrfProblem>(std::move(core), std::move(data), std::move(resp),
                                                                   std::move(refs), std::move(rel), options));
 }
@@ -1116,7 +1195,7 @@ Result<std::unique_ptr<GapProblem>> makeModesProblem(const StructuralModel& mode
   }
   std::vector<int> dofs;
   for (const auto& c : channels) dofs.push_back(c.dof);
-  core->buildCandidates(dofs, dofs, false, options.bandHighHz, nominal.w2);
+  core->buildCandidates(dofs, dofs, {}, false, options.bandHighHz, nominal.w2);
   ComplexMatrix modelShapes(nd, nominal.w2.size());
   for (Eigen::Index c = 0; c < nd; ++c)
     for (Eigen::Index r = 0; r < nominal.w2.size(); ++r)

@@ -6,10 +6,13 @@
 //   mass_loading        added mass dm [kg] at a measured DOF
 //   boundary_stiffness  a grounded spring of the model scaled by s
 //   element_stiffness   a spring between two DOFs scaled by s
-//   residual_mode       an out-of-band mode loading DOF d: upper (compliance U
-//                       [m/N]) and lower (L [1/kg]) residual terms along the
-//                       static deflection shape under a load at d (FRFs only:
-//                       an out-of-band mode moves no in-band mode)
+//   residual_mode       an out-of-band mode excited from reference DOF d: upper
+//                       residual U [m/N], its curvature V [m/N] (the omega^2
+//                       growth of a mode above the band, at the band's top
+//                       omega_t) and lower residual L [1/kg]:
+//                       (U - V s^2 / omega_t^2 + L / s^2) u u^T along the static
+//                       deflection u under a load at d, max |u| = 1 (FRFs
+//                       only: an out-of-band mode moves no in-band mode)
 //   hysteretic_damping  structural damping i eta K added (loss factor eta,
 //                       equal on every mode; with a "damping" calibration
 //                       parameter the fit can trade viscous for structural)

@@ -46,7 +46,7 @@ TEST(ModelFile, ValidTwoDofModel) {
 }
 
 TEST(ModelFile, WriteAndReadBack) {
-  const auto s = gap_bench::forkWheel();
+  const auto s = gap_bench::viscousC(gap_bench::forkWheel());
   auto text = writeModelJson(s.model);
   ASSERT_TRUE(text.ok()) << text.error().describe();
   auto back = parseModelJson(*text, "round trip");

@@ -48,7 +48,16 @@ struct Structure {
   std::vector<std::string> references;  // hammer DOFs
   double bandLowHz = 0, bandHighHz = 0;
   std::string calibratedGroup;  // springs the stiffness calibration parameter scales
+  double alpha = 0, beta = 0;   // Rayleigh coefficients behind the modal damping
 };
+
+// The same structure with viscous C = alpha M + beta K (non-proportional once
+// a mass or spring changes): exercises the C path of the problem.
+inline Structure viscousC(Structure s) {
+  s.model.c = s.alpha * s.model.m + s.beta * s.model.k;
+  s.model.modalDamping.resize(0);
+  return s;
+}
 
 inline StructuralModel buildModel(const std::string& name, const std::vector<std::string>& labels,
                                   const std::vector<double>& masses, const std::vector<SpringSpec>& springs,
@@ -78,7 +87,12 @@ inline StructuralModel buildModel(const std::string& name, const std::vector<std
     }
     m.springs.push_back(sp);
   }
-  m.c = alpha * m.m + beta * m.k;
+  // Modal damping with the Rayleigh pattern zeta_r = alpha / (2 w_r) + beta w_r / 2
+  // at the nominal modes (each mode keeps its ratio when masses or springs
+  // change); viscousC() turns it into C = alpha M + beta K instead.
+  Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> eig(m.k, m.m);
+  const Vector w = eig.eigenvalues().cwiseSqrt();
+  m.modalDamping = (alpha * w.cwiseInverse() + beta * w) / 2;
   // Damping is never known well: a scale on C from 0 (no viscous damping) to 5.
   m.parameters.push_back({"damping_scale", {"damping"}, 1.0, 0.0, 5.0, 0.0});
   // One stiffness group calibrated with a 5% prior (the model's own uncertainty).
@@ -112,6 +126,8 @@ inline Structure forkWheel() {
   s.bandLowHz = 5;
   s.bandHighHz = 500;
   s.calibratedGroup = "leg_z";
+  s.alpha = al;
+  s.beta = be;
   return s;
 }
 
@@ -132,6 +148,8 @@ inline Structure frame() {
   s.bandLowHz = 10;
   s.bandHighHz = 450;
   s.calibratedGroup = "tube_y";
+  s.alpha = al;
+  s.beta = be;
   return s;
 }
 
@@ -150,6 +168,8 @@ inline Structure swingArm() {
   s.bandLowHz = 4;
   s.bandHighHz = 400;
   s.calibratedGroup = "arm_x";
+  s.alpha = al;
+  s.beta = be;
   return s;
 }
 
@@ -196,8 +216,18 @@ inline ComplexMatrix truthReceptance(const StructuralModel& m, const Truth& t, C
   }
   const Matrix k = m.k + (t.groupScale - 1.0) * kGroup + t.dk;
   const Matrix mm = m.m + t.dm;
-  ComplexMatrix z =
-      k.cast<Complex>() * Complex(1.0, t.eta) + s * (t.dampingScale * m.c).cast<Complex>() + s * s * mm.cast<Complex>();
+  Matrix c;
+  if (m.usesModalDamping()) {
+    // Modal damping: each mode of the truth keeps the model's ratio,
+    // C = M Phi diag(2 zeta_r w_r) Phi^T M with the truth's own modes.
+    Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> eig(k, mm);
+    const Vector w = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+    const Matrix mp = mm * eig.eigenvectors();
+    c = mp * (2.0 * t.dampingScale * m.modalDamping.cwiseProduct(w)).asDiagonal() * mp.transpose();
+  } else {
+    c = t.dampingScale * m.c;
+  }
+  ComplexMatrix z = k.cast<Complex>() * Complex(1.0, t.eta) + s * c.cast<Complex>() + s * s * mm.cast<Complex>();
   if (t.absorberDof >= 0) {
     const double wa = 2 * M_PI * t.absorberHz;
     const double ka = t.absorberMass * wa * wa, ca = 2 * t.absorberZeta * t.absorberMass * wa;

@@ -1,0 +1,405 @@
+#pragma once
+// The structural gap benchmark (issue 10, GAP.md "Testing it honestly"): the
+// case list with hidden truth, the diagnosis of each case from the nominal
+// model and the noisy FRFs only, and the summary figures. Shared by the
+// CI-sized validation test and the larger Google Benchmark program
+// (tests/bench/gap_benchmark_bench.cpp).
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/gap/diagnosis.h"
+#include "core/gap/structural/structural_problem.h"
+#include "validation/gap/structural_benchmark.h"
+
+namespace mozzi::gap_bench {
+
+enum class CaseKind { Control, Effect, Ambiguous, OutOfCatalogue, CalibratedGroup };
+
+struct Case {
+  std::string structure;
+  CaseKind kind = CaseKind::Effect;
+  std::string effect;                 // true effect (empty for controls and out-of-catalogue)
+  std::vector<std::string> location;  // true location in the model's labels
+  double trueSize = 0.0;              // true value of the effect's first parameter
+  double absent = 0.0;                // that parameter's "no effect" value
+  std::vector<std::string> pair;      // ambiguous cases: the two confusable effects
+  Truth truth;
+  Measurement spec;
+  std::vector<std::string> restrictTo;  // catalogue restriction for the diagnosis (ambiguous cases)
+};
+
+struct CaseResult {
+  Case c;
+  core::gap::Verdict verdict = core::gap::Verdict::None;
+  std::string bestEffect;
+  std::vector<std::string> bestLocation;
+  double fittedSize = std::nan("");
+  double shrinkPct = std::nan("");
+  bool ok = false;  // the diagnosis ran
+  std::string error;
+};
+
+struct BenchConfig {
+  int controlsPerStructure = 4;
+  int seedsPerEffect = 1;  // noise/calibration draws per (effect, size, location)
+  int lines = 160;
+  double noise = 0.01;
+  int bootstrap = 20;
+  int multistarts = 4;
+  unsigned long long seed = 20261121;
+};
+
+inline Measurement defaultMeasurement(const Structure& s, const BenchConfig& cfg) {
+  Measurement m;
+  m.responses = s.model.labels;
+  m.references = s.references;
+  m.lowHz = s.bandLowHz;
+  m.highHz = s.bandHighHz;
+  m.lines = cfg.lines;
+  m.relativeNoise = cfg.noise;
+  return m;
+}
+
+inline Matrix springK(const StructuralModel& m, const std::string& name) {
+  Matrix k = Matrix::Zero(m.dofCount(), m.dofCount());
+  for (const auto& s : m.springs) {
+    if (s.name != name) continue;
+    k(s.a, s.a) += s.stiffness;
+    if (s.b >= 0) {
+      k(s.b, s.b) += s.stiffness;
+      k(s.a, s.b) -= s.stiffness;
+      k(s.b, s.a) -= s.stiffness;
+    }
+  }
+  return k;
+}
+
+inline std::vector<std::string> springLocation(const StructuralModel& m, const std::string& name) {
+  for (const auto& s : m.springs)
+    if (s.name == name) {
+      std::vector<std::string> loc{m.labels[static_cast<std::size_t>(s.a)]};
+      if (s.b >= 0) loc.push_back(m.labels[static_cast<std::size_t>(s.b)]);
+      return loc;
+    }
+  return {};
+}
+
+// Per structure: the DOFs, springs and sizes the effects are applied at.
+struct EffectPlan {
+  std::vector<std::string> massDofs;
+  std::vector<std::string> boundarySprings;
+  std::vector<std::string> elementSprings;
+  std::pair<std::string, std::string> misaligned;  // channel, the DOF it leans to
+  std::string absorberDof;
+  std::string calibratedSpring;  // a spring of the calibrated group (non-identifiable case)
+};
+
+inline EffectPlan planFor(const std::string& name) {
+  if (name == "fork_wheel") return {{"2+X", "4+Z"}, {"head_x"}, {"leg_x34"}, {"3+X", "3+Z"}, "2+X", "leg_z23"};
+  if (name == "frame") return {{"5+X", "3+Y"}, {"mount_3x"}, {"tube_x45"}, {"5+Y", "5+X"}, "2+Y", "tube_y34"};
+  return {{"3+X", "2+Z"}, {"pivot_z"}, {"arm_z23"}, {"3+X", "3+Z"}, "2+X", "arm_x23"};
+}
+
+// Calibration offsets of the truth: the model's stiffness group within its
+// 5% prior and the damping within 10% (the baseline calibration absorbs both).
+inline void drawCalibration(Truth& t, std::mt19937_64& rng) {
+  std::normal_distribution<double> nd(0.0, 1.0);
+  t.groupScale = 1.0 + 0.05 * std::clamp(nd(rng), -2.0, 2.0);
+  t.dampingScale = 1.0 + 0.1 * std::clamp(nd(rng), -2.0, 2.0);
+}
+
+inline std::vector<Case> makeCases(const BenchConfig& cfg) {
+  std::vector<Case> cases;
+  std::mt19937_64 rng(cfg.seed);
+  for (const Structure& s : structures()) {
+    const StructuralModel& m = s.model;
+    const int n = m.dofCount();
+    const EffectPlan plan = planFor(s.name);
+    const Measurement spec = defaultMeasurement(s, cfg);
+    Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> eig(m.k, m.m);
+    const double w1 = std::sqrt(eig.eigenvalues()[0]);
+    auto base = [&](CaseKind kind, const std::string& effect) {
+      Case c;
+      c.structure = s.name;
+      c.kind = kind;
+      c.effect = effect;
+      c.truth = Truth(n);
+      drawCalibration(c.truth, rng);
+      c.spec = spec;
+      return c;
+    };
+    for (int i = 0; i < cfg.controlsPerStructure; ++i) cases.push_back(base(CaseKind::Control, ""));
+    for (int seed = 0; seed < cfg.seedsPerEffect; ++seed) {
+      for (const auto& dof : plan.massDofs) {
+        const int d = m.findDof(*core::parseDof(dof));
+        for (double frac : {0.15, 0.35}) {
+          Case c = base(CaseKind::Effect, "mass_loading");
+          c.location = {dof};
+          c.trueSize = frac * m.m(d, d);
+          c.truth.dm(d, d) = c.trueSize;
+          cases.push_back(c);
+        }
+      }
+      for (const auto& sp : plan.boundarySprings)
+        for (double scale : {0.5, 0.25}) {
+          Case c = base(CaseKind::Effect, "boundary_stiffness");
+          c.location = springLocation(m, sp);
+          c.trueSize = scale;
+          c.absent = 1.0;
+          c.truth.dk = (scale - 1.0) * springK(m, sp);
+          cases.push_back(c);
+        }
+      for (const auto& sp : plan.elementSprings)
+        for (double scale : {0.5, 1.8}) {
+          Case c = base(CaseKind::Effect, "element_stiffness");
+          c.location = springLocation(m, sp);
+          c.trueSize = scale;
+          c.absent = 1.0;
+          c.truth.dk = (scale - 1.0) * springK(m, sp);
+          cases.push_back(c);
+        }
+      for (double eta : {0.03, 0.05}) {
+        // Structural instead of viscous damping: no viscous part at all.
+        Case c = base(CaseKind::Effect, "hysteretic_damping");
+        c.trueSize = eta;
+        c.truth.dampingScale = 0.0;
+        c.truth.eta = eta;
+        cases.push_back(c);
+      }
+      for (double dz : {0.01, 0.03}) {
+        // An uncorrected window adding dz to the first mode's damping ratio.
+        Case c = base(CaseKind::Effect, "exponential_window");
+        c.trueSize = dz * w1;
+        c.truth.decay = c.trueSize;
+        cases.push_back(c);
+      }
+      for (double angle : {0.15, 0.3}) {
+        Case c = base(CaseKind::Effect, "sensor_misalignment");
+        c.location = {plan.misaligned.first, plan.misaligned.second};
+        c.trueSize = angle;
+        c.truth.misDof = m.findDof(*core::parseDof(plan.misaligned.first));
+        c.truth.misOther = m.findDof(*core::parseDof(plan.misaligned.second));
+        c.truth.misAngle = angle;
+        cases.push_back(c);
+      }
+      for (double frac : {0.5, 1.5}) {
+        // An out-of-band mode at 3.5x the band's top whose quasi-static
+        // compliance along the deflection under the reference load is `frac`
+        // times the model's own static compliance at the reference.
+        Case c = base(CaseKind::Effect, "residual_mode");
+        const int r = m.findDof(*core::parseDof(s.references[0]));
+        const Matrix g = m.k.inverse();
+        Vector u = g.col(r) / g(r, r);
+        u /= u.cwiseAbs().maxCoeff();
+        const double wx = 2 * M_PI * 3.5 * s.bandHighHz;
+        c.location = {s.references[0]};
+        c.truth.residualShape = u;
+        c.truth.residualModeHz = wx / (2 * M_PI);
+        c.truth.residualModalConstant = frac * g(r, r) / (u[r] * u[r]) * wx * wx;
+        c.trueSize = c.truth.residualModalConstant / (wx * wx);  // the upper residual it implies
+        cases.push_back(c);
+      }
+    }
+    {
+      // Designed-ambiguous pair: only the first mode (band 0.75-1.3 f1) at one
+      // response: a mass at the driving point and the clamp stiffness both
+      // just move that one peak.
+      for (double frac : {0.1, 0.2}) {
+        Case c = base(CaseKind::Ambiguous, "mass_loading");
+        const std::string dof = s.references[0];
+        const int d = m.findDof(*core::parseDof(dof));
+        c.location = {dof};
+        c.trueSize = frac * m.m(d, d);
+        c.truth.dm(d, d) = c.trueSize;
+        c.spec.responses = {dof};
+        c.spec.references = {s.references[0]};
+        c.spec.lowHz = 0.75 * w1 / (2 * M_PI);
+        c.spec.highHz = 1.3 * w1 / (2 * M_PI);
+        c.spec.lines = 60;
+        c.pair = {"mass_loading", "boundary_stiffness"};
+        c.restrictTo = c.pair;
+        cases.push_back(c);
+      }
+    }
+    for (double frac : {0.1, 0.2}) {
+      // Out of the catalogue: a tuned absorber (an extra in-band mode).
+      Case c = base(CaseKind::OutOfCatalogue, "");
+      const int d = m.findDof(*core::parseDof(plan.absorberDof));
+      c.truth.absorberDof = d;
+      c.truth.absorberMass = frac * m.m(d, d);
+      c.truth.absorberHz = 0.5 * (s.bandLowHz + s.bandHighHz) * 0.6;
+      c.truth.absorberZeta = 0.05;
+      cases.push_back(c);
+    }
+    {
+      // One spring of the calibrated stiffness group off by 8%: the group's
+      // calibration parameter scales all its springs together and cannot
+      // absorb a single member, so the spring should still be named.
+      Case c = base(CaseKind::CalibratedGroup, "element_stiffness");
+      c.location = springLocation(m, plan.calibratedSpring);
+      c.trueSize = 1.08;
+      c.absent = 1.0;
+      c.truth.dk = 0.08 * springK(m, plan.calibratedSpring);
+      cases.push_back(c);
+    }
+  }
+  return cases;
+}
+
+inline CaseResult runCase(const Case& c, const BenchConfig& cfg, unsigned long long seed) {
+  CaseResult res;
+  res.c = c;
+  Structure s;
+  for (const auto& st : structures())
+    if (st.name == c.structure) s = st;
+  std::mt19937_64 rng(seed);
+  const core::FrfMatrix frf = measure(s.model, c.truth, c.spec, rng);
+  core::gap::structural::StructuralOptions so;
+  so.relativeFloor = cfg.noise;  // the stated noise of the test
+  auto problem = core::gap::structural::makeFrfProblem(s.model, frf, so);
+  if (!problem) {
+    res.error = problem.error().describe();
+    return res;
+  }
+  core::gap::DiagnosisOptions opt;
+  opt.bootstrapSamples = cfg.bootstrap;
+  opt.multistarts = cfg.multistarts;
+  opt.seed = seed;
+  opt.effects = c.restrictTo;
+  auto d = core::gap::diagnose(**problem, opt);
+  if (!d) {
+    res.error = d.error().describe();
+    return res;
+  }
+  res.ok = true;
+  res.verdict = d->verdict;
+  if (!d->verdictSet.empty()) {
+    const auto& best = d->ranking[static_cast<std::size_t>(d->verdictSet.front())];
+    res.bestEffect = best.candidate.effect;
+    res.bestLocation = best.candidate.location;
+    if (!best.parameters.empty()) res.fittedSize = best.parameters[0];
+    res.shrinkPct = best.shrinkPct;
+  }
+  return res;
+}
+
+struct Summary {
+  int effectCases = 0, top1 = 0, locatedCases = 0, locationRight = 0;
+  double medianSizeError = std::nan(""), medianShrink = std::nan("");
+  int controls = 0, controlAttributions = 0;
+  int ambiguous = 0, ambiguousWrong = 0;
+  int outOfCatalogue = 0, outOfCatalogueClean = 0;
+  int calibratedGroup = 0, calibratedGroupNamed = 0;
+  int failures = 0;
+};
+
+inline bool attributes(core::gap::Verdict v) {
+  using core::gap::Verdict;
+  return v == Verdict::Effect || v == Verdict::Partial || v == Verdict::Ambiguous;
+}
+
+inline double median(std::vector<double> v) {
+  if (v.empty()) return std::nan("");
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+inline Summary summarise(const std::vector<CaseResult>& results) {
+  Summary s;
+  std::vector<double> sizeErr, shrink;
+  using core::gap::Verdict;
+  for (const auto& r : results) {
+    if (!r.ok) {
+      ++s.failures;
+      continue;
+    }
+    switch (r.c.kind) {
+      case CaseKind::Control:
+        ++s.controls;
+        if (attributes(r.verdict)) ++s.controlAttributions;
+        break;
+      case CaseKind::Effect: {
+        ++s.effectCases;
+        const bool named = r.verdict == Verdict::Effect || r.verdict == Verdict::Partial;
+        if (named && r.bestEffect == r.c.effect) {
+          ++s.top1;
+          if (!r.c.location.empty()) {
+            ++s.locatedCases;
+            if (r.bestLocation == r.c.location) ++s.locationRight;
+          }
+          if (std::isfinite(r.fittedSize))
+            sizeErr.push_back(std::abs(r.fittedSize - r.c.trueSize) / std::abs(r.c.trueSize - r.c.absent));
+          if (std::isfinite(r.shrinkPct)) shrink.push_back(r.shrinkPct);
+        }
+        break;
+      }
+      case CaseKind::Ambiguous:
+        ++s.ambiguous;
+        if (r.verdict == Verdict::Effect && (r.bestEffect != r.c.effect || r.bestLocation != r.c.location))
+          ++s.ambiguousWrong;
+        break;
+      case CaseKind::OutOfCatalogue:
+        ++s.outOfCatalogue;
+        if (r.verdict == Verdict::Effect) ++s.outOfCatalogueClean;
+        break;
+      case CaseKind::CalibratedGroup:
+        ++s.calibratedGroup;
+        if (r.verdict == Verdict::Effect && r.bestEffect == r.c.effect && r.bestLocation == r.c.location)
+          ++s.calibratedGroupNamed;
+        break;
+    }
+  }
+  s.medianSizeError = median(sizeErr);
+  s.medianShrink = median(shrink);
+  return s;
+}
+
+inline const char* kindName(CaseKind k) {
+  switch (k) {
+    case CaseKind::Control: return "control";
+    case CaseKind::Effect: return "effect";
+    case CaseKind::Ambiguous: return "ambiguous";
+    case CaseKind::OutOfCatalogue: return "out_of_catalogue";
+    case CaseKind::CalibratedGroup: return "calibrated_group";
+  }
+  return "";
+}
+
+inline void printCase(const CaseResult& r) {
+  std::string loc;
+  for (const auto& l : r.bestLocation) loc += (loc.empty() ? "" : "-") + l;
+  std::string tloc;
+  for (const auto& l : r.c.location) tloc += (tloc.empty() ? "" : "-") + l;
+  std::printf("%-10s %-16s %-20s %-10s %-10.4g | %-12s %-20s %-10s %-10.4g %-8.3g %s\n", r.c.structure.c_str(),
+              kindName(r.c.kind), r.c.effect.c_str(), tloc.c_str(), r.c.trueSize,
+              r.ok ? core::gap::verdictName(r.verdict) : "ERROR", r.bestEffect.c_str(), loc.c_str(), r.fittedSize,
+              r.shrinkPct, r.error.c_str());
+}
+
+inline void printSummary(const Summary& s) {
+  auto pct = [](int a, int b) { return b > 0 ? 100.0 * a / b : std::nan(""); };
+  std::printf("\nStructural gap benchmark (issue 10)\n");
+  std::printf("  top-1 attribution accuracy      %5.1f%%  (%d/%d effect cases)\n", pct(s.top1, s.effectCases), s.top1,
+              s.effectCases);
+  std::printf("  location accuracy               %5.1f%%  (%d/%d located, top-1 right)\n",
+              pct(s.locationRight, s.locatedCases), s.locationRight, s.locatedCases);
+  std::printf("  median fitted-size error        %5.1f%%  (of the true change)\n", 100 * s.medianSizeError);
+  std::printf("  median shrink when right        %5.1f%%\n", s.medianShrink);
+  std::printf("  false attributions on controls  %5.1f%%  (%d/%d)\n", pct(s.controlAttributions, s.controls),
+              s.controlAttributions, s.controls);
+  std::printf("  ambiguous pairs wrong commit    %5.1f%%  (%d/%d)\n", pct(s.ambiguousWrong, s.ambiguous),
+              s.ambiguousWrong, s.ambiguous);
+  std::printf("  out-of-catalogue clean attrib.  %5.1f%%  (%d/%d)\n", pct(s.outOfCatalogueClean, s.outOfCatalogue),
+              s.outOfCatalogueClean, s.outOfCatalogue);
+  std::printf("  calibrated-group member named   %5.1f%%  (%d/%d)\n", pct(s.calibratedGroupNamed, s.calibratedGroup),
+              s.calibratedGroupNamed, s.calibratedGroup);
+  std::printf("  failed diagnoses                %d\n", s.failures);
+}
+
+}  // namespace mozzi::gap_bench
