@@ -26,18 +26,7 @@ class FuncgenUmockdev : public devices::testing::UsbtmcTestbed {
     device_.reset();  // closes (output off) while the emulated device is still attached
     UsbtmcTestbed::TearDown();
   }
-  Device& openDevice() {
-    auto drv = makeFunctionGeneratorDriver();
-    auto found = drv->scan();
-    EXPECT_TRUE(found.ok());
-    EXPECT_EQ(found->size(), 1u);
-    auto dev = drv->create(found->front());
-    EXPECT_TRUE(dev.ok());
-    device_ = std::move(*dev);
-    auto opened = device_->open();
-    EXPECT_TRUE(opened.ok()) << opened.error().describe();
-    return *device_;
-  }
+  Device& openDevice() { return testing::openOnlyDevice(*makeFunctionGeneratorDriver(), device_); }
   static AcquisitionConfig sine(double hz, double newtons, double newtonsPerVolt) {
     AcquisitionConfig c;
     c.parameters = {{"mode", std::string("sine")},

@@ -24,6 +24,7 @@
 #include <sys/stat.h>
 
 #include "devices/mcc_usb1608fsplus/usb1608fsplus_driver.h"
+#include "devices/usbfs_emulation.h"
 #include "devices/mcc_usb1608fsplus/usb1608fsplus_protocol.h"
 
 namespace mozzi::devices::mcc {
@@ -151,19 +152,10 @@ class DeviceModel {
 
  private:
   static gboolean finish(UMockdevIoctlClient* client, long result, int err) {
-    umockdev_ioctl_client_complete(client, result, err);
-    return TRUE;
+    return testing::finishIoctl(client, result, err);
   }
 
-  static void setUrb(UMockdevIoctlData* urbd, int status, int actual) {
-    usbdevfs_urb u;
-    std::memcpy(&u, urbd->data, sizeof u);
-    u.status = status;
-    u.actual_length = actual;
-    umockdev_ioctl_data_update(urbd, offsetof(usbdevfs_urb, status), reinterpret_cast<guint8*>(&u.status), sizeof u.status);
-    umockdev_ioctl_data_update(urbd, offsetof(usbdevfs_urb, actual_length), reinterpret_cast<guint8*>(&u.actual_length),
-                               sizeof u.actual_length);
-  }
+  static void setUrb(UMockdevIoctlData* urbd, int status, int actual) { testing::setUrbResult(urbd, status, actual); }
 
   static UMockdevIoctlData* bufferOf(UMockdevIoctlData* urbd) {
     GError* err = nullptr;
@@ -344,18 +336,7 @@ class Usb1608Umockdev : public ::testing::Test {
     g_free(sysPath_);
   }
 
-  Device& openDevice() {
-    auto drv = makeUsb1608FsPlusDriver();
-    auto found = drv->scan();
-    EXPECT_TRUE(found.ok());
-    EXPECT_EQ(found->size(), 1u);
-    auto dev = drv->create(found->front());
-    EXPECT_TRUE(dev.ok());
-    device_ = std::move(*dev);
-    auto opened = device_->open();
-    EXPECT_TRUE(opened.ok()) << opened.error().describe();
-    return *device_;
-  }
+  Device& openDevice() { return testing::openOnlyDevice(*makeUsb1608FsPlusDriver(), device_); }
 
   static AcquisitionConfig config(double rate, int channels, std::int64_t scans) {
     AcquisitionConfig c;

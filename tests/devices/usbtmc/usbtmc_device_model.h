@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "devices/usbfs_emulation.h"
 #include "scpi_generator_model.h"
 
 namespace mozzi::devices::testing {
@@ -147,21 +148,9 @@ class UsbtmcDeviceModel {
   }
 
  private:
-  static gboolean finish(UMockdevIoctlClient* client, long result, int err) {
-    umockdev_ioctl_client_complete(client, result, err);
-    return TRUE;
-  }
+  static gboolean finish(UMockdevIoctlClient* client, long result, int err) { return finishIoctl(client, result, err); }
 
-  static void setUrb(UMockdevIoctlData* urbd, int status, int actual) {
-    usbdevfs_urb u;
-    std::memcpy(&u, urbd->data, sizeof u);
-    u.status = status;
-    u.actual_length = actual;
-    umockdev_ioctl_data_update(urbd, offsetof(usbdevfs_urb, status), reinterpret_cast<guint8*>(&u.status),
-                               sizeof u.status);
-    umockdev_ioctl_data_update(urbd, offsetof(usbdevfs_urb, actual_length), reinterpret_cast<guint8*>(&u.actual_length),
-                               sizeof u.actual_length);
-  }
+  static void setUrb(UMockdevIoctlData* urbd, int status, int actual) { setUrbResult(urbd, status, actual); }
 
   static UMockdevIoctlData* bufferOf(UMockdevIoctlData* urbd) {
     GError* err = nullptr;
