@@ -39,7 +39,7 @@ struct Candidate {
 
 // A labelled gap figure for "where" tables and before/after comparisons.
 struct GapEntry {
-  std::string kind;    // "band", "dof", "mode", "condition", "overall"
+  std::string kind;    // "band", "dof", "mode", "condition", "overall", "prediction" (downstream figures, never flagged)
   std::string label;   // "100-200 Hz", "21+Z", "mode 3", "2.0 bar"
   double value = 0.0;  // the gap in the row's own measure (relative residual, % error...)
   double z = 0.0;      // value in units of its measurement uncertainty (0 when not applicable)
