@@ -73,6 +73,25 @@ TEST(EngineDiagnosis, PlantedEffectIsFoundWithItsSize) {
   EXPECT_TRUE(d->where[0].label == "block 2" || d->where[0].label == "block 3") << d->where[0].label;
 }
 
+// A model with nothing to calibrate (every parameter known): the screen has
+// no calibration Jacobian to project out and the fits have only the effect's
+// block; the planted bump must still be found with its size.
+TEST(EngineDiagnosis, ModelWithoutCalibrationParameters) {
+  std::mt19937_64 rng(5);
+  const Eigen::MatrixXd none(kN, 0);
+  const auto problem = LinearGapProblem::generate(none, threeBumps(), Eigen::VectorXd(0), 2,
+                                                  Eigen::VectorXd::Constant(1, 1.5), Eigen::VectorXd::Zero(kN), kSigma,
+                                                  rng);
+  const auto d = diagnose(*problem, fastOptions());
+  ASSERT_TRUE(d.ok()) << d.error().describe();
+  EXPECT_TRUE(d->calibrated.empty());
+  EXPECT_EQ(d->verdict, Verdict::Effect) << d->explanation;
+  ASSERT_FALSE(d->ranking.empty());
+  EXPECT_EQ(d->ranking[0].candidateIndex, 2);
+  ASSERT_EQ(d->ranking[0].stdErrors.size(), 1u);
+  EXPECT_NEAR(d->ranking[0].parameters[0], 1.5, 4 * d->ranking[0].stdErrors[0]);
+}
+
 TEST(EngineDiagnosis, NonlinearEffectIsFoundWithItsSize) {
   // theta0 exp(-theta1 t) + theta0 (exp(phi b_k) - 1): a log-factor of 0.3 at
   // the middle bump is 35% more response there, far beyond sigma = 0.05.
