@@ -389,7 +389,7 @@ inline void printSummary(const Summary& s) {
               s.effectCases);
   std::printf("  location accuracy               %5.1f%%  (%d/%d located, top-1 right)\n",
               pct(s.locationRight, s.locatedCases), s.locationRight, s.locatedCases);
-  std::printf("  median fitted-size error        %5.1f%%  (of the true change)\n", 100 * s.medianSizeError);
+  std::printf("  median fitted-size error        %5.2f%%  (of the true change)\n", 100 * s.medianSizeError);
   std::printf("  median shrink when right        %5.1f%%\n", s.medianShrink);
   std::printf("  false attributions on controls  %5.1f%%  (%d/%d)\n", pct(s.controlAttributions, s.controls),
               s.controlAttributions, s.controls);
