@@ -560,10 +560,7 @@ class FrfProblem final : public GapProblem {
     for (std::size_t i = 0; i < h.size(); ++i)
       for (Eigen::Index o = 0; o < no; ++o)
         for (Eigen::Index k = 0; k < nf; ++k) {
-          const double s = relSigma_[(i * static_cast<std::size_t>(no) + static_cast<std::size_t>(o)) *
-                                         static_cast<std::size_t>(nf) +
-                                     static_cast<std::size_t>(k)] *
-                           std::abs(h[i](k, o));
+          const double s = relSigma(i, o, k) * std::abs(h[i](k, o));
           const double re = nd(rng), im = nd(rng);
           sim.h[i](k, o) = h[i](k, o) + Complex(s * re, s * im);
         }
@@ -609,6 +606,12 @@ class FrfProblem final : public GapProblem {
   }
 
  private:
+  // Relative sigma of (reference i, response o, line k).
+  double relSigma(std::size_t i, Eigen::Index o, Eigen::Index k) const {
+    const auto no = static_cast<std::size_t>(data_.responseCount()), nf = static_cast<std::size_t>(data_.lineCount());
+    return relSigma_[(i * no + static_cast<std::size_t>(o)) * nf + static_cast<std::size_t>(k)];
+  }
+
   void computeSigma() {
     const Eigen::Index nf = data_.lineCount(), no = data_.responseCount();
     sigma_.assign(data_.h.size(), Matrix(nf, no));
@@ -619,10 +622,7 @@ class FrfProblem final : public GapProblem {
         // coupled cross FRF at low frequency can lie 1e-7 below its peak).
         const double tiny = 1e-12 * data_.h[i].col(o).cwiseAbs().maxCoeff() + 1e-300;
         for (Eigen::Index k = 0; k < nf; ++k) {
-          const double rel = relSigma_[(i * static_cast<std::size_t>(no) + static_cast<std::size_t>(o)) *
-                                           static_cast<std::size_t>(nf) +
-                                       static_cast<std::size_t>(k)];
-          sigma_[i](k, o) = std::max(rel * std::abs(data_.h[i](k, o)), tiny);
+          sigma_[i](k, o) = std::max(relSigma(i, o, k) * std::abs(data_.h[i](k, o)), tiny);
         }
       }
   }
@@ -654,10 +654,7 @@ GapMetrics FrfProblem::metrics(const double* theta, int candidate, const double*
         const Complex d = h[static_cast<std::size_t>(i)](k, o) - meas;
         const double s = sigma_[static_cast<std::size_t>(i)](k, o);
         rel2(k, o) += std::norm(d) / std::max(std::norm(meas), 1e-300);
-        const double rel =
-            relSigma_[(static_cast<std::size_t>(i) * static_cast<std::size_t>(no) + static_cast<std::size_t>(o)) *
-                          static_cast<std::size_t>(nf) +
-                      static_cast<std::size_t>(k)];
+        const double rel = relSigma(static_cast<std::size_t>(i), o, k);
         noise2(k, o) += 2 * rel * rel;  // expected |dH / H|^2 from noise alone (two components)
         chi2(k, o) += std::norm(d) / (s * s);
       }

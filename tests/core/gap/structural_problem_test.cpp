@@ -41,20 +41,6 @@ double maxAbsResidual(const GapProblem& p, const std::vector<double>& theta, int
   return m;
 }
 
-Matrix springMatrix(const StructuralModel& m, const std::string& name) {
-  Matrix k = Matrix::Zero(m.dofCount(), m.dofCount());
-  for (const auto& s : m.springs) {
-    if (s.name != name) continue;
-    k(s.a, s.a) += s.stiffness;
-    if (s.b >= 0) {
-      k(s.b, s.b) += s.stiffness;
-      k(s.a, s.b) -= s.stiffness;
-      k(s.b, s.a) -= s.stiffness;
-    }
-  }
-  return k;
-}
-
 // Noise-free truth with each catalogue effect: the problem evaluated at the
 // true calibration and effect size reproduces the truth's FRFs. Residuals are
 // in units of a 1% noise sigma; 1e-6 allows the round-off of a modal sum
@@ -89,12 +75,12 @@ TEST_P(ReproducesTruth, ForEachEffect) {
   }
   {
     Truth t(n);
-    t.dk = -0.3 * springMatrix(s.model, "leg_x23");
+    t.dk = -0.3 * gap_bench::springMatrix(s.model, "leg_x23");
     cases.push_back({"element_stiffness", {"2+X", "3+X"}, {0.7}, t, {1.0, 1.0}});
   }
   {
     Truth t(n);
-    t.dk = -0.5 * springMatrix(s.model, "head_x");
+    t.dk = -0.5 * gap_bench::springMatrix(s.model, "head_x");
     cases.push_back({"boundary_stiffness", {"1+X"}, {0.5}, t, {1.0, 1.0}});
   }
   {

@@ -177,6 +177,21 @@ inline std::vector<Structure> structures() {
   return {forkWheel(), frame(), swingArm()};
 }
 
+// Stiffness matrix of one named spring of the model (independent of core/gap).
+inline Matrix springMatrix(const StructuralModel& m, const std::string& name) {
+  Matrix k = Matrix::Zero(m.dofCount(), m.dofCount());
+  for (const auto& s : m.springs) {
+    if (s.name != name) continue;
+    k(s.a, s.a) += s.stiffness;
+    if (s.b >= 0) {
+      k(s.b, s.b) += s.stiffness;
+      k(s.a, s.b) -= s.stiffness;
+      k(s.b, s.a) -= s.stiffness;
+    }
+  }
+  return k;
+}
+
 // ---------------------------------------------------------------------------
 // Truth: the nominal model with calibration offsets and at most one effect.
 
@@ -204,16 +219,7 @@ struct Truth {
 inline ComplexMatrix truthReceptance(const StructuralModel& m, const Truth& t, Complex s) {
   const Eigen::Index n = m.m.rows();
   Matrix kGroup = Matrix::Zero(n, n);
-  const auto& params = m.parameters;
-  for (const auto& sp : m.springs) {
-    if (std::find(params[1].actsOn.begin(), params[1].actsOn.end(), sp.name) == params[1].actsOn.end()) continue;
-    kGroup(sp.a, sp.a) += sp.stiffness;
-    if (sp.b >= 0) {
-      kGroup(sp.b, sp.b) += sp.stiffness;
-      kGroup(sp.a, sp.b) -= sp.stiffness;
-      kGroup(sp.b, sp.a) -= sp.stiffness;
-    }
-  }
+  for (const auto& name : m.parameters[1].actsOn) kGroup += springMatrix(m, name);
   const Matrix k = m.k + (t.groupScale - 1.0) * kGroup + t.dk;
   const Matrix mm = m.m + t.dm;
   Matrix c;

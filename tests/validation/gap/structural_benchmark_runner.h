@@ -65,20 +65,6 @@ inline Measurement defaultMeasurement(const Structure& s, const BenchConfig& cfg
   return m;
 }
 
-inline Matrix springK(const StructuralModel& m, const std::string& name) {
-  Matrix k = Matrix::Zero(m.dofCount(), m.dofCount());
-  for (const auto& s : m.springs) {
-    if (s.name != name) continue;
-    k(s.a, s.a) += s.stiffness;
-    if (s.b >= 0) {
-      k(s.b, s.b) += s.stiffness;
-      k(s.a, s.b) -= s.stiffness;
-      k(s.b, s.a) -= s.stiffness;
-    }
-  }
-  return k;
-}
-
 inline std::vector<std::string> springLocation(const StructuralModel& m, const std::string& name) {
   for (const auto& s : m.springs)
     if (s.name == name) {
@@ -151,7 +137,7 @@ inline std::vector<Case> makeCases(const BenchConfig& cfg) {
           c.location = springLocation(m, sp);
           c.trueSize = scale;
           c.absent = 1.0;
-          c.truth.dk = (scale - 1.0) * springK(m, sp);
+          c.truth.dk = (scale - 1.0) * springMatrix(m, sp);
           cases.push_back(c);
         }
       for (const auto& sp : plan.elementSprings)
@@ -160,7 +146,7 @@ inline std::vector<Case> makeCases(const BenchConfig& cfg) {
           c.location = springLocation(m, sp);
           c.trueSize = scale;
           c.absent = 1.0;
-          c.truth.dk = (scale - 1.0) * springK(m, sp);
+          c.truth.dk = (scale - 1.0) * springMatrix(m, sp);
           cases.push_back(c);
         }
       for (double eta : {0.03, 0.05}) {
@@ -244,7 +230,7 @@ inline std::vector<Case> makeCases(const BenchConfig& cfg) {
       c.location = springLocation(m, plan.calibratedSpring);
       c.trueSize = 1.08;
       c.absent = 1.0;
-      c.truth.dk = 0.08 * springK(m, plan.calibratedSpring);
+      c.truth.dk = 0.08 * springMatrix(m, plan.calibratedSpring);
       cases.push_back(c);
     }
   }
