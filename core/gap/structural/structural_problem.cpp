@@ -1049,9 +1049,15 @@ std::vector<int> hungarianAssignment(const Matrix& cost) {
   return result;
 }
 
-std::vector<int> pairModesByMac(const ComplexMatrix& model, const ComplexMatrix& measured, double minMac) {
+std::vector<int> pairModesByMac(const ComplexMatrix& model, const ComplexMatrix& measured, double minMac,
+                                const Vector& modelHz, const Vector& measuredHz) {
   const Matrix macs = modal::macMatrix(model, measured);
-  const Matrix cost = Matrix::Ones(macs.rows(), macs.cols()) - macs;
+  Matrix cost = Matrix::Ones(macs.rows(), macs.cols()) - macs;
+  if (modelHz.size() == macs.rows() && measuredHz.size() == macs.cols()) {
+    for (Eigen::Index r = 0; r < cost.rows(); ++r)
+      for (Eigen::Index j = 0; j < cost.cols(); ++j)
+        if (modelHz[r] > 0 && measuredHz[j] > 0) cost(r, j) += 0.01 * std::abs(std::log(modelHz[r] / measuredHz[j]));
+  }
   std::vector<int> pairs = hungarianAssignment(cost);
   for (std::size_t r = 0; r < pairs.size(); ++r)
     if (pairs[r] >= 0 && macs(static_cast<Eigen::Index>(r), pairs[r]) < minMac) pairs[r] = -1;
@@ -1198,7 +1204,9 @@ Result<std::unique_ptr<GapProblem>> makeModesProblem(const StructuralModel& mode
     for (Eigen::Index r = 0; r < nominal.w2.size(); ++r)
       modelShapes(c, r) =
           nominal.a(channels[static_cast<std::size_t>(c)].dof, r) * channels[static_cast<std::size_t>(c)].sign;
-  const std::vector<int> pairs = pairModesByMac(modelShapes, data.shapes.cast<Complex>(), options.macPairing);
+  const Vector modelHz = nominal.w2.cwiseSqrt() / (2 * M_PI);
+  const std::vector<int> pairs =
+      pairModesByMac(modelShapes, data.shapes.cast<Complex>(), options.macPairing, modelHz, data.f);
   if (std::count_if(pairs.begin(), pairs.end(), [](int p) { return p >= 0; }) == 0) {
     return makeError(
         ErrorCode::NumericalFailure,

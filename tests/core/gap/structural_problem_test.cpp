@@ -320,6 +320,15 @@ TEST(StructuralProblem, HungarianAndMacPairing) {
   meas(0, 2) = 0.5;
   meas(3, 2) = 1;  // MAC with model mode 3 is 0
   EXPECT_EQ(pairModesByMac(model, meas, 0.6), (std::vector<int>{1, 0, -1}));
+  // One DOF: every MAC is 1, the frequencies decide (measured 31 Hz is the
+  // model's 30 Hz mode, not its 80 Hz one).
+  const ComplexMatrix oneModel = ComplexMatrix::Ones(1, 2), oneMeas = ComplexMatrix::Ones(1, 1);
+  Vector modelHz(2), measHz(1);
+  modelHz << 30.0, 80.0;
+  measHz << 31.0;
+  EXPECT_EQ(pairModesByMac(oneModel, oneMeas, 0.6, modelHz, measHz), (std::vector<int>{0, -1}));
+  modelHz << 80.0, 30.0;
+  EXPECT_EQ(pairModesByMac(oneModel, oneMeas, 0.6, modelHz, measHz), (std::vector<int>{-1, 0}));
 }
 
 }  // namespace
