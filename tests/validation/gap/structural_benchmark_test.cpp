@@ -6,7 +6,7 @@
 // FRFs (1% per component). Prints the per-case table and the summary;
 // asserts the pre-registered targets of GAP.md.
 //
-// CI size by default (75 diagnoses, ~90 s on one core). MOZZI_GAP_BENCH_FULL=1 runs the larger
+// CI size by default (81 diagnoses, ~100 s on one core). MOZZI_GAP_BENCH_FULL=1 runs the larger
 // variant (3 noise/calibration draws per effect case, 20 controls per
 // structure, 100 bootstrap samples, 4 multistarts): see docs/validation.md.
 #include <gtest/gtest.h>
