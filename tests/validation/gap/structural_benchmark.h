@@ -20,6 +20,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -325,6 +326,33 @@ inline core::io::uff::ModalData measureModes(const StructuralModel& m, const Tru
     for (Eigen::Index o = 0; o < nd_; ++o) d.shapes(o, q) = shape[o] + 0.03 * big * nd(rng);
   }
   return d;
+}
+
+// The files a user would hand to `mozzi-cli gap` or the Model vs Test view:
+// the swing arm as mozzi-model/1 JSON and its accelerances (200 lines, 1%
+// noise, seed 7) with a hidden 0.6 kg mass at the axle, 3+X (20% of the node's
+// 3 kg), as UFF 58. Empty string on success, else what failed.
+inline std::string writeSwingArmWithHiddenMass(const std::string& modelPath, const std::string& frfPath) {
+  const auto s = swingArm();
+  auto text = core::gap::structural::writeModelJson(s.model);
+  if (!text.ok()) return text.error().describe();
+  std::ofstream(modelPath) << *text;
+  Truth truth(s.model.dofCount());
+  truth.dm(4, 4) = 0.6;  // 3+X
+  Measurement m;
+  m.responses = s.model.labels;
+  m.references = s.references;
+  m.lowHz = s.bandLowHz;
+  m.highHz = s.bandHighHz;
+  m.lines = 200;
+  m.relativeNoise = 0.01;
+  std::mt19937_64 rng(7);
+  auto records = core::io::uff::fromFrfMatrix(measure(s.model, truth, m, rng));
+  if (!records.ok()) return records.error().describe();
+  core::io::uff::UffFile file;
+  for (auto& r : *records) file.datasets.push_back(core::io::uff::makeDataset(std::move(r)));
+  if (auto w = core::io::uff::writeFile(frfPath, file); !w.ok()) return w.error().describe();
+  return {};
 }
 
 }  // namespace mozzi::gap_bench

@@ -19,10 +19,7 @@
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <random>
 
-#include "core/gap/structural/model_file.h"
-#include "core/io/uff/uff.h"
 #include "validation/gap/structural_benchmark.h"
 
 namespace {
@@ -34,27 +31,9 @@ struct Files {
 };
 
 Files writeFiles() {
-  const auto s = mozzi::gap_bench::swingArm();
   Files f{tempPath(QStringLiteral("swing_arm.json")), tempPath(QStringLiteral("swing_arm_mass.uff"))};
-  auto text = mozzi::core::gap::structural::writeModelJson(s.model);
-  if (!text.ok()) qFatal("model JSON: %s", text.error().describe().c_str());
-  std::ofstream(f.model.toStdString()) << *text;
-  mozzi::gap_bench::Truth truth(s.model.dofCount());
-  truth.dm(4, 4) = 0.6;  // 3+X: 20% of the axle node's 3 kg
-  mozzi::gap_bench::Measurement m;
-  m.responses = s.model.labels;
-  m.references = s.references;
-  m.lowHz = s.bandLowHz;
-  m.highHz = s.bandHighHz;
-  m.lines = 200;
-  m.relativeNoise = 0.01;
-  std::mt19937_64 rng(7);
-  const auto frf = mozzi::gap_bench::measure(s.model, truth, m, rng);
-  auto records = mozzi::core::io::uff::fromFrfMatrix(frf);
-  if (!records.ok()) qFatal("UFF records: %s", records.error().describe().c_str());
-  mozzi::core::io::uff::UffFile file;
-  for (auto& r : *records) file.datasets.push_back(mozzi::core::io::uff::makeDataset(std::move(r)));
-  if (!mozzi::core::io::uff::writeFile(f.frf.toStdString(), file).ok()) qFatal("cannot write UFF");
+  const std::string error = mozzi::gap_bench::writeSwingArmWithHiddenMass(f.model.toStdString(), f.frf.toStdString());
+  if (!error.empty()) qFatal("cannot write the test files: %s", error.c_str());
   return f;
 }
 
