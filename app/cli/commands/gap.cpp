@@ -1,6 +1,7 @@
 // mozzi-cli gap: sim-to-real gap diagnosis of a model against a test
 // (docs/cli/gap.md, shared/GAP.md): where the gap lies, which catalogue effect
 // explains it, and how far it shrinks.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -73,26 +74,40 @@ std::string locationText(const gap::Candidate& c) {
 void printMetrics(std::ostream& out, const gap::GapMetrics& m) {
   char buf[256];
   out << "Gap before (" << m.residualName << " " << core::formatNumber(m.overall, 3) << ")\n";
-  for (const char* kind : {"band", "dof", "mode"}) {
+  // Structural kinds first, then whatever else the problem reports (tyre
+  // conditions, stability predictions...) in the order it gives them.
+  std::vector<std::string> kinds = {"band", "dof", "mode"};
+  for (const auto& e : m.entries) {
+    if (std::find(kinds.begin(), kinds.end(), e.kind) == kinds.end()) kinds.push_back(e.kind);
+  }
+  for (const auto& kind : kinds) {
     bool header = false;
     for (const auto& e : m.entries) {
       if (e.kind != kind) continue;
       if (!header) {
-        if (std::string(kind) == "mode") {
+        if (kind == "mode") {
           out << "  mode                       value     z        f_err%    zeta_err%  MAC     flag\n";
         } else {
-          out << "  " << kind << "                       value     z        flag\n";
+          std::snprintf(buf, sizeof buf, "  %-26s value     z        flag\n", kind.c_str());
+          out << buf;
         }
         header = true;
       }
-      if (std::string(kind) == "mode") {
+      if (kind == "mode") {
         std::snprintf(buf, sizeof buf, "  %-26s %-9s %-8s %-9s %-10s %-7s %s\n", e.label.c_str(),
                       core::formatNumber(e.value, 3).c_str(), core::formatNumber(e.z, 3).c_str(),
                       detailText(e, "frequency_error_pct", 3).c_str(), detailText(e, "zeta_error_pct", 3).c_str(),
                       detailText(e, "mac", 3).c_str(), e.flagged ? "*" : "");
       } else {
-        std::snprintf(buf, sizeof buf, "  %-26s %-9s %-8s %s\n", e.label.c_str(),
+        std::snprintf(buf, sizeof buf, "  %-26s %-9s %-8s %-4s", e.label.c_str(),
                       core::formatNumber(e.value, 3).c_str(), core::formatNumber(e.z, 3).c_str(), e.flagged ? "*" : "");
+        out << buf;
+        // Outside the structural tables the details (measured, predicted...) are the point.
+        if (kind != "band" && kind != "dof") {
+          for (const auto& d : e.details) out << " " << d.first << " " << core::formatNumber(d.second, 4);
+        }
+        buf[0] = '\n';
+        buf[1] = '\0';
       }
       out << buf;
     }
