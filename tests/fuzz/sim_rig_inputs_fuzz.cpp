@@ -4,11 +4,11 @@
 // open() for load cases, channels and sample spacing). Bad input must give an
 // error naming the parameter or file, never a crash.
 
+#include <unistd.h>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "devices/common/driver.h"
 #include "devices/sim/sim_drivers.h"

@@ -1,5 +1,12 @@
 #include "views/gap/model_test_view.h"
 
+#include <qwt_legend.h>
+#include <qwt_plot.h>
+#include <qwt_plot_curve.h>
+#include <qwt_plot_grid.h>
+#include <qwt_plot_renderer.h>
+#include <qwt_scale_engine.h>
+#include <qwt_symbol.h>
 #include <QBuffer>
 #include <QComboBox>
 #include <QDir>
@@ -25,13 +32,6 @@
 #include <QTextBrowser>
 #include <QThread>
 #include <QVBoxLayout>
-#include <qwt_legend.h>
-#include <qwt_plot.h>
-#include <qwt_plot_curve.h>
-#include <qwt_plot_grid.h>
-#include <qwt_plot_renderer.h>
-#include <qwt_scale_engine.h>
-#include <qwt_symbol.h>
 
 #include <algorithm>
 #include <cmath>
@@ -47,7 +47,9 @@ namespace {
 
 constexpr int kBootstrapDefault = 200;
 
-QString number(double value, int digits = 4) { return QString::fromStdString(core::formatNumber(value, digits)); }
+QString number(double value, int digits = 4) {
+  return QString::fromStdString(core::formatNumber(value, digits));
+}
 
 QString joined(const std::vector<std::string>& items) {
   QStringList list;
@@ -223,8 +225,8 @@ ModelTestView::ModelTestView(QWidget* parent) : QWidget(parent) {
   connect(run_, &QPushButton::clicked, this, [this] { run(); });
   connect(cancel_, &QPushButton::clicked, this, &ModelTestView::cancel);
   connect(export_, &QPushButton::clicked, this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export Diagnosis Report"), QString(),
-                                                      tr("HTML report (*.html)"));
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export Diagnosis Report"), QString(), tr("HTML report (*.html)"));
     if (path.isEmpty()) return;
     QString error;
     if (!exportReport(path, &error)) setStatus(error);
@@ -243,24 +245,40 @@ ModelTestView::~ModelTestView() {
   }
 }
 
-void ModelTestView::setModelPath(const QString& path) { modelPath_->setText(path); }
-void ModelTestView::setTestPath(const QString& path) { testPath_->setText(path); }
+void ModelTestView::setModelPath(const QString& path) {
+  modelPath_->setText(path);
+}
+void ModelTestView::setTestPath(const QString& path) {
+  testPath_->setText(path);
+}
 void ModelTestView::setBand(double lowHz, double highHz) {
   bandLow_->setValue(lowHz);
   bandHigh_->setValue(highHz);
 }
-void ModelTestView::setBootstrapSamples(int samples) { bootstrap_->setValue(samples); }
-void ModelTestView::setMultistarts(int starts) { multistarts_->setValue(starts); }
+void ModelTestView::setBootstrapSamples(int samples) {
+  bootstrap_->setValue(samples);
+}
+void ModelTestView::setMultistarts(int starts) {
+  multistarts_->setValue(starts);
+}
 void ModelTestView::setEffects(const QStringList& names) {
   for (int i = 0; i < effects_->count(); ++i) {
     QListWidgetItem* item = effects_->item(i);
     item->setCheckState(names.contains(item->text()) ? Qt::Checked : Qt::Unchecked);
   }
 }
-bool ModelTestView::isRunning() const { return worker_ && worker_->isRunning(); }
-QString ModelTestView::statusText() const { return status_->text(); }
-QString ModelTestView::verdictText() const { return verdict_->text(); }
-int ModelTestView::overlayCurveCount() const { return static_cast<int>(before_.size()); }
+bool ModelTestView::isRunning() const {
+  return worker_ && worker_->isRunning();
+}
+QString ModelTestView::statusText() const {
+  return status_->text();
+}
+QString ModelTestView::verdictText() const {
+  return verdict_->text();
+}
+int ModelTestView::overlayCurveCount() const {
+  return static_cast<int>(before_.size());
+}
 
 void ModelTestView::setStatus(const QString& text) {
   statusRaw_ = text;
@@ -268,16 +286,14 @@ void ModelTestView::setStatus(const QString& text) {
 }
 
 void ModelTestView::browseModel() {
-  const QString path = QFileDialog::getOpenFileName(
-      this, tr("Choose Model"), modelPath_->text(),
-      tr("Models (*.json *.uff *.unv);;All files (*)"));
+  const QString path = QFileDialog::getOpenFileName(this, tr("Choose Model"), modelPath_->text(),
+                                                    tr("Models (*.json *.uff *.unv);;All files (*)"));
   if (!path.isEmpty()) setModelPath(path);
 }
 
 void ModelTestView::browseTest() {
-  const QString path = QFileDialog::getOpenFileName(
-      this, tr("Choose Test Data"), testPath_->text(),
-      tr("Test data (*.uff *.unv *.csv *.json);;All files (*)"));
+  const QString path = QFileDialog::getOpenFileName(this, tr("Choose Test Data"), testPath_->text(),
+                                                    tr("Test data (*.uff *.unv *.csv *.json);;All files (*)"));
   if (!path.isEmpty()) setTestPath(path);
 }
 
@@ -325,7 +341,8 @@ bool ModelTestView::run() {
   options.bootstrapSamples = bootstrap_->value();
   options.multistarts = multistarts_->value();
   for (int i = 0; i < effects_->count(); ++i) {
-    if (effects_->item(i)->checkState() == Qt::Checked) options.effects.push_back(effects_->item(i)->text().toStdString());
+    if (effects_->item(i)->checkState() == Qt::Checked)
+      options.effects.push_back(effects_->item(i)->text().toStdString());
   }
   if (options.effects.empty()) {
     setStatus(tr("Tick at least one candidate effect."));
@@ -337,7 +354,8 @@ bool ModelTestView::run() {
   options.progress = [self, cancelFlag](double fraction, const std::string& step) {
     const QString text = QString::fromStdString(step);
     QMetaObject::invokeMethod(
-        self.data(), [self, fraction, text] {
+        self.data(),
+        [self, fraction, text] {
           if (self) self->onProgress(fraction, text);
         },
         Qt::QueuedConnection);
@@ -459,8 +477,7 @@ void ModelTestView::fillRanking() {
   ranking_->clear();
   ranking_->setColumnCount(7);
   ranking_->setHorizontalHeaderLabels({tr("Effect"), tr("Location"), tr("Size ± standard error"),
-                                       tr("Likelihood ratio"), tr("Threshold"), tr("Held-out gain"),
-                                       tr("Shrink")});
+                                       tr("Likelihood ratio"), tr("Threshold"), tr("Held-out gain"), tr("Shrink")});
   if (!diagnosis_) return;
   const auto& d = *diagnosis_;
   ranking_->setRowCount(static_cast<int>(d.ranking.size()));
@@ -468,7 +485,8 @@ void ModelTestView::fillRanking() {
     const auto& effect = d.ranking[static_cast<size_t>(r)];
     QStringList sizes;
     for (size_t p = 0; p < effect.parameters.size(); ++p) {
-      const auto& def = effect.candidate.parameters.size() > p ? effect.candidate.parameters[p] : core::gap::Parameter{};
+      const auto& def =
+          effect.candidate.parameters.size() > p ? effect.candidate.parameters[p] : core::gap::Parameter{};
       QString text = QStringLiteral("%1 = %2").arg(QString::fromStdString(def.name), number(effect.parameters[p]));
       if (p < effect.stdErrors.size()) text += QStringLiteral(" ± %1").arg(number(effect.stdErrors[p], 2));
       if (!def.unit.empty()) text += QStringLiteral(" %1").arg(QString::fromStdString(def.unit));
@@ -480,7 +498,8 @@ void ModelTestView::fillRanking() {
     ranking_->setItem(r, 2, new QTableWidgetItem(sizes.join(QStringLiteral("; "))));
     ranking_->setItem(r, 3, new QTableWidgetItem(number(effect.likelihoodRatio)));
     ranking_->setItem(r, 4, new QTableWidgetItem(number(d.threshold)));
-    ranking_->setItem(r, 5, new QTableWidgetItem(QStringLiteral("%1 %").arg(number(100.0 * effect.heldOutImprovement, 3))));
+    ranking_->setItem(r, 5,
+                      new QTableWidgetItem(QStringLiteral("%1 %").arg(number(100.0 * effect.heldOutImprovement, 3))));
     ranking_->setItem(r, 6, new QTableWidgetItem(QStringLiteral("%1 %").arg(number(effect.shrinkPct, 3))));
     const bool inVerdict = std::find(d.verdictSet.begin(), d.verdictSet.end(), r) != d.verdictSet.end();
     if (inVerdict) {
@@ -503,8 +522,10 @@ void ModelTestView::computeOverlays() {
   before_ = diagnosed_->overlay(d.calibrated.data(), -1, nullptr);
   // "After" is the first effect of the verdict set, else the top-ranked one.
   const core::gap::RankedEffect* best = nullptr;
-  if (!d.verdictSet.empty()) best = &d.ranking[static_cast<size_t>(d.verdictSet.front())];
-  else if (!d.ranking.empty()) best = &d.ranking.front();
+  if (!d.verdictSet.empty())
+    best = &d.ranking[static_cast<size_t>(d.verdictSet.front())];
+  else if (!d.ranking.empty())
+    best = &d.ranking.front();
   if (best && best->candidateIndex >= 0 && best->theta.size() == d.calibrated.size()) {
     after_ = diagnosed_->overlay(best->theta.data(), best->candidateIndex, best->parameters.data());
     afterLabel_ = tr("model + %1").arg(QString::fromStdString(best->candidate.effect));
@@ -542,9 +563,9 @@ bool ModelTestView::showOverlay(int index) {
   // Markers make sparse series (pressures, speeds) readable; FRFs are dense.
   const bool sparse = curve.x.size() < 40;
   measuredCurve_->setStyle(sparse ? QwtPlotCurve::NoCurve : QwtPlotCurve::Lines);
-  measuredCurve_->setSymbol(sparse ? new QwtSymbol(QwtSymbol::Ellipse, QBrush(QColor(29, 53, 87)),
-                                                   QPen(QColor(29, 53, 87)), QSize(7, 7))
-                                   : nullptr);
+  measuredCurve_->setSymbol(
+      sparse ? new QwtSymbol(QwtSymbol::Ellipse, QBrush(QColor(29, 53, 87)), QPen(QColor(29, 53, 87)), QSize(7, 7))
+             : nullptr);
   afterCurve_->setTitle(afterLabel_.isEmpty() ? tr("model + best effect") : afterLabel_);
   overlayPlot_->replot();
   return true;
@@ -566,15 +587,18 @@ QString ModelTestView::htmlReport() const {
   html += QStringLiteral("<h2>%1</h2><p>%2 = %3</p>")
               .arg(tr("Gap before").toHtmlEscaped(), QString::fromStdString(d.gapBefore.residualName).toHtmlEscaped(),
                    number(d.gapBefore.overall));
-  html += QStringLiteral("<table border=\"1\" cellspacing=\"0\" cellpadding=\"3\"><tr><th>%1</th><th>%2</th><th>%3</th><th>z</th></tr>")
+  html += QStringLiteral(
+              "<table border=\"1\" cellspacing=\"0\" "
+              "cellpadding=\"3\"><tr><th>%1</th><th>%2</th><th>%3</th><th>z</th></tr>")
               .arg(tr("Kind").toHtmlEscaped(), tr("Item").toHtmlEscaped(), tr("Gap").toHtmlEscaped());
   for (const auto& entry : d.where) {
     html += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td></tr>")
-                .arg(QString::fromStdString(entry.kind).toHtmlEscaped(), QString::fromStdString(entry.label).toHtmlEscaped(),
-                     number(entry.value), number(entry.z, 3));
+                .arg(QString::fromStdString(entry.kind).toHtmlEscaped(),
+                     QString::fromStdString(entry.label).toHtmlEscaped(), number(entry.value), number(entry.z, 3));
   }
   html += QStringLiteral("</table>");
-  html += QStringLiteral("<h2>%1</h2><table border=\"1\" cellspacing=\"0\" cellpadding=\"3\"><tr>").arg(tr("Ranked effects").toHtmlEscaped());
+  html += QStringLiteral("<h2>%1</h2><table border=\"1\" cellspacing=\"0\" cellpadding=\"3\"><tr>")
+              .arg(tr("Ranked effects").toHtmlEscaped());
   for (int c = 0; c < ranking_->columnCount(); ++c) {
     html += QStringLiteral("<th>%1</th>").arg(ranking_->horizontalHeaderItem(c)->text().toHtmlEscaped());
   }
@@ -599,8 +623,8 @@ QString ModelTestView::htmlReport() const {
     buffer.open(QIODevice::WriteOnly);
     pixmap.save(&buffer, "PNG");
     html += QStringLiteral("<h2>%1</h2><img alt=\"%2\" src=\"data:image/png;base64,%3\">")
-                .arg(tr("Measured and model, before and after").toHtmlEscaped(), overlayChoice_->currentText().toHtmlEscaped(),
-                     QString::fromLatin1(png.toBase64()));
+                .arg(tr("Measured and model, before and after").toHtmlEscaped(),
+                     overlayChoice_->currentText().toHtmlEscaped(), QString::fromLatin1(png.toBase64()));
   }
   html += QStringLiteral("</body></html>");
   return html;

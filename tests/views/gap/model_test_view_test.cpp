@@ -7,14 +7,14 @@
 // bad files and a cancelled run.
 #include "views/gap/model_test_view.h"
 
+#include <qwt_plot.h>
+#include <qwt_plot_curve.h>
 #include <QApplication>
 #include <QFile>
 #include <QListWidget>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QtTest>
-#include <qwt_plot.h>
-#include <qwt_plot_curve.h>
 
 #include <cmath>
 #include <fstream>
@@ -24,7 +24,9 @@
 
 namespace {
 
-QString tempPath(const QString& name) { return QStringLiteral(MOZZI_BINARY_DIR "/gap_view_") + name; }
+QString tempPath(const QString& name) {
+  return QStringLiteral(MOZZI_BINARY_DIR "/gap_view_") + name;
+}
 
 struct Files {
   QString model, frf;
@@ -68,8 +70,8 @@ class ModelTestViewTest : public QObject {
     auto* effects = view.findChild<QListWidget*>(QStringLiteral("gapEffects"));
     QVERIFY(effects);
     QVERIFY(effects->count() >= 7);  // the structural catalogue of issue 10
-    view.setEffects({QStringLiteral("mass_loading"), QStringLiteral("element_stiffness"),
-                     QStringLiteral("exponential_window")});
+    view.setEffects(
+        {QStringLiteral("mass_loading"), QStringLiteral("element_stiffness"), QStringLiteral("exponential_window")});
 
     QSignalSpy finished(&view, &mozzi::views::ModelTestView::finished);
     QVERIFY(view.run());
