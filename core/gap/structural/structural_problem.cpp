@@ -10,6 +10,7 @@
 #include "core/common/text.h"
 #include "core/modal/sdof.h"
 #include "core/modal/shape_tools.h"
+#include "core/signal/frf_estimator.h"
 
 namespace mozzi::core::gap::structural {
 namespace {
@@ -1086,39 +1087,29 @@ Result<std::unique_ptr<GapProblem>> makeFrfProblem(const StructuralModel& model,
   }
   // The fitted band: lines inside [lo, hi] and above 0 Hz (the type
   // conversion and the lower residual divide by s).
-  std::vector<Eigen::Index> keep;
-  for (Eigen::Index k = 0; k < measured.lineCount(); ++k) {
-    const double f = measured.frequencyHz[k];
-    if (f > 0 && f >= options.bandLowHz && f <= options.bandHighHz) keep.push_back(k);
-  }
-  if (keep.size() < 4) {
+  auto banded = signal::selectBand(measured, std::max(options.bandLowHz, std::nextafter(0.0, 1.0)),
+                                   options.bandHighHz);
+  if (!banded.ok() || banded->lineCount() < 4) {
     return makeError(ErrorCode::InvalidArgument,
                      "fewer than 4 frequency lines in the band " + hzLabel(options.bandLowHz, options.bandHighHz),
                      "--band");
   }
-  FrfMatrix data;
-  data.type = measured.type;
-  data.responses = measured.responses;
-  data.references = measured.references;
-  const auto nf = static_cast<Eigen::Index>(keep.size());
-  data.frequencyHz.resize(nf);
-  for (Eigen::Index k = 0; k < nf; ++k) data.frequencyHz[k] = measured.frequencyHz[keep[static_cast<std::size_t>(k)]];
-  const Eigen::Index no = measured.responseCount();
+  FrfMatrix data = std::move(banded).value();
+  const Eigen::Index nf = data.lineCount();
+  const Eigen::Index no = data.responseCount();
   std::vector<double> rel;
-  for (std::size_t i = 0; i < measured.h.size(); ++i) {
-    ComplexMatrix h(nf, no);
-    for (Eigen::Index k = 0; k < nf; ++k) h.row(k) = measured.h[i].row(keep[static_cast<std::size_t>(k)]);
-    data.h.push_back(h);
+  for (std::size_t i = 0; i < data.h.size(); ++i) {
     for (Eigen::Index o = 0; o < no; ++o)
       for (Eigen::Index k = 0; k < nf; ++k) {
         double r = options.relativeFloor;
-        if (!measured.coherence.empty() && options.averages > 0) {
-          const double g2 = std::clamp(measured.coherence[i](keep[static_cast<std::size_t>(k)], o), 1e-6, 1.0);
+        if (!data.coherence.empty() && options.averages > 0) {
+          const double g2 = std::clamp(data.coherence[i](k, o), 1e-6, 1.0);
           r = std::max(r, std::sqrt((1 - g2) / (2.0 * options.averages * g2)));
         }
         rel.push_back(r);
       }
   }
+  data.coherence.clear();  // used only for the noise model above
   auto core = std::make_shared<StructuralCore>(model);
   std::vector<int> measuredDofs, responseDofs;
   for (const auto& c : resp) {
