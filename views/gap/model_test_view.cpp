@@ -15,7 +15,6 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFormLayout>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -281,7 +280,6 @@ int ModelTestView::overlayCurveCount() const {
 }
 
 void ModelTestView::setStatus(const QString& text) {
-  statusRaw_ = text;
   status_->setText(text);
 }
 

@@ -135,7 +135,6 @@ class ModelTestView : public QWidget {
   std::shared_ptr<std::atomic<bool>> cancelRequested_;
   std::optional<core::gap::Diagnosis> result_;
   QString error_;
-  QString statusRaw_;
 };
 
 }  // namespace views
