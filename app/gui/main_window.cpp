@@ -1,5 +1,7 @@
 #include "app/gui/main_window.h"
 
+#include <qwt_global.h>
+#include <vtkVersion.h>
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
@@ -21,14 +23,12 @@
 #include <QTableWidget>
 #include <QTranslator>
 #include <QTreeWidget>
-#include <qwt_global.h>
-#include <vtkVersion.h>
 
 #include "app/build_info.h"
 #include "app/gui/project_document.h"
 #include "core/common/versions.h"
-#include "devices/common/versions.h"
 #include "core/geometry/mesh_placement.h"
+#include "devices/common/versions.h"
 #include "views/gap/model_test_view.h"
 #include "views/panels/project_overview.h"
 #include "views/plots/frf_plot.h"
@@ -267,7 +267,8 @@ void MainWindow::retranslateUi() {
   demoAction_->setText(tr("Create &Demo Project..."));
   integrityAction_->setText(tr("Check Project &Integrity"));
   modelTestAction_->setText(tr("&Model vs Test..."));
-  modelTestAction_->setStatusTip(tr("Diagnose where a model and a test disagree and which unmodelled effect explains it"));
+  modelTestAction_->setStatusTip(
+      tr("Diagnose where a model and a test disagree and which unmodelled effect explains it"));
   if (modelTest_) tabs_->setTabText(tabs_->indexOf(modelTest_), tr("Model vs Test"));
   helpMenu_->setTitle(tr("&Help"));
   aboutAction_->setText(tr("&About Mozzi"));
@@ -335,8 +336,8 @@ void MainWindow::refreshFromDocument() {
   if (auto sets = document_->frfSets(); sets && !sets->empty()) {
     auto* group = new QTreeWidgetItem(root, {tr("FRF sets"), QString::number(sets->size())});
     for (const auto& set : *sets) {
-      auto* item = new QTreeWidgetItem(group, {QString::fromStdString(set.name),
-                                               QString::number(set.responseCount * set.referenceCount)});
+      auto* item = new QTreeWidgetItem(
+          group, {QString::fromStdString(set.name), QString::number(set.responseCount * set.referenceCount)});
       item->setData(0, kRoleTable, QStringLiteral("frf-set"));
       item->setData(0, kRoleId, QVariant::fromValue<qlonglong>(set.id));
       item->setData(0, Qt::UserRole + 2, QString::fromStdString(set.source));
@@ -612,8 +613,10 @@ bool MainWindow::importUff(const QString& path) {
           .arg(report->frfPairs)
           .arg(report->modes));
   for (const auto& note : report->notes) log(QStringLiteral("  ") + QString::fromStdString(note));
-  if (report->frfSetId) openFrfSet(*report->frfSetId);
-  else if (report->nodes > 0) tabs_->setCurrentWidget(scene_);
+  if (report->frfSetId)
+    openFrfSet(*report->frfSetId);
+  else if (report->nodes > 0)
+    tabs_->setCurrentWidget(scene_);
   return true;
 }
 
@@ -624,8 +627,8 @@ void MainWindow::onImportUff() {
 }
 
 void MainWindow::onNew() {
-  const QString path = QFileDialog::getSaveFileName(this, tr("New Project"), projectFolder(),
-                                                    tr("Mozzi projects (*.mozzi)"));
+  const QString path =
+      QFileDialog::getSaveFileName(this, tr("New Project"), projectFolder(), tr("Mozzi projects (*.mozzi)"));
   if (path.isEmpty()) return;
   newProject(path.endsWith(QLatin1String(".mozzi")) ? path : path + QStringLiteral(".mozzi"));
 }
@@ -637,8 +640,8 @@ void MainWindow::onOpen() {
 }
 
 void MainWindow::onSaveAs() {
-  const QString path = QFileDialog::getSaveFileName(this, tr("Save Project As"), projectFolder(),
-                                                    tr("Mozzi projects (*.mozzi)"));
+  const QString path =
+      QFileDialog::getSaveFileName(this, tr("Save Project As"), projectFolder(), tr("Mozzi projects (*.mozzi)"));
   if (path.isEmpty()) return;
   saveProjectAs(path.endsWith(QLatin1String(".mozzi")) ? path : path + QStringLiteral(".mozzi"));
 }
@@ -661,7 +664,8 @@ void MainWindow::onCheckIntegrity() {
   if (!document_->isOpen()) return;
   // Re-opening read-only runs the same checks as opening (SQLite quick_check,
   // application id, schema version) without disturbing the open session.
-  auto check = core::io::ProjectStore::open(document_->path().toStdString(), core::io::ProjectStore::OpenMode::ReadOnly);
+  auto check =
+      core::io::ProjectStore::open(document_->path().toStdString(), core::io::ProjectStore::OpenMode::ReadOnly);
   if (!check) {
     showError(tr("Check Project Integrity"), tr("The project failed its integrity check."), check.error());
     return;
@@ -691,7 +695,9 @@ QString MainWindow::aboutText() const {
   return text;
 }
 
-void MainWindow::onAbout() { QMessageBox::about(this, tr("About Mozzi"), aboutText()); }
+void MainWindow::onAbout() {
+  QMessageBox::about(this, tr("About Mozzi"), aboutText());
+}
 
 void MainWindow::closeEvent(QCloseEvent* event) {
   QSettings settings;

@@ -9,12 +9,16 @@ namespace mozzi {
 namespace app {
 
 namespace {
-core::Error noProject() { return core::makeError(core::ErrorCode::NotFound, "no project is open"); }
+core::Error noProject() {
+  return core::makeError(core::ErrorCode::NotFound, "no project is open");
+}
 }  // namespace
 
 ProjectDocument::ProjectDocument(QObject* parent) : QObject(parent) {}
 
-QString ProjectDocument::path() const { return store_ ? QString::fromStdString(store_->path()) : QString(); }
+QString ProjectDocument::path() const {
+  return store_ ? QString::fromStdString(store_->path()) : QString();
+}
 
 QString ProjectDocument::readOnlyReason() const {
   return store_ ? QString::fromStdString(store_->readOnlyReason()) : QString();

@@ -33,8 +33,7 @@ std::string formatDof(const Dof& dof) {
 
 Result<Dof> parseDof(std::string_view text) {
   auto fail = [&](const std::string& why) -> Result<Dof> {
-    return makeError(ErrorCode::ParseError,
-                     "'" + std::string(text) + "' is not a DOF label like 21:+Z (" + why + ")",
+    return makeError(ErrorCode::ParseError, "'" + std::string(text) + "' is not a DOF label like 21:+Z (" + why + ")",
                      "DOF label");
   };
   std::size_t pos = 0;

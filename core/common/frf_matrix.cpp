@@ -13,7 +13,8 @@ Result<void> FrfMatrix::validate() const {
   }
   for (Eigen::Index k = 0; k < frequencyHz.size(); ++k) {
     if (!std::isfinite(frequencyHz[k]) || frequencyHz[k] < 0.0) {
-      return makeError(ErrorCode::InvalidArgument, "frequency is negative or not finite", where + ", line " + std::to_string(k));
+      return makeError(ErrorCode::InvalidArgument, "frequency is negative or not finite",
+                       where + ", line " + std::to_string(k));
     }
     if (k > 0 && !(frequencyHz[k] > frequencyHz[k - 1])) {
       return makeError(ErrorCode::InvalidArgument, "frequencies are not strictly ascending",
@@ -21,10 +22,10 @@ Result<void> FrfMatrix::validate() const {
     }
   }
   if (h.size() != references.size()) {
-    return makeError(ErrorCode::InvalidArgument,
-                     "expected one block per reference (" + std::to_string(references.size()) + "), got " +
-                         std::to_string(h.size()),
-                     where);
+    return makeError(
+        ErrorCode::InvalidArgument,
+        "expected one block per reference (" + std::to_string(references.size()) + "), got " + std::to_string(h.size()),
+        where);
   }
   if (!coherence.empty() && coherence.size() != h.size()) {
     return makeError(ErrorCode::InvalidArgument, "coherence blocks do not match FRF blocks", where);
@@ -40,9 +41,9 @@ Result<void> FrfMatrix::validate() const {
     for (Eigen::Index o = 0; o < h[i].cols(); ++o) {
       for (Eigen::Index k = 0; k < h[i].rows(); ++k) {
         if (!std::isfinite(h[i](k, o).real()) || !std::isfinite(h[i](k, o).imag())) {
-          return makeError(ErrorCode::InvalidArgument, "FRF value is not finite",
-                           ref + ", response " + formatDof(responses[static_cast<std::size_t>(o)]) + ", line " +
-                               std::to_string(k));
+          return makeError(
+              ErrorCode::InvalidArgument, "FRF value is not finite",
+              ref + ", response " + formatDof(responses[static_cast<std::size_t>(o)]) + ", line " + std::to_string(k));
         }
       }
     }

@@ -13,9 +13,9 @@
 namespace mozzi::core {
 
 struct FrfMatrix {
-  Vector frequencyHz;            // nf lines [Hz], strictly ascending, not necessarily even
-  std::vector<Dof> responses;    // no output DOFs
-  std::vector<Dof> references;   // ni input DOFs
+  Vector frequencyHz;           // nf lines [Hz], strictly ascending, not necessarily even
+  std::vector<Dof> responses;   // no output DOFs
+  std::vector<Dof> references;  // ni input DOFs
   FrfType type = FrfType::Accelerance;
   // h[i] is nf x no: column o holds H_{o,i} over frequency.
   std::vector<ComplexMatrix> h;

@@ -13,7 +13,9 @@ enum class FrfType { Receptance = 0, Mobility = 1, Accelerance = 2 };
 const char* frfTypeName(FrfType type);  // "receptance", "mobility", "accelerance"
 
 // Power of (i omega) that takes receptance to this type.
-inline int frfTypeOrder(FrfType type) { return static_cast<int>(type); }
+inline int frfTypeOrder(FrfType type) {
+  return static_cast<int>(type);
+}
 
 // Factor that converts a value of type `from` into type `to` at angular
 // frequency omega [rad/s]: (i omega)^(order(to) - order(from)). At omega = 0 a

@@ -1,11 +1,11 @@
 #include "core/common/versions.h"
 
-#include <Eigen/Core>
 #include <ceres/version.h>
 #include <fftw3.h>
 #include <matio.h>
 #include <sqlite3.h>
 #include <zlib.h>
+#include <Eigen/Core>
 
 namespace mozzi::core {
 

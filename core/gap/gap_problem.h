@@ -22,10 +22,10 @@
 namespace mozzi::core::gap {
 
 struct Parameter {
-  std::string name;         // "k_scale", "added_mass", "eta"
-  std::string unit;         // SI unit, "" for dimensionless
-  double nominal = 0.0;     // start value; for an effect, the "absent" value
-  double lower = 0.0;       // bounds (Ceres parameter bounds)
+  std::string name;      // "k_scale", "added_mass", "eta"
+  std::string unit;      // SI unit, "" for dimensionless
+  double nominal = 0.0;  // start value; for an effect, the "absent" value
+  double lower = 0.0;    // bounds (Ceres parameter bounds)
   double upper = 0.0;
   double priorSigma = 0.0;  // > 0: Gaussian prior N(nominal, priorSigma) as a residual block
 };
@@ -39,10 +39,10 @@ struct Candidate {
 
 // A labelled gap figure for "where" tables and before/after comparisons.
 struct GapEntry {
-  std::string kind;    // "band", "dof", "mode", "condition", "overall", "prediction" (downstream figures, never flagged)
-  std::string label;   // "100-200 Hz", "21+Z", "mode 3", "2.0 bar"
-  double value = 0.0;  // the gap in the row's own measure (relative residual, % error...)
-  double z = 0.0;      // value in units of its measurement uncertainty (0 when not applicable)
+  std::string kind;   // "band", "dof", "mode", "condition", "overall", "prediction" (downstream figures, never flagged)
+  std::string label;  // "100-200 Hz", "21+Z", "mode 3", "2.0 bar"
+  double value = 0.0;    // the gap in the row's own measure (relative residual, % error...)
+  double z = 0.0;        // value in units of its measurement uncertainty (0 when not applicable)
   bool flagged = false;  // significant after Holm correction over the rows of its kind
   // Named extra figures: "frequency_error_pct", "zeta_error_pct", "mac",
   // "measured", "predicted", ...
@@ -58,10 +58,10 @@ struct GapMetrics {
 // Measured against predicted along one abscissa (frequency, pressure, speed),
 // for the "before / after" overlay of the workbench view and the report.
 struct OverlayCurve {
-  std::string label;        // "21+Z / 1+Z", "relaxation length"
-  std::string xLabel;       // "Frequency [Hz]", "Pressure [bar]"
-  std::string yLabel;       // "|H| [m/s^2/N]", "sigma [m]"
-  bool logY = false;        // plot y on a logarithmic axis (FRF magnitudes)
+  std::string label;   // "21+Z / 1+Z", "relaxation length"
+  std::string xLabel;  // "Frequency [Hz]", "Pressure [bar]"
+  std::string yLabel;  // "|H| [m/s^2/N]", "sigma [m]"
+  bool logY = false;   // plot y on a logarithmic axis (FRF magnitudes)
   std::vector<double> x;
   std::vector<double> measured;
   std::vector<double> predicted;

@@ -32,7 +32,8 @@ Result<SignalCalcFrf> readSignalCalcAscii(const std::string& path) {
   int lineNo = 0;
   for (; lineNo < kHeaderLines; ++lineNo) {
     if (!std::getline(in, line)) {
-      return makeError(ErrorCode::ParseError, "file ends inside the 9-line header", path + ":" + std::to_string(lineNo + 1));
+      return makeError(ErrorCode::ParseError, "file ends inside the 9-line header",
+                       path + ":" + std::to_string(lineNo + 1));
     }
     if (lineNo == 0 && line.rfind("Units", 0) != 0) {
       return makeError(ErrorCode::ParseError, "not a SignalCalc ASCII export (first line must start with 'Units')",
@@ -53,10 +54,12 @@ Result<SignalCalcFrf> readSignalCalcAscii(const std::string& path) {
     }
     while (*p == ' ' || *p == '\t') ++p;
     if (*p != '\0') {
-      return makeError(ErrorCode::ParseError, "unexpected text after the third column", path + ":" + std::to_string(lineNo));
+      return makeError(ErrorCode::ParseError, "unexpected text after the third column",
+                       path + ":" + std::to_string(lineNo));
     }
     if (!f.empty() && !(a > f.back())) {
-      return makeError(ErrorCode::ParseError, "frequencies are not strictly ascending", path + ":" + std::to_string(lineNo));
+      return makeError(ErrorCode::ParseError, "frequencies are not strictly ascending",
+                       path + ":" + std::to_string(lineNo));
     }
     if (a < 0.0) return makeError(ErrorCode::ParseError, "negative frequency", path + ":" + std::to_string(lineNo));
     f.push_back(a);
@@ -67,7 +70,8 @@ Result<SignalCalcFrf> readSignalCalcAscii(const std::string& path) {
   const Eigen::Index n = static_cast<Eigen::Index>(f.size());
   out.frequencyHz = Eigen::Map<const Vector>(f.data(), n);
   out.h.resize(n);
-  for (Eigen::Index k = 0; k < n; ++k) out.h[k] = Complex(re[static_cast<std::size_t>(k)], im[static_cast<std::size_t>(k)]);
+  for (Eigen::Index k = 0; k < n; ++k)
+    out.h[k] = Complex(re[static_cast<std::size_t>(k)], im[static_cast<std::size_t>(k)]);
   return out;
 }
 

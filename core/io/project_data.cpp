@@ -20,9 +20,13 @@ using sql::sqliteError;
 // samples (kMaxDecodedSampleBytes) and 2^26 FRF lines.
 constexpr std::int64_t kMaxFrfLines = std::int64_t{1} << 26;
 
-bool finite(double v) { return std::isfinite(v); }
+bool finite(double v) {
+  return std::isfinite(v);
+}
 
-std::string hitWhere(const std::string& path, std::int64_t id) { return path + ", hit " + std::to_string(id); }
+std::string hitWhere(const std::string& path, std::int64_t id) {
+  return path + ", hit " + std::to_string(id);
+}
 
 // Copies a blob of doubles out of a column, checking its size.
 Result<std::vector<double>> columnDoubles(sqlite3_stmt* stmt, int column, std::int64_t count,
@@ -30,10 +34,10 @@ Result<std::vector<double>> columnDoubles(sqlite3_stmt* stmt, int column, std::i
   const void* data = sqlite3_column_blob(stmt, column);
   const std::int64_t bytes = sqlite3_column_bytes(stmt, column);
   if (count < 0 || count > kMaxFrfLines * 2 || bytes != count * static_cast<std::int64_t>(sizeof(double))) {
-    return makeError(ErrorCode::Corrupt,
-                     "blob of " + std::to_string(bytes) + " bytes where " + std::to_string(count) +
-                         " float64 values were expected",
-                     where);
+    return makeError(
+        ErrorCode::Corrupt,
+        "blob of " + std::to_string(bytes) + " bytes where " + std::to_string(count) + " float64 values were expected",
+        where);
   }
   std::vector<double> values(static_cast<std::size_t>(count));
   if (count > 0) std::memcpy(values.data(), data, static_cast<std::size_t>(bytes));
@@ -54,8 +58,7 @@ Result<void> checkSamples(const Eigen::MatrixXf& samples, double sampleRateHz, c
     for (Eigen::Index r = 0; r < samples.rows(); ++r) {
       if (!std::isfinite(samples(r, c))) {
         return makeError(ErrorCode::InvalidArgument,
-                         "sample " + std::to_string(r) + " of channel " + std::to_string(c) + " is not finite",
-                         where);
+                         "sample " + std::to_string(r) + " of channel " + std::to_string(c) + " is not finite", where);
       }
     }
   }
@@ -69,11 +72,12 @@ Result<Eigen::MatrixXf> columnSamples(sqlite3_stmt* stmt, int first, const std::
   const std::int64_t count = sqlite3_column_int64(stmt, first + 1);
   const std::int64_t encoding = sqlite3_column_int64(stmt, first + 2);
   if (channels <= 0 || count <= 0 || channels > 65536 ||
-      static_cast<std::uint64_t>(count) > kMaxDecodedSampleBytes / sizeof(float) / static_cast<std::uint64_t>(channels)) {
-    return makeError(ErrorCode::Corrupt,
-                     "implausible record size: " + std::to_string(channels) + " channels x " + std::to_string(count) +
-                         " samples",
-                     where);
+      static_cast<std::uint64_t>(count) >
+          kMaxDecodedSampleBytes / sizeof(float) / static_cast<std::uint64_t>(channels)) {
+    return makeError(
+        ErrorCode::Corrupt,
+        "implausible record size: " + std::to_string(channels) + " channels x " + std::to_string(count) + " samples",
+        where);
   }
   if (encoding != 0 && encoding != 1) {
     return makeError(ErrorCode::Corrupt, "unknown sample encoding " + std::to_string(encoding), where);
@@ -141,8 +145,9 @@ Result<void> ProjectStore::setMesh(std::int64_t specimenId, const StoredMesh& me
   auto idOf = [&](int label, const char* what) -> Result<std::int64_t> {
     auto it = nodeIds.find(label);
     if (it == nodeIds.end()) {
-      return makeError(ErrorCode::InvalidArgument, std::string(what) + " names node " + std::to_string(label) +
-                                                       ", which is not in the mesh", where);
+      return makeError(ErrorCode::InvalidArgument,
+                       std::string(what) + " names node " + std::to_string(label) + ", which is not in the mesh",
+                       where);
     }
     return it->second;
   };
@@ -182,9 +187,10 @@ Result<StoredMesh> ProjectStore::mesh(std::int64_t specimenId) const {
   const std::string where = path_ + ", mesh of specimen " + std::to_string(specimenId);
   StoredMesh mesh;
   {
-    sql::Statement stmt(db_,
-                        "SELECT id, label, name, kind, origin_x_m, origin_y_m, origin_z_m, r11, r12, r13, r21, r22, r23,"
-                        " r31, r32, r33 FROM coordinate_system WHERE specimen_id = ?1 ORDER BY label");
+    sql::Statement stmt(
+        db_,
+        "SELECT id, label, name, kind, origin_x_m, origin_y_m, origin_z_m, r11, r12, r13, r21, r22, r23,"
+        " r31, r32, r33 FROM coordinate_system WHERE specimen_id = ?1 ORDER BY label");
     stmt.bind(1, specimenId);
     int rc;
     while ((rc = stmt.step()) == SQLITE_ROW) {
@@ -643,8 +649,8 @@ Result<FrfMatrix> ProjectStore::frfSet(std::int64_t frfSetId) const {
     if (!reference) return reference.error();
     r.response = *response;
     r.reference = *reference;
-    auto h = columnDoubles(stmt.get(), 6, 2 * lines, where + ", FRF " + formatDof(r.response) + "/" +
-                                                         formatDof(r.reference));
+    auto h = columnDoubles(stmt.get(), 6, 2 * lines,
+                           where + ", FRF " + formatDof(r.response) + "/" + formatDof(r.reference));
     if (!h) return h.error();
     r.h = std::move(*h);
     if (sqlite3_column_type(stmt.get(), 7) != SQLITE_NULL) {
@@ -691,8 +697,8 @@ Result<std::int64_t> ProjectStore::addModalResult(const ModalResultInfo& info, c
   for (std::size_t m = 0; m < table.modes.size(); ++m) {
     const auto& mode = table.modes[m];
     if (!finite(mode.frequencyHz) || mode.frequencyHz < 0 || !finite(mode.dampingRatio)) {
-      return makeError(ErrorCode::InvalidArgument, "mode " + std::to_string(m + 1) + " has an invalid frequency or damping",
-                       where);
+      return makeError(ErrorCode::InvalidArgument,
+                       "mode " + std::to_string(m + 1) + " has an invalid frequency or damping", where);
     }
     if (mode.shape.size() != 0 && mode.shape.size() != static_cast<Eigen::Index>(table.dofs.size())) {
       return makeError(ErrorCode::InvalidArgument,
@@ -713,8 +719,8 @@ Result<std::int64_t> ProjectStore::addModalResult(const ModalResultInfo& info, c
   res.bind(5, info.bandLowHz).bind(6, info.bandHighHz).bind(7, sql::nowUtc());
   if (res.step() != SQLITE_DONE) return sqliteError(db_, "cannot store the modal result", where);
   const std::int64_t id = sqlite3_last_insert_rowid(db_);
-  sql::Statement mode(db_,
-                      "INSERT INTO mode(modal_result_id, mode_index, frequency_hz, damping_ratio) VALUES (?1, ?2, ?3, ?4)");
+  sql::Statement mode(
+      db_, "INSERT INTO mode(modal_result_id, mode_index, frequency_hz, damping_ratio) VALUES (?1, ?2, ?3, ?4)");
   sql::Statement shape(db_,
                        "INSERT INTO mode_shape(mode_id, dof_index, dof_node, dof_direction, re, im)"
                        " VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
@@ -768,8 +774,8 @@ Result<ModalTable> ProjectStore::modalResult(std::int64_t modalResultId) const {
   ModalTable table;
   std::vector<std::int64_t> modeIds;
   {
-    sql::Statement stmt(db_,
-                        "SELECT id, frequency_hz, damping_ratio FROM mode WHERE modal_result_id = ?1 ORDER BY mode_index");
+    sql::Statement stmt(
+        db_, "SELECT id, frequency_hz, damping_ratio FROM mode WHERE modal_result_id = ?1 ORDER BY mode_index");
     stmt.bind(1, modalResultId);
     int rc;
     while ((rc = stmt.step()) == SQLITE_ROW) {
@@ -844,8 +850,8 @@ Result<StoredRigTest> ProjectStore::rigTest(std::int64_t rigTestId) const {
   const std::string where = path_ + ", rig test " + std::to_string(rigTestId);
   StoredRigTest t;
   {
-    sql::Statement stmt(db_,
-                        "SELECT id, specimen_id, rig_setup_id, kind, name, parameters_json FROM rig_test WHERE id = ?1");
+    sql::Statement stmt(
+        db_, "SELECT id, specimen_id, rig_setup_id, kind, name, parameters_json FROM rig_test WHERE id = ?1");
     stmt.bind(1, rigTestId);
     const int rc = stmt.step();
     if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, "no such rig test", where);
@@ -857,8 +863,8 @@ Result<StoredRigTest> ProjectStore::rigTest(std::int64_t rigTestId) const {
     t.name = sql::columnText(stmt.get(), 4);
     t.parametersJson = sql::columnText(stmt.get(), 5);
   }
-  sql::Statement stmt(db_,
-                      "SELECT quantity, value, unit, uncertainty FROM rig_test_result WHERE rig_test_id = ?1 ORDER BY id");
+  sql::Statement stmt(
+      db_, "SELECT quantity, value, unit, uncertainty FROM rig_test_result WHERE rig_test_id = ?1 ORDER BY id");
   stmt.bind(1, rigTestId);
   int rc;
   while ((rc = stmt.step()) == SQLITE_ROW) {
@@ -923,9 +929,10 @@ Result<std::int64_t> ProjectStore::addTyreTest(const StoredTyreTest& test) {
   stmt.bind(5, test.inflationPressurePa).bind(6, test.verticalLoadN).bind(7, test.speedMps).bind(8, sql::nowUtc());
   if (stmt.step() != SQLITE_DONE) return sqliteError(db_, "cannot store the tyre test", where);
   const std::int64_t id = sqlite3_last_insert_rowid(db_);
-  sql::Statement pt(db_,
-                    "INSERT INTO tyre_test_point(tyre_test_id, point_index, slip_angle_rad, camber_rad, lateral_force_n,"
-                    " aligning_moment_nm, overturning_moment_nm) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)");
+  sql::Statement pt(
+      db_,
+      "INSERT INTO tyre_test_point(tyre_test_id, point_index, slip_angle_rad, camber_rad, lateral_force_n,"
+      " aligning_moment_nm, overturning_moment_nm) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)");
   for (std::size_t k = 0; k < test.points.size(); ++k) {
     const auto& p = test.points[k];
     if (!finite(p.slipAngleRad) || !finite(p.camberRad) || !finite(p.lateralForceN) || !finite(p.aligningMomentNm) ||
@@ -937,8 +944,8 @@ Result<std::int64_t> ProjectStore::addTyreTest(const StoredTyreTest& test) {
     pt.bind(5, p.lateralForceN).bind(6, p.aligningMomentNm).bind(7, p.overturningMomentNm);
     if (pt.step() != SQLITE_DONE) return sqliteError(db_, "cannot store point " + std::to_string(k), where);
   }
-  sql::Statement par(db_,
-                     "INSERT INTO tyre_parameter(tyre_test_id, name, value, unit, uncertainty) VALUES (?1, ?2, ?3, ?4, ?5)");
+  sql::Statement par(
+      db_, "INSERT INTO tyre_parameter(tyre_test_id, name, value, unit, uncertainty) VALUES (?1, ?2, ?3, ?4, ?5)");
   for (const auto& p : test.parameters) {
     if (!finite(p.value) || !finite(p.uncertainty)) {
       return makeError(ErrorCode::InvalidArgument, "parameter '" + p.name + "' is not finite", where);
@@ -1034,10 +1041,11 @@ Result<std::int64_t> ProjectStore::addAnalysis(const StoredAnalysis& analysis) {
   stmt.bind(7, analysis.kind).bind(8, analysis.name).bind(9, analysis.resultJson).bind(10, sql::nowUtc());
   if (stmt.step() != SQLITE_DONE) return sqliteError(db_, "cannot store the analysis", where);
   const std::int64_t id = sqlite3_last_insert_rowid(db_);
-  sql::Statement f(db_,
-                   "INSERT INTO gap_finding(analysis_id, band_low_hz, band_high_hz, mode_index, dof_node, dof_direction,"
-                   " condition, effect, size, unit, uncertainty, remaining_gap)"
-                   " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12)");
+  sql::Statement f(
+      db_,
+      "INSERT INTO gap_finding(analysis_id, band_low_hz, band_high_hz, mode_index, dof_node, dof_direction,"
+      " condition, effect, size, unit, uncertainty, remaining_gap)"
+      " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12)");
   for (std::size_t k = 0; k < analysis.findings.size(); ++k) {
     const auto& g = analysis.findings[k];
     if (!finite(g.bandLowHz) || !finite(g.bandHighHz) || !finite(g.size) || !finite(g.uncertainty) ||
@@ -1067,9 +1075,10 @@ Result<StoredAnalysis> ProjectStore::analysis(std::int64_t analysisId) const {
     return sqlite3_column_int64(s, c);
   };
   {
-    sql::Statement stmt(db_,
-                        "SELECT id, specimen_id, model_id, frf_set_id, modal_result_id, rig_test_id, tyre_test_id, kind,"
-                        " name, result_json FROM analysis WHERE id = ?1");
+    sql::Statement stmt(
+        db_,
+        "SELECT id, specimen_id, model_id, frf_set_id, modal_result_id, rig_test_id, tyre_test_id, kind,"
+        " name, result_json FROM analysis WHERE id = ?1");
     stmt.bind(1, analysisId);
     const int rc = stmt.step();
     if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, "no such analysis", where);

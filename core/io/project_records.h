@@ -25,15 +25,15 @@ struct StoredCoordinateSystem {
   int label = 0;  // UFF coordinate-system number, unique per specimen
   std::string name;
   enum class Kind { Cartesian = 0, Cylindrical = 1, Spherical = 2 } kind = Kind::Cartesian;
-  Vector3 origin = Vector3::Zero();         // [m] in the global system
-  Matrix3 rotation = Matrix3::Identity();   // columns are the local axes in global coordinates
+  Vector3 origin = Vector3::Zero();        // [m] in the global system
+  Matrix3 rotation = Matrix3::Identity();  // columns are the local axes in global coordinates
 };
 
 struct StoredNode {
   std::int64_t id = 0;
-  int label = 0;                 // node number used by DOF labels ("21:+Z")
-  int definitionCs = 0;          // coordinate-system label the position is given in (0 = global)
-  int displacementCs = 0;        // coordinate-system label the DOF directions refer to (0 = global)
+  int label = 0;                       // node number used by DOF labels ("21:+Z")
+  int definitionCs = 0;                // coordinate-system label the position is given in (0 = global)
+  int displacementCs = 0;              // coordinate-system label the DOF directions refer to (0 = global)
   Vector3 position = Vector3::Zero();  // [m]
 };
 
@@ -58,21 +58,21 @@ struct StoredMesh {
 
 struct StoredTransducer {
   std::int64_t id = 0;
-  int channel = 0;            // acquisition channel, 0-based
-  std::string quantity;       // "force", "acceleration", "displacement", "velocity", "strain", ...
-  std::string unit;           // SI unit of the measured quantity, e.g. "N", "m/s^2"
-  double sensitivity = 1.0;   // [V per SI unit], > 0
+  int channel = 0;           // acquisition channel, 0-based
+  std::string quantity;      // "force", "acceleration", "displacement", "velocity", "strain", ...
+  std::string unit;          // SI unit of the measured quantity, e.g. "N", "m/s^2"
+  double sensitivity = 1.0;  // [V per SI unit], > 0
   std::string model;
   std::string serial;
-  std::optional<Dof> dof;     // where it measures, when fixed for the set-up
+  std::optional<Dof> dof;  // where it measures, when fixed for the set-up
 };
 
 struct StoredRigSetup {
   std::int64_t id = 0;
   std::int64_t specimenId = 0;
   std::string name;
-  std::string rigKind;       // "impact-hammer", "static-stiffness", "dynamic-stiffness", "tyre-drum", ...
-  std::string driver;        // device driver name, "sim:frame-a" for a simulated rig
+  std::string rigKind;                // "impact-hammer", "static-stiffness", "dynamic-stiffness", "tyre-drum", ...
+  std::string driver;                 // device driver name, "sim:frame-a" for a simulated rig
   std::string axisMapJson = "{}";     // how the rig's sensor axes map onto the mesh axes
   std::string parametersJson = "{}";  // driver parameters at the time of the test
   std::vector<StoredTransducer> transducers;
@@ -91,33 +91,33 @@ struct StoredCampaign {
 
 // Why a hit may be rejected; bits of StoredHit::qualityFlags.
 enum HitQualityFlag : std::uint32_t {
-  kHitOverload = 1u << 0,        // a channel reached the converter's range
-  kHitDoubleHit = 1u << 1,       // a second impact in the force window
-  kHitTruncated = 1u << 2,       // the response has not decayed by the end of the record
-  kHitLowSignal = 1u << 3,       // force or response near the noise floor
-  kHitLowCoherence = 1u << 4,    // coherence of the running average dropped
-  kHitManualReject = 1u << 5,    // the technician rejected it
+  kHitOverload = 1u << 0,      // a channel reached the converter's range
+  kHitDoubleHit = 1u << 1,     // a second impact in the force window
+  kHitTruncated = 1u << 2,     // the response has not decayed by the end of the record
+  kHitLowSignal = 1u << 3,     // force or response near the noise floor
+  kHitLowCoherence = 1u << 4,  // coherence of the running average dropped
+  kHitManualReject = 1u << 5,  // the technician rejected it
 };
 
 struct StoredHitChannel {
-  std::optional<Dof> dof;   // DOF this channel measured in this hit (roving sensors move)
-  std::string quantity;     // "force", "acceleration", ...
-  std::string unit;         // SI unit of the samples
+  std::optional<Dof> dof;  // DOF this channel measured in this hit (roving sensors move)
+  std::string quantity;    // "force", "acceleration", ...
+  std::string unit;        // SI unit of the samples
 };
 
 // One impact (or one block of a shaker run) with its raw time data.
 struct StoredHit {
   std::int64_t id = 0;
   std::int64_t campaignId = 0;
-  int sequence = 0;                  // hit number within the campaign, unique
-  Dof point;                         // measurement point of the hit (the roving DOF)
-  std::string recordedUtc;           // ISO 8601; filled with the commit time when empty
-  double sampleRateHz = 0.0;         // > 0
-  Eigen::MatrixXf samples;           // sampleCount x channelCount, SI units, column = channel
+  int sequence = 0;                        // hit number within the campaign, unique
+  Dof point;                               // measurement point of the hit (the roving DOF)
+  std::string recordedUtc;                 // ISO 8601; filled with the commit time when empty
+  double sampleRateHz = 0.0;               // > 0
+  Eigen::MatrixXf samples;                 // sampleCount x channelCount, SI units, column = channel
   std::vector<StoredHitChannel> channels;  // empty, or one per column of samples
   bool accepted = true;
-  std::uint32_t qualityFlags = 0;    // HitQualityFlag bits
-  std::string qualityReasons;        // the reasons in words, as shown to the technician
+  std::uint32_t qualityFlags = 0;  // HitQualityFlag bits
+  std::string qualityReasons;      // the reasons in words, as shown to the technician
 
   Eigen::Index sampleCount() const { return samples.rows(); }
   Eigen::Index channelCount() const { return samples.cols(); }
@@ -190,7 +190,7 @@ struct StoredRigTest {
   struct Result {
     std::string quantity;  // "lateral stiffness", "torsional stiffness", "twist axis height", ...
     double value = 0.0;
-    std::string unit;      // SI: "N/m", "N m/rad", "m"
+    std::string unit;          // SI: "N/m", "N m/rad", "m"
     double uncertainty = 0.0;  // one standard deviation, same unit; 0 when unknown
   };
   std::vector<Result> results;
@@ -206,17 +206,17 @@ struct StoredTyreTest {
   double verticalLoadN = 0.0;        // [N]
   double speedMps = 0.0;             // [m/s]
   struct Point {
-    double slipAngleRad = 0.0;       // [rad]
-    double camberRad = 0.0;          // [rad]
-    double lateralForceN = 0.0;      // Fy [N]
-    double aligningMomentNm = 0.0;   // Mz [N m]
+    double slipAngleRad = 0.0;         // [rad]
+    double camberRad = 0.0;            // [rad]
+    double lateralForceN = 0.0;        // Fy [N]
+    double aligningMomentNm = 0.0;     // Mz [N m]
     double overturningMomentNm = 0.0;  // Mx [N m]
   };
   std::vector<Point> points;
   struct Parameter {
-    std::string name;   // "cornering stiffness", "relaxation length", ...
+    std::string name;  // "cornering stiffness", "relaxation length", ...
     double value = 0.0;
-    std::string unit;   // SI
+    std::string unit;  // SI
     double uncertainty = 0.0;
   };
   std::vector<Parameter> parameters;

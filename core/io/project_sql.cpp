@@ -77,7 +77,9 @@ Statement::Statement(sqlite3* db, const char* sql) {
   }
 }
 
-Statement::~Statement() { sqlite3_finalize(stmt_); }
+Statement::~Statement() {
+  sqlite3_finalize(stmt_);
+}
 
 Statement& Statement::bind(int index, std::int64_t value) {
   sqlite3_bind_int64(stmt_, index, value);
@@ -109,7 +111,9 @@ Statement& Statement::bindDof(int index, const std::optional<Dof>& dof) {
   return bind(index, dof->node).bind(index + 1, dof->uffCode());
 }
 
-int Statement::step() { return stmt_ ? sqlite3_step(stmt_) : SQLITE_MISUSE; }
+int Statement::step() {
+  return stmt_ ? sqlite3_step(stmt_) : SQLITE_MISUSE;
+}
 
 void Statement::reset() {
   if (!stmt_) return;

@@ -20,7 +20,9 @@ using sql::exec;
 using sql::queryInt;
 using sql::sqliteError;
 
-int schemaVersionCount() { return static_cast<int>(projectMigrations().size()); }
+int schemaVersionCount() {
+  return static_cast<int>(projectMigrations().size());
+}
 
 // Applies migrations from the file's version to the current one, each in its
 // own transaction with user_version bumped inside it. The first migration also
@@ -49,9 +51,13 @@ Result<void> migrate(sqlite3* db, int fromVersion, const std::string& path, cons
 
 }  // namespace
 
-int ProjectStore::currentSchemaVersion() { return schemaVersionCount(); }
+int ProjectStore::currentSchemaVersion() {
+  return schemaVersionCount();
+}
 
-ProjectStore::ProjectStore(ProjectStore&& other) noexcept { *this = std::move(other); }
+ProjectStore::ProjectStore(ProjectStore&& other) noexcept {
+  *this = std::move(other);
+}
 
 ProjectStore& ProjectStore::operator=(ProjectStore&& other) noexcept {
   if (this != &other) {
@@ -66,7 +72,9 @@ ProjectStore& ProjectStore::operator=(ProjectStore&& other) noexcept {
   return *this;
 }
 
-ProjectStore::~ProjectStore() { close(); }
+ProjectStore::~ProjectStore() {
+  close();
+}
 
 void ProjectStore::close() {
   if (db_) sqlite3_close_v2(db_);

@@ -25,7 +25,7 @@ std::uint32_t sampleCrc32(const std::uint8_t* data, std::size_t size) {
 }
 
 Result<std::vector<std::uint8_t>> encodeSamples(const float* values, std::size_t count, SampleEncoding encoding,
-                                        int zlibLevel) {
+                                                int zlibLevel) {
   const std::size_t bytes = count * sizeof(float);
   const auto* raw = reinterpret_cast<const std::uint8_t*>(values);
   if (encoding == SampleEncoding::Raw) return std::vector<std::uint8_t>(raw, raw + bytes);
@@ -58,10 +58,9 @@ Result<std::vector<float>> decodeSamples(const std::uint8_t* blob, std::size_t b
   std::vector<float> values;
   if (encoding == SampleEncoding::Raw) {
     if (blobSize != bytes) {
-      return makeError(ErrorCode::Corrupt,
-                       "sample blob holds " + std::to_string(blobSize) + " bytes, the header says " +
-                           std::to_string(bytes),
-                       where);
+      return makeError(
+          ErrorCode::Corrupt,
+          "sample blob holds " + std::to_string(blobSize) + " bytes, the header says " + std::to_string(bytes), where);
     }
     values.resize(static_cast<std::size_t>(count));
     std::memcpy(values.data(), blob, bytes);

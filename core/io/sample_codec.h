@@ -26,7 +26,7 @@ std::uint32_t sampleCrc32(const std::uint8_t* data, std::size_t size);
 
 // Encodes `count` floats. zlibLevel 1 (fast) .. 9; ignored for Raw.
 Result<std::vector<std::uint8_t>> encodeSamples(const float* values, std::size_t count, SampleEncoding encoding,
-                                        int zlibLevel = 1);
+                                                int zlibLevel = 1);
 
 // Decodes a blob into exactly `count` floats, checking size and CRC. `where`
 // names the record for the error message.

@@ -14,17 +14,17 @@
 namespace mozzi::core::io {
 
 struct ExchangeChannel {
-  std::string name;          // as it appeared in the file, e.g. "accel 21:+Z"
-  std::optional<Dof> dof;    // from the name or the caller's channel map
-  std::string quantity;      // "force", "acceleration", "velocity", "displacement", "" if unknown
-  std::string unit;          // SI unit of the samples after import, e.g. "m/s^2"
+  std::string name;        // as it appeared in the file, e.g. "accel 21:+Z"
+  std::optional<Dof> dof;  // from the name or the caller's channel map
+  std::string quantity;    // "force", "acceleration", "velocity", "displacement", "" if unknown
+  std::string unit;        // SI unit of the samples after import, e.g. "m/s^2"
 };
 
 struct TimeTable {
   double sampleRateHz = 0.0;  // > 0
   double startTimeS = 0.0;    // time of the first sample [s]
   std::vector<ExchangeChannel> channels;
-  Matrix samples;             // sampleCount x channelCount, SI units
+  Matrix samples;  // sampleCount x channelCount, SI units
 };
 
 }  // namespace mozzi::core::io

@@ -34,12 +34,16 @@ double poleFrequencyHz(Complex pole);
 // Viscous damping ratio -Re(lambda) / |lambda|.
 double poleZeta(Complex pole);
 // Equivalent hysteretic loss factor eta = 2 zeta (thesis §6.4 uses zeta = eta / 2).
-inline double lossFactorFromZeta(double zeta) { return 2.0 * zeta; }
-inline double zetaFromLossFactor(double eta) { return 0.5 * eta; }
+inline double lossFactorFromZeta(double zeta) {
+  return 2.0 * zeta;
+}
+inline double zetaFromLossFactor(double eta) {
+  return 0.5 * eta;
+}
 
 struct Mode {
-  Complex pole;              // lambda_r [rad/s], Im > 0
-  ComplexMatrix residue;     // no x ni receptance residues R_{r,oi} [m/N * rad/s]
+  Complex pole;                 // lambda_r [rad/s], Im > 0
+  ComplexMatrix residue;        // no x ni receptance residues R_{r,oi} [m/N * rad/s]
   ComplexVector participation;  // ni-vector from the estimator (may be empty)
 
   double frequencyHz() const { return poleFrequencyHz(pole); }
@@ -64,8 +68,7 @@ struct ModalModel {
 
 // Value of one FRF of the model at angular frequency omega [rad/s], of `type`.
 // omega = 0 with a lower residual present is an error in receptance (division).
-Complex synthesize(const ModalModel& model, Eigen::Index response, Eigen::Index reference, double omega,
-                   FrfType type);
+Complex synthesize(const ModalModel& model, Eigen::Index response, Eigen::Index reference, double omega, FrfType type);
 
 // All FRFs of the model on the given frequency lines [Hz], as a FrfMatrix of `type`.
 Result<FrfMatrix> synthesizeFrf(const ModalModel& model, const VectorRef& frequencyHz, FrfType type);
@@ -91,9 +94,9 @@ struct SpatialModel {
 Result<SpatialModel> spatialFromModal(const ModalModel& model);
 
 struct HystereticModalModel {
-  Vector omega2;       // omega_r^2 [rad^2/s^2]
-  Vector eta;          // loss factors eta_r
-  ComplexMatrix phi;   // N x N mass-normalised mode shapes (complex for non-proportional D)
+  Vector omega2;      // omega_r^2 [rad^2/s^2]
+  Vector eta;         // loss factors eta_r
+  ComplexMatrix phi;  // N x N mass-normalised mode shapes (complex for non-proportional D)
 };
 
 // Thesis eq. 1: solve (K + i D) phi = lambda^2 M phi, lambda_r^2 = omega_r^2 (1 + i eta_r),

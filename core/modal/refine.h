@@ -28,11 +28,11 @@ struct RefineOptions {
 };
 
 struct RefineResult {
-  ModalModel model;                   // refined poles, residues and residual terms
-  std::vector<double> frequencyStdHz; // one standard error per mode [Hz]
-  std::vector<double> zetaStd;        // one standard error per mode (zeta; eta's is twice)
-  double initialRelativeError = 0.0;  // sqrt(SSR / sum |H|^2) before
-  double finalRelativeError = 0.0;    // and after
+  ModalModel model;                    // refined poles, residues and residual terms
+  std::vector<double> frequencyStdHz;  // one standard error per mode [Hz]
+  std::vector<double> zetaStd;         // one standard error per mode (zeta; eta's is twice)
+  double initialRelativeError = 0.0;   // sqrt(SSR / sum |H|^2) before
+  double finalRelativeError = 0.0;     // and after
   int iterations = 0;
 };
 

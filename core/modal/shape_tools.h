@@ -30,8 +30,8 @@ double mpc(const ComplexVectorRef& shape);
 double mpdDegrees(const ComplexVectorRef& shape);
 
 enum class Normalisation {
-  UnitModalMass,   // reference is a driving point: phi = 2 i omega_d R / sqrt(2 i omega_d R_dp)
-  MaxComponent,    // largest |component| = 1, real and positive
+  UnitModalMass,  // reference is a driving point: phi = 2 i omega_d R / sqrt(2 i omega_d R_dp)
+  MaxComponent,   // largest |component| = 1, real and positive
 };
 
 struct ShapeSet {

@@ -94,8 +94,10 @@ void RealFft::inverse(const std::complex<double>* in, double* out) const {
   if (scratchIn.size() < static_cast<std::size_t>(lineCount())) {
     scratchIn = AlignedBuffer<std::complex<double>>(static_cast<std::size_t>(lineCount()));
   }
-  if (scratchOut.size() < static_cast<std::size_t>(n_)) scratchOut = AlignedBuffer<double>(static_cast<std::size_t>(n_));
-  std::memcpy(static_cast<void*>(scratchIn.data()), in, sizeof(std::complex<double>) * static_cast<std::size_t>(lineCount()));
+  if (scratchOut.size() < static_cast<std::size_t>(n_))
+    scratchOut = AlignedBuffer<double>(static_cast<std::size_t>(n_));
+  std::memcpy(static_cast<void*>(scratchIn.data()), in,
+              sizeof(std::complex<double>) * static_cast<std::size_t>(lineCount()));
   fftw_execute_dft_c2r(static_cast<fftw_plan>(inversePlan_), reinterpret_cast<fftw_complex*>(scratchIn.data()),
                        scratchOut.data());
   std::memcpy(out, scratchOut.data(), sizeof(double) * static_cast<std::size_t>(n_));
@@ -118,7 +120,8 @@ void RealFft::forward(const double* in, std::complex<double>* out) const {
   }
   std::memcpy(scratchIn.data(), in, sizeof(double) * static_cast<std::size_t>(n_));
   fftw_execute_dft_r2c(plan, scratchIn.data(), reinterpret_cast<fftw_complex*>(scratchOut.data()));
-  std::memcpy(static_cast<void*>(out), scratchOut.data(), sizeof(std::complex<double>) * static_cast<std::size_t>(lineCount()));
+  std::memcpy(static_cast<void*>(out), scratchOut.data(),
+              sizeof(std::complex<double>) * static_cast<std::size_t>(lineCount()));
 }
 
 Result<ComplexVector> RealFft::transform(VectorRef x) const {

@@ -124,7 +124,8 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
   if (noise > 0.0) q.forceSnrDb = 20.0 * std::log10(absPeak / noise);
   if (quiet < 2) q.notes.push_back("too few pre-trigger samples: noise floor unknown");
 
-  const double trigger = options.triggerLevel.value_or(std::max(options.triggerFraction * absPeak, options.noiseFactor * noise));
+  const double trigger =
+      options.triggerLevel.value_or(std::max(options.triggerFraction * absPeak, options.noiseFactor * noise));
   for (Eigen::Index i = 0; i < n; ++i) {
     if (s[i] >= trigger) {
       q.triggerSample = i;
@@ -168,8 +169,8 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
     q.doubleHit = true;
     q.secondHitDelayS = static_cast<double>(second - peakIdx) / fs;
     q.secondHitRatio = secondPeak / absPeak;
-    q.reasons.push_back("double hit: second impact " + fmt("%.1f", 1e3 * *q.secondHitDelayS) + " ms after the first at " +
-                        fmt("%.0f", 100.0 * q.secondHitRatio) + "% of its peak");
+    q.reasons.push_back("double hit: second impact " + fmt("%.1f", 1e3 * *q.secondHitDelayS) +
+                        " ms after the first at " + fmt("%.0f", 100.0 * q.secondHitRatio) + "% of its peak");
   }
 
   // usable band from the energy spectrum of the main pulse: rectangular window
@@ -206,7 +207,8 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
     q.usableBand10dBHz = fallsTo(0.1);   // -10 dB in energy
     q.usableBand20dBHz = fallsTo(0.01);  // -20 dB
   }
-  if (!q.usableBand10dBHz) q.notes.push_back("force spectrum stays within 10 dB up to Nyquist (tip harder than needed)");
+  if (!q.usableBand10dBHz)
+    q.notes.push_back("force spectrum stays within 10 dB up to Nyquist (tip harder than needed)");
   if (options.minUsableBandHz > 0.0 && q.usableBand10dBHz && *q.usableBand10dBHz < options.minUsableBandHz) {
     q.reasons.push_back("usable band too narrow: force spectrum 10 dB down at " + fmt("%.0f", *q.usableBand10dBHz) +
                         " Hz, " + fmt("%.0f", options.minUsableBandHz) + " Hz needed (use a harder tip)");

@@ -98,7 +98,8 @@ Result<TimeRecord> synthesizeHammerHit(const LinearMdof& system, const HammerHit
   // then sampled at the DAQ rate.
   Matrix fine(nFine, rec.channelCount());
   fine.col(0) = forceFine.col(spec.excitedDof);
-  for (std::size_t j = 0; j < measured.size(); ++j) fine.col(static_cast<Eigen::Index>(j + 1)) = source->col(measured[j]);
+  for (std::size_t j = 0; j < measured.size(); ++j)
+    fine.col(static_cast<Eigen::Index>(j + 1)) = source->col(measured[j]);
   if (spec.oversampling > 1) {
     auto fft = RealFft::forLength(nFine);
     if (!fft) return fft.error();

@@ -25,21 +25,21 @@ struct HammerHitSpec {
   double sampleRateHz = 8192.0;
   Eigen::Index sampleCount = 32768;
   Eigen::Index preTriggerSamples = 256;
-  Eigen::Index oversampling = 8;        // simulation grid = sampleRateHz * oversampling
+  Eigen::Index oversampling = 8;  // simulation grid = sampleRateHz * oversampling
   double peakForceN = 100.0;
-  double pulseWidthS = 2e-3;            // half-sine contact time
-  Eigen::Index excitedDof = 0;          // index into the system's DOFs
+  double pulseWidthS = 2e-3;               // half-sine contact time
+  Eigen::Index excitedDof = 0;             // index into the system's DOFs
   std::vector<Eigen::Index> measuredDofs;  // response channels; empty = every DOF
   TransducerKind responseKind = TransducerKind::Acceleration;
-  double forceNoiseRms = 0.0;           // white noise added to the force channel [N]
-  double responseNoiseRms = 0.0;        // white noise added to each response [EU]
+  double forceNoiseRms = 0.0;     // white noise added to the force channel [N]
+  double responseNoiseRms = 0.0;  // white noise added to each response [EU]
   std::uint64_t seed = 1;
-  std::optional<double> secondHitDelayS;  // rebound: a second half-sine this long after the first
-  double secondHitFraction = 0.5;       // its peak relative to the first
-  double clipFraction = 0.0;            // > 0: channels clamped at this fraction of their peak |x|
+  std::optional<double> secondHitDelayS;   // rebound: a second half-sine this long after the first
+  double secondHitFraction = 0.5;          // its peak relative to the first
+  double clipFraction = 0.0;               // > 0: channels clamped at this fraction of their peak |x|
   std::vector<Eigen::Index> clipChannels;  // record channel indices to clip (0 = force); empty = all
-  std::vector<Dof> dofLabels;           // DOF of each system DOF; default node i+1, +Z
-  double fullScale = 0.0;               // copied to every channel (0 = unknown)
+  std::vector<Dof> dofLabels;              // DOF of each system DOF; default node i+1, +Z
+  double fullScale = 0.0;                  // copied to every channel (0 = unknown)
 };
 
 Result<TimeRecord> synthesizeHammerHit(const LinearMdof& system, const HammerHitSpec& spec);

@@ -8,7 +8,9 @@
 namespace mozzi::core::signal {
 
 namespace {
-bool allFinite(const MatrixRef& m) { return m.allFinite(); }
+bool allFinite(const MatrixRef& m) {
+  return m.allFinite();
+}
 }  // namespace
 
 Result<MdofResponse> simulateMdof(const LinearMdof& sys, const MatrixRef& force, double sampleRateHz, ForceHold hold,
@@ -27,7 +29,8 @@ Result<MdofResponse> simulateMdof(const LinearMdof& sys, const MatrixRef& force,
   }
   if (force.cols() != n) {
     return makeError(ErrorCode::InvalidArgument,
-                     "force has " + std::to_string(force.cols()) + " columns for " + std::to_string(n) + " DOFs", where);
+                     "force has " + std::to_string(force.cols()) + " columns for " + std::to_string(n) + " DOFs",
+                     where);
   }
   if (force.rows() < 1) return makeError(ErrorCode::InvalidArgument, "force history is empty", where);
   if (!allFinite(force)) return makeError(ErrorCode::InvalidArgument, "force holds NaN or infinite samples", where);
@@ -48,8 +51,8 @@ Result<MdofResponse> simulateMdof(const LinearMdof& sys, const MatrixRef& force,
   aug.block(0, n, n, n) = Matrix::Identity(n, n);
   aug.block(n, 0, n, n) = -mInv * sys.stiffness;
   aug.block(n, n, n, n) = -mInv * sys.damping;
-  aug.block(n, s, n, n) = mInv;                                   // B = [0; M^-1]
-  aug.block(s, s + n, n, n) = Matrix::Identity(n, n) / T;         // ramp generator
+  aug.block(n, s, n, n) = mInv;                            // B = [0; M^-1]
+  aug.block(s, s + n, n, n) = Matrix::Identity(n, n) / T;  // ramp generator
   const Matrix e = (aug * T).exp();
   const Matrix ad = e.block(0, 0, s, s);
   const Matrix g0 = e.block(0, s, s, n);

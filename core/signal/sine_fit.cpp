@@ -19,11 +19,13 @@ Result<void> checkInput(VectorRef y, double fs, const char* where) {
   }
   if (y.size() < 5) {
     return makeError(ErrorCode::InvalidArgument,
-                     "need at least 5 samples to fit a sine with uncertainties, got " + std::to_string(y.size()), where);
+                     "need at least 5 samples to fit a sine with uncertainties, got " + std::to_string(y.size()),
+                     where);
   }
   for (Eigen::Index i = 0; i < y.size(); ++i) {
     if (!std::isfinite(y[i])) {
-      return makeError(ErrorCode::InvalidArgument, "sample is NaN or infinite", std::string(where) + ", sample " + std::to_string(i));
+      return makeError(ErrorCode::InvalidArgument, "sample is NaN or infinite",
+                       std::string(where) + ", sample " + std::to_string(i));
     }
   }
   return {};
@@ -86,10 +88,10 @@ Result<SineFit> fitSineKnownFrequency(VectorRef y, double fs, double frequencyHz
   const char* where = "sine fit (known frequency)";
   if (auto ok = checkInput(y, fs, where); !ok) return ok.error();
   if (!std::isfinite(frequencyHz) || frequencyHz <= 0.0 || frequencyHz >= 0.5 * fs) {
-    return makeError(ErrorCode::InvalidArgument,
-                     "frequency " + std::to_string(frequencyHz) + " Hz must lie in (0, fs/2 = " + std::to_string(0.5 * fs) +
-                         ") Hz",
-                     where);
+    return makeError(
+        ErrorCode::InvalidArgument,
+        "frequency " + std::to_string(frequencyHz) + " Hz must lie in (0, fs/2 = " + std::to_string(0.5 * fs) + ") Hz",
+        where);
   }
   const Eigen::Index n = y.size();
   const double w = 2.0 * kPi * frequencyHz;
@@ -226,6 +228,8 @@ PhaseDifference phaseDifference(const SineFit& a, const SineFit& b) {
   return PhaseDifference{wrapPhase(a.phaseRad - b.phaseRad), std::hypot(a.phaseStdError, b.phaseStdError)};
 }
 
-double displacementPhaseFromVelocity(double velocityPhaseRad) { return wrapPhase(velocityPhaseRad - 0.5 * kPi); }
+double displacementPhaseFromVelocity(double velocityPhaseRad) {
+  return wrapPhase(velocityPhaseRad - 0.5 * kPi);
+}
 
 }  // namespace mozzi::core::signal

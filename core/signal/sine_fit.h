@@ -27,12 +27,12 @@ struct SineFit {
   double residualRms = 0.0;  // sqrt(RSS / n) [EU]
   double sigma = 0.0;        // sqrt(RSS / (n - p)), the noise estimate [EU]
   double amplitudeStdError = 0.0;
-  double phaseStdError = 0.0;      // [rad]
+  double phaseStdError = 0.0;  // [rad]
   double offsetStdError = 0.0;
   double frequencyStdError = 0.0;  // [Hz], 0 for a known frequency
   Eigen::Index sampleCount = 0;
-  int degreesOfFreedom = 0;        // n - p
-  double tQuantile95 = 0.0;        // Student t(0.975, n - p)
+  int degreesOfFreedom = 0;  // n - p
+  double tQuantile95 = 0.0;  // Student t(0.975, n - p)
 
   double amplitudeCi95() const { return tQuantile95 * amplitudeStdError; }  // half-widths
   double phaseCi95() const { return tQuantile95 * phaseStdError; }

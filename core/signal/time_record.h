@@ -21,7 +21,7 @@ const char* transducerKindName(TransducerKind kind);  // "force", "acceleration"
 
 struct Transducer {
   TransducerKind kind = TransducerKind::Other;
-  std::string model;                  // e.g. "PCB 086C03" (thesis §1.6 hammer)
+  std::string model;  // e.g. "PCB 086C03" (thesis §1.6 hammer)
   std::string serial;
   double sensitivityMvPerUnit = 1.0;  // mV per engineering unit, e.g. 10 mV/(m/s^2) for PCB M352C65 (§1.4)
   std::string unit;                   // engineering unit text, e.g. "N", "m/s^2"
@@ -31,15 +31,15 @@ struct Transducer {
 struct Channel {
   std::string name;
   Transducer transducer;
-  Dof dof;                            // measurement DOF: node + direction
-  double fullScale = 0.0;             // |EU| at which the DAQ range saturates; 0 = unknown
+  Dof dof;                 // measurement DOF: node + direction
+  double fullScale = 0.0;  // |EU| at which the DAQ range saturates; 0 = unknown
 };
 
 struct TimeRecord {
   double sampleRateHz = 0.0;
-  Eigen::Index preTriggerSamples = 0; // samples recorded before the trigger instant
+  Eigen::Index preTriggerSamples = 0;  // samples recorded before the trigger instant
   std::vector<Channel> channels;
-  Matrix samples;                     // n x channels, engineering units
+  Matrix samples;  // n x channels, engineering units
 
   Eigen::Index sampleCount() const { return samples.rows(); }
   Eigen::Index channelCount() const { return static_cast<Eigen::Index>(channels.size()); }

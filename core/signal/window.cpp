@@ -57,7 +57,8 @@ Result<Vector> makeWindow(const WindowSpec& spec, Eigen::Index n, double sampleR
         if (t <= spec.forceWidthS) continue;
         const double u = t - spec.forceWidthS;
         // half-cosine taper: 0.5 (1 + cos(pi u / taper)) for 0 < u < taper
-        w[i] = (spec.forceTaperS > 0.0 && u < spec.forceTaperS) ? 0.5 * (1.0 + std::cos(kPi * u / spec.forceTaperS)) : 0.0;
+        w[i] =
+            (spec.forceTaperS > 0.0 && u < spec.forceTaperS) ? 0.5 * (1.0 + std::cos(kPi * u / spec.forceTaperS)) : 0.0;
       }
       break;
     }
@@ -76,7 +77,9 @@ Result<Vector> makeWindow(const WindowSpec& spec, Eigen::Index n, double sampleR
   return w;
 }
 
-double exponentialWindowAddedDecayRate(double tauS) { return 1.0 / tauS; }
+double exponentialWindowAddedDecayRate(double tauS) {
+  return 1.0 / tauS;
+}
 
 namespace {
 Result<void> checkPole(const PoleEstimate& p, double tauS, const char* where) {
@@ -103,7 +106,7 @@ Result<PoleEstimate> correctExponentialWindowDamping(const PoleEstimate& measure
   if (auto ok = checkPole(measured, tauS, where); !ok) return ok.error();
   const double omegaM = 2.0 * kPi * measured.naturalFrequencyHz;
   const double sigma = measured.zeta * omegaM - exponentialWindowAddedDecayRate(tauS);  // sigma_true = sigma_m - 1/tau
-  const double omegaD = omegaM * std::sqrt(1.0 - measured.zeta * measured.zeta);       // unchanged by the window
+  const double omegaD = omegaM * std::sqrt(1.0 - measured.zeta * measured.zeta);        // unchanged by the window
   if (sigma <= 0.0) {
     return makeError(ErrorCode::NumericalFailure,
                      "identified decay rate " + std::to_string(measured.zeta * omegaM) +

@@ -24,7 +24,8 @@ Result<Decomposition> decomposeStiffness(const DecompositionInput& in) {
     return makeError(ErrorCode::InvalidArgument, "non-finite input", where);
   }
   if (!(in.twistStiffness > 0.0)) {
-    return makeError(ErrorCode::InvalidArgument, "twist stiffness must be > 0, got " + formatNumber(in.twistStiffness), where);
+    return makeError(ErrorCode::InvalidArgument, "twist stiffness must be > 0, got " + formatNumber(in.twistStiffness),
+                     where);
   }
   if (in.twistArm == 0.0 || in.bendArm == 0.0 || in.torsArm == 0.0) {
     return makeError(ErrorCode::InvalidArgument,

@@ -214,7 +214,8 @@ Result<ModalAxis> modalTwistAxis(const FrfMatrix& frf, const std::vector<int>& r
   o.plane.sigmaFloor = 0.0;
   auto axis = phasorTwistAxis(points, out.receptance, loadPoint, o);
   if (!axis)
-    return makeError(axis.error().code, axis.error().message, "modal twist axis at " + formatNumber(frequencyHz) + " Hz");
+    return makeError(axis.error().code, axis.error().message,
+                     "modal twist axis at " + formatNumber(frequencyHz) + " Hz");
   out.axis = std::move(*axis);
   return out;
 }

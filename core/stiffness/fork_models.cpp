@@ -159,10 +159,10 @@ Result<BicycleBending> bicycleForkBending(const BicycleForkParameters& p, double
   }
   const double h = std::sqrt(num / den);
   if (h > p.maxBendArm) {
-    return makeError(
-        ErrorCode::NumericalFailure,
-        "the stiffness curves meet at h_W = " + formatNumber(h) + " m, beyond the fixing point (" + formatNumber(p.maxBendArm) + " m)",
-        where);
+    return makeError(ErrorCode::NumericalFailure,
+                     "the stiffness curves meet at h_W = " + formatNumber(h) + " m, beyond the fixing point (" +
+                         formatNumber(p.maxBendArm) + " m)",
+                     where);
   }
   BicycleBending out;
   out.bendArm = h;

@@ -119,7 +119,8 @@ Result<TwistAxis> axisFromPlane(const PlaneFit& plane, const Vector2& reference,
   }
   if (!(g > options.minRotationSnr * thetaSigma) || g == 0.0) {
     return makeError(ErrorCode::NumericalFailure,
-                     "the plate rotation (" + formatNumber(g) + ") is not resolved above its uncertainty (" + formatNumber(thetaSigma) +
+                     "the plate rotation (" + formatNumber(g) + ") is not resolved above its uncertainty (" +
+                         formatNumber(thetaSigma) +
                          "): the loaded plane is parallel to the unloaded one within the sensor noise (pure "
                          "translation, displacements at the sensor resolution), so the twist axis is at infinity",
                      "twist axis: plane intersection (eq. 6)");
@@ -158,8 +159,9 @@ Result<TwistAxis> axisFromPlane(const PlaneFit& plane, const Vector2& reference,
     note += "axis inclination uncertain (sigma " + formatNumber(out.axis.betaSigma * 180.0 / kPi) + " deg); ";
   }
   if (out.axis.offsetSigma > options.maxOffsetSigmaRelative * plane.layoutSize) {
-    note += "axis position uncertain (sigma " + formatNumber(out.axis.offsetSigma * 1e3) + " mm at the reference point, " +
-            formatNumber(out.axis.offsetSigma / plane.layoutSize) + " of the sensor layout size); ";
+    note += "axis position uncertain (sigma " + formatNumber(out.axis.offsetSigma * 1e3) +
+            " mm at the reference point, " + formatNumber(out.axis.offsetSigma / plane.layoutSize) +
+            " of the sensor layout size); ";
   }
   if (!note.empty()) {
     out.lowConfidence = true;
@@ -304,8 +306,8 @@ Result<StaticTwistResult> staticTwistTest(const std::vector<Vector2>& points, co
   }
   if (reg->slope < 3.0 * reg->slopeSe) {
     return makeError(ErrorCode::NumericalFailure,
-                     "the load-point displacement is not resolved above the noise (slope " + formatNumber(reg->slope) + " +- " +
-                         formatNumber(reg->slopeSe) + " m/N)",
+                     "the load-point displacement is not resolved above the noise (slope " + formatNumber(reg->slope) +
+                         " +- " + formatNumber(reg->slopeSe) + " m/N)",
                      "static twist test: load point");
   }
   out.lateralStiffness = 1.0 / reg->slope;
@@ -347,7 +349,8 @@ Result<StaticTwistResult> staticTwistTest(const std::vector<Vector2>& points, co
     const double rel = std::abs(out.positiveBranchStiffness - out.negativeBranchStiffness) / out.lateralStiffness;
     if (rel > options.branchTolerance) {
       out.linear = false;
-      note += "positive and negative load branches differ by " + formatNumber(100 * rel) + "% (play or contact change); ";
+      note +=
+          "positive and negative load branches differ by " + formatNumber(100 * rel) + "% (play or contact change); ";
     }
   }
   if (out.axis.lowConfidence) note += out.axis.note + "; ";
@@ -371,8 +374,8 @@ Result<StaticTwistResult> staticTwistSingleLoad(const std::vector<Vector2>& poin
   const double xlat = axis->plane.evaluate(loadPoint);
   if (!(xlat / force > 0.0)) {
     return makeError(ErrorCode::NumericalFailure,
-                     "the load point moves against the force (x_lat = " + formatNumber(xlat) + " m, F = " + formatNumber(force) +
-                         " N): check the sign convention",
+                     "the load point moves against the force (x_lat = " + formatNumber(xlat) +
+                         " m, F = " + formatNumber(force) + " N): check the sign convention",
                      "static twist: load point");
   }
   out.lateralStiffness = force / xlat;  // eq. 29

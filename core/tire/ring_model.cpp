@@ -114,7 +114,8 @@ Result<RingModel> ringModelFromStiffness(const std::vector<RingStiffnessInput>& 
                           if (!std::isfinite(mi.modalStiffness) || mi.modalStiffness <= 0.0)
                             return "modal stiffness must be positive";
                           m.modalStiffness = mi.modalStiffness;
-                          m.naturalFrequencyHz = std::sqrt(m.modalStiffness / m.modalMass) / (2.0 * kPi);  // eq. 46 inverted
+                          m.naturalFrequencyHz =
+                              std::sqrt(m.modalStiffness / m.modalMass) / (2.0 * kPi);  // eq. 46 inverted
                           return nullptr;
                         });
 }

@@ -39,10 +39,12 @@ core::Result<AcquisitionConfig> validateConfig(const Capabilities& caps, const A
                                  std::to_string(caps.inputs.size()) + ")",
                              where);
     if (!seen.insert(ch.input).second)
-      return core::makeError(core::ErrorCode::InvalidArgument, "input " + std::to_string(ch.input) + " is configured twice", where);
+      return core::makeError(core::ErrorCode::InvalidArgument,
+                             "input " + std::to_string(ch.input) + " is configured twice", where);
     const auto& spec = caps.inputs[static_cast<std::size_t>(ch.input)];
     if (!findRange(spec, ch.rangeCode))
-      return core::makeError(core::ErrorCode::InvalidArgument, "range code " + std::to_string(ch.rangeCode) + " is not offered by " + spec.name, where);
+      return core::makeError(core::ErrorCode::InvalidArgument,
+                             "range code " + std::to_string(ch.rangeCode) + " is not offered by " + spec.name, where);
     if (std::find(spec.couplings.begin(), spec.couplings.end(), ch.coupling) == spec.couplings.end())
       return core::makeError(core::ErrorCode::InvalidArgument,
                              std::string(couplingName(ch.coupling)) + " coupling is not available at " + spec.name +
@@ -69,14 +71,16 @@ core::Result<AcquisitionConfig> validateConfig(const Capabilities& caps, const A
                                std::to_string(caps.rates.maxAggregateHz) + " S/s",
                            "sample rate");
   if (requested.blockScans < 0 || requested.scanCount < 0)
-    return core::makeError(core::ErrorCode::InvalidArgument, "block size and scan count must not be negative", "blocks");
+    return core::makeError(core::ErrorCode::InvalidArgument, "block size and scan count must not be negative",
+                           "blocks");
   if (applied.blockScans == 0)  // about 50 ms of data per block, at least one scan
     applied.blockScans = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::ceil(0.05 * *rate)));
   auto params = applyParameters(caps.parameters, requested.parameters);
   if (!params) return params.error();
   applied.parameters = *params;
   // Inputs in ascending order: the order in which scanning devices send them.
-  std::sort(applied.channels.begin(), applied.channels.end(), [](const ChannelConfig& a, const ChannelConfig& b) { return a.input < b.input; });
+  std::sort(applied.channels.begin(), applied.channels.end(),
+            [](const ChannelConfig& a, const ChannelConfig& b) { return a.input < b.input; });
   return applied;
 }
 
@@ -94,7 +98,8 @@ std::vector<ChannelChain> chainsFor(const Capabilities& caps, const AcquisitionC
   return chains;
 }
 
-std::vector<OverloadEvent> detectOverloads(const DataBlock& block, const std::vector<ChannelChain>& chains, std::int64_t threshold) {
+std::vector<OverloadEvent> detectOverloads(const DataBlock& block, const std::vector<ChannelChain>& chains,
+                                           std::int64_t threshold) {
   std::vector<OverloadEvent> events;
   const std::size_t nc = chains.size();
   if (nc == 0) return events;
@@ -116,14 +121,19 @@ void StreamCollector::push(StreamEvent&& e) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (end_) eventAfterEnd_ = true;
-    if (auto* h = std::get_if<StreamHeader>(&e)) header_ = std::move(*h);
+    if (auto* h = std::get_if<StreamHeader>(&e))
+      header_ = std::move(*h);
     else if (auto* b = std::get_if<DataBlock>(&e)) {
       scans_ += b->scanCount();
       blocks_.push_back(std::move(*b));
-    } else if (auto* o = std::get_if<OverrunEvent>(&e)) overruns_.push_back(*o);
-    else if (auto* l = std::get_if<OverloadEvent>(&e)) overloads_.push_back(*l);
-    else if (auto* t = std::get_if<TriggerEvent>(&e)) triggers_.push_back(*t);
-    else if (auto* s = std::get_if<StreamEnd>(&e)) end_ = *s;
+    } else if (auto* o = std::get_if<OverrunEvent>(&e))
+      overruns_.push_back(*o);
+    else if (auto* l = std::get_if<OverloadEvent>(&e))
+      overloads_.push_back(*l);
+    else if (auto* t = std::get_if<TriggerEvent>(&e))
+      triggers_.push_back(*t);
+    else if (auto* s = std::get_if<StreamEnd>(&e))
+      end_ = *s;
   }
   cv_.notify_all();
 }
@@ -138,12 +148,30 @@ bool StreamCollector::waitForScans(std::int64_t scans, std::chrono::milliseconds
   return cv_.wait_for(lock, timeout, [&] { return scans_ >= scans || end_.has_value(); }) && scans_ >= scans;
 }
 
-std::optional<StreamHeader> StreamCollector::header() const { std::lock_guard<std::mutex> l(mutex_); return header_; }
-std::optional<StreamEnd> StreamCollector::end() const { std::lock_guard<std::mutex> l(mutex_); return end_; }
-std::vector<OverrunEvent> StreamCollector::overruns() const { std::lock_guard<std::mutex> l(mutex_); return overruns_; }
-std::vector<OverloadEvent> StreamCollector::overloads() const { std::lock_guard<std::mutex> l(mutex_); return overloads_; }
-std::vector<TriggerEvent> StreamCollector::triggers() const { std::lock_guard<std::mutex> l(mutex_); return triggers_; }
-std::int64_t StreamCollector::scans() const { std::lock_guard<std::mutex> l(mutex_); return scans_; }
+std::optional<StreamHeader> StreamCollector::header() const {
+  std::lock_guard<std::mutex> l(mutex_);
+  return header_;
+}
+std::optional<StreamEnd> StreamCollector::end() const {
+  std::lock_guard<std::mutex> l(mutex_);
+  return end_;
+}
+std::vector<OverrunEvent> StreamCollector::overruns() const {
+  std::lock_guard<std::mutex> l(mutex_);
+  return overruns_;
+}
+std::vector<OverloadEvent> StreamCollector::overloads() const {
+  std::lock_guard<std::mutex> l(mutex_);
+  return overloads_;
+}
+std::vector<TriggerEvent> StreamCollector::triggers() const {
+  std::lock_guard<std::mutex> l(mutex_);
+  return triggers_;
+}
+std::int64_t StreamCollector::scans() const {
+  std::lock_guard<std::mutex> l(mutex_);
+  return scans_;
+}
 
 core::Matrix StreamCollector::values() const {
   std::lock_guard<std::mutex> l(mutex_);

@@ -22,22 +22,22 @@
 namespace mozzi::devices {
 
 struct ChannelConfig {
-  int input = 0;                   // device input index (AI0 = 0)
-  std::string name;                // "hammer", "acc 21:+Z"
-  std::uint8_t rangeCode = 0;      // one of the input's ranges (InputRange::code)
+  int input = 0;               // device input index (AI0 = 0)
+  std::string name;            // "hammer", "acc 21:+Z"
+  std::uint8_t rangeCode = 0;  // one of the input's ranges (InputRange::code)
   Coupling coupling = Coupling::Dc;
-  bool iepe = false;               // ask the device for IEPE supply (only where it has one)
-  double conditionerGain = 1.0;    // external conditioner gain, V/V
+  bool iepe = false;             // ask the device for IEPE supply (only where it has one)
+  double conditionerGain = 1.0;  // external conditioner gain, V/V
   core::signal::Transducer transducer;
   core::Dof dof;
 };
 
 struct AcquisitionConfig {
-  double sampleRateHz = 0.0;           // per channel; configure() returns the quantised rate
+  double sampleRateHz = 0.0;  // per channel; configure() returns the quantised rate
   std::vector<ChannelConfig> channels;
-  std::int64_t blockScans = 0;         // scans per data block; 0 = driver default (~50 ms)
-  std::int64_t scanCount = 0;          // total scans; 0 = continuous until stop()
-  ParameterMap parameters;             // rig-specific, validated against Capabilities::parameters
+  std::int64_t blockScans = 0;  // scans per data block; 0 = driver default (~50 ms)
+  std::int64_t scanCount = 0;   // total scans; 0 = continuous until stop()
+  ParameterMap parameters;      // rig-specific, validated against Capabilities::parameters
 };
 
 // Checks a configuration against capabilities: at least one channel, inputs
@@ -51,36 +51,36 @@ core::Result<AcquisitionConfig> validateConfig(const Capabilities& caps, const A
 std::vector<ChannelChain> chainsFor(const Capabilities& caps, const AcquisitionConfig& config);
 
 struct StreamHeader {
-  double sampleRateHz = 0.0;                 // actual rate per channel
+  double sampleRateHz = 0.0;                    // actual rate per channel
   std::vector<core::signal::Channel> channels;  // name, transducer (unit), DOF, full scale [EU]
   std::chrono::system_clock::time_point startTime;
-  std::string device;                        // descriptor label
+  std::string device;  // descriptor label
 };
 
 struct DataBlock {
-  std::int64_t firstSample = 0;              // index of the first scan since start
-  std::vector<std::int32_t> raw;             // scans x channels, scan-interleaved, codes as sent
-  core::Matrix values;                       // scans x channels [EU] after the calibration pipeline
+  std::int64_t firstSample = 0;   // index of the first scan since start
+  std::vector<std::int32_t> raw;  // scans x channels, scan-interleaved, codes as sent
+  core::Matrix values;            // scans x channels [EU] after the calibration pipeline
   Eigen::Index scanCount() const { return values.rows(); }
 };
 
 struct OverloadEvent {
-  std::int64_t firstSample = 0;              // block in which it happened
-  int channel = 0;                           // index into the header's channels
-  std::int64_t samplesAtFullScale = 0;       // >= 3 in this block
+  std::int64_t firstSample = 0;         // block in which it happened
+  int channel = 0;                      // index into the header's channels
+  std::int64_t samplesAtFullScale = 0;  // >= 3 in this block
 };
 
 struct OverrunEvent {
-  std::int64_t atSample = 0;                 // next sample index expected when it happened
-  std::int64_t lostScans = -1;               // -1 = unknown (the device cleared its FIFO)
-  bool recovered = false;                    // the driver restarted the scan
+  std::int64_t atSample = 0;    // next sample index expected when it happened
+  std::int64_t lostScans = -1;  // -1 = unknown (the device cleared its FIFO)
+  bool recovered = false;       // the driver restarted the scan
   std::string detail;
 };
 
 struct TriggerEvent {
-  std::int64_t sample = 0;                   // sample index of the trigger instant
+  std::int64_t sample = 0;  // sample index of the trigger instant
   int channel = 0;
-  double level = 0.0;                        // [EU]
+  double level = 0.0;  // [EU]
 };
 
 enum class EndReason { Completed, Stopped, Disconnected, Timeout, Overrun, Error };
@@ -88,7 +88,7 @@ const char* endReasonName(EndReason reason);
 
 struct StreamEnd {
   EndReason reason = EndReason::Completed;
-  std::int64_t samplesDelivered = 0;         // scans handed on before the end
+  std::int64_t samplesDelivered = 0;  // scans handed on before the end
   std::string message;
 };
 

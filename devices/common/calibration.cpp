@@ -44,10 +44,12 @@ core::Result<void> validateChain(const ChannelChain& chain, const std::string& w
   auto bad = [&](const std::string& m) { return core::makeError(core::ErrorCode::InvalidArgument, m, where); };
   if (!(chain.range.maxVolts > chain.range.minVolts)) return bad("the input range is empty");
   if (chain.resolutionBits < 1 || chain.resolutionBits > 24) return bad("the ADC resolution must be 1 to 24 bits");
-  if (!std::isfinite(chain.conditionerGain) || chain.conditionerGain <= 0.0) return bad("the conditioner gain must be positive");
+  if (!std::isfinite(chain.conditionerGain) || chain.conditionerGain <= 0.0)
+    return bad("the conditioner gain must be positive");
   if (!std::isfinite(chain.transducer.sensitivityMvPerUnit) || chain.transducer.sensitivityMvPerUnit <= 0.0)
     return bad("the transducer sensitivity must be positive (mV per engineering unit)");
-  if (!std::isfinite(chain.calibration.slope) || chain.calibration.slope == 0.0 || !std::isfinite(chain.calibration.intercept))
+  if (!std::isfinite(chain.calibration.slope) || chain.calibration.slope == 0.0 ||
+      !std::isfinite(chain.calibration.intercept))
     return bad("the device calibration slope must be finite and non-zero");
   return {};
 }

@@ -23,15 +23,15 @@ struct ChannelChain {
   InputRange range;
   DeviceCalibration calibration;
   int resolutionBits = 16;
-  double conditionerGain = 1.0;          // V at the DAQ per V from the sensor (IEPE conditioner gain)
-  core::signal::Transducer transducer;   // sensitivity mV/EU and unit
+  double conditionerGain = 1.0;         // V at the DAQ per V from the sensor (IEPE conditioner gain)
+  core::signal::Transducer transducer;  // sensitivity mV/EU and unit
 
   std::int32_t maxCode() const { return (std::int32_t{1} << resolutionBits) - 1; }
 
   // Calibrated code, rounded half away from zero and clamped to [0, maxCode].
   std::int32_t correctedCode(std::int32_t raw) const;
-  double voltsFromCode(std::int32_t corrected) const;        // at the DAQ input [V]
-  double engineeringFromVolts(double daqVolts) const;        // [EU]
+  double voltsFromCode(std::int32_t corrected) const;  // at the DAQ input [V]
+  double engineeringFromVolts(double daqVolts) const;  // [EU]
   double engineeringFromRaw(std::int32_t raw) const { return engineeringFromVolts(voltsFromCode(correctedCode(raw))); }
   // Inverse path for simulators: the raw code a device with this calibration
   // would send for a physical value [EU] (quantised, clamped at full scale).

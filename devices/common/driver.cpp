@@ -16,7 +16,8 @@ std::string DeviceDescriptor::label() const {
 core::Result<void> DriverRegistry::add(std::unique_ptr<Driver> driver) {
   if (!driver) return core::makeError(core::ErrorCode::InvalidArgument, "no driver given", "driver registry");
   if (find(driver->name()))
-    return core::makeError(core::ErrorCode::InvalidArgument, "a driver with this name is already registered", "driver " + driver->name());
+    return core::makeError(core::ErrorCode::InvalidArgument, "a driver with this name is already registered",
+                           "driver " + driver->name());
   drivers_.push_back(std::move(driver));
   return {};
 }
@@ -48,7 +49,9 @@ std::vector<DeviceDescriptor> DriverRegistry::scanAll(std::vector<std::string>* 
 
 core::Result<std::unique_ptr<Device>> DriverRegistry::create(const DeviceDescriptor& descriptor) const {
   Driver* d = find(descriptor.driver);
-  if (!d) return core::makeError(core::ErrorCode::NotFound, "no driver with this name is registered", "driver " + descriptor.driver);
+  if (!d)
+    return core::makeError(core::ErrorCode::NotFound, "no driver with this name is registered",
+                           "driver " + descriptor.driver);
   return d->create(descriptor);
 }
 

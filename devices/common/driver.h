@@ -15,9 +15,9 @@
 namespace mozzi::devices {
 
 struct DeviceDescriptor {
-  std::string driver;         // registry key, e.g. "mcc-usb1608fsplus", "sim-hammer"
-  std::string model;          // "MCC USB-1608FS-Plus"
-  std::uint16_t vendorId = 0; // USB VID:PID (0 for simulated rigs)
+  std::string driver;          // registry key, e.g. "mcc-usb1608fsplus", "sim-hammer"
+  std::string model;           // "MCC USB-1608FS-Plus"
+  std::uint16_t vendorId = 0;  // USB VID:PID (0 for simulated rigs)
   std::uint16_t productId = 0;
   std::string serial;
   std::string busPath;        // "usb:1.2" (bus.address), "sim:0"

@@ -24,8 +24,12 @@ core::Error bad(const ParameterSpec& spec, const std::string& what) {
 
 core::Result<void> checkBounds(const ParameterSpec& spec, double v) {
   if (!std::isfinite(v)) return bad(spec, "value is not finite");
-  if (spec.min && v < *spec.min) return bad(spec, "value " + std::to_string(v) + " is below the minimum " + std::to_string(*spec.min) + " " + spec.unit);
-  if (spec.max && v > *spec.max) return bad(spec, "value " + std::to_string(v) + " is above the maximum " + std::to_string(*spec.max) + " " + spec.unit);
+  if (spec.min && v < *spec.min)
+    return bad(spec,
+               "value " + std::to_string(v) + " is below the minimum " + std::to_string(*spec.min) + " " + spec.unit);
+  if (spec.max && v > *spec.max)
+    return bad(spec,
+               "value " + std::to_string(v) + " is above the maximum " + std::to_string(*spec.max) + " " + spec.unit);
   return {};
 }
 
@@ -44,9 +48,12 @@ core::Result<ParameterValue> validateParameter(const ParameterSpec& spec, const 
     }
     case ParameterType::Real: {
       double v = 0.0;
-      if (std::holds_alternative<double>(value)) v = std::get<double>(value);
-      else if (std::holds_alternative<std::int64_t>(value)) v = static_cast<double>(std::get<std::int64_t>(value));
-      else return bad(spec, "expected a number");
+      if (std::holds_alternative<double>(value))
+        v = std::get<double>(value);
+      else if (std::holds_alternative<std::int64_t>(value))
+        v = static_cast<double>(std::get<std::int64_t>(value));
+      else
+        return bad(spec, "expected a number");
       auto ok = checkBounds(spec, v);
       if (!ok) return ok.error();
       return ParameterValue(v);
@@ -70,7 +77,8 @@ core::Result<ParameterMap> applyParameters(const std::vector<ParameterSpec>& spe
   for (const auto& [key, value] : values) {
     auto it = std::find_if(specs.begin(), specs.end(), [&](const ParameterSpec& s) { return s.key == key; });
     if (it == specs.end())
-      return core::makeError(core::ErrorCode::InvalidArgument, "the device has no parameter with this key", "parameter " + key);
+      return core::makeError(core::ErrorCode::InvalidArgument, "the device has no parameter with this key",
+                             "parameter " + key);
     auto v = validateParameter(*it, value);
     if (!v) return v.error();
     applied[key] = *v;

@@ -21,15 +21,15 @@ const char* parameterTypeName(ParameterType type);  // "bool", "integer", ...
 using ParameterValue = std::variant<bool, std::int64_t, double, std::string>;
 
 struct ParameterSpec {
-  std::string key;          // stable identifier, e.g. "fault.double_hit_probability"
-  std::string label;        // short English label (views translate)
+  std::string key;    // stable identifier, e.g. "fault.double_hit_probability"
+  std::string label;  // short English label (views translate)
   ParameterType type = ParameterType::Real;
-  std::string unit;         // SI unit text, e.g. "Hz", "N", "" for none
+  std::string unit;           // SI unit text, e.g. "Hz", "N", "" for none
   std::optional<double> min;  // inclusive bounds for Integer and Real
   std::optional<double> max;
   std::vector<std::string> choices;  // for Choice
   ParameterValue defaultValue = 0.0;
-  std::string help;         // one sentence: what it does and where the default comes from
+  std::string help;  // one sentence: what it does and where the default comes from
 };
 
 using ParameterMap = std::map<std::string, ParameterValue>;

@@ -5,11 +5,15 @@
 namespace mozzi::devices {
 
 core::Result<SoftwareTrigger> SoftwareTrigger::create(const SoftwareTriggerConfig& config, int channelCount) {
-  auto bad = [](const std::string& m) { return core::makeError(core::ErrorCode::InvalidArgument, m, "software trigger"); };
+  auto bad = [](const std::string& m) {
+    return core::makeError(core::ErrorCode::InvalidArgument, m, "software trigger");
+  };
   if (channelCount <= 0) return bad("the stream has no channels");
-  if (config.channel < 0 || config.channel >= channelCount) return bad("trigger channel " + std::to_string(config.channel) + " does not exist");
+  if (config.channel < 0 || config.channel >= channelCount)
+    return bad("trigger channel " + std::to_string(config.channel) + " does not exist");
   if (config.recordScans <= 0) return bad("the record length must be at least one scan");
-  if (!(config.preTriggerFraction >= 0.0 && config.preTriggerFraction < 1.0)) return bad("the pre-trigger fraction must be in [0, 1)");
+  if (!(config.preTriggerFraction >= 0.0 && config.preTriggerFraction < 1.0))
+    return bad("the pre-trigger fraction must be in [0, 1)");
   if (config.holdOffScans < 0) return bad("the hold-off must not be negative");
   if (!std::isfinite(config.level)) return bad("the trigger level must be finite");
   if (!config.fullScale.empty() && static_cast<int>(config.fullScale.size()) != channelCount)

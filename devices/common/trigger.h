@@ -27,13 +27,13 @@ namespace mozzi::devices {
 enum class TriggerSlope { Rising, Falling, Either };
 
 struct SoftwareTriggerConfig {
-  int channel = 0;                 // column of the blocks
-  double level = 0.0;              // [EU]
+  int channel = 0;     // column of the blocks
+  double level = 0.0;  // [EU]
   TriggerSlope slope = TriggerSlope::Rising;
-  std::int64_t recordScans = 0;    // > 0
-  double preTriggerFraction = 0.1; // [0, 1)
-  std::int64_t holdOffScans = 0;   // after the end of a record
-  std::vector<double> fullScale;   // |EU| per channel (empty: no overload check)
+  std::int64_t recordScans = 0;     // > 0
+  double preTriggerFraction = 0.1;  // [0, 1)
+  std::int64_t holdOffScans = 0;    // after the end of a record
+  std::vector<double> fullScale;    // |EU| per channel (empty: no overload check)
   std::int64_t overloadSamples = 3;
 };
 
@@ -41,9 +41,9 @@ struct TriggeredRecord {
   std::int64_t triggerSample = 0;  // absolute sample index of the trigger
   std::int64_t firstSample = 0;    // triggerSample - preTriggerScans
   std::int64_t preTriggerScans = 0;
-  core::Matrix samples;            // recordScans x channels [EU]
+  core::Matrix samples;                       // recordScans x channels [EU]
   std::vector<std::int64_t> fullScaleCounts;  // per channel: samples with |x| >= full scale
-  bool overloaded = false;         // any channel with >= overloadSamples at full scale
+  bool overloaded = false;                    // any channel with >= overloadSamples at full scale
 };
 
 class SoftwareTrigger {
@@ -66,10 +66,10 @@ class SoftwareTrigger {
   SoftwareTriggerConfig config_;
   int channels_ = 0;
   std::int64_t pre_ = 0;
-  std::deque<std::vector<double>> ring_;    // last `pre_` scans
-  std::optional<double> previous_;          // last sample of the trigger channel
-  std::int64_t nextSample_ = -1;            // expected index of the next block
-  std::int64_t blockedUntil_ = 0;           // crossings before this index are ignored
+  std::deque<std::vector<double>> ring_;  // last `pre_` scans
+  std::optional<double> previous_;        // last sample of the trigger channel
+  std::int64_t nextSample_ = -1;          // expected index of the next block
+  std::int64_t blockedUntil_ = 0;         // crossings before this index are ignored
   struct Pending {
     TriggeredRecord record;
     std::int64_t filled = 0;

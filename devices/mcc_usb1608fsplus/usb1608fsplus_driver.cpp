@@ -39,12 +39,33 @@ Capabilities makeCapabilities() {
   caps.triggers = {TriggerKind::Immediate, TriggerKind::Software};
   caps.fifoSamples = kFifoSamples;
   caps.parameters = {
-      ParameterSpec{"overrun.policy", "On FIFO overrun", ParameterType::Choice, "", std::nullopt, std::nullopt,
-                    {"restart", "stop"}, std::string("restart"),
+      ParameterSpec{"overrun.policy",
+                    "On FIFO overrun",
+                    ParameterType::Choice,
+                    "",
+                    std::nullopt,
+                    std::nullopt,
+                    {"restart", "stop"},
+                    std::string("restart"),
                     "restart: clear the FIFO, report the gap and scan on; stop: end the session"},
-      ParameterSpec{"usb.transfer_timeout_ms", "Transfer timeout", ParameterType::Integer, "ms", 10.0, 60000.0, {},
-                    std::int64_t{2000}, "a bulk transfer that brings no data for this long ends the session (at least twice its fill time)"},
-      ParameterSpec{"usb.transfer_ms", "Transfer length", ParameterType::Integer, "ms", 1.0, 1000.0, {}, std::int64_t{100},
+      ParameterSpec{
+          "usb.transfer_timeout_ms",
+          "Transfer timeout",
+          ParameterType::Integer,
+          "ms",
+          10.0,
+          60000.0,
+          {},
+          std::int64_t{2000},
+          "a bulk transfer that brings no data for this long ends the session (at least twice its fill time)"},
+      ParameterSpec{"usb.transfer_ms",
+                    "Transfer length",
+                    ParameterType::Integer,
+                    "ms",
+                    1.0,
+                    1000.0,
+                    {},
+                    std::int64_t{100},
                     "data per bulk transfer; four are queued, so about 400 ms of data are buffered on the host"},
   };
   return caps;
@@ -75,7 +96,8 @@ class Usb1608FsPlusDevice final : public ThreadedDevice {
       auto chunk = transport_->controlIn(kCalMemory, a, 0, 64);
       if (!chunk) return fail(chunk.error());
       if (chunk->size() != 64)
-        return fail(core::makeError(core::ErrorCode::IoError, "short calibration memory read", "address " + std::to_string(a)));
+        return fail(
+            core::makeError(core::ErrorCode::IoError, "short calibration memory read", "address " + std::to_string(a)));
       table.insert(table.end(), chunk->begin(), chunk->end());
     }
     auto cal = parseCalibrationTable(table);
@@ -106,7 +128,8 @@ class Usb1608FsPlusDevice final : public ThreadedDevice {
 
   void calibrateChains(std::vector<ChannelChain>& chains) override {
     for (std::size_t i = 0; i < chains.size(); ++i)
-      chains[i].calibration = calibration_[config_.channels[i].rangeCode][static_cast<std::size_t>(config_.channels[i].input)];
+      chains[i].calibration =
+          calibration_[config_.channels[i].rangeCode][static_cast<std::size_t>(config_.channels[i].input)];
   }
 
   core::Result<void> beginSession() override {
@@ -147,7 +170,8 @@ class Usb1608FsPlusDevice final : public ThreadedDevice {
     req.channelMask = mask;
     req.options = 0;  // block transfer mode, no hardware trigger, stall on overrun
     const auto start = encodeScanStart(req);
-    if (!(r = transport_->controlOut(kAInScanStart, 0, 0, std::vector<std::uint8_t>(start.begin(), start.end())))) return r;
+    if (!(r = transport_->controlOut(kAInScanStart, 0, 0, std::vector<std::uint8_t>(start.begin(), start.end()))))
+      return r;
     assembler_ = std::make_unique<ScanAssembler>(static_cast<int>(config_.channels.size()));
     // Transfer size from the rate: "usb.transfer_ms" of data (100 ms by
     // default), rounded up to whole 64-byte packets; four transfers in flight.
@@ -158,10 +182,10 @@ class Usb1608FsPlusDevice final : public ThreadedDevice {
     const double fillMs = 1000.0 * transferBytes / bytesPerS;
     const auto timeout = static_cast<unsigned>(std::max<double>(
         static_cast<double>(parameterInteger(config_.parameters, "usb.transfer_timeout_ms", 2000)), 2.0 * fillMs));
-    return transport_->startBulkIn(kBulkInEndpoint, transferBytes, 4, timeout,
-                                   [this](usb::TransferStatus s, const std::uint8_t* d, int n) {
-                                     push(Packet{s, d && n > 0 ? std::vector<std::uint8_t>(d, d + n) : std::vector<std::uint8_t>{}, false});
-                                   });
+    return transport_->startBulkIn(
+        kBulkInEndpoint, transferBytes, 4, timeout, [this](usb::TransferStatus s, const std::uint8_t* d, int n) {
+          push(Packet{s, d && n > 0 ? std::vector<std::uint8_t>(d, d + n) : std::vector<std::uint8_t>{}, false});
+        });
   }
 
   void push(Packet p) {
@@ -188,7 +212,8 @@ class Usb1608FsPlusDevice final : public ThreadedDevice {
       DataBlock b;
       b.firstSample = delivered_;
       b.raw.assign(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(n * static_cast<std::int64_t>(nc)));
-      pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(n * static_cast<std::int64_t>(nc)));
+      pending_.erase(pending_.begin(),
+                     pending_.begin() + static_cast<std::ptrdiff_t>(n * static_cast<std::int64_t>(nc)));
       pendingScans_ -= n;
       delivered_ += n;
       emitBlock(std::move(b));
@@ -245,9 +270,11 @@ class Usb1608FsPlusDevice final : public ThreadedDevice {
           break;
         }
         case usb::TransferStatus::NoDevice:
-          return finish(EndReason::Disconnected, "the USB-1608FS-Plus was unplugged or lost power; the data received so far was kept");
+          return finish(EndReason::Disconnected,
+                        "the USB-1608FS-Plus was unplugged or lost power; the data received so far was kept");
         case usb::TransferStatus::TimedOut:
-          return finish(EndReason::Timeout, "no data from the USB-1608FS-Plus within the transfer timeout (pacer or cable fault)");
+          return finish(EndReason::Timeout,
+                        "no data from the USB-1608FS-Plus within the transfer timeout (pacer or cable fault)");
         case usb::TransferStatus::Overflow:
           return finish(EndReason::Error, "the device sent more data than requested (USB overflow)");
         case usb::TransferStatus::Cancelled:
@@ -255,7 +282,8 @@ class Usb1608FsPlusDevice final : public ThreadedDevice {
           break;  // a sibling transfer cancelled during recovery
         case usb::TransferStatus::Error:
           if (transport_->disconnected())
-            return finish(EndReason::Disconnected, "the USB-1608FS-Plus was unplugged or lost power; the data received so far was kept");
+            return finish(EndReason::Disconnected,
+                          "the USB-1608FS-Plus was unplugged or lost power; the data received so far was kept");
           return finish(EndReason::Error, "USB transfer error");
       }
     }
@@ -268,9 +296,12 @@ class Usb1608FsPlusDevice final : public ThreadedDevice {
     transport_->stopBulkIn();
     {
       std::lock_guard<std::mutex> l(queueMutex_);  // completions of the cancelled ring carry no data
-      queue_.erase(std::remove_if(queue_.begin(), queue_.end(), [](const Packet& p) {
-        return !p.stopRequest && (p.status == usb::TransferStatus::Stall || p.status == usb::TransferStatus::Cancelled);
-      }), queue_.end());
+      queue_.erase(std::remove_if(queue_.begin(), queue_.end(),
+                                  [](const Packet& p) {
+                                    return !p.stopRequest && (p.status == usb::TransferStatus::Stall ||
+                                                              p.status == usb::TransferStatus::Cancelled);
+                                  }),
+                   queue_.end());
     }
     if (transport_->disconnected()) {
       finish(EndReason::Disconnected, "the device disappeared during overrun recovery");
@@ -280,13 +311,15 @@ class Usb1608FsPlusDevice final : public ThreadedDevice {
     std::string detail = "bulk endpoint stalled";
     if (status) {
       auto bits = parseStatus(*status);
-      if (bits && (*bits & kStatusScanOverrun)) detail = "FIFO overrun (status 0x" + std::to_string(*bits) + "): the host did not read fast enough";
+      if (bits && (*bits & kStatusScanOverrun))
+        detail = "FIFO overrun (status 0x" + std::to_string(*bits) + "): the host did not read fast enough";
     }
     (void)transport_->controlOut(kAInScanStop, 0, 0, {});
     auto halt = transport_->clearHalt(kBulkInEndpoint);
     auto fifo = transport_->controlOut(kAInClearFifo, 0, 0, {});
     emitBlocks(true);  // hand on every complete scan before the gap
-    const bool restart = parameterText(config_.parameters, "overrun.policy", "restart") == "restart" && halt && fifo && !stopRequested();
+    const bool restart =
+        parameterText(config_.parameters, "overrun.policy", "restart") == "restart" && halt && fifo && !stopRequested();
     emit(StreamEvent(OverrunEvent{delivered_, -1, restart, detail}));
     if (!restart) {
       finish(EndReason::Overrun, detail);
@@ -296,7 +329,8 @@ class Usb1608FsPlusDevice final : public ThreadedDevice {
     const std::int64_t remaining = config_.scanCount > 0 ? config_.scanCount - delivered_ : 0;
     auto ok = startScan(remaining);
     if (!ok) {
-      finish(transport_->disconnected() ? EndReason::Disconnected : EndReason::Error, "restart after overrun failed: " + ok.error().describe());
+      finish(transport_->disconnected() ? EndReason::Disconnected : EndReason::Error,
+             "restart after overrun failed: " + ok.error().describe());
       return false;
     }
     return true;
@@ -317,23 +351,29 @@ class Usb1608FsPlusDevice final : public ThreadedDevice {
 class Usb1608FsPlusDriver final : public Driver {
  public:
   std::string name() const override { return kDriverName; }
-  std::string description() const override { return "Measurement Computing USB-1608FS-Plus, 8 x 16 bit simultaneous, 100 kS/s per channel (libusb)"; }
+  std::string description() const override {
+    return "Measurement Computing USB-1608FS-Plus, 8 x 16 bit simultaneous, 100 kS/s per channel (libusb)";
+  }
   bool simulated() const override { return false; }
   core::Result<std::vector<DeviceDescriptor>> scan() override {
     auto found = usb::UsbTransport::enumerate(kVendorId, kProductId);
     if (!found) return found.error();
     std::vector<DeviceDescriptor> out;
-    for (const auto& f : *found) out.push_back(DeviceDescriptor{kDriverName, kModel, f.vendorId, f.productId, f.serial, f.busPath()});
+    for (const auto& f : *found)
+      out.push_back(DeviceDescriptor{kDriverName, kModel, f.vendorId, f.productId, f.serial, f.busPath()});
     return out;
   }
   core::Result<std::unique_ptr<Device>> create(const DeviceDescriptor& d) override {
-    if (d.driver != kDriverName) return core::makeError(core::ErrorCode::InvalidArgument, "descriptor of another driver", d.driver);
+    if (d.driver != kDriverName)
+      return core::makeError(core::ErrorCode::InvalidArgument, "descriptor of another driver", d.driver);
     return std::unique_ptr<Device>(new Usb1608FsPlusDevice(d));
   }
 };
 
 }  // namespace
 
-std::unique_ptr<Driver> makeUsb1608FsPlusDriver() { return std::make_unique<Usb1608FsPlusDriver>(); }
+std::unique_ptr<Driver> makeUsb1608FsPlusDriver() {
+  return std::make_unique<Usb1608FsPlusDriver>();
+}
 
 }  // namespace mozzi::devices::mcc

@@ -29,8 +29,9 @@ void putF32(std::uint8_t* p, float f) {
 
 const std::vector<InputRange>& ranges() {
   static const std::vector<InputRange> kRanges = {
-      {"+/-10 V", 0, -10.0, 10.0},   {"+/-5 V", 1, -5.0, 5.0},     {"+/-2.5 V", 2, -2.5, 2.5},
-      {"+/-2 V", 3, -2.0, 2.0},      {"+/-1.25 V", 4, -1.25, 1.25}, {"+/-1 V", 5, -1.0, 1.0},
+      {"+/-10 V", 0, -10.0, 10.0},      {"+/-5 V", 1, -5.0, 5.0},
+      {"+/-2.5 V", 2, -2.5, 2.5},       {"+/-2 V", 3, -2.0, 2.0},
+      {"+/-1.25 V", 4, -1.25, 1.25},    {"+/-1 V", 5, -1.0, 1.0},
       {"+/-0.625 V", 6, -0.625, 0.625}, {"+/-0.3125 V", 7, -0.3125, 0.3125},
   };
   return kRanges;
@@ -38,25 +39,31 @@ const std::vector<InputRange>& ranges() {
 
 core::Result<InputRange> rangeForCode(std::uint8_t code) {
   if (code >= kRangeCount)
-    return core::makeError(core::ErrorCode::InvalidArgument, "range code " + std::to_string(code) + " does not exist (0 to 7)", "USB-1608FS-Plus range");
+    return core::makeError(core::ErrorCode::InvalidArgument,
+                           "range code " + std::to_string(code) + " does not exist (0 to 7)", "USB-1608FS-Plus range");
   return ranges()[code];
 }
 
 core::Result<std::uint32_t> pacerPeriodFor(double rateHz, int channels) {
   if (!std::isfinite(rateHz) || rateHz <= 0.0 || rateHz > kMaxRatePerChannelHz * (1.0 + 1e-12))
-    return core::makeError(core::ErrorCode::InvalidArgument, "the rate per channel must be in (0, 100000] Hz", "USB-1608FS-Plus pacer");
+    return core::makeError(core::ErrorCode::InvalidArgument, "the rate per channel must be in (0, 100000] Hz",
+                           "USB-1608FS-Plus pacer");
   if (channels < 1 || channels > kChannelCount)
     return core::makeError(core::ErrorCode::InvalidArgument, "1 to 8 channels", "USB-1608FS-Plus pacer");
   if (rateHz * channels > kMaxAggregateHz * (1.0 + 1e-12))
     return core::makeError(core::ErrorCode::InvalidArgument,
-                           "aggregate rate " + std::to_string(rateHz * channels) + " S/s exceeds 400000 S/s", "USB-1608FS-Plus pacer");
+                           "aggregate rate " + std::to_string(rateHz * channels) + " S/s exceeds 400000 S/s",
+                           "USB-1608FS-Plus pacer");
   const double period = std::round(kTimebaseHz / rateHz) - 1.0;  // pacer_period = 40 MHz / f - 1
   if (period < 1.0 || period > 4294967295.0)
-    return core::makeError(core::ErrorCode::InvalidArgument, "the rate is outside the pacer's range", "USB-1608FS-Plus pacer");
+    return core::makeError(core::ErrorCode::InvalidArgument, "the rate is outside the pacer's range",
+                           "USB-1608FS-Plus pacer");
   return static_cast<std::uint32_t>(period);
 }
 
-double rateForPacerPeriod(std::uint32_t pacerPeriod) { return kTimebaseHz / (static_cast<double>(pacerPeriod) + 1.0); }
+double rateForPacerPeriod(std::uint32_t pacerPeriod) {
+  return kTimebaseHz / (static_cast<double>(pacerPeriod) + 1.0);
+}
 
 std::array<std::uint8_t, 10> encodeScanStart(const ScanRequest& r) {
   std::array<std::uint8_t, 10> b{};
@@ -69,7 +76,8 @@ std::array<std::uint8_t, 10> encodeScanStart(const ScanRequest& r) {
 
 core::Result<ScanRequest> decodeScanStart(const std::vector<std::uint8_t>& bytes) {
   if (bytes.size() != 10)
-    return core::makeError(core::ErrorCode::ParseError, "AIN_SCAN_START carries 10 bytes, got " + std::to_string(bytes.size()), "request 0x11");
+    return core::makeError(core::ErrorCode::ParseError,
+                           "AIN_SCAN_START carries 10 bytes, got " + std::to_string(bytes.size()), "request 0x11");
   ScanRequest r;
   r.scanCount = getU32(&bytes[0]);
   r.pacerPeriod = getU32(&bytes[4]);
@@ -78,7 +86,9 @@ core::Result<ScanRequest> decodeScanStart(const std::vector<std::uint8_t>& bytes
   return r;
 }
 
-std::array<std::uint8_t, 8> encodeRangeConfig(const std::array<std::uint8_t, 8>& rangeCodes) { return rangeCodes; }
+std::array<std::uint8_t, 8> encodeRangeConfig(const std::array<std::uint8_t, 8>& rangeCodes) {
+  return rangeCodes;
+}
 
 std::uint16_t calibrationAddress(int rangeCode, int channel) {
   return static_cast<std::uint16_t>((rangeCode * kChannelCount + channel) * 8);
@@ -87,7 +97,8 @@ std::uint16_t calibrationAddress(int rangeCode, int channel) {
 core::Result<CalibrationTable> parseCalibrationTable(const std::vector<std::uint8_t>& bytes) {
   if (bytes.size() < kCalTableBytes)
     return core::makeError(core::ErrorCode::ParseError,
-                           "the calibration table has 512 bytes, got " + std::to_string(bytes.size()), "calibration memory");
+                           "the calibration table has 512 bytes, got " + std::to_string(bytes.size()),
+                           "calibration memory");
   CalibrationTable table{};
   for (int r = 0; r < kRangeCount; ++r)
     for (int c = 0; c < kChannelCount; ++c) {
@@ -118,7 +129,8 @@ std::vector<std::uint8_t> encodeCalibrationTable(const CalibrationTable& table) 
 
 core::Result<std::uint16_t> parseStatus(const std::vector<std::uint8_t>& bytes) {
   if (bytes.size() != 2)
-    return core::makeError(core::ErrorCode::ParseError, "STATUS carries 2 bytes, got " + std::to_string(bytes.size()), "request 0x44");
+    return core::makeError(core::ErrorCode::ParseError, "STATUS carries 2 bytes, got " + std::to_string(bytes.size()),
+                           "request 0x44");
   return static_cast<std::uint16_t>(bytes[0] | bytes[1] << 8);
 }
 

@@ -36,9 +36,9 @@ constexpr std::uint8_t kBulkInEndpoint = 0x81;
 constexpr int kPacketBytes = 64;
 constexpr int kChannelCount = 8;
 constexpr int kRangeCount = 8;
-constexpr double kTimebaseHz = 40e6;        // pacer timer clock
+constexpr double kTimebaseHz = 40e6;  // pacer timer clock
 constexpr double kMaxRatePerChannelHz = 100e3;
-constexpr double kMaxAggregateHz = 400e3;   // issue 9 / data sheet: 400 kS/s over all channels
+constexpr double kMaxAggregateHz = 400e3;  // issue 9 / data sheet: 400 kS/s over all channels
 constexpr std::int64_t kFifoSamples = 32768;
 constexpr std::uint16_t kCalMemoryBytes = 0x300;
 constexpr std::uint16_t kCalTableBytes = kRangeCount * kChannelCount * 8;  // 512
@@ -62,9 +62,9 @@ const std::vector<InputRange>& ranges();
 core::Result<InputRange> rangeForCode(std::uint8_t code);
 
 struct ScanRequest {
-  std::uint32_t scanCount = 0;      // 0 = continuous
-  std::uint32_t pacerPeriod = 0;    // 40 MHz / rate - 1
-  std::uint8_t channelMask = 0;     // bit c = channel c
+  std::uint32_t scanCount = 0;    // 0 = continuous
+  std::uint32_t pacerPeriod = 0;  // 40 MHz / rate - 1
+  std::uint8_t channelMask = 0;   // bit c = channel c
   std::uint8_t options = 0;
 };
 

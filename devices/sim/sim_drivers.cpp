@@ -43,7 +43,8 @@ class HammerModel final : public SignalModel {
     specimen_ = *spec;
     system_ = specimen_.toMdof();
     fs_ = config.sampleRateHz;
-    interval_ = std::max<std::int64_t>(16, static_cast<std::int64_t>(std::llround(parameterReal(config.parameters, "hammer.interval_s", 4.0) * fs_)));
+    interval_ = std::max<std::int64_t>(
+        16, static_cast<std::int64_t>(std::llround(parameterReal(config.parameters, "hammer.interval_s", 4.0) * fs_)));
     const std::string tip = parameterText(config.parameters, "hammer.tip", "plastic");
     double k = kTips[1].stiffness;
     for (const auto& t : kTips)
@@ -64,7 +65,8 @@ class HammerModel final : public SignalModel {
     return {};
   }
 
-  void generate(std::int64_t first, Eigen::Index n, const std::vector<int>& inputs, core::Matrix& out, FaultCounters& counters) override {
+  void generate(std::int64_t first, Eigen::Index n, const std::vector<int>& inputs, core::Matrix& out,
+                FaultCounters& counters) override {
     for (Eigen::Index s = 0; s < n; ++s) {
       const std::int64_t k = first + s;
       const std::int64_t seg = k / interval_;
@@ -101,8 +103,10 @@ class HammerModel final : public SignalModel {
       spec.secondHitFraction = 0.5;
     }
     auto rec = core::signal::synthesizeHammerHit(system_, spec);
-    if (rec) segment_ = rec->samples;
-    else segment_ = core::Matrix::Zero(static_cast<Eigen::Index>(interval_), specimen_.shapes.rows() + 1);
+    if (rec)
+      segment_ = rec->samples;
+    else
+      segment_ = core::Matrix::Zero(static_cast<Eigen::Index>(interval_), specimen_.shapes.rows() + 1);
     segmentIndex_ = seg;
     ++counters.hits;
     if (isDouble) ++counters.doubleHits;
@@ -128,19 +132,82 @@ Capabilities hammerCapabilities() {
   caps.fifoSamples = mcc::kFifoSamples;
   caps.parameters = commonSimParameters();
   std::vector<ParameterSpec> own = {
-      ParameterSpec{"specimen", "Specimen", ParameterType::Choice, "", std::nullopt, std::nullopt, modalSpecimenKeys(),
-                    std::string("fork-a-without-wheel"), "virtual specimen with thesis modal parameters (Tables 6, 8, 11, 14, 16, 18, 19, 20; frames §2.1, §2.2)"},
-      ParameterSpec{"hammer.tip", "Hammer tip", ParameterType::Choice, "", std::nullopt, std::nullopt, {"steel", "plastic", "rubber"},
-                    std::string("plastic"), "contact time pi sqrt(m/k): steel 0.3 ms, plastic 1 ms, rubber 3 ms"},
-      ParameterSpec{"hammer.peak_force", "Peak force", ParameterType::Real, "N", 1.0, 4000.0, {}, 200.0, "nominal peak of a hit (+/-10%)"},
-      ParameterSpec{"hammer.interval_s", "Time between hits", ParameterType::Real, "s", 0.05, 60.0, {}, 4.0, "one hit every so many seconds"},
-      ParameterSpec{"noise.force_rms", "Force noise", ParameterType::Real, "N", 0.0, 100.0, {}, 0.05, "white noise RMS on the hammer"},
-      ParameterSpec{"noise.response_rms", "Response noise", ParameterType::Real, "m/s^2", 0.0, 100.0, {}, 0.002, "white noise RMS on each accelerometer"},
-      ParameterSpec{"fault.double_hit_probability", "Double-hit probability", ParameterType::Real, "", 0.0, 1.0, {}, 0.0,
+      ParameterSpec{
+          "specimen", "Specimen", ParameterType::Choice, "", std::nullopt, std::nullopt, modalSpecimenKeys(),
+          std::string("fork-a-without-wheel"),
+          "virtual specimen with thesis modal parameters (Tables 6, 8, 11, 14, 16, 18, 19, 20; frames §2.1, §2.2)"},
+      ParameterSpec{"hammer.tip",
+                    "Hammer tip",
+                    ParameterType::Choice,
+                    "",
+                    std::nullopt,
+                    std::nullopt,
+                    {"steel", "plastic", "rubber"},
+                    std::string("plastic"),
+                    "contact time pi sqrt(m/k): steel 0.3 ms, plastic 1 ms, rubber 3 ms"},
+      ParameterSpec{"hammer.peak_force",
+                    "Peak force",
+                    ParameterType::Real,
+                    "N",
+                    1.0,
+                    4000.0,
+                    {},
+                    200.0,
+                    "nominal peak of a hit (+/-10%)"},
+      ParameterSpec{"hammer.interval_s",
+                    "Time between hits",
+                    ParameterType::Real,
+                    "s",
+                    0.05,
+                    60.0,
+                    {},
+                    4.0,
+                    "one hit every so many seconds"},
+      ParameterSpec{"noise.force_rms",
+                    "Force noise",
+                    ParameterType::Real,
+                    "N",
+                    0.0,
+                    100.0,
+                    {},
+                    0.05,
+                    "white noise RMS on the hammer"},
+      ParameterSpec{"noise.response_rms",
+                    "Response noise",
+                    ParameterType::Real,
+                    "m/s^2",
+                    0.0,
+                    100.0,
+                    {},
+                    0.002,
+                    "white noise RMS on each accelerometer"},
+      ParameterSpec{"fault.double_hit_probability",
+                    "Double-hit probability",
+                    ParameterType::Real,
+                    "",
+                    0.0,
+                    1.0,
+                    {},
+                    0.0,
                     "a hit rebounds (second contact at half the peak) with this probability"},
-      ParameterSpec{"fault.overload_probability", "Overload probability", ParameterType::Real, "", 0.0, 1.0, {}, 0.0,
+      ParameterSpec{"fault.overload_probability",
+                    "Overload probability",
+                    ParameterType::Real,
+                    "",
+                    0.0,
+                    1.0,
+                    {},
+                    0.0,
                     "a hit is struck this many times harder than nominal with this probability"},
-      ParameterSpec{"fault.overload_factor", "Overload factor", ParameterType::Real, "", 1.0, 1000.0, {}, 30.0, "peak multiplier of an overloaded hit"},
+      ParameterSpec{"fault.overload_factor",
+                    "Overload factor",
+                    ParameterType::Real,
+                    "",
+                    1.0,
+                    1000.0,
+                    {},
+                    30.0,
+                    "peak multiplier of an overloaded hit"},
   };
   caps.parameters.insert(caps.parameters.end(), own.begin(), own.end());
   return caps;
@@ -180,7 +247,8 @@ class StiffnessModel final : public SignalModel {
     return maxForce_ * (4.0 * x - 4.0);
   }
 
-  void generate(std::int64_t first, Eigen::Index n, const std::vector<int>& inputs, core::Matrix& out, FaultCounters&) override {
+  void generate(std::int64_t first, Eigen::Index n, const std::vector<int>& inputs, core::Matrix& out,
+                FaultCounters&) override {
     std::normal_distribution<double> noise(0.0, 1.0);
     for (Eigen::Index s = 0; s < n; ++s) {
       const double f = force(static_cast<double>(first + s) / fs_);
@@ -211,8 +279,8 @@ class StiffnessModel final : public SignalModel {
 Capabilities stiffnessCapabilities() {
   Capabilities caps;
   caps.model = "Simulated Motostiffmeter";
-  caps.inputs = {simInput("load cell", false), simInput("laser 1", false), simInput("laser 2", false), simInput("laser 3", false),
-                 simInput("laser 4", false)};
+  caps.inputs = {simInput("load cell", false), simInput("laser 1", false), simInput("laser 2", false),
+                 simInput("laser 3", false), simInput("laser 4", false)};
   caps.outputs = {OutputSpec{"actuator force set-point", "N", -5000.0, 5000.0}};
   caps.rates = RateSpec{1.0, 10000.0, 50000.0, 0.0, true};
   caps.triggers = {TriggerKind::Immediate};
@@ -220,16 +288,56 @@ Capabilities stiffnessCapabilities() {
   caps.parameters = commonSimParameters();
   std::vector<ParameterSpec> own = {
       ParameterSpec{"specimen", "Specimen", ParameterType::Choice, "", std::nullopt, std::nullopt, staticSpecimenKeys(),
-                    std::string("frame-a-front-constrained"), "virtual specimen with thesis static stiffness and twist axis (Tables 3, 4, 5, 7, 9, 10, 13)"},
-      ParameterSpec{"mode", "Actuator mode", ParameterType::Choice, "", std::nullopt, std::nullopt, {"static-ramp", "sine"},
-                    std::string("static-ramp"), "slow triangular ramp or sine excitation (§1.1)"},
-      ParameterSpec{"static.max_force", "Ramp peak force", ParameterType::Real, "N", 0.0, 5000.0, {}, 0.0,
-                    "up to 5000 N (§1.1); 0 = the thesis's range for the specimen (±300 N, fork B ±500 N, swing-arms 1000 N assumed)"},
-      ParameterSpec{"static.period_s", "Ramp period", ParameterType::Real, "s", 1.0, 3600.0, {}, 20.0, "0 -> +F -> -F -> 0"},
-      ParameterSpec{"sine.frequency", "Sine frequency", ParameterType::Real, "Hz", 1.0, 45.0, {}, 10.0, "dynamic excitation up to 45 Hz (§1.1)"},
-      ParameterSpec{"sine.amplitude_1hz", "Sine amplitude at 1 Hz", ParameterType::Real, "N", 1.0, 5000.0, {}, 1000.0,
+                    std::string("frame-a-front-constrained"),
+                    "virtual specimen with thesis static stiffness and twist axis (Tables 3, 4, 5, 7, 9, 10, 13)"},
+      ParameterSpec{"mode",
+                    "Actuator mode",
+                    ParameterType::Choice,
+                    "",
+                    std::nullopt,
+                    std::nullopt,
+                    {"static-ramp", "sine"},
+                    std::string("static-ramp"),
+                    "slow triangular ramp or sine excitation (§1.1)"},
+      ParameterSpec{"static.max_force",
+                    "Ramp peak force",
+                    ParameterType::Real,
+                    "N",
+                    0.0,
+                    5000.0,
+                    {},
+                    0.0,
+                    "up to 5000 N (§1.1); 0 = the thesis's range for the specimen (±300 N, fork B ±500 N, swing-arms "
+                    "1000 N assumed)"},
+      ParameterSpec{
+          "static.period_s", "Ramp period", ParameterType::Real, "s", 1.0, 3600.0, {}, 20.0, "0 -> +F -> -F -> 0"},
+      ParameterSpec{"sine.frequency",
+                    "Sine frequency",
+                    ParameterType::Real,
+                    "Hz",
+                    1.0,
+                    45.0,
+                    {},
+                    10.0,
+                    "dynamic excitation up to 45 Hz (§1.1)"},
+      ParameterSpec{"sine.amplitude_1hz",
+                    "Sine amplitude at 1 Hz",
+                    ParameterType::Real,
+                    "N",
+                    1.0,
+                    5000.0,
+                    {},
+                    1000.0,
                     "falls logarithmically with frequency to 20% at 45 Hz"},
-      ParameterSpec{"noise.force_rms", "Load-cell noise", ParameterType::Real, "N", 0.0, 100.0, {}, 0.5, "white noise RMS on the load cell"},
+      ParameterSpec{"noise.force_rms",
+                    "Load-cell noise",
+                    ParameterType::Real,
+                    "N",
+                    0.0,
+                    100.0,
+                    {},
+                    0.5,
+                    "white noise RMS on the load cell"},
   };
   caps.parameters.insert(caps.parameters.end(), own.begin(), own.end());
   return caps;
@@ -238,15 +346,17 @@ Capabilities stiffnessCapabilities() {
 }  // namespace
 
 std::unique_ptr<Driver> makeHammerStationDriver() {
-  return makeSimDriver("sim-hammer", "Simulated impact hammer station (virtual specimens, thesis §1.4, §1.6)",
-                                     "Simulated impact hammer station", &hammerCapabilities,
-                                     +[]() -> std::unique_ptr<SignalModel> { return std::make_unique<HammerModel>(); });
+  return makeSimDriver(
+      "sim-hammer", "Simulated impact hammer station (virtual specimens, thesis §1.4, §1.6)",
+      "Simulated impact hammer station", &hammerCapabilities,
+      +[]() -> std::unique_ptr<SignalModel> { return std::make_unique<HammerModel>(); });
 }
 
 std::unique_ptr<Driver> makeStiffnessRigDriver() {
-  return makeSimDriver("sim-stiffness", "Simulated Motostiffmeter: actuator, load cell, four lasers (thesis §1.1)",
-                                     "Simulated Motostiffmeter", &stiffnessCapabilities,
-                                     +[]() -> std::unique_ptr<SignalModel> { return std::make_unique<StiffnessModel>(); });
+  return makeSimDriver(
+      "sim-stiffness", "Simulated Motostiffmeter: actuator, load cell, four lasers (thesis §1.1)",
+      "Simulated Motostiffmeter", &stiffnessCapabilities,
+      +[]() -> std::unique_ptr<SignalModel> { return std::make_unique<StiffnessModel>(); });
 }
 
 }  // namespace mozzi::devices::sim

@@ -21,7 +21,7 @@ namespace mozzi::devices::sim {
 
 struct FaultCounters {
   std::int64_t scansGenerated = 0;
-  std::int64_t hits = 0;            // hammer hits generated
+  std::int64_t hits = 0;  // hammer hits generated
   std::int64_t doubleHits = 0;
   std::int64_t overloadHits = 0;
   std::int64_t overruns = 0;
@@ -59,7 +59,7 @@ inline constexpr double kAssumedNormalisedCamberStiffness = 0.9;
 
 // The tyre the tester simulates for a parameter map (defaults completed).
 struct TyreTesterSetup {
-  std::string tyre;                 // catalogue key, "tyre-120-70-r17"
+  std::string tyre;  // catalogue key, "tyre-120-70-r17"
   double pressurePa = 2e5;
   double load = 0.0;                // F_z [N]
   double speed = 0.0;               // V [m/s]

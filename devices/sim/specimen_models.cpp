@@ -3,8 +3,8 @@
 #include <Eigen/LU>
 #include <Eigen/SVD>
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 
 namespace mozzi::devices::sim {
 
@@ -70,7 +70,9 @@ core::signal::LinearMdof ModalSpecimen::toMdof() const {
   return sys;
 }
 
-std::vector<std::string> modalSpecimenKeys() { return specimenKeys(); }
+std::vector<std::string> modalSpecimenKeys() {
+  return specimenKeys();
+}
 
 core::Result<ModalSpecimen> modalSpecimen(const std::string& key) {
   const SpecimenEntry* e = findSpecimen(key);
@@ -105,7 +107,8 @@ core::Result<ModalSpecimen> modalSpecimen(const std::string& key) {
   } else {
     const double fallback = e->modalMass.empty() ? 1.0 : e->modalMass.back();
     for (Eigen::Index r = 0; r < n; ++r)
-      modalMass(r) = r < static_cast<Eigen::Index>(e->modalMass.size()) ? e->modalMass[static_cast<std::size_t>(r)] : fallback;
+      modalMass(r) =
+          r < static_cast<Eigen::Index>(e->modalMass.size()) ? e->modalMass[static_cast<std::size_t>(r)] : fallback;
   }
   m.shapes.resize(n, n);
   for (Eigen::Index r = 0; r < n; ++r) m.shapes.col(r) = v.col(r) / std::sqrt(modalMass(r));

@@ -20,7 +20,7 @@
 namespace mozzi::devices::sim {
 
 struct ModalSpecimen {
-  std::string key;                  // "fork-a-without-wheel"
+  std::string key;  // "fork-a-without-wheel"
   std::string name;
   std::string source;               // thesis table
   std::vector<double> frequencyHz;  // per mode
@@ -53,14 +53,14 @@ struct StaticSpecimen {
   std::string key;
   std::string name;
   std::string source;
-  double lateralStiffness = 0.0;    // k_lat [N/m]
-  double twistArm = 0.0;            // a_tw [m]
-  core::Vector2 loadPoint = core::Vector2::Zero();   // (u, v) [m]
-  core::Vector2 axisDirection = core::Vector2(0, 1); // unit, in the plate plane
-  std::vector<core::Vector2> laserPoints;            // four lasers (u, v) [m]
+  double lateralStiffness = 0.0;                      // k_lat [N/m]
+  double twistArm = 0.0;                              // a_tw [m]
+  core::Vector2 loadPoint = core::Vector2::Zero();    // (u, v) [m]
+  core::Vector2 axisDirection = core::Vector2(0, 1);  // unit, in the plate plane
+  std::vector<core::Vector2> laserPoints;             // four lasers (u, v) [m]
 
   double displacementAt(const core::Vector2& p, double forceN) const;  // [m]
-  double testForceN = 300.0;  // the thesis's ramp amplitude for this specimen
+  double testForceN = 300.0;                                           // the thesis's ramp amplitude for this specimen
 };
 
 // The static model of a catalogue specimen with static data: k_lat and a_tw

@@ -34,13 +34,14 @@ int hotplugCallback(libusb_context*, libusb_device* device, libusb_hotplug_event
 }  // namespace
 
 core::Error libusbError(int code, const std::string& what, const std::string& where) {
-  const auto ec = code == LIBUSB_ERROR_ACCESS ? core::ErrorCode::Locked
+  const auto ec = code == LIBUSB_ERROR_ACCESS                                        ? core::ErrorCode::Locked
                   : code == LIBUSB_ERROR_NO_DEVICE || code == LIBUSB_ERROR_NOT_FOUND ? core::ErrorCode::NotFound
-                  : code == LIBUSB_ERROR_TIMEOUT ? core::ErrorCode::IoError
-                  : code == LIBUSB_ERROR_BUSY ? core::ErrorCode::Locked
-                                              : core::ErrorCode::IoError;
+                  : code == LIBUSB_ERROR_TIMEOUT                                     ? core::ErrorCode::IoError
+                  : code == LIBUSB_ERROR_BUSY                                        ? core::ErrorCode::Locked
+                                                                                     : core::ErrorCode::IoError;
   std::string hint;
-  if (code == LIBUSB_ERROR_ACCESS) hint = " (no permission on the USB device node: see docs/hardware.md for the udev rule)";
+  if (code == LIBUSB_ERROR_ACCESS)
+    hint = " (no permission on the USB device node: see docs/hardware.md for the udev rule)";
   if (code == LIBUSB_ERROR_BUSY) hint = " (another program holds the device)";
   return core::makeError(ec, what + ": " + libusb_error_name(code) + hint, where);
 }
@@ -56,7 +57,9 @@ static std::string readSerial(libusb_device_handle* h, const libusb_device_descr
   return readStringDescriptor(h, d.iSerialNumber);
 }
 
-core::Error UsbTransport::usbError(int code, const std::string& what) const { return libusbError(code, what, info_.busPath()); }
+core::Error UsbTransport::usbError(int code, const std::string& what) const {
+  return libusbError(code, what, info_.busPath());
+}
 
 core::Result<std::vector<UsbDeviceInfo>> UsbTransport::enumerate(std::uint16_t vendorId, std::uint16_t productId) {
   libusb_context* ctx = nullptr;
@@ -127,9 +130,9 @@ core::Result<std::unique_ptr<UsbTransport>> UsbTransport::open(std::uint16_t ven
   if (libusb_has_capability(LIBUSB_CAP_HAS_HOTPLUG)) {
     // Unplug is also seen by the transfers (status NO_DEVICE); the hotplug
     // callback covers the moments when none is in flight.
-    const int h = libusb_hotplug_register_callback(t->context_, LIBUSB_HOTPLUG_EVENT_DEVICE_LEFT, LIBUSB_HOTPLUG_NO_FLAGS, vendorId,
-                                                   productId, LIBUSB_HOTPLUG_MATCH_ANY, &hotplugCallback, t.get(),
-                                                   &t->hotplugHandle_);
+    const int h = libusb_hotplug_register_callback(
+        t->context_, LIBUSB_HOTPLUG_EVENT_DEVICE_LEFT, LIBUSB_HOTPLUG_NO_FLAGS, vendorId, productId,
+        LIBUSB_HOTPLUG_MATCH_ANY, &hotplugCallback, t.get(), &t->hotplugHandle_);
     t->hotplugRegistered_ = h == LIBUSB_SUCCESS;
   }
   t->eventThread_ = std::thread([p = t.get()] { p->eventLoop(); });
@@ -172,8 +175,9 @@ void UsbTransport::eventLoop() {
   }
 }
 
-core::Result<std::vector<std::uint8_t>> UsbTransport::controlIn(std::uint8_t request, std::uint16_t value, std::uint16_t index,
-                                                                std::uint16_t length, unsigned timeoutMs) {
+core::Result<std::vector<std::uint8_t>> UsbTransport::controlIn(std::uint8_t request, std::uint16_t value,
+                                                                std::uint16_t index, std::uint16_t length,
+                                                                unsigned timeoutMs) {
   std::vector<std::uint8_t> data(length);
   const int r = libusb_control_transfer(handle_, kVendorIn, request, value, index, data.data(), length, timeoutMs);
   if (r < 0) {
@@ -189,8 +193,9 @@ core::Result<std::vector<std::uint8_t>> UsbTransport::controlIn(std::uint8_t req
 core::Result<void> UsbTransport::controlOut(std::uint8_t request, std::uint16_t value, std::uint16_t index,
                                             const std::vector<std::uint8_t>& data, unsigned timeoutMs) {
   std::vector<std::uint8_t> copy = data;
-  const int r = libusb_control_transfer(handle_, kVendorOut, request, value, index, copy.empty() ? nullptr : copy.data(),
-                                        static_cast<std::uint16_t>(copy.size()), timeoutMs);
+  const int r =
+      libusb_control_transfer(handle_, kVendorOut, request, value, index, copy.empty() ? nullptr : copy.data(),
+                              static_cast<std::uint16_t>(copy.size()), timeoutMs);
   if (r < 0) {
     if (r == LIBUSB_ERROR_NO_DEVICE) disconnected_ = true;
     char what[64];
@@ -209,22 +214,25 @@ core::Result<void> UsbTransport::clearHalt(std::uint8_t endpoint) {
   return {};
 }
 
-core::Result<void> UsbTransport::startBulkIn(std::uint8_t endpoint, int transferBytes, int transfers, unsigned timeoutMs,
-                                             BulkCallback callback) {
+core::Result<void> UsbTransport::startBulkIn(std::uint8_t endpoint, int transferBytes, int transfers,
+                                             unsigned timeoutMs, BulkCallback callback) {
   std::unique_lock<std::mutex> lock(bulkMutex_);
-  if (inFlight_ > 0) return core::makeError(core::ErrorCode::InvalidArgument, "bulk transfers are already running", info_.busPath());
+  if (inFlight_ > 0)
+    return core::makeError(core::ErrorCode::InvalidArgument, "bulk transfers are already running", info_.busPath());
   if (transferBytes <= 0 || transfers <= 0)
-    return core::makeError(core::ErrorCode::InvalidArgument, "transfer size and count must be positive", info_.busPath());
+    return core::makeError(core::ErrorCode::InvalidArgument, "transfer size and count must be positive",
+                           info_.busPath());
   for (auto* tr : transfers_) libusb_free_transfer(tr);
   transfers_.clear();
-  buffers_.assign(static_cast<std::size_t>(transfers), std::vector<std::uint8_t>(static_cast<std::size_t>(transferBytes)));
+  buffers_.assign(static_cast<std::size_t>(transfers),
+                  std::vector<std::uint8_t>(static_cast<std::size_t>(transferBytes)));
   callback_ = std::move(callback);
   resubmit_ = true;
   for (int i = 0; i < transfers; ++i) {
     libusb_transfer* tr = libusb_alloc_transfer(0);
     if (!tr) return core::makeError(core::ErrorCode::IoError, "out of memory for USB transfers", info_.busPath());
-    libusb_fill_bulk_transfer(tr, handle_, endpoint, buffers_[static_cast<std::size_t>(i)].data(), transferBytes, &transferCallback,
-                              this, timeoutMs);
+    libusb_fill_bulk_transfer(tr, handle_, endpoint, buffers_[static_cast<std::size_t>(i)].data(), transferBytes,
+                              &transferCallback, this, timeoutMs);
     transfers_.push_back(tr);
   }
   for (auto* tr : transfers_) {
@@ -250,7 +258,9 @@ void UsbTransport::stopBulkIn() {
   bulkCv_.wait(lock, [&] { return inFlight_ == 0; });
 }
 
-void UsbTransport::transferCallback(libusb_transfer* transfer) { static_cast<UsbTransport*>(transfer->user_data)->onTransfer(transfer); }
+void UsbTransport::transferCallback(libusb_transfer* transfer) {
+  static_cast<UsbTransport*>(transfer->user_data)->onTransfer(transfer);
+}
 
 void UsbTransport::onTransfer(libusb_transfer* transfer) {
   TransferStatus status = TransferStatus::Error;
@@ -278,7 +288,8 @@ void UsbTransport::onTransfer(libusb_transfer* transfer) {
     const int r = libusb_submit_transfer(transfer);
     if (r == 0) return;
     if (r == LIBUSB_ERROR_NO_DEVICE) disconnected_ = true;
-    if (callback_) callback_(r == LIBUSB_ERROR_NO_DEVICE ? TransferStatus::NoDevice : TransferStatus::Error, nullptr, 0);
+    if (callback_)
+      callback_(r == LIBUSB_ERROR_NO_DEVICE ? TransferStatus::NoDevice : TransferStatus::Error, nullptr, 0);
   }
   if (status != TransferStatus::Completed) resubmit_ = false;
   --inFlight_;

@@ -119,7 +119,9 @@ void runSeconds(Pipeline& p, EmulatedDevice& d, double seconds) {
   }
 }
 
-double cpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+double cpuSeconds() {
+  return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
+}
 
 void BM_OneSecondOfData(benchmark::State& state) {
   Pipeline p;

@@ -46,7 +46,8 @@ Eigen::MatrixXf realisticHit(std::uint32_t seed) {
     for (int c = 1; c < 4; ++c) {
       double a = 0;
       const double fn[4] = {42.0, 118.0, 260.0, 515.0};
-      for (int m = 0; m < 4; ++m) a += (0.3 / (m + 1)) * std::exp(-2 * M_PI * fn[m] * 0.015 * t) * std::sin(2 * M_PI * fn[m] * t + c);
+      for (int m = 0; m < 4; ++m)
+        a += (0.3 / (m + 1)) * std::exp(-2 * M_PI * fn[m] * 0.015 * t) * std::sin(2 * M_PI * fn[m] * t + c);
       volts[c] = a;
     }
     for (int c = 0; c < 4; ++c) {

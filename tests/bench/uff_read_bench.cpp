@@ -34,8 +34,8 @@ std::size_t targetBytes() {
 // samples: a decaying 37 Hz sine with a little deterministic noise.
 std::string ensureFile(bool binary) {
   const std::size_t bytes = targetBytes();
-  const std::string path = "/tmp/mozzi_bench_uff_" + std::string(binary ? "bin" : "ascii") + "_" +
-                           std::to_string(bytes >> 20) + "MB.uff";
+  const std::string path =
+      "/tmp/mozzi_bench_uff_" + std::string(binary ? "bin" : "ascii") + "_" + std::to_string(bytes >> 20) + "MB.uff";
   if (fs::exists(path)) return path;
   // Binary: 4 bytes per point; ASCII: 13 bytes per point plus a newline per 6.
   const double perPoint = binary ? 4.0 : 13.0 + 1.0 / 6.0;
@@ -113,10 +113,18 @@ void catBench(benchmark::State& state, bool binary) {
   state.SetBytesProcessed(state.iterations() * size);
 }
 
-void BM_UffRead58Binary(benchmark::State& state) { readBench(state, true); }
-void BM_UffRead58Ascii(benchmark::State& state) { readBench(state, false); }
-void BM_CatFloor58Binary(benchmark::State& state) { catBench(state, true); }
-void BM_CatFloor58Ascii(benchmark::State& state) { catBench(state, false); }
+void BM_UffRead58Binary(benchmark::State& state) {
+  readBench(state, true);
+}
+void BM_UffRead58Ascii(benchmark::State& state) {
+  readBench(state, false);
+}
+void BM_CatFloor58Binary(benchmark::State& state) {
+  catBench(state, true);
+}
+void BM_CatFloor58Ascii(benchmark::State& state) {
+  catBench(state, false);
+}
 
 BENCHMARK(BM_UffRead58Binary)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_CatFloor58Binary)->Unit(benchmark::kMillisecond)->UseRealTime();

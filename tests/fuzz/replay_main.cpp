@@ -31,8 +31,8 @@ void runOne(const std::vector<std::uint8_t>& input) {
   LLVMFuzzerTestOneInput(copy.empty() ? nullptr : copy.data(), copy.size());
 }
 
-std::vector<std::uint8_t> mutate(const std::vector<std::uint8_t>& seed,
-                                 const std::vector<std::uint8_t>& other, std::mt19937_64& rng) {
+std::vector<std::uint8_t> mutate(const std::vector<std::uint8_t>& seed, const std::vector<std::uint8_t>& other,
+                                 std::mt19937_64& rng) {
   std::vector<std::uint8_t> out = seed;
   auto pick = [&](std::size_t n) { return n == 0 ? std::size_t{0} : static_cast<std::size_t>(rng() % n); };
   const int edits = 1 + static_cast<int>(rng() % 8);

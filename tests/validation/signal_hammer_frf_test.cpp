@@ -24,8 +24,8 @@ constexpr double kPi = 3.14159265358979323846;
 // Analytic accelerance column for a force at DOF `input`.
 ComplexVector analyticAccelerance(const LinearMdof& s, double fHz, Eigen::Index input) {
   const double w = 2.0 * kPi * fHz;
-  const ComplexMatrix z = s.stiffness.cast<Complex>() - w * w * s.mass.cast<Complex>() +
-                          Complex(0.0, w) * s.damping.cast<Complex>();
+  const ComplexMatrix z =
+      s.stiffness.cast<Complex>() - w * w * s.mass.cast<Complex>() + Complex(0.0, w) * s.damping.cast<Complex>();
   ComplexVector e = ComplexVector::Zero(s.dofCount());
   e[input] = 1.0;
   return -w * w * z.partialPivLu().solve(e);
@@ -139,10 +139,10 @@ TEST(SignalHammerFrf, SdofRecoveredWithinOnePercentAndOneDegree) {
     ASSERT_TRUE(frf->validate().ok());
     EXPECT_EQ(frf->type, FrfType::Accelerance);
     const BandError e = compare(*frf, sys, 0, kLowEdgeHz, band);
-    std::printf("SDOF %s: %d lines %.0f..%.0f Hz, max |H| error %.3f%% (at %.2f Hz), max phase error %.3f deg, "
-                "min coherence %.5f\n",
-                frfEstimatorName(est), e.lines, kLowEdgeHz, band, 100 * e.maxMagRel, e.worstHz, e.maxPhaseDeg,
-                e.minCoherence);
+    std::printf(
+        "SDOF %s: %d lines %.0f..%.0f Hz, max |H| error %.3f%% (at %.2f Hz), max phase error %.3f deg, "
+        "min coherence %.5f\n",
+        frfEstimatorName(est), e.lines, kLowEdgeHz, band, 100 * e.maxMagRel, e.worstHz, e.maxPhaseDeg, e.minCoherence);
     EXPECT_GT(e.lines, 1000);
     EXPECT_LT(e.maxMagRel, 0.01);     // issue 3: |H| within 1%
     EXPECT_LT(e.maxPhaseDeg, 1.0);    // issue 3: phase within 1 degree
@@ -165,10 +165,10 @@ TEST(SignalHammerFrf, TwoDofPointAndTransferRecovered) {
   ASSERT_EQ(frf->responseCount(), 2);
   for (Eigen::Index o = 0; o < 2; ++o) {
     const BandError e = compare(*frf, sys, 0, kLowEdgeHz, band, o);
-    std::printf("2-DOF H1 response %ld: %d lines %.0f..%.0f Hz, max |H| error %.3f%% (at %.2f Hz), max phase error "
-                "%.3f deg, min coherence %.5f\n",
-                static_cast<long>(o), e.lines, kLowEdgeHz, band, 100 * e.maxMagRel, e.worstHz, e.maxPhaseDeg,
-                e.minCoherence);
+    std::printf(
+        "2-DOF H1 response %ld: %d lines %.0f..%.0f Hz, max |H| error %.3f%% (at %.2f Hz), max phase error "
+        "%.3f deg, min coherence %.5f\n",
+        static_cast<long>(o), e.lines, kLowEdgeHz, band, 100 * e.maxMagRel, e.worstHz, e.maxPhaseDeg, e.minCoherence);
     EXPECT_LT(e.maxMagRel, 0.01);
     EXPECT_LT(e.maxPhaseDeg, 1.0);
     EXPECT_GT(e.minCoherence, 0.99);

@@ -1,7 +1,7 @@
 #include "views/panels/project_overview.h"
 
-#include <QEvent>
 #include <QDir>
+#include <QEvent>
 #include <QFileInfo>
 #include <QHeaderView>
 #include <QLabel>
@@ -59,7 +59,9 @@ void ProjectOverview::clear() {
   retranslate();
 }
 
-int ProjectOverview::specimenRows() const { return specimens_->rowCount(); }
+int ProjectOverview::specimenRows() const {
+  return specimens_->rowCount();
+}
 
 void ProjectOverview::changeEvent(QEvent* event) {
   if (event->type() == QEvent::LanguageChange) retranslate();
@@ -70,8 +72,9 @@ void ProjectOverview::retranslate() {
   specimens_->setHorizontalHeaderLabels({tr("Specimen"), tr("Kind"), tr("Description")});
   if (!hasProject_) {
     title_->setText(tr("No project open"));
-    details_->setText(tr("Create a project with File > New, open one with File > Open, "
-                         "or try the demo with Tools > Create Demo Project."));
+    details_->setText(
+        tr("Create a project with File > New, open one with File > Open, "
+           "or try the demo with Tools > Create Demo Project."));
     return;
   }
   title_->setText(QFileInfo(path_).completeBaseName());

@@ -1,14 +1,14 @@
 #include "views/plots/frf_plot.h"
 
+#include <qwt_plot.h>
+#include <qwt_plot_curve.h>
+#include <qwt_plot_grid.h>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QVBoxLayout>
-#include <qwt_plot.h>
-#include <qwt_plot_curve.h>
-#include <qwt_plot_grid.h>
 
 #include "core/common/plot_math.h"
 #include "views/plots/vector_series.h"
@@ -74,7 +74,9 @@ int FrfPlot::pairCount() const {
   return frfs_ ? static_cast<int>(frfs_->responseCount() * frfs_->referenceCount()) : 0;
 }
 
-size_t FrfPlot::shownSamples() const { return magnitudeCurve_->dataSize(); }
+size_t FrfPlot::shownSamples() const {
+  return magnitudeCurve_->dataSize();
+}
 
 bool FrfPlot::showPair(int response, int reference) {
   if (!frfs_ || response < 0 || reference < 0 || response >= frfs_->responseCount() ||

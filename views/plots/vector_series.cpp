@@ -15,14 +15,18 @@ VectorSeries::VectorSeries(std::shared_ptr<const core::Vector> x, std::shared_pt
   }
 }
 
-size_t VectorSeries::size() const { return static_cast<size_t>(std::min(x_->size(), y_->size())); }
+size_t VectorSeries::size() const {
+  return static_cast<size_t>(std::min(x_->size(), y_->size()));
+}
 
 QPointF VectorSeries::sample(size_t i) const {
   const auto k = static_cast<Eigen::Index>(i);
   return {(*x_)[k], (*y_)[k]};
 }
 
-QRectF VectorSeries::boundingRect() const { return bounds_; }
+QRectF VectorSeries::boundingRect() const {
+  return bounds_;
+}
 
 }  // namespace views
 }  // namespace mozzi

@@ -1,7 +1,5 @@
 #include "views/scene/scene_view.h"
 
-#include <QSurfaceFormat>
-#include <QVBoxLayout>
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkActor.h>
 #include <vtkAxesActor.h>
@@ -10,15 +8,17 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
+#include <QSurfaceFormat>
+#include <QVBoxLayout>
 
-#include <algorithm>
-#include <unordered_map>
 #include <vtkCamera.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkNew.h>
 #include <vtkOrientationMarkerWidget.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
+#include <algorithm>
+#include <unordered_map>
 
 namespace mozzi {
 namespace views {
@@ -36,7 +36,9 @@ struct SceneView::Pipeline {
   vtkNew<vtkPolyData> nodes;
 };
 
-void SceneView::prepareSurfaceFormat() { QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat()); }
+void SceneView::prepareSurfaceFormat() {
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+}
 
 SceneView::SceneView(QWidget* parent) : QWidget(parent), pipeline_(new Pipeline) {
   auto* layout = new QVBoxLayout(this);
@@ -75,9 +77,13 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), pipeline_(new Pipeline)
   pipeline_->renderer->ResetCamera();
 }
 
-SceneView::~SceneView() { delete pipeline_; }
+SceneView::~SceneView() {
+  delete pipeline_;
+}
 
-vtkRenderer* SceneView::renderer() const { return pipeline_->renderer; }
+vtkRenderer* SceneView::renderer() const {
+  return pipeline_->renderer;
+}
 
 void SceneView::showMesh(const core::io::StoredMesh& mesh, const std::vector<core::Vector3>& globalPositions) {
   vtkNew<vtkPoints> points;
@@ -115,7 +121,9 @@ void SceneView::showMesh(const core::io::StoredMesh& mesh, const std::vector<cor
   render();
 }
 
-void SceneView::clearMesh() { showMesh({}, {}); }
+void SceneView::clearMesh() {
+  showMesh({}, {});
+}
 
 void SceneView::render() {
   pipeline_->window->Render();

@@ -110,7 +110,8 @@ int info(const std::string& file, bool json, std::ostream& out, std::ostream& er
         << s.responseCount << " responses x " << s.referenceCount << " references\n";
   }
   if (!modal->empty()) out << "  modal results:\n";
-  for (const auto& m : *modal) out << "    " << m.id << " " << m.name << " (" << m.method << "): " << m.modeCount << " modes\n";
+  for (const auto& m : *modal)
+    out << "    " << m.id << " " << m.name << " (" << m.method << "): " << m.modeCount << " modes\n";
   out << "  rows per table:\n";
   for (const auto& c : summary->counts) out << "    " << c.table << ": " << c.rows << "\n";
   return kExitOk;
@@ -154,7 +155,8 @@ int exportUff(const core::io::ProjectStore& store, const std::string& file, cons
     }
     if (!mesh->nodes.empty()) {
       uff::NodeSet nodes;
-      for (const auto& n : mesh->nodes) nodes.nodes.push_back({n.label, n.definitionCs, n.displacementCs, 0, n.position});
+      for (const auto& n : mesh->nodes)
+        nodes.nodes.push_back({n.label, n.definitionCs, n.displacementCs, 0, n.position});
       uffFile.datasets.push_back(uff::makeDataset(nodes));
     }
     if (!mesh->lines.empty()) {
@@ -225,8 +227,7 @@ int exportUff(const core::io::ProjectStore& store, const std::string& file, cons
   options.encoding = binary ? uff::Encoding58::Binary : uff::Encoding58::Ascii;
   if (auto r = uff::writeFile(outPath, uffFile, options); !r) return fail(err, "export", r.error());
   out << "wrote " << outPath << ": " << uffFile.datasets.size() << " datasets (" << exportedSets << " FRF sets, "
-      << exportedModal << " modal results" << (warnings ? ", " + std::to_string(warnings) + " skipped" : "")
-      << ")\n";
+      << exportedModal << " modal results" << (warnings ? ", " + std::to_string(warnings) + " skipped" : "") << ")\n";
   return kExitOk;
 }
 
@@ -266,7 +267,8 @@ int projectCommand(const std::vector<std::string>& args, std::ostream& out, std:
     return kExitOk;
   }
   if (sub == "demo") {
-    if (auto r = devices::sim::createDemoProject(file, buildinfo::kMozziVersion); !r) return fail(err, "demo", r.error());
+    if (auto r = devices::sim::createDemoProject(file, buildinfo::kMozziVersion); !r)
+      return fail(err, "demo", r.error());
     out << "created demo project " << file << " with " << devices::sim::virtualSpecimens().size()
         << " virtual specimens\n";
     return kExitOk;
@@ -303,7 +305,8 @@ int projectCommand(const std::vector<std::string>& args, std::ostream& out, std:
   return kExitUsage;
 }
 
-const CommandRegistrar kRegistrar({"project", "info|new|demo|export FILE.mozzi [--json] [--uff OUT.uff | --csv OUT.csv]",
+const CommandRegistrar kRegistrar({"project",
+                                   "info|new|demo|export FILE.mozzi [--json] [--uff OUT.uff | --csv OUT.csv]",
                                    "Create a project (empty or the demo), summarise it, or export its FRFs and modes",
                                    projectCommand});
 

@@ -26,22 +26,35 @@ nlohmann::json capsJson(const devices::Capabilities& c) {
   j["inputs"] = nlohmann::json::array();
   for (const auto& in : c.inputs) {
     nlohmann::json r = nlohmann::json::array();
-    for (const auto& range : in.ranges) r.push_back({{"code", range.code}, {"label", range.label}, {"min_v", range.minVolts}, {"max_v", range.maxVolts}});
+    for (const auto& range : in.ranges)
+      r.push_back({{"code", range.code}, {"label", range.label}, {"min_v", range.minVolts}, {"max_v", range.maxVolts}});
     nlohmann::json coupling = nlohmann::json::array();
     for (auto k : in.couplings) coupling.push_back(devices::couplingName(k));
-    j["inputs"].push_back({{"name", in.name}, {"ranges", r}, {"coupling", coupling}, {"iepe", in.iepeSupply}, {"bits", in.resolutionBits}});
+    j["inputs"].push_back({{"name", in.name},
+                           {"ranges", r},
+                           {"coupling", coupling},
+                           {"iepe", in.iepeSupply},
+                           {"bits", in.resolutionBits}});
   }
   j["outputs"] = nlohmann::json::array();
-  for (const auto& o : c.outputs) j["outputs"].push_back({{"name", o.name}, {"unit", o.unit}, {"min", o.min}, {"max", o.max}});
-  j["rates"] = {{"min_hz", c.rates.minHz}, {"max_hz", c.rates.maxHz}, {"max_aggregate_hz", c.rates.maxAggregateHz},
-                {"timebase_hz", c.rates.timebaseHz}, {"simultaneous", c.rates.simultaneous}};
+  for (const auto& o : c.outputs)
+    j["outputs"].push_back({{"name", o.name}, {"unit", o.unit}, {"min", o.min}, {"max", o.max}});
+  j["rates"] = {{"min_hz", c.rates.minHz},
+                {"max_hz", c.rates.maxHz},
+                {"max_aggregate_hz", c.rates.maxAggregateHz},
+                {"timebase_hz", c.rates.timebaseHz},
+                {"simultaneous", c.rates.simultaneous}};
   j["triggers"] = nlohmann::json::array();
   for (auto t : c.triggers) j["triggers"].push_back(devices::triggerKindName(t));
   j["fifo_samples"] = c.fifoSamples;
   j["parameters"] = nlohmann::json::array();
   for (const auto& p : c.parameters) {
-    nlohmann::json q = {{"key", p.key}, {"label", p.label}, {"type", devices::parameterTypeName(p.type)}, {"unit", p.unit},
-                        {"default", valueJson(p.defaultValue)}, {"help", p.help}};
+    nlohmann::json q = {{"key", p.key},
+                        {"label", p.label},
+                        {"type", devices::parameterTypeName(p.type)},
+                        {"unit", p.unit},
+                        {"default", valueJson(p.defaultValue)},
+                        {"help", p.help}};
     if (p.min) q["min"] = *p.min;
     if (p.max) q["max"] = *p.max;
     if (!p.choices.empty()) q["choices"] = p.choices;
@@ -57,15 +70,21 @@ nlohmann::json specimensJson() {
   for (const auto& e : devices::sim::specimenCatalogue()) {
     nlohmann::json modes = nlohmann::json::array();
     for (std::size_t r = 0; r < e.modes.size(); ++r)
-      modes.push_back({{"frequency_hz", e.modes[r].frequencyHz}, {"damping", e.modes[r].damping}, {"zeta", e.zeta(r)},
+      modes.push_back({{"frequency_hz", e.modes[r].frequencyHz},
+                       {"damping", e.modes[r].damping},
+                       {"zeta", e.zeta(r)},
                        {"shape", e.modes[r].shape}});
-    nlohmann::json s = {{"key", e.key}, {"name", e.name}, {"kind", e.kind}, {"modal_source", e.modalSource},
-                        {"damping_measure", devices::sim::dampingMeasureName(e.damping)}, {"modes", modes}};
+    nlohmann::json s = {{"key", e.key},
+                        {"name", e.name},
+                        {"kind", e.kind},
+                        {"modal_source", e.modalSource},
+                        {"damping_measure", devices::sim::dampingMeasureName(e.damping)},
+                        {"modes", modes}};
     if (e.statics) {
       const auto& st = *e.statics;
       s["static_source"] = e.staticSource;
       s["static"] = {{"lateral_stiffness_n_per_m", st.lateralStiffness}, {"twist_arm_m", st.twistArm},
-                     {"twist_stiffness_nm_per_rad", st.twistStiffness}, {"inclination_deg", st.inclinationDeg},
+                     {"twist_stiffness_nm_per_rad", st.twistStiffness},  {"inclination_deg", st.inclinationDeg},
                      {"inclination_tabulated", st.inclinationTabulated}, {"test_force_n", st.testForceN}};
     }
     all.push_back(s);
@@ -80,17 +99,24 @@ int list(bool json, std::ostream& out) {
   if (json) {
     nlohmann::json j;
     j["drivers"] = nlohmann::json::array();
-    for (auto* d : reg.drivers()) j["drivers"].push_back({{"name", d->name()}, {"description", d->description()}, {"simulated", d->simulated()}});
+    for (auto* d : reg.drivers())
+      j["drivers"].push_back({{"name", d->name()}, {"description", d->description()}, {"simulated", d->simulated()}});
     j["devices"] = nlohmann::json::array();
     for (const auto& d : found)
-      j["devices"].push_back({{"driver", d.driver}, {"model", d.model}, {"vid", d.vendorId}, {"pid", d.productId}, {"serial", d.serial}, {"bus", d.busPath}});
+      j["devices"].push_back({{"driver", d.driver},
+                              {"model", d.model},
+                              {"vid", d.vendorId},
+                              {"pid", d.productId},
+                              {"serial", d.serial},
+                              {"bus", d.busPath}});
     j["scan_failures"] = failures;
     j["specimens"] = specimensJson();
     out << j.dump(2) << "\n";
     return kExitOk;
   }
   out << "Drivers:\n";
-  for (auto* d : reg.drivers()) out << "  " << d->name() << (d->simulated() ? " (simulated)" : "") << ": " << d->description() << "\n";
+  for (auto* d : reg.drivers())
+    out << "  " << d->name() << (d->simulated() ? " (simulated)" : "") << ": " << d->description() << "\n";
   out << "Devices found:\n";
   for (const auto& d : found) out << "  " << d.driver << "  " << d.label() << "\n";
   for (const auto& f : failures) out << "  scan failed: " << f << "\n";
@@ -127,10 +153,12 @@ int caps(const std::string& driver, const std::string& file, bool json, std::ost
     out << j.dump(2) << "\n";
     return kExitOk;
   }
-  out << j["model"].get<std::string>() << "\n  inputs: " << j["inputs"].size() << ", max " << j["rates"]["max_hz"].get<double>()
-      << " Hz per channel, " << j["rates"]["max_aggregate_hz"].get<double>() << " S/s aggregate, FIFO " << j["fifo_samples"].get<std::int64_t>()
-      << " samples\n  parameters:\n";
-  for (const auto& p : j["parameters"]) out << "    " << p["key"].get<std::string>() << " (" << p["type"].get<std::string>() << ") " << p["help"].get<std::string>() << "\n";
+  out << j["model"].get<std::string>() << "\n  inputs: " << j["inputs"].size() << ", max "
+      << j["rates"]["max_hz"].get<double>() << " Hz per channel, " << j["rates"]["max_aggregate_hz"].get<double>()
+      << " S/s aggregate, FIFO " << j["fifo_samples"].get<std::int64_t>() << " samples\n  parameters:\n";
+  for (const auto& p : j["parameters"])
+    out << "    " << p["key"].get<std::string>() << " (" << p["type"].get<std::string>() << ") "
+        << p["help"].get<std::string>() << "\n";
   return kExitOk;
 }
 
@@ -148,9 +176,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   return kExitUsage;
 }
 
-const CommandRegistrar kRegistrar({"rig", "list | caps DRIVER [--file RECORDING] [--json]",
-                                   "acquisition drivers, devices found, virtual specimens, and capabilities and parameters",
-                                   &run});
+const CommandRegistrar kRegistrar(
+    {"rig", "list | caps DRIVER [--file RECORDING] [--json]",
+     "acquisition drivers, devices found, virtual specimens, and capabilities and parameters", &run});
 
 }  // namespace
 }  // namespace mozzi::cli

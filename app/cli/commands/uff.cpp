@@ -89,14 +89,15 @@ std::string textLine(const uff::Dataset& d) {
   if (const auto* f = d.get<uff::Function58>()) {
     s += std::string(f->binary ? " binary" : " ASCII") + " " + uff::functionTypeName(f->functionType) + ", " +
          std::to_string(f->pointCount()) + " points " + ordinateText(f->ordinateType) + ", response " +
-         channelText(f->response) + ", reference " + channelText(f->reference) + ", [" + f->ordinateNumerator.unitsLabel;
+         channelText(f->response) + ", reference " + channelText(f->reference) + ", [" +
+         f->ordinateNumerator.unitsLabel;
     if (f->ordinateDenominator.unitsLabel != "NONE") s += "/" + f->ordinateDenominator.unitsLabel;
     s += "] over [" + f->abscissaAxis.unitsLabel + "]";
   } else if (const auto* h = d.get<uff::Header151>()) {
     s += " header: model '" + h->modelName + "'";
   } else if (const auto* u = d.get<uff::Units164>()) {
-    s += " units: code " + std::to_string(u->unitsCode) + " '" + u->description +
-         "', length factor " + std::to_string(u->lengthFactor) + ", force factor " + std::to_string(u->forceFactor);
+    s += " units: code " + std::to_string(u->unitsCode) + " '" + u->description + "', length factor " +
+         std::to_string(u->lengthFactor) + ", force factor " + std::to_string(u->forceFactor);
   } else if (const auto* n = d.get<uff::NodeSet>()) {
     s += " nodes: " + std::to_string(n->nodes.size());
   } else if (const auto* c = d.get<uff::CoordinateSystemSet>()) {

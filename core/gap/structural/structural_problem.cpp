@@ -1087,8 +1087,7 @@ Result<std::unique_ptr<GapProblem>> makeFrfProblem(const StructuralModel& model,
   }
   // The fitted band: lines inside [lo, hi] and above 0 Hz (the type
   // conversion and the lower residual divide by s).
-  auto banded = signal::selectBand(measured, std::max(options.bandLowHz, std::nextafter(0.0, 1.0)),
-                                   options.bandHighHz);
+  auto banded = signal::selectBand(measured, std::max(options.bandLowHz, std::nextafter(0.0, 1.0)), options.bandHighHz);
   if (!banded.ok() || banded->lineCount() < 4) {
     return makeError(ErrorCode::InvalidArgument,
                      "fewer than 4 frequency lines in the band " + hzLabel(options.bandLowHz, options.bandHighHz),

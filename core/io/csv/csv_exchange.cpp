@@ -105,8 +105,10 @@ Result<Table> parseTable(std::string_view text, const std::string& source) {
     if (t.titles.empty()) {
       // The header decides the separator: ',' unless it has none and ';' or tab.
       if (line.find(',') == std::string_view::npos) {
-        if (line.find(';') != std::string_view::npos) sep = ';';
-        else if (line.find('\t') != std::string_view::npos) sep = '\t';
+        if (line.find(';') != std::string_view::npos)
+          sep = ';';
+        else if (line.find('\t') != std::string_view::npos)
+          sep = '\t';
       }
       for (auto f : splitFields(line, sep)) t.titles.push_back(trim(f));
       t.headerLine = lineNo;
@@ -152,7 +154,8 @@ Title splitTitle(const std::string& title) {
   const std::size_t open = title.rfind('[');
   const std::size_t close = title.rfind(']');
   if (open == std::string::npos || close == std::string::npos || close < open) return {trim(title), std::nullopt};
-  return {trim(std::string_view(title).substr(0, open)), trim(std::string_view(title).substr(open + 1, close - open - 1))};
+  return {trim(std::string_view(title).substr(0, open)),
+          trim(std::string_view(title).substr(open + 1, close - open - 1))};
 }
 
 // Last whitespace-separated word of a name that parses as a DOF.
@@ -180,10 +183,15 @@ Result<FrfUnit> frfUnit(const std::string& unit) {
     return makeError(ErrorCode::ParseError, "FRF unit '" + unit + "' is not a translational response per force");
   }
   FrfType type;
-  if (response->quantity == "displacement") type = FrfType::Receptance;
-  else if (response->quantity == "velocity") type = FrfType::Mobility;
-  else if (response->quantity == "acceleration") type = FrfType::Accelerance;
-  else return makeError(ErrorCode::ParseError, "FRF unit '" + unit + "' is not displacement, velocity or acceleration per force");
+  if (response->quantity == "displacement")
+    type = FrfType::Receptance;
+  else if (response->quantity == "velocity")
+    type = FrfType::Mobility;
+  else if (response->quantity == "acceleration")
+    type = FrfType::Accelerance;
+  else
+    return makeError(ErrorCode::ParseError,
+                     "FRF unit '" + unit + "' is not displacement, velocity or acceleration per force");
   return FrfUnit{type, response->factor / force->factor};
 }
 
@@ -321,7 +329,8 @@ Result<TimeTable> readTimeCsv(std::string_view text, const std::string& source) 
   for (Eigen::Index r = 0; r < n; ++r) {
     for (std::size_t c = firstChannel; c < t.titles.size(); ++c) {
       const auto unit = siUnit(*splitTitle(t.titles[c]).unit);
-      out.samples(r, static_cast<Eigen::Index>(c - firstChannel)) = unit->factor * t.rows[static_cast<std::size_t>(r)][c];
+      out.samples(r, static_cast<Eigen::Index>(c - firstChannel)) =
+          unit->factor * t.rows[static_cast<std::size_t>(r)][c];
     }
   }
   // Sample rate: the comment key wins; otherwise the time column, which must
@@ -363,7 +372,8 @@ Result<TimeTable> readTimeCsv(std::string_view text, const std::string& source) 
 // --- FRFs ---------------------------------------------------------------------------------
 
 Result<void> writeFrfCsv(const FrfMatrix& frf, std::ostream& out) {
-  if (auto v = frf.validate(); !v) return makeError(v.error().code, v.error().message, "CSV export: " + v.error().where);
+  if (auto v = frf.validate(); !v)
+    return makeError(v.error().code, v.error().message, "CSV export: " + v.error().where);
   if (frf.lineCount() == 0 || frf.responseCount() == 0 || frf.referenceCount() == 0) {
     return makeError(ErrorCode::InvalidArgument, "empty FRF matrix", "CSV export");
   }
@@ -429,13 +439,16 @@ Result<FrfMatrix> readFrfCsv(std::string_view text, const std::string& source) {
     part = lower(part);
     const std::size_t slash = pair.find('/');
     if ((what != "h" && what != "coherence") || slash == std::string::npos) {
-      return parseError("column title '" + t.titles[c] + "' is not 'H <response>/<reference> re|im [unit]' or "
-                        "'coherence <response>/<reference> [1]'", source, t.headerLine, col);
+      return parseError("column title '" + t.titles[c] +
+                            "' is not 'H <response>/<reference> re|im [unit]' or "
+                            "'coherence <response>/<reference> [1]'",
+                        source, t.headerLine, col);
     }
     auto response = parseDof(pair.substr(0, slash));
     auto reference = parseDof(pair.substr(slash + 1));
     if (!response || !reference) {
-      return parseError("'" + pair + "' is not a response/reference DOF pair like 21:+Z/1:+Z", source, t.headerLine, col);
+      return parseError("'" + pair + "' is not a response/reference DOF pair like 21:+Z/1:+Z", source, t.headerLine,
+                        col);
     }
     Columns& cols = find(formatDof(*response) + "/" + formatDof(*reference));
     cols.response = *response;
@@ -477,8 +490,8 @@ Result<FrfMatrix> readFrfCsv(std::string_view text, const std::string& source) {
     }
   }
   if (pairs.size() != frf.responses.size() * frf.references.size()) {
-    return parseError("FRF columns do not form a full responses x references matrix (" +
-                          std::to_string(pairs.size()) + " pairs for " + std::to_string(frf.responses.size()) + " x " +
+    return parseError("FRF columns do not form a full responses x references matrix (" + std::to_string(pairs.size()) +
+                          " pairs for " + std::to_string(frf.responses.size()) + " x " +
                           std::to_string(frf.references.size()) + ")",
                       source, t.headerLine);
   }
@@ -496,7 +509,8 @@ Result<FrfMatrix> readFrfCsv(std::string_view text, const std::string& source) {
                                             frf.references.begin());
     for (Eigen::Index k = 0; k < nf; ++k) {
       const auto& row = t.rows[static_cast<std::size_t>(k)];
-      frf.h[i](k, o) = cols.factor * Complex(row[static_cast<std::size_t>(cols.re)], row[static_cast<std::size_t>(cols.im)]);
+      frf.h[i](k, o) =
+          cols.factor * Complex(row[static_cast<std::size_t>(cols.re)], row[static_cast<std::size_t>(cols.im)]);
       if (allCoh) frf.coherence[i](k, o) = row[static_cast<std::size_t>(cols.coh)];
     }
   }
@@ -506,7 +520,8 @@ Result<FrfMatrix> readFrfCsv(std::string_view text, const std::string& source) {
       return parseError("frequencies must increase strictly", source, t.rowLines[static_cast<std::size_t>(k)], 1);
     }
   }
-  if (auto v = frf.validate(); !v) return parseError(v.error().message + " (" + v.error().where + ")", source, t.headerLine);
+  if (auto v = frf.validate(); !v)
+    return parseError(v.error().message + " (" + v.error().where + ")", source, t.headerLine);
   return frf;
 }
 
@@ -518,12 +533,16 @@ Result<void> writeModalCsv(const ModalTable& table, std::ostream& out) {
     const auto& mode = table.modes[m];
     if (!std::isfinite(mode.frequencyHz) || !std::isfinite(mode.dampingRatio) || !mode.shape.allFinite() ||
         (mode.shape.size() != 0 && mode.shape.size() != static_cast<Eigen::Index>(table.dofs.size()))) {
-      return makeError(ErrorCode::InvalidArgument, "mode " + std::to_string(m + 1) + " is not finite or its shape "
-                                                   "does not match the DOFs", "CSV export");
+      return makeError(ErrorCode::InvalidArgument,
+                       "mode " + std::to_string(m + 1) +
+                           " is not finite or its shape "
+                           "does not match the DOFs",
+                       "CSV export");
     }
   }
   out << kMagic << ", modal\nmode [1],frequency [Hz],damping ratio [1]";
-  const bool shapes = std::any_of(table.modes.begin(), table.modes.end(), [](const auto& m) { return m.shape.size() > 0; });
+  const bool shapes =
+      std::any_of(table.modes.begin(), table.modes.end(), [](const auto& m) { return m.shape.size() > 0; });
   if (shapes) {
     for (const Dof& d : table.dofs) out << ',' << formatDof(d) << " re [1]," << formatDof(d) << " im [1]";
   }
@@ -570,7 +589,8 @@ Result<ModalTable> readModalCsv(std::string_view text, const std::string& source
     }
     if (name == "damping ratio" || name == "loss factor") {
       auto u = siUnit(title.unit.value_or("1"));
-      if (!u || !u->quantity.empty()) return parseError("damping must be dimensionless ([1] or [%])", source, t.headerLine, col);
+      if (!u || !u->quantity.empty())
+        return parseError("damping must be dimensionless ([1] or [%])", source, t.headerLine, col);
       // Loss factor eta = 2 zeta (DESIGN.md conventions); stored as zeta.
       dampFactor = u->factor * (name == "loss factor" ? 0.5 : 1.0);
       dampCol = static_cast<int>(c);
@@ -582,8 +602,10 @@ Result<ModalTable> readModalCsv(std::string_view text, const std::string& source
     auto dof = parseDof(dofText);
     part = lower(part);
     if (!dof || (part != "re" && part != "im")) {
-      return parseError("column title '" + t.titles[c] + "' is not mode, frequency, damping ratio, loss factor or "
-                        "'<DOF> re|im'", source, t.headerLine, col);
+      return parseError("column title '" + t.titles[c] +
+                            "' is not mode, frequency, damping ratio, loss factor or "
+                            "'<DOF> re|im'",
+                        source, t.headerLine, col);
     }
     auto it = std::find_if(shape.begin(), shape.end(), [&](const ShapeCols& s) { return s.dof == *dof; });
     if (it == shape.end()) {
@@ -608,8 +630,8 @@ Result<ModalTable> readModalCsv(std::string_view text, const std::string& source
     if (m.frequencyHz < 0) return parseError("negative natural frequency", source, t.rowLines[r], freqCol + 1);
     m.shape.resize(static_cast<Eigen::Index>(shape.size()));
     for (std::size_t d = 0; d < shape.size(); ++d) {
-      m.shape[static_cast<Eigen::Index>(d)] = Complex(t.rows[r][static_cast<std::size_t>(shape[d].re)],
-                                                      t.rows[r][static_cast<std::size_t>(shape[d].im)]);
+      m.shape[static_cast<Eigen::Index>(d)] =
+          Complex(t.rows[r][static_cast<std::size_t>(shape[d].re)], t.rows[r][static_cast<std::size_t>(shape[d].im)]);
     }
     out.modes.push_back(std::move(m));
   }

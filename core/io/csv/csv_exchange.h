@@ -39,9 +39,9 @@ Result<void> exportModalCsv(const ModalTable& table, const std::string& path);
 // Scale factor to SI and the SI unit for a unit text ("g" -> 9.80665, "m/s^2").
 // Exposed for the MATLAB importer's channel map. Unknown units are an error.
 struct SiUnit {
-  double factor = 1.0;    // value_SI = factor * value
-  std::string unit;       // canonical SI unit
-  std::string quantity;   // "force", "acceleration", "velocity", "displacement", "time", "frequency", ""
+  double factor = 1.0;   // value_SI = factor * value
+  std::string unit;      // canonical SI unit
+  std::string quantity;  // "force", "acceleration", "velocity", "displacement", "time", "frequency", ""
 };
 Result<SiUnit> siUnit(std::string_view unit);
 

@@ -120,13 +120,14 @@ Result<Array> readArray(mat_t* mat, const std::string& name, const std::string& 
   if (!info) return makeError(ErrorCode::NotFound, "no such variable in the file", where);
   const matvar_t* target = info.get();
   if (dot != std::string::npos) {
-    if (info->class_type != MAT_C_STRUCT) return makeError(ErrorCode::InvalidArgument, "'" + top + "' is not a struct", where);
+    if (info->class_type != MAT_C_STRUCT)
+      return makeError(ErrorCode::InvalidArgument, "'" + top + "' is not a struct", where);
     target = Mat_VarGetStructFieldByName(info.get(), name.substr(dot + 1).c_str(), 0);
     if (!target) return makeError(ErrorCode::NotFound, "no such struct field", where);
   }
   if (!isNumericClass(target->class_type)) {
-    return makeError(ErrorCode::Unsupported, "variable is of class " + className(target->class_type) +
-                                                 ", not a numeric array", where);
+    return makeError(ErrorCode::Unsupported,
+                     "variable is of class " + className(target->class_type) + ", not a numeric array", where);
   }
   auto n = elementCount(target, where);
   if (!n) return n.error();
@@ -175,8 +176,8 @@ bool isVector(const Array& a) {
 
 bool matV73Supported() {
   static const bool supported = [] {
-    const auto path = std::filesystem::temp_directory_path() /
-                      ("mozzi_matio_probe_" + std::to_string(::getpid()) + ".mat");
+    const auto path =
+        std::filesystem::temp_directory_path() / ("mozzi_matio_probe_" + std::to_string(::getpid()) + ".mat");
     mat_t* m = Mat_CreateVer(path.string().c_str(), nullptr, MAT_FT_MAT73);
     const bool ok = m != nullptr;
     if (m) Mat_Close(m);
@@ -249,30 +250,32 @@ Result<TimeTable> importTimeRecord(const std::string& path, const TimeImportOpti
   if (transposed) std::swap(samples, columns);
   if (time) {
     if (time->size() != samples) {
-      return makeError(ErrorCode::InvalidArgument,
-                       "time vector has " + std::to_string(time->size()) + " samples, the data " +
-                           std::to_string(samples),
-                       where);
+      return makeError(
+          ErrorCode::InvalidArgument,
+          "time vector has " + std::to_string(time->size()) + " samples, the data " + std::to_string(samples), where);
     }
     const double dt = (time->re.back() - time->re.front()) / static_cast<double>(samples - 1);
     if (!(dt > 0)) return makeError(ErrorCode::InvalidArgument, "time vector does not increase", where);
     for (std::size_t k = 0; k < samples; ++k) {
       // Evenly spaced to 0.1 % of a period, as for CSV time columns.
       if (std::abs(time->re[k] - (time->re.front() + static_cast<double>(k) * dt)) > 1e-3 * dt) {
-        return makeError(ErrorCode::InvalidArgument, "time vector is not evenly spaced at element " + std::to_string(k + 1),
-                         where);
+        return makeError(ErrorCode::InvalidArgument,
+                         "time vector is not evenly spaced at element " + std::to_string(k + 1), where);
       }
     }
     rate = 1.0 / dt;
   }
   if (!rate) {
-    return makeError(ErrorCode::InvalidArgument, "no sample rate: give a rate, a rate variable or a time variable", where);
+    return makeError(ErrorCode::InvalidArgument, "no sample rate: give a rate, a rate variable or a time variable",
+                     where);
   }
-  if (!(*rate > 0) || !std::isfinite(*rate)) return makeError(ErrorCode::InvalidArgument, "sample rate must be positive", where);
+  if (!(*rate > 0) || !std::isfinite(*rate))
+    return makeError(ErrorCode::InvalidArgument, "sample rate must be positive", where);
 
   std::vector<ChannelMap> map = options.channels;
   if (map.empty()) {
-    for (std::size_t c = 0; c < columns; ++c) map.push_back({static_cast<int>(c), "channel " + std::to_string(c + 1), {}, "1"});
+    for (std::size_t c = 0; c < columns; ++c)
+      map.push_back({static_cast<int>(c), "channel " + std::to_string(c + 1), {}, "1"});
   }
   TimeTable out;
   out.sampleRateHz = *rate;
@@ -286,9 +289,11 @@ Result<TimeTable> importTimeRecord(const std::string& path, const TimeImportOpti
                        where);
     }
     auto unit = csv::siUnit(m.unit);
-    if (!unit) return makeError(ErrorCode::InvalidArgument, unit.error().message + " for column " + std::to_string(m.column), where);
-    out.channels.push_back({m.name.empty() ? "channel " + std::to_string(m.column + 1) : m.name, m.dof,
-                            unit->quantity, unit->unit});
+    if (!unit)
+      return makeError(ErrorCode::InvalidArgument, unit.error().message + " for column " + std::to_string(m.column),
+                       where);
+    out.channels.push_back(
+        {m.name.empty() ? "channel " + std::to_string(m.column + 1) : m.name, m.dof, unit->quantity, unit->unit});
     for (std::size_t r = 0; r < samples; ++r) {
       // Column-major: element (row, col) of a rows x cols array is at row + col * rows.
       const std::size_t index = transposed ? static_cast<std::size_t>(m.column) + r * columns
@@ -341,11 +346,14 @@ Result<FrfMatrix> importFrfMatrix(const std::string& path, const FrfImportOption
     auto force = csv::siUnit(options.unit.substr(slash + 1));
     auto response = csv::siUnit(options.unit.substr(0, slash));
     if (!force || force->quantity != "force" || !response) {
-      return makeError(ErrorCode::InvalidArgument, "FRF unit '" + options.unit + "' is not a response per force", where);
+      return makeError(ErrorCode::InvalidArgument, "FRF unit '" + options.unit + "' is not a response per force",
+                       where);
     }
-    if (response->quantity == "displacement") return std::make_pair(FrfType::Receptance, response->factor / force->factor);
+    if (response->quantity == "displacement")
+      return std::make_pair(FrfType::Receptance, response->factor / force->factor);
     if (response->quantity == "velocity") return std::make_pair(FrfType::Mobility, response->factor / force->factor);
-    if (response->quantity == "acceleration") return std::make_pair(FrfType::Accelerance, response->factor / force->factor);
+    if (response->quantity == "acceleration")
+      return std::make_pair(FrfType::Accelerance, response->factor / force->factor);
     return makeError(ErrorCode::InvalidArgument, "FRF unit '" + options.unit + "' is not a response per force", where);
   }();
   if (!unit) return unit.error();
@@ -374,9 +382,9 @@ Result<FrfMatrix> importFrfMatrix(const std::string& path, const FrfImportOption
   }
   for (int c : referenceCols) {
     if (c < 0 || static_cast<std::size_t>(c) >= fileReferences) {
-      return makeError(ErrorCode::InvalidArgument,
-                       "reference column " + std::to_string(c) + " outside the file's " + std::to_string(fileReferences),
-                       where);
+      return makeError(
+          ErrorCode::InvalidArgument,
+          "reference column " + std::to_string(c) + " outside the file's " + std::to_string(fileReferences), where);
     }
   }
   FrfMatrix frf;
@@ -400,7 +408,8 @@ Result<FrfMatrix> importFrfMatrix(const std::string& path, const FrfImportOption
       }
     }
   }
-  if (auto v = frf.validate(); !v) return makeError(ErrorCode::InvalidArgument, v.error().message, where + ": " + v.error().where);
+  if (auto v = frf.validate(); !v)
+    return makeError(ErrorCode::InvalidArgument, v.error().message, where + ": " + v.error().where);
   return frf;
 }
 

@@ -22,8 +22,8 @@ bool matV73Supported();
 
 struct MatVariableInfo {
   std::string name;
-  std::string className;           // "double", "single", "int16", "struct", ...
-  std::vector<std::size_t> dims;   // MATLAB order (rows, columns, pages...)
+  std::string className;          // "double", "single", "int16", "struct", ...
+  std::vector<std::size_t> dims;  // MATLAB order (rows, columns, pages...)
   bool isComplex = false;
 };
 
@@ -41,11 +41,11 @@ struct ChannelMap {
 };
 
 struct TimeImportOptions {
-  std::string dataVariable;                  // samples x channels (channels x samples is transposed when unambiguous)
-  std::string sampleRateVariable;            // scalar [Hz], or
-  std::string timeVariable;                  // evenly spaced time vector [s], or
-  std::optional<double> sampleRateHz;        // the rate given by the user
-  std::vector<ChannelMap> channels;          // empty: every column, dimensionless, named "channel k"
+  std::string dataVariable;            // samples x channels (channels x samples is transposed when unambiguous)
+  std::string sampleRateVariable;      // scalar [Hz], or
+  std::string timeVariable;            // evenly spaced time vector [s], or
+  std::optional<double> sampleRateHz;  // the rate given by the user
+  std::vector<ChannelMap> channels;    // empty: every column, dimensionless, named "channel k"
 };
 
 Result<TimeTable> importTimeRecord(const std::string& path, const TimeImportOptions& options);
@@ -58,9 +58,9 @@ struct FrfImportOptions {
   // dimension) becomes responses[k]; empty columns = 0, 1, 2, ... in order.
   std::vector<Dof> responses;
   std::vector<int> responseColumns;
-  std::vector<Dof> references;    // one per page of the reference dimension
+  std::vector<Dof> references;  // one per page of the reference dimension
   std::vector<int> referenceColumns;
-  std::string unit = "m/s^2/N";   // FRF unit in the file: sets type and scale ("g/N", "mm/N", "m/s/N", ...)
+  std::string unit = "m/s^2/N";  // FRF unit in the file: sets type and scale ("g/N", "mm/N", "m/s/N", ...)
 };
 
 Result<FrfMatrix> importFrfMatrix(const std::string& path, const FrfImportOptions& options);

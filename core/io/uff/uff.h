@@ -42,8 +42,8 @@ namespace mozzi::core::io::uff {
 // A quirk read anyway (CR/LF, short line, missing columns, fewer points than
 // declared) or a dataset skipped. `line` is 1-based in the file.
 struct Warning {
-  int datasetType = 0;     // dataset number, e.g. 58
-  std::int64_t line = 0;   // 1-based line of the offending record
+  int datasetType = 0;    // dataset number, e.g. 58
+  std::int64_t line = 0;  // 1-based line of the offending record
   std::string message;
   // "dataset 58, line 12: <message>"
   std::string describe() const;
@@ -52,21 +52,21 @@ struct Warning {
 // ---------------------------------------------------------------------------
 // Dataset 151: header (seven 80-character records).
 struct Header151 {
-  std::string modelName;         // record 1
-  std::string description;       // record 2
-  std::string dbProgram;         // record 3: program which created the model
-  std::string dbCreated;         // record 4: date, time, version fields as written
-  std::string dbSaved;           // record 5: date and time last saved
-  std::string uffProgram;        // record 6: program which wrote this file
-  std::string uffWritten;        // record 7: date and time written
+  std::string modelName;    // record 1
+  std::string description;  // record 2
+  std::string dbProgram;    // record 3: program which created the model
+  std::string dbCreated;    // record 4: date, time, version fields as written
+  std::string dbSaved;      // record 5: date and time last saved
+  std::string uffProgram;   // record 6: program which wrote this file
+  std::string uffWritten;   // record 7: date and time written
 };
 
 // Dataset 164: units. Unit factors convert file units to SI by division:
 // SI = value / factor (e.g. length factor 1000 for millimetres).
 struct Units164 {
-  int unitsCode = 1;             // 1 SI, 2 BG, 3 MG, 4 BA, 5 MM, 6 CM, 7 IN, 8 GM, 9 user defined, 10 MN
-  std::string description;       // e.g. "SI: Meter (newton)"
-  int temperatureMode = 2;       // 1 absolute, 2 relative
+  int unitsCode = 1;        // 1 SI, 2 BG, 3 MG, 4 BA, 5 MM, 6 CM, 7 IN, 8 GM, 9 user defined, 10 MN
+  std::string description;  // e.g. "SI: Meter (newton)"
+  int temperatureMode = 2;  // 1 absolute, 2 relative
   double lengthFactor = 1.0;
   double forceFactor = 1.0;
   double temperatureFactor = 1.0;
@@ -76,13 +76,13 @@ struct Units164 {
 // Datasets 15 (single precision) and 2411 (double precision): nodes.
 struct Node {
   int label = 0;
-  int definitionCs = 0;          // coordinate system the coordinates are given in
-  int displacementCs = 0;        // coordinate system of the node's DOF directions
+  int definitionCs = 0;    // coordinate system the coordinates are given in
+  int displacementCs = 0;  // coordinate system of the node's DOF directions
   int color = 0;
-  Vector3 xyz = Vector3::Zero(); // file length units
+  Vector3 xyz = Vector3::Zero();  // file length units
 };
 struct NodeSet {
-  int datasetType = 2411;        // 15 or 2411 (decides the precision written)
+  int datasetType = 2411;  // 15 or 2411 (decides the precision written)
   std::vector<Node> nodes;
 };
 
@@ -92,10 +92,10 @@ struct NodeSet {
 // the unit axis directions as rows either way.
 struct CoordinateSystem {
   int label = 0;
-  int type = 0;                  // 0 cartesian, 1 cylindrical, 2 spherical
-  int referenceCs = 0;           // 18: system the definition points are given in
+  int type = 0;         // 0 cartesian, 1 cylindrical, 2 spherical
+  int referenceCs = 0;  // 18: system the definition points are given in
   int color = 0;
-  int definitionMethod = 1;      // 18 only (1 = origin, +x point, +xz point)
+  int definitionMethod = 1;  // 18 only (1 = origin, +x point, +xz point)
   std::string name;
   Vector3 origin = Vector3::Zero();
   Vector3 xPoint = Vector3::UnitX();   // 18: point on +x axis
@@ -103,9 +103,9 @@ struct CoordinateSystem {
   Matrix3 axes = Matrix3::Identity();  // rows: x, y, z unit vectors
 };
 struct CoordinateSystemSet {
-  int datasetType = 2420;        // 18 or 2420
-  int partUid = 1;               // 2420 record 1
-  std::string partName;          // 2420 record 2
+  int datasetType = 2420;  // 18 or 2420
+  int partUid = 1;         // 2420 record 1
+  std::string partName;    // 2420 record 2
   std::vector<CoordinateSystem> systems;
 };
 
@@ -119,21 +119,27 @@ struct TraceLine82 {
 
 // Dataset 55: data at nodes (one mode, one frequency, ...).
 enum class AnalysisType : int {
-  Unknown = 0, Static = 1, NormalMode = 2, ComplexEigenFirstOrder = 3, Transient = 4,
-  FrequencyResponse = 5, Buckling = 6, ComplexEigenSecondOrder = 7,
+  Unknown = 0,
+  Static = 1,
+  NormalMode = 2,
+  ComplexEigenFirstOrder = 3,
+  Transient = 4,
+  FrequencyResponse = 5,
+  Buckling = 6,
+  ComplexEigenSecondOrder = 7,
 };
 struct NodeValues55 {
   int node = 0;
-  ComplexVector values;          // NDV values (imaginary part 0 for real data)
+  ComplexVector values;  // NDV values (imaginary part 0 for real data)
 };
 struct ModalData55 {
   std::array<std::string, 5> idLines;
-  int modelType = 1;             // 0 unknown, 1 structural, 2 heat transfer, 3 fluid flow
+  int modelType = 1;  // 0 unknown, 1 structural, 2 heat transfer, 3 fluid flow
   AnalysisType analysisType = AnalysisType::NormalMode;
-  int dataCharacteristic = 2;    // 1 scalar, 2 3-DOF translation, 3 6-DOF translation+rotation, 4/5 tensor
-  int specificDataType = 8;      // 8 displacement, 11 velocity, 12 acceleration, ...
-  bool complexData = false;      // data type 5 (complex) vs 2 (real)
-  int valuesPerNode = 3;         // NDV
+  int dataCharacteristic = 2;      // 1 scalar, 2 3-DOF translation, 3 6-DOF translation+rotation, 4/5 tensor
+  int specificDataType = 8;        // 8 displacement, 11 velocity, 12 acceleration, ...
+  bool complexData = false;        // data type 5 (complex) vs 2 (real)
+  int valuesPerNode = 3;           // NDV
   std::vector<int> integerValues;  // record 7 after NINT, NRVAL: load case, mode number, ...
   std::vector<double> realValues;  // record 8, see the accessors below
   std::vector<NodeValues55> nodes;
@@ -147,26 +153,53 @@ struct ModalData55 {
 
 // Dataset 58 / 58b: function at a nodal DOF.
 enum class FunctionType : int {
-  General = 0, TimeResponse = 1, AutoSpectrum = 2, CrossSpectrum = 3, Frf = 4, Transmissibility = 5,
-  Coherence = 6, AutoCorrelation = 7, CrossCorrelation = 8, Psd = 9, Esd = 10, ProbabilityDensity = 11,
-  Spectrum = 12, CumulativeFrequency = 13, PeaksValley = 14, StressCycles = 15, StrainCycles = 16,
-  Orbit = 17, ModeIndicator = 18, ForcePattern = 19, PartialPower = 20, PartialCoherence = 21,
-  Eigenvalue = 22, Eigenvector = 23, ShockResponseSpectrum = 24, FirFilter = 25, MultipleCoherence = 26,
-  OrderFunction = 27, PhaseCompensation = 28,
+  General = 0,
+  TimeResponse = 1,
+  AutoSpectrum = 2,
+  CrossSpectrum = 3,
+  Frf = 4,
+  Transmissibility = 5,
+  Coherence = 6,
+  AutoCorrelation = 7,
+  CrossCorrelation = 8,
+  Psd = 9,
+  Esd = 10,
+  ProbabilityDensity = 11,
+  Spectrum = 12,
+  CumulativeFrequency = 13,
+  PeaksValley = 14,
+  StressCycles = 15,
+  StrainCycles = 16,
+  Orbit = 17,
+  ModeIndicator = 18,
+  ForcePattern = 19,
+  PartialPower = 20,
+  PartialCoherence = 21,
+  Eigenvalue = 22,
+  Eigenvector = 23,
+  ShockResponseSpectrum = 24,
+  FirFilter = 25,
+  MultipleCoherence = 26,
+  OrderFunction = 27,
+  PhaseCompensation = 28,
 };
 const char* functionTypeName(FunctionType type);  // "FRF", "time response", ...; "type N" when unknown
 
 // Record 7 ordinate data type.
 enum class OrdinateType : int { RealSingle = 2, RealDouble = 4, ComplexSingle = 5, ComplexDouble = 6 };
-inline bool isComplex(OrdinateType t) { return t == OrdinateType::ComplexSingle || t == OrdinateType::ComplexDouble; }
-inline bool isDouble(OrdinateType t) { return t == OrdinateType::RealDouble || t == OrdinateType::ComplexDouble; }
+inline bool isComplex(OrdinateType t) {
+  return t == OrdinateType::ComplexSingle || t == OrdinateType::ComplexDouble;
+}
+inline bool isDouble(OrdinateType t) {
+  return t == OrdinateType::RealDouble || t == OrdinateType::ComplexDouble;
+}
 
 // Response or reference of a 58 record. Direction 0 means a scalar channel
 // (no direction), which core::Dof cannot express: use dof() to get one.
 struct Channel58 {
   std::string entityName = "NONE";
   int node = 0;
-  int direction = 0;             // UFF code +/-1..6, 0 = none / scalar
+  int direction = 0;  // UFF code +/-1..6, 0 = none / scalar
   Result<Dof> dof() const { return dofFromUff(node, direction); }
   static Channel58 fromDof(const Dof& dof, std::string entity = "NONE") {
     return Channel58{std::move(entity), dof.node, dof.uffCode()};
@@ -175,8 +208,8 @@ struct Channel58 {
 
 // Records 8-11: axis data characteristics.
 struct AxisInfo {
-  int specificDataType = 0;      // 0 unknown, 1 general, 8 displacement, 11 velocity, 12 acceleration,
-                                 // 13 excitation force, 15 pressure, 17 time, 18 frequency, ...
+  int specificDataType = 0;  // 0 unknown, 1 general, 8 displacement, 11 velocity, 12 acceleration,
+                             // 13 excitation force, 15 pressure, 17 time, 18 frequency, ...
   int lengthExponent = 0;
   int forceExponent = 0;
   int temperatureExponent = 0;
@@ -187,7 +220,7 @@ struct AxisInfo {
 enum class ByteOrder { LittleEndian = 1, BigEndian = 2 };
 
 struct Function58 {
-  std::array<std::string, 5> idLines;   // records 1-5 (record 3 is usually date/time)
+  std::array<std::string, 5> idLines;  // records 1-5 (record 3 is usually date/time)
   FunctionType functionType = FunctionType::General;
   int functionId = 0;
   int versionNumber = 0;
@@ -197,12 +230,12 @@ struct Function58 {
   OrdinateType ordinateType = OrdinateType::RealDouble;
   bool evenSpacing = true;
   double abscissaMin = 0.0;
-  double abscissaIncrement = 0.0;       // ignored when uneven
+  double abscissaIncrement = 0.0;  // ignored when uneven
   double zAxisValue = 0.0;
-  AxisInfo abscissaAxis;                // record 8
-  AxisInfo ordinateNumerator;           // record 9
-  AxisInfo ordinateDenominator;         // record 10
-  AxisInfo zAxis;                       // record 11
+  AxisInfo abscissaAxis;         // record 8
+  AxisInfo ordinateNumerator;    // record 9
+  AxisInfo ordinateDenominator;  // record 10
+  AxisInfo zAxis;                // record 11
   // Data. Real ordinates in `real`, complex in `complex` (the other empty).
   // `abscissa` is filled only for uneven spacing; use abscissaValues().
   Vector abscissa;
@@ -219,19 +252,25 @@ struct Function58 {
 
 // A dataset Mozzi does not interpret: listed, skipped, warned about.
 struct SkippedDataset {
-  std::int64_t lineCount = 0;    // lines between the number and the closing -1
+  std::int64_t lineCount = 0;  // lines between the number and the closing -1
 };
 
 using DatasetData = std::variant<Header151, Units164, NodeSet, CoordinateSystemSet, TraceLine82, ModalData55,
                                  Function58, SkippedDataset>;
 
 struct Dataset {
-  int type = 0;                  // dataset number as written (58 also for 58b)
-  std::int64_t line = 0;         // 1-based line of the dataset number
+  int type = 0;           // dataset number as written (58 also for 58b)
+  std::int64_t line = 0;  // 1-based line of the dataset number
   DatasetData data;
 
-  template <class T> const T* get() const { return std::get_if<T>(&data); }
-  template <class T> T* get() { return std::get_if<T>(&data); }
+  template <class T>
+  const T* get() const {
+    return std::get_if<T>(&data);
+  }
+  template <class T>
+  T* get() {
+    return std::get_if<T>(&data);
+  }
 };
 
 struct UffFile {
@@ -239,7 +278,8 @@ struct UffFile {
   std::vector<Warning> warnings;
 
   // All datasets of one kind, in file order (pointers into `datasets`).
-  template <class T> std::vector<const T*> all() const {
+  template <class T>
+  std::vector<const T*> all() const {
     std::vector<const T*> out;
     for (const auto& d : datasets)
       if (const T* p = d.get<T>()) out.push_back(p);
@@ -338,12 +378,12 @@ Result<std::vector<Function58>> fromFrfMatrix(const FrfMatrix& frf);
 
 // Plain modal data: one column per mode, one row per DOF.
 struct ModalData {
-  std::vector<Dof> dofs;         // rows of `shapes`
-  Vector frequencyHz;            // undamped natural frequency per mode [Hz]
-  Vector dampingRatio;           // viscous zeta per mode
-  Vector modalMass;              // per mode (0 when unknown)
-  ComplexMatrix shapes;          // dofs x modes
-  bool complexShapes = false;    // false: imaginary parts are zero
+  std::vector<Dof> dofs;       // rows of `shapes`
+  Vector frequencyHz;          // undamped natural frequency per mode [Hz]
+  Vector dampingRatio;         // viscous zeta per mode
+  Vector modalMass;            // per mode (0 when unknown)
+  ComplexMatrix shapes;        // dofs x modes
+  bool complexShapes = false;  // false: imaginary parts are zero
 };
 
 // Dataset 55 records (normal-mode or complex-eigenvalue analyses, 3- or

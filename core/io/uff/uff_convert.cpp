@@ -1,8 +1,8 @@
 // Conversions between UFF records and the core types: dataset 58 <-> FrfMatrix,
 // dataset 55 <-> ModalData.
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "core/io/uff/uff.h"
@@ -12,7 +12,9 @@ namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925286766559;
 
-std::string pairName(const Dof& o, const Dof& i) { return "response " + formatDof(o) + ", reference " + formatDof(i); }
+std::string pairName(const Dof& o, const Dof& i) {
+  return "response " + formatDof(o) + ", reference " + formatDof(i);
+}
 
 // Record 9 specific data type -> FRF type (numerator displacement 8,
 // velocity 11, acceleration 12 over force).
@@ -192,8 +194,7 @@ Result<std::vector<Function58>> fromFrfMatrix(const FrfMatrix& frf) {
   if (!frf.coherence.empty()) {
     for (std::size_t ii = 0; ii < frf.references.size(); ++ii) {
       for (Eigen::Index oo = 0; oo < frf.responseCount(); ++oo) {
-        Function58 f =
-            base(frf.responses[static_cast<std::size_t>(oo)], frf.references[ii], FunctionType::Coherence);
+        Function58 f = base(frf.responses[static_cast<std::size_t>(oo)], frf.references[ii], FunctionType::Coherence);
         f.ordinateType = OrdinateType::RealDouble;
         f.real = frf.coherence[ii].col(oo);
         f.ordinateNumerator = AxisInfo{0, 0, 0, 0, "Coherence", "NONE"};
@@ -242,7 +243,8 @@ Result<ModalData> toModalData(const std::vector<ModalData55>& records) {
     const ModalData55& r = *modes[static_cast<std::size_t>(k)];
     const std::string where = "dataset 55, mode " + std::to_string(r.modeNumber());
     if (r.valuesPerNode != ndv || r.nodes.size() != first.nodes.size()) {
-      return makeError(ErrorCode::InvalidArgument, "mode has other nodes or values per node than the first mode", where);
+      return makeError(ErrorCode::InvalidArgument, "mode has other nodes or values per node than the first mode",
+                       where);
     }
     if (isComplexAnalysis(r.analysisType)) {
       if (r.realValues.size() < 2) return makeError(ErrorCode::InvalidArgument, "record 8 lacks the eigenvalue", where);

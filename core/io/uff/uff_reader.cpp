@@ -119,8 +119,7 @@ class Source {
     for (;;) {
       const char* base = buf_.data();
       const std::size_t from = std::max(pos_, scanned_);
-      const char* nl =
-          from < end_ ? static_cast<const char*>(std::memchr(base + from, '\n', end_ - from)) : nullptr;
+      const char* nl = from < end_ ? static_cast<const char*>(std::memchr(base + from, '\n', end_ - from)) : nullptr;
       const std::size_t stop = nl ? static_cast<std::size_t>(nl - base) : end_;
       const char* cr = stop > pos_ ? static_cast<const char*>(std::memchr(base + pos_, '\r', stop - pos_)) : nullptr;
       std::size_t lineEnd = 0;
@@ -210,7 +209,7 @@ class Source {
   std::vector<char> buf_;
   std::size_t pos_ = 0;
   std::size_t end_ = 0;
-  std::size_t scanned_ = 0;         // no '\n' in [pos_, scanned_)
+  std::size_t scanned_ = 0;           // no '\n' in [pos_, scanned_)
   std::uint64_t consumedBefore_ = 0;  // bytes dropped from the buffer or read around it
   std::uint64_t total_ = 0;
   bool eof_ = false;
@@ -225,8 +224,8 @@ class DatasetContext {
  public:
   enum class Line { Ok, Delimiter, Eof };
 
-  DatasetContext(Source& src, int type, std::int64_t startLine, std::string_view where,
-                 std::vector<Warning>& warnings, const ReadOptions& options)
+  DatasetContext(Source& src, int type, std::int64_t startLine, std::string_view where, std::vector<Warning>& warnings,
+                 const ReadOptions& options)
       : src_(src), type_(type), startLine_(startLine), where_(where), warnings_(warnings), options_(options) {}
 
   // Next record line (blank lines included). Delimiter/Eof end the dataset.
@@ -287,8 +286,8 @@ class DatasetContext {
       return errorAt(line(), "file truncated: end of file before " + what + " (dataset starts at line " +
                                  std::to_string(startLine_) + ")");
     }
-    return errorAt(line(), "dataset ends before " + what + " (dataset starts at line " +
-                               std::to_string(startLine_) + ")");
+    return errorAt(line(),
+                   "dataset ends before " + what + " (dataset starts at line " + std::to_string(startLine_) + ")");
   }
   void warn(const std::string& what) { warnAt(line(), what); }
   void warnAt(std::int64_t atLine, const std::string& what) { warnings_.push_back({type_, atLine, what}); }
@@ -312,7 +311,9 @@ class DatasetContext {
 
 using Line = DatasetContext::Line;
 
-std::string textField(std::string_view s) { return std::string(trimRight(s)); }
+std::string textField(std::string_view s) {
+  return std::string(trimRight(s));
+}
 
 // Exactly `count` numbers from one or more lines (values of one record may
 // wrap, e.g. 6 per line). `what` names the record in errors.
@@ -384,8 +385,9 @@ Result<std::vector<long long>> readIntLine(DatasetContext& ctx, std::size_t minC
   return values;
 }
 
-bool fitsInt(long long v) { return v >= std::numeric_limits<int>::min() && v <= std::numeric_limits<int>::max(); }
-
+bool fitsInt(long long v) {
+  return v >= std::numeric_limits<int>::min() && v <= std::numeric_limits<int>::max();
+}
 
 // Reads text lines of a fixed-count block of records, allowing an early end.
 Line textLine(DatasetContext& ctx, std::string& out) {
@@ -566,7 +568,8 @@ Result<DatasetData> parse18(DatasetContext& ctx) {
     cs.color = static_cast<int>(h[3]);
     cs.definitionMethod = static_cast<int>(h[4]);
     std::string_view name;
-    if (ctx.next(name) != Line::Ok) return ctx.endedBefore("record 2 (name) of coordinate system " + std::to_string(cs.label));
+    if (ctx.next(name) != Line::Ok)
+      return ctx.endedBefore("record 2 (name) of coordinate system " + std::to_string(cs.label));
     cs.name = textField(name);
     double p[9];
     if (auto r = readNumbers(ctx, 9, p, "records 3-4 (points) of coordinate system " + std::to_string(cs.label)); !r) {
@@ -613,11 +616,12 @@ Result<DatasetData> parse2420(DatasetContext& ctx) {
     cs.type = static_cast<int>(h[1]);
     cs.color = static_cast<int>(h[2]);
     std::string_view name;
-    if (ctx.next(name) != Line::Ok) return ctx.endedBefore("record 4 (name) of coordinate system " + std::to_string(cs.label));
+    if (ctx.next(name) != Line::Ok)
+      return ctx.endedBefore("record 4 (name) of coordinate system " + std::to_string(cs.label));
     cs.name = textField(name);
     double m[12];
-    if (auto rr = readNumbers(ctx, 12, m, "records 5-8 (transformation) of coordinate system " +
-                                              std::to_string(cs.label));
+    if (auto rr =
+            readNumbers(ctx, 12, m, "records 5-8 (transformation) of coordinate system " + std::to_string(cs.label));
         !rr) {
       return rr.error();
     }
@@ -679,10 +683,10 @@ Result<DatasetData> parse82(DatasetContext& ctx) {
       rest = trim(rest.substr(k));
     }
   }
-  if (extra > 0) ctx.warn(std::to_string(extra) + " node numbers after the " + std::to_string(count) + " declared were ignored");
+  if (extra > 0)
+    ctx.warn(std::to_string(extra) + " node numbers after the " + std::to_string(count) + " declared were ignored");
   if (t.nodes.size() < count) {
-    ctx.warn("record 1 declares " + std::to_string(count) + " nodes, the list holds " +
-             std::to_string(t.nodes.size()));
+    ctx.warn("record 1 declares " + std::to_string(count) + " nodes, the list holds " + std::to_string(t.nodes.size()));
   }
   return DatasetData{std::move(t)};
 }
@@ -693,8 +697,9 @@ Result<DatasetData> parse55(DatasetContext& ctx) {
   for (auto& id : m.idLines) {
     if (textLine(ctx, id) != Line::Ok) return ctx.endedBefore("the five ID lines (records 1-5)");
   }
-  auto r6 = readIntLine(ctx, 6, 6, "record 6 (model type, analysis type, data characteristic, specific type, "
-                                    "data type, values per node)");
+  auto r6 = readIntLine(ctx, 6, 6,
+                        "record 6 (model type, analysis type, data characteristic, specific type, "
+                        "data type, values per node)");
   if (!r6) return r6.error();
   const std::vector<long long>& h = *r6;
   for (long long v : h)
@@ -829,9 +834,10 @@ Result<void> parseRecord6(DatasetContext& ctx, std::string_view line, Function58
       ok = ok && pair + 3 < tok.size() && parseInt(tok[pair], v[4]) && parseInt(tok[pair + 1], v[5]);
     }
     if (!ok) {
-      return ctx.error("record 6: expected function type, ID, version, load case, response name/node/direction, "
-                       "reference name/node/direction in columns (2(I5,I10),2(1X,10A1,I10,I4)), found '" +
-                       detail::excerpt(line) + "'");
+      return ctx.error(
+          "record 6: expected function type, ID, version, load case, response name/node/direction, "
+          "reference name/node/direction in columns (2(I5,I10),2(1X,10A1,I10,I4)), found '" +
+          detail::excerpt(line) + "'");
     }
     auto join = [&](std::size_t a, std::size_t b) {
       std::string s;
@@ -931,12 +937,15 @@ Result<DatasetData> parse58(DatasetContext& ctx, const Binary58& bin) {
     return true;
   });
   if (s7.status != NumberStatus::Ok || s7.stopped || have < 5) {
-    return ctx.error("record 7: expected ordinate type, point count, spacing, abscissa minimum, increment and "
-                     "z value, found '" + detail::excerpt(line) + "'");
+    return ctx.error(
+        "record 7: expected ordinate type, point count, spacing, abscissa minimum, increment and "
+        "z value, found '" +
+        detail::excerpt(line) + "'");
   }
   if (have == 5) ctx.warn("record 7: z-axis value missing; 0 assumed");
   for (int i = 0; i < 3; ++i) {
-    if (r7[i] != std::floor(r7[i])) return ctx.error("record 7: column " + std::to_string(i + 1) + " is not an integer");
+    if (r7[i] != std::floor(r7[i]))
+      return ctx.error("record 7: column " + std::to_string(i + 1) + " is not an integer");
   }
   const int ordType = static_cast<int>(std::clamp(r7[0], -1e6, 1e6));
   if (ordType != 2 && ordType != 4 && ordType != 5 && ordType != 6) {
@@ -1032,7 +1041,8 @@ Result<DatasetData> parse58(DatasetContext& ctx, const Binary58& bin) {
         }
         for (std::size_t i = 0; i < n; ++i) {
           const unsigned char* p = chunk.data() + i * valueBytes;
-          const double v = valueBytes == 8 ? loadValue<double>(p, swap) : static_cast<double>(loadValue<float>(p, swap));
+          const double v =
+              valueBytes == 8 ? loadValue<double>(p, swap) : static_cast<double>(loadValue<float>(p, swap));
           const std::uint64_t k = done + i;
           if (xs) {
             const std::uint64_t point = k / perPoint;
@@ -1121,9 +1131,8 @@ Result<DatasetData> parse58(DatasetContext& ctx, const Binary58& bin) {
     if (r.status != NumberStatus::Ok) {
       // A number cut off by the end of the file is truncation, not a typo.
       if (src.exhausted() && line.data() + line.size() == src.lastByteEnd()) {
-        return ctx.error("file truncated: end of file inside data value '" + detail::excerpt(line, r.column) +
-                         "' (" + std::to_string(k / perPoint) + " of " + std::to_string(declared) +
-                         " declared points read)");
+        return ctx.error("file truncated: end of file inside data value '" + detail::excerpt(line, r.column) + "' (" +
+                         std::to_string(k / perPoint) + " of " + std::to_string(declared) + " declared points read)");
       }
       return ctx.error("malformed data value '" + detail::excerpt(line, r.column) + "' at column " +
                        std::to_string(r.column + 1));
@@ -1170,8 +1179,7 @@ Result<DatasetData> parseSkipped(DatasetContext& ctx) {
 
 // ---------------------------------------------------------------------------
 struct DatasetReader::Impl {
-  Impl(std::unique_ptr<Source> s, std::string w, ReadOptions o)
-      : src(std::move(s)), where(std::move(w)), options(o) {}
+  Impl(std::unique_ptr<Source> s, std::string w, ReadOptions o) : src(std::move(s)), where(std::move(w)), options(o) {}
 
   std::unique_ptr<Source> src;
   std::string where;
@@ -1201,11 +1209,11 @@ struct DatasetReader::Impl {
       if (s != Source::Status::Ok) return fail("read failed or a line longer than 64 MiB", src->lineNumber());
       if (isBlank(line)) continue;
       if (isDelimiter(line)) break;
-      std::string context = lastType ? " after dataset " + std::to_string(lastType) + " (ended at line " +
-                                           std::to_string(lastEnd) + ")"
-                                     : " (a universal file starts with '    -1')";
-      return fail("line " + std::to_string(src->lineNumber()) + ": expected the dataset delimiter '    -1'" +
-                      context + ", found '" + detail::excerpt(line) + "'",
+      std::string context =
+          lastType ? " after dataset " + std::to_string(lastType) + " (ended at line " + std::to_string(lastEnd) + ")"
+                   : " (a universal file starts with '    -1')";
+      return fail("line " + std::to_string(src->lineNumber()) + ": expected the dataset delimiter '    -1'" + context +
+                      ", found '" + detail::excerpt(line) + "'",
                   src->lineNumber());
     }
     // Dataset number (and for 58b the binary description).
@@ -1257,8 +1265,10 @@ struct DatasetReader::Impl {
       for (std::size_t i = 0; ok && i < 4; ++i) ok = parseInt(tok[i + 1], f[i]);
       if (!ok) {
         done = true;
-        return ctx.error("binary header: expected byte order, floating-point format, ASCII line count and byte "
-                         "count after '" + std::to_string(type) + "b', found '" + detail::excerpt(line) + "'");
+        return ctx.error(
+            "binary header: expected byte order, floating-point format, ASCII line count and byte "
+            "count after '" +
+            std::to_string(type) + "b', found '" + detail::excerpt(line) + "'");
       }
       if (type != 58) {
         done = true;
@@ -1266,7 +1276,8 @@ struct DatasetReader::Impl {
       }
       if (f[0] != 1 && f[0] != 2) {
         done = true;
-        return ctx.error("binary header: byte order " + std::to_string(f[0]) + " is neither 1 (little endian) nor 2 "
+        return ctx.error("binary header: byte order " + std::to_string(f[0]) +
+                         " is neither 1 (little endian) nor 2 "
                          "(big endian)");
       }
       if (f[1] != 2) {
@@ -1367,9 +1378,15 @@ DatasetReader DatasetReader::fromBytes(std::string_view bytes, ReadOptions optio
   return DatasetReader(std::make_unique<Impl>(std::make_unique<Source>(bytes), "<memory>", options));
 }
 
-Result<std::optional<Dataset>> DatasetReader::next() { return impl_->next(); }
-const std::vector<Warning>& DatasetReader::warnings() const { return impl_->warnings; }
-std::uint64_t DatasetReader::bytesRead() const { return impl_->src->consumed(); }
+Result<std::optional<Dataset>> DatasetReader::next() {
+  return impl_->next();
+}
+const std::vector<Warning>& DatasetReader::warnings() const {
+  return impl_->warnings;
+}
+std::uint64_t DatasetReader::bytesRead() const {
+  return impl_->src->consumed();
+}
 
 namespace {
 Result<UffFile> readAll(DatasetReader& reader) {

@@ -11,7 +11,9 @@
 
 namespace mozzi::core::io::uff::detail {
 
-inline bool isBlankChar(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+inline bool isBlankChar(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+}
 
 inline std::string_view trimRight(std::string_view s) {
   while (!s.empty() && (isBlankChar(s.back()) || s.back() == '\0')) s.remove_suffix(1);
@@ -22,10 +24,14 @@ inline std::string_view trim(std::string_view s) {
   while (!s.empty() && isBlankChar(s.front())) s.remove_prefix(1);
   return s;
 }
-inline bool isBlank(std::string_view s) { return trim(s).empty(); }
+inline bool isBlank(std::string_view s) {
+  return trim(s).empty();
+}
 
 // The dataset delimiter: "    -1" in columns 1-6 (any blanks around -1 accepted).
-inline bool isDelimiter(std::string_view s) { return trim(s) == "-1"; }
+inline bool isDelimiter(std::string_view s) {
+  return trim(s) == "-1";
+}
 
 // Columns [start, start + width) of a fixed-format record, clamped to the line.
 inline std::string_view field(std::string_view line, std::size_t start, std::size_t width) {
@@ -115,7 +121,8 @@ inline ScanResult scanNumbers(std::string_view line, Sink&& sink) {
       afterNumber = false;
       continue;
     }
-    if (afterNumber && c != '-' && c != '+') return {NumberStatus::Malformed, static_cast<std::size_t>(p - begin), false};
+    if (afterNumber && c != '-' && c != '+')
+      return {NumberStatus::Malformed, static_cast<std::size_t>(p - begin), false};
     double v = 0.0;
     NumberStatus st;
     const char* q = parseNumber(p, end, v, st);

@@ -59,7 +59,9 @@ void open(std::string& s, const char* number) {
   s += number;
   s += '\n';
 }
-void close(std::string& s) { s += "    -1\n"; }
+void close(std::string& s) {
+  s += "    -1\n";
+}
 
 Result<void> write151(std::string& s, const Header151& h) {
   open(s, "   151");
@@ -91,7 +93,8 @@ Result<void> write164(std::string& s, const Units164& u) {
 Result<void> writeNodes(std::string& s, const NodeSet& n) {
   if (n.datasetType != 15 && n.datasetType != 2411) return writeError(n.datasetType, "node sets are 15 or 2411");
   for (const auto& node : n.nodes)
-    if (!node.xyz.allFinite()) return writeError(n.datasetType, "node " + std::to_string(node.label) + " has a non-finite coordinate");
+    if (!node.xyz.allFinite())
+      return writeError(n.datasetType, "node " + std::to_string(node.label) + " has a non-finite coordinate");
   if (n.datasetType == 15) {
     open(s, "    15");
     for (const auto& node : n.nodes) {
@@ -198,17 +201,19 @@ Result<void> write55(std::string& s, const ModalData55& m) {
 
 void axisRecord(std::string& s, const AxisInfo& a) {
   put(s, "%10d%5d%5d%5d %s %s\n", a.specificDataType, a.lengthExponent, a.forceExponent, a.temperatureExponent,
-      padded(a.label.empty() ? "NONE" : a.label, 20).c_str(), padded(a.unitsLabel.empty() ? "NONE" : a.unitsLabel, 20).c_str());
+      padded(a.label.empty() ? "NONE" : a.label, 20).c_str(),
+      padded(a.unitsLabel.empty() ? "NONE" : a.unitsLabel, 20).c_str());
 }
 
 Result<void> write58(std::string& s, std::ostream& out, const Function58& f, const WriteOptions& options) {
   const bool cplx = isComplex(f.ordinateType);
   const int ord = static_cast<int>(f.ordinateType);
-  if (ord != 2 && ord != 4 && ord != 5 && ord != 6) return writeError(58, "ordinate type " + std::to_string(ord) + " is not 2, 4, 5 or 6");
+  if (ord != 2 && ord != 4 && ord != 5 && ord != 6)
+    return writeError(58, "ordinate type " + std::to_string(ord) + " is not 2, 4, 5 or 6");
   const Eigen::Index n = cplx ? f.complex.size() : f.real.size();
   if ((cplx && f.real.size() != 0) || (!cplx && f.complex.size() != 0)) {
-    return writeError(58, std::string("ordinate type says ") + (cplx ? "complex" : "real") +
-                              " but the other data vector is filled");
+    return writeError(
+        58, std::string("ordinate type says ") + (cplx ? "complex" : "real") + " but the other data vector is filled");
   }
   if (!f.evenSpacing && f.abscissa.size() != n) {
     return writeError(58, "uneven abscissa has " + std::to_string(f.abscissa.size()) + " values for " +

@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <sstream>
 
-#include "core/common/versions.h"
 #include "cli_run.h"
+#include "core/common/versions.h"
 
 namespace mozzi::cli {
 namespace {

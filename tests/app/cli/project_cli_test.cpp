@@ -14,10 +14,10 @@
 #include <sstream>
 
 #include "app/cli/command.h"
+#include "cli_run.h"
 #include "core/io/csv/csv_exchange.h"
 #include "core/io/project_store.h"
 #include "core/io/uff/uff.h"
-#include "cli_run.h"
 
 namespace mozzi::cli {
 namespace {

@@ -9,8 +9,8 @@
 #include <sstream>
 
 #include "app/cli/command.h"
-#include "core/io/csv/csv_exchange.h"
 #include "cli_run.h"
+#include "core/io/csv/csv_exchange.h"
 
 namespace mozzi::cli {
 namespace {

@@ -10,15 +10,17 @@
 #include <sstream>
 
 #include "app/cli/command.h"
-#include "core/io/uff/uff.h"
 #include "cli_run.h"
+#include "core/io/uff/uff.h"
 
 namespace mozzi::cli {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string data(const std::string& name) { return std::string(MOZZI_SHARED_DATA_DIR) + "/uff/" + name; }
+std::string data(const std::string& name) {
+  return std::string(MOZZI_SHARED_DATA_DIR) + "/uff/" + name;
+}
 
 fs::path tempDir() {
   const fs::path d = fs::temp_directory_path() / ("mozzi_uff_cli_" + std::to_string(::getpid()));

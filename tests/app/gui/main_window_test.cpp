@@ -1,6 +1,9 @@
 // The main window as a user meets it, on a real X display (Xvfb) with VTK on
 // Mesa's software OpenGL: docks, every menu action, project open errors,
 // persistence, languages, the About box, and a screenshot for the record.
+#include <qwt_global.h>
+#include <sqlite3.h>
+#include <vtkVersion.h>
 #include <QAction>
 #include <QApplication>
 #include <QDir>
@@ -17,19 +20,16 @@
 #include <QTimer>
 #include <QTreeWidget>
 #include <QtTest>
-#include <qwt_global.h>
-#include <sqlite3.h>
-#include <vtkVersion.h>
 
 #include <memory>
 
 #include "app/gui/main_window.h"
 #include "app/gui/project_document.h"
 #include "core/io/uff/uff.h"
-#include "views/plots/frf_plot.h"
 #include "devices/sim/virtual_specimens.h"
 #include "views/gap/model_test_view.h"
 #include "views/panels/project_overview.h"
+#include "views/plots/frf_plot.h"
 #include "views/scene/scene_view.h"
 
 using mozzi::app::MainWindow;
@@ -77,7 +77,8 @@ void MainWindowTest::docksOpenAndClose() {
   QStringList names;
   for (auto* dock : docks) names << dock->objectName();
   names.sort();
-  QCOMPARE(names, (QStringList{QStringLiteral("logDock"), QStringLiteral("projectDock"), QStringLiteral("propertiesDock")}));
+  QCOMPARE(names,
+           (QStringList{QStringLiteral("logDock"), QStringLiteral("projectDock"), QStringLiteral("propertiesDock")}));
   for (auto* dock : docks) {
     QVERIFY2(dock->isVisible(), qPrintable(dock->objectName()));
     dock->toggleViewAction()->trigger();
@@ -96,7 +97,10 @@ void MainWindowTest::everyMenuActionOpensAndCloses() {
   closer.setInterval(50);
   connect(&closer, &QTimer::timeout, [&] {
     if (QWidget* modal = QApplication::activeModalWidget()) {
-      if (auto* dialog = qobject_cast<QDialog*>(modal)) dialog->reject(); else modal->close();
+      if (auto* dialog = qobject_cast<QDialog*>(modal))
+        dialog->reject();
+      else
+        modal->close();
       ++dialogsClosed;
     }
   });
@@ -159,7 +163,8 @@ void MainWindowTest::missingAndCorruptFilesShowAClearMessageAndKeepTheWindowUsab
   corrupt.close();
   QVERIFY(!window_->openProject(corrupt.fileName()));
   QVERIFY(window_->errorBox() && window_->errorBox()->isVisible());
-  QVERIFY2(window_->errorBox()->text().contains(QStringLiteral("corrupt.mozzi")), qPrintable(window_->errorBox()->text()));
+  QVERIFY2(window_->errorBox()->text().contains(QStringLiteral("corrupt.mozzi")),
+           qPrintable(window_->errorBox()->text()));
   window_->errorBox()->close();
 
   QFile text(file(QStringLiteral("notes.mozzi")));

@@ -13,8 +13,8 @@ TEST(Dof, ParsesEveryAcceptedSpelling) {
     bool negative;
   };
   const Case cases[] = {
-      {"21:+Z", 21, Direction::Z, false}, {"21+Z", 21, Direction::Z, false}, {"21Z", 21, Direction::Z, false},
-      {"21:z", 21, Direction::Z, false},  {"7-RX", 7, Direction::RX, true},  {"7:-4", 7, Direction::RX, true},
+      {"21:+Z", 21, Direction::Z, false},   {"21+Z", 21, Direction::Z, false},     {"21Z", 21, Direction::Z, false},
+      {"21:z", 21, Direction::Z, false},    {"7-RX", 7, Direction::RX, true},      {"7:-4", 7, Direction::RX, true},
       {" 3:+ry ", 3, Direction::RY, false}, {"1001:-Y", 1001, Direction::Y, true},
   };
   for (const auto& c : cases) {

@@ -79,9 +79,9 @@ TEST(EngineDiagnosis, PlantedEffectIsFoundWithItsSize) {
 TEST(EngineDiagnosis, ModelWithoutCalibrationParameters) {
   std::mt19937_64 rng(5);
   const Eigen::MatrixXd none(kN, 0);
-  const auto problem = LinearGapProblem::generate(none, threeBumps(), Eigen::VectorXd(0), 2,
-                                                  Eigen::VectorXd::Constant(1, 1.5), Eigen::VectorXd::Zero(kN), kSigma,
-                                                  rng);
+  const auto problem =
+      LinearGapProblem::generate(none, threeBumps(), Eigen::VectorXd(0), 2, Eigen::VectorXd::Constant(1, 1.5),
+                                 Eigen::VectorXd::Zero(kN), kSigma, rng);
   const auto d = diagnose(*problem, fastOptions());
   ASSERT_TRUE(d.ok()) << d.error().describe();
   EXPECT_TRUE(d->calibrated.empty());

@@ -59,8 +59,8 @@ TEST(CsvExchange, ForeignTimeFileWithNonSiUnitsAndSemicolons) {
   // dt = 0.5 ms -> 2000 Hz; representable exactly except for the 1e-3 factor.
   EXPECT_NEAR(t->sampleRateHz, 2000.0, 1e-9);
   EXPECT_EQ(t->samples.rows(), 3);
-  EXPECT_DOUBLE_EQ(t->samples(0, 0), 500.0);             // 0.5 kN = 500 N
-  EXPECT_DOUBLE_EQ(t->samples(1, 1), -2.0 * 9.80665);    // standard gravity
+  EXPECT_DOUBLE_EQ(t->samples(0, 0), 500.0);           // 0.5 kN = 500 N
+  EXPECT_DOUBLE_EQ(t->samples(1, 1), -2.0 * 9.80665);  // standard gravity
   EXPECT_EQ(t->channels[1].dof, (Dof{2, Direction::Z, false}));
   EXPECT_EQ(t->channels[0].unit, "N");
 }
@@ -124,8 +124,9 @@ TEST(CsvExchange, FrfRoundTripIsExact) {
   const FrfMatrix in = sampleFrf();
   std::ostringstream out;
   ASSERT_TRUE(writeFrfCsv(in, out).ok());
-  EXPECT_NE(out.str().find("frequency [Hz],H 21:+Z/1:+Z re [m/s^2/N],H 21:+Z/1:+Z im [m/s^2/N],coherence 21:+Z/1:+Z [1]"),
-            std::string::npos);
+  EXPECT_NE(
+      out.str().find("frequency [Hz],H 21:+Z/1:+Z re [m/s^2/N],H 21:+Z/1:+Z im [m/s^2/N],coherence 21:+Z/1:+Z [1]"),
+      std::string::npos);
   auto back = readFrfCsv(out.str(), "frf.csv");
   ASSERT_TRUE(back.ok()) << back.error().describe();
   EXPECT_EQ(back->type, FrfType::Accelerance);
@@ -154,7 +155,8 @@ TEST(CsvExchange, FrfUnitsSetTypeAndScale) {
   auto partial = readFrfCsv("frequency [Hz],H 3:+X/1:+X re [m/N]\n10,1\n", "p.csv");
   ASSERT_FALSE(partial.ok());
   EXPECT_NE(partial.error().message.find("lacks its re or im"), std::string::npos);
-  auto notIncreasing = readFrfCsv("frequency [Hz],H 3:+X/1:+X re [m/N],H 3:+X/1:+X im [m/N]\n10,1,0\n10,1,0\n", "n.csv");
+  auto notIncreasing =
+      readFrfCsv("frequency [Hz],H 3:+X/1:+X re [m/N],H 3:+X/1:+X im [m/N]\n10,1,0\n10,1,0\n", "n.csv");
   ASSERT_FALSE(notIncreasing.ok());
   EXPECT_EQ(notIncreasing.error().where, "n.csv:3, column 1");
 }

@@ -36,8 +36,8 @@ class MatImportTest : public ::testing::TestWithParam<int> {
   matio_compression compression() const { return GetParam() == 1 ? MAT_COMPRESSION_ZLIB : MAT_COMPRESSION_NONE; }
 
   void writeDouble(mat_t* mat, const char* name, std::vector<std::size_t> dims, std::vector<double> values) {
-    matvar_t* v = Mat_VarCreate(name, MAT_C_DOUBLE, MAT_T_DOUBLE, static_cast<int>(dims.size()), dims.data(),
-                                values.data(), 0);
+    matvar_t* v =
+        Mat_VarCreate(name, MAT_C_DOUBLE, MAT_T_DOUBLE, static_cast<int>(dims.size()), dims.data(), values.data(), 0);
     ASSERT_NE(v, nullptr);
     ASSERT_EQ(Mat_VarWrite(mat, v, compression()), 0);
     Mat_VarFree(v);
@@ -64,8 +64,8 @@ TEST_P(MatImportTest, TimeRecordWithChannelMapAndUnits) {
   std::vector<double> data(n * 3);
   for (std::size_t r = 0; r < n; ++r) {
     data[r] = 0.1 * static_cast<double>(r);               // column 0: force in kN
-    data[r + n] = std::sin(static_cast<double>(r));        // column 1: acceleration in g
-    data[r + 2 * n] = -1.0 * static_cast<double>(r * r);   // column 2: unused
+    data[r + n] = std::sin(static_cast<double>(r));       // column 1: acceleration in g
+    data[r + 2 * n] = -1.0 * static_cast<double>(r * r);  // column 2: unused
   }
   writeDouble(mat, "data", {n, 3}, data);
   writeDouble(mat, "fs", {1, 1}, {2048.0});

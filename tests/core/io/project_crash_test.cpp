@@ -28,9 +28,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kRounds = 60;          // issue 4 asks for at least 50 kills
+constexpr int kRounds = 60;  // issue 4 asks for at least 50 kills
 constexpr int kChannels = 4;
-constexpr int kSamples = 2048;       // 32 KiB per hit: keeps 60 rounds within seconds
+constexpr int kSamples = 2048;  // 32 KiB per hit: keeps 60 rounds within seconds
 
 // Deterministic samples of hit `sequence`, so the parent can check every value.
 Eigen::MatrixXf samplesFor(int sequence) {

@@ -170,11 +170,14 @@ TEST_F(ProjectDataTest, CorruptedBlobIsReportedNotReturned) {
   ASSERT_TRUE(id.ok());
   sqlite3* db = store_->connection();
   // Flip one byte of the stored samples behind the store's back.
-  ASSERT_EQ(sqlite3_exec(db,
-                         ("UPDATE hit SET samples = CAST(substr(samples, 1, 99) || x'ff' || substr(samples, 101) AS BLOB)"
-                          " WHERE id = " + std::to_string(*id)).c_str(),
-                         nullptr, nullptr, nullptr),
-            SQLITE_OK);
+  ASSERT_EQ(
+      sqlite3_exec(db,
+                   ("UPDATE hit SET samples = CAST(substr(samples, 1, 99) || x'ff' || substr(samples, 101) AS BLOB)"
+                    " WHERE id = " +
+                    std::to_string(*id))
+                       .c_str(),
+                   nullptr, nullptr, nullptr),
+      SQLITE_OK);
   auto h = store_->hit(*id);
   ASSERT_FALSE(h.ok());
   EXPECT_EQ(h.error().code, ErrorCode::Corrupt);

@@ -14,9 +14,8 @@ namespace fs = std::filesystem;
 class ProjectStoreTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("mozzi_store_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / ("mozzi_store_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -79,7 +78,8 @@ TEST_F(ProjectStoreTest, TruncatedProjectIsReportedNotCrashed) {
   {
     auto store = ProjectStore::create(file("t.mozzi"), "0.1.0");
     ASSERT_TRUE(store.ok());
-    for (int i = 0; i < 200; ++i) ASSERT_TRUE(store->addSpecimen("s" + std::to_string(i), "frame", std::string(500, 'x')).ok());
+    for (int i = 0; i < 200; ++i)
+      ASSERT_TRUE(store->addSpecimen("s" + std::to_string(i), "frame", std::string(500, 'x')).ok());
   }
   const auto size = fs::file_size(file("t.mozzi"));
   ASSERT_GT(size, 8192u);

@@ -30,7 +30,8 @@ FrfMatrix analyticFrf(bool evenAxis) {
   m.coherence.assign(2, Matrix(nf, 2));
   for (int k = 0; k < nf; ++k) {
     const double w = 2 * kPi * m.frequencyHz[k];
-    const Eigen::Matrix2cd H = (K.cast<Complex>() - w * w * M.cast<Complex>() + Complex(0, w) * C.cast<Complex>()).inverse();
+    const Eigen::Matrix2cd H =
+        (K.cast<Complex>() - w * w * M.cast<Complex>() + Complex(0, w) * C.cast<Complex>()).inverse();
     for (int i = 0; i < 2; ++i) {
       const double sign = i == 1 ? -1.0 : 1.0;  // reference 2 is along -X
       for (int o = 0; o < 2; ++o) {

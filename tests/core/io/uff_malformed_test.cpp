@@ -155,8 +155,8 @@ TEST(UffMalformed, FewerPointsThanDeclaredIsAWarningWhenTheDatasetIsClosed) {
   EXPECT_EQ(r->warnings[0].describe(),
             "dataset 58, line 9: record 7 declares 10 points, the data hold 8; the record is read with 8");
   // More values than declared cannot be assigned to points: an error.
-  expectNamed(readBytes(replaced(kSmall58, "         2         8         1", "         2         6         1")), 58,
-              15, "more data values than the 6 points");
+  expectNamed(readBytes(replaced(kSmall58, "         2         8         1", "         2         6         1")), 58, 15,
+              "more data values than the 6 points");
 }
 
 TEST(UffMalformed, ShortLinesAndMissingColumnsAreWarnings) {
@@ -188,7 +188,8 @@ TEST(UffMalformed, UnknownDatasetsAreSkippedAndGarbageIsAnError) {
   EXPECT_EQ(r->datasets[1].type, 1858);
   EXPECT_EQ(r->datasets[0].get<SkippedDataset>()->lineCount, 2);
   ASSERT_EQ(r->warnings.size(), 2u);
-  EXPECT_EQ(r->warnings[0].describe(), "dataset 2467, line 2: dataset type 2467 is not used by Mozzi; skipped (2 lines)");
+  EXPECT_EQ(r->warnings[0].describe(),
+            "dataset 2467, line 2: dataset type 2467 is not used by Mozzi; skipped (2 lines)");
 
   auto junk = readBytes("This is not a universal file\n");
   ASSERT_FALSE(junk.ok());

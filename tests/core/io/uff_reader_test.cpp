@@ -27,7 +27,9 @@ nlohmann::json expected() {
 // E13.5 (6 significant digits, half-ulp 5e-6 relative); pyuff and we parse the
 // same text, so values agree far below that; binary values are the same IEEE
 // numbers in both readers, compared to 1e-12 (double round-off only).
-double tolerance(const Function58& f) { return f.binary ? 1e-12 : 5e-6; }
+double tolerance(const Function58& f) {
+  return f.binary ? 1e-12 : 5e-6;
+}
 
 void expectNear(double actual, double want, double rel, const std::string& what) {
   EXPECT_LE(std::abs(actual - want), rel * std::max(1.0, std::abs(want)) + 1e-300)
@@ -85,7 +87,8 @@ TEST(UffReader, EveryVendorFileMatchesTheReferenceReader) {
           EXPECT_EQ(n->nodes.front().label, w["first_node"].get<int>());
           const auto xyz = w["first_xyz"].get<std::vector<double>>();
           // 15 prints E13.5, 2411 D25.16: both readers parse the same text.
-          for (int i = 0; i < 3; ++i) expectNear(n->nodes.front().xyz[i], xyz[static_cast<std::size_t>(i)], 1e-12, "xyz");
+          for (int i = 0; i < 3; ++i)
+            expectNear(n->nodes.front().xyz[i], xyz[static_cast<std::size_t>(i)], 1e-12, "xyz");
           break;
         }
         case 82: {

@@ -18,7 +18,9 @@ namespace {
 constexpr double kSingleDigits = 0.5e-5;   // E13.5 -> 6 significant digits
 constexpr double kDoubleDigits = 0.5e-12;  // E20.12 -> 13 significant digits
 
-bool nearRel(double a, double b, double rel) { return std::abs(a - b) <= rel * std::abs(b) + 1e-300; }
+bool nearRel(double a, double b, double rel) {
+  return std::abs(a - b) <= rel * std::abs(b) + 1e-300;
+}
 
 // v rounded to the nearest float. Through a volatile: g++ 12 -O2 was seen to
 // fold a plain (double)(float)v in the lambda below.
@@ -201,8 +203,13 @@ TEST(UffRoundTrip, Ascii58KeepsTheFormatsDigits) {
 
 TEST(UffRoundTrip, EveryOtherDatasetType) {
   UffFile in;
-  Header151 h{"frame_A", "Motorcycle frame A, front-constrained", "Mozzi", "21-Nov-26 05:40:00", "21-Nov-26",
-              "Mozzi 0.1", "21-Nov-26 05:41:00"};
+  Header151 h{"frame_A",
+              "Motorcycle frame A, front-constrained",
+              "Mozzi",
+              "21-Nov-26 05:40:00",
+              "21-Nov-26",
+              "Mozzi 0.1",
+              "21-Nov-26 05:41:00"};
   in.datasets.push_back(makeDataset(h));
   Units164 u;
   u.unitsCode = 5;
@@ -253,13 +260,16 @@ TEST(UffRoundTrip, EveryOtherDatasetType) {
   m.analysisType = AnalysisType::NormalMode;
   m.integerValues = {1, 1};
   m.realValues = {18.4, 1.0, 0.0123, 0.0};
-  m.nodes = {{1, ComplexVector::Constant(3, Complex(-1.46518, 0))}, {2, ComplexVector::Constant(3, Complex(0.150162, 0))}};
+  m.nodes = {{1, ComplexVector::Constant(3, Complex(-1.46518, 0))},
+             {2, ComplexVector::Constant(3, Complex(0.150162, 0))}};
   in.datasets.push_back(makeDataset(m));
   ModalData55 mc = m;
   mc.analysisType = AnalysisType::ComplexEigenSecondOrder;
   mc.complexData = true;
   mc.realValues = {-0.1111111, 41.11111, 4111.111, -3111.111, -111111.0, -211111.0};
-  mc.nodes = {{111111, (ComplexVector(3) << Complex(0, 0), Complex(0.1111111, 0.09111111), Complex(0.007111111, 0.004111111)).finished()}};
+  mc.nodes = {
+      {111111, (ComplexVector(3) << Complex(0, 0), Complex(0.1111111, 0.09111111), Complex(0.007111111, 0.004111111))
+                   .finished()}};
   in.datasets.push_back(makeDataset(mc));
 
   auto back = roundTrip(in);

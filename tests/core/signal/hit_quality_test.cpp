@@ -130,7 +130,8 @@ TEST(HitQuality, ClippingIsFlaggedOnEveryChannel) {
     ASSERT_TRUE(q.ok());
     EXPECT_FALSE(q->accepted);
     for (Eigen::Index c = 0; c < 3; ++c) {
-      EXPECT_EQ(q->channels[static_cast<std::size_t>(c)].clipped, c == channel) << "clipped " << channel << ", checked " << c;
+      EXPECT_EQ(q->channels[static_cast<std::size_t>(c)].clipped, c == channel)
+          << "clipped " << channel << ", checked " << c;
     }
     EXPECT_NE(q->verdictText().find("overload on channel " + std::to_string(channel)), std::string::npos)
         << q->verdictText();

@@ -113,8 +113,8 @@ Coverage coverage(Fit fitFn, std::uint64_t seed, Eigen::Index n, double noise) {
 TEST(SineFit, KnownFrequencyConfidenceIntervalsAreHonest) {
   // 60 samples, noise 0.3 of the amplitude: SNR low enough that the
   // uncertainty is not trivial, t-quantile with 57 dof matters (2.00 vs 1.96)
-  const Coverage c = coverage(
-      [](const Vector& y, double fs, double f) { return fitSineKnownFrequency(y, fs, f); }, 20261121, 60, 0.3);
+  const Coverage c =
+      coverage([](const Vector& y, double fs, double f) { return fitSineKnownFrequency(y, fs, f); }, 20261121, 60, 0.3);
   std::printf("known frequency: amplitude coverage %d/1000, phase coverage %d/1000\n", c.amplitude, c.phase);
   EXPECT_GE(c.amplitude, 930);
   EXPECT_LE(c.amplitude, 970);
@@ -123,8 +123,8 @@ TEST(SineFit, KnownFrequencyConfidenceIntervalsAreHonest) {
 }
 
 TEST(SineFit, UnknownFrequencyConfidenceIntervalsAreHonest) {
-  const Coverage c = coverage(
-      [](const Vector& y, double fs, double f) { return fitSine(y, fs, f * 1.002); }, 77, 200, 0.3);
+  const Coverage c =
+      coverage([](const Vector& y, double fs, double f) { return fitSine(y, fs, f * 1.002); }, 77, 200, 0.3);
   std::printf("unknown frequency: amplitude coverage %d/1000, phase coverage %d/1000\n", c.amplitude, c.phase);
   EXPECT_GE(c.amplitude, 930);
   EXPECT_LE(c.amplitude, 970);
@@ -151,11 +151,11 @@ TEST(SineFit, StandardErrorsMatchNoiseLevel) {
 
 TEST(SineFit, BadInputIsAnError) {
   const Vector y = sine(100, 100.0, 5.0, 1.0, 0.0, 0.0);
-  EXPECT_FALSE(fitSineKnownFrequency(y, 0.0, 5.0).ok());     // sample rate 0
-  EXPECT_FALSE(fitSineKnownFrequency(y, 100.0, 0.0).ok());   // f = 0
-  EXPECT_FALSE(fitSineKnownFrequency(y, 100.0, 50.0).ok());  // Nyquist
+  EXPECT_FALSE(fitSineKnownFrequency(y, 0.0, 5.0).ok());            // sample rate 0
+  EXPECT_FALSE(fitSineKnownFrequency(y, 100.0, 0.0).ok());          // f = 0
+  EXPECT_FALSE(fitSineKnownFrequency(y, 100.0, 50.0).ok());         // Nyquist
   EXPECT_FALSE(fitSineKnownFrequency(Vector(3), 100.0, 5.0).ok());  // too short
-  EXPECT_FALSE(fitSine(Vector(), 100.0).ok());                       // empty
+  EXPECT_FALSE(fitSine(Vector(), 100.0).ok());                      // empty
   Vector bad = y;
   bad[17] = std::nan("");
   auto r = fitSineKnownFrequency(bad, 100.0, 5.0);

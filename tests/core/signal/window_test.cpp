@@ -47,8 +47,8 @@ TEST(Window, ForceWindowWidthAndTaper) {
   WindowSpec spec{WindowKind::Force, 0.010, 0.004, 0.0};
   auto w = makeWindow(spec, 200, 1000.0, 100);
   ASSERT_TRUE(w.ok());
-  EXPECT_EQ((*w)[0], 1.0);    // pre-trigger kept
-  EXPECT_EQ((*w)[110], 1.0);  // t = width
+  EXPECT_EQ((*w)[0], 1.0);             // pre-trigger kept
+  EXPECT_EQ((*w)[110], 1.0);           // t = width
   EXPECT_NEAR((*w)[112], 0.5, 1e-12);  // half-way through the taper: 0.5 (1 + cos(pi/2))
   EXPECT_EQ((*w)[114], 0.0);
   EXPECT_EQ((*w)[199], 0.0);

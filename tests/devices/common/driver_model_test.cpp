@@ -128,11 +128,11 @@ TEST(Parameters, SpecsCarryTypeUnitRangeAndChoices) {
     if (p.key == "sine.frequency") freq = &p;
   ASSERT_NE(freq, nullptr);
   EXPECT_EQ(freq->unit, "Hz");
-  EXPECT_DOUBLE_EQ(*freq->min, 1.0);   // §1.1: sine 1 to 45 Hz
+  EXPECT_DOUBLE_EQ(*freq->min, 1.0);  // §1.1: sine 1 to 45 Hz
   EXPECT_DOUBLE_EQ(*freq->max, 45.0);
   ASSERT_EQ(caps.outputs.size(), 1u);
   EXPECT_DOUBLE_EQ(caps.outputs[0].max, 5000.0);  // §1.1: static load up to 5000 N
-  EXPECT_EQ(caps.inputs.size(), 5u);               // load cell + four lasers
+  EXPECT_EQ(caps.inputs.size(), 5u);              // load cell + four lasers
 }
 
 }  // namespace

@@ -42,8 +42,8 @@ TEST(SoftwareTrigger, RisingEdgeCutsRecordWithTenPercentPreTrigger) {
   ASSERT_EQ(recs[0].samples.rows(), 20);
   EXPECT_DOUBLE_EQ(recs[0].samples(0, 0), 0.018);  // sample 18
   EXPECT_DOUBLE_EQ(recs[0].samples(1, 0), 0.019);
-  EXPECT_DOUBLE_EQ(recs[0].samples(2, 0), 1.0);    // the trigger sample at index pre
-  EXPECT_DOUBLE_EQ(recs[0].samples(19, 0), 0.037); // sample 37
+  EXPECT_DOUBLE_EQ(recs[0].samples(2, 0), 1.0);     // the trigger sample at index pre
+  EXPECT_DOUBLE_EQ(recs[0].samples(19, 0), 0.037);  // sample 37
 }
 
 TEST(SoftwareTrigger, HoldOffIgnoresRingingAndAcceptsLaterHit) {
@@ -92,7 +92,7 @@ TEST(SoftwareTrigger, FallingAndEitherSlopes) {
 
 TEST(SoftwareTrigger, CrossingBeforePreTriggerIsFullIsIgnored) {
   std::vector<double> x(40, 0.0);
-  x[1] = 1.0;   // only one sample in the ring, pre needs 3
+  x[1] = 1.0;  // only one sample in the ring, pre needs 3
   x[20] = 1.0;
   SoftwareTriggerConfig cfg;
   cfg.level = 0.5;

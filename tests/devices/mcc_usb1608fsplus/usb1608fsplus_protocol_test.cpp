@@ -14,8 +14,8 @@ namespace {
 
 TEST(Usb1608Protocol, ScanStartLayout) {
   ScanRequest r;
-  r.scanCount = 1000;        // 0x000003E8
-  r.pacerPeriod = 799;       // 40 MHz / 50 kHz - 1 = 0x0000031F
+  r.scanCount = 1000;   // 0x000003E8
+  r.pacerPeriod = 799;  // 40 MHz / 50 kHz - 1 = 0x0000031F
   r.channelMask = 0xFF;
   r.options = 0x00;
   const auto b = encodeScanStart(r);
@@ -33,8 +33,8 @@ TEST(Usb1608Protocol, PacerPeriodAndLimits) {
   EXPECT_EQ(*pacerPeriodFor(100e3, 4), 399u);
   EXPECT_EQ(*pacerPeriodFor(1000.0, 1), 39999u);
   EXPECT_DOUBLE_EQ(rateForPacerPeriod(799), 50e3);
-  EXPECT_FALSE(pacerPeriodFor(100e3, 8).ok());   // 800 kS/s aggregate > 400 kS/s
-  EXPECT_FALSE(pacerPeriodFor(150e3, 1).ok());   // > 100 kS/s per channel
+  EXPECT_FALSE(pacerPeriodFor(100e3, 8).ok());  // 800 kS/s aggregate > 400 kS/s
+  EXPECT_FALSE(pacerPeriodFor(150e3, 1).ok());  // > 100 kS/s per channel
   EXPECT_FALSE(pacerPeriodFor(std::nan(""), 1).ok());
 }
 
@@ -53,7 +53,8 @@ TEST(Usb1608Protocol, CalibrationTableAddressesAndFloats) {
   EXPECT_EQ(calibrationAddress(7, 7), 504);
   CalibrationTable t{};
   for (int r = 0; r < 8; ++r)
-    for (int c = 0; c < 8; ++c) t[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] = DeviceCalibration{1.0 + 0.001 * r, -2.0 * c};
+    for (int c = 0; c < 8; ++c)
+      t[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] = DeviceCalibration{1.0 + 0.001 * r, -2.0 * c};
   auto bytes = encodeCalibrationTable(t);
   ASSERT_EQ(bytes.size(), 512u);
   // Slope 1.0 of range 0 channel 0 as IEEE-754 little endian: 00 00 80 3F.

@@ -13,19 +13,19 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <cerrno>
-#include <cstdlib>
 #include <condition_variable>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <deque>
 #include <fstream>
 #include <mutex>
-#include <sys/stat.h>
 
 #include "devices/mcc_usb1608fsplus/usb1608fsplus_driver.h"
-#include "devices/usbfs_emulation.h"
 #include "devices/mcc_usb1608fsplus/usb1608fsplus_protocol.h"
+#include "devices/usbfs_emulation.h"
 
 namespace mozzi::devices::mcc {
 namespace {
@@ -33,13 +33,16 @@ namespace {
 using namespace std::chrono_literals;
 
 // Sample k of channel c as the model's ADC produces it.
-std::uint16_t modelCode(std::int64_t k, int c) { return static_cast<std::uint16_t>((k * 37 + c * 8191 + 1234) & 0xFFFF); }
+std::uint16_t modelCode(std::int64_t k, int c) {
+  return static_cast<std::uint16_t>((k * 37 + c * 8191 + 1234) & 0xFFFF);
+}
 
 CalibrationTable modelCalibration() {
   CalibrationTable t{};
   for (int r = 0; r < kRangeCount; ++r)
     for (int c = 0; c < kChannelCount; ++c)
-      t[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] = DeviceCalibration{1.0 + 0.0001 * (r + 1) * (c + 1), -1.5 * c + 0.25 * r};
+      t[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] =
+          DeviceCalibration{1.0 + 0.0001 * (r + 1) * (c + 1), -1.5 * c + 0.25 * r};
   return t;
 }
 
@@ -55,19 +58,19 @@ class DeviceModel {
   }
 
   // Fault switches (set before the scan).
-  std::int64_t overrunAtScan = -1;    // stall the URB that would carry this scan
-  std::int64_t skipOnOverrun = 7000;  // scans lost in the cleared FIFO
-  std::int64_t unplugAfterScans = -1; // unplug once this many scans were sent
-  bool silent = false;                // the pacer never runs: no bulk data
+  std::int64_t overrunAtScan = -1;     // stall the URB that would carry this scan
+  std::int64_t skipOnOverrun = 7000;   // scans lost in the cleared FIFO
+  std::int64_t unplugAfterScans = -1;  // unplug once this many scans were sent
+  bool silent = false;                 // the pacer never runs: no bulk data
 
   // What the host did, for the assertions.
   struct Log {
     int calReads = 0, statusReads = 0, clearHalts = 0, clearFifos = 0, scanStarts = 0, scanStops = 0, discards = 0;
     std::vector<ScanRequest> starts;
-    std::int64_t scansSent = 0;             // over the whole session
+    std::int64_t scansSent = 0;  // over the whole session
     std::int64_t scansBeforeOverrun = -1;
-    std::int64_t restartScan = -1;          // first scan index after the overrun
-    std::int64_t scansBeforeUnplug = -1;    // in URBs completed before the unplug
+    std::int64_t restartScan = -1;        // first scan index after the overrun
+    std::int64_t scansBeforeUnplug = -1;  // in URBs completed before the unplug
     std::array<std::uint8_t, 8> ranges{};
   };
   Log log() {
@@ -89,7 +92,8 @@ class DeviceModel {
         if (!urbd) return finish(client, -1, EFAULT);
         auto* urb = reinterpret_cast<usbdevfs_urb*>(urbd->data);
         UMockdevIoctlData* buf = urb->buffer_length > 0
-                                     ? umockdev_ioctl_data_resolve(urbd, offsetof(usbdevfs_urb, buffer), static_cast<gsize>(urb->buffer_length), &err)
+                                     ? umockdev_ioctl_data_resolve(urbd, offsetof(usbdevfs_urb, buffer),
+                                                                   static_cast<gsize>(urb->buffer_length), &err)
                                      : nullptr;
         umockdev_ioctl_data_ref(urbd);
         if (urb->type == USBDEVFS_URB_TYPE_CONTROL) {
@@ -143,10 +147,8 @@ class DeviceModel {
         return finish(client, 0, 0);
       }
       case USBDEVFS_GETDRIVER:
-      case USBDEVFS_IOCTL:
-        return finish(client, -1, ENODATA);  // no kernel driver bound
-      default:
-        return finish(client, 0, 0);  // claim/release interface, set configuration, ...
+      case USBDEVFS_IOCTL: return finish(client, -1, ENODATA);  // no kernel driver bound
+      default: return finish(client, 0, 0);                     // claim/release interface, set configuration, ...
     }
   }
 
@@ -160,7 +162,8 @@ class DeviceModel {
   static UMockdevIoctlData* bufferOf(UMockdevIoctlData* urbd) {
     GError* err = nullptr;
     auto* urb = reinterpret_cast<usbdevfs_urb*>(urbd->data);
-    return umockdev_ioctl_data_resolve(urbd, offsetof(usbdevfs_urb, buffer), static_cast<gsize>(urb->buffer_length), &err);
+    return umockdev_ioctl_data_resolve(urbd, offsetof(usbdevfs_urb, buffer), static_cast<gsize>(urb->buffer_length),
+                                       &err);
   }
 
   void control(UMockdevIoctlData* urbd, UMockdevIoctlData* buf) {
@@ -171,7 +174,8 @@ class DeviceModel {
     std::vector<std::uint8_t> in;
     bool ok = true;
     if (type == 0x80 && request == 6 && (value >> 8) == 3) {  // GET_DESCRIPTOR string
-      if ((value & 0xFF) == 0) in = {4, 3, 0x09, 0x04};
+      if ((value & 0xFF) == 0)
+        in = {4, 3, 0x09, 0x04};
       else {
         const std::string serial = "01ABCDEF";
         in = {static_cast<std::uint8_t>(2 + 2 * serial.size()), 3};
@@ -179,11 +183,14 @@ class DeviceModel {
       }
     } else if (type == 0xC0 && request == kCalMemory) {
       ++log_.calReads;
-      if (value + length > kCalMemoryBytes) ok = false;
-      else in.assign(cal_.begin() + value, cal_.begin() + value + length);
+      if (value + length > kCalMemoryBytes)
+        ok = false;
+      else
+        in.assign(cal_.begin() + value, cal_.begin() + value + length);
     } else if (type == 0xC0 && request == kStatus) {
       ++log_.statusReads;
-      const std::uint16_t st = static_cast<std::uint16_t>((scanning_ ? kStatusScanRunning : 0) | (overrun_ ? kStatusScanOverrun : 0));
+      const std::uint16_t st =
+          static_cast<std::uint16_t>((scanning_ ? kStatusScanRunning : 0) | (overrun_ ? kStatusScanOverrun : 0));
       in = {static_cast<std::uint8_t>(st & 0xFF), static_cast<std::uint8_t>(st >> 8)};
     } else if (type == 0x40 && request == kAInConfig && length == 8) {
       std::copy(s + 8, s + 16, log_.ranges.begin());
@@ -232,7 +239,8 @@ class DeviceModel {
       const std::size_t scanBytes = 2 * channels_.size();
       // Produce scans into the FIFO until the URB can be filled or the
       // requested count is reached.
-      while (fifo_.size() < want && (scan_.scanCount == 0 || scansThisRun_ < static_cast<std::int64_t>(scan_.scanCount))) {
+      while (fifo_.size() < want &&
+             (scan_.scanCount == 0 || scansThisRun_ < static_cast<std::int64_t>(scan_.scanCount))) {
         if (overrunAtScan >= 0 && nextScan_ == overrunAtScan && log_.scansBeforeOverrun < 0) {
           // FIFO overrun: the device stalls the bulk endpoint; every queued
           // URB fails with -EPIPE until the host clears the halt.
@@ -306,13 +314,14 @@ class Usb1608Umockdev : public ::testing::Test {
     testbed_ = umockdev_testbed_new();
     // Device descriptor: USB 2.0, max packet 64 on EP0, VID 09DB PID 00EA,
     // iSerialNumber 3; one configuration, interface 0 with bulk IN 0x81 (64 bytes).
-    const std::uint8_t desc[] = {18, 1, 0x00, 0x02, 0, 0, 0, 64, 0xDB, 0x09, 0xEA, 0x00, 0x00, 0x01, 1, 2, 3, 1,
-                                 9,  2, 25,   0,    1, 1, 0, 0x80, 50,
-                                 9,  4, 0,    0,    1, 0xFF, 0, 0, 0,
-                                 7,  5, 0x81, 2,    64, 0, 0};
+    const std::uint8_t desc[] = {18, 1, 0x00, 0x02, 0, 0,  0, 64, 0xDB, 0x09, 0xEA, 0x00, 0x00, 0x01, 1,
+                                 2,  3, 1,    9,    2, 25, 0, 1,  1,    0,    0x80, 50,   9,    4,    0,
+                                 0,  1, 0xFF, 0,    0, 0,  7, 5,  0x81, 2,    64,   0,    0};
     const gchar* attrs[] = {"busnum", "1", "devnum", "2", "speed", "12", "dev", "189:1", nullptr};
-    const gchar* props[] = {"DEVTYPE", "usb_device", "DEVNAME", "/dev/bus/usb/001/002", "BUSNUM", "001", "DEVNUM", "002", nullptr};
-    sysPath_ = umockdev_testbed_add_devicev(testbed_, "usb", "usb1608fsplus", nullptr, const_cast<gchar**>(attrs), const_cast<gchar**>(props));
+    const gchar* props[] = {"DEVTYPE", "usb_device", "DEVNAME", "/dev/bus/usb/001/002", "BUSNUM", "001",
+                            "DEVNUM",  "002",        nullptr};
+    sysPath_ = umockdev_testbed_add_devicev(testbed_, "usb", "usb1608fsplus", nullptr, const_cast<gchar**>(attrs),
+                                            const_cast<gchar**>(props));
     umockdev_testbed_set_attribute_binary(testbed_, sysPath_, "descriptors", const_cast<guint8*>(desc), sizeof desc);
     // add_devicev creates no device node; libusb needs /dev/bus/usb/001/002 to exist.
     gchar* root = umockdev_testbed_get_root_dir(testbed_);
@@ -323,7 +332,8 @@ class Usb1608Umockdev : public ::testing::Test {
     handler_ = umockdev_ioctl_base_new();
     g_signal_connect(handler_, "handle-ioctl", G_CALLBACK(onIoctl), &model_);
     GError* err = nullptr;
-    ASSERT_TRUE(umockdev_testbed_attach_ioctl(testbed_, "/dev/bus/usb/001/002", handler_, &err)) << (err ? err->message : "");
+    ASSERT_TRUE(umockdev_testbed_attach_ioctl(testbed_, "/dev/bus/usb/001/002", handler_, &err))
+        << (err ? err->message : "");
   }
   void TearDown() override {
     device_.reset();
@@ -451,7 +461,8 @@ TEST_F(Usb1608Umockdev, OverrunIsReportedClearedAndRecovered) {
   ASSERT_EQ(log.restartScan, 19000);
   for (std::int64_t k = 0; k < 30000; ++k) {
     const std::int64_t source = k < before ? k : log.restartScan + (k - before);
-    for (int c = 0; c < 8; ++c) ASSERT_EQ(raw[static_cast<std::size_t>(k) * 8 + static_cast<std::size_t>(c)], modelCode(source, c)) << k;
+    for (int c = 0; c < 8; ++c)
+      ASSERT_EQ(raw[static_cast<std::size_t>(k) * 8 + static_cast<std::size_t>(c)], modelCode(source, c)) << k;
   }
 }
 
@@ -473,7 +484,7 @@ TEST_F(Usb1608Umockdev, OverrunWithStopPolicyEndsTheSession) {
 
 TEST_F(Usb1608Umockdev, UnplugMidScanEndsCleanlyWithTheDataSoFar) {
   Device& dev = openDevice();
-  model_.unplugAfterScans = 20000;  // the last URB of the fourth transfer is lost with the device
+  model_.unplugAfterScans = 20000;      // the last URB of the fourth transfer is lost with the device
   const auto cfg = config(50e3, 8, 0);  // continuous
   ASSERT_TRUE(dev.configure(cfg).ok());
   StreamCollector col;
@@ -554,7 +565,8 @@ TEST_F(Usb1608Umockdev, SustainedContinuousScanDropsNothing) {
       if (b->firstSample != next) ++bad;
       for (Eigen::Index s = 0; s < b->scanCount(); ++s)
         for (int c = 0; c < 8; ++c)
-          if (b->raw[static_cast<std::size_t>(s) * 8 + static_cast<std::size_t>(c)] != modelCode(b->firstSample + s, c)) ++bad;
+          if (b->raw[static_cast<std::size_t>(s) * 8 + static_cast<std::size_t>(c)] != modelCode(b->firstSample + s, c))
+            ++bad;
       next = b->firstSample + b->scanCount();
     } else if (std::holds_alternative<OverrunEvent>(e)) {
       ++overruns;

@@ -59,7 +59,9 @@ std::unique_ptr<Session> run(std::unique_ptr<Driver> driver, const AcquisitionCo
   return s;
 }
 
-FaultCounters countersOf(const Session& s) { return dynamic_cast<const SimulatedRig&>(*s.device).counters(); }
+FaultCounters countersOf(const Session& s) {
+  return dynamic_cast<const SimulatedRig&>(*s.device).counters();
+}
 
 TEST(HammerStation, CleanSessionCompletesWithOneHitPerInterval) {
   auto s = run(makeHammerStationDriver(), hammerConfig(2048.0, 5.0));
@@ -85,7 +87,8 @@ TEST(HammerStation, CleanSessionCompletesWithOneHitPerInterval) {
   chain.range = InputRange{"+/-10 V", 0, -10.0, 10.0};
   chain.calibration = DeviceCalibration{1.0002, -3.0};
   chain.transducer.sensitivityMvPerUnit = 2.25;
-  for (int k = 0; k < 2000; k += 97) EXPECT_DOUBLE_EQ(v(k, 0), chain.engineeringFromRaw(raw[static_cast<std::size_t>(k) * 4]));
+  for (int k = 0; k < 2000; k += 97)
+    EXPECT_DOUBLE_EQ(v(k, 0), chain.engineeringFromRaw(raw[static_cast<std::size_t>(k) * 4]));
 }
 
 TEST(HammerStation, SameSeedSameData) {
@@ -126,7 +129,8 @@ TEST(HammerStation, DoubleHitsAndOverloadsOnRequest) {
   EXPECT_EQ(overloaded, n.overloadHits);
   // Pre-trigger is 10% of the record and the hits sit 0.25 s into each second.
   EXPECT_EQ(records[0].preTriggerScans, 205);
-  EXPECT_NEAR(static_cast<double>(records[0].triggerSample), 0.25 * 4096, 8.0);  // level reached within 2 ms of the pulse start
+  EXPECT_NEAR(static_cast<double>(records[0].triggerSample), 0.25 * 4096,
+              8.0);  // level reached within 2 ms of the pulse start
 }
 
 TEST(SimulatedFaults, OverrunsAreReportedAndCounted) {

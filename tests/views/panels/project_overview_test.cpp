@@ -20,7 +20,8 @@ class ProjectOverviewTest : public QObject {
     summary.createdUtc = "2026-11-21T05:00:00Z";
     summary.mozziVersion = "0.1.0";
     summary.specimens = {{1, "Frame A", "frame", "thesis Table 3"}, {2, "Fork A", "fork", "thesis Table 11"}};
-    view.showSummary(QStringLiteral("/data/lab/campaign-12.mozzi"), summary, true, QStringLiteral("another Mozzi instance has this project open"));
+    view.showSummary(QStringLiteral("/data/lab/campaign-12.mozzi"), summary, true,
+                     QStringLiteral("another Mozzi instance has this project open"));
     QCOMPARE(view.specimenRows(), 2);
     auto* table = view.findChild<QTableWidget*>(QStringLiteral("overviewSpecimens"));
     QVERIFY(table);

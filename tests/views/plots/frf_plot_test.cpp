@@ -2,17 +2,17 @@
 // analytic SDOF receptance at every line, for the pair that is selected.
 #include "views/plots/frf_plot.h"
 
+#include <qwt_plot.h>
+#include <qwt_plot_curve.h>
 #include <QApplication>
 #include <QComboBox>
 #include <QtTest>
-#include <qwt_plot.h>
-#include <qwt_plot_curve.h>
 
 #include <cmath>
 
 using mozzi::core::Complex;
-using mozzi::core::Dof;
 using mozzi::core::Direction;
+using mozzi::core::Dof;
 using mozzi::core::FrfMatrix;
 
 namespace {
