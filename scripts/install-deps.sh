@@ -18,7 +18,7 @@ packages=(
   # clang's libFuzzer runtime, SciPy for the reference benchmark scripts
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri mesa-utils fonts-dejavu-core
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev clang-format
   python3 python3-numpy python3-scipy
 )
 

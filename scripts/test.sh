@@ -8,6 +8,7 @@ build=${MOZZI_BUILD_DIR:-$root/build/test}
 jobs=$(nproc)
 
 "$root/scripts/install-deps.sh"
+"$root/scripts/check-format.sh"
 start=$(date +%s)
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build "$build" -j "$jobs"
