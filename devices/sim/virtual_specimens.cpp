@@ -1,6 +1,7 @@
 #include "devices/sim/virtual_specimens.h"
 
 #include "core/io/project_store.h"
+#include "devices/campaign/demo_campaigns.h"
 
 namespace mozzi::devices::sim {
 
@@ -41,6 +42,8 @@ core::Result<void> createDemoProject(const std::string& path, const std::string&
     auto id = store->addSpecimen(specimen.name, specimen.kind, "virtual specimen; parameters from " + specimen.source);
     if (!id) return id.error();
   }
+  // Finished hammer campaigns (hits and FRF sets) on fork A with wheel and frame A.
+  if (auto r = campaign::addDemoCampaigns(*store); !r) return r;
   return {};
 }
 
