@@ -4,8 +4,8 @@
 //   TriggerToVerdict: the last device block of a hit (50 ms, 2560 scans)
 //     reaches the engine -> the software trigger completes the record ->
 //     float32 rounding -> hit quality -> rules, including the poor-coherence
-//     rule, which tries the hit on a copy of the point's running average of
-//     two hits. Target <= 50 ms.
+//     rule (argument 1), which tries the hit on a copy of the point's running
+//     average of two hits. Target <= 50 ms.
 //   RunningFrfUpdate: the accepted hit added to the point's average and its
 //     FRF (stored band) recomputed for the live plot (after the verdict).
 //   HitCommit: ProjectStore::commitHit of that hit into a project on the
@@ -17,8 +17,11 @@
 
 #include <benchmark/benchmark.h>
 #include <unistd.h>
+#include <Eigen/LU>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 #include "core/io/project_store.h"
@@ -65,7 +68,12 @@ core::signal::TimeRecord syntheticHit(std::uint64_t seed) {
   spec.forceNoiseRms = 0.05;
   spec.responseNoiseRms = 0.002;
   spec.seed = seed;
-  return core::signal::synthesizeHammerHit(sys, spec).value();
+  auto hit = core::signal::synthesizeHammerHit(sys, spec);
+  if (!hit) {
+    std::fprintf(stderr, "cannot synthesise the hit: %s\n", hit.error().describe().c_str());
+    std::abort();
+  }
+  return std::move(*hit);
 }
 
 CampaignDefinition benchDefinition() {
@@ -111,35 +119,54 @@ Fixture& fixture() {
 
 void TriggerToVerdict(benchmark::State& state) {
   auto& fx = fixture();
+  const bool coherenceRule = state.range(0) != 0;
+  fx.def.rules.minCoherence = coherenceRule ? 0.5 : 0.0;
   const auto& samples = fx.hit.samples;
   const Eigen::Index block = 2560;  // 50 ms at 51.2 kS/s, the driver's block
   const Eigen::Index n = samples.rows();
-  // The device stream: 0.5 s of quiet (the ring fills), then the hit.
-  core::Matrix stream(n + static_cast<Eigen::Index>(0.5 * kRate) - fx.hit.preTriggerSamples, samples.cols());
-  stream.setZero();
-  stream.bottomRows(n) = samples;
-  const Eigen::Index lastStart = (stream.rows() - 1) / block * block;
+  // The device stream: 0.5 s of quiet (the ring fills), the hit, 0.1 s more.
+  const Eigen::Index lead = static_cast<Eigen::Index>(0.5 * kRate) - fx.hit.preTriggerSamples;
+  core::Matrix stream = core::Matrix::Zero(lead + n + 2 * block, samples.cols());
+  stream.middleRows(lead, n) = samples;
   devices::SoftwareTriggerConfig tc;
   tc.level = fx.def.acquisition.triggerLevel;
   tc.recordScans = fx.def.recordScans();
   tc.preTriggerFraction = fx.def.acquisition.preTriggerFraction;
   tc.fullScale.assign(static_cast<std::size_t>(samples.cols()), 1e6);
+  // The block that completes the record.
+  Eigen::Index lastStart = -1;
+  {
+    auto trig = devices::SoftwareTrigger::create(tc, static_cast<int>(samples.cols())).value();
+    for (Eigen::Index s = 0; s + block <= stream.rows() && lastStart < 0; s += block)
+      if (!trig.feed(s, stream.middleRows(s, block)).empty()) lastStart = s;
+  }
+  if (lastStart < 0) {
+    state.SkipWithError("the trigger never completes a record");
+    return;
+  }
   for (auto _ : state) {
     state.PauseTiming();
     auto trig = devices::SoftwareTrigger::create(tc, static_cast<int>(samples.cols())).value();
     for (Eigen::Index s = 0; s < lastStart; s += block) (void)trig.feed(s, stream.middleRows(s, block));
     state.ResumeTiming();
-    auto records = trig.feed(lastStart, stream.middleRows(lastStart, stream.rows() - lastStart));
-    if (records.size() != 1) state.SkipWithError("no record");
+    auto records = trig.feed(lastStart, stream.middleRows(lastStart, block));
+    if (records.size() != 1) {
+      state.SkipWithError("the last block completes no record");
+      break;
+    }
     auto tr = timeRecordFor(fx.def, fx.def.points[0], kRate, tc.fullScale,
                             samplesFromStored(storedSamples(records.front().samples)));
     tr.preTriggerSamples = records.front().preTriggerScans;
     auto verdict = judgeHit(fx.def, tr, fx.average.get());
-    if (!verdict || !verdict->meanCoherence) state.SkipWithError("no verdict");
+    if (!verdict || (coherenceRule && !verdict->meanCoherence)) {
+      state.SkipWithError(verdict ? "the coherence rule did not run" : verdict.error().describe().c_str());
+      break;
+    }
     benchmark::DoNotOptimize(verdict);
   }
 }
-BENCHMARK(TriggerToVerdict)->Unit(benchmark::kMillisecond)->UseRealTime();
+// Argument: the poor-coherence rule off (0) or on (1).
+BENCHMARK(TriggerToVerdict)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void RunningFrfUpdate(benchmark::State& state) {
   auto& fx = fixture();

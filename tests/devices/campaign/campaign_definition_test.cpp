@@ -172,7 +172,7 @@ TEST(VirtualCampaign, RangesHoldTheExpectedPeaksAndAnUnknownKeyIsNamed) {
   auto d = virtualSpecimenCampaign("fork-a-with-wheel");
   ASSERT_TRUE(d.ok()) << d.error().describe();
   EXPECT_EQ(d->channels[0].transducer.kind, core::signal::TransducerKind::Force);
-  EXPECT_EQ(d->channels[0].rangeCode, 4);  // 220 N x 2.25 mV/N = 0.5 V, twice that within +/-1.25 V
+  EXPECT_EQ(d->channels[0].rangeCode, 5);  // 220 N x 2.25 mV/N = 0.495 V: twice that (0.99 V) within +/-1 V
   auto bad = virtualSpecimenCampaign("fork-z");
   ASSERT_FALSE(bad.ok());
   EXPECT_NE(bad.error().message.find("rig list"), std::string::npos);

@@ -88,7 +88,7 @@ TEST(CampaignEngine, RunsAWholeCampaignAndStoresTheFrfSetTiedToItsHits) {
 
 TEST(CampaignEngine, EveryHitIsCommittedBeforeTheNextArm) {
   // Double hits and overloads planted often: rejected hits are committed too.
-  auto def = smallDefinition(2, 5, 0.3, 0.2);
+  auto def = smallDefinition(2, 3, 0.3, 0.2);  // seed 3: rejections among the first hits
   auto p = makeProject("commit_before_arm", def);
   auto engine = CampaignEngine::open(p.store, p.campaignId, simStation(), fastOptions());
   ASSERT_TRUE(engine.ok());
