@@ -86,6 +86,10 @@ MainWindow::MainWindow(QWidget* parent)
   connect(jobs_, &views::JobRunner::jobFinished, this, [this](int, bool ok) {
     if (!ok) statusBar()->showMessage(tr("A job stopped before its end; see its page"), 5000);
   });
+  // First start: the tree wide enough for specimen names, the log a few lines high.
+  const int em = fontMetrics().averageCharWidth();
+  resizeDocks({projectDock_}, {em * 36}, Qt::Horizontal);
+  resizeDocks({logDock_}, {fontMetrics().lineSpacing() * 7}, Qt::Vertical);
   defaultState_ = saveState();
 
   QSettings settings;
@@ -95,7 +99,9 @@ MainWindow::MainWindow(QWidget* parent)
   if (!geometry().isValid() || settings.value(QLatin1String(kSettingsGeometry)).isNull()) resize(1280, 800);
 
   connect(model_, &views::ProjectModel::projectChanged, this, &MainWindow::onProjectChanged);
-  connect(model_, &views::ProjectModel::recordsChanged, this, &MainWindow::showProperties);
+  connect(model_, &views::ProjectModel::recordsChanged, this, [this](views::RecordKind kind) {
+    if (kind != views::RecordKind::Hit) showProperties();  // a campaign commits a hit every few seconds
+  });
   tabs_->openStartPages();
 
   QString lang = settings.value(QLatin1String(kSettingsLanguage)).toString();
@@ -349,7 +355,9 @@ void MainWindow::showProperties() {
   properties_->setRowCount(rows.size());
   for (int r = 0; r < rows.size(); ++r) {
     properties_->setItem(r, 0, new QTableWidgetItem(rows[r].first));
-    properties_->setItem(r, 1, new QTableWidgetItem(rows[r].second));
+    auto* value = new QTableWidgetItem(rows[r].second);
+    value->setToolTip(rows[r].second);  // long paths and descriptions are cut in the cell
+    properties_->setItem(r, 1, value);
   }
 }
 

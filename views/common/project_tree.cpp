@@ -55,6 +55,7 @@ ProjectItem ProjectTree::itemOf(const QTreeWidgetItem* row) {
 
 QTreeWidgetItem* ProjectTree::addRow(QTreeWidgetItem* parent, const QStringList& texts, const ProjectItem& item) {
   auto* row = parent ? new QTreeWidgetItem(parent, texts) : new QTreeWidgetItem(this, texts);
+  row->setToolTip(0, texts.value(0));  // long names are cut in a narrow dock
   row->setData(0, kRoleKind, static_cast<int>(item.kind));
   row->setData(0, kRoleId, QVariant::fromValue<qlonglong>(item.id));
   row->setData(0, kRoleSpecimen, QVariant::fromValue<qlonglong>(item.specimenId));
@@ -83,6 +84,14 @@ QList<QPair<QString, QString>> ProjectTree::currentProperties() const {
     return rows;
   }
   for (int i = 0; i + 1 < props.size(); i += 2) rows << qMakePair(props[i], props[i + 1]);
+  const ProjectItem item = itemOf(row);
+  if (item.kind == RecordKind::Specimen && model_->store()) {
+    QString mesh = tr("none");
+    if (auto m = model_->store()->mesh(item.id); m && !m->nodes.empty()) {
+      mesh = tr("%1 nodes, %2 lines").arg(m->nodes.size()).arg(m->lines.size());
+    }
+    rows << qMakePair(tr("Mesh"), mesh);
+  }
   return rows;
 }
 
@@ -109,13 +118,10 @@ void ProjectTree::refresh() {
   auto* specimens = addRow(root, {tr("Specimens"), QString::number(summary->specimens.size())}, {});
   for (const auto& sp : summary->specimens) {
     auto* row = addRow(specimens, {text(sp.name)}, {RecordKind::Specimen, sp.id, sp.id});
-    QString mesh = tr("none");
-    if (auto m = store->mesh(sp.id); m && !m->nodes.empty()) {
-      mesh = tr("%1 nodes, %2 lines").arg(m->nodes.size()).arg(m->lines.size());
-    }
-    row->setData(0, kRoleProperties,
-                 QStringList{tr("Name"), text(sp.name), tr("Kind"), text(sp.kind), tr("Description"),
-                             text(sp.description), tr("Mesh"), mesh});
+    // The mesh row is added when the specimen is selected (a mesh can be large).
+    row->setData(
+        0, kRoleProperties,
+        QStringList{tr("Name"), text(sp.name), tr("Kind"), text(sp.kind), tr("Description"), text(sp.description)});
     if (auto campaigns = store->campaigns(sp.id); campaigns && !campaigns->empty()) {
       for (const auto& c : *campaigns) {
         auto* crow = addRow(row, {text(c.name)}, {RecordKind::Campaign, c.id, sp.id});

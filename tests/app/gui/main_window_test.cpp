@@ -2,6 +2,7 @@
 // Mesa's software OpenGL: docks, every menu action, project open errors,
 // persistence, languages, the About box, and a screenshot for the record.
 #include <qwt_global.h>
+#include <qwt_plot.h>
 #include <sqlite3.h>
 #include <vtkVersion.h>
 #include <QAction>

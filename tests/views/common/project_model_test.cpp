@@ -133,9 +133,10 @@ class ProjectModelTest : public QObject {
     QCOMPARE(tyreTests.count(), 1);
     io::StoredModel m;
     m.specimenId = *sp;
-    m.name = "lumped";
+    m.name = "fork model 2";
+    m.kind = "lumped";
     auto modelId = model_->addModel(m);
-    QVERIFY(modelId.ok());
+    QVERIFY2(modelId.ok(), modelId.ok() ? "" : modelId.error().describe().c_str());
     QCOMPARE(models.count(), 1);
     io::StoredAnalysis a;
     a.specimenId = *sp;
