@@ -86,11 +86,8 @@ MainWindow::MainWindow(QWidget* parent)
   connect(jobs_, &views::JobRunner::jobFinished, this, [this](int, bool ok) {
     if (!ok) statusBar()->showMessage(tr("A job stopped before its end; see its page"), 5000);
   });
-  // First start: the tree wide enough for specimen names, the log a few lines high.
-  const int em = fontMetrics().averageCharWidth();
-  resizeDocks({projectDock_}, {em * 36}, Qt::Horizontal);
-  resizeDocks({logDock_}, {fontMetrics().lineSpacing() * 7}, Qt::Vertical);
   defaultState_ = saveState();
+  applyDefaultDockSizes();
 
   QSettings settings;
   recentFiles_ = settings.value(QLatin1String(kSettingsRecent)).toStringList();
@@ -165,7 +162,10 @@ void MainWindow::createActions() {
     updateRecentMenu();
   });
   resetLayoutAction_ = new QAction(this);
-  connect(resetLayoutAction_, &QAction::triggered, this, [this] { restoreState(defaultState_); });
+  connect(resetLayoutAction_, &QAction::triggered, this, [this] {
+    restoreState(defaultState_);
+    applyDefaultDockSizes();
+  });
   demoAction_ = new QAction(this);
   connect(demoAction_, &QAction::triggered, this, [this] {
     const QString path =
@@ -273,6 +273,12 @@ void MainWindow::createDocks() {
   viewMenu_->addSeparator();
   viewMenu_->addAction(resetLayoutAction_);
   viewMenu_->addMenu(languageMenu_);
+}
+
+// The tree wide enough for specimen names, the log a few lines high.
+void MainWindow::applyDefaultDockSizes() {
+  resizeDocks({projectDock_}, {fontMetrics().averageCharWidth() * 36}, Qt::Horizontal);
+  resizeDocks({logDock_}, {fontMetrics().lineSpacing() * 7}, Qt::Vertical);
 }
 
 void MainWindow::retranslateUi() {
@@ -489,7 +495,7 @@ bool MainWindow::saveProjectAs(const QString& path) {
 }
 
 bool MainWindow::exportWorkAreaImage(const QString& path) {
-  const QPixmap image = tabs_->currentWidget() ? tabs_->currentWidget()->grab() : tabs_->grab();
+  const QPixmap image = tabs_->currentPage() ? tabs_->currentPage()->grab() : tabs_->grab();
   if (!image.save(path)) {
     showError(tr("Export Image"), tr("Could not write %1.").arg(QDir::toNativeSeparators(path)),
               core::makeError(core::ErrorCode::IoError, "the image could not be written (folder or format)",

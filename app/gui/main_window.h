@@ -85,6 +85,7 @@ class MainWindow : public QMainWindow {
   void createActions();
   void createMenus();
   void createDocks();
+  void applyDefaultDockSizes();
   void retranslateUi();
   void onProjectChanged();
   void showProperties();

@@ -2,6 +2,7 @@
 
 #include <QEvent>
 #include <QIcon>
+#include <QScrollArea>
 #include <QVariant>
 
 namespace mozzi {
@@ -28,14 +29,34 @@ PageTabs::PageTabs(const PageRegistry* registry, ProjectModel* model, JobRunner*
   setMovable(true);
   setTabsClosable(true);
   connect(this, &QTabWidget::tabCloseRequested, this, [this](int index) {
-    QWidget* page = widget(index);
+    QWidget* holder = widget(index);
     removeTab(index);
-    page->deleteLater();
+    holder->deleteLater();
   });
   // Item pages show records of the project they were opened in.
   connect(model_, &ProjectModel::projectChanged, this, &PageTabs::closeItemPages);
   // Record names in tab titles may change with the records.
   connect(model_, &ProjectModel::recordsChanged, this, &PageTabs::retitle);
+}
+
+QWidget* PageTabs::page(int index) const {
+  auto* holder = qobject_cast<QScrollArea*>(widget(index));
+  return holder ? holder->widget() : nullptr;
+}
+
+QWidget* PageTabs::currentPage() const {
+  return page(currentIndex());
+}
+
+int PageTabs::indexOfPage(const QWidget* page) const {
+  for (int i = 0; i < count(); ++i) {
+    if (this->page(i) == page) return i;
+  }
+  return -1;
+}
+
+void PageTabs::setCurrentPage(QWidget* page) {
+  if (const int index = indexOfPage(page); index >= 0) setCurrentIndex(index);
 }
 
 const PageSpec* PageTabs::specOf(const QWidget* page) const {
@@ -52,7 +73,7 @@ QWidget* PageTabs::findPage(const QString& pageId, const ProjectItem& item) cons
   const PageSpec* spec = registry_->find(pageId);
   if (!spec) return nullptr;
   for (int i = 0; i < count(); ++i) {
-    QWidget* page = widget(i);
+    QWidget* page = this->page(i);
     if (page->property(kPropPage).toString() != pageId) continue;
     if (spec->singleton) return page;
     const ProjectItem shown = itemOf(page);
@@ -70,7 +91,7 @@ QWidget* PageTabs::openPage(const QString& pageId, const ProjectItem& item) {
       spec->showItem(page, context(item));
       setItem(page, item);
     }
-    setCurrentWidget(page);
+    setCurrentPage(page);
     return page;
   }
   QWidget* page = spec->create(context(item));
@@ -79,7 +100,14 @@ QWidget* PageTabs::openPage(const QString& pageId, const ProjectItem& item) {
   page->setProperty(kPropPage, spec->id);
   setItem(page, item);
   if (spec->singleton && item.kind != RecordKind::None && spec->showItem) spec->showItem(page, context(item));
-  const int index = addTab(page, spec->iconPath.isEmpty() ? QIcon() : QIcon(spec->iconPath), tabTitle(*spec, item));
+  // Each page sits in a scroll area: a page taller or wider than the window
+  // scrolls instead of growing the window past a 1280x800 screen.
+  auto* holder = new QScrollArea(this);
+  holder->setObjectName(spec->id + QStringLiteral("Holder"));
+  holder->setFrameShape(QFrame::NoFrame);
+  holder->setWidgetResizable(true);
+  holder->setWidget(page);
+  const int index = addTab(holder, spec->iconPath.isEmpty() ? QIcon() : QIcon(spec->iconPath), tabTitle(*spec, item));
   setTabToolTip(index, PageRegistry::summary(*spec));
   setCurrentIndex(index);
   return page;
@@ -100,7 +128,7 @@ void PageTabs::openStartPages() {
 void PageTabs::followSelection(const ProjectItem& item) {
   if (item.kind == RecordKind::None) return;
   for (int i = 0; i < count(); ++i) {
-    QWidget* page = widget(i);
+    QWidget* page = this->page(i);
     const PageSpec* spec = specOf(page);
     if (!spec || !spec->singleton || !spec->showItem || !spec->opensItem || !spec->opensItem(item)) continue;
     spec->showItem(page, context(item));
@@ -121,17 +149,18 @@ QString PageTabs::tabTitle(const PageSpec& spec, const ProjectItem& item) const 
 
 void PageTabs::retitle() {
   for (int i = 0; i < count(); ++i) {
-    if (const PageSpec* spec = specOf(widget(i))) setTabText(i, tabTitle(*spec, itemOf(widget(i))));
+    if (const PageSpec* spec = specOf(page(i))) setTabText(i, tabTitle(*spec, itemOf(page(i))));
   }
 }
 
 void PageTabs::closeItemPages() {
   for (int i = count() - 1; i >= 0; --i) {
-    QWidget* page = widget(i);
+    QWidget* page = this->page(i);
     const PageSpec* spec = specOf(page);
     if (spec && !spec->singleton && itemOf(page).kind != RecordKind::None) {
+      QWidget* holder = widget(i);
       removeTab(i);
-      page->deleteLater();
+      holder->deleteLater();
     }
   }
   retitle();

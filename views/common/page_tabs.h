@@ -1,5 +1,5 @@
 #pragma once
-// The work area: pages of the registry as tabs. A singleton page has one tab
+// The work area: pages of the registry as tabs, each in a scroll area. A singleton page has one tab
 // (raised when opened again); any other page one tab per project item. Tab
 // titles are the page's translated title, with the record's name for a page
 // opened on an item ("FRF: hammer run 3"), and follow the language. Tabs of
@@ -29,6 +29,13 @@ class PageTabs : public QTabWidget {
   void openStartPages();
   // Shows `item` in every open singleton page that opens it and has showItem.
   void followSelection(const ProjectItem& item);
+
+  // The page of tab `index` (each tab holds its page in a scroll area, so use
+  // these rather than QTabWidget::widget()/currentWidget()).
+  QWidget* page(int index) const;
+  QWidget* currentPage() const;
+  int indexOfPage(const QWidget* page) const;  // -1 if not open
+  void setCurrentPage(QWidget* page);
 
   const PageSpec* specOf(const QWidget* page) const;
   ProjectItem itemOf(const QWidget* page) const;

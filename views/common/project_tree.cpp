@@ -168,6 +168,10 @@ void ProjectTree::refresh() {
   projectReplaced_ = false;
 }
 
+QSize ProjectTree::sizeHint() const {
+  return QSize(fontMetrics().averageCharWidth() * 36, QTreeWidget::sizeHint().height());
+}
+
 void ProjectTree::changeEvent(QEvent* event) {
   if (event->type() == QEvent::LanguageChange) refresh();
   QTreeWidget::changeEvent(event);

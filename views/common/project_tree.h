@@ -26,6 +26,8 @@ class ProjectTree : public QTreeWidget {
   // Property/value rows describing the current row (the properties dock).
   QList<QPair<QString, QString>> currentProperties() const;
   void refresh();
+  // Wide enough for a specimen's name (the dock takes its width from this).
+  QSize sizeHint() const override;
 
  signals:
   void currentProjectItemChanged(const mozzi::views::ProjectItem& item);

@@ -41,15 +41,22 @@ QString number(double v) {
 }  // namespace
 
 int parameterDecimals(const devices::ParameterSpec& spec) {
+  // Significant places after the leading digit of a magnitude: 0.05 -> 2 + 2 = 4.
+  const auto decimalsFor = [](double magnitude, int extra) {
+    return static_cast<int>(std::ceil(-std::log10(magnitude))) + extra;
+  };
+  int decimals = 2;
   double smallest = 0.0;
   for (double v : {spec.min.value_or(0.0), spec.max.value_or(0.0), asReal(spec.defaultValue, 0.0)}) {
     v = std::abs(v);
     if (v > 0.0 && (smallest == 0.0 || v < smallest)) smallest = v;
   }
-  if (smallest == 0.0) return 2;
-  // 0.05 -> 2 significant places after its first digit: 4 decimals; 200 -> 2.
-  const int leading = static_cast<int>(std::ceil(-std::log10(smallest)));
-  return std::clamp(leading + 2, 2, 9);
+  if (smallest > 0.0) decimals = std::max(decimals, decimalsFor(smallest, 2));
+  // A bounded range is resolved to a thousandth (a probability in [0, 1]: 3 decimals).
+  if (spec.min && spec.max && *spec.max > *spec.min) {
+    decimals = std::max(decimals, decimalsFor((*spec.max - *spec.min) / 100.0, 1));
+  }
+  return std::clamp(decimals, 2, 9);
 }
 
 ParameterForm::ParameterForm(QWidget* parent) : QWidget(parent) {
@@ -74,15 +81,17 @@ void ParameterForm::setSpecs(std::vector<devices::ParameterSpec> specs) {
     cellLayout->setSpacing(2);
     field.editor = makeEditor(spec);
     field.editor->setParent(cell);
+    // One width for every field, so the column reads as one.
+    if (spec.type != devices::ParameterType::Bool) field.editor->setMinimumWidth(fontMetrics().averageCharWidth() * 24);
     field.editor->setObjectName(QString::fromStdString(spec.key));
     field.problem = new QLabel(cell);
     field.problem->setObjectName(QString::fromStdString(spec.key) + QStringLiteral(".problem"));
-    field.problem->setWordWrap(true);
+    field.problem->setWordWrap(false);  // a wrapped label gets clipped in a form row
     QPalette palette = field.problem->palette();
     palette.setColor(QPalette::WindowText, QColor(200, 30, 45));
     field.problem->setPalette(palette);
     field.problem->hide();
-    cellLayout->addWidget(field.editor);
+    cellLayout->addWidget(field.editor, 0, Qt::AlignLeft);
     cellLayout->addWidget(field.problem);
     field.label = new QLabel(this);
     field.label->setBuddy(field.editor);

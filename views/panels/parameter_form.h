@@ -76,8 +76,9 @@ class ParameterForm : public QWidget {
   bool applying_ = false;
 };
 
-// The number of decimals a Real field shows: enough for the smallest non-zero
-// magnitude among its bounds and default, plus two (2..9).
+// The number of decimals a Real field shows (2..9): two significant places
+// past the smallest non-zero magnitude among its bounds and default, and at
+// least a thousandth of a bounded range.
 int parameterDecimals(const devices::ParameterSpec& spec);
 
 }  // namespace views

@@ -294,7 +294,7 @@ void MainWindowTest::aboutListsTheLinkedLibraryVersions() {
 void MainWindowTest::sceneRendersWithOpenGl() {
   auto* scene = window_->findChild<mozzi::views::SceneView*>();
   QVERIFY(scene);
-  window_->workArea()->setCurrentWidget(scene);
+  window_->workArea()->setCurrentPage(scene);
   QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
   const int before = scene->framesRendered();
   scene->render();
@@ -313,7 +313,7 @@ void MainWindowTest::importedGeometryIsDrawnInThe3dView() {
   const QString uff = QStringLiteral(MOZZI_SHARED_DATA_DIR "/uff/TestLab 161 164 18 15 82.uff");
   QVERIFY(window_->importUff(uff));
   auto* scene = window_->findChild<mozzi::views::SceneView*>();
-  QCOMPARE(window_->workArea()->currentWidget(), static_cast<QWidget*>(scene));
+  QCOMPARE(window_->workArea()->currentPage(), static_cast<QWidget*>(scene));
   QCOMPARE(scene->meshPointCount(), 36);
   QCOMPARE(scene->meshLineCount(), 30);
   QCOMPARE(scene->skippedLineCount(), 0);
@@ -356,7 +356,7 @@ void MainWindowTest::importedFrfsOpenAPlotTab() {
   const int tabsBefore = window_->workArea()->count();
   QVERIFY(window_->importUff(path));
   QCOMPARE(window_->workArea()->count(), tabsBefore + 1);
-  auto* plot = qobject_cast<mozzi::views::FrfPlot*>(window_->workArea()->currentWidget());
+  auto* plot = qobject_cast<mozzi::views::FrfPlot*>(window_->workArea()->currentPage());
   QVERIFY(plot);
   QCOMPARE(plot->pairCount(), 2);
   QCOMPARE(plot->shownSamples(), size_t(n));
@@ -393,13 +393,13 @@ void MainWindowTest::unreadableImportLeavesTheProjectUnchanged() {
 void MainWindowTest::modelVsTestOpensOneTabThatFollowsTheLanguage() {
   auto* view = qobject_cast<mozzi::views::ModelTestView*>(window_->openPage(QStringLiteral("model-vs-test")));
   QVERIFY(view);
-  QCOMPARE(window_->workArea()->currentWidget(), view);
+  QCOMPARE(window_->workArea()->currentPage(), view);
   const int tabs = window_->workArea()->count();
   window_->workArea()->setCurrentIndex(0);
   QCOMPARE(window_->openPage(QStringLiteral("model-vs-test")), view);
   QCOMPARE(window_->workArea()->count(), tabs);
-  QCOMPARE(window_->workArea()->currentWidget(), view);
-  const int index = window_->workArea()->indexOf(view);
+  QCOMPARE(window_->workArea()->currentPage(), view);
+  const int index = window_->workArea()->indexOfPage(view);
   QCOMPARE(window_->workArea()->tabText(index), QStringLiteral("Model vs Test"));
   QVERIFY(window_->setLanguage(QStringLiteral("it")));
   QCOMPARE(window_->workArea()->tabText(index), QCoreApplication::translate("Pages", "Model vs Test"));
@@ -420,7 +420,7 @@ void MainWindowTest::everyMenuPageOfTheTableHasAnActionThatOpensIt() {
     QVERIFY2(action, qPrintable(spec.id));
     QCOMPARE(action->text(), mozzi::views::PageRegistry::title(spec));
     action->trigger();
-    QWidget* page = window_->workArea()->currentWidget();
+    QWidget* page = window_->workArea()->currentPage();
     QVERIFY2(page, qPrintable(spec.id));
     QCOMPARE(window_->workArea()->specOf(page)->id, spec.id);
   }
@@ -453,7 +453,7 @@ void MainWindowTest::treeOpensItemsInTheirPages() {
   const int tabs = window_->workArea()->count();
   emit tree->itemActivated(tree->currentItem(), 0);
   QCOMPARE(window_->workArea()->count(), tabs + 1);
-  auto* plot = qobject_cast<mozzi::views::FrfPlot*>(window_->workArea()->currentWidget());
+  auto* plot = qobject_cast<mozzi::views::FrfPlot*>(window_->workArea()->currentPage());
   QVERIFY(plot);
   QCOMPARE(plot->shownSamples(), size_t(50));
   QCOMPARE(window_->workArea()->tabText(window_->workArea()->currentIndex()), QStringLiteral("FRF: fork roving"));

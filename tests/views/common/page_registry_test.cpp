@@ -7,6 +7,7 @@
 
 #include <QApplication>
 #include <QLabel>
+#include <QScrollArea>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTreeWidgetItemIterator>
@@ -134,15 +135,17 @@ class PageRegistryTest : public QObject {
     QVERIFY(a);
     QCOMPARE(tabs.specOf(a)->id, QStringLiteral("frf"));  // the default page of an FRF set
     QCOMPARE(tabs.itemOf(a), set0);
-    QCOMPARE(tabs.tabText(tabs.indexOf(a)), QStringLiteral("FRF: hammer run 1"));
+    QCOMPARE(tabs.tabText(tabs.indexOfPage(a)), QStringLiteral("FRF: hammer run 1"));
+    // Pages sit in scroll areas: a page cannot push the window past the screen.
+    QVERIFY(qobject_cast<QScrollArea*>(tabs.widget(tabs.indexOfPage(a))));
     QCOMPARE(tabs.openItem(set0), a);  // raised, not opened again
     QCOMPARE(tabs.count(), 1);
     QWidget* b = tabs.openItem(set1);
     QVERIFY(b && b != a);
-    QCOMPARE(tabs.tabText(tabs.indexOf(b)), QStringLiteral("FRF: hammer run 2"));
+    QCOMPARE(tabs.tabText(tabs.indexOfPage(b)), QStringLiteral("FRF: hammer run 2"));
     QWidget* c = tabs.openPage(QStringLiteral("bode"), set0);  // "Open in Bode"
     QVERIFY(c && c != a);
-    QCOMPARE(tabs.currentWidget(), c);
+    QCOMPARE(tabs.currentPage(), c);
     QCOMPARE(tabs.count(), 3);
     QCOMPARE(frf_.created, 2);
 
@@ -159,7 +162,7 @@ class PageRegistryTest : public QObject {
     QWidget* mesh = tabs.openItem({RecordKind::Specimen, specimen_, specimen_});
     QVERIFY(mesh);
     QCOMPARE(mesh_.shown.size(), 1);
-    QCOMPARE(tabs.tabText(tabs.indexOf(mesh)), QStringLiteral("Mesh"));
+    QCOMPARE(tabs.tabText(tabs.indexOfPage(mesh)), QStringLiteral("Mesh"));
     // It follows the tree's selection when it opens the selected item.
     tabs.followSelection({RecordKind::Specimen, 4242, 4242});
     QCOMPARE(mesh_.shown.size(), 2);
