@@ -34,10 +34,6 @@ bool isKind(const ProjectItem& item, std::initializer_list<RecordKind> kinds) {
   return false;
 }
 
-QString trPages(const char* text) {
-  return QCoreApplication::translate("Pages", text);
-}
-
 // --- 3-D view: the selected specimen's mesh ---------------------------------------
 // (views/scene owns the view; this is only its wiring to the project.)
 
@@ -52,13 +48,17 @@ void showSpecimenMesh(views::SceneView* scene, views::ProjectModel* model, qint6
   auto mesh = store->mesh(specimenId);
   if (!mesh) {
     scene->clearMesh();
-    if (log) log(trPages("Cannot show the mesh: %1").arg(QString::fromStdString(mesh.error().describe())));
+    if (log)
+      log(QCoreApplication::translate("Pages", "Cannot show the mesh: %1")
+              .arg(QString::fromStdString(mesh.error().describe())));
     return;
   }
   auto positions = core::geometry::globalNodePositions(*mesh);
   if (!positions) {
     scene->clearMesh();
-    if (log) log(trPages("Cannot place the mesh: %1").arg(QString::fromStdString(positions.error().describe())));
+    if (log)
+      log(QCoreApplication::translate("Pages", "Cannot place the mesh: %1")
+              .arg(QString::fromStdString(positions.error().describe())));
     return;
   }
   scene->showMesh(*mesh, *positions);
@@ -108,24 +108,24 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                           showSpecimenMesh(static_cast<views::SceneView*>(page), ctx.model, specimen, ctx.log);
                         }});
 
-  registry.add(PageSpec{
-      QStringLiteral("frf-plot"), QT_TRANSLATE_NOOP("Pages", "FRF"),
-      QT_TRANSLATE_NOOP("Pages", "Magnitude, phase and coherence of a stored FRF set"), QString(), PageMenu::None,
-      [](const ProjectItem& item) { return item.kind == RecordKind::FrfSet; },
-      [](const PageContext& ctx) -> QWidget* {
-        core::io::ProjectStore* store = ctx.model->store();
-        if (!store) return nullptr;
-        auto frf = store->frfSet(ctx.item.id);
-        if (!frf) {
-          if (ctx.log)
-            ctx.log(trPages("Could not read the FRF set: %1").arg(QString::fromStdString(frf.error().describe())));
-          return nullptr;
-        }
-        auto* plot = new views::FrfPlot(ctx.parent);
-        plot->setFrfs(std::make_shared<const core::FrfMatrix>(std::move(frf).value()));
-        return plot;
-      },
-      /*singleton=*/false, /*openAtStart=*/false, nullptr});
+  registry.add(PageSpec{QStringLiteral("frf-plot"), QT_TRANSLATE_NOOP("Pages", "FRF"),
+                        QT_TRANSLATE_NOOP("Pages", "Magnitude, phase and coherence of a stored FRF set"), QString(),
+                        PageMenu::None, [](const ProjectItem& item) { return item.kind == RecordKind::FrfSet; },
+                        [](const PageContext& ctx) -> QWidget* {
+                          core::io::ProjectStore* store = ctx.model->store();
+                          if (!store) return nullptr;
+                          auto frf = store->frfSet(ctx.item.id);
+                          if (!frf) {
+                            if (ctx.log)
+                              ctx.log(QCoreApplication::translate("Pages", "Could not read the FRF set: %1")
+                                          .arg(QString::fromStdString(frf.error().describe())));
+                            return nullptr;
+                          }
+                          auto* plot = new views::FrfPlot(ctx.parent);
+                          plot->setFrfs(std::make_shared<const core::FrfMatrix>(std::move(frf).value()));
+                          return plot;
+                        },
+                        /*singleton=*/false, /*openAtStart=*/false, nullptr});
 
   registry.add(PageSpec{
       QStringLiteral("model-vs-test"), QT_TRANSLATE_NOOP("Pages", "Model vs Test"),
@@ -136,7 +136,9 @@ void registerBuiltinPages(views::PageRegistry& registry) {
         view->setObjectName(QStringLiteral("modelTestTab"));
         const auto log = ctx.log;
         QObject::connect(view, &views::ModelTestView::finished, view, [view, log](bool ok) {
-          if (log) log(trPages("Model vs test: %1").arg(ok ? view->verdictText() : view->statusText()));
+          if (log)
+            log(QCoreApplication::translate("Pages", "Model vs test: %1")
+                    .arg(ok ? view->verdictText() : view->statusText()));
         });
         return view;
       },

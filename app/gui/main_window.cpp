@@ -551,10 +551,7 @@ bool MainWindow::importUff(const QString& path) {
 
 void MainWindow::onCheckIntegrity() {
   if (!model_->isOpen()) return;
-  // Re-opening read-only runs the same checks as opening (SQLite quick_check,
-  // application id, schema version) without disturbing the open session.
-  auto check = core::io::ProjectStore::open(model_->path().toStdString(), core::io::ProjectStore::OpenMode::ReadOnly);
-  if (!check) {
+  if (auto check = model_->checkIntegrity(); !check) {
     showError(tr("Check Project Integrity"), tr("The project failed its integrity check."), check.error());
     return;
   }

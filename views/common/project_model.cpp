@@ -59,6 +59,13 @@ QString ProjectModel::readOnlyReason() const {
   return store_ ? QString::fromStdString(store_->readOnlyReason()) : QString();
 }
 
+core::Result<void> ProjectModel::checkIntegrity() const {
+  if (!store_) return noProject();
+  auto check = core::io::ProjectStore::open(store_->path(), core::io::ProjectStore::OpenMode::ReadOnly);
+  if (!check) return check.error();
+  return {};
+}
+
 core::Result<core::io::ProjectSummary> ProjectModel::summary() const {
   if (!store_) return noProject();
   return store_->summary();

@@ -73,6 +73,11 @@ class ProjectModel : public QObject {
   core::Result<void> saveAs(const QString& path);
   void close();
 
+  // Runs the checks of opening (SQLite quick_check, application id, schema
+  // version) on the open project's file through a second, read-only
+  // connection, without disturbing this session.
+  core::Result<void> checkIntegrity() const;
+
   // Convenience reads (errors when no project is open).
   core::Result<core::io::ProjectSummary> summary() const;
   // A short display name for a record ("Frame A", "frf.uff"); empty if unknown.

@@ -230,6 +230,13 @@ class ProjectModelTest : public QObject {
     QVERIFY(handle->summary().ok());
   }
 
+  void integrityCheckOfTheOpenProject() {
+    QVERIFY(model_->checkIntegrity().ok());
+    QVERIFY(model_->addSpecimen(QStringLiteral("Frame B"), QStringLiteral("frame")).ok());  // still writable
+    ProjectModel closed;
+    QVERIFY(!closed.checkIntegrity().ok());
+  }
+
   void demoProjectOpens() {
     QVERIFY(model_->createDemo(path(QStringLiteral("demo%1.mozzi").arg(serial_))).ok());
     QVERIFY(model_->isOpen());
