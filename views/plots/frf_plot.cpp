@@ -141,6 +141,10 @@ void FrfPlot::retranslate() {
   }
   magnitude_->setAxisTitle(QwtPlot::yLeft, type.isEmpty() ? tr("Magnitude [dB]") : tr("|H| %1 [dB]").arg(type));
   phase_->setAxisTitle(QwtPlot::yLeft, tr("Phase [deg]"));
+  // Curve titles name the columns of an exported CSV.
+  magnitudeCurve_->setTitle(tr("magnitude"));
+  phaseCurve_->setTitle(tr("phase"));
+  coherenceCurve_->setTitle(tr("coherence"));
   coherence_->setAxisTitle(QwtPlot::yLeft, tr("Coherence"));
   coherence_->setAxisTitle(QwtPlot::xBottom, tr("Frequency [Hz]"));
 }

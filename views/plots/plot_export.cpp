@@ -57,8 +57,11 @@ QString plotCsv(const QwtPlot* plot) {
     const QwtPlotCurve* curve = curves[c];
     QString name = curve->title().text();
     if (name.isEmpty()) name = PlotExport::tr("curve %1").arg(c + 1);
-    header << csvField(name + QStringLiteral(": ") + plot->axisTitle(curve->xAxis()).text())
-           << csvField(name + QStringLiteral(": ") + plot->axisTitle(curve->yAxis()).text());
+    QString x = plot->axisTitle(curve->xAxis()).text();
+    QString y = plot->axisTitle(curve->yAxis()).text();
+    if (x.isEmpty()) x = QStringLiteral("x");  // an untitled axis still names its column
+    if (y.isEmpty()) y = QStringLiteral("y");
+    header << csvField(name + QStringLiteral(": ") + x) << csvField(name + QStringLiteral(": ") + y);
     rows = std::max(rows, curve->dataSize());
   }
   QString out;

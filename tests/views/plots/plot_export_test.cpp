@@ -137,6 +137,12 @@ class PlotExportTest : public QObject {
     QVERIFY2(error.contains(QStringLiteral("folder")), qPrintable(error));
     error = mozzi::views::exportPlot(plot_.get(), file(QStringLiteral("no/such/folder/plot.csv")));
     QVERIFY2(error.contains(QStringLiteral("Cannot write")), qPrintable(error));
+    // An untitled axis still names its columns.
+    QwtPlot bare;
+    auto* curve = new QwtPlotCurve;
+    curve->setSamples(QVector<QPointF>{{1.0, 2.0}});
+    curve->attach(&bare);
+    QCOMPARE(mozzi::views::plotCsv(&bare), QStringLiteral("curve 1: x,curve 1: y\n1,2\n"));
     QwtPlot empty;
     error = mozzi::views::exportPlot(&empty, file(QStringLiteral("empty.csv")));
     QVERIFY2(error.contains(QStringLiteral("no curve")), qPrintable(error));
