@@ -255,6 +255,11 @@ Result<void> ProjectStore::checkpoint() {
   return {};
 }
 
+Result<void> ProjectStore::setDurable(bool durable) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
+  return exec(db_, durable ? "PRAGMA synchronous = FULL" : "PRAGMA synchronous = OFF", path_);
+}
+
 Result<void> ProjectStore::deleteSpecimen(std::int64_t specimenId) {
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r.error();

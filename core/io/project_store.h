@@ -111,6 +111,10 @@ class ProjectStore {
   // WAL never reaches SQLite's auto-checkpoint size during a campaign, so no
   // commit pays for a checkpoint (docs/performance/project.md).
   Result<void> checkpoint();
+  // synchronous = FULL (the default: every commit fsync'd) or OFF (no fsync:
+  // a power cut may lose recent commits). OFF only while bulk-writing content
+  // that can be made again (the demo project's campaigns).
+  Result<void> setDurable(bool durable);
   SampleEncoding hitEncoding() const {
     const std::lock_guard<std::recursive_mutex> lock(*mutex_);
     return hitEncoding_;

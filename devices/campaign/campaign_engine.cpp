@@ -556,7 +556,7 @@ void CampaignEngine::decide(bool accept, const std::string& extraReason) {
   }
   // Idle time between hits: copy the WAL into the database so that no commit
   // pays for SQLite's auto-checkpoint (docs/performance/project.md).
-  (void)store_.checkpoint();
+  if (options_.checkpointBetweenHits) (void)store_.checkpoint();
   publishProgress();
   if (loaded_.schedule.point(ev.position).done) {
     setState(EngineState::PointDone, "point " + core::formatDof(ev.point) + " done");

@@ -142,6 +142,9 @@ struct EngineOptions {
   // With autoArm: after this many rejected hits in a row at one point the
   // engine stops arming and reports it (the set-up needs a look), 0 = never.
   int maxConsecutiveRejections = 20;
+  // Passive WAL checkpoint after each decided hit (so that no commit pays
+  // for SQLite's auto-checkpoint); off for bulk runs (the demo project).
+  bool checkpointBetweenHits = true;
 };
 
 class CampaignEngine {

@@ -11,8 +11,8 @@ namespace mozzi::devices::campaign {
 
 const std::vector<DemoCampaign>& demoCampaigns() {
   static const std::vector<DemoCampaign> kCampaigns = {
-      {"fork-a-with-wheel", "Fork A (enduro) with wheel", 41, 3},
-      {"frame-a-front-constrained", "Frame A", 26, 3},
+      {"fork-a-with-wheel", "Fork A (enduro) with wheel", 41, 2, 2048.0},
+      {"frame-a-front-constrained", "Frame A", 26, 2, 2048.0},
   };
   return kCampaigns;
 }
@@ -41,6 +41,13 @@ class ErrorCatcher final : public CampaignObserver {
 core::Result<void> addDemoCampaigns(core::io::ProjectStore& store) {
   auto summary = store.summary();
   if (!summary) return summary.error();
+  // Reproducible content: no fsync per hit while it is written (a crash
+  // leaves an incomplete demo, made again), then durable as every project.
+  if (auto r = store.setDurable(false); !r) return r;
+  struct Durable {
+    core::io::ProjectStore& s;
+    ~Durable() { (void)s.setDurable(true); }
+  } durable{store};
   for (const auto& demo : demoCampaigns()) {
     const std::string where = "demo campaign on " + demo.specimenKey;
     std::optional<std::int64_t> specimen;
@@ -52,6 +59,7 @@ core::Result<void> addDemoCampaigns(core::io::ProjectStore& store) {
     VirtualCampaignOptions o;
     o.hitsPerPoint = demo.hitsPerPoint;
     o.seed = demo.seed;
+    o.sampleRateHz = demo.sampleRateHz;
     auto def = virtualSpecimenCampaign(demo.specimenKey, o);
     if (!def) return def.error();
     auto id = createCampaign(store, *specimen, demo.specimenKey + " hammer 1", *def,
@@ -61,6 +69,7 @@ core::Result<void> addDemoCampaigns(core::io::ProjectStore& store) {
     eo.autoDecide = true;
     eo.autoArm = true;
     eo.deviceOverrides["sim.realtime"] = false;
+    eo.checkpointBetweenHits = false;
     auto engine = CampaignEngine::open(store, *id, makeDriverStation(builtinDrivers(), def->driver), eo);
     if (!engine) return engine.error();
     ErrorCatcher errors;

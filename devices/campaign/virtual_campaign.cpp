@@ -168,7 +168,9 @@ core::Result<CampaignDefinition> virtualSpecimenCampaign(const std::string& key,
   }
   d.deviceParameters["specimen"] = key;
   d.deviceParameters["hammer.peak_force"] = o.peakForceN;
-  d.deviceParameters["hammer.interval_s"] = o.recordSeconds + 1.0;  // quiet time before each hit >= the pre-trigger
+  // One hit per session: the quiet time before it, max(0.25 s, 15% of the
+  // interval), holds the 10% pre-trigger; 0.4 s after the record is spare.
+  d.deviceParameters["hammer.interval_s"] = o.recordSeconds + 0.4;
   d.deviceParameters["fault.double_hit_probability"] = o.doubleHitProbability;
   d.deviceParameters["fault.overload_probability"] = o.overloadProbability;
   if (auto v = d.validate(); !v) return v.error();
