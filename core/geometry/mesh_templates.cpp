@@ -83,7 +83,7 @@ MeshTemplate plate3() {
             "thesis §1.2 eq. 3-4, §1.4 eq. 9, Figures 3 and 5",
             std::string(kPlateNotes) +
                 "Nodes 1, 2, 3 are L1, L2, L3 (A1, A2, A3 of eq. 9 for the accelerometers); x0 = 0.20 m and z0 = "
-                "0.15 m are assumed (not printed). Point 3 is the origin.");
+                "0.15 m are assumed (not printed), so the layout is approximate. Point 3 is the origin.");
   b.node(1, 0.20, 0.0, -0.15).node(2, 0.0, 0.0, -0.15).node(3, 0.0, 0.0, 0.0);
   b.lines({1, 2, 3, 1}).face(1, 2, 3);
   b.group("sensors", {1, 2, 3});
@@ -99,7 +99,7 @@ MeshTemplate plate4() {
             std::string(kPlateNotes) +
                 "Nodes 1-4 are the four lasers at (x, z) = (-0.10, -0.075), (0.10, -0.075), (0.10, 0.075), (-0.10, "
                 "0.075) m around the load point at the origin, the layout of the simulated Motostiffmeter; the "
-                "thesis prints no plate dimensions.");
+                "thesis prints no plate dimensions, so the layout is approximate.");
   b.node(1, -0.10, 0.0, -0.075).node(2, 0.10, 0.0, -0.075).node(3, 0.10, 0.0, 0.075).node(4, -0.10, 0.0, 0.075);
   b.lines({1, 2, 3, 4, 1}).face(1, 2, 3, 4);
   b.group("sensors", {1, 2, 3, 4});
@@ -364,7 +364,8 @@ MeshTemplate tyre6() {
   Builder b("tyre-6", "Tyre, 6 points on the belt", "thesis §5.2, §5.3, Figures 37, 38",
             "Axes: x up, y forward, z = x cross y along the wheel axle (lateral); origin at the wheel centre. 6 points "
             "equidistant on the belt, 60 degrees apart, node 100 the lowest point (the accelerometer of §5.2) and "
-            "101-105 going forward and up. Radius 0.30 m, a typical 17-inch tyre; the ring modes y = y0 cos(k phi) "
+            "101-105 going forward and up. Radius 0.30 m, a typical 17-inch tyre (approximate); the ring modes y = y0 "
+            "cos(k phi) "
             "(eq. 42) depend on the angle only, so the template serves every tyre of the catalogue. The rim is "
             "fixed to the rig; the belt's lateral DOFs are measured.");
   const double r = 0.30;
