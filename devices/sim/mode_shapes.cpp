@@ -328,9 +328,11 @@ Layout bicycleLayout(const SpecimenEntry& e, const core::geometry::MeshTemplate&
       };
       what = "second bending: rear hub against the crank set, fork and head still";
     } else {
+      // The rear triangle sways: the seat tube most at the top, the stays
+      // (and the hub where they meet) with it, the front still.
       f = [isFork](const Vector3& p, int label) -> Vector3 {
         if (isFork(label) || p.y() >= 0.6) return Vector3::Zero();
-        return unitZ() * std::sin(kPi * (p.x() + 0.07) / 1.2) * (1.0 - p.y() / 0.6);
+        return unitZ() * (0.5 + 0.5 * std::sin(kPi * (p.x() + 0.07) / 1.2)) * (1.0 - p.y() / 0.6);
       };
       what = "seat tube and rear triangle (stays) lateral";
     }

@@ -17,6 +17,10 @@ constexpr double kPi = 3.14159265358979323846;
 // looks at, they give every DOF of the mesh a physical response.
 constexpr double kCompletionFrequencyFactor = 2.5;
 constexpr double kCompletionZeta = 0.05;
+// Their modal mass is 10 times the tabulated modes' (they stand for stiffer,
+// heavier higher modes; an accelerance grows with w^2, and they must not
+// dominate the accelerometers' range at the driving point).
+constexpr double kCompletionMassFactor = 10.0;
 }  // namespace
 
 core::Result<DofRow> ModalSpecimen::findDof(const core::Dof& dof) const {
@@ -151,20 +155,27 @@ core::Result<ModalSpecimen> modalSpecimen(const std::string& key) {
   }
   const core::Matrix& v = spatial->shapes;
   const Eigen::Index drive = spatial->drivingDof;
+  const Eigen::Index nTab = static_cast<Eigen::Index>(e->modes.size());
   core::Vector modalMass(n);
   if (e->statics) {
-    // Equal modal masses with sum_r v_er^2 / (m w_r^2) = 1 / k_lat.
+    // Equal modal masses m (10 m for the completion modes) with
+    // sum_r v_er^2 / (m_r w_r^2) = 1 / k_lat.
     double s = 0.0;
     for (Eigen::Index r = 0; r < n; ++r) {
       const double w = 2.0 * kPi * m.frequencyHz[static_cast<std::size_t>(r)];
-      s += v(drive, r) * v(drive, r) / (w * w);
+      s += v(drive, r) * v(drive, r) / (w * w) / (r < nTab ? 1.0 : kCompletionMassFactor);
     }
-    modalMass.setConstant(e->statics->lateralStiffness * s);
-  } else {
-    const double fallback = e->modalMass.empty() ? 1.0 : e->modalMass.back();
     for (Eigen::Index r = 0; r < n; ++r)
-      modalMass(r) =
-          r < static_cast<Eigen::Index>(e->modalMass.size()) ? e->modalMass[static_cast<std::size_t>(r)] : fallback;
+      modalMass(r) = e->statics->lateralStiffness * s * (r < nTab ? 1.0 : kCompletionMassFactor);
+  } else {
+    double largest = 0.0;
+    for (Eigen::Index r = 0; r < nTab; ++r) {
+      modalMass(r) = r < static_cast<Eigen::Index>(e->modalMass.size())
+                         ? e->modalMass[static_cast<std::size_t>(r)]
+                         : (e->modalMass.empty() ? 1.0 : e->modalMass.back());
+      largest = std::max(largest, modalMass(r));
+    }
+    for (Eigen::Index r = nTab; r < n; ++r) modalMass(r) = kCompletionMassFactor * largest;
   }
   m.shapes.resize(v.rows(), n);
   for (Eigen::Index r = 0; r < n; ++r) m.shapes.col(r) = v.col(r) / std::sqrt(modalMass(r));

@@ -5,6 +5,7 @@
 // trigger and averaged into H1 accelerances, gives the analytic accelerance
 // -w^2 sum_r phi_ir phi_jr / (w_r^2 - w^2 + 2 i zeta_r w_r w) of the modal
 // model (thesis eq. 21) at every line where it is not near an antiresonance.
+#include <algorithm>
 #include <cstdio>
 
 #include "devices_campaign.h"
@@ -25,23 +26,28 @@ struct SpatialHit {
 void checkAgainstModel(const SpatialHit& c) {
   SCOPED_TRACE(c.specimen);
   const auto spec = sim::modalSpecimen(c.specimen).value();
-  const double fs = 1024.0, recordS = 8.0, interval = 9.0;
+  const double fs = 4096.0, recordS = 4.0, interval = 5.0;
   const int hits = 4;
   const auto drive = spec.findDof(c.hammerPoint).value();
-  // Accelerometer range from the impulse-response bound (see
-  // devices_specimen_modal_test.cpp): a 1 ms half-sine of 200 N.
-  const double impulse = 2.0 * 200.0 * 1e-3 / kPi;
-  double peak = 0.0;
+  // Accelerometer ranges from a bound on the peak acceleration of a 1 ms
+  // half-sine of 200 N (+10% for the hand): the mass line during the contact,
+  // F sum_r |phi_er phi_jr|, plus the ringing after it, I sum_r |phi_er
+  // phi_jr| w_r with the impulse I = 2 F T / pi.
+  const double force = 1.1 * 200.0;
+  const double impulse = 2.0 * force * 1e-3 / kPi;
+  std::vector<double> peaks;
   std::vector<sim::DofRow> rows;
   std::string labels;
   for (const char* r : c.responses) {
     rows.push_back(spec.findDof(r).value());
     labels += (labels.empty() ? "" : ",") + std::string(r);
-    double a = 0.0;
-    for (Eigen::Index q = 0; q < spec.shapes.cols(); ++q)
-      a += std::abs(spec.shapes(drive.row, q) * spec.shapes(rows.back().row, q)) * 2 * kPi *
-           spec.frequencyHz[static_cast<std::size_t>(q)];
-    peak = std::max(peak, impulse * a);
+    double a = 0.0, mass = 0.0;
+    for (Eigen::Index q = 0; q < spec.shapes.cols(); ++q) {
+      const double pp = std::abs(spec.shapes(drive.row, q) * spec.shapes(rows.back().row, q));
+      a += pp * 2 * kPi * spec.frequencyHz[static_cast<std::size_t>(q)];
+      mass += pp;
+    }
+    peaks.push_back(force * mass + impulse * a);
   }
   AcquisitionConfig cfg;
   cfg.sampleRateHz = fs;
@@ -57,7 +63,7 @@ void checkAgainstModel(const SpatialHit& c) {
     ChannelConfig a;
     a.input = static_cast<int>(i + 1);
     a.name = std::string("acc ") + c.responses[i];
-    a.rangeCode = testing::rangeFor(peak * 0.010);
+    a.rangeCode = testing::rangeFor(peaks[i] * 0.010);  // each accelerometer on its own range
     a.transducer =
         core::signal::Transducer{core::signal::TransducerKind::Acceleration, "PCB M352C65", "", 10.0, "m/s^2", true};
     a.dof = core::parseDof(c.responses[i]).value();
@@ -107,41 +113,48 @@ void checkAgainstModel(const SpatialHit& c) {
       if (frf.frequencyHz(k) >= c.bandLowHz && frf.frequencyHz(k) <= c.bandHighHz)
         top = std::max(top, std::abs(model[static_cast<std::size_t>(k)]));
     }
+    ASSERT_GT(top, 0.0) << c.responses[o] << ": no mode couples it to the hammer point";
+    // Per line, the H1 magnitude's normalised random error (Bendat & Piersol):
+    // eps = sqrt(1 - g^2) / (|g| sqrt(2 n)), g^2 the coherence, n the hits.
+    // Every line where the model is at least 5% of its in-band peak (away
+    // from antiresonances) must be within 5 eps + 0.5% of it (5 eps: one in
+    // 10^6 lines of Gaussian error; 0.5%: quantisation and the anti-aliasing
+    // filter's 1e-4 ripple in band), and the median error within 1%.
+    std::vector<double> errors;
     double worst = 0.0, worstHz = 0.0;
-    int lines = 0;
     for (Eigen::Index k = 0; k < frf.lineCount(); ++k) {
       const double hz = frf.frequencyHz(k);
       const auto& m = model[static_cast<std::size_t>(k)];
-      // Lines within the band where the model is at least 5% of its in-band
-      // peak: away from antiresonances, where H1 is noise over nothing.
       if (hz < c.bandLowHz || hz > c.bandHighHz || std::abs(m) < 0.05 * top) continue;
       const double e = std::abs(frf.h[0](k, static_cast<Eigen::Index>(o)) - m) / std::abs(m);
-      ++lines;
+      const double g2 = frf.coherence[0](k, static_cast<Eigen::Index>(o));
+      const double eps = std::sqrt(std::max(0.0, 1.0 - g2)) / (std::sqrt(g2) * std::sqrt(2.0 * hits));
+      EXPECT_LT(e, 5.0 * eps + 0.005) << c.responses[o] << " at " << hz << " Hz, coherence " << g2;
+      errors.push_back(e);
       if (e > worst) {
         worst = e;
         worstHz = hz;
       }
     }
-    std::printf("%-28s hit %-7s response %-7s: %4d lines, worst |H1 - H| / |H| = %.4f at %.2f Hz\n", c.specimen,
-                c.hammerPoint, c.responses[o], lines, worst, worstHz);
-    EXPECT_GT(lines, 50);
-    // 2%: the response noise (0.002 m/s^2 RMS) and the 16-bit quantisation
-    // over 4 hits, where the model is down to 5% of its peak; the 8 s records
-    // leave the slowest mode at e^-15 (no leakage to speak of).
-    EXPECT_LT(worst, 0.02) << c.responses[o] << " at " << worstHz << " Hz";
+    ASSERT_GT(errors.size(), 20u);
+    std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(errors.size() / 2), errors.end());
+    const double median = errors[errors.size() / 2];
+    std::printf("%-26s hit %-6s response %-6s: %4zu lines, median |H1 - H| / |H| %.4f, worst %.4f at %.2f Hz\n",
+                c.specimen, c.hammerPoint, c.responses[o], errors.size(), median, worst, worstHz);
+    EXPECT_LT(median, 0.01) << c.responses[o];
   }
 }
 
 TEST(DevicesHammerSpatial, HitAtAnyDofGivesTheModelFrf) {
   // Fork A with wheel (Table 11 right): the hammer on the rim at 135 degrees
-  // (behind and above the axle), accelerometers on a fork foot, a leg (y), the
-  // rim and the steering stem (x, seen through the completion modes only).
-  checkAgainstModel({"fork-a-with-wheel", "14:+Z", {"9:+Z", "5:-Y", "16:+Z", "2:+X"}, 15.0, 100.0});
+  // (above the axle, in front), accelerometers on a fork foot, a leg (y,
+  // negative), the rim laterally and the rim in x.
+  checkAgainstModel({"fork-a-with-wheel", "14:+Z", {"9:+Z", "7:-Z", "16:+Z", "13:+X"}, 15.0, 100.0});
   // Steel bicycle (Table 18): hammer on the top tube, accelerometers on the
-  // rear hub, a fork tip and the seat cluster.
-  checkAgainstModel({"bicycle-steel", "5:+Z", {"100:+Z", "16:+Z", "4:+Z", "6:+Y"}, 8.0, 80.0});
+  // rear hub, a fork tip, the seat cluster and a fork blade (y).
+  checkAgainstModel({"bicycle-steel", "5:+Z", {"100:+Z", "16:+Z", "4:+Z", "2:-Z"}, 8.0, 80.0});
   // Frame B rear-constrained: the hammer on the tail, lateral.
-  checkAgainstModel({"frame-b-rear-constrained", "24:+Z", {"2:+Z", "11:+Z", "26:+X"}, 25.0, 130.0});
+  checkAgainstModel({"frame-b-rear-constrained", "24:+Z", {"2:+Z", "11:+Z", "25:+X"}, 25.0, 130.0});
 }
 
 // Unknown DOF labels fail configure() naming the label and the specimen.
