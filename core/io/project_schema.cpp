@@ -342,39 +342,53 @@ CREATE TABLE gap_finding (
 CREATE INDEX gap_finding_analysis ON gap_finding(analysis_id);
 )sql";
 
+// Rig and tyre tests run step by step (issue 20, devices/rigtests): a test is
+// 'running' while its steps are committed one transaction each, then
+// 'complete', 'interrupted' (unplug, cancel, crash: the committed steps stay)
+// or 'failed', with a note saying what is missing; a result may belong to one
+// step (NULL: the whole test); tyre tests keep their raw records like rig tests.
+const char* const kRigTestSteps = R"sql(
+ALTER TABLE rig_test ADD COLUMN status TEXT NOT NULL DEFAULT 'complete'
+  CHECK (status IN ('running', 'complete', 'interrupted', 'failed'));
+ALTER TABLE rig_test ADD COLUMN status_note TEXT NOT NULL DEFAULT '';
+ALTER TABLE rig_test_result ADD COLUMN step INTEGER CHECK (step IS NULL OR step >= 0);
+ALTER TABLE tyre_test ADD COLUMN status TEXT NOT NULL DEFAULT 'complete'
+  CHECK (status IN ('running', 'complete', 'interrupted', 'failed'));
+ALTER TABLE tyre_test ADD COLUMN status_note TEXT NOT NULL DEFAULT '';
+ALTER TABLE tyre_test ADD COLUMN parameters_json TEXT NOT NULL DEFAULT '{}';
+ALTER TABLE tyre_parameter ADD COLUMN step INTEGER CHECK (step IS NULL OR step >= 0);
+
+CREATE TABLE tyre_test_record (
+  id             INTEGER PRIMARY KEY,
+  tyre_test_id   INTEGER NOT NULL REFERENCES tyre_test(id) ON DELETE CASCADE,
+  step           INTEGER NOT NULL CHECK (step >= 0),
+  sample_rate_hz REAL NOT NULL CHECK (sample_rate_hz > 0),
+  channel_count  INTEGER NOT NULL CHECK (channel_count > 0),
+  sample_count   INTEGER NOT NULL CHECK (sample_count > 0),
+  encoding       INTEGER NOT NULL CHECK (encoding IN (0, 1)),
+  samples        BLOB NOT NULL,
+  samples_crc32  INTEGER NOT NULL,
+  UNIQUE (tyre_test_id, step)
+) STRICT;
+)sql";
+
 }  // namespace
 
 const std::vector<const char*>& projectMigrations() {
-  static const std::vector<const char*> migrations{kSchema1};
+  static const std::vector<const char*> migrations{kSchema1, kRigTestSteps};
   return migrations;
 }
 
 const std::vector<const char*>& projectDataTables() {
-  static const std::vector<const char*> tables{"specimen",
-                                               "coordinate_system",
-                                               "mesh_node",
-                                               "mesh_line",
-                                               "mesh_face",
-                                               "rig_setup",
-                                               "transducer",
-                                               "campaign",
-                                               "hit",
-                                               "hit_channel",
-                                               "frf_set",
-                                               "frf",
-                                               "frf_hit",
-                                               "modal_result",
-                                               "mode",
-                                               "mode_shape",
-                                               "rig_test",
-                                               "rig_test_record",
-                                               "rig_test_result",
-                                               "tyre_test",
-                                               "tyre_test_point",
-                                               "tyre_parameter",
-                                               "model",
-                                               "analysis",
-                                               "gap_finding"};
+  static const std::vector<const char*> tables{"specimen",        "coordinate_system", "mesh_node",
+                                               "mesh_line",       "mesh_face",         "rig_setup",
+                                               "transducer",      "campaign",          "hit",
+                                               "hit_channel",     "frf_set",           "frf",
+                                               "frf_hit",         "modal_result",      "mode",
+                                               "mode_shape",      "rig_test",          "rig_test_record",
+                                               "rig_test_result", "tyre_test",         "tyre_test_point",
+                                               "tyre_parameter",  "tyre_test_record",  "model",
+                                               "analysis",        "gap_finding"};
   return tables;
 }
 

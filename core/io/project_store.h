@@ -27,6 +27,11 @@ namespace mozzi::core::io {
 
 inline constexpr std::int32_t kProjectApplicationId = 0x4D4F5A5A;  // "MOZZ"
 
+// "running", "complete", "interrupted", "failed" (the schema's words).
+const char* testStatusName(TestStatus status);
+// The status of a name; Failed for a word the schema does not know.
+TestStatus parseTestStatus(const std::string& name);
+
 struct ProjectSummary {
   int schemaVersion = 0;
   std::string createdUtc;
@@ -120,6 +125,29 @@ class ProjectStore {
   Result<std::int64_t> addTyreTest(const StoredTyreTest& test);
   Result<StoredTyreTest> tyreTest(std::int64_t tyreTestId) const;
 
+  // Tests run step by step (devices/rigtests; project_tests.cpp). The test is
+  // added with status Running; each step commits its raw record and its
+  // results in one transaction (a crash loses at most the step in flight); the
+  // end sets the final status, the note and the whole-test results in one more.
+  // A step may also set the status note (what a crash right after it would
+  // leave missing); an empty `runningNote` leaves the note as it is.
+  Result<void> commitRigTestStep(std::int64_t rigTestId, int step, double sampleRateHz, const Eigen::MatrixXf& samples,
+                                 const std::vector<StoredRigTest::Result>& results,
+                                 const std::string& runningNote = {});
+  Result<void> finishRigTest(std::int64_t rigTestId, TestStatus status, const std::string& note,
+                             const std::vector<StoredRigTest::Result>& results);
+  Result<std::vector<TestInfo>> rigTests() const;
+  // A step of a tyre test: its record (none when `samples` is empty), the
+  // measured points it adds and the parameters identified from it.
+  Result<void> commitTyreTestStep(std::int64_t tyreTestId, int step, double sampleRateHz,
+                                  const Eigen::MatrixXf& samples, const std::vector<StoredTyreTest::Point>& points,
+                                  const std::vector<StoredTyreTest::Parameter>& parameters,
+                                  const std::string& runningNote = {});
+  Result<void> finishTyreTest(std::int64_t tyreTestId, TestStatus status, const std::string& note,
+                              const std::vector<StoredTyreTest::Parameter>& parameters);
+  Result<Eigen::MatrixXf> tyreTestRecord(std::int64_t tyreTestId, int step, double* sampleRateHz = nullptr) const;
+  Result<std::vector<TestInfo>> tyreTests() const;
+
   Result<std::int64_t> addModel(const StoredModel& model);
   Result<std::int64_t> addAnalysis(const StoredAnalysis& analysis);
   Result<StoredAnalysis> analysis(std::int64_t analysisId) const;
@@ -137,6 +165,13 @@ class ProjectStore {
   ProjectStore() = default;
   void close();
   Result<void> requireWritable() const;
+  // Inside an open transaction: a rig test's results, a tyre test's points
+  // (indices from firstPoint) and parameters.
+  Result<void> insertRigResults(std::int64_t rigTestId, const std::vector<StoredRigTest::Result>& results,
+                                const std::string& where);
+  Result<void> insertTyreData(std::int64_t tyreTestId, std::int64_t firstPoint,
+                              const std::vector<StoredTyreTest::Point>& points,
+                              const std::vector<StoredTyreTest::Parameter>& parameters, const std::string& where);
 
   SampleEncoding hitEncoding_ = SampleEncoding::Raw;
 

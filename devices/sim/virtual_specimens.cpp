@@ -1,6 +1,7 @@
 #include "devices/sim/virtual_specimens.h"
 
 #include "core/io/project_store.h"
+#include "devices/rigtests/virtual_rigs.h"
 
 namespace mozzi::devices::sim {
 
@@ -41,6 +42,8 @@ core::Result<void> createDemoProject(const std::string& path, const std::string&
     auto id = store->addSpecimen(specimen.name, specimen.kind, "virtual specimen; parameters from " + specimen.source);
     if (!id) return id.error();
   }
+  // Static and dynamic stiffness tests, relaxation and steady-state tyre tests.
+  if (auto r = rigtests::addDemoRigTests(*store); !r) return r.error();
   return {};
 }
 
