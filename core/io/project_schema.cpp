@@ -380,15 +380,32 @@ const std::vector<const char*>& projectMigrations() {
 }
 
 const std::vector<const char*>& projectDataTables() {
-  static const std::vector<const char*> tables{"specimen",        "coordinate_system", "mesh_node",
-                                               "mesh_line",       "mesh_face",         "rig_setup",
-                                               "transducer",      "campaign",          "hit",
-                                               "hit_channel",     "frf_set",           "frf",
-                                               "frf_hit",         "modal_result",      "mode",
-                                               "mode_shape",      "rig_test",          "rig_test_record",
-                                               "rig_test_result", "tyre_test",         "tyre_test_point",
-                                               "tyre_parameter",  "tyre_test_record",  "model",
-                                               "analysis",        "gap_finding"};
+  static const std::vector<const char*> tables{"specimen",
+                                               "coordinate_system",
+                                               "mesh_node",
+                                               "mesh_line",
+                                               "mesh_face",
+                                               "rig_setup",
+                                               "transducer",
+                                               "campaign",
+                                               "hit",
+                                               "hit_channel",
+                                               "frf_set",
+                                               "frf",
+                                               "frf_hit",
+                                               "modal_result",
+                                               "mode",
+                                               "mode_shape",
+                                               "rig_test",
+                                               "rig_test_record",
+                                               "rig_test_result",
+                                               "tyre_test",
+                                               "tyre_test_point",
+                                               "tyre_parameter",
+                                               "model",
+                                               "analysis",
+                                               "gap_finding",
+                                               "tyre_test_record"};
   return tables;
 }
 
