@@ -1,5 +1,6 @@
 #include "devices/rigtests/session.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <variant>
@@ -111,7 +112,15 @@ core::Result<SessionData> runSession(Device& daq, Device* actuator, const Sessio
   if (actuator && plan.actuatorConfig) {
     if (auto r = openAndConfigure(*actuator, *plan.actuatorConfig, nullptr); !r) return r.error();
   }
-  if (auto r = openAndConfigure(daq, plan.daqConfig, nullptr); !r) return r.error();
+  // A simulated rig re-seeds its noise at each configuration: give every step
+  // its own seed (seed * 1009 + step), so the steps' noise is independent as on
+  // a real rig, and the whole test still repeats bit for bit with the seed.
+  AcquisitionConfig daqConfig = plan.daqConfig;
+  if (auto it = daqConfig.parameters.find("sim.seed"); it != daqConfig.parameters.end() && plan.step > 0)
+    if (const auto* seed = std::get_if<std::int64_t>(&it->second))
+      it->second = static_cast<std::int64_t>(
+          (static_cast<std::uint64_t>(*seed) * 1009u + static_cast<std::uint64_t>(plan.step)) % 4294967296u);
+  if (auto r = openAndConfigure(daq, daqConfig, nullptr); !r) return r.error();
   // The actuator first: its output (the set-point) runs before the DAQ records.
   const bool useActuator = actuator && plan.actuatorConfig;
   if (useActuator) {

@@ -48,7 +48,7 @@ struct SessionHooks {
 struct SessionPlan {
   AcquisitionConfig daqConfig;                      // validated by the caller
   std::optional<AcquisitionConfig> actuatorConfig;  // when an actuator device is used
-  int step = 0;
+  int step = 0;  // also varies a simulated rig's "sim.seed" per step (seed * 1009 + step)
   std::string stepLabel;
   // A session that delivers no event for this long is stopped and ends as a
   // timeout (drivers end stalled streams themselves; this is the backstop).

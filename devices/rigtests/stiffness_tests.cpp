@@ -325,7 +325,8 @@ core::Result<StaticOutcome> runStaticStiffnessTest(Device& daq, Device* actuator
   planJson["peak_force_n"] = settings.peakForceN;
   planJson["period_s"] = settings.periodS;
   planJson["sample_rate_hz"] = setup.sampleRateHz;
-  planJson["steps"] = nlohmann::json::array({{{"label", plan.stepLabel}}});
+  planJson["steps"] = nlohmann::json::array();
+  planJson["steps"].push_back({{"label", plan.stepLabel}});
   auto stored = storeStart(target, setup, daq, actuator, false, planJson, plan.daqConfig.parameters);
   if (!stored) return stored.error();
 

@@ -598,6 +598,14 @@ core::Result<SteadyStateOutcome> runSteadyStateTest(Device& daq, const TyreRigSe
       core::tire::MfLateralCoefficients lv;
       std::copy(lat->value.begin(), lat->value.end(), lv.begin());
       auto al = core::tire::fitMfAligning(data, c, lv, aopt);
+      if (!al) {
+        // The residual torque's shape (qBz9, qBz10) and the curvature's
+        // asymmetry (qEz4) are not seen when the residual torque is nil: hold
+        // them and fit again, saying so.
+        aopt.fixed.insert({"qBz9", "qBz10", "qEz4"});
+        al = core::tire::fitMfAligning(data, c, lv, aopt);
+        if (al) addNote("Magic Formula M_z: qBz9, qBz10, qEz4 held (the data do not separate them)");
+      }
       if (al) {
         out.aligning = *al;
         const auto& an = core::tire::mfAligningNames();

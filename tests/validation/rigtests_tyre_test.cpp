@@ -8,6 +8,8 @@
 // C = 13 F_z, camber 0.9 F_z), not from the sequence.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "devices/rigtests/tyre_tests.h"
@@ -95,6 +97,16 @@ TEST(RigTestsTyreValidation, CorneringAndCamberStiffnessWithinOnePercent) {
     std::printf("  Magic Formula: K %.0f N/rad, pVy3 F_z %.1f N/rad, rms %.2f N\n", k,
                 mf("pVy3") * setup->verticalLoadN, out->lateral->rmsResidual);
     EXPECT_NEAR(k / tyre.corneringStiffness, 1.0, 0.01) << c.tyre;
+    // The simulator's Magic Formula shape is the neutral set of
+    // core/tire/magic_formula.h (pCy1 1.3, pDy1 1, pEy1 -0.5): the sweeps to
+    // +/-6 deg (B alpha up to 1.05) give them back within 2% / 1% / 5%.
+    const auto defaults = core::tire::mfLateralDefaults();
+    auto def = [&](const char* n) {
+      return defaults[static_cast<std::size_t>(std::find(names.begin(), names.end(), n) - names.begin())];
+    };
+    EXPECT_NEAR(mf("pCy1") / def("pCy1"), 1.0, 0.02) << c.tyre;
+    EXPECT_NEAR(mf("pDy1") / def("pDy1"), 1.0, 0.01) << c.tyre;
+    EXPECT_NEAR(mf("pEy1") / def("pEy1"), 1.0, 0.05) << c.tyre;
     EXPECT_NEAR(mf("pVy3") * setup->verticalLoadN / tyre.camberStiffness, 1.0, 0.01) << c.tyre;
   }
 }

@@ -146,7 +146,7 @@ TEST_F(TyreSequence, SteadyStateStoresOnePointPerSetPoint) {
   ASSERT_TRUE(t.ok());
   EXPECT_EQ(t->kind, "steady-state");
   EXPECT_EQ(t->points.size(), 12u);
-  EXPECT_NEAR(t->points[6].camberRad, -20 * 3.14159265358979323846 / 180, 1e-12);
+  EXPECT_NEAR(t->points[7].camberRad, -20 * 3.14159265358979323846 / 180, 1e-12);
   EXPECT_NEAR(t->verticalLoadN, 1500.0, 1e-9);
   for (int k = 0; k < 12; ++k) EXPECT_TRUE(store_->tyreTestRecord(*out->testId, k).ok()) << k;
 }
