@@ -294,4 +294,9 @@ Result<void> ProjectStore::saveAs(const std::string& path) const {
   return {};
 }
 
+Result<void> ProjectStore::setPowerLossDurable(bool durable) {
+  if (auto r = requireWritable(); !r) return r.error();
+  return exec(db_, durable ? "PRAGMA synchronous = FULL;" : "PRAGMA synchronous = NORMAL;", path_);
+}
+
 }  // namespace mozzi::core::io

@@ -96,6 +96,11 @@ class ProjectStore {
   // The technician's later verdict on a hit (re-accept, reject with reasons).
   Result<void> setHitAcceptance(std::int64_t hitId, bool accepted, std::uint32_t qualityFlags,
                                 const std::string& reasons);
+  // Power-loss durability of each commit: on (the default, PRAGMA synchronous
+  // = FULL) every COMMIT fsyncs; off (NORMAL in WAL mode) a commit survives a
+  // crash of the program but may be lost with a power cut. Off only for bulk
+  // writes of data that can be generated again (the demo project's tests).
+  Result<void> setPowerLossDurable(bool durable);
   // Copies committed WAL pages into the database file (PASSIVE checkpoint,
   // never blocks readers). Meant for the idle time between hits: with it the
   // WAL never reaches SQLite's auto-checkpoint size during a campaign, so no

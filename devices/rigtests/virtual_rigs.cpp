@@ -70,7 +70,10 @@ core::Result<SpecimenChoice> resolveSpecimen(core::io::ProjectStore& store, cons
                          "--specimen");
 }
 
-core::Result<void> addDemoRigTests(core::io::ProjectStore& store) {
+namespace {
+
+// The demo's tests, into `store` (see addDemoRigTests).
+core::Result<void> addDemoTests(core::io::ProjectStore& store) {
   auto stiffness = [&](const std::string& key, std::uint64_t seed,
                        const std::vector<double>& frequencies) -> core::Result<void> {
     auto who = resolveSpecimen(store, key);
@@ -108,6 +111,16 @@ core::Result<void> addDemoRigTests(core::io::ProjectStore& store) {
       runSteadyStateTest(**dev, *setup, SteadyStateSettings{}, StoreTarget{&store, who->specimenId, "steady state"});
   if (!ss) return ss.error();
   return {};
+}
+
+}  // namespace
+
+core::Result<void> addDemoRigTests(core::io::ProjectStore& store) {
+  // Generated data: no fsync per step (about 60 commits), full durability again after.
+  if (auto r = store.setPowerLossDurable(false); !r) return r;
+  auto tests = addDemoTests(store);
+  if (auto r = store.setPowerLossDurable(true); !r) return r;
+  return tests;
 }
 
 }  // namespace mozzi::devices::rigtests
