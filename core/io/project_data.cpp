@@ -123,6 +123,34 @@ Result<void> setStatusNote(sqlite3* db, const char* table, std::int64_t id, cons
   return {};
 }
 
+// Inside a transaction: the final status and note of a test; NotFound when
+// there is no such test.
+Result<void> setFinalStatus(sqlite3* db, const char* table, std::int64_t id, TestStatus status, const std::string& note,
+                            const std::string& where) {
+  const std::string text = "UPDATE " + std::string(table) + " SET status = ?2, status_note = ?3 WHERE id = ?1";
+  sql::Statement stmt(db, text.c_str());
+  stmt.bind(1, id).bind(2, std::string(testStatusName(status))).bind(3, note);
+  if (stmt.step() != SQLITE_DONE) return sqliteError(db, "cannot set the test's status", where);
+  if (sqlite3_changes(db) != 1) return makeError(ErrorCode::NotFound, "no such test", where);
+  return {};
+}
+
+// One time record of a rig or tyre test (NotFound when absent).
+Result<Eigen::MatrixXf> readRecord(sqlite3* db, const char* table, std::int64_t testId, int step, double* sampleRateHz,
+                                   const std::string& where) {
+  const std::string owner = std::string(table) == "tyre_test_record" ? "tyre_test_id" : "rig_test_id";
+  const std::string text =
+      "SELECT sample_rate_hz, channel_count, sample_count, encoding, samples, samples_crc32 FROM " +
+      std::string(table) + " WHERE " + owner + " = ?1 AND step = ?2";
+  sql::Statement stmt(db, text.c_str());
+  stmt.bind(1, testId).bind(2, step);
+  const int rc = stmt.step();
+  if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, "no such record", where);
+  if (rc != SQLITE_ROW) return sqliteError(db, "cannot read the record", where);
+  if (sampleRateHz) *sampleRateHz = sqlite3_column_double(stmt.get(), 0);
+  return columnSamples(stmt.get(), 1, where);
+}
+
 sql::Statement& bindStep(sql::Statement& stmt, int index, const std::optional<int>& step) {
   return step ? stmt.bind(index, *step) : stmt.bindNull(index);
 }
@@ -956,15 +984,7 @@ Result<std::int64_t> ProjectStore::addRigTestRecord(std::int64_t rigTestId, int 
 
 Result<Eigen::MatrixXf> ProjectStore::rigTestRecord(std::int64_t rigTestId, int step, double* sampleRateHz) const {
   const std::string where = path_ + ", rig test " + std::to_string(rigTestId) + ", step " + std::to_string(step);
-  sql::Statement stmt(db_,
-                      "SELECT sample_rate_hz, channel_count, sample_count, encoding, samples, samples_crc32"
-                      " FROM rig_test_record WHERE rig_test_id = ?1 AND step = ?2");
-  stmt.bind(1, rigTestId).bind(2, step);
-  const int rc = stmt.step();
-  if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, "no such record", where);
-  if (rc != SQLITE_ROW) return sqliteError(db_, "cannot read the record", where);
-  if (sampleRateHz) *sampleRateHz = sqlite3_column_double(stmt.get(), 0);
-  return columnSamples(stmt.get(), 1, where);
+  return readRecord(db_, "rig_test_record", rigTestId, step, sampleRateHz, where);
 }
 
 // --- tyre tests -------------------------------------------------------------------------
@@ -1107,10 +1127,7 @@ Result<void> ProjectStore::finishRigTest(std::int64_t rigTestId, TestStatus stat
   const std::string where = path_ + ", rig test " + std::to_string(rigTestId);
   sql::Transaction tx(db_, where);
   if (!tx.begun()) return tx.begun().error();
-  sql::Statement stmt(db_, "UPDATE rig_test SET status = ?2, status_note = ?3 WHERE id = ?1");
-  stmt.bind(1, rigTestId).bind(2, std::string(testStatusName(status))).bind(3, note);
-  if (stmt.step() != SQLITE_DONE) return sqliteError(db_, "cannot set the test's status", where);
-  if (sqlite3_changes(db_) != 1) return makeError(ErrorCode::NotFound, "no such rig test", where);
+  if (auto r = setFinalStatus(db_, "rig_test", rigTestId, status, note, where); !r) return r.error();
   if (auto r = insertRigResults(rigTestId, results, where); !r) return r.error();
   return tx.commit();
 }
@@ -1144,25 +1161,14 @@ Result<void> ProjectStore::finishTyreTest(std::int64_t tyreTestId, TestStatus st
   const std::string where = path_ + ", tyre test " + std::to_string(tyreTestId);
   sql::Transaction tx(db_, where);
   if (!tx.begun()) return tx.begun().error();
-  sql::Statement stmt(db_, "UPDATE tyre_test SET status = ?2, status_note = ?3 WHERE id = ?1");
-  stmt.bind(1, tyreTestId).bind(2, std::string(testStatusName(status))).bind(3, note);
-  if (stmt.step() != SQLITE_DONE) return sqliteError(db_, "cannot set the test's status", where);
-  if (sqlite3_changes(db_) != 1) return makeError(ErrorCode::NotFound, "no such tyre test", where);
+  if (auto r = setFinalStatus(db_, "tyre_test", tyreTestId, status, note, where); !r) return r.error();
   if (auto r = insertTyreData(tyreTestId, 0, {}, parameters, where); !r) return r.error();
   return tx.commit();
 }
 
 Result<Eigen::MatrixXf> ProjectStore::tyreTestRecord(std::int64_t tyreTestId, int step, double* sampleRateHz) const {
   const std::string where = path_ + ", tyre test " + std::to_string(tyreTestId) + ", step " + std::to_string(step);
-  sql::Statement stmt(db_,
-                      "SELECT sample_rate_hz, channel_count, sample_count, encoding, samples, samples_crc32"
-                      " FROM tyre_test_record WHERE tyre_test_id = ?1 AND step = ?2");
-  stmt.bind(1, tyreTestId).bind(2, step);
-  const int rc = stmt.step();
-  if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, "no such record", where);
-  if (rc != SQLITE_ROW) return sqliteError(db_, "cannot read the record", where);
-  if (sampleRateHz) *sampleRateHz = sqlite3_column_double(stmt.get(), 0);
-  return columnSamples(stmt.get(), 1, where);
+  return readRecord(db_, "tyre_test_record", tyreTestId, step, sampleRateHz, where);
 }
 
 namespace {
