@@ -238,7 +238,7 @@ void printQuantities(std::ostream& out, const std::vector<devices::rigtests::Qua
   for (const auto& q : qs) {
     const bool angle = q.unit == "rad";
     const double k = angle ? 180.0 / kPi : 1.0;
-    out << indent << q.label << " (" << q.key << "): " << q.value * k;
+    out << indent << q.label << " (" << (angle ? q.key + "_deg" : q.key) << "): " << q.value * k;
     if (q.uncertainty > 0) out << " +/- " << q.uncertainty * k;
     out << " " << (angle ? "deg" : q.unit) << "\n";
   }
@@ -370,7 +370,8 @@ int runTest(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
       for (const auto& s : o.steps) {
         out << "  step " << s.step << " " << s.label << (s.ok ? "" : " [no result]")
             << (s.note.empty() ? "" : ": " + s.note) << "\n";
-        printQuantities(out, s.results, "    ");
+        // A step that holds the whole test's results (the static ramp) prints them once, below.
+        if (o.steps.size() != 1 || s.results.size() != o.results.size()) printQuantities(out, s.results, "    ");
       }
       out << "  results:\n";
       printQuantities(out, o.results, "    ");
