@@ -24,6 +24,59 @@ namespace {
 namespace fs = std::filesystem;
 constexpr double kPi = 3.14159265358979323846;
 
+// A function generator as the sequences see it (devices/funcgen's parameter
+// keys): records what it was set to and when its output ran; `unplugAtStart`
+// makes its stream end as an unplugged device does.
+class FakeActuator final : public Device {
+ public:
+  const DeviceDescriptor& descriptor() const override { return d_; }
+  core::Result<void> open() override {
+    state_ = DeviceState::Open;
+    return {};
+  }
+  void close() override { state_ = DeviceState::Closed; }
+  Capabilities capabilities() const override {
+    Capabilities c;
+    c.model = "fake function generator";
+    for (const char* k : {"mode", "static.max_force", "static.period_s", "sine.frequency", "sine.amplitude"})
+      c.parameters.push_back(ParameterSpec{k, k, ParameterType::Text, "", std::nullopt, std::nullopt, {}, 0.0, ""});
+    return c;
+  }
+  core::Result<AcquisitionConfig> configure(const AcquisitionConfig& requested) override {
+    configured.push_back(requested.parameters);
+    state_ = DeviceState::Configured;
+    return requested;
+  }
+  core::Result<void> start(StreamSink sink) override {
+    ++starts;
+    sink_ = std::move(sink);
+    state_ = DeviceState::Running;
+    sink_(StreamEvent(StreamHeader{}));
+    if (unplugAtStart) {
+      sink_(StreamEvent(StreamEnd{EndReason::Disconnected, 0, "function generator unplugged"}));
+      ended_ = true;
+    }
+    return {};
+  }
+  void stop() override {
+    if (state_ != DeviceState::Running) return;
+    ++stops;
+    if (!ended_) sink_(StreamEvent(StreamEnd{EndReason::Stopped, 0, "output off"}));
+    state_ = DeviceState::Configured;
+  }
+  DeviceState state() const override { return state_; }
+
+  std::vector<ParameterMap> configured;
+  int starts = 0, stops = 0;
+  bool unplugAtStart = false;
+
+ private:
+  DeviceDescriptor d_{"fake-funcgen", "fake", 0, 0, "", "test:0"};
+  DeviceState state_ = DeviceState::Closed;
+  StreamSink sink_;
+  bool ended_ = false;
+};
+
 class StiffnessSequence : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -244,6 +297,34 @@ TEST_F(StiffnessSequence, AnUnplugMidTestEndsItCleanlyKeepingTheCommittedSteps) 
   }
   EXPECT_TRUE(step0);
   EXPECT_FALSE(step1);
+}
+
+// With a function generator the set-points go to it (and not to the DAQ),
+// its output runs around each step's recording, and its unplug ends the test.
+TEST_F(StiffnessSequence, TheActuatorSetPointGoesThroughTheFunctionGenerator) {
+  FakeActuator gen;
+  DynamicTestSettings dy;
+  dy.frequenciesHz = {5, 10};
+  dy.amplitudeN = 250.0;
+  auto out = runDynamicStiffnessTest(*device_, &gen, setup(), dy, StoreTarget{&*store_, specimen_, "funcgen"});
+  ASSERT_TRUE(out.ok()) << out.error().describe();
+  EXPECT_EQ(out->steps.size(), 2u);
+  ASSERT_EQ(gen.configured.size(), 2u);
+  EXPECT_EQ(std::get<std::string>(gen.configured[0].at("mode")), "sine");
+  EXPECT_DOUBLE_EQ(std::get<double>(gen.configured[1].at("sine.frequency")), 10.0);
+  EXPECT_DOUBLE_EQ(std::get<double>(gen.configured[1].at("sine.amplitude")), 250.0);
+  EXPECT_EQ(gen.starts, 2);
+  EXPECT_EQ(gen.stops, 2);  // the output is off between steps and at the end
+  EXPECT_EQ(gen.state(), DeviceState::Configured);
+
+  FakeActuator unplugged;
+  unplugged.unplugAtStart = true;
+  StaticTestSettings st;
+  auto cut = runStaticStiffnessTest(*device_, &unplugged, setup(), st, StoreTarget{&*store_, specimen_, "cut"});
+  ASSERT_TRUE(cut.ok()) << cut.error().describe();
+  EXPECT_EQ(cut->status, TestStatus::Interrupted);
+  EXPECT_NE(cut->note.find("function generator unplugged"), std::string::npos) << cut->note;
+  EXPECT_NE(device_->state(), DeviceState::Running);  // the DAQ was stopped too
 }
 
 TEST_F(StiffnessSequence, CancelEndsTheTestAsInterrupted) {
