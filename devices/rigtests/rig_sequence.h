@@ -9,13 +9,12 @@
 // has ended and its status is stored. Every callback is called on that same
 // thread, never on a device's acquisition thread: the sequence queues the
 // devices' stream events and handles them itself. `live` is called once per
-// data block (the drivers' default block is about 50 ms of data, so at least
-// 20 times a second when the rig runs in real time; a simulated rig with
-// sim.realtime off delivers faster, and a front end that draws should
-// throttle). Callbacks must return quickly and must not call into the
-// sequence. CancelFlag::cancel() may be called from any thread: the sequence
-// stops the devices within one block, keeps what it committed and ends with
-// status Interrupted.
+// data block; the sequences ask for blocks of 25 ms of data, so 40 times a
+// second when the rig runs in real time (a simulated rig with sim.realtime off
+// delivers faster: a front end that draws should throttle). Callbacks must
+// return quickly and must not call into the sequence. CancelFlag::cancel()
+// may be called from any thread: the sequence stops the devices within one
+// block, keeps what it committed and ends with status Interrupted.
 
 #include <atomic>
 #include <cstdint>

@@ -69,6 +69,7 @@ class EventQueue {
 };
 
 constexpr int kDaq = 0;
+constexpr double kLiveBlockS = 0.025;
 constexpr int kActuator = 1;
 
 core::Result<void> openAndConfigure(Device& dev, const AcquisitionConfig& cfg, AcquisitionConfig* applied) {
@@ -116,6 +117,9 @@ core::Result<SessionData> runSession(Device& daq, Device* actuator, const Sessio
   // its own seed (seed * 1009 + step), so the steps' noise is independent as on
   // a real rig, and the whole test still repeats bit for bit with the seed.
   AcquisitionConfig daqConfig = plan.daqConfig;
+  // Blocks of 25 ms of data: live readouts at 40 per second in real time.
+  if (daqConfig.blockScans == 0)
+    daqConfig.blockScans = std::max<std::int64_t>(1, std::llround(daqConfig.sampleRateHz * kLiveBlockS));
   if (auto it = daqConfig.parameters.find("sim.seed"); it != daqConfig.parameters.end() && plan.step > 0)
     if (const auto* seed = std::get_if<std::int64_t>(&it->second))
       it->second = static_cast<std::int64_t>(
