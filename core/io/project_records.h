@@ -196,9 +196,9 @@ struct StoredRigTest {
   struct Result {
     std::string quantity;  // "lateral stiffness", "torsional stiffness", "twist axis height", ...
     double value = 0.0;
-    std::string unit;          // SI: "N/m", "N m/rad", "m"
-    double uncertainty = 0.0;  // one standard deviation, same unit; 0 when unknown
-    std::optional<int> step;   // the step (record) it comes from; none: the whole test
+    std::string unit;           // SI: "N/m", "N m/rad", "m"
+    double uncertainty = 0.0;   // one standard deviation, same unit; 0 when unknown
+    std::optional<int> step{};  // the step (record) it comes from; none: the whole test
   };
   std::vector<Result> results;
   TestStatus status = TestStatus::Complete;
@@ -228,7 +228,7 @@ struct StoredTyreTest {
     double value = 0.0;
     std::string unit;  // SI
     double uncertainty = 0.0;
-    std::optional<int> step;  // the step (record) it comes from; none: the whole test
+    std::optional<int> step{};  // the step (record) it comes from; none: the whole test
   };
   std::vector<Parameter> parameters;
   TestStatus status = TestStatus::Complete;
