@@ -91,7 +91,87 @@ Result<Eigen::MatrixXf> columnSamples(sqlite3_stmt* stmt, int first, const std::
   return Eigen::MatrixXf(Eigen::Map<const Eigen::MatrixXf>(values->data(), count, channels));
 }
 
+// Inserts one time record into rig_test_record or tyre_test_record (same
+// layout as hits) inside the caller's transaction.
+Result<void> insertRecord(sqlite3* db, const char* table, std::int64_t testId, int step, double sampleRateHz,
+                          const Eigen::MatrixXf& samples, SampleEncoding encoding, const std::string& where) {
+  if (auto r = checkSamples(samples, sampleRateHz, where); !r) return r.error();
+  const auto count = static_cast<std::size_t>(samples.size());
+  auto blob = encodeSamples(samples.data(), count, encoding);
+  if (!blob) return blob.error();
+  const std::uint32_t crc = sampleCrc32(reinterpret_cast<const std::uint8_t*>(samples.data()), count * sizeof(float));
+  const std::string owner = std::string(table) == "tyre_test_record" ? "tyre_test_id" : "rig_test_id";
+  const std::string text = "INSERT INTO " + std::string(table) + "(" + owner +
+                           ", step, sample_rate_hz, channel_count, sample_count,"
+                           " encoding, samples, samples_crc32) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)";
+  sql::Statement stmt(db, text.c_str());
+  stmt.bind(1, testId).bind(2, step).bind(3, sampleRateHz).bind(4, static_cast<std::int64_t>(samples.cols()));
+  stmt.bind(5, static_cast<std::int64_t>(samples.rows())).bind(6, static_cast<int>(encoding));
+  stmt.bindBlob(7, blob->data(), blob->size()).bind(8, static_cast<std::int64_t>(crc));
+  if (stmt.step() != SQLITE_DONE) return sqliteError(db, "cannot store the record", where);
+  return {};
+}
+
+// Inside a transaction: the status note of a running test (nothing when empty).
+Result<void> setStatusNote(sqlite3* db, const char* table, std::int64_t id, const std::string& note,
+                           const std::string& where) {
+  if (note.empty()) return {};
+  const std::string text = "UPDATE " + std::string(table) + " SET status_note = ?2 WHERE id = ?1";
+  sql::Statement stmt(db, text.c_str());
+  stmt.bind(1, id).bind(2, note);
+  if (stmt.step() != SQLITE_DONE) return sqliteError(db, "cannot update the test's note", where);
+  return {};
+}
+
+// Inside a transaction: the final status and note of a test; NotFound when
+// there is no such test.
+Result<void> setFinalStatus(sqlite3* db, const char* table, std::int64_t id, TestStatus status, const std::string& note,
+                            const std::string& where) {
+  const std::string text = "UPDATE " + std::string(table) + " SET status = ?2, status_note = ?3 WHERE id = ?1";
+  sql::Statement stmt(db, text.c_str());
+  stmt.bind(1, id).bind(2, std::string(testStatusName(status))).bind(3, note);
+  if (stmt.step() != SQLITE_DONE) return sqliteError(db, "cannot set the test's status", where);
+  if (sqlite3_changes(db) != 1) return makeError(ErrorCode::NotFound, "no such test", where);
+  return {};
+}
+
+// One time record of a rig or tyre test (NotFound when absent).
+Result<Eigen::MatrixXf> readRecord(sqlite3* db, const char* table, std::int64_t testId, int step, double* sampleRateHz,
+                                   const std::string& where) {
+  const std::string owner = std::string(table) == "tyre_test_record" ? "tyre_test_id" : "rig_test_id";
+  const std::string text =
+      "SELECT sample_rate_hz, channel_count, sample_count, encoding, samples, samples_crc32 FROM " +
+      std::string(table) + " WHERE " + owner + " = ?1 AND step = ?2";
+  sql::Statement stmt(db, text.c_str());
+  stmt.bind(1, testId).bind(2, step);
+  const int rc = stmt.step();
+  if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, "no such record", where);
+  if (rc != SQLITE_ROW) return sqliteError(db, "cannot read the record", where);
+  if (sampleRateHz) *sampleRateHz = sqlite3_column_double(stmt.get(), 0);
+  return columnSamples(stmt.get(), 1, where);
+}
+
+sql::Statement& bindStep(sql::Statement& stmt, int index, const std::optional<int>& step) {
+  return step ? stmt.bind(index, *step) : stmt.bindNull(index);
+}
+
 }  // namespace
+
+const char* testStatusName(TestStatus status) {
+  switch (status) {
+    case TestStatus::Running: return "running";
+    case TestStatus::Complete: return "complete";
+    case TestStatus::Interrupted: return "interrupted";
+    case TestStatus::Failed: return "failed";
+  }
+  return "failed";
+}
+
+TestStatus parseTestStatus(const std::string& name) {
+  for (auto s : {TestStatus::Running, TestStatus::Complete, TestStatus::Interrupted})
+    if (name == testStatusName(s)) return s;
+  return TestStatus::Failed;
+}
 
 // --- mesh -----------------------------------------------------------------------
 
@@ -847,26 +927,34 @@ Result<std::int64_t> ProjectStore::addRigTest(const StoredRigTest& test) {
   sql::Transaction tx(db_, where);
   if (!tx.begun()) return tx.begun().error();
   sql::Statement stmt(db_,
-                      "INSERT INTO rig_test(specimen_id, rig_setup_id, kind, name, parameters_json, recorded_utc)"
-                      " VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+                      "INSERT INTO rig_test(specimen_id, rig_setup_id, kind, name, parameters_json, recorded_utc,"
+                      " status, status_note) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
   stmt.bind(1, test.specimenId).bind(2, test.rigSetupId);
   stmt.bind(3, std::string(test.kind == StoredRigTest::Kind::Static ? "static" : "dynamic"));
   stmt.bind(4, test.name).bind(5, test.parametersJson).bind(6, sql::nowUtc());
+  stmt.bind(7, std::string(testStatusName(test.status))).bind(8, test.statusNote);
   if (stmt.step() != SQLITE_DONE) return sqliteError(db_, "cannot store the rig test", where);
   const std::int64_t id = sqlite3_last_insert_rowid(db_);
+  if (auto r = insertRigResults(id, test.results, where); !r) return r.error();
+  if (auto r = tx.commit(); !r) return r.error();
+  return id;
+}
+
+Result<void> ProjectStore::insertRigResults(std::int64_t rigTestId, const std::vector<StoredRigTest::Result>& results,
+                                            const std::string& where) {
   sql::Statement res(db_,
-                     "INSERT INTO rig_test_result(rig_test_id, quantity, value, unit, uncertainty)"
-                     " VALUES (?1, ?2, ?3, ?4, ?5)");
-  for (const auto& r : test.results) {
-    if (!finite(r.value) || !finite(r.uncertainty)) {
+                     "INSERT INTO rig_test_result(rig_test_id, quantity, value, unit, uncertainty, step)"
+                     " VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+  for (const auto& r : results) {
+    if (!finite(r.value) || !finite(r.uncertainty) || r.uncertainty < 0) {
       return makeError(ErrorCode::InvalidArgument, "result '" + r.quantity + "' is not finite", where);
     }
     res.reset();
-    res.bind(1, id).bind(2, r.quantity).bind(3, r.value).bind(4, r.unit).bind(5, r.uncertainty);
+    res.bind(1, rigTestId).bind(2, r.quantity).bind(3, r.value).bind(4, r.unit).bind(5, r.uncertainty);
+    bindStep(res, 6, r.step);
     if (res.step() != SQLITE_DONE) return sqliteError(db_, "cannot store result '" + r.quantity + "'", where);
   }
-  if (auto r = tx.commit(); !r) return r.error();
-  return id;
+  return {};
 }
 
 Result<StoredRigTest> ProjectStore::rigTest(std::int64_t rigTestId) const {
@@ -874,8 +962,9 @@ Result<StoredRigTest> ProjectStore::rigTest(std::int64_t rigTestId) const {
   const std::string where = path_ + ", rig test " + std::to_string(rigTestId);
   StoredRigTest t;
   {
-    sql::Statement stmt(
-        db_, "SELECT id, specimen_id, rig_setup_id, kind, name, parameters_json FROM rig_test WHERE id = ?1");
+    sql::Statement stmt(db_,
+                        "SELECT id, specimen_id, rig_setup_id, kind, name, parameters_json, status, status_note,"
+                        " recorded_utc FROM rig_test WHERE id = ?1");
     stmt.bind(1, rigTestId);
     const int rc = stmt.step();
     if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, "no such rig test", where);
@@ -886,14 +975,19 @@ Result<StoredRigTest> ProjectStore::rigTest(std::int64_t rigTestId) const {
     t.kind = sql::columnText(stmt.get(), 3) == "dynamic" ? StoredRigTest::Kind::Dynamic : StoredRigTest::Kind::Static;
     t.name = sql::columnText(stmt.get(), 4);
     t.parametersJson = sql::columnText(stmt.get(), 5);
+    t.status = parseTestStatus(sql::columnText(stmt.get(), 6));
+    t.statusNote = sql::columnText(stmt.get(), 7);
+    t.recordedUtc = sql::columnText(stmt.get(), 8);
   }
   sql::Statement stmt(
-      db_, "SELECT quantity, value, unit, uncertainty FROM rig_test_result WHERE rig_test_id = ?1 ORDER BY id");
+      db_, "SELECT quantity, value, unit, uncertainty, step FROM rig_test_result WHERE rig_test_id = ?1 ORDER BY id");
   stmt.bind(1, rigTestId);
   int rc;
   while ((rc = stmt.step()) == SQLITE_ROW) {
-    t.results.push_back({sql::columnText(stmt.get(), 0), sqlite3_column_double(stmt.get(), 1),
-                         sql::columnText(stmt.get(), 2), sqlite3_column_double(stmt.get(), 3)});
+    StoredRigTest::Result r{sql::columnText(stmt.get(), 0), sqlite3_column_double(stmt.get(), 1),
+                            sql::columnText(stmt.get(), 2), sqlite3_column_double(stmt.get(), 3), std::nullopt};
+    if (sqlite3_column_type(stmt.get(), 4) != SQLITE_NULL) r.step = sqlite3_column_int(stmt.get(), 4);
+    t.results.push_back(r);
   }
   if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read rig test results", where);
   return t;
@@ -904,20 +998,10 @@ Result<std::int64_t> ProjectStore::addRigTestRecord(std::int64_t rigTestId, int 
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r.error();
   const std::string where = path_ + ", rig test " + std::to_string(rigTestId) + ", step " + std::to_string(step);
-  if (auto r = checkSamples(samples, sampleRateHz, where); !r) return r.error();
-  const auto count = static_cast<std::size_t>(samples.size());
-  auto blob = encodeSamples(samples.data(), count, hitEncoding_);
-  if (!blob) return blob.error();
-  const std::uint32_t crc = sampleCrc32(reinterpret_cast<const std::uint8_t*>(samples.data()), count * sizeof(float));
   sql::Transaction tx(db_, where);
   if (!tx.begun()) return tx.begun().error();
-  sql::Statement stmt(db_,
-                      "INSERT INTO rig_test_record(rig_test_id, step, sample_rate_hz, channel_count, sample_count,"
-                      " encoding, samples, samples_crc32) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
-  stmt.bind(1, rigTestId).bind(2, step).bind(3, sampleRateHz).bind(4, static_cast<std::int64_t>(samples.cols()));
-  stmt.bind(5, static_cast<std::int64_t>(samples.rows())).bind(6, static_cast<int>(hitEncoding_));
-  stmt.bindBlob(7, blob->data(), blob->size()).bind(8, static_cast<std::int64_t>(crc));
-  if (stmt.step() != SQLITE_DONE) return sqliteError(db_, "cannot store the record", where);
+  if (auto r = insertRecord(db_, "rig_test_record", rigTestId, step, sampleRateHz, samples, hitEncoding_, where); !r)
+    return r.error();
   const std::int64_t id = sqlite3_last_insert_rowid(db_);
   if (auto r = tx.commit(); !r) return r.error();
   return id;
@@ -926,15 +1010,7 @@ Result<std::int64_t> ProjectStore::addRigTestRecord(std::int64_t rigTestId, int 
 Result<Eigen::MatrixXf> ProjectStore::rigTestRecord(std::int64_t rigTestId, int step, double* sampleRateHz) const {
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", rig test " + std::to_string(rigTestId) + ", step " + std::to_string(step);
-  sql::Statement stmt(db_,
-                      "SELECT sample_rate_hz, channel_count, sample_count, encoding, samples, samples_crc32"
-                      " FROM rig_test_record WHERE rig_test_id = ?1 AND step = ?2");
-  stmt.bind(1, rigTestId).bind(2, step);
-  const int rc = stmt.step();
-  if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, "no such record", where);
-  if (rc != SQLITE_ROW) return sqliteError(db_, "cannot read the record", where);
-  if (sampleRateHz) *sampleRateHz = sqlite3_column_double(stmt.get(), 0);
-  return columnSamples(stmt.get(), 1, where);
+  return readRecord(db_, "rig_test_record", rigTestId, step, sampleRateHz, where);
 }
 
 // --- tyre tests -------------------------------------------------------------------------
@@ -951,38 +1027,51 @@ Result<std::int64_t> ProjectStore::addTyreTest(const StoredTyreTest& test) {
   if (!tx.begun()) return tx.begun().error();
   sql::Statement stmt(db_,
                       "INSERT INTO tyre_test(specimen_id, rig_setup_id, name, kind, inflation_pressure_pa,"
-                      " vertical_load_n, speed_m_s, recorded_utc) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
+                      " vertical_load_n, speed_m_s, recorded_utc, status, status_note, parameters_json)"
+                      " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)");
   stmt.bind(1, test.specimenId).bind(2, test.rigSetupId).bind(3, test.name).bind(4, test.kind);
   stmt.bind(5, test.inflationPressurePa).bind(6, test.verticalLoadN).bind(7, test.speedMps).bind(8, sql::nowUtc());
+  stmt.bind(9, std::string(testStatusName(test.status))).bind(10, test.statusNote).bind(11, test.parametersJson);
   if (stmt.step() != SQLITE_DONE) return sqliteError(db_, "cannot store the tyre test", where);
   const std::int64_t id = sqlite3_last_insert_rowid(db_);
+  if (auto r = insertTyreData(id, 0, test.points, test.parameters, where); !r) return r.error();
+  if (auto r = tx.commit(); !r) return r.error();
+  return id;
+}
+
+Result<void> ProjectStore::insertTyreData(std::int64_t tyreTestId, std::int64_t firstPoint,
+                                          const std::vector<StoredTyreTest::Point>& points,
+                                          const std::vector<StoredTyreTest::Parameter>& parameters,
+                                          const std::string& where) {
   sql::Statement pt(
       db_,
       "INSERT INTO tyre_test_point(tyre_test_id, point_index, slip_angle_rad, camber_rad, lateral_force_n,"
       " aligning_moment_nm, overturning_moment_nm) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)");
-  for (std::size_t k = 0; k < test.points.size(); ++k) {
-    const auto& p = test.points[k];
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const auto& p = points[k];
+    const std::int64_t index = firstPoint + static_cast<std::int64_t>(k);
     if (!finite(p.slipAngleRad) || !finite(p.camberRad) || !finite(p.lateralForceN) || !finite(p.aligningMomentNm) ||
         !finite(p.overturningMomentNm)) {
-      return makeError(ErrorCode::InvalidArgument, "point " + std::to_string(k) + " is not finite", where);
+      return makeError(ErrorCode::InvalidArgument, "point " + std::to_string(index) + " is not finite", where);
     }
     pt.reset();
-    pt.bind(1, id).bind(2, static_cast<std::int64_t>(k)).bind(3, p.slipAngleRad).bind(4, p.camberRad);
+    pt.bind(1, tyreTestId).bind(2, index).bind(3, p.slipAngleRad).bind(4, p.camberRad);
     pt.bind(5, p.lateralForceN).bind(6, p.aligningMomentNm).bind(7, p.overturningMomentNm);
-    if (pt.step() != SQLITE_DONE) return sqliteError(db_, "cannot store point " + std::to_string(k), where);
+    if (pt.step() != SQLITE_DONE) return sqliteError(db_, "cannot store point " + std::to_string(index), where);
   }
-  sql::Statement par(
-      db_, "INSERT INTO tyre_parameter(tyre_test_id, name, value, unit, uncertainty) VALUES (?1, ?2, ?3, ?4, ?5)");
-  for (const auto& p : test.parameters) {
-    if (!finite(p.value) || !finite(p.uncertainty)) {
+  sql::Statement par(db_,
+                     "INSERT INTO tyre_parameter(tyre_test_id, name, value, unit, uncertainty, step)"
+                     " VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+  for (const auto& p : parameters) {
+    if (!finite(p.value) || !finite(p.uncertainty) || p.uncertainty < 0) {
       return makeError(ErrorCode::InvalidArgument, "parameter '" + p.name + "' is not finite", where);
     }
     par.reset();
-    par.bind(1, id).bind(2, p.name).bind(3, p.value).bind(4, p.unit).bind(5, p.uncertainty);
+    par.bind(1, tyreTestId).bind(2, p.name).bind(3, p.value).bind(4, p.unit).bind(5, p.uncertainty);
+    bindStep(par, 6, p.step);
     if (par.step() != SQLITE_DONE) return sqliteError(db_, "cannot store parameter '" + p.name + "'", where);
   }
-  if (auto r = tx.commit(); !r) return r.error();
-  return id;
+  return {};
 }
 
 Result<StoredTyreTest> ProjectStore::tyreTest(std::int64_t tyreTestId) const {
@@ -992,7 +1081,7 @@ Result<StoredTyreTest> ProjectStore::tyreTest(std::int64_t tyreTestId) const {
   {
     sql::Statement stmt(db_,
                         "SELECT id, specimen_id, rig_setup_id, name, kind, inflation_pressure_pa, vertical_load_n,"
-                        " speed_m_s FROM tyre_test WHERE id = ?1");
+                        " speed_m_s, status, status_note, parameters_json, recorded_utc FROM tyre_test WHERE id = ?1");
     stmt.bind(1, tyreTestId);
     const int rc = stmt.step();
     if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, "no such tyre test", where);
@@ -1005,6 +1094,10 @@ Result<StoredTyreTest> ProjectStore::tyreTest(std::int64_t tyreTestId) const {
     t.inflationPressurePa = sqlite3_column_double(stmt.get(), 5);
     t.verticalLoadN = sqlite3_column_double(stmt.get(), 6);
     t.speedMps = sqlite3_column_double(stmt.get(), 7);
+    t.status = parseTestStatus(sql::columnText(stmt.get(), 8));
+    t.statusNote = sql::columnText(stmt.get(), 9);
+    t.parametersJson = sql::columnText(stmt.get(), 10);
+    t.recordedUtc = sql::columnText(stmt.get(), 11);
   }
   {
     sql::Statement stmt(db_,
@@ -1023,16 +1116,129 @@ Result<StoredTyreTest> ProjectStore::tyreTest(std::int64_t tyreTestId) const {
     }
     if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read tyre test points", where);
   }
-  sql::Statement stmt(db_,
-                      "SELECT name, value, unit, uncertainty FROM tyre_parameter WHERE tyre_test_id = ?1 ORDER BY id");
+  sql::Statement stmt(
+      db_, "SELECT name, value, unit, uncertainty, step FROM tyre_parameter WHERE tyre_test_id = ?1 ORDER BY id");
   stmt.bind(1, tyreTestId);
   int rc;
   while ((rc = stmt.step()) == SQLITE_ROW) {
-    t.parameters.push_back({sql::columnText(stmt.get(), 0), sqlite3_column_double(stmt.get(), 1),
-                            sql::columnText(stmt.get(), 2), sqlite3_column_double(stmt.get(), 3)});
+    StoredTyreTest::Parameter p{sql::columnText(stmt.get(), 0), sqlite3_column_double(stmt.get(), 1),
+                                sql::columnText(stmt.get(), 2), sqlite3_column_double(stmt.get(), 3), std::nullopt};
+    if (sqlite3_column_type(stmt.get(), 4) != SQLITE_NULL) p.step = sqlite3_column_int(stmt.get(), 4);
+    t.parameters.push_back(p);
   }
   if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read tyre parameters", where);
   return t;
+}
+
+// --- tests run step by step (devices/rigtests) ---------------------------------------------
+
+Result<void> ProjectStore::commitRigTestStep(std::int64_t rigTestId, int step, double sampleRateHz,
+                                             const Eigen::MatrixXf& samples,
+                                             const std::vector<StoredRigTest::Result>& results,
+                                             const std::string& runningNote) {
+  if (auto r = requireWritable(); !r) return r.error();
+  const std::string where = path_ + ", rig test " + std::to_string(rigTestId) + ", step " + std::to_string(step);
+  sql::Transaction tx(db_, where);
+  if (!tx.begun()) return tx.begun().error();
+  if (samples.size() > 0) {
+    if (auto r = insertRecord(db_, "rig_test_record", rigTestId, step, sampleRateHz, samples, hitEncoding_, where); !r)
+      return r.error();
+  }
+  if (auto r = insertRigResults(rigTestId, results, where); !r) return r.error();
+  if (auto r = setStatusNote(db_, "rig_test", rigTestId, runningNote, where); !r) return r.error();
+  return tx.commit();
+}
+
+Result<void> ProjectStore::finishRigTest(std::int64_t rigTestId, TestStatus status, const std::string& note,
+                                         const std::vector<StoredRigTest::Result>& results) {
+  if (auto r = requireWritable(); !r) return r.error();
+  const std::string where = path_ + ", rig test " + std::to_string(rigTestId);
+  sql::Transaction tx(db_, where);
+  if (!tx.begun()) return tx.begun().error();
+  if (auto r = setFinalStatus(db_, "rig_test", rigTestId, status, note, where); !r) return r.error();
+  if (auto r = insertRigResults(rigTestId, results, where); !r) return r.error();
+  return tx.commit();
+}
+
+Result<void> ProjectStore::commitTyreTestStep(std::int64_t tyreTestId, int step, double sampleRateHz,
+                                              const Eigen::MatrixXf& samples,
+                                              const std::vector<StoredTyreTest::Point>& points,
+                                              const std::vector<StoredTyreTest::Parameter>& parameters,
+                                              const std::string& runningNote) {
+  if (auto r = requireWritable(); !r) return r.error();
+  const std::string where = path_ + ", tyre test " + std::to_string(tyreTestId) + ", step " + std::to_string(step);
+  sql::Transaction tx(db_, where);
+  if (!tx.begun()) return tx.begun().error();
+  if (samples.size() > 0) {
+    if (auto r = insertRecord(db_, "tyre_test_record", tyreTestId, step, sampleRateHz, samples, hitEncoding_, where);
+        !r)
+      return r.error();
+  }
+  sql::Statement next(db_, "SELECT COALESCE(MAX(point_index) + 1, 0) FROM tyre_test_point WHERE tyre_test_id = ?1");
+  next.bind(1, tyreTestId);
+  if (next.step() != SQLITE_ROW) return sqliteError(db_, "cannot count the test's points", where);
+  const std::int64_t first = sqlite3_column_int64(next.get(), 0);
+  if (auto r = insertTyreData(tyreTestId, first, points, parameters, where); !r) return r.error();
+  if (auto r = setStatusNote(db_, "tyre_test", tyreTestId, runningNote, where); !r) return r.error();
+  return tx.commit();
+}
+
+Result<void> ProjectStore::finishTyreTest(std::int64_t tyreTestId, TestStatus status, const std::string& note,
+                                          const std::vector<StoredTyreTest::Parameter>& parameters) {
+  if (auto r = requireWritable(); !r) return r.error();
+  const std::string where = path_ + ", tyre test " + std::to_string(tyreTestId);
+  sql::Transaction tx(db_, where);
+  if (!tx.begun()) return tx.begun().error();
+  if (auto r = setFinalStatus(db_, "tyre_test", tyreTestId, status, note, where); !r) return r.error();
+  if (auto r = insertTyreData(tyreTestId, 0, {}, parameters, where); !r) return r.error();
+  return tx.commit();
+}
+
+Result<Eigen::MatrixXf> ProjectStore::tyreTestRecord(std::int64_t tyreTestId, int step, double* sampleRateHz) const {
+  const std::string where = path_ + ", tyre test " + std::to_string(tyreTestId) + ", step " + std::to_string(step);
+  return readRecord(db_, "tyre_test_record", tyreTestId, step, sampleRateHz, where);
+}
+
+namespace {
+Result<std::vector<TestInfo>> listTests(sqlite3* db, const char* text, const std::string& where) {
+  sql::Statement stmt(db, text);
+  std::vector<TestInfo> out;
+  int rc;
+  while ((rc = stmt.step()) == SQLITE_ROW) {
+    TestInfo t;
+    t.id = sqlite3_column_int64(stmt.get(), 0);
+    t.specimenId = sqlite3_column_int64(stmt.get(), 1);
+    t.specimenName = sql::columnText(stmt.get(), 2);
+    t.kind = sql::columnText(stmt.get(), 3);
+    t.name = sql::columnText(stmt.get(), 4);
+    t.status = parseTestStatus(sql::columnText(stmt.get(), 5));
+    t.statusNote = sql::columnText(stmt.get(), 6);
+    t.recordedUtc = sql::columnText(stmt.get(), 7);
+    t.recordCount = sqlite3_column_int(stmt.get(), 8);
+    t.resultCount = sqlite3_column_int(stmt.get(), 9);
+    out.push_back(t);
+  }
+  if (rc != SQLITE_DONE) return sqliteError(db, "cannot list the tests", where);
+  return out;
+}
+}  // namespace
+
+Result<std::vector<TestInfo>> ProjectStore::rigTests() const {
+  return listTests(db_,
+                   "SELECT t.id, t.specimen_id, s.name, t.kind, t.name, t.status, t.status_note, t.recorded_utc,"
+                   " (SELECT COUNT(*) FROM rig_test_record r WHERE r.rig_test_id = t.id),"
+                   " (SELECT COUNT(*) FROM rig_test_result r WHERE r.rig_test_id = t.id)"
+                   " FROM rig_test t JOIN specimen s ON s.id = t.specimen_id ORDER BY t.id",
+                   path_ + ", rig tests");
+}
+
+Result<std::vector<TestInfo>> ProjectStore::tyreTests() const {
+  return listTests(db_,
+                   "SELECT t.id, t.specimen_id, s.name, t.kind, t.name, t.status, t.status_note, t.recorded_utc,"
+                   " (SELECT COUNT(*) FROM tyre_test_record r WHERE r.tyre_test_id = t.id),"
+                   " (SELECT COUNT(*) FROM tyre_parameter r WHERE r.tyre_test_id = t.id)"
+                   " FROM tyre_test t JOIN specimen s ON s.id = t.specimen_id ORDER BY t.id",
+                   path_ + ", tyre tests");
 }
 
 // --- models and analyses ------------------------------------------------------------------

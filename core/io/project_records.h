@@ -188,6 +188,12 @@ struct ModalResultInfo {
 
 // --- rig tests, tyre tests, models, analyses ---------------------------------------
 
+// State of a rig or tyre test run step by step (schema 3): Running while its
+// steps are being committed (a Running test nobody is running was cut short by
+// a crash), then Complete, Interrupted (unplug, cancel: the committed steps
+// stay) or Failed.
+enum class TestStatus { Running, Complete, Interrupted, Failed };
+
 // A static or dynamic stiffness test on a rig; its records are time data of the
 // same layout as hits, its results are named quantities with units.
 struct StoredRigTest {
@@ -200,10 +206,14 @@ struct StoredRigTest {
   struct Result {
     std::string quantity;  // "lateral stiffness", "torsional stiffness", "twist axis height", ...
     double value = 0.0;
-    std::string unit;          // SI: "N/m", "N m/rad", "m"
-    double uncertainty = 0.0;  // one standard deviation, same unit; 0 when unknown
+    std::string unit;           // SI: "N/m", "N m/rad", "m"
+    double uncertainty = 0.0;   // one standard deviation, same unit; 0 when unknown
+    std::optional<int> step{};  // the step (record) it comes from; none: the whole test
   };
   std::vector<Result> results;
+  TestStatus status = TestStatus::Complete;
+  std::string statusNote;   // what is missing, why it stopped; empty when complete
+  std::string recordedUtc;  // filled by the store
 };
 
 struct StoredTyreTest {
@@ -228,8 +238,27 @@ struct StoredTyreTest {
     double value = 0.0;
     std::string unit;  // SI
     double uncertainty = 0.0;
+    std::optional<int> step{};  // the step (record) it comes from; none: the whole test
   };
   std::vector<Parameter> parameters;
+  TestStatus status = TestStatus::Complete;
+  std::string statusNote;
+  std::string parametersJson = "{}";  // set-points, frequencies, limits, seed
+  std::string recordedUtc;            // filled by the store
+};
+
+// A rig or tyre test without its data, for lists (project info, project tree).
+struct TestInfo {
+  std::int64_t id = 0;
+  std::int64_t specimenId = 0;
+  std::string specimenName;
+  std::string kind;  // rig tests: "static", "dynamic"; tyre tests: as stored ("relaxation", ...)
+  std::string name;
+  TestStatus status = TestStatus::Complete;
+  std::string statusNote;
+  std::string recordedUtc;
+  int recordCount = 0;  // raw records (steps committed)
+  int resultCount = 0;  // results (rig) or parameters (tyre)
 };
 
 struct StoredModel {

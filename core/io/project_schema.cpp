@@ -363,10 +363,40 @@ CREATE TABLE campaign_point (
 ) STRICT, WITHOUT ROWID;
 )sql";
 
+// Rig and tyre tests run step by step (schema 3, issue 20, devices/rigtests): a test is
+// 'running' while its steps are committed one transaction each, then
+// 'complete', 'interrupted' (unplug, cancel, crash: the committed steps stay)
+// or 'failed', with a note saying what is missing; a result may belong to one
+// step (NULL: the whole test); tyre tests keep their raw records like rig tests.
+const char* const kRigTestSteps = R"sql(
+ALTER TABLE rig_test ADD COLUMN status TEXT NOT NULL DEFAULT 'complete'
+  CHECK (status IN ('running', 'complete', 'interrupted', 'failed'));
+ALTER TABLE rig_test ADD COLUMN status_note TEXT NOT NULL DEFAULT '';
+ALTER TABLE rig_test_result ADD COLUMN step INTEGER CHECK (step IS NULL OR step >= 0);
+ALTER TABLE tyre_test ADD COLUMN status TEXT NOT NULL DEFAULT 'complete'
+  CHECK (status IN ('running', 'complete', 'interrupted', 'failed'));
+ALTER TABLE tyre_test ADD COLUMN status_note TEXT NOT NULL DEFAULT '';
+ALTER TABLE tyre_test ADD COLUMN parameters_json TEXT NOT NULL DEFAULT '{}';
+ALTER TABLE tyre_parameter ADD COLUMN step INTEGER CHECK (step IS NULL OR step >= 0);
+
+CREATE TABLE tyre_test_record (
+  id             INTEGER PRIMARY KEY,
+  tyre_test_id   INTEGER NOT NULL REFERENCES tyre_test(id) ON DELETE CASCADE,
+  step           INTEGER NOT NULL CHECK (step >= 0),
+  sample_rate_hz REAL NOT NULL CHECK (sample_rate_hz > 0),
+  channel_count  INTEGER NOT NULL CHECK (channel_count > 0),
+  sample_count   INTEGER NOT NULL CHECK (sample_count > 0),
+  encoding       INTEGER NOT NULL CHECK (encoding IN (0, 1)),
+  samples        BLOB NOT NULL,
+  samples_crc32  INTEGER NOT NULL,
+  UNIQUE (tyre_test_id, step)
+) STRICT;
+)sql";
+
 }  // namespace
 
 const std::vector<const char*>& projectMigrations() {
-  static const std::vector<const char*> migrations{kSchema1, kSchema2};
+  static const std::vector<const char*> migrations{kSchema1, kSchema2, kRigTestSteps};
   return migrations;
 }
 
@@ -396,7 +426,8 @@ const std::vector<const char*>& projectDataTables() {
                                                "tyre_parameter",
                                                "model",
                                                "analysis",
-                                               "gap_finding"};
+                                               "gap_finding",
+                                               "tyre_test_record"};
   return tables;
 }
 

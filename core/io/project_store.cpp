@@ -255,11 +255,6 @@ Result<void> ProjectStore::checkpoint() {
   return {};
 }
 
-Result<void> ProjectStore::setDurable(bool durable) {
-  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
-  return exec(db_, durable ? "PRAGMA synchronous = FULL" : "PRAGMA synchronous = OFF", path_);
-}
-
 Result<void> ProjectStore::deleteSpecimen(std::int64_t specimenId) {
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r.error();
@@ -303,6 +298,12 @@ Result<void> ProjectStore::saveAs(const std::string& path) const {
   std::filesystem::rename(temp, path, ec);
   if (ec) return makeError(ErrorCode::IoError, "cannot move the copy into place: " + ec.message(), path);
   return {};
+}
+
+Result<void> ProjectStore::setPowerLossDurable(bool durable) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
+  if (auto r = requireWritable(); !r) return r.error();
+  return exec(db_, durable ? "PRAGMA synchronous = FULL;" : "PRAGMA synchronous = NORMAL;", path_);
 }
 
 }  // namespace mozzi::core::io

@@ -28,6 +28,11 @@ namespace mozzi::core::io {
 
 inline constexpr std::int32_t kProjectApplicationId = 0x4D4F5A5A;  // "MOZZ"
 
+// "running", "complete", "interrupted", "failed" (the schema's words).
+const char* testStatusName(TestStatus status);
+// The status of a name; Failed for a word the schema does not know.
+TestStatus parseTestStatus(const std::string& name);
+
 struct ProjectSummary {
   int schemaVersion = 0;
   std::string createdUtc;
@@ -106,15 +111,16 @@ class ProjectStore {
   // The technician's later verdict on a hit (re-accept, reject with reasons).
   Result<void> setHitAcceptance(std::int64_t hitId, bool accepted, std::uint32_t qualityFlags,
                                 const std::string& reasons);
+  // Power-loss durability of each commit: on (the default, PRAGMA synchronous
+  // = FULL) every COMMIT fsyncs; off (NORMAL in WAL mode) a commit survives a
+  // crash of the program but may be lost with a power cut. Off only for bulk
+  // writes of data that can be generated again (the demo project's tests).
+  Result<void> setPowerLossDurable(bool durable);
   // Copies committed WAL pages into the database file (PASSIVE checkpoint,
   // never blocks readers). Meant for the idle time between hits: with it the
   // WAL never reaches SQLite's auto-checkpoint size during a campaign, so no
   // commit pays for a checkpoint (docs/performance/project.md).
   Result<void> checkpoint();
-  // synchronous = FULL (the default: every commit fsync'd) or OFF (no fsync:
-  // a power cut may lose recent commits). OFF only while bulk-writing content
-  // that can be made again (the demo project's campaigns).
-  Result<void> setDurable(bool durable);
   SampleEncoding hitEncoding() const {
     const std::lock_guard<std::recursive_mutex> lock(*mutex_);
     return hitEncoding_;
@@ -145,6 +151,29 @@ class ProjectStore {
   Result<std::int64_t> addTyreTest(const StoredTyreTest& test);
   Result<StoredTyreTest> tyreTest(std::int64_t tyreTestId) const;
 
+  // Tests run step by step (devices/rigtests; project_tests.cpp). The test is
+  // added with status Running; each step commits its raw record and its
+  // results in one transaction (a crash loses at most the step in flight); the
+  // end sets the final status, the note and the whole-test results in one more.
+  // A step may also set the status note (what a crash right after it would
+  // leave missing); an empty `runningNote` leaves the note as it is.
+  Result<void> commitRigTestStep(std::int64_t rigTestId, int step, double sampleRateHz, const Eigen::MatrixXf& samples,
+                                 const std::vector<StoredRigTest::Result>& results,
+                                 const std::string& runningNote = {});
+  Result<void> finishRigTest(std::int64_t rigTestId, TestStatus status, const std::string& note,
+                             const std::vector<StoredRigTest::Result>& results);
+  Result<std::vector<TestInfo>> rigTests() const;
+  // A step of a tyre test: its record (none when `samples` is empty), the
+  // measured points it adds and the parameters identified from it.
+  Result<void> commitTyreTestStep(std::int64_t tyreTestId, int step, double sampleRateHz,
+                                  const Eigen::MatrixXf& samples, const std::vector<StoredTyreTest::Point>& points,
+                                  const std::vector<StoredTyreTest::Parameter>& parameters,
+                                  const std::string& runningNote = {});
+  Result<void> finishTyreTest(std::int64_t tyreTestId, TestStatus status, const std::string& note,
+                              const std::vector<StoredTyreTest::Parameter>& parameters);
+  Result<Eigen::MatrixXf> tyreTestRecord(std::int64_t tyreTestId, int step, double* sampleRateHz = nullptr) const;
+  Result<std::vector<TestInfo>> tyreTests() const;
+
   Result<std::int64_t> addModel(const StoredModel& model);
   Result<std::int64_t> addAnalysis(const StoredAnalysis& analysis);
   Result<StoredAnalysis> analysis(std::int64_t analysisId) const;
@@ -167,6 +196,13 @@ class ProjectStore {
   ProjectStore() = default;
   void close();
   Result<void> requireWritable() const;
+  // Inside an open transaction: a rig test's results, a tyre test's points
+  // (indices from firstPoint) and parameters.
+  Result<void> insertRigResults(std::int64_t rigTestId, const std::vector<StoredRigTest::Result>& results,
+                                const std::string& where);
+  Result<void> insertTyreData(std::int64_t tyreTestId, std::int64_t firstPoint,
+                              const std::vector<StoredTyreTest::Point>& points,
+                              const std::vector<StoredTyreTest::Parameter>& parameters, const std::string& where);
 
   SampleEncoding hitEncoding_ = SampleEncoding::Raw;
 

@@ -43,10 +43,10 @@ core::Result<void> addDemoCampaigns(core::io::ProjectStore& store) {
   if (!summary) return summary.error();
   // Reproducible content: no fsync per hit while it is written (a crash
   // leaves an incomplete demo, made again), then durable as every project.
-  if (auto r = store.setDurable(false); !r) return r;
+  if (auto r = store.setPowerLossDurable(false); !r) return r;
   struct Durable {
     core::io::ProjectStore& s;
-    ~Durable() { (void)s.setDurable(true); }
+    ~Durable() { (void)s.setPowerLossDurable(true); }
   } durable{store};
   for (const auto& demo : demoCampaigns()) {
     const std::string where = "demo campaign on " + demo.specimenKey;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <complex>
 #include <mutex>
 #include <random>
 #include <thread>
@@ -315,14 +316,22 @@ class StiffnessModel final : public SignalModel {
     sineHz_ = parameterReal(config.parameters, "sine.frequency", 10.0);
     sineAmp_ = actuatorSineAmplitude(parameterReal(config.parameters, "sine.amplitude_1hz", 1000.0), sineHz_);
     forceNoise_ = parameterReal(config.parameters, "noise.force_rms", 0.5);
+    receptance_.clear();
+    for (const auto& p : specimen_.laserPoints) receptance_.push_back(specimen_.receptance(p, sineHz_));
     rng_.seed(static_cast<std::uint64_t>(parameterInteger(config.parameters, "sim.seed", 1)) + 99u);
     return {};
   }
 
+  // The actuator's soft start of a sine: the amplitude rises linearly over
+  // this time (the transient a test lets settle before it records).
+  static constexpr double kSineSoftStartS = 0.5;
+
+  double envelope(double t) const { return std::min(1.0, t / kSineSoftStartS); }
+
   // Actuator force at time t: triangle 0 -> +F -> -F -> 0 over one period, or
   // the sine of the set frequency and its amplitude.
   double force(double t) const {
-    if (sine_) return sineAmp_ * std::sin(2.0 * 3.14159265358979323846 * sineHz_ * t);
+    if (sine_) return sineAmp_ * envelope(t) * std::sin(2.0 * 3.14159265358979323846 * sineHz_ * t);
     const double x = std::fmod(t / period_, 1.0);
     if (x < 0.25) return maxForce_ * 4.0 * x;
     if (x < 0.75) return maxForce_ * (2.0 - 4.0 * x);
@@ -333,17 +342,28 @@ class StiffnessModel final : public SignalModel {
                 FaultCounters&) override {
     std::normal_distribution<double> noise(0.0, 1.0);
     for (Eigen::Index s = 0; s < n; ++s) {
-      const double f = force(static_cast<double>(first + s) / fs_);
+      const double t = static_cast<double>(first + s) / fs_;
+      const double f = force(t);
       for (std::size_t c = 0; c < inputs.size(); ++c) {
         const int in = inputs[c];
         double v = 0.0;
         if (in == 0) {
           v = f + forceNoise_ * noise(rng_);
         } else {
-          // Quasi-static response (the sine band 1..45 Hz lies below the
-          // specimens' first modes); each laser quantises to its 4 um
-          // resolution and saturates at the ends of its 20 mm range.
-          const double w = specimen_.displacementAt(specimen_.laserPoints[static_cast<std::size_t>(in - 1)], f);
+          // Quasi-static response to the slow ramp; the steady response of the
+          // plate modes to a sine (StaticSpecimen::receptance: bending and
+          // torsion oscillators, thesis §1.3, §1.7), scaled by the soft start.
+          // Each laser quantises to its 4 um resolution and saturates at the
+          // ends of its 20 mm range.
+          const auto& p = specimen_.laserPoints[static_cast<std::size_t>(in - 1)];
+          double w = 0.0;
+          if (sine_) {
+            const std::complex<double> h = receptance_[static_cast<std::size_t>(in - 1)];
+            w = sineAmp_ * envelope(t) * std::abs(h) *
+                std::sin(2.0 * 3.14159265358979323846 * sineHz_ * t + std::arg(h));
+          } else {
+            w = specimen_.displacementAt(p, f);
+          }
           v = std::clamp(kLaserResolutionM * std::round(w / kLaserResolutionM), -kLaserRangeM / 2, kLaserRangeM / 2);
         }
         out(s, static_cast<Eigen::Index>(c)) = v;
@@ -353,6 +373,7 @@ class StiffnessModel final : public SignalModel {
 
  private:
   StaticSpecimen specimen_;
+  std::vector<std::complex<double>> receptance_;  // per laser at the sine frequency [m/N]
   double fs_ = 0.0, maxForce_ = 0.0, period_ = 20.0, sineHz_ = 10.0, sineAmp_ = 0.0, forceNoise_ = 0.0;
   bool sine_ = false;
   std::mt19937_64 rng_;

@@ -48,15 +48,22 @@ class SimulatedRig : public ThreadedDevice {
 // fails configure() with an error naming the label and the specimen.
 std::unique_ptr<Driver> makeHammerStationDriver();
 // Motostiffmeter (thesis §1.1): actuator static ramp up to 5000 N or sine
-// 1..45 Hz with amplitude falling logarithmically with frequency, load cell
-// +/-200 kg, four lasers of 20 mm range and 4 um resolution.
+// 1..45 Hz with amplitude falling logarithmically with frequency (soft start
+// over 0.5 s), load cell +/-200 kg, four lasers of 20 mm range and 4 um
+// resolution; the plate answers a sine through the specimen's bending and
+// torsion modes (StaticSpecimen::receptance), a ramp quasi-statically.
 std::unique_ptr<Driver> makeStiffnessRigDriver();
 
 // Mototiremeter (thesis §1.8, §1.9): rotating disk up to 50 km/h, yaw
-// (+/-10 deg, +/-6 by default) and camber (+/-54 deg, +/-45 by default) servos,
-// load cells for F_y, M_z and M_y, a rate gyro on the fork; a harmonic yaw test
-// (trigger mark at each frequency step, its level the step's frequency [Hz])
-// or steady side-slip and camber sweeps on one of the six thesis tyres.
+// (+/-10 deg, +/-6 by default) and camber (+/-55 deg, appendix 2; §1.8 prints
+// 54; +/-45 by default) servos, load cells for F_y, M_z and M_y, a rate gyro on
+// the fork; a harmonic yaw test (trigger mark at each frequency step, its level
+// the step's frequency [Hz]), steady side-slip and camber sweeps (triangles),
+// or one held steady-state set-point (mode "steady-state": sweep.slip_deg and
+// sweep.camber_deg held from the start) on one of the six thesis tyres.
+inline constexpr double kTyreTesterMaxYawDeg = 10.0;     // side-slip servo range (§1.8, appendix 2)
+inline constexpr double kTyreTesterMaxCamberDeg = 55.0;  // camber range (appendix 2; §1.8: 54)
+inline constexpr double kTyreTesterMaxSpeedKmh = 50.0;   // disk speed (§1.8)
 std::unique_ptr<Driver> makeTyreTesterDriver();
 
 // Assumed normalised camber stiffness (dF_y/dgamma)/F_z [1/rad] of the

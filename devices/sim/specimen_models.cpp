@@ -3,6 +3,9 @@
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <initializer_list>
+#include <optional>
 
 #include "core/geometry/mesh_templates.h"
 #include "devices/sim/mode_shapes.h"
@@ -192,6 +195,77 @@ double StaticSpecimen::displacementAt(const core::Vector2& p, double forceN) con
   return rotation * arm;
 }
 
+std::complex<double> StaticSpecimen::receptance(const core::Vector2& p, double frequencyHz) const {
+  if (modes.empty()) return displacementAt(p, 1.0);
+  std::complex<double> w = 0.0;
+  for (const auto& m : modes) {
+    const double arm = (p.x() - m.point.x()) * m.direction.y() - (p.y() - m.point.y()) * m.direction.x();
+    const double r = frequencyHz / m.frequencyHz;
+    w += m.rotationPerN * arm / std::complex<double>(1.0 - r * r, 2.0 * m.zeta * r);
+  }
+  return w;
+}
+
+namespace {
+
+core::Vector2 directionAt(double beta) {  // from the v axis towards u
+  return core::Vector2(std::sin(beta), std::cos(beta));
+}
+
+PlateMode plateMode(const char* name, double beta, double arm, double rotationPerN, const CatalogueMode& m,
+                    double zeta) {
+  PlateMode out;
+  out.name = name;
+  out.direction = directionAt(beta);
+  const core::Vector2 normal(out.direction.y(), -out.direction.x());  // signedArm(load point) = +arm
+  out.point = -arm * normal;
+  out.arm = arm;
+  out.rotationPerN = rotationPerN;
+  out.frequencyHz = m.frequencyHz;
+  out.zeta = zeta;
+  return out;
+}
+
+// The modes of the specimen's modal table that stand for bending and torsion.
+std::optional<std::size_t> findMode(const SpecimenEntry& e, std::initializer_list<const char*> shapes) {
+  for (std::size_t r = 0; r < e.modes.size(); ++r)
+    for (const char* s : shapes)
+      if (e.modes[r].shape == s) return r;
+  return std::nullopt;
+}
+
+void addPlateModes(const SpecimenEntry& e, StaticSpecimen& s) {
+  const StaticProperties& st = *e.statics;
+  const double beta = std::atan2(s.axisDirection.x(), s.axisDirection.y());
+  const double thetaS = 1.0 / (st.lateralStiffness * st.twistArm);  // [rad/N]
+  const auto bend = findMode(e, {"Lateral", "Bending"});
+  const auto tors = findMode(e, {"Torsional", "Wheel"});
+  if (st.bendArm > 0 && st.torsArm > 0 && st.bendStiffness > 0 && st.torsStiffness > 0 && bend && tors) {
+    const double thetaB = st.bendArm / st.bendStiffness, thetaT = st.torsArm / st.torsStiffness;
+    // Angles of the triangle theta_s = theta_b + theta_t (law of cosines,
+    // clamped where the printed numbers do not close it).
+    auto angle = [](double a, double b, double opposite) {
+      return std::acos(std::clamp((a * a + b * b - opposite * opposite) / (2 * a * b), -1.0, 1.0));
+    };
+    const double betaB = beta + angle(thetaS, thetaB, thetaT);
+    const double betaT = beta - angle(thetaS, thetaT, thetaB);
+    // Magnitudes that sum to theta_s exactly along these directions (the
+    // printed ones where the triangle closes).
+    Eigen::Matrix2d d;
+    d.col(0) = directionAt(betaB);
+    d.col(1) = directionAt(betaT);
+    const core::Vector2 th = d.fullPivLu().solve(thetaS * s.axisDirection);
+    // Eq. 22 at the load point: theta_b a_b + theta_t a_t = theta_s a_tw.
+    const double armB = (thetaS * st.twistArm - th(1) * st.torsArm) / th(0);
+    s.modes.push_back(plateMode("bending", betaB, armB, th(0), e.modes[*bend], e.zeta(*bend)));
+    s.modes.push_back(plateMode("torsion", betaT, st.torsArm, th(1), e.modes[*tors], e.zeta(*tors)));
+  } else if (!e.modes.empty()) {
+    s.modes.push_back(plateMode("lateral", beta, st.twistArm, thetaS, e.modes[0], e.zeta(0)));
+  }
+}
+
+}  // namespace
+
 core::Result<StaticSpecimen> staticSpecimen(const std::string& key) {
   const SpecimenEntry* e = findSpecimen(key);
   if (!e) return core::makeError(core::ErrorCode::NotFound, "no such virtual specimen", "specimen " + key);
@@ -210,6 +284,7 @@ core::Result<StaticSpecimen> staticSpecimen(const std::string& key) {
   s.axisDirection = core::Vector2(std::sin(beta), std::cos(beta));
   s.laserPoints = {core::Vector2(-0.10, -0.075), core::Vector2(0.10, -0.075), core::Vector2(0.10, 0.075),
                    core::Vector2(-0.10, 0.075)};
+  addPlateModes(*e, s);
   return s;
 }
 

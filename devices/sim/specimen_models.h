@@ -109,6 +109,24 @@ std::vector<std::string> modalSpecimenKeys();  // every catalogue key
 // (u, v), displacement w normal to the plate): rotation F / (k_lat a_tw) about
 // the twist axis, so w(p) = F / (k_lat a_tw) * signedArm(p) and the load point
 // (arm a_tw) moves F / k_lat.
+// The plate's dynamic response to a sine force at the load point (the
+// actuator band 1..45 Hz, thesis §1.3): the static rotation split into
+// rotations about a bending and a torsion axis (thesis §1.7, eq. 22 to 27),
+// each a single-degree-of-freedom oscillator at the specimen's lateral
+// (bending) and torsional mode of the modal tables, so the dynamic twist axis
+// starts at the static one and turns towards the bending axis as the
+// frequency nears the bending mode (Fig. 29).
+struct PlateMode {
+  std::string name;                                   // "bending", "torsion", or "lateral" (no axes: whole plate)
+  core::Vector2 point = core::Vector2::Zero();        // foot of the axis from the load point [m]
+  core::Vector2 direction = core::Vector2(0.0, 1.0);  // unit; PlateAxis convention (plate_motion.h)
+  double rotationPerN = 0.0;  // static rotation about the axis per newton at the load point [rad/N]
+  double arm = 0.0;           // signed arm of the load point [m]
+  double frequencyHz = 0.0;   // natural frequency of the mode [Hz]
+  double zeta = 0.0;          // viscous damping ratio
+  double stiffness() const { return arm / rotationPerN; }  // k = F a / theta [Nm/rad] (eq. 23)
+};
+
 struct StaticSpecimen {
   std::string key;
   std::string name;
@@ -121,12 +139,32 @@ struct StaticSpecimen {
 
   double displacementAt(const core::Vector2& p, double forceN) const;  // [m]
   double testForceN = 300.0;                                           // the thesis's ramp amplitude for this specimen
+
+  // Bending and torsion axes (both present or both absent), or one "lateral"
+  // mode that scales the whole static field when the tables give no arms.
+  std::vector<PlateMode> modes;
+  bool hasAxes() const { return modes.size() == 2; }
+  // Receptance w/F at plate point p and frequency f [m/N]:
+  //   sum_r theta_r signedArm_r(p) / (1 - (f/f_r)^2 + 2 i zeta_r f/f_r);
+  // at f = 0 it is displacementAt(p, 1).
+  std::complex<double> receptance(const core::Vector2& p, double frequencyHz) const;
 };
 
 // The static model of a catalogue specimen with static data: k_lat and a_tw
 // from its table, the twist axis inclined by the tabulated angle (forks,
 // Tables 10, 13) or an assumed 30 degrees in the plate plane, load point at the
 // plate origin, four lasers on a 200 mm x 150 mm plate around it.
+// Its plate modes: where the table prints bending and torsion arms and
+// stiffnesses (Tables 4, 7, 9, 10, 13), theta_b = a_bend / k_bend and
+// theta_t = a_tors / k_tors per newton are laid out with the static
+// theta_s = 1 / (k_lat a_tw) as a triangle of rotation vectors
+// (theta_s = theta_b + theta_t, eq. 25, 26): the torsion axis on the side of
+// the v axis (the fork's stems), the bending axis on the other; the torsion
+// arm is the printed one and the bending arm closes eq. 22 at the load point
+// (the printed arms balance eq. 24 only to 0.1..2%, reference/notes.md), so the
+// model's static field is the tabulated twist exactly. Frequencies: the
+// "Lateral"/"Bending" and "Torsional"/"Wheel" modes of the modal table. Without
+// printed arms (Table 5) one "lateral" mode at the first natural frequency.
 core::Result<StaticSpecimen> staticSpecimen(const std::string& key);
 
 }  // namespace mozzi::devices::sim

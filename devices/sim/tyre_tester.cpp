@@ -122,7 +122,10 @@ class TyreModel final : public SignalModel {
     s_ = *setup;
     fs_ = config.sampleRateHz;
     const std::string mode = parameterText(config.parameters, "mode", "harmonic-yaw");
-    mode_ = mode == "slip-sweep" ? Mode::SlipSweep : mode == "camber-sweep" ? Mode::CamberSweep : Mode::HarmonicYaw;
+    mode_ = mode == "slip-sweep"     ? Mode::SlipSweep
+            : mode == "camber-sweep" ? Mode::CamberSweep
+            : mode == "steady-state" ? Mode::Steady
+                                     : Mode::HarmonicYaw;
     const double yawLimit = parameterReal(config.parameters, "servo.yaw_limit_deg", 6.0) * kDeg;
     const double camberLimit = parameterReal(config.parameters, "servo.camber_limit_deg", 45.0) * kDeg;
     amplitude_ = parameterReal(config.parameters, "yaw.amplitude_deg", 1.5) * kDeg;
@@ -137,7 +140,7 @@ class TyreModel final : public SignalModel {
         return core::makeError(core::ErrorCode::InvalidArgument,
                                std::string(what) +
                                    " exceeds the servo limit (raise servo.*_limit_deg up to the "
-                                   "machine's 10 deg yaw, 54 deg camber, §1.8)",
+                                   "machine's 10 deg yaw, 55 deg camber, §1.8, appendix 2)",
                                where);
       return {};
     };
@@ -146,9 +149,12 @@ class TyreModel final : public SignalModel {
     } else if (mode_ == Mode::SlipSweep) {
       if (auto r = beyond(slipMax_, yawLimit, "the slip sweep"); !r) return r;
       if (auto r = beyond(fixedCamber_, camberLimit, "the camber"); !r) return r;
-    } else {
+    } else if (mode_ == Mode::CamberSweep) {
       if (auto r = beyond(camberMax_, camberLimit, "the camber sweep"); !r) return r;
       if (auto r = beyond(fixedSlip_, yawLimit, "the slip angle"); !r) return r;
+    } else {
+      if (auto r = beyond(fixedSlip_, yawLimit, "the slip angle"); !r) return r;
+      if (auto r = beyond(fixedCamber_, camberLimit, "the camber"); !r) return r;
     }
     auto freqs = parseFrequencies(parameterText(config.parameters, "yaw.frequencies_hz", "0.42,0.84,1.26,1.68,2.10"));
     if (!freqs) return freqs.error();
@@ -212,7 +218,7 @@ class TyreModel final : public SignalModel {
   }
 
  private:
-  enum class Mode { HarmonicYaw, SlipSweep, CamberSweep };
+  enum class Mode { HarmonicYaw, SlipSweep, CamberSweep, Steady };
   struct Step {
     double start;
     double frequency;
@@ -244,7 +250,8 @@ class TyreModel final : public SignalModel {
         return st ? amplitude_ * std::sin(2.0 * kPi * st->frequency * (t - st->start)) : 0.0;
       }
       case Mode::SlipSweep: return triangle(t, slipMax_);
-      case Mode::CamberSweep: return fixedSlip_;
+      case Mode::CamberSweep:
+      case Mode::Steady: return fixedSlip_;
     }
     return 0.0;
   }
@@ -256,7 +263,8 @@ class TyreModel final : public SignalModel {
         return st ? amplitude_ * w * std::cos(w * (t - st->start)) : 0.0;
       }
       case Mode::SlipSweep: return triangleRate(t, slipMax_);
-      case Mode::CamberSweep: return 0.0;
+      case Mode::CamberSweep:
+      case Mode::Steady: return 0.0;
     }
     return 0.0;
   }
@@ -305,8 +313,9 @@ Capabilities tyreTesterCapabilities() {
   caps.inputs = {simInput("yaw rate gyro", false),      simInput("lateral force Fy", false),
                  simInput("aligning moment Mz", false), simInput("spin-axis moment My", false),
                  simInput("yaw angle (servo)", false),  simInput("camber angle (servo)", false)};
-  caps.outputs = {OutputSpec{"yaw servo", "deg", -10.0, 10.0}, OutputSpec{"camber servo", "deg", -54.0, 54.0},
-                  OutputSpec{"disk speed", "km/h", 0.0, 50.0}};
+  caps.outputs = {OutputSpec{"yaw servo", "deg", -kTyreTesterMaxYawDeg, kTyreTesterMaxYawDeg},
+                  OutputSpec{"camber servo", "deg", -kTyreTesterMaxCamberDeg, kTyreTesterMaxCamberDeg},
+                  OutputSpec{"disk speed", "km/h", 0.0, kTyreTesterMaxSpeedKmh}};
   caps.rates = RateSpec{1.0, 10000.0, 60000.0, 0.0, true};
   caps.triggers = {TriggerKind::Immediate};
   caps.fifoSamples = mcc::kFifoSamples;
@@ -374,9 +383,10 @@ Capabilities tyreTesterCapabilities() {
                     "",
                     std::nullopt,
                     std::nullopt,
-                    {"harmonic-yaw", "slip-sweep", "camber-sweep"},
+                    {"harmonic-yaw", "slip-sweep", "camber-sweep", "steady-state"},
                     std::string("harmonic-yaw"),
-                    "harmonic yaw for the relaxation length (§1.9), or a steady side-slip or camber sweep"},
+                    "harmonic yaw for the relaxation length (§1.9), a side-slip or camber sweep, or one held "
+                    "steady-state set-point (sweep.slip_deg, sweep.camber_deg; appendix 2)"},
       ParameterSpec{"yaw.amplitude_deg",
                     "Yaw amplitude",
                     ParameterType::Real,
@@ -418,10 +428,10 @@ Capabilities tyreTesterCapabilities() {
                     ParameterType::Real,
                     "deg",
                     0.0,
-                    54.0,
+                    kTyreTesterMaxCamberDeg,
                     {},
                     45.0,
-                    "the machine reaches 54 deg; 45 deg by default (§1.8)"},
+                    "the machine reaches 55 deg (appendix 2; §1.8 prints 54); 45 deg by default (§1.8)"},
       ParameterSpec{"sweep.slip_max_deg",
                     "Slip sweep amplitude",
                     ParameterType::Real,
@@ -436,7 +446,7 @@ Capabilities tyreTesterCapabilities() {
                     ParameterType::Real,
                     "deg",
                     0.1,
-                    54.0,
+                    kTyreTesterMaxCamberDeg,
                     {},
                     45.0,
                     "camber triangle 0 -> +max -> -max -> 0"},
@@ -449,10 +459,24 @@ Capabilities tyreTesterCapabilities() {
                     {},
                     60.0,
                     "slow enough to be quasi-static (sigma/V is about 0.1 s at 5 km/h)"},
-      ParameterSpec{
-          "sweep.camber_deg", "Camber during a slip sweep", ParameterType::Real, "deg", -54.0, 54.0, {}, 0.0, ""},
-      ParameterSpec{
-          "sweep.slip_deg", "Slip during a camber sweep", ParameterType::Real, "deg", -10.0, 10.0, {}, 0.0, ""},
+      ParameterSpec{"sweep.camber_deg",
+                    "Camber during a slip sweep",
+                    ParameterType::Real,
+                    "deg",
+                    -kTyreTesterMaxCamberDeg,
+                    kTyreTesterMaxCamberDeg,
+                    {},
+                    0.0,
+                    "also the held camber of a steady-state set-point"},
+      ParameterSpec{"sweep.slip_deg",
+                    "Slip during a camber sweep",
+                    ParameterType::Real,
+                    "deg",
+                    -kTyreTesterMaxYawDeg,
+                    kTyreTesterMaxYawDeg,
+                    {},
+                    0.0,
+                    "also the held side-slip of a steady-state set-point"},
       ParameterSpec{"noise.force_rms", "Load-cell noise", ParameterType::Real, "N", 0.0, 100.0, {}, 2.0, ""},
       ParameterSpec{"noise.gyro_rms", "Gyro noise", ParameterType::Real, "rad/s", 0.0, 1.0, {}, 0.002, ""},
       ParameterSpec{"noise.moment_rms", "Moment noise", ParameterType::Real, "N m", 0.0, 100.0, {}, 0.05, ""},

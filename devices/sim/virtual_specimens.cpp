@@ -3,6 +3,7 @@
 #include "core/geometry/mesh_templates.h"
 #include "core/io/project_store.h"
 #include "devices/campaign/demo_campaigns.h"
+#include "devices/rigtests/virtual_rigs.h"
 
 namespace mozzi::devices::sim {
 
@@ -109,8 +110,14 @@ core::Result<void> addSpecimensWithMeshes(DemoContext& demo) {
   return {};
 }
 
+// Step 2: static and dynamic stiffness tests, relaxation and steady-state tyre tests.
+core::Result<void> addRigAndTyreTests(DemoContext& demo) { return rigtests::addDemoRigTests(demo.store); }
+
+// Step 3: finished hammer campaigns (hits and FRF sets) on fork A with wheel and frame A.
+core::Result<void> addHammerCampaigns(DemoContext& demo) { return campaign::addDemoCampaigns(demo.store); }
+
 // The demo, in order; append a step to extend it.
-const DemoStep kDemoSteps[] = {addSpecimensWithMeshes};
+const DemoStep kDemoSteps[] = {addSpecimensWithMeshes, addRigAndTyreTests, addHammerCampaigns};
 
 }  // namespace
 
@@ -122,8 +129,6 @@ core::Result<void> createDemoProject(const std::string& path, const std::string&
     auto done = step(demo);
     if (!done) return done.error();
   }
-  // Finished hammer campaigns (hits and FRF sets) on fork A with wheel and frame A.
-  if (auto r = campaign::addDemoCampaigns(*store); !r) return r;
   return {};
 }
 

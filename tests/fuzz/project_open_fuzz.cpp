@@ -60,8 +60,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)store->rigTest(id);
         (void)store->rigTestRecord(id, 0);
         (void)store->tyreTest(id);
+        (void)store->tyreTestRecord(id, 0);
         (void)store->analysis(id);
       }
+      (void)store->rigTests();
+      (void)store->tyreTests();
     }
   }
   cleanup();

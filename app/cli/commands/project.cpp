@@ -35,6 +35,26 @@ int info(const std::string& file, bool json, std::ostream& out, std::ostream& er
   if (!frfSets) return fail(err, "info", frfSets.error());
   auto modal = store->modalResults();
   if (!modal) return fail(err, "info", modal.error());
+  auto rigTests = store->rigTests();
+  if (!rigTests) return fail(err, "info", rigTests.error());
+  auto tyreTests = store->tyreTests();
+  if (!tyreTests) return fail(err, "info", tyreTests.error());
+  auto testJson = [](const core::io::TestInfo& t) {
+    return nlohmann::json{{"id", t.id},
+                          {"specimen", t.specimenName},
+                          {"name", t.name},
+                          {"kind", t.kind},
+                          {"status", core::io::testStatusName(t.status)},
+                          {"status_note", t.statusNote},
+                          {"recorded_utc", t.recordedUtc},
+                          {"records", t.recordCount},
+                          {"results", t.resultCount}};
+  };
+  auto testLine = [&out](const core::io::TestInfo& t) {
+    out << "    " << t.id << " " << t.specimenName << " / " << t.name << " (" << t.kind << ", "
+        << core::io::testStatusName(t.status) << "): " << t.recordCount << " records, " << t.resultCount << " results"
+        << (t.statusNote.empty() ? "" : "; " + t.statusNote) << "\n";
+  };
 
   // Per campaign: hits accepted / rejected and stored bytes.
   struct CampaignLine {
@@ -93,6 +113,10 @@ int info(const std::string& file, bool json, std::ostream& out, std::ostream& er
     for (const auto& m : *modal) {
       j["modal_results"].push_back({{"id", m.id}, {"name", m.name}, {"method", m.method}, {"modes", m.modeCount}});
     }
+    j["rig_tests"] = nlohmann::json::array();
+    for (const auto& t : *rigTests) j["rig_tests"].push_back(testJson(t));
+    j["tyre_tests"] = nlohmann::json::array();
+    for (const auto& t : *tyreTests) j["tyre_tests"].push_back(testJson(t));
     out << j.dump(2) << "\n";
     return kExitOk;
   }
@@ -112,6 +136,10 @@ int info(const std::string& file, bool json, std::ostream& out, std::ostream& er
   if (!modal->empty()) out << "  modal results:\n";
   for (const auto& m : *modal)
     out << "    " << m.id << " " << m.name << " (" << m.method << "): " << m.modeCount << " modes\n";
+  if (!rigTests->empty()) out << "  rig tests:\n";
+  for (const auto& t : *rigTests) testLine(t);
+  if (!tyreTests->empty()) out << "  tyre tests:\n";
+  for (const auto& t : *tyreTests) testLine(t);
   out << "  rows per table:\n";
   for (const auto& c : summary->counts) out << "    " << c.table << ": " << c.rows << "\n";
   return kExitOk;

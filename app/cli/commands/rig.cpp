@@ -1,11 +1,18 @@
 // mozzi-cli rig: the acquisition drivers, the devices they find, and what a
 // device can do (capabilities and parameter specs, as the GUI forms see them).
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "app/cli/args.h"
 #include "app/cli/command.h"
+#include "core/io/project_store.h"
+#include "core/tire/tire_csv.h"
 #include "devices/common/driver.h"
+#include "devices/rigtests/stiffness_tests.h"
+#include "devices/rigtests/tyre_tests.h"
+#include "devices/rigtests/virtual_rigs.h"
+#include "devices/sim/sim_drivers.h"
 #include "devices/sim/specimen_catalogue.h"
 
 namespace mozzi::cli {
@@ -14,7 +21,18 @@ namespace {
 constexpr const char* kUsage =
     "Usage: mozzi-cli rig list [--json]\n"
     "       mozzi-cli rig caps DRIVER [--file RECORDING] [--json]\n"
-    "  --file  for sim-replay: the UFF file whose channels to show\n";
+    "       mozzi-cli rig run PROJECT.mozzi --specimen NAME --rig sim-stiffness --test static|dynamic\n"
+    "                     [--force N] [--frequencies LIST] [--seed S] [--name TEST] [--json]\n"
+    "       mozzi-cli rig run PROJECT.mozzi --specimen NAME --rig sim-tyre-tester --test relaxation|steady-state\n"
+    "                     [--speed V] [--pressure BAR] [--frequencies LIST] [--seed S] [--name TEST] [--json]\n"
+    "  --file         for sim-replay: the UFF file whose channels to show\n"
+    "  --specimen     a virtual specimen key (rig list) or a project specimen's name\n"
+    "  --force        static: ramp peak [N] (default the thesis's: 300 N, fork B 500 N); dynamic: sine set-point [N]\n"
+    "  --frequencies  comma-separated [Hz]: stiffness rig 1..45 (default 1,2,5,10,15); tyre yaw\n"
+    "                 (default 0.42,0.84,1.26,1.68,2.1)\n"
+    "  --speed        disk speed [m/s] (default 5 km/h = 1.389 m/s; machine limit 50 km/h)\n"
+    "  --pressure     tyre inflation [bar] (default 2)\n"
+    "  --seed         simulation seed (default 1)\n";
 
 nlohmann::json valueJson(const devices::ParameterValue& v) {
   return std::visit([](const auto& x) { return nlohmann::json(x); }, v);
@@ -162,7 +180,244 @@ int caps(const std::string& driver, const std::string& file, bool json, std::ost
   return kExitOk;
 }
 
+// ---------------------------------------------------------------- rig run
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A quantity as JSON: SI value and uncertainty; angles (rad) as "<key>_deg" in degrees.
+void putQuantity(nlohmann::json& j, const devices::rigtests::Quantity& q) {
+  const bool angle = q.unit == "rad";
+  const double k = angle ? 180.0 / kPi : 1.0;
+  j[angle ? q.key + "_deg" : q.key] = {
+      {"value", q.value * k}, {"uncertainty", q.uncertainty * k}, {"unit", angle ? "deg" : q.unit}, {"label", q.label}};
+}
+
+nlohmann::json quantitiesJson(const std::vector<devices::rigtests::Quantity>& qs) {
+  nlohmann::json j = nlohmann::json::object();
+  nlohmann::json mf = nlohmann::json::object();
+  for (const auto& q : qs) {
+    if (q.key.rfind("mf_", 0) == 0) {
+      nlohmann::json m;
+      putQuantity(m, devices::rigtests::Quantity{q.key.substr(3), q.label, q.value, q.unit, q.uncertainty});
+      mf.update(m);
+    } else {
+      putQuantity(j, q);
+    }
+  }
+  if (!mf.empty()) j["magic_formula"] = mf;
+  return j;
+}
+
+nlohmann::json outcomeJson(const devices::rigtests::Outcome& o, const std::string& rig, const std::string& test,
+                           const devices::rigtests::SpecimenChoice& who) {
+  nlohmann::json j;
+  j["rig"] = rig;
+  j["test"] = test;
+  j["specimen"] = {
+      {"id", who.specimenId}, {"name", who.projectName}, {"key", who.catalogueKey}, {"created", who.created}};
+  j["stored_test_id"] = o.testId ? nlohmann::json(*o.testId) : nlohmann::json(nullptr);
+  j["stored_in"] = rig == "sim-tyre-tester" ? "tyre_test" : "rig_test";
+  j["rig_setup_id"] = o.rigSetupId ? nlohmann::json(*o.rigSetupId) : nlohmann::json(nullptr);
+  j["name"] = o.testName;
+  j["status"] = core::io::testStatusName(o.status);
+  j["status_note"] = o.note;
+  j["results"] = quantitiesJson(o.results);
+  j["steps"] = nlohmann::json::array();
+  for (const auto& s : o.steps) {
+    nlohmann::json step = quantitiesJson(s.results);
+    step["step"] = s.step;
+    step["label"] = s.label;
+    step["ok"] = s.ok;
+    step["note"] = s.note;
+    j["steps"].push_back(step);
+  }
+  return j;
+}
+
+void printQuantities(std::ostream& out, const std::vector<devices::rigtests::Quantity>& qs, const char* indent) {
+  for (const auto& q : qs) {
+    const bool angle = q.unit == "rad";
+    const double k = angle ? 180.0 / kPi : 1.0;
+    out << indent << q.label << " (" << (angle ? q.key + "_deg" : q.key) << "): " << q.value * k;
+    if (q.uncertainty > 0) out << " +/- " << q.uncertainty * k;
+    out << " " << (angle ? "deg" : q.unit) << "\n";
+  }
+}
+
+int runTest(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
+  namespace rt = devices::rigtests;
+  const auto& pos = a.positional();
+  auto usage = [&](const std::string& what) {
+    err << "mozzi-cli rig run: " << what << "\n" << kUsage;
+    return kExitUsage;
+  };
+  if (pos.size() != 2) return usage("one project file is needed");
+  const std::string file = pos[1];
+  const auto specimen = a.value("--specimen");
+  const auto rig = a.value("--rig");
+  const auto test = a.value("--test");
+  if (!specimen || !rig || !test) return usage("--specimen, --rig and --test are required");
+  const bool stiffness = *rig == "sim-stiffness", tyre = *rig == "sim-tyre-tester";
+  if (!stiffness && !tyre) return usage("--rig must be sim-stiffness or sim-tyre-tester, not '" + *rig + "'");
+  if (stiffness && *test != "static" && *test != "dynamic")
+    return usage("--test for sim-stiffness is static or dynamic, not '" + *test + "'");
+  if (tyre && *test != "relaxation" && *test != "steady-state")
+    return usage("--test for sim-tyre-tester is relaxation or steady-state, not '" + *test + "'");
+  if (stiffness && (a.value("--speed") || a.value("--pressure")))
+    return usage("--speed and --pressure are options of the tyre tester");
+  if (tyre && a.value("--force")) return usage("--force is an option of the stiffness rig");
+  if (tyre && *test == "steady-state" && a.value("--frequencies"))
+    return usage("--frequencies is not an option of the steady-state test");
+  if (stiffness && *test == "static" && a.value("--frequencies"))
+    return usage("--frequencies is not an option of the static test");
+  std::optional<double> force, speed, pressure, seedValue;
+  for (auto [name, dst] : {std::pair{"--force", &force}, std::pair{"--speed", &speed},
+                           std::pair{"--pressure", &pressure}, std::pair{"--seed", &seedValue}}) {
+    auto v = a.number(name);
+    if (!v) return usage(v.error().describe());
+    *dst = *v;
+  }
+  std::uint64_t seed = 1;
+  if (seedValue) {
+    if (*seedValue < 0 || *seedValue > 4294967295.0 || std::floor(*seedValue) != *seedValue)
+      return usage("--seed must be an integer from 0 to 4294967295");
+    seed = static_cast<std::uint64_t>(*seedValue);
+  }
+  std::optional<std::vector<double>> frequencies;
+  if (auto text = a.value("--frequencies")) {
+    auto t = core::tire::parseNumberTuples(*text, 1, "--frequencies");
+    if (!t) return usage(t.error().describe());
+    frequencies.emplace();
+    for (const auto& x : *t) frequencies->push_back(x.front());
+    if (frequencies->empty()) return usage("--frequencies is empty");
+  }
+  const bool json = a.flag("--json");
+  const std::string name = a.value("--name").value_or("");
+
+  auto store = core::io::ProjectStore::open(file);
+  if (!store) {
+    err << "mozzi-cli rig run: " << store.error().describe() << "\n";
+    return kExitFailure;
+  }
+  if (store->isReadOnly()) {
+    err << "mozzi-cli rig run: " << file << " is open read-only (" << store->readOnlyReason()
+        << "); the test could not be stored\n";
+    return kExitFailure;
+  }
+  auto fail = [&](const core::Error& e) {
+    err << "mozzi-cli rig run: " << e.describe() << "\n";
+    return kExitFailure;
+  };
+  // Everything is checked before the project or a device is touched: the
+  // specimen's key (a project name is looked up without adding anything), the
+  // set-up and the settings.
+  std::string key = *specimen;
+  if (!devices::sim::findSpecimen(key)) {
+    auto who = rt::resolveSpecimen(*store, *specimen);  // a project name: adds nothing
+    if (!who) return fail(who.error());
+    key = who->catalogueKey;
+  }
+  const auto* e = devices::sim::findSpecimen(key);
+  if (stiffness && !e->statics) {
+    std::string keys;
+    for (const auto& x : devices::sim::staticSpecimenKeys()) keys += (keys.empty() ? "" : ", ") + x;
+    return fail(core::makeError(core::ErrorCode::InvalidArgument,
+                                "the thesis has no static test of this specimen; the stiffness rig runs on " + keys,
+                                "--specimen " + *specimen));
+  }
+  if (tyre && e->kind != "tyre")
+    return fail(core::makeError(core::ErrorCode::InvalidArgument, "the tyre tester runs on tyres (tyre-...)",
+                                "--specimen " + *specimen));
+  std::optional<rt::StiffnessRigSetup> stiffSetup;
+  std::optional<rt::TyreRigSetup> tyreSetup;
+  rt::StaticTestSettings staticSettings;
+  rt::DynamicTestSettings dynamicSettings;
+  rt::RelaxationSettings relaxationSettings;
+  rt::SteadyStateSettings steadySettings;
+  if (stiffness) {
+    auto setup = rt::simulatedStiffnessSetup(key, seed, false);
+    if (!setup) return fail(setup.error());
+    stiffSetup = *setup;
+    staticSettings.peakForceN = force.value_or(e->statics->testForceN);
+    dynamicSettings.amplitudeN = force.value_or(e->statics->testForceN);
+    if (frequencies) dynamicSettings.frequenciesHz = *frequencies;
+    auto ok = *test == "static" ? rt::checkStaticSettings(*stiffSetup, staticSettings)
+                                : rt::checkDynamicSettings(*stiffSetup, dynamicSettings);
+    if (!ok) return fail(ok.error());
+  } else {
+    auto setup = rt::simulatedTyreSetup(key, pressure.value_or(2.0), seed, false);
+    if (!setup) return fail(setup.error());
+    tyreSetup = *setup;
+    if (speed) relaxationSettings.speedKmh = steadySettings.speedKmh = *speed * 3.6;
+    if (frequencies) relaxationSettings.frequenciesHz = *frequencies;
+    auto ok = *test == "relaxation" ? rt::checkRelaxationSettings(*tyreSetup, relaxationSettings)
+                                    : rt::checkSteadyStateSettings(*tyreSetup, steadySettings);
+    if (!ok) return fail(ok.error());
+  }
+  auto who = rt::resolveSpecimen(*store, key == *specimen ? key : *specimen);
+  if (!who) return fail(who.error());
+
+  rt::Callbacks cb;
+  if (!json) cb.log = [&out](const std::string& line) { out << line << "\n"; };
+  const rt::StoreTarget target{&*store, who->specimenId, name};
+  const std::string label = *rig + " " + *test;
+  auto report = [&](const rt::Outcome& o) {
+    if (json) {
+      out << outcomeJson(o, *rig, *test, *who).dump(2) << "\n";
+    } else {
+      out << label << " on " << who->projectName << " (" << who->catalogueKey
+          << "): " << core::io::testStatusName(o.status) << (o.note.empty() ? "" : " (" + o.note + ")") << "\n";
+      for (const auto& s : o.steps) {
+        out << "  step " << s.step << " " << s.label << (s.ok ? "" : " [no result]")
+            << (s.note.empty() ? "" : ": " + s.note) << "\n";
+        // A step that holds the whole test's results (the static ramp) prints them once, below.
+        if (o.steps.size() != 1 || s.results.size() != o.results.size()) printQuantities(out, s.results, "    ");
+      }
+      out << "  results:\n";
+      printQuantities(out, o.results, "    ");
+      if (o.testId)
+        out << "  stored as " << (tyre ? "tyre" : "rig") << " test " << *o.testId << " '" << o.testName << "'\n";
+    }
+    return o.status == core::io::TestStatus::Complete ? kExitOk : kExitFailure;
+  };
+
+  if (stiffness) {
+    auto dev = devices::sim::makeStiffnessRigDriver()->create(
+        devices::DeviceDescriptor{"sim-stiffness", "", 0, 0, "", "sim:0"});
+    if (!dev) return fail(dev.error());
+    if (*test == "static") {
+      auto o = rt::runStaticStiffnessTest(**dev, nullptr, *stiffSetup, staticSettings, target, cb);
+      if (!o) return fail(o.error());
+      return report(*o);
+    }
+    auto o = rt::runDynamicStiffnessTest(**dev, nullptr, *stiffSetup, dynamicSettings, target, cb);
+    if (!o) return fail(o.error());
+    return report(*o);
+  }
+  auto dev =
+      devices::sim::makeTyreTesterDriver()->create(devices::DeviceDescriptor{"sim-tyre-tester", "", 0, 0, "", "sim:0"});
+  if (!dev) return fail(dev.error());
+  if (*test == "relaxation") {
+    auto o = rt::runRelaxationTest(**dev, *tyreSetup, relaxationSettings, target, cb);
+    if (!o) return fail(o.error());
+    return report(*o);
+  }
+  auto o = rt::runSteadyStateTest(**dev, *tyreSetup, steadySettings, target, cb);
+  if (!o) return fail(o.error());
+  return report(*o);
+}
+
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  if (!args.empty() && args[0] == "run") {
+    const auto parsed = ParsedArgs::parse(args, OptionSpec{{"--specimen", "--rig", "--test", "--force", "--frequencies",
+                                                            "--seed", "--speed", "--pressure", "--name"},
+                                                           {"--json"}});
+    if (!parsed) {
+      err << parsed.error().describe() << "\n" << kUsage;
+      return kExitUsage;
+    }
+    return runTest(*parsed, out, err);
+  }
   const auto parsed = ParsedArgs::parse(args, OptionSpec{{"--file"}, {"--json"}});
   if (!parsed) {
     err << parsed.error().describe() << "\n" << kUsage;
@@ -177,8 +432,12 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
 }
 
 const CommandRegistrar kRegistrar(
-    {"rig", "list | caps DRIVER [--file RECORDING] [--json]",
-     "acquisition drivers, devices found, virtual specimens, and capabilities and parameters", &run});
+    {"rig",
+     "list | caps DRIVER [--file RECORDING] | run PROJECT.mozzi --specimen NAME --rig sim-stiffness|sim-tyre-tester "
+     "--test static|dynamic|relaxation|steady-state [...] [--json]",
+     "acquisition drivers, devices found, virtual specimens, capabilities and parameters; run a stiffness-rig or "
+     "tyre-tester test into a project",
+     &run});
 
 }  // namespace
 }  // namespace mozzi::cli

@@ -77,14 +77,15 @@ TEST(RigCli, TyreTesterCapabilitiesFollowTheMototiremeter) {
   const CliRun r = run({"rig", "caps", "sim-tyre-tester", "--json"});
   ASSERT_EQ(r.code, kExitOk) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  // §1.8: disk up to 50 km/h, yaw +/-10 deg and camber +/-54 deg servos
-  // (limited to 6 and 45 by default), three load cells and a rate gyro.
+  // §1.8: disk up to 50 km/h, yaw +/-10 deg and camber +/-55 deg servos
+  // (appendix 2; §1.8 prints 54) limited to 6 and 45 by default, three load
+  // cells and a rate gyro.
   std::map<std::string, nlohmann::json> outputs, params;
   for (const auto& o : j.at("outputs")) outputs[o.at("name").get<std::string>()] = o;
   for (const auto& p : j.at("parameters")) params[p.at("key").get<std::string>()] = p;
   EXPECT_DOUBLE_EQ(outputs.at("disk speed").at("max").get<double>(), 50.0);
   EXPECT_DOUBLE_EQ(outputs.at("yaw servo").at("max").get<double>(), 10.0);
-  EXPECT_DOUBLE_EQ(outputs.at("camber servo").at("max").get<double>(), 54.0);
+  EXPECT_DOUBLE_EQ(outputs.at("camber servo").at("max").get<double>(), 55.0);
   EXPECT_DOUBLE_EQ(params.at("servo.yaw_limit_deg").at("default").get<double>(), 6.0);
   EXPECT_DOUBLE_EQ(params.at("servo.camber_limit_deg").at("default").get<double>(), 45.0);
   EXPECT_EQ(params.at("tyre").at("choices").size(), 6u);

@@ -5,8 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 
 #include "devices/common/trigger.h"
+#include "devices/sim/specimen_catalogue.h"
+#include "devices/sim/specimen_models.h"
 
 namespace mozzi::devices::sim {
 namespace {
@@ -242,6 +245,31 @@ TEST(StiffnessRig, LasersQuantiseToFourMicrometres) {
     EXPECT_LE(std::abs(steps - std::round(steps)) * 4e-6, 1.5 * daqLsb) << k;
   }
   EXPECT_GT(v.col(0).maxCoeff(), 990.0);  // the ramp reaches its 1000 N peak at 5 s
+}
+
+// The plate model behind the sine test (StaticSpecimen::receptance): at 0 Hz
+// it is the static twist of the table at every point; where the tables print
+// bending and torsion arms and stiffnesses, the torsion mode keeps the printed
+// arm and stiffness (the bending arm closes eq. 22), and the two modes'
+// compliances add up to the twist's (eq. 24) exactly.
+TEST(StiffnessRig, PlateModesReproduceTheStaticTwist) {
+  for (const auto& key : staticSpecimenKeys()) {
+    const auto s = staticSpecimen(key).value();
+    ASSERT_FALSE(s.modes.empty()) << key;
+    for (const auto& p : s.laserPoints) {
+      const double w = s.displacementAt(p, 1.0);
+      EXPECT_NEAR(std::real(s.receptance(p, 0.0)), w, 1e-12 * std::abs(s.displacementAt(s.loadPoint, 1.0))) << key;
+      EXPECT_EQ(std::imag(s.receptance(p, 0.0)), 0.0) << key;
+    }
+    const auto* e = findSpecimen(key);
+    if (!s.hasAxes()) continue;
+    EXPECT_NEAR(s.modes[1].arm, e->statics->torsArm, 1e-12) << key;
+    EXPECT_NEAR(s.modes[1].stiffness() / e->statics->torsStiffness, 1.0, 1e-9) << key;
+    const double lhs = 1.0 / s.lateralStiffness;  // a_tw^2 / k_tw with k_tw = k_lat a_tw^2
+    const double rhs = s.modes[0].arm * s.modes[0].arm / s.modes[0].stiffness() +
+                       s.modes[1].arm * s.modes[1].arm / s.modes[1].stiffness();
+    EXPECT_NEAR(rhs / lhs, 1.0, 1e-9) << key;
+  }
 }
 
 }  // namespace
