@@ -23,6 +23,10 @@ Result<std::int64_t> queryInt(sqlite3* db, const char* sql, const std::string& w
 
 std::string nowUtc();
 
+// "file:" URI of a path for sqlite3_open_v2 with SQLITE_OPEN_URI ('%', '?',
+// '#' and non-ASCII bytes percent-encoded; a relative path stays relative).
+std::string fileUri(const std::string& path);
+
 // Text of a column; "" for NULL (a corrupt or hostile file may hold NULLs
 // where the schema promises text).
 std::string columnText(sqlite3_stmt* stmt, int column);
@@ -31,6 +35,10 @@ std::string columnText(sqlite3_stmt* stmt, int column);
 // an error naming `where`.
 Result<Dof> columnDof(sqlite3_stmt* stmt, int nodeColumn, int directionColumn, const std::string& where);
 std::optional<Dof> columnOptionalDof(sqlite3_stmt* stmt, int nodeColumn, int directionColumn);
+
+// CRC-32 of the content of an empty mesh (project_data.cpp, "Checksums"), the
+// value a new specimen starts with.
+std::uint32_t emptyMeshChecksum();
 
 class Statement {
  public:

@@ -272,6 +272,14 @@ Manoeuvre steadyTurningManoeuvre(double speed, double torque, double rampTime, d
 Result<SlalomSummary> summariseSlalom(const std::vector<WheelchairState>& h, double from, double f) {
   if (!std::isfinite(f) || f <= 0.0)
     return makeError(ErrorCode::InvalidArgument, "slalom frequency must be positive", kWhere);
+  if (f > kMaxSlalomFrequencyHz) {
+    return makeError(ErrorCode::InvalidArgument,
+                     "slalom frequency " + std::to_string(f) + " Hz is above " + std::to_string(kMaxSlalomFrequencyHz) +
+                         " Hz: the 10 ms output sampling would alias the torque input",
+                     kWhere);
+  }
+  if (!std::isfinite(duration) || duration > 3600.0)
+    return makeError(ErrorCode::InvalidArgument, "slalom duration must be at most 3600 s", kWhere);
   SlalomSummary s;
   // The drift of y (a heading offset left by the start transient) is removed
   // as c0 + c1 t fitted together with the slalom's fundamental

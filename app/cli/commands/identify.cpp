@@ -10,6 +10,7 @@
 
 #include "app/cli/args.h"
 #include "app/cli/command.h"
+#include "app/cli/output.h"
 #include "core/io/uff/uff.h"
 #include "core/modal/lsce.h"
 #include "core/modal/plscf.h"
@@ -43,40 +44,40 @@ struct Row {
   double mpc = 0;
 };
 
+// The option table: a band within what a UFF file can sample (1 MHz); the
+// model order bounds the pLSCF/LSCE solve size.
+const OptionSpec kSpec{
+    {"--method", "--stabilization", "--modes"},
+    {"--json"},
+    {{"--band", "band in Hz, LO < HI", {{"LO", closed(0, 1e6, "Hz")}, {"HI", aboveTo(0, 1e6, "Hz")}}, ':'},
+     {"--max-order", wholeNumber(8, 400), "largest model order"}},
+    {"--stabilization", "--modes"}};
+
 int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  OptionSpec spec;
-  spec.valued = {"--band", "--method", "--max-order", "--stabilization", "--modes"};
-  spec.flags = {"--json"};
-  auto parsed = ParsedArgs::parse(args, spec);
-  if (!parsed) return usage(err, parsed.error().message);
+  auto parsed = ParsedArgs::parse(args, kSpec);
+  if (!parsed) {
+    if (exitCodeFor(parsed.error()) == kExitUsage) return usage(err, parsed.error().message);
+    return fail(err, parsed.error());
+  }
   if (parsed->positional().size() != 1) return usage(err, "expected one FRF file");
-  const auto bandText = parsed->value("--band");
-  if (!bandText) return usage(err, "--band LO:HI is required");
-  double lo = 0, hi = 0;
-  {
-    const auto colon = bandText->find(':');
-    char* end = nullptr;
-    bool ok = colon != std::string::npos;
-    if (ok) {
-      const std::string a = bandText->substr(0, colon), b = bandText->substr(colon + 1);
-      lo = std::strtod(a.c_str(), &end);
-      ok = !a.empty() && *end == '\0';
-      hi = std::strtod(b.c_str(), &end);
-      ok = ok && !b.empty() && *end == '\0' && std::isfinite(lo) && std::isfinite(hi) && lo >= 0 && hi > lo;
-    }
-    if (!ok) return usage(err, "--band must be LO:HI in Hz with 0 <= LO < HI (got '" + *bandText + "')");
+  if (!parsed->value("--band")) return usage(err, "--band LO:HI is required");
+  const auto band = parsed->numbers("--band");
+  const double lo = band.at(0), hi = band.at(1);
+  if (!(hi > lo)) {
+    err << "mozzi-cli identify: option --band needs LO < HI (got '" << *parsed->value("--band") << "')\n";
+    return kExitFailure;
   }
   const std::string method = parsed->value("--method").value_or("plscf");
   if (method != "plscf" && method != "lsce" && method != "circle" && method != "peak") {
     return usage(err, "unknown --method '" + method + "' (available: plscf, lsce, circle, peak)");
   }
   int maxOrder = 60;
-  auto mo = parsed->number("--max-order");
-  if (!mo) return usage(err, mo.error().message);
-  if (mo->has_value()) {
-    if (!(**mo >= 8 && **mo <= 400 && std::floor(**mo) == **mo))
-      return usage(err, "--max-order must be an integer in 8..400");
-    maxOrder = static_cast<int>(**mo);
+  if (auto mo = parsed->number("--max-order"); mo && mo->has_value()) maxOrder = static_cast<int>(**mo);
+  if (parsed->value("--stabilization") && method != "plscf" && method != "lsce") {
+    return usage(err, "--stabilization needs --method plscf or lsce");
+  }
+  if (int rc = refuseOutputsOntoInputs(*parsed, kSpec, {parsed->positional()[0]}, "identify", err); rc != kExitOk) {
+    return rc;
   }
 
   auto file = uff::readFile(parsed->positional()[0]);
@@ -188,7 +189,7 @@ const CommandRegistrar kRegistrar({"identify",
                                    "FRF.uff --band LO:HI [--method plscf|lsce|circle|peak] [--max-order N] "
                                    "[--stabilization OUT.csv] [--modes OUT.uff] [--json]",
                                    "Modal identification: frequencies, damping (zeta, eta), standard errors, MPC",
-                                   identifyCommand});
+                                   identifyCommand, &kSpec});
 
 }  // namespace
 }  // namespace mozzi::cli

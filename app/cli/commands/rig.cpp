@@ -136,17 +136,16 @@ int caps(const std::string& driver, const std::string& file, bool json, std::ost
     return kExitFailure;
   }
   // Capabilities are static data of the driver: no device needs to be present.
-  // A replay's channels come from its recording: open it when one is named.
+  // A replay's channels come from its recording's headers, read by create()
+  // without the samples (so a recording of any size is summarised at once).
+  if (!file.empty() && driver != "sim-replay") {
+    err << "mozzi-cli rig caps: --file is for the sim-replay driver\n";
+    return kExitUsage;
+  }
   auto dev = d->create(devices::DeviceDescriptor{driver, "", 0, 0, "", file});
   if (!dev) {
     err << "mozzi-cli rig caps: " << dev.error().describe() << "\n";
     return kExitFailure;
-  }
-  if (!file.empty()) {
-    if (auto opened = (*dev)->open(); !opened) {
-      err << "mozzi-cli rig caps: " << opened.error().describe() << "\n";
-      return kExitFailure;
-    }
   }
   const auto j = capsJson((*dev)->capabilities());
   if (json) {
@@ -162,8 +161,10 @@ int caps(const std::string& driver, const std::string& file, bool json, std::ost
   return kExitOk;
 }
 
+const OptionSpec kSpec{{"--file"}, {"--json"}};
+
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const auto parsed = ParsedArgs::parse(args, OptionSpec{{"--file"}, {"--json"}});
+  const auto parsed = ParsedArgs::parse(args, kSpec);
   if (!parsed) {
     err << parsed.error().describe() << "\n" << kUsage;
     return kExitUsage;
@@ -178,7 +179,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
 
 const CommandRegistrar kRegistrar(
     {"rig", "list | caps DRIVER [--file RECORDING] [--json]",
-     "acquisition drivers, devices found, virtual specimens, and capabilities and parameters", &run});
+     "acquisition drivers, devices found, virtual specimens, and capabilities and parameters", &run, &kSpec});
 
 }  // namespace
 }  // namespace mozzi::cli
