@@ -121,7 +121,7 @@ core::Result<double> parseInRange(const std::string& text, const NumberRange& ra
     return makeError(ErrorCode::InvalidArgument,
                      what + " is not a number: " + quoted(text) + "; valid: " + range.text(), what);
   }
-  if (!std::isfinite(v) || errno == ERANGE) {
+  if (!std::isfinite(v) || errno == ERANGE || std::fpclassify(v) == FP_SUBNORMAL) {
     // ERANGE: 1e400 overflows to inf, 1e-320 underflows to a subnormal or 0;
     // no quantity here is meant that way.
     return makeError(ErrorCode::InvalidArgument,

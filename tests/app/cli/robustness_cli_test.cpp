@@ -552,5 +552,20 @@ TEST(Robustness, ProjectCheckNamesEveryDamagedRecord) {
   EXPECT_FALSE(fs::exists(in.dir / "damaged.csv"));
 }
 
+// The ranges live in one place (each command's OptionSpec); docs/cli.md must
+// state each of them as the code does (regenerate the table with
+// scripts/cli-ranges-table.sh after changing a range).
+TEST(Robustness, DocsStateEveryRange) {
+  const std::string docs = slurp(std::string(MOZZI_SOURCE_DIR) + "/docs/cli.md");
+  ASSERT_FALSE(docs.empty());
+  for (const auto& c : registeredCommands()) {
+    if (!c.options) continue;
+    for (const auto& n : c.options->numbers) {
+      const std::string row = "| `" + c.name + "` | `" + n.name + "` | " + n.help + " | " + n.rangeText() + " |";
+      EXPECT_NE(docs.find(row), std::string::npos) << "docs/cli.md lacks the row\n" << row;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace mozzi::cli

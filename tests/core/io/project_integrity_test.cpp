@@ -237,10 +237,16 @@ TEST_F(ProjectIntegrityTest, TwoCreatorsAtOnceGiveOneProjectAndOneClearError) {
       child = ::fork();
       ASSERT_GE(child, 0);
       if (child == 0) {
-        auto store = ProjectStore::create(path, "test");
-        if (store) _exit(0);
-        const bool clear = store.error().message.find("exists already") != std::string::npos;
-        _exit(clear ? 10 : 20);
+        int code = 20;
+        {
+          auto store = ProjectStore::create(path, "test");  // closed at the end of the block, as by the CLI
+          if (store) {
+            code = 0;
+          } else if (store.error().message.find("exists already") != std::string::npos) {
+            code = 10;
+          }
+        }
+        _exit(code);
       }
     }
     std::multiset<int> codes;
