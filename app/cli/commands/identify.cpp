@@ -83,7 +83,11 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
   auto file = uff::readFile(parsed->positional()[0]);
   if (!file) return fail(err, file.error());
   auto frf = uff::toFrfMatrix(*file);
-  if (!frf) return fail(err, frf.error());
+  if (!frf) {
+    core::Error e = frf.error();
+    e.where = parsed->positional()[0] + (e.where.empty() ? "" : ", " + e.where);  // name the file
+    return fail(err, e);
+  }
 
   md::ModalModel model;
   std::vector<Row> rows;

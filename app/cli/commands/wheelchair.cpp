@@ -38,7 +38,7 @@ int usage(std::ostream& err, const std::string& msg) {
 const OptionSpec kSpec{{"--out", "--stiffness"},
                        {"--json"},
                        {{"--speed", aboveTo(0, 10, "m/s"), "forward speed"},
-                        {"--torque", closed(-1000, 1000, "N m"), "differential torque T_R - T_L (slalom: amplitude)"},
+                        {"--torque", closed(-1000, 1000, "N m"), "differential torque T_R - T_L (slalom amplitude)"},
                         {"--yaw-rate", closed(-20, 20, "rad/s"), "prescribed yaw rate"},
                         {"--frequency", aboveTo(0, st::kMaxSlalomFrequencyHz, "Hz"), "slalom frequency"},
                         {"--duration", aboveTo(0, 3600, "s"), "simulated time"},
