@@ -303,9 +303,10 @@ class ReplayDriver final : public Driver {
       return core::makeError(core::ErrorCode::InvalidArgument, "descriptor of another driver", d.driver);
     DeviceDescriptor desc = d;
     if (desc.model.empty()) desc.model = kModel;
+    // The channels from the headers when the recording reads; otherwise none
+    // yet, and open() reports what is wrong with the file.
     auto layout = loadRecordingLayout(desc.busPath);
-    if (!layout) return layout.error();
-    return std::unique_ptr<Device>(new ReplayDevice(desc, *layout));
+    return std::unique_ptr<Device>(new ReplayDevice(desc, layout ? *layout : Recording{}));
   }
 };
 
@@ -313,6 +314,15 @@ class ReplayDriver final : public Driver {
 
 std::unique_ptr<Driver> makeReplayDriver() {
   return std::make_unique<ReplayDriver>();
+}
+
+core::Result<Capabilities> replayRecordingCapabilities(const std::string& path) {
+  if (path.empty()) {
+    return core::makeError(core::ErrorCode::InvalidArgument, "no recording named: give the UFF file", kDriverName);
+  }
+  auto layout = loadRecordingLayout(path);
+  if (!layout) return layout.error();
+  return replayCapabilities(&*layout);
 }
 
 }  // namespace mozzi::devices::sim

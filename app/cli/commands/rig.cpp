@@ -6,6 +6,7 @@
 #include "app/cli/args.h"
 #include "app/cli/command.h"
 #include "devices/common/driver.h"
+#include "devices/sim/sim_drivers.h"
 #include "devices/sim/specimen_catalogue.h"
 
 namespace mozzi::cli {
@@ -147,7 +148,13 @@ int caps(const std::string& driver, const std::string& file, bool json, std::ost
     err << "mozzi-cli rig caps: " << dev.error().describe() << "\n";
     return kExitFailure;
   }
-  const auto j = capsJson((*dev)->capabilities());
+  auto capabilities = file.empty() ? core::Result<devices::Capabilities>((*dev)->capabilities())
+                                   : devices::sim::replayRecordingCapabilities(file);
+  if (!capabilities) {
+    err << "mozzi-cli rig caps: " << capabilities.error().describe() << "\n";
+    return kExitFailure;
+  }
+  const auto j = capsJson(*capabilities);
   if (json) {
     out << j.dump(2) << "\n";
     return kExitOk;

@@ -99,12 +99,18 @@ TEST(BicycleFork, HugeInputsGiveAnErrorNotACrash) {
       }
     }
     const auto f = bicycleForkTorsion(p, huge, 0.1, 190.0, 220.0);
-    if (f.ok()) EXPECT_TRUE(std::isfinite(f->damping));
+    if (f.ok()) {
+      EXPECT_TRUE(std::isfinite(f->damping));
+    }
     const auto g = bicycleForkTorsion(p, 20.0, 0.1, 190.0, huge);
-    if (g.ok()) EXPECT_TRUE(std::isfinite(g->stiffnessAlone));
+    if (g.ok()) {
+      EXPECT_TRUE(std::isfinite(g->stiffnessAlone));
+    }
   }
   const auto lumped = forkLumpedModels({1e308, 0.6, 0.8, 0.3, 1e308, 0.25, 1e308, 0.03});
-  if (lumped.ok()) EXPECT_TRUE(std::isfinite(lumped->model3.pureMoment));
+  if (lumped.ok()) {
+    EXPECT_TRUE(std::isfinite(lumped->model3.pureMoment));
+  }
 }
 
 }  // namespace
