@@ -42,8 +42,9 @@ std::string usageText() {
     text << "  " << c.name << std::string(width - c.name.size() + 2, ' ') << c.summary << "\n"
          << "  " << std::string(width + 2, ' ') << "mozzi-cli " << c.name << " " << c.synopsis << "\n";
   }
-  text << "\n'mozzi-cli COMMAND --help' describes one command. Exit status: 0 done, 1 the input\n"
-          "could not be processed, 2 usage error.\n";
+  text << "\n'mozzi-cli COMMAND --help' describes one command with its options' valid ranges.\n"
+          "Exit status: 0 done; 1 the input could not be processed (a file, or a value outside\n"
+          "its range; the message names it); 2 usage error.\n";
   return text.str();
 }
 
@@ -83,6 +84,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (!rest.empty() && (rest.front() == "--help" || rest.front() == "-h")) {
     out << "Usage: mozzi-cli " << it->second.name << " " << it->second.synopsis << "\n" << it->second.summary << "\n";
+    if (it->second.options) out << it->second.options->helpText();
     return kExitOk;
   }
   return it->second.run(rest, out, err);

@@ -8,17 +8,14 @@
 #include "core/gap/structural/model_file.h"
 #include "core/gap/structural/structural_problem.h"
 #include "core/gap/tire/tire_problem.h"
+#include "core/io/text_file.h"
 #include "core/io/uff/uff.h"
 
 namespace mozzi::core::gap {
 namespace {
 
 Result<std::string> readText(const std::string& path, const std::string& what) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return makeError(ErrorCode::IoError, "cannot open the " + what + " file", path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return io::readTextFile(path, what);  // size cap: core/io/text_file.h
 }
 
 bool looksLikeJson(const std::string& text) {

@@ -1,9 +1,12 @@
 #include "core/io/modelab_ascii.h"
 
+#include "core/io/text_file.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 namespace mozzi::core::io {
@@ -25,8 +28,9 @@ bool parseNumber(const char*& p, double& out) {
 }  // namespace
 
 Result<SignalCalcFrf> readSignalCalcAscii(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return makeError(ErrorCode::IoError, "cannot open SignalCalc ASCII file", path);
+  auto text = readTextFile(path, "SignalCalc ASCII");  // size cap: core/io/text_file.h
+  if (!text) return text.error();
+  std::istringstream in(*text);
   SignalCalcFrf out;
   std::string line;
   int lineNo = 0;

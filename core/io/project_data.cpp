@@ -3,7 +3,9 @@
 // explicit transaction (sql::Transaction); readers validate what they read,
 // because a project file may come from anywhere.
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <utility>
@@ -155,6 +157,105 @@ sql::Statement& bindStep(sql::Statement& stmt, int index, const std::optional<in
   return step ? stmt.bind(index, *step) : stmt.bindNull(index);
 }
 
+// CRC-32 (zlib) over a record's content as typed values: integers as int64
+// and doubles as their IEEE-754 bits, both little endian; text as its length
+// (int64) then its bytes. -0.0 is hashed as +0.0, because SQLite stores a
+// REAL with an integral value as an integer and reads it back as +0.0.
+// docs/formats/project.md, "Checksums", lists what each record hashes.
+class ContentCrc {
+ public:
+  ContentCrc& add(std::int64_t v) {
+    std::uint8_t b[8];
+    for (int k = 0; k < 8; ++k) b[k] = static_cast<std::uint8_t>(static_cast<std::uint64_t>(v) >> (8 * k));
+    return bytes(b, 8);
+  }
+  ContentCrc& add(int v) { return add(static_cast<std::int64_t>(v)); }
+  ContentCrc& add(long long v) { return add(static_cast<std::int64_t>(v)); }  // sqlite3_int64
+  ContentCrc& add(double v) {
+    if (v == 0.0) v = 0.0;
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    return add(static_cast<std::int64_t>(bits));
+  }
+  ContentCrc& add(const std::string& s) {
+    add(static_cast<std::int64_t>(s.size()));
+    return bytes(s.data(), s.size());
+  }
+  // Raw blob bytes (the float64 arrays of FRF sets are stored as bytes).
+  ContentCrc& bytes(const void* data, std::size_t size) {
+    crc_ = sampleCrc32Update(crc_, static_cast<const std::uint8_t*>(data), size);
+    return *this;
+  }
+  std::uint32_t value() const { return crc_; }
+
+ private:
+  std::uint32_t crc_ = 0;
+};
+
+// Checks the stored checksum in `column` against `computed`. NULL: the record
+// was written before schema 4 and carries none.
+Result<void> verifyChecksum(sqlite3_stmt* stmt, int column, std::uint32_t computed, const std::string& what,
+                            const std::string& where) {
+  if (sqlite3_column_type(stmt, column) == SQLITE_NULL) return {};
+  const auto stored = static_cast<std::uint64_t>(sqlite3_column_int64(stmt, column));
+  if (stored == computed) return {};
+  char text[96];
+  std::snprintf(text, sizeof text, " (stored CRC-32 %08llx, content gives %08x)",
+                static_cast<unsigned long long>(stored), computed);
+  return makeError(ErrorCode::Corrupt, "checksum mismatch: the " + what + " was damaged after it was written" + text,
+                   where);
+}
+
+std::uint32_t meshChecksum(const StoredMesh& mesh) {
+  // Canonical order: coordinate systems and nodes by label (as mesh() reads
+  // them), lines and faces in stored order.
+  std::vector<const StoredCoordinateSystem*> systems;
+  for (const auto& c : mesh.coordinateSystems) systems.push_back(&c);
+  std::sort(systems.begin(), systems.end(), [](auto* a, auto* b) { return a->label < b->label; });
+  std::vector<const StoredNode*> nodes;
+  for (const auto& n : mesh.nodes) nodes.push_back(&n);
+  std::sort(nodes.begin(), nodes.end(), [](auto* a, auto* b) { return a->label < b->label; });
+  ContentCrc crc;
+  crc.add(static_cast<std::int64_t>(systems.size()));
+  for (const auto* c : systems) {
+    crc.add(c->label).add(c->name).add(static_cast<int>(c->kind));
+    for (int i = 0; i < 3; ++i) crc.add(c->origin[i]);
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) crc.add(c->rotation(i, j));
+    }
+  }
+  crc.add(static_cast<std::int64_t>(nodes.size()));
+  for (const auto* n : nodes) {
+    crc.add(n->label).add(n->definitionCs).add(n->displacementCs);
+    for (int i = 0; i < 3; ++i) crc.add(n->position[i]);
+  }
+  crc.add(static_cast<std::int64_t>(mesh.lines.size()));
+  for (const auto& l : mesh.lines) crc.add(l.nodeA).add(l.nodeB);
+  crc.add(static_cast<std::int64_t>(mesh.faces.size()));
+  for (const auto& f : mesh.faces) crc.add(f.nodeA).add(f.nodeB).add(f.nodeC).add(f.nodeD);
+  return crc.value();
+}
+
+std::uint32_t rigTestChecksum(const StoredRigTest& t) {
+  ContentCrc crc;
+  crc.add(std::string(t.kind == StoredRigTest::Kind::Static ? "static" : "dynamic")).add(t.parametersJson);
+  crc.add(static_cast<std::int64_t>(t.results.size()));
+  for (const auto& r : t.results) crc.add(r.quantity).add(r.value).add(r.unit).add(r.uncertainty);
+  return crc.value();
+}
+
+std::uint32_t tyreTestChecksum(const StoredTyreTest& t) {
+  ContentCrc crc;
+  crc.add(t.kind).add(t.inflationPressurePa).add(t.verticalLoadN).add(t.speedMps);
+  crc.add(static_cast<std::int64_t>(t.points.size()));
+  for (const auto& p : t.points) {
+    crc.add(p.slipAngleRad).add(p.camberRad).add(p.lateralForceN).add(p.aligningMomentNm).add(p.overturningMomentNm);
+  }
+  crc.add(static_cast<std::int64_t>(t.parameters.size()));
+  for (const auto& p : t.parameters) crc.add(p.name).add(p.value).add(p.unit).add(p.uncertainty);
+  return crc.value();
+}
+
 }  // namespace
 
 const char* testStatusName(TestStatus status) {
@@ -172,6 +273,12 @@ TestStatus parseTestStatus(const std::string& name) {
     if (name == testStatusName(s)) return s;
   return TestStatus::Failed;
 }
+
+namespace sql {
+std::uint32_t emptyMeshChecksum() {
+  return meshChecksum(StoredMesh{});
+}
+}  // namespace sql
 
 // --- mesh -----------------------------------------------------------------------
 
@@ -261,6 +368,9 @@ Result<void> ProjectStore::setMesh(std::int64_t specimenId, const StoredMesh& me
     face.bind(1, specimenId).bind(2, *a).bind(3, *b).bind(4, *c).bind(5, d);
     if (face.step() != SQLITE_DONE) return sqliteError(db_, "cannot store a face", where);
   }
+  sql::Statement crc(db_, "UPDATE specimen SET mesh_crc32 = ?1 WHERE id = ?2");
+  crc.bind(1, static_cast<std::int64_t>(meshChecksum(mesh))).bind(2, specimenId);
+  if (crc.step() != SQLITE_DONE) return sqliteError(db_, "cannot store the mesh checksum", where);
   return tx.commit();
 }
 
@@ -336,6 +446,11 @@ Result<StoredMesh> ProjectStore::mesh(std::int64_t specimenId) const {
       mesh.faces.push_back(f);
     }
     if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read faces", where);
+  }
+  sql::Statement crc(db_, ("SELECT " + crcColumn("mesh_crc32") + " FROM specimen WHERE id = ?1").c_str());
+  crc.bind(1, specimenId);
+  if (crc.step() == SQLITE_ROW) {
+    if (auto r = verifyChecksum(crc.get(), 0, meshChecksum(mesh), "mesh", where); !r) return r.error();
   }
   return mesh;
 }
@@ -628,17 +743,23 @@ Result<std::int64_t> ProjectStore::addFrfSet(const FrfSetInfo& info, const FrfMa
   if (!tx.begun()) return tx.begun().error();
   sql::Statement set(db_,
                      "INSERT INTO frf_set(specimen_id, campaign_id, name, source, estimator, frf_type, line_count,"
-                     " frequency_hz, created_utc) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)");
+                     " frequency_hz, created_utc, content_crc32) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10)");
+  const std::size_t frequencyBytes = static_cast<std::size_t>(frf.lineCount()) * sizeof(double);
   set.bind(1, info.specimenId).bind(2, info.campaignId).bind(3, info.name).bind(4, info.source);
   set.bind(5, info.estimator).bind(6, static_cast<int>(frf.type)).bind(7, static_cast<std::int64_t>(frf.lineCount()));
-  set.bindBlob(8, frf.frequencyHz.data(), static_cast<std::size_t>(frf.lineCount()) * sizeof(double));
+  set.bindBlob(8, frf.frequencyHz.data(), frequencyBytes);
   set.bind(9, sql::nowUtc());
+  set.bind(10, static_cast<std::int64_t>(ContentCrc()
+                                             .add(static_cast<int>(frf.type))
+                                             .add(static_cast<std::int64_t>(frf.lineCount()))
+                                             .bytes(frf.frequencyHz.data(), frequencyBytes)
+                                             .value()));
   if (set.step() != SQLITE_DONE) return sqliteError(db_, "cannot store the FRF set", where);
   const std::int64_t id = sqlite3_last_insert_rowid(db_);
   sql::Statement row(db_,
                      "INSERT INTO frf(frf_set_id, response_node, response_direction, reference_node,"
-                     " reference_direction, response_index, reference_index, h, coherence)"
-                     " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)");
+                     " reference_direction, response_index, reference_index, h, coherence, content_crc32)"
+                     " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10)");
   const auto nf = static_cast<std::size_t>(frf.lineCount());
   for (Eigen::Index i = 0; i < frf.referenceCount(); ++i) {
     for (Eigen::Index o = 0; o < frf.responseCount(); ++o) {
@@ -652,12 +773,22 @@ Result<std::int64_t> ProjectStore::addFrfSet(const FrfSetInfo& info, const FrfMa
       row.bind(5, frf.references[static_cast<std::size_t>(i)].uffCode());
       row.bind(6, static_cast<std::int64_t>(o)).bind(7, static_cast<std::int64_t>(i));
       row.bindBlob(8, column.data(), nf * sizeof(Complex));
+      ContentCrc crc;
+      crc.add(id).add(static_cast<std::int64_t>(o)).add(static_cast<std::int64_t>(i));
+      crc.add(frf.responses[static_cast<std::size_t>(o)].node)
+          .add(frf.responses[static_cast<std::size_t>(o)].uffCode());
+      crc.add(frf.references[static_cast<std::size_t>(i)].node);
+      crc.add(frf.references[static_cast<std::size_t>(i)].uffCode());
+      crc.bytes(column.data(), nf * sizeof(Complex));
       if (!frf.coherence.empty()) {
         coherence = frf.coherence[static_cast<std::size_t>(i)].col(o);
         row.bindBlob(9, coherence.data(), nf * sizeof(double));
+        crc.add(1).bytes(coherence.data(), nf * sizeof(double));
       } else {
         row.bindNull(9);
+        crc.add(0);
       }
+      row.bind(10, static_cast<std::int64_t>(crc.value()));
       if (row.step() != SQLITE_DONE) return sqliteError(db_, "cannot store an FRF", where);
     }
   }
@@ -705,11 +836,21 @@ Result<FrfMatrix> ProjectStore::frfSet(std::int64_t frfSetId) const {
   FrfMatrix frf;
   std::int64_t lines = 0;
   {
-    sql::Statement stmt(db_, "SELECT frf_type, line_count, frequency_hz FROM frf_set WHERE id = ?1");
+    sql::Statement stmt(db_, ("SELECT frf_type, line_count, frequency_hz, " + crcColumn("content_crc32") +
+                              " FROM frf_set WHERE id = ?1")
+                                 .c_str());
     stmt.bind(1, frfSetId);
     const int rc = stmt.step();
     if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, "no such FRF set", where);
     if (rc != SQLITE_ROW) return sqliteError(db_, "cannot read the FRF set", where);
+    {
+      ContentCrc crc;
+      crc.add(sqlite3_column_int64(stmt.get(), 0)).add(sqlite3_column_int64(stmt.get(), 1));
+      crc.bytes(sqlite3_column_blob(stmt.get(), 2), static_cast<std::size_t>(sqlite3_column_bytes(stmt.get(), 2)));
+      if (auto r = verifyChecksum(stmt.get(), 3, crc.value(), "FRF set (type, lines, frequencies)", where); !r) {
+        return r.error();
+      }
+    }
     const int type = sqlite3_column_int(stmt.get(), 0);
     if (type < 0 || type > 2) return makeError(ErrorCode::Corrupt, "unknown FRF type " + std::to_string(type), where);
     frf.type = static_cast<FrfType>(type);
@@ -721,10 +862,11 @@ Result<FrfMatrix> ProjectStore::frfSet(std::int64_t frfSetId) const {
     if (!f) return f.error();
     frf.frequencyHz = Eigen::Map<const Vector>(f->data(), lines);
   }
-  sql::Statement stmt(db_,
-                      "SELECT response_index, reference_index, response_node, response_direction, reference_node,"
-                      " reference_direction, h, coherence FROM frf WHERE frf_set_id = ?1"
-                      " ORDER BY reference_index, response_index");
+  sql::Statement stmt(
+      db_, ("SELECT response_index, reference_index, response_node, response_direction, reference_node,"
+            " reference_direction, h, coherence, " +
+            crcColumn("content_crc32") + " FROM frf WHERE frf_set_id = ?1 ORDER BY reference_index, response_index")
+               .c_str());
   stmt.bind(1, frfSetId);
   struct Row {
     std::int64_t o, i;
@@ -737,6 +879,23 @@ Result<FrfMatrix> ProjectStore::frfSet(std::int64_t frfSetId) const {
   int rc;
   while ((rc = stmt.step()) == SQLITE_ROW) {
     Row r;
+    {
+      ContentCrc crc;
+      crc.add(frfSetId);
+      for (int c = 0; c < 6; ++c) crc.add(sqlite3_column_int64(stmt.get(), c));
+      crc.bytes(sqlite3_column_blob(stmt.get(), 6), static_cast<std::size_t>(sqlite3_column_bytes(stmt.get(), 6)));
+      if (sqlite3_column_type(stmt.get(), 7) == SQLITE_NULL) {
+        crc.add(0);
+      } else {
+        crc.add(1).bytes(sqlite3_column_blob(stmt.get(), 7),
+                         static_cast<std::size_t>(sqlite3_column_bytes(stmt.get(), 7)));
+      }
+      const std::string frfWhere = where + ", FRF row " + std::to_string(sqlite3_column_int64(stmt.get(), 0)) + "/" +
+                                   std::to_string(sqlite3_column_int64(stmt.get(), 1)) + " (response " +
+                                   std::to_string(sqlite3_column_int64(stmt.get(), 2)) + ", reference " +
+                                   std::to_string(sqlite3_column_int64(stmt.get(), 4)) + ")";
+      if (auto v = verifyChecksum(stmt.get(), 8, crc.value(), "FRF", frfWhere); !v) return v.error();
+    }
     r.o = sqlite3_column_int64(stmt.get(), 0);
     r.i = sqlite3_column_int64(stmt.get(), 1);
     if (r.o < 0 || r.i < 0 || r.o >= 1 << 20 || r.i >= 1 << 20) {
@@ -812,11 +971,24 @@ Result<std::int64_t> ProjectStore::addModalResult(const ModalResultInfo& info, c
   }
   sql::Transaction tx(db_, where);
   if (!tx.begun()) return tx.begun().error();
+  ContentCrc crc;
+  crc.add(info.bandLowHz).add(info.bandHighHz).add(static_cast<std::int64_t>(table.modes.size()));
+  for (std::size_t m = 0; m < table.modes.size(); ++m) {
+    const auto& mode = table.modes[m];
+    crc.add(static_cast<std::int64_t>(m)).add(mode.frequencyHz).add(mode.dampingRatio);
+    crc.add(static_cast<std::int64_t>(mode.shape.size()));
+    for (Eigen::Index d = 0; d < mode.shape.size(); ++d) {
+      const Dof& dof = table.dofs[static_cast<std::size_t>(d)];
+      crc.add(static_cast<std::int64_t>(d)).add(dof.node).add(dof.uffCode());
+      crc.add(mode.shape[d].real()).add(mode.shape[d].imag());
+    }
+  }
   sql::Statement res(db_,
                      "INSERT INTO modal_result(specimen_id, frf_set_id, name, method, band_low_hz, band_high_hz,"
-                     " created_utc) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)");
+                     " created_utc, content_crc32) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
   res.bind(1, info.specimenId).bind(2, info.frfSetId).bind(3, info.name).bind(4, info.method);
   res.bind(5, info.bandLowHz).bind(6, info.bandHighHz).bind(7, sql::nowUtc());
+  res.bind(8, static_cast<std::int64_t>(crc.value()));
   if (res.step() != SQLITE_DONE) return sqliteError(db_, "cannot store the modal result", where);
   const std::int64_t id = sqlite3_last_insert_rowid(db_);
   sql::Statement mode(
@@ -868,20 +1040,25 @@ Result<std::vector<ModalResultInfo>> ProjectStore::modalResults() const {
 Result<ModalTable> ProjectStore::modalResult(std::int64_t modalResultId) const {
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", modal result " + std::to_string(modalResultId);
-  {
-    sql::Statement exists(db_, "SELECT 1 FROM modal_result WHERE id = ?1");
-    exists.bind(1, modalResultId);
-    if (exists.step() != SQLITE_ROW) return makeError(ErrorCode::NotFound, "no such modal result", where);
-  }
+  sql::Statement head(
+      db_,
+      ("SELECT band_low_hz, band_high_hz, " + crcColumn("content_crc32") + " FROM modal_result WHERE id = ?1").c_str());
+  head.bind(1, modalResultId);
+  if (head.step() != SQLITE_ROW) return makeError(ErrorCode::NotFound, "no such modal result", where);
+  ContentCrc crc;
+  crc.add(sqlite3_column_double(head.get(), 0)).add(sqlite3_column_double(head.get(), 1));
   ModalTable table;
   std::vector<std::int64_t> modeIds;
+  std::vector<std::int64_t> modeIndices;
   {
-    sql::Statement stmt(
-        db_, "SELECT id, frequency_hz, damping_ratio FROM mode WHERE modal_result_id = ?1 ORDER BY mode_index");
+    sql::Statement stmt(db_,
+                        "SELECT id, frequency_hz, damping_ratio, mode_index FROM mode WHERE modal_result_id = ?1"
+                        " ORDER BY mode_index");
     stmt.bind(1, modalResultId);
     int rc;
     while ((rc = stmt.step()) == SQLITE_ROW) {
       modeIds.push_back(sqlite3_column_int64(stmt.get(), 0));
+      modeIndices.push_back(sqlite3_column_int64(stmt.get(), 3));
       StoredMode m;
       m.frequencyHz = sqlite3_column_double(stmt.get(), 1);
       m.dampingRatio = sqlite3_column_double(stmt.get(), 2);
@@ -889,9 +1066,32 @@ Result<ModalTable> ProjectStore::modalResult(std::int64_t modalResultId) const {
     }
     if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read modes", where);
   }
+  crc.add(static_cast<std::int64_t>(modeIds.size()));
   sql::Statement shape(db_,
                        "SELECT dof_index, dof_node, dof_direction, re, im FROM mode_shape WHERE mode_id = ?1"
                        " ORDER BY dof_index");
+  for (std::size_t m = 0; m < modeIds.size(); ++m) {
+    shape.reset();
+    shape.bind(1, modeIds[m]);
+    struct Entry {
+      std::int64_t index, node, direction;
+      double re, im;
+    };
+    std::vector<Entry> raw;
+    int rc;
+    while ((rc = shape.step()) == SQLITE_ROW) {
+      raw.push_back({sqlite3_column_int64(shape.get(), 0), sqlite3_column_int64(shape.get(), 1),
+                     sqlite3_column_int64(shape.get(), 2), sqlite3_column_double(shape.get(), 3),
+                     sqlite3_column_double(shape.get(), 4)});
+    }
+    if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read a mode shape", where);
+    crc.add(modeIndices[m]).add(table.modes[m].frequencyHz).add(table.modes[m].dampingRatio);
+    crc.add(static_cast<std::int64_t>(raw.size()));
+    for (const auto& e : raw) crc.add(e.index).add(e.node).add(e.direction).add(e.re).add(e.im);
+  }
+  if (auto r = verifyChecksum(head.get(), 2, crc.value(), "modal result (modes and shapes)", where); !r) {
+    return r.error();
+  }
   for (std::size_t m = 0; m < modeIds.size(); ++m) {
     shape.reset();
     shape.bind(1, modeIds[m]);
@@ -928,11 +1128,12 @@ Result<std::int64_t> ProjectStore::addRigTest(const StoredRigTest& test) {
   if (!tx.begun()) return tx.begun().error();
   sql::Statement stmt(db_,
                       "INSERT INTO rig_test(specimen_id, rig_setup_id, kind, name, parameters_json, recorded_utc,"
-                      " status, status_note) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
+                      " status, status_note, content_crc32) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)");
   stmt.bind(1, test.specimenId).bind(2, test.rigSetupId);
   stmt.bind(3, std::string(test.kind == StoredRigTest::Kind::Static ? "static" : "dynamic"));
   stmt.bind(4, test.name).bind(5, test.parametersJson).bind(6, sql::nowUtc());
   stmt.bind(7, std::string(testStatusName(test.status))).bind(8, test.statusNote);
+  stmt.bind(9, static_cast<std::int64_t>(rigTestChecksum(test)));
   if (stmt.step() != SQLITE_DONE) return sqliteError(db_, "cannot store the rig test", where);
   const std::int64_t id = sqlite3_last_insert_rowid(db_);
   if (auto r = insertRigResults(id, test.results, where); !r) return r.error();
@@ -954,18 +1155,31 @@ Result<void> ProjectStore::insertRigResults(std::int64_t rigTestId, const std::v
     bindStep(res, 6, r.step);
     if (res.step() != SQLITE_DONE) return sqliteError(db_, "cannot store result '" + r.quantity + "'", where);
   }
+  // Results arrive step by step: the checksum covers them all, so it is
+  // computed again from what is now stored (inside the caller's transaction).
+  auto stored = readRigTest(rigTestId, false);
+  if (!stored) return stored.error();
+  sql::Statement crc(db_, "UPDATE rig_test SET content_crc32 = ?2 WHERE id = ?1");
+  crc.bind(1, rigTestId).bind(2, static_cast<std::int64_t>(rigTestChecksum(*stored)));
+  if (crc.step() != SQLITE_DONE) return sqliteError(db_, "cannot update the rig test's checksum", where);
   return {};
 }
 
 Result<StoredRigTest> ProjectStore::rigTest(std::int64_t rigTestId) const {
+  return readRigTest(rigTestId, true);
+}
+
+Result<StoredRigTest> ProjectStore::readRigTest(std::int64_t rigTestId, bool verify) const {
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", rig test " + std::to_string(rigTestId);
   StoredRigTest t;
+  sql::Statement head(db_, ("SELECT id, specimen_id, rig_setup_id, kind, name, parameters_json, status, status_note,"
+                            " recorded_utc, " +
+                            crcColumn("content_crc32") + " FROM rig_test WHERE id = ?1")
+                               .c_str());
+  head.bind(1, rigTestId);
   {
-    sql::Statement stmt(db_,
-                        "SELECT id, specimen_id, rig_setup_id, kind, name, parameters_json, status, status_note,"
-                        " recorded_utc FROM rig_test WHERE id = ?1");
-    stmt.bind(1, rigTestId);
+    sql::Statement& stmt = head;
     const int rc = stmt.step();
     if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, "no such rig test", where);
     if (rc != SQLITE_ROW) return sqliteError(db_, "cannot read the rig test", where);
@@ -990,6 +1204,14 @@ Result<StoredRigTest> ProjectStore::rigTest(std::int64_t rigTestId) const {
     t.results.push_back(r);
   }
   if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read rig test results", where);
+  if (sql::columnText(head.get(), 3) != "static" && sql::columnText(head.get(), 3) != "dynamic") {
+    return makeError(ErrorCode::Corrupt, "unknown rig test kind '" + sql::columnText(head.get(), 3) + "'", where);
+  }
+  if (auto r = verify ? verifyChecksum(head.get(), 9, rigTestChecksum(t), "rig test (parameters and results)", where)
+                      : Result<void>{};
+      !r) {
+    return r.error();
+  }
   return t;
 }
 
@@ -1027,11 +1249,12 @@ Result<std::int64_t> ProjectStore::addTyreTest(const StoredTyreTest& test) {
   if (!tx.begun()) return tx.begun().error();
   sql::Statement stmt(db_,
                       "INSERT INTO tyre_test(specimen_id, rig_setup_id, name, kind, inflation_pressure_pa,"
-                      " vertical_load_n, speed_m_s, recorded_utc, status, status_note, parameters_json)"
-                      " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)");
+                      " vertical_load_n, speed_m_s, recorded_utc, status, status_note, parameters_json, content_crc32)"
+                      " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12)");
   stmt.bind(1, test.specimenId).bind(2, test.rigSetupId).bind(3, test.name).bind(4, test.kind);
   stmt.bind(5, test.inflationPressurePa).bind(6, test.verticalLoadN).bind(7, test.speedMps).bind(8, sql::nowUtc());
   stmt.bind(9, std::string(testStatusName(test.status))).bind(10, test.statusNote).bind(11, test.parametersJson);
+  stmt.bind(12, static_cast<std::int64_t>(tyreTestChecksum(test)));
   if (stmt.step() != SQLITE_DONE) return sqliteError(db_, "cannot store the tyre test", where);
   const std::int64_t id = sqlite3_last_insert_rowid(db_);
   if (auto r = insertTyreData(id, 0, test.points, test.parameters, where); !r) return r.error();
@@ -1071,17 +1294,30 @@ Result<void> ProjectStore::insertTyreData(std::int64_t tyreTestId, std::int64_t 
     bindStep(par, 6, p.step);
     if (par.step() != SQLITE_DONE) return sqliteError(db_, "cannot store parameter '" + p.name + "'", where);
   }
+  // Points and parameters arrive step by step: the checksum is computed again
+  // from what is now stored (inside the caller's transaction).
+  auto stored = readTyreTest(tyreTestId, false);
+  if (!stored) return stored.error();
+  sql::Statement crc(db_, "UPDATE tyre_test SET content_crc32 = ?2 WHERE id = ?1");
+  crc.bind(1, tyreTestId).bind(2, static_cast<std::int64_t>(tyreTestChecksum(*stored)));
+  if (crc.step() != SQLITE_DONE) return sqliteError(db_, "cannot update the tyre test's checksum", where);
   return {};
 }
 
 Result<StoredTyreTest> ProjectStore::tyreTest(std::int64_t tyreTestId) const {
+  return readTyreTest(tyreTestId, true);
+}
+
+Result<StoredTyreTest> ProjectStore::readTyreTest(std::int64_t tyreTestId, bool verify) const {
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", tyre test " + std::to_string(tyreTestId);
   StoredTyreTest t;
+  sql::Statement head(db_, ("SELECT id, specimen_id, rig_setup_id, name, kind, inflation_pressure_pa, vertical_load_n,"
+                            " speed_m_s, status, status_note, parameters_json, recorded_utc, " +
+                            crcColumn("content_crc32") + " FROM tyre_test WHERE id = ?1")
+                               .c_str());
   {
-    sql::Statement stmt(db_,
-                        "SELECT id, specimen_id, rig_setup_id, name, kind, inflation_pressure_pa, vertical_load_n,"
-                        " speed_m_s, status, status_note, parameters_json, recorded_utc FROM tyre_test WHERE id = ?1");
+    sql::Statement& stmt = head;
     stmt.bind(1, tyreTestId);
     const int rc = stmt.step();
     if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, "no such tyre test", where);
@@ -1127,6 +1363,11 @@ Result<StoredTyreTest> ProjectStore::tyreTest(std::int64_t tyreTestId) const {
     t.parameters.push_back(p);
   }
   if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read tyre parameters", where);
+  if (auto r = verify ? verifyChecksum(head.get(), 12, tyreTestChecksum(t), "tyre test (points and parameters)", where)
+                      : Result<void>{};
+      !r) {
+    return r.error();
+  }
   return t;
 }
 

@@ -393,10 +393,30 @@ CREATE TABLE tyre_test_record (
 ) STRICT;
 )sql";
 
+// Schema 4 (issue 17): a CRC-32 over the content of every stored record that
+// had none (hits and rig-test records carry samples_crc32 since schema 1),
+// computed when the record is written and checked whenever it is read; the
+// byte layouts hashed are in docs/formats/project.md, "Checksums". NULL means
+// the record was written before schema 4 and cannot be checked.
+// - frf_set.content_crc32: frf_type, line_count, frequency_hz bytes
+// - frf.content_crc32: indices, DOFs, h bytes, coherence bytes
+// - modal_result.content_crc32: band, then every mode and mode-shape entry
+// - specimen.mesh_crc32: coordinate systems, nodes, lines, faces of its mesh
+// - rig_test.content_crc32: kind, parameters_json and every result row
+// - tyre_test.content_crc32: conditions, every point and parameter row
+const char* const kSchema4Checksums = R"sql(
+ALTER TABLE frf_set ADD COLUMN content_crc32 INTEGER;
+ALTER TABLE frf ADD COLUMN content_crc32 INTEGER;
+ALTER TABLE modal_result ADD COLUMN content_crc32 INTEGER;
+ALTER TABLE specimen ADD COLUMN mesh_crc32 INTEGER;
+ALTER TABLE rig_test ADD COLUMN content_crc32 INTEGER;
+ALTER TABLE tyre_test ADD COLUMN content_crc32 INTEGER;
+)sql";
+
 }  // namespace
 
 const std::vector<const char*>& projectMigrations() {
-  static const std::vector<const char*> migrations{kSchema1, kSchema2, kRigTestSteps};
+  static const std::vector<const char*> migrations{kSchema1, kSchema2, kRigTestSteps, kSchema4Checksums};
   return migrations;
 }
 

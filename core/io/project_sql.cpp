@@ -1,5 +1,6 @@
 #include "core/io/project_sql.h"
 
+#include <cctype>
 #include <ctime>
 #include <utility>
 
@@ -32,6 +33,24 @@ Result<std::int64_t> queryInt(sqlite3* db, const char* sql, const std::string& w
   if (rc == SQLITE_ROW) value = sqlite3_column_int64(stmt.get(), 0);
   if (rc != SQLITE_ROW && rc != SQLITE_DONE) return sqliteError(db, sql, where);
   return value;
+}
+
+std::string fileUri(const std::string& path) {
+  std::string uri = "file:";
+  // An absolute path starts "file:/..." ; a relative one must not start with
+  // '/', which it does not. Percent-encode everything outside a safe set.
+  static const char* kHex = "0123456789ABCDEF";
+  for (const unsigned char c : path) {
+    if (std::isalnum(c) || c == '/' || c == '.' || c == '-' || c == '_' || c == '~' || c == ',' || c == '+' ||
+        c == '=' || c == '@' || c == ':') {
+      uri += static_cast<char>(c);
+    } else {
+      uri += '%';
+      uri += kHex[c >> 4];
+      uri += kHex[c & 15];
+    }
+  }
+  return uri;
 }
 
 std::string nowUtc() {

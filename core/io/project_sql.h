@@ -24,6 +24,10 @@ Result<std::int64_t> queryInt(sqlite3* db, const char* sql, const std::string& w
 
 std::string nowUtc();
 
+// "file:" URI of a path for sqlite3_open_v2 with SQLITE_OPEN_URI ('%', '?',
+// '#' and non-ASCII bytes percent-encoded; a relative path stays relative).
+std::string fileUri(const std::string& path);
+
 // Text of a column; "" for NULL (a corrupt or hostile file may hold NULLs
 // where the schema promises text).
 std::string columnText(sqlite3_stmt* stmt, int column);
@@ -37,6 +41,10 @@ std::optional<Dof> columnOptionalDof(sqlite3_stmt* stmt, int nodeColumn, int dir
 // positions 0..n-1 and distinct DOFs); project_campaign.cpp.
 Result<void> insertCampaignPoints(sqlite3* db, std::int64_t campaignId, const std::vector<StoredCampaignPoint>& points,
                                   const std::string& where);
+
+// CRC-32 of the content of an empty mesh (project_data.cpp, "Checksums"), the
+// value a new specimen starts with.
+std::uint32_t emptyMeshChecksum();
 
 class Statement {
  public:

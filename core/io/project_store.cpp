@@ -4,13 +4,20 @@
 #include "core/io/project_sql.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sqlite3.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <utility>
 
 namespace mozzi::core::io {
@@ -68,6 +75,7 @@ ProjectStore& ProjectStore::operator=(ProjectStore&& other) noexcept {
     readOnlyReason_ = std::move(other.readOnlyReason_);
     lockFd_ = std::exchange(other.lockFd_, -1);
     hitEncoding_ = other.hitEncoding_;
+    checksums_ = other.checksums_;
   }
   return *this;
 }
@@ -83,25 +91,139 @@ void ProjectStore::close() {
   lockFd_ = -1;
 }
 
-Result<ProjectStore> ProjectStore::create(const std::string& path, const std::string& mozziVersion) {
-  std::error_code ec;
-  if (std::filesystem::exists(path, ec)) {
-    return makeError(ErrorCode::InvalidArgument, "a file of that name exists already; choose another name", path);
-  }
+namespace {
+
+// Creates the schema in a new file at `path` (a temporary name chosen by
+// createProjectAtomically) and closes it; `shownPath` names it in errors.
+Result<void> createSchema(const std::string& path, const std::string& shownPath, const std::string& mozziVersion) {
   sqlite3* db = nullptr;
-  if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK) {
-    Error e = sqliteError(db, "cannot create the project file", path);
+  if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE | SQLITE_OPEN_EXCLUSIVE, nullptr) !=
+      SQLITE_OK) {
+    Error e = sqliteError(db, "cannot create the project file", shownPath);
     sqlite3_close_v2(db);
     return e;
   }
   // journal_mode cannot change inside a transaction; it writes no user data.
-  auto r = exec(db, "PRAGMA journal_mode = WAL; PRAGMA synchronous = FULL; PRAGMA foreign_keys = ON;", path);
-  if (r) r = migrate(db, 0, path, mozziVersion);
-  sqlite3_close_v2(db);
-  if (!r) {
-    std::filesystem::remove(path, ec);
-    return r.error();
+  auto r = exec(db, "PRAGMA journal_mode = WAL; PRAGMA synchronous = FULL; PRAGMA foreign_keys = ON;", shownPath);
+  if (r) r = migrate(db, 0, shownPath, mozziVersion);
+  if (sqlite3_close(db) != SQLITE_OK && r) r = makeError(ErrorCode::IoError, "cannot close the new project", shownPath);
+  return r;
+}
+
+bool processGone(pid_t pid) {
+  return pid > 0 && pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH;
+}
+
+// Removes ".NAME.creating-PID-*" files (and their -wal, -shm) left in `folder`
+// by creations whose process no longer runs.
+void removeStaleCreations(const std::filesystem::path& folder, const std::string& name) {
+  const std::string prefix = "." + name + ".creating-";
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    const std::string file = entry.path().filename().string();
+    if (file.compare(0, prefix.size(), prefix) != 0) continue;
+    const pid_t pid = static_cast<pid_t>(std::strtol(file.c_str() + prefix.size(), nullptr, 10));
+    if (processGone(pid)) std::filesystem::remove(entry.path(), ec);
   }
+}
+
+void removeWithSidecars(const std::string& path) {
+  for (const char* suffix : {"", "-wal", "-shm", "-journal"}) ::unlink((path + suffix).c_str());
+}
+
+}  // namespace
+
+Result<void> createProjectAtomically(const std::string& path,
+                                     const std::function<Result<void>(const std::string& tempPath)>& build) {
+  namespace fs = std::filesystem;
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) == 0) {
+    return makeError(ErrorCode::InvalidArgument, "a file of that name exists already; choose another name", path);
+  }
+  const fs::path target(path);
+  const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) return makeError(ErrorCode::NotFound, "the folder does not exist", path);
+  if (::access(folder.c_str(), W_OK) != 0) {
+    return makeError(ErrorCode::IoError, "cannot create a project in this folder: " + std::string(std::strerror(errno)),
+                     path);
+  }
+  removeStaleCreations(folder, target.filename().string());
+  std::mt19937_64 rng{std::random_device{}() ^ static_cast<std::uint64_t>(::getpid())};
+  char token[24];
+  std::snprintf(token, sizeof token, "%d-%08llx", static_cast<int>(::getpid()),
+                static_cast<unsigned long long>(rng() & 0xffffffffULL));
+  const std::string temp = (folder / ("." + target.filename().string() + ".creating-" + token)).string();
+  if (auto r = build(temp); !r) {
+    removeWithSidecars(temp);
+    return r;
+  }
+  // The builder closed its connections, which checkpoints and removes the WAL;
+  // make sure before the move (a WAL left beside the temporary name would not
+  // follow the file).
+  if (::access((temp + "-wal").c_str(), F_OK) == 0) {
+    sqlite3* db = nullptr;
+    Result<void> r;
+    if (sqlite3_open_v2(temp.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) != SQLITE_OK) {
+      r = sqliteError(db, "cannot finish the new project", path);
+    } else {
+      r = exec(db, "PRAGMA wal_checkpoint(TRUNCATE)", path);
+    }
+    sqlite3_close_v2(db);
+    if (!r) {
+      removeWithSidecars(temp);
+      return r;
+    }
+  }
+  const int fd = ::open(temp.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0 || ::fsync(fd) != 0) {
+    const int e = errno;
+    if (fd >= 0) ::close(fd);
+    removeWithSidecars(temp);
+    return makeError(ErrorCode::IoError, "cannot write the new project: " + std::string(std::strerror(e)), path);
+  }
+  ::close(fd);
+  // Move into place without ever replacing a file: renameat2(RENAME_NOREPLACE),
+  // or link + unlink where the file system lacks it.
+  int rc = ::renameat2(AT_FDCWD, temp.c_str(), AT_FDCWD, path.c_str(), RENAME_NOREPLACE);
+  if (rc != 0 && (errno == EINVAL || errno == ENOSYS)) {
+    rc = ::link(temp.c_str(), path.c_str());
+    if (rc == 0) ::unlink(temp.c_str());
+  }
+  if (rc != 0) {
+    const int e = errno;
+    removeWithSidecars(temp);
+    if (e == EEXIST) {
+      return makeError(ErrorCode::InvalidArgument,
+                       "a file of that name exists already (another process created it meanwhile)", path);
+    }
+    return makeError(ErrorCode::IoError, "cannot move the new project into place: " + std::string(std::strerror(e)),
+                     path);
+  }
+  removeWithSidecars(temp);  // -shm or -journal remnants of the temporary name, if any
+  const int dfd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dfd >= 0) {
+    ::fsync(dfd);
+    ::close(dfd);
+  }
+  return {};
+}
+
+Result<ProjectStore> ProjectStore::create(const std::string& path, const std::string& mozziVersion) {
+  // Inside createProjectAtomically's builder (the path is this process's own
+  // temporary name) the file is created in place: it is already temporary.
+  const std::string name = std::filesystem::path(path).filename().string();
+  const std::string ownMark = ".creating-" + std::to_string(::getpid()) + "-";
+  if (!name.empty() && name[0] == '.' && name.find(ownMark) != std::string::npos) {
+    if (auto r = createSchema(path, path, mozziVersion); !r) {
+      removeWithSidecars(path);
+      return r.error();
+    }
+    return open(path, OpenMode::ReadWrite);
+  }
+  auto made =
+      createProjectAtomically(path, [&](const std::string& temp) { return createSchema(temp, path, mozziVersion); });
+  if (!made) return made.error();
   return open(path, OpenMode::ReadWrite);
 }
 
@@ -127,6 +249,10 @@ Result<ProjectStore> ProjectStore::open(const std::string& path, OpenMode mode) 
   ProjectStore store;
   store.path_ = path;
   store.readOnly_ = mode == OpenMode::ReadOnly;
+  const std::string folder = [&] {
+    const auto parent = std::filesystem::path(path).parent_path();
+    return parent.empty() ? std::string(".") : parent.string();
+  }();
   if (!store.readOnly_) {
     store.lockFd_ = ::open(path.c_str(), O_RDWR | O_CLOEXEC);
     if (store.lockFd_ < 0) {
@@ -137,11 +263,42 @@ Result<ProjectStore> ProjectStore::open(const std::string& path, OpenMode mode) 
       store.lockFd_ = -1;
       store.readOnly_ = true;
       store.readOnlyReason_ = "another Mozzi instance has this project open";
+    } else if (::access(folder.c_str(), W_OK) != 0) {
+      // WAL mode writes -wal and -shm beside the file: without a writable
+      // folder (a colleague's share) the project can only be read.
+      ::close(store.lockFd_);
+      store.lockFd_ = -1;
+      store.readOnly_ = true;
+      store.readOnlyReason_ = "the project's folder is not writable";
     }
   }
-  const int flags = store.readOnly_ ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE;
-  if (sqlite3_open_v2(path.c_str(), &store.db_, flags, nullptr) != SQLITE_OK) {
-    return sqliteError(store.db_, "cannot open the project", path);
+  // Read-only: with no -wal file beside it the main file holds every committed
+  // transaction. If no Mozzi writer holds the project (a shared flock, which a
+  // writer's exclusive one excludes, held for this store's life) it is opened
+  // immutable: SQLite then creates no -wal or -shm file, so reading works in a
+  // folder the user cannot write and leaves nothing behind. With a -wal (a
+  // writer is active, or one crashed before a checkpoint) it is opened as a
+  // normal read-only WAL reader, which sees what the WAL holds.
+  bool immutable = false;
+  if (store.readOnly_ && ::access((path + "-wal").c_str(), F_OK) != 0) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd >= 0 && ::flock(fd, LOCK_SH | LOCK_NB) == 0 && ::access((path + "-wal").c_str(), F_OK) != 0) {
+      store.lockFd_ = fd;
+      immutable = true;
+    } else if (fd >= 0) {
+      ::close(fd);
+    }
+  }
+  const int flags = (store.readOnly_ ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE) | SQLITE_OPEN_URI;
+  const std::string uri = sql::fileUri(path) + (immutable ? "?immutable=1" : "");
+  if (sqlite3_open_v2(uri.c_str(), &store.db_, flags, nullptr) != SQLITE_OK) {
+    Error e = sqliteError(store.db_, "cannot open the project", path);
+    if (store.readOnly_ && ::access(folder.c_str(), W_OK) != 0) {
+      e.message +=
+          " (the folder is not writable and a -wal file of an unfinished session is there: "
+          "ask its owner to open and close the project once)";
+    }
+    return e;
   }
   sqlite3_busy_timeout(store.db_, 2000);
 
@@ -176,6 +333,7 @@ Result<ProjectStore> ProjectStore::open(const std::string& path, OpenMode mode) 
       if (auto r = migrate(store.db_, static_cast<int>(*version), path, {}); !r) return r.error();
     }
   } else if (*version < schemaVersionCount()) {
+    store.checksums_ = *version >= 4;  // the checksum columns came with migration 4
     store.readOnlyReason_ += store.readOnlyReason_.empty() ? "" : "; ";
     store.readOnlyReason_ += "older schema, opened read-only without migration";
   }
@@ -237,8 +395,9 @@ Result<std::int64_t> ProjectStore::addSpecimen(const std::string& name, const st
   if (name.empty()) return makeError(ErrorCode::InvalidArgument, "a specimen needs a name", path_);
   sql::Transaction tx(db_, path_ + ", specimen '" + name + "'");
   if (!tx.begun()) return tx.begun().error();
-  sql::Statement stmt(db_, "INSERT INTO specimen(name, kind, description) VALUES (?1, ?2, ?3)");
-  stmt.bind(1, name).bind(2, kind).bind(3, description);
+  // mesh_crc32: the checksum of the empty mesh (setMesh replaces it).
+  sql::Statement stmt(db_, "INSERT INTO specimen(name, kind, description, mesh_crc32) VALUES (?1, ?2, ?3, ?4)");
+  stmt.bind(1, name).bind(2, kind).bind(3, description).bind(4, static_cast<std::int64_t>(sql::emptyMeshChecksum()));
   if (stmt.step() != SQLITE_DONE) return sqliteError(db_, "cannot add specimen '" + name + "'", path_);
   const std::int64_t id = sqlite3_last_insert_rowid(db_);
   if (auto r = tx.commit(); !r) return r.error();

@@ -12,6 +12,7 @@
 // one hit, one transaction, the row id returned only after COMMIT.
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -51,11 +52,35 @@ struct ProjectSummary {
   std::vector<TableCount> counts;  // rows per data table, for the project tree
 };
 
+// Builds a new project under a temporary name in the folder of `path`
+// (".NAME.creating-PID-XXXX"): `build` receives that name, creates the project
+// there (ProjectStore::create or anything calling it) and closes it. Then the
+// file is fsync'd and moved to `path` with a rename that never replaces an
+// existing file. A creation killed at any moment leaves no file under `path`
+// or a whole project; its temporary file is removed by the next creation in
+// that folder (its process is gone), so it never blocks a re-run.
+Result<void> createProjectAtomically(const std::string& path,
+                                     const std::function<Result<void>(const std::string& tempPath)>& build);
+
+// What ProjectStore::checkIntegrity found: every damaged record, not just the first.
+struct IntegrityReport {
+  struct Problem {
+    std::string record;   // e.g. "P.mozzi, FRF set 3, FRF row 0/0 (response 12, reference 1)"
+    std::string message;  // e.g. "checksum mismatch: the FRF was damaged after it was written (...)"
+  };
+  std::vector<Problem> problems;
+  std::int64_t recordsChecked = 0;          // records read back and verified
+  std::int64_t recordsWithoutChecksum = 0;  // written before schema 4: read, but no checksum to verify
+  bool ok() const { return problems.empty(); }
+};
+
 class ProjectStore {
  public:
   enum class OpenMode { ReadWrite, ReadOnly };
 
-  // Creates a new, empty project; fails if the file exists.
+  // Creates a new, empty project; fails if the file exists. Built under a
+  // temporary name and moved into place (createProjectAtomically), so two
+  // processes creating the same name get one project and one clear error.
   static Result<ProjectStore> create(const std::string& path, const std::string& mozziVersion);
   // Opens an existing project. ReadWrite falls back to read-only when another
   // process holds the project; readOnlyReason() then says why.
@@ -178,6 +203,11 @@ class ProjectStore {
   Result<std::int64_t> addAnalysis(const StoredAnalysis& analysis);
   Result<StoredAnalysis> analysis(std::int64_t analysisId) const;
 
+  // Reads every stored record back (hits, rig-test records, FRF sets, modal
+  // results, meshes, rig tests, tyre tests), verifying its checksum, and runs
+  // SQLite's full integrity_check; reports every problem it finds.
+  Result<IntegrityReport> checkIntegrity() const;
+
   // Writes a consistent copy of the whole project to `path` (SQLite online
   // backup), leaving this store open on its own file.
   Result<void> saveAs(const std::string& path) const;
@@ -200,11 +230,19 @@ class ProjectStore {
   // (indices from firstPoint) and parameters.
   Result<void> insertRigResults(std::int64_t rigTestId, const std::vector<StoredRigTest::Result>& results,
                                 const std::string& where);
+  // The stored test; verify = false skips the content checksum (used to compute it again).
+  Result<StoredRigTest> readRigTest(std::int64_t rigTestId, bool verify) const;
+  Result<StoredTyreTest> readTyreTest(std::int64_t tyreTestId, bool verify) const;
   Result<void> insertTyreData(std::int64_t tyreTestId, std::int64_t firstPoint,
                               const std::vector<StoredTyreTest::Point>& points,
                               const std::vector<StoredTyreTest::Parameter>& parameters, const std::string& where);
 
   SampleEncoding hitEncoding_ = SampleEncoding::Raw;
+  // The file has the checksum columns of schema 4 (false only for an older
+  // file opened read-only, which cannot be migrated).
+  bool checksums_ = true;
+  // "name" when the file has the checksum column, else "NULL" (no check).
+  std::string crcColumn(const char* name) const { return checksums_ ? name : "NULL"; }
 
   // On the heap so that the store stays movable; moves happen before sharing.
   std::unique_ptr<std::recursive_mutex> mutex_ = std::make_unique<std::recursive_mutex>();

@@ -14,7 +14,12 @@ static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
 static_assert(sizeof(float) == 4, "sample blobs hold IEEE 754 binary32");
 
 std::uint32_t sampleCrc32(const std::uint8_t* data, std::size_t size) {
-  uLong crc = crc32(0L, Z_NULL, 0);
+  return sampleCrc32Update(0, data, size);
+}
+
+std::uint32_t sampleCrc32Update(std::uint32_t previous, const std::uint8_t* data, std::size_t size) {
+  uLong crc = previous;
+  if (data == nullptr) return previous;
   while (size > 0) {
     const uInt chunk = static_cast<uInt>(std::min<std::size_t>(size, UINT_MAX));
     crc = crc32(crc, data, chunk);

@@ -23,6 +23,9 @@ inline constexpr std::uint64_t kMaxDecodedSampleBytes = std::uint64_t{1} << 31;
 
 // CRC-32 (zlib polynomial) of a byte range.
 std::uint32_t sampleCrc32(const std::uint8_t* data, std::size_t size);
+// Continues a CRC-32: sampleCrc32Update(sampleCrc32(a), b) == CRC-32 of a then b
+// (start from 0 for an empty prefix).
+std::uint32_t sampleCrc32Update(std::uint32_t previous, const std::uint8_t* data, std::size_t size);
 
 // Encodes `count` floats. zlibLevel 1 (fast) .. 9; ignored for Raw.
 Result<std::vector<std::uint8_t>> encodeSamples(const float* values, std::size_t count, SampleEncoding encoding,

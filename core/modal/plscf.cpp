@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 
+#include "core/io/output_file.h"
 #include "core/modal/lsfd.h"
 #include "core/modal/shape_tools.h"
 #include "core/modal/stabilization.h"
@@ -376,16 +377,16 @@ Result<PlscfResult> identifyPlscf(const FrfMatrix& frf, const PlscfOptions& opti
 }
 
 Result<void> writeStabilizationCsv(const StabilizationDiagram& diagram, const std::string& path) {
-  std::ofstream os(path);
-  if (!os) return makeError(ErrorCode::IoError, "cannot open for writing", path);
-  os << "order,frequency_hz,zeta,status\n";
-  char buf[128];
-  for (const auto& p : diagram.poles) {
-    std::snprintf(buf, sizeof buf, "%d,%.9g,%.9g,%c\n", p.order, p.frequencyHz, p.zeta, poleStatusSymbol(p.status));
-    os << buf;
-  }
-  if (!os) return makeError(ErrorCode::IoError, "write failed", path);
-  return {};
+  // Through the output helper: temporary file, checked flush + fsync + close, rename.
+  return io::writeOutputFile(path, [&](std::ostream& os) -> Result<void> {
+    os << "order,frequency_hz,zeta,status\n";
+    char buf[128];
+    for (const auto& p : diagram.poles) {
+      std::snprintf(buf, sizeof buf, "%d,%.9g,%.9g,%c\n", p.order, p.frequencyHz, p.zeta, poleStatusSymbol(p.status));
+      os << buf;
+    }
+    return {};
+  });
 }
 
 }  // namespace mozzi::core::modal

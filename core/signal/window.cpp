@@ -49,6 +49,14 @@ Result<Vector> makeWindow(const WindowSpec& spec, Eigen::Index n, double sampleR
       if (!std::isfinite(spec.forceWidthS) || spec.forceWidthS <= 0.0) {
         return makeError(ErrorCode::InvalidArgument, "force window width must be positive", where + ", width");
       }
+      if (spec.forceWidthS * sampleRateHz < 1.0) {
+        // Narrower than a sample: the window keeps at most the sample at t = 0
+        // and the FRF is noise (coherence near 0), not an error to hide.
+        return makeError(ErrorCode::InvalidArgument,
+                         "force window width " + std::to_string(spec.forceWidthS) +
+                             " s is shorter than one sample (1/" + std::to_string(sampleRateHz) + " Hz)",
+                         where + ", width");
+      }
       if (!std::isfinite(spec.forceTaperS) || spec.forceTaperS < 0.0) {
         return makeError(ErrorCode::InvalidArgument, "force window taper must not be negative", where + ", taper");
       }

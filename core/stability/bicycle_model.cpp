@@ -31,7 +31,13 @@ Result<ComplexVector> eigenvaluesFixed(const BicycleModel& m, double v) {
   A.template block<N, N>(0, N).setIdentity();
   A.template block<N, N>(N, 0) = -llt.solve(Kv);
   A.template block<N, N>(N, N) = -llt.solve(Cv);
+  if (!A.allFinite()) {
+    return makeError(ErrorCode::NumericalFailure, "the state matrix is not finite (a parameter out of range)", "v");
+  }
   balanceInPlace(A);  // stiff fork joints: see balance.h
+  if (!A.allFinite()) {
+    return makeError(ErrorCode::NumericalFailure, "the state matrix is not finite (a parameter out of range)", "v");
+  }
   Eigen::EigenSolver<Big> es(A, false);
   if (es.info() != Eigen::Success) return makeError(ErrorCode::NumericalFailure, "eigenvalue iteration failed", "v");
   return ComplexVector(es.eigenvalues());
@@ -87,7 +93,13 @@ Result<ComplexVector> BicycleModel::eigenvalues(double v) const {
   }
   auto A = stateMatrix(v);
   if (!A) return A.error();
+  if (!A->allFinite()) {
+    return makeError(ErrorCode::NumericalFailure, "the state matrix is not finite (a parameter out of range)", "v");
+  }
   balanceInPlace(*A);
+  if (!A->allFinite()) {
+    return makeError(ErrorCode::NumericalFailure, "the state matrix is not finite (a parameter out of range)", "v");
+  }
   Eigen::EigenSolver<Matrix> es(*A, false);
   if (es.info() != Eigen::Success) return makeError(ErrorCode::NumericalFailure, "eigenvalue iteration failed", "v");
   return ComplexVector(es.eigenvalues());

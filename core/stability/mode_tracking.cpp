@@ -12,10 +12,22 @@ namespace mozzi::core::stability {
 
 namespace {
 
+// The state matrix must be finite before the (iterative) eigen-solve: inputs
+// near the double range (a 1e308 stiffness) give inf/NaN entries, on which
+// the QR iteration would spend its whole iteration budget for nothing.
+Result<void> requireFinite(const Matrix& A, double v) {
+  if (A.allFinite()) return {};
+  return makeError(ErrorCode::NumericalFailure,
+                   "the state matrix is not finite (a parameter far too large or too small for double precision)",
+                   "v = " + std::to_string(v));
+}
+
 Result<ComplexVector> eigenvaluesOnly(const StabilitySystem& s, double v) {
   auto A = s.stateMatrix(v);
   if (!A) return A.error();
+  if (auto f = requireFinite(*A, v); !f) return f.error();
   balanceInPlace(*A);
+  if (auto f = requireFinite(*A, v); !f) return f.error();
   Eigen::EigenSolver<Matrix> es(*A, false);
   if (es.info() != Eigen::Success) return makeError(ErrorCode::NumericalFailure, "eigenvalue iteration failed", "v");
   return ComplexVector(es.eigenvalues());
@@ -125,7 +137,9 @@ Result<SpeedPoint> solveAtSpeed(const StabilitySystem& s, double v) {
   for (int row : s.shapeRows)
     if (row < 0 || row >= A->rows())
       return makeError(ErrorCode::InvalidArgument, "shape row out of range", "stability system");
+  if (auto f = requireFinite(*A, v); !f) return f.error();
   const Vector scale = balanceInPlace(*A);
+  if (auto f = requireFinite(*A, v); !f) return f.error();
   Eigen::EigenSolver<Matrix> es(*A, true);
   if (es.info() != Eigen::Success) {
     return makeError(ErrorCode::NumericalFailure, "eigenvalue iteration failed", "v = " + std::to_string(v));

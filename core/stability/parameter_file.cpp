@@ -1,5 +1,7 @@
 #include "core/stability/parameter_file.h"
 
+#include "core/io/text_file.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -7,9 +9,14 @@
 
 namespace mozzi::core::stability {
 
+namespace {
+constexpr double kMaxParameterMagnitude = 1e9;
+}  // namespace
+
 Result<ParameterFile> readParameterFile(const std::string& path, const std::string& what) {
-  std::ifstream in(path);
-  if (!in) return makeError(ErrorCode::IoError, "cannot open " + what + " parameter file", path);
+  auto text = io::readTextFile(path, what + " parameter", io::kMaxParameterFileBytes);  // size cap
+  if (!text) return text.error();
+  std::istringstream in(*text);
   ParameterFile file;
   std::string line;
   int lineNo = 0;
@@ -30,8 +37,18 @@ Result<ParameterFile> readParameterFile(const std::string& path, const std::stri
     if (name == "name") continue;  // header
     char* end = nullptr;
     const double x = std::strtod(value.c_str(), &end);
+    auto shown = [](const std::string& t) { return t.size() <= 40 ? t : t.substr(0, 40) + "..."; };
     if (end == value.c_str() || *end != '\0' || !std::isfinite(x)) {
-      return makeError(ErrorCode::ParseError, "value of '" + name + "' is not a number: '" + value + "'",
+      return makeError(ErrorCode::ParseError,
+                       "value of '" + shown(name) + "' is not a finite number: '" + shown(value) + "'",
+                       path + ":" + std::to_string(lineNo));
+    }
+    // Every parameter of a vehicle model in SI units lies well within 1e9
+    // (the stiffest fork joint is ~1e12 N m/rad but enters through options,
+    // not files); beyond that the state matrix overflows.
+    if (std::abs(x) > kMaxParameterMagnitude) {
+      return makeError(ErrorCode::ParseError,
+                       "value of '" + shown(name) + "' = " + shown(value) + " is out of range; valid: [-1e+09, 1e+09]",
                        path + ":" + std::to_string(lineNo));
     }
     file.values[name] = x;

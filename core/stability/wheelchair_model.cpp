@@ -272,6 +272,12 @@ Manoeuvre steadyTurningManoeuvre(double speed, double torque, double rampTime, d
 Result<SlalomSummary> summariseSlalom(const std::vector<WheelchairState>& h, double from, double f) {
   if (!std::isfinite(f) || f <= 0.0)
     return makeError(ErrorCode::InvalidArgument, "slalom frequency must be positive", kWhere);
+  if (f > kMaxSlalomFrequencyHz) {
+    return makeError(ErrorCode::InvalidArgument,
+                     "slalom frequency " + std::to_string(f) + " Hz is above " + std::to_string(kMaxSlalomFrequencyHz) +
+                         " Hz: the 10 ms output sampling would alias the torque input",
+                     kWhere);
+  }
   SlalomSummary s;
   // The drift of y (a heading offset left by the start transient) is removed
   // as c0 + c1 t fitted together with the slalom's fundamental
@@ -318,6 +324,14 @@ Result<SlalomSummary> summariseSlalom(const std::vector<WheelchairState>& h, dou
 Result<SlalomRun> runSlalom(const WheelchairParameters& p, double speed, double torque, double f, double duration) {
   if (!std::isfinite(f) || f <= 0.0)
     return makeError(ErrorCode::InvalidArgument, "slalom frequency must be positive", kWhere);
+  if (f > kMaxSlalomFrequencyHz) {
+    return makeError(ErrorCode::InvalidArgument,
+                     "slalom frequency " + std::to_string(f) + " Hz is above " + std::to_string(kMaxSlalomFrequencyHz) +
+                         " Hz: the 10 ms output sampling would alias the torque input",
+                     kWhere);
+  }
+  if (!std::isfinite(duration) || duration > 3600.0)
+    return makeError(ErrorCode::InvalidArgument, "slalom duration must be at most 3600 s", kWhere);
   if (!std::isfinite(duration) || f * duration < 3.0)
     return makeError(ErrorCode::InvalidArgument,
                      "the slalom needs at least 3 cycles (2 to settle, 1 to measure): raise the duration or frequency",

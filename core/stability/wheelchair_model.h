@@ -124,6 +124,13 @@ Result<SlalomSummary> summariseSlalom(const std::vector<WheelchairState>& histor
 // The slalom manoeuvre simulated and summarised after two cycles of start
 // transient. Errors: frequency not positive or fewer than 3 cycles in the
 // duration (2 to settle, 1 to measure), and those of simulate.
+// Highest slalom frequency: the history is sampled every 10 ms
+// (Manoeuvre::outputInterval) and the summary fits the input's fundamental, so
+// a cycle needs at least 20 samples; above that the torque input is aliased
+// by the sampling (and, above 50 Hz, by the 1 ms integration step) and the
+// amplitudes are meaningless. A manual slalom is below 1 Hz.
+inline constexpr double kMaxSlalomFrequencyHz = 5.0;
+
 struct SlalomRun {
   std::vector<WheelchairState> history;
   SlalomSummary summary;

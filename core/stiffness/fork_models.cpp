@@ -3,7 +3,9 @@
 #include "core/common/text.h"
 
 #include <cmath>
+#include <initializer_list>
 #include <sstream>
+#include <utility>
 
 namespace mozzi::core::stiffness {
 namespace {
@@ -25,6 +27,20 @@ Result<void> checkParameters(const BicycleForkParameters& p) {
     if (!positiveFinite(it.v)) {
       return makeError(ErrorCode::InvalidArgument, std::string(it.name) + " must be > 0, got " + formatNumber(it.v),
                        "bicycle fork parameters (Table 21)");
+    }
+  }
+  return {};
+}
+
+// Error naming the first quantity that is not a finite positive number.
+Result<void> requireFinitePositive(std::initializer_list<std::pair<const char*, double>> values,
+                                   const std::string& where) {
+  for (const auto& [name, v] : values) {
+    if (!positiveFinite(v)) {
+      return makeError(ErrorCode::NumericalFailure,
+                       std::string(name) + " is " + formatNumber(v) +
+                           ": out of the representable range (inputs far too large or too small)",
+                       where);
     }
   }
   return {};
@@ -68,6 +84,13 @@ Result<ForkLumpedModels> forkLumpedModels(const ForkLumpedInput& in) {
   finish(out.model3);
   if (!(out.model1.inertia > 0.0) || !(out.model2.inertia > 0.0)) {
     return makeError(ErrorCode::InvalidArgument, "vibrating inertia is zero (no mass off the axis)", where);
+  }
+  for (const auto* m : {&out.model1, &out.model2, &out.model3}) {
+    if (!std::isfinite(m->stiffness) || !std::isfinite(m->inertia) || !std::isfinite(m->frequencyHz) ||
+        !std::isfinite(m->damping) || !std::isfinite(m->pureMoment)) {
+      return makeError(ErrorCode::NumericalFailure,
+                       "a model quantity is out of the representable range (inputs far too large or too small)", where);
+    }
   }
   return out;
 }
@@ -127,14 +150,31 @@ Result<BicycleTorsion> bicycleForkTorsion(const BicycleForkParameters& p, double
   out.inertiaAlone = torsionInertiaForkAlone(p);
   out.stiffnessWithWheel = modalStiffness(fWithWheelHz, out.inertiaWithWheel);
   out.stiffnessAloneMode1 = modalStiffness(fAloneHz, out.inertiaAlone);
+  const std::string where = "bicycle fork torsion (§6.4)";
+  // Every intermediate is checked: inputs near the double range (1e308) give
+  // inf or 0 here, which must be an error and not a dereferenced failure.
+  if (auto r = requireFinitePositive({{"inertia with wheel", out.inertiaWithWheel},
+                                      {"inertia of the fork alone", out.inertiaAlone},
+                                      {"stiffness with wheel", out.stiffnessWithWheel},
+                                      {"stiffness of the fork alone (mode 1)", out.stiffnessAloneMode1}},
+                                     where);
+      !r) {
+    return r.error();
+  }
   if (fAlone2Hz > 0.0) {
     out.stiffnessAloneMode2 = modalStiffness(fAlone2Hz, out.inertiaAlone);
-    out.stiffnessAlone = *seriesStiffness(out.stiffnessAloneMode1, out.stiffnessAloneMode2);  // eq. 54
+    auto series = seriesStiffness(out.stiffnessAloneMode1, out.stiffnessAloneMode2);  // eq. 54
+    if (!series) return makeError(series.error().code, series.error().message, where);
+    out.stiffnessAlone = *series;
   } else {
     out.stiffnessAlone = out.stiffnessAloneMode1;
   }
   // zeta = eta / 2 (§6.4), with-wheel stiffness and inertia.
-  out.damping = *modalDamping(out.stiffnessWithWheel, out.inertiaWithWheel, 0.5 * etaWithWheel);
+  auto damping = modalDamping(out.stiffnessWithWheel, out.inertiaWithWheel, 0.5 * etaWithWheel);
+  if (!damping || !std::isfinite(*damping)) {
+    return makeError(ErrorCode::NumericalFailure, "the damping is out of the representable range", where);
+  }
+  out.damping = *damping;
   return out;
 }
 
@@ -153,6 +193,10 @@ Result<BicycleBending> bicycleForkBending(const BicycleForkParameters& p, double
   const double bw = bendInertiaWithWheel(p, 1.0) - jw, ba = bendInertiaForkAlone(p, 1.0) - ja;
   const double den = ww2 * bw - wa2 * ba;
   const double num = wa2 * ja - ww2 * jw;
+  if (!std::isfinite(num) || !std::isfinite(den)) {
+    return makeError(ErrorCode::NumericalFailure,
+                     "the inputs overflow the stiffness curves (frequencies, masses or lengths far too large)", where);
+  }
   if (den == 0.0 || !(num / den >= 0.0)) {
     return makeError(ErrorCode::NumericalFailure,
                      "the with-wheel and fork-alone stiffness curves do not meet for any real h_W", where);
@@ -168,10 +212,19 @@ Result<BicycleBending> bicycleForkBending(const BicycleForkParameters& p, double
   out.bendArm = h;
   out.inertiaWithWheel = bendInertiaWithWheel(p, h);
   out.stiffness = ww2 * out.inertiaWithWheel;
+  if (auto r = requireFinitePositive(
+          {{"inertia with wheel", out.inertiaWithWheel}, {"bending stiffness", out.stiffness}}, where);
+      !r) {
+    return r.error();
+  }
   // Relative slope difference dk/dh of the two curves at h: small means a
   // grazing intersection where rounded inputs move h_W a lot.
   out.crossingAngle = std::abs(2.0 * h * den) / std::max(out.stiffness / std::max(h, 1e-9), 1e-30);
-  out.damping = *modalDamping(out.stiffness, out.inertiaWithWheel, 0.5 * etaWithWheel);
+  auto damping = modalDamping(out.stiffness, out.inertiaWithWheel, 0.5 * etaWithWheel);
+  if (!damping || !std::isfinite(*damping)) {
+    return makeError(ErrorCode::NumericalFailure, "the damping is out of the representable range", where);
+  }
+  out.damping = *damping;
   return out;
 }
 

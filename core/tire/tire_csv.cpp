@@ -1,7 +1,10 @@
 #include "core/tire/tire_csv.h"
 
+#include "core/io/text_file.h"
+
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -44,6 +47,33 @@ std::string at(const std::string& source, int line) {
   return source + ":" + std::to_string(line);
 }
 
+// Valid range of each known column (docs/formats/csv.md, tyre tables): a
+// tyre on a test rig, with room to spare; any other column: |x| <= 1e12.
+struct ColumnRange {
+  double min, max;
+  const char* unit;
+};
+ColumnRange columnRange(const std::string& name) {
+  static const std::map<std::string, ColumnRange> kRanges = {{"frequency_hz", {0.0, 1e4, "Hz"}},
+                                                             {"time_s", {-1e6, 1e6, "s"}},
+                                                             {"yaw_rate_rad_s", {-100.0, 100.0, "rad/s"}},
+                                                             {"lateral_force_n", {-1e6, 1e6, "N"}},
+                                                             {"slip_deg", {-90.0, 90.0, "deg"}},
+                                                             {"camber_deg", {-90.0, 90.0, "deg"}},
+                                                             {"load_n", {0.0, 1e6, "N"}},
+                                                             {"pressure_bar", {0.0, 100.0, "bar"}},
+                                                             {"force_n", {-1e6, 1e6, "N"}},
+                                                             {"torque_nm", {-1e5, 1e5, "N m"}},
+                                                             {"half_length_m", {0.0, 1.0, "m"}}};
+  const auto it = kRanges.find(name);
+  return it == kRanges.end() ? ColumnRange{-1e12, 1e12, ""} : it->second;
+}
+
+// A cell as shown in an error: at most 40 characters of it.
+std::string shown(std::string_view cell) {
+  return cell.size() <= 40 ? std::string(cell) : std::string(cell.substr(0, 40)) + "...";
+}
+
 }  // namespace
 
 int NumericTable::column(const std::string& name) const {
@@ -67,7 +97,7 @@ Result<NumericTable> parseNumericTable(std::string_view text, const std::string&
       for (const auto& c : cells) {
         if (c.empty()) return makeError(ErrorCode::ParseError, "empty column name in the header", at(source, n));
         if (std::find(t.header.begin(), t.header.end(), c) != t.header.end())
-          return makeError(ErrorCode::ParseError, "column '" + std::string(c) + "' appears twice", at(source, n));
+          return makeError(ErrorCode::ParseError, "column '" + shown(c) + "' appears twice", at(source, n));
         t.header.emplace_back(c);
       }
       continue;
@@ -78,11 +108,20 @@ Result<NumericTable> parseNumericTable(std::string_view text, const std::string&
           "expected " + std::to_string(t.header.size()) + " columns, found " + std::to_string(cells.size()),
           at(source, n));
     std::vector<double> row(cells.size());
-    for (std::size_t i = 0; i < cells.size(); ++i)
+    for (std::size_t i = 0; i < cells.size(); ++i) {
       if (!toNumber(cells[i], row[i]))
         return makeError(ErrorCode::ParseError,
-                         "column " + t.header[i] + " is not a finite number: '" + std::string(cells[i]) + "'",
+                         "column " + shown(t.header[i]) + " is not a finite number: '" + shown(cells[i]) + "'",
                          at(source, n));
+      const ColumnRange r = columnRange(t.header[i]);
+      if (row[i] < r.min || row[i] > r.max) {
+        char range[96];
+        std::snprintf(range, sizeof range, "[%g, %g]%s%s", r.min, r.max, *r.unit ? " " : "", r.unit);
+        return makeError(ErrorCode::ParseError,
+                         "column " + shown(t.header[i]) + " = " + shown(cells[i]) + " is out of range; valid: " + range,
+                         at(source, n));
+      }
+    }
     t.rows.push_back(std::move(row));
     t.lines.push_back(n);
   }
@@ -94,11 +133,9 @@ Result<NumericTable> parseNumericTable(std::string_view text, const std::string&
 }
 
 Result<NumericTable> readNumericTable(const std::string& path, const std::vector<std::string>& required) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return makeError(ErrorCode::IoError, "cannot open file", path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseNumericTable(text.str(), path, required);
+  auto text = io::readTextFile(path, "tyre test");  // size cap: core/io/text_file.h
+  if (!text) return text.error();
+  return parseNumericTable(*text, path, required);
 }
 
 const std::vector<std::string>& harmonicYawColumns() {

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "core/io/uff/uff.h"
 #include "devices/common/threaded_device.h"
@@ -124,6 +125,47 @@ core::Result<Recording> loadRecording(const std::string& path) {
   return rec;
 }
 
+// The recording's channels and rate from the 58 headers alone (the data are
+// skipped unread, core/io/uff ReadOptions::skip58Data): what the capabilities
+// show, at a cost independent of the recording's size.
+core::Result<Recording> loadRecordingLayout(const std::string& path) {
+  if (path.empty()) return Recording{};
+  uff::ReadOptions options;
+  options.skip58Data = true;
+  auto reader = uff::DatasetReader::open(path, options);
+  if (!reader) return reader.error();
+  Recording rec;
+  std::optional<int> firstCase;
+  for (;;) {
+    auto d = reader->next();
+    if (!d) return d.error();
+    if (!d->has_value()) break;
+    const auto* f = (*d)->get<uff::Function58>();
+    if (!f || f->functionType != uff::FunctionType::TimeResponse) continue;
+    if (!firstCase) {
+      firstCase = f->loadCase;
+      if (!f->evenSpacing || !(f->abscissaIncrement > 0.0) || !std::isfinite(f->abscissaIncrement))
+        return core::makeError(core::ErrorCode::Unsupported, "time records must be evenly sampled with a positive step",
+                               path + ", load case " + std::to_string(f->loadCase));
+      rec.sampleRateHz = 1.0 / f->abscissaIncrement;
+      if (std::abs(rec.sampleRateHz - std::round(rec.sampleRateHz)) < 5e-6 * rec.sampleRateHz)
+        rec.sampleRateHz = std::round(rec.sampleRateHz);
+    }
+    if (f->loadCase != *firstCase) break;  // the first load case names every channel
+    auto dof = f->response.dof();
+    if (!dof) return core::makeError(dof.error().code, dof.error().message, path);
+    core::signal::Channel ch;
+    ch.dof = *dof;
+    ch.name = core::formatDof(*dof);
+    ch.transducer.kind = kindFromUff(f->ordinateNumerator.specificDataType);
+    ch.transducer.unit = f->ordinateNumerator.unitsLabel == "NONE" ? "" : f->ordinateNumerator.unitsLabel;
+    rec.channels.push_back(ch);
+  }
+  if (!firstCase)
+    return core::makeError(core::ErrorCode::NotFound, "no time records (dataset 58, function type 1) to replay", path);
+  return rec;
+}
+
 // A nominal DAQ range for the raw codes: +/-10 V at a sensitivity that puts
 // full scale at twice the channel's peak (or 1 EU for an all-zero channel).
 constexpr double kFullScaleVolts = 10.0;
@@ -166,7 +208,10 @@ Capabilities replayCapabilities(const Recording* rec) {
 
 class ReplayDevice final : public ThreadedDevice {
  public:
-  explicit ReplayDevice(DeviceDescriptor d) : ThreadedDevice(std::move(d), replayCapabilities(nullptr)) {}
+  // `layout`: the recording's channels from its headers, so capabilities()
+  // lists them before open() (which reads the samples).
+  ReplayDevice(DeviceDescriptor d, const Recording& layout)
+      : ThreadedDevice(std::move(d), replayCapabilities(layout.channels.empty() ? nullptr : &layout)) {}
   ~ReplayDevice() override { close(); }
 
   core::Result<void> open() override {
@@ -258,7 +303,10 @@ class ReplayDriver final : public Driver {
       return core::makeError(core::ErrorCode::InvalidArgument, "descriptor of another driver", d.driver);
     DeviceDescriptor desc = d;
     if (desc.model.empty()) desc.model = kModel;
-    return std::unique_ptr<Device>(new ReplayDevice(desc));
+    // The channels from the headers when the recording reads; otherwise none
+    // yet, and open() reports what is wrong with the file.
+    auto layout = loadRecordingLayout(desc.busPath);
+    return std::unique_ptr<Device>(new ReplayDevice(desc, layout ? *layout : Recording{}));
   }
 };
 
@@ -266,6 +314,15 @@ class ReplayDriver final : public Driver {
 
 std::unique_ptr<Driver> makeReplayDriver() {
   return std::make_unique<ReplayDriver>();
+}
+
+core::Result<Capabilities> replayRecordingCapabilities(const std::string& path) {
+  if (path.empty()) {
+    return core::makeError(core::ErrorCode::InvalidArgument, "no recording named: give the UFF file", kDriverName);
+  }
+  auto layout = loadRecordingLayout(path);
+  if (!layout) return layout.error();
+  return replayCapabilities(&*layout);
 }
 
 }  // namespace mozzi::devices::sim

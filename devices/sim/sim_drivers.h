@@ -88,6 +88,10 @@ double tyreHalfLengthAt(const std::string& tyreKey, double pressurePa);
 
 // Plays time records back as a live acquisition (see replay_driver.cpp).
 std::unique_ptr<Driver> makeReplayDriver();
+// The capabilities a replay of `path` has (its channels and rate), from the
+// 58 headers alone: the samples are skipped unread, so a recording of any size
+// is summarised at a cost independent of its length. Errors name the file.
+core::Result<Capabilities> replayRecordingCapabilities(const std::string& path);
 
 // Half-sine contact time of a hammer of mass m on a tip of stiffness k:
 // T = pi sqrt(m / k) (linear contact spring, rigid specimen).

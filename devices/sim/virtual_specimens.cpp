@@ -111,10 +111,14 @@ core::Result<void> addSpecimensWithMeshes(DemoContext& demo) {
 }
 
 // Step 2: static and dynamic stiffness tests, relaxation and steady-state tyre tests.
-core::Result<void> addRigAndTyreTests(DemoContext& demo) { return rigtests::addDemoRigTests(demo.store); }
+core::Result<void> addRigAndTyreTests(DemoContext& demo) {
+  return rigtests::addDemoRigTests(demo.store);
+}
 
 // Step 3: finished hammer campaigns (hits and FRF sets) on fork A with wheel and frame A.
-core::Result<void> addHammerCampaigns(DemoContext& demo) { return campaign::addDemoCampaigns(demo.store); }
+core::Result<void> addHammerCampaigns(DemoContext& demo) {
+  return campaign::addDemoCampaigns(demo.store);
+}
 
 // The demo, in order; append a step to extend it.
 const DemoStep kDemoSteps[] = {addSpecimensWithMeshes, addRigAndTyreTests, addHammerCampaigns};

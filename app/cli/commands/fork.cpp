@@ -30,31 +30,40 @@ nlohmann::json modelJson(const st::LumpedModel& m) {
           {"zeta", m.zeta}};
 }
 
+// The option table: a motorcycle or bicycle fork (thesis §4.2 Table 12,
+// §6.4-§6.5 Tables 19-21 are well inside).
+const OptionSpec kSpec{{},
+                       {"--json"},
+                       {{"--k", aboveTo(0, 1e9, "N m/rad"), "static bending stiffness"},
+                        {"--l1", closed(-10, 10, "m"), "static axis arm L1"},
+                        {"--l2", closed(-10, 10, "m"), "dynamic axis arm L2"},
+                        {"--wheel-centre", closed(-10, 10, "m"), "wheel centre height h_c"},
+                        {"--mass", aboveTo(0, 1000, "kg"), "vibrating mass M"},
+                        {"--wheel-inertia", closed(0, 100, "kg m^2"), "wheel inertia"},
+                        {"--freq", aboveTo(0, 1e4, "Hz"), "measured natural frequency"},
+                        {"--zeta", closed(0, 1, ""), "viscous damping ratio"},
+                        {"--fork-mass", aboveTo(0, 100, "kg"), "fork mass"},
+                        {"--wheel-mass", aboveTo(0, 100, "kg"), "wheel mass"},
+                        {"--wheel-radius", aboveTo(0, 2, "m"), "wheel radius"},
+                        {"--hub-mass", aboveTo(0, 100, "kg"), "hub mass"},
+                        {"--hub-radius", aboveTo(0, 1, "m"), "hub radius"},
+                        {"--hub-length", aboveTo(0, 1, "m"), "hub length"},
+                        {"--tip-distance", aboveTo(0, 5, "m"), "fork tip distance"},
+                        {"--max-bend-arm", aboveTo(0, 5, "m"), "largest bend arm (fixing point)"},
+                        {"--f-tors-wheel", aboveTo(0, 1e4, "Hz"), "torsion frequency with wheel"},
+                        {"--eta-tors-wheel", closed(0, 2, ""), "torsion loss factor with wheel"},
+                        {"--f-tors-alone", aboveTo(0, 1e4, "Hz"), "torsion frequency, fork alone"},
+                        {"--f-tors-alone2", aboveTo(0, 1e4, "Hz"), "second torsion frequency, fork alone"},
+                        {"--f-bend-wheel", aboveTo(0, 1e4, "Hz"), "bending frequency with wheel"},
+                        {"--eta-bend-wheel", closed(0, 2, ""), "bending loss factor with wheel"},
+                        {"--f-bend-alone", aboveTo(0, 1e4, "Hz"), "bending frequency, fork alone"}}};
+
 int forkCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const auto parsed = ParsedArgs::parse(args, OptionSpec{{"--k",
-                                                          "--l1",
-                                                          "--l2",
-                                                          "--wheel-centre",
-                                                          "--mass",
-                                                          "--wheel-inertia",
-                                                          "--freq",
-                                                          "--zeta",
-                                                          "--fork-mass",
-                                                          "--wheel-mass",
-                                                          "--wheel-radius",
-                                                          "--hub-mass",
-                                                          "--hub-radius",
-                                                          "--hub-length",
-                                                          "--tip-distance",
-                                                          "--max-bend-arm",
-                                                          "--f-tors-wheel",
-                                                          "--eta-tors-wheel",
-                                                          "--f-tors-alone",
-                                                          "--f-tors-alone2",
-                                                          "--f-bend-wheel",
-                                                          "--eta-bend-wheel",
-                                                          "--f-bend-alone"},
-                                                         {"--json"}});
+  const auto parsed = ParsedArgs::parse(args, kSpec);
+  if (!parsed && exitCodeFor(parsed.error()) == kExitFailure) {
+    err << "mozzi-cli fork: " << parsed.error().describe() << "\n";
+    return kExitFailure;
+  }
   if (!parsed || parsed->positional().size() != 1) {
     err << "mozzi-cli fork: " << (parsed ? "expected 'lumped' or 'bicycle'" : parsed.error().describe()) << "\n"
         << kUsage;
@@ -170,7 +179,7 @@ int forkCommand(const std::vector<std::string>& args, std::ostream& out, std::os
 
 const CommandRegistrar kRegistrar({"fork", "lumped|bicycle --OPTION VALUE ... [--json]",
                                    "Lumped fork models (Table 12) and bicycle-fork stiffness and damping (§6.4, §6.5)",
-                                   forkCommand});
+                                   forkCommand, &kSpec});
 
 }  // namespace
 }  // namespace mozzi::cli

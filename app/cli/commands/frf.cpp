@@ -15,6 +15,7 @@
 
 #include "app/cli/args.h"
 #include "app/cli/command.h"
+#include "app/cli/output.h"
 #include "core/io/uff/uff.h"
 #include "core/signal/frf_estimator.h"
 #include "core/signal/hit_quality.h"
@@ -152,10 +153,21 @@ std::string dofList(const std::vector<core::Dof>& dofs) {
   return s;
 }
 
+// The option table: a hammer pulse lasts well under a second; the force
+// window must also cover at least one sample (checked against the file).
+const OptionSpec kSpec{{"--estimator", "--reference", "--out"},
+                       {"--json"},
+                       {{"--force-window", aboveTo(0, 10, "s"), "force window width (at least one sample)"},
+                        {"--exp-window", aboveTo(0, 1000, "s"), "exponential window time constant tau"},
+                        {"--max-condition", closed(1, 1e12, ""), "largest condition number of Gff"}},
+                       {"--out"}};
+
 int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const auto parsed = ParsedArgs::parse(
-      args, OptionSpec{{"--estimator", "--force-window", "--exp-window", "--reference", "--max-condition", "--out"},
-                       {"--json"}});
+  const auto parsed = ParsedArgs::parse(args, kSpec);
+  if (!parsed && exitCodeFor(parsed.error()) == kExitFailure) {
+    err << "mozzi-cli frf: " << parsed.error().describe() << "\n";
+    return kExitFailure;
+  }
   if (!parsed || parsed->positional().size() != 1 || !parsed->value("--estimator")) {
     err << "mozzi-cli frf: "
         << (!parsed                            ? parsed.error().describe()
@@ -196,20 +208,14 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
         << kUsage;
     return kExitUsage;
   }
-  if ((forceWidth->has_value() && !(**forceWidth > 0.0)) || (tau->has_value() && !(**tau > 0.0))) {
-    err << "mozzi-cli frf: --force-window and --exp-window take a positive time in seconds\n" << kUsage;
-    return kExitUsage;
-  }
-  if (maxCondition->has_value() && !(**maxCondition >= 1.0)) {
-    err << "mozzi-cli frf: --max-condition takes a condition number >= 1\n" << kUsage;
-    return kExitUsage;
-  }
   if (references.size() > 1 && *estimator != sg::FrfEstimator::H1) {
     err << "mozzi-cli frf: " << sg::frfEstimatorName(*estimator)
         << " takes one reference; with several --reference DOFs use --estimator H1\n"
         << kUsage;
     return kExitUsage;
   }
+
+  if (int rc = refuseOutputsOntoInputs(*parsed, kSpec, {path}, "frf", err); rc != kExitOk) return rc;
 
   auto file = uff::readFile(path);
   if (!file) {
@@ -220,6 +226,16 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   if (!hits) {
     err << "mozzi-cli frf: " << hits.error().describe() << "\n";
     return kExitFailure;
+  }
+  if (forceWidth->has_value()) {
+    // A window narrower than one sample keeps at most the sample at t = 0: the
+    // FRF would be noise with coherence near 0.
+    const double rate = hits->front().record.sampleRateHz;
+    if (**forceWidth * rate < 1.0) {
+      err << "mozzi-cli frf: option --force-window = " << fmt(**forceWidth) << " s is shorter than one sample of "
+          << path << " (1/" << fmt(rate) << " Hz = " << fmt(1.0 / rate) << " s)\n";
+      return kExitFailure;
+    }
   }
 
   // Force window: the given width, tapered over a quarter of it.
@@ -384,7 +400,7 @@ const CommandRegistrar kRegistrar({"frf",
                                    "[--reference NODE:DIR[,NODE:DIR...]] [--max-condition C] [--out FRF.uff] [--json]",
                                    "Hammer FRFs with coherence from UFF 58 time records, hit by hit checked; "
                                    "several references: multiple-input H1 (shakers)",
-                                   frfCommand});
+                                   frfCommand, &kSpec});
 
 }  // namespace
 }  // namespace mozzi::cli

@@ -137,52 +137,60 @@ void printRanking(std::ostream& out, const gap::Diagnosis& d) {
   }
 }
 
+// The option table (docs/cli/gap.md).
+const OptionSpec kSpec{
+    {"--model", "--measured", "--bands", "--effects"},
+    {"--json"},
+    {{"--band", "analysis band in Hz, LO < HI", {{"LO", closed(0, 1e6, "Hz")}, {"HI", aboveTo(0, 1e6, "Hz")}}, ':'},
+     {"--bootstrap", wholeNumber(0, 100000), "bootstrap samples"},
+     {"--seed", wholeNumber(0, 2147483647), "random seed"},
+     {"--multistarts", wholeNumber(1, 100), "fit start points per effect"},
+     {"--noise-floor", NumberRange(0, 1, true, true), "relative noise floor sigma"},
+     {"--averages", wholeNumber(1, 100000), "averages behind the measured FRFs"}}};
+
 int gapCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  OptionSpec spec;
-  spec.valued = {"--model",     "--measured", "--band",        "--bands",       "--effects",
-                 "--bootstrap", "--seed",     "--multistarts", "--noise-floor", "--averages"};
-  spec.flags = {"--json"};
-  auto parsed = ParsedArgs::parse(args, spec);
-  if (!parsed) return usage(err, parsed.error().message);
+  auto parsed = ParsedArgs::parse(args, kSpec);
+  if (!parsed) {
+    if (exitCodeFor(parsed.error()) == kExitUsage) return usage(err, parsed.error().message);
+    return fail(err, parsed.error());
+  }
   if (!parsed->positional().empty()) return usage(err, "unexpected argument '" + parsed->positional()[0] + "'");
   const auto model = parsed->value("--model"), measured = parsed->value("--measured");
   if (!model || !measured) return usage(err, "--model and --measured are required");
 
   gap::LoadOptions load;
-  if (auto band = parsed->value("--band")) {
-    if (!parseRange(*band, load.bandLowHz, load.bandHighHz)) {
-      return usage(err, "--band must be LO:HI in Hz with 0 <= LO < HI (got '" + *band + "')");
+  if (parsed->value("--band")) {
+    const auto band = parsed->numbers("--band");
+    if (!(band.at(1) > band.at(0))) {
+      err << "mozzi-cli gap: option --band needs LO < HI (got '" << *parsed->value("--band") << "')\n";
+      return kExitFailure;
     }
+    load.bandLowHz = band[0];
+    load.bandHighHz = band[1];
   }
   if (auto bands = parsed->value("--bands")) {
     for (const auto& b : splitComma(*bands)) {
       double lo = 0, hi = 0;
-      if (!parseRange(b, lo, hi)) return usage(err, "--bands must be LO:HI,LO:HI,... in Hz (got '" + b + "')");
+      if (!parseRange(b, lo, hi) || hi > 1e6) {
+        err << "mozzi-cli gap: option --bands must be LO:HI,LO:HI,... in Hz with 0 <= LO < HI <= 1e6 (got '"
+            << b.substr(0, 40) << "')\n";
+        return kExitFailure;
+      }
       load.reportBands.emplace_back(lo, hi);
     }
   }
-  auto integer = [&](const char* name, int lowest, int highest, int& value) -> bool {
-    auto n = parsed->number(name);
-    if (!n) return false;
-    if (!n->has_value()) return true;
-    if (!(**n >= lowest && **n <= highest && std::floor(**n) == **n)) return false;
-    value = static_cast<int>(**n);
-    return true;
-  };
   gap::DiagnosisOptions options;
   int seed = 1;
-  if (!integer("--bootstrap", 0, 100000, options.bootstrapSamples))
-    return usage(err, "--bootstrap must be an integer in 0..100000");
-  if (!integer("--seed", 0, 2147483647, seed)) return usage(err, "--seed must be a non-negative integer");
-  if (!integer("--multistarts", 1, 100, options.multistarts))
-    return usage(err, "--multistarts must be an integer in 1..100");
-  if (!integer("--averages", 1, 100000, load.averages)) return usage(err, "--averages must be a positive integer");
+  // Range-checked by parse().
+  auto integer = [&](const char* name, int& value) {
+    if (auto n = parsed->number(name); n && n->has_value()) value = static_cast<int>(**n);
+  };
+  integer("--bootstrap", options.bootstrapSamples);
+  integer("--seed", seed);
+  integer("--multistarts", options.multistarts);
+  integer("--averages", load.averages);
   options.seed = static_cast<unsigned long long>(seed);
-  if (auto nf = parsed->number("--noise-floor"); !nf || (nf->has_value() && !(**nf > 0 && **nf < 1))) {
-    return usage(err, "--noise-floor must be a relative sigma in (0, 1)");
-  } else if (nf->has_value()) {
-    load.relativeFloor = **nf;
-  }
+  if (auto nf = parsed->number("--noise-floor"); nf && nf->has_value()) load.relativeFloor = **nf;
 
   auto problem = gap::loadGapProblem(*model, *measured, load);
   if (!problem) return fail(err, problem.error());
@@ -220,7 +228,7 @@ int gapCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
 
 const CommandRegistrar kRegistrar(
     {"gap", kSynopsis, "Sim-to-real gap: where model and test disagree, which effect explains it, the shrink",
-     gapCommand});
+     gapCommand, &kSpec});
 
 }  // namespace
 }  // namespace mozzi::cli

@@ -11,6 +11,7 @@
 
 #include "app/cli/args.h"
 #include "app/cli/command.h"
+#include "app/cli/output.h"
 #include "core/io/project_store.h"
 #include "core/io/uff/uff.h"
 #include "core/modal/lsce.h"
@@ -76,41 +77,41 @@ struct Row {
   double mpc = 0;
 };
 
+// The option table: a band within what a UFF file can sample (1 MHz); the
+// model order bounds the pLSCF/LSCE solve size.
+const OptionSpec kSpec{
+    {"--method", "--stabilization", "--modes", "--frf-set"},
+    {"--json"},
+    {{"--band", "band in Hz, LO < HI", {{"LO", closed(0, 1e6, "Hz")}, {"HI", aboveTo(0, 1e6, "Hz")}}, ':'},
+     {"--max-order", wholeNumber(8, 400), "largest model order"}},
+    {"--stabilization", "--modes"}};
+
 int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  OptionSpec spec;
-  spec.valued = {"--band", "--method", "--max-order", "--stabilization", "--modes", "--frf-set"};
-  spec.flags = {"--json"};
-  auto parsed = ParsedArgs::parse(args, spec);
-  if (!parsed) return usage(err, parsed.error().message);
+  auto parsed = ParsedArgs::parse(args, kSpec);
+  if (!parsed) {
+    if (exitCodeFor(parsed.error()) == kExitUsage) return usage(err, parsed.error().message);
+    return fail(err, parsed.error());
+  }
   if (parsed->positional().size() != 1)
     return usage(err, parsed->value("--frf-set") ? "expected one project file" : "expected one FRF file");
-  const auto bandText = parsed->value("--band");
-  if (!bandText) return usage(err, "--band LO:HI is required");
-  double lo = 0, hi = 0;
-  {
-    const auto colon = bandText->find(':');
-    char* end = nullptr;
-    bool ok = colon != std::string::npos;
-    if (ok) {
-      const std::string a = bandText->substr(0, colon), b = bandText->substr(colon + 1);
-      lo = std::strtod(a.c_str(), &end);
-      ok = !a.empty() && *end == '\0';
-      hi = std::strtod(b.c_str(), &end);
-      ok = ok && !b.empty() && *end == '\0' && std::isfinite(lo) && std::isfinite(hi) && lo >= 0 && hi > lo;
-    }
-    if (!ok) return usage(err, "--band must be LO:HI in Hz with 0 <= LO < HI (got '" + *bandText + "')");
+  if (!parsed->value("--band")) return usage(err, "--band LO:HI is required");
+  const auto band = parsed->numbers("--band");
+  const double lo = band.at(0), hi = band.at(1);
+  if (!(hi > lo)) {
+    err << "mozzi-cli identify: option --band needs LO < HI (got '" << *parsed->value("--band") << "')\n";
+    return kExitFailure;
   }
   const std::string method = parsed->value("--method").value_or("plscf");
   if (method != "plscf" && method != "lsce" && method != "circle" && method != "peak") {
     return usage(err, "unknown --method '" + method + "' (available: plscf, lsce, circle, peak)");
   }
   int maxOrder = 60;
-  auto mo = parsed->number("--max-order");
-  if (!mo) return usage(err, mo.error().message);
-  if (mo->has_value()) {
-    if (!(**mo >= 8 && **mo <= 400 && std::floor(**mo) == **mo))
-      return usage(err, "--max-order must be an integer in 8..400");
-    maxOrder = static_cast<int>(**mo);
+  if (auto mo = parsed->number("--max-order"); mo && mo->has_value()) maxOrder = static_cast<int>(**mo);
+  if (parsed->value("--stabilization") && method != "plscf" && method != "lsce") {
+    return usage(err, "--stabilization needs --method plscf or lsce");
+  }
+  if (int rc = refuseOutputsOntoInputs(*parsed, kSpec, {parsed->positional()[0]}, "identify", err); rc != kExitOk) {
+    return rc;
   }
 
   const std::string& input = parsed->positional()[0];
@@ -119,13 +120,17 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
   double tauS = 0.0;  // exponential window of the measurement, removed from the damping
   core::Result<core::FrfMatrix> frf = core::makeError(core::ErrorCode::NotFound, "no FRFs");
   if (auto set = parsed->value("--frf-set")) {
-    frf = projectFrf(parsed->positional()[0], *set, &tauS);
+    frf = projectFrf(input, *set, &tauS);
   } else {
-    auto file = uff::readFile(parsed->positional()[0]);
+    auto file = uff::readFile(input);
     if (!file) return fail(err, file.error());
     frf = uff::toFrfMatrix(*file);
   }
-  if (!frf) return fail(err, frf.error());
+  if (!frf) {
+    core::Error e = frf.error();
+    e.where = input + (e.where.empty() ? "" : ", " + e.where);  // name the file
+    return fail(err, e);
+  }
 
   md::ModalModel model;
   std::vector<Row> rows;
@@ -239,7 +244,7 @@ const CommandRegistrar kRegistrar(
     {"identify",
      "FRF.uff|PROJECT.mozzi [--frf-set ID] --band LO:HI [--method plscf|lsce|circle|peak] [--max-order N] "
      "[--stabilization OUT.csv] [--modes OUT.uff] [--json]",
-     "Modal identification: frequencies, damping (zeta, eta), standard errors, MPC", identifyCommand});
+     "Modal identification: frequencies, damping (zeta, eta), standard errors, MPC", identifyCommand, &kSpec});
 
 }  // namespace
 }  // namespace mozzi::cli

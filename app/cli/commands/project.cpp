@@ -7,6 +7,7 @@
 #include "app/build_info.h"
 #include "app/cli/args.h"
 #include "app/cli/command.h"
+#include "app/cli/output.h"
 #include "core/io/csv/csv_exchange.h"
 #include "core/io/project_store.h"
 #include "core/io/uff/uff.h"
@@ -18,8 +19,15 @@ namespace {
 constexpr const char* kUsage =
     "Usage: mozzi-cli project info FILE.mozzi [--json]\n"
     "       mozzi-cli project new|demo FILE.mozzi\n"
+    "       mozzi-cli project check FILE.mozzi [--json]\n"
     "       mozzi-cli project export FILE.mozzi --uff OUT.uff [--binary] [--frf-set ID]\n"
     "       mozzi-cli project export FILE.mozzi --csv OUT.csv [--frf-set ID]\n";
+
+// The option table (docs/cli.md, ranges): --frf-set is a row id.
+const OptionSpec kSpec{{"--uff", "--csv"},
+                       {"--json", "--binary"},
+                       {{"--frf-set", wholeNumber(1, 9007199254740992.0), "FRF set id (see 'project info')"}},
+                       {"--uff", "--csv"}};
 
 int fail(std::ostream& err, const std::string& what, const core::Error& e) {
   err << "mozzi-cli project " << what << ": " << e.describe() << "\n";
@@ -117,7 +125,8 @@ int info(const std::string& file, bool json, std::ostream& out, std::ostream& er
     for (const auto& t : *rigTests) j["rig_tests"].push_back(testJson(t));
     j["tyre_tests"] = nlohmann::json::array();
     for (const auto& t : *tyreTests) j["tyre_tests"].push_back(testJson(t));
-    out << j.dump(2) << "\n";
+    out << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+
     return kExitOk;
   }
   out << "project " << file << "\n  schema " << summary->schemaVersion << ", created " << summary->createdUtc
@@ -279,11 +288,50 @@ int exportCsv(const core::io::ProjectStore& store, const std::string& file, cons
   return kExitOk;
 }
 
+// Reads every record back and verifies its checksum (docs/cli/project.md).
+// Exit 0 when nothing is damaged, 1 when something is (each damaged record
+// named) or the file cannot be opened at all.
+int check(const std::string& file, bool json, std::ostream& out, std::ostream& err) {
+  auto store = core::io::ProjectStore::open(file, core::io::ProjectStore::OpenMode::ReadOnly);
+  if (!store) return fail(err, "check", store.error());
+  auto report = store->checkIntegrity();
+  if (!report) return fail(err, "check", report.error());
+  if (json) {
+    nlohmann::json j;
+    j["file"] = file;
+    j["ok"] = report->ok();
+    j["records_checked"] = report->recordsChecked;
+    j["records_without_checksum"] = report->recordsWithoutChecksum;
+    j["problems"] = nlohmann::json::array();
+    for (const auto& p : report->problems) j["problems"].push_back({{"record", p.record}, {"message", p.message}});
+    out << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+  } else {
+    out << "project " << file << ": " << report->recordsChecked << " records read back";
+    if (report->recordsWithoutChecksum > 0) {
+      out << " (" << report->recordsWithoutChecksum << " written before schema 4 carry no checksum)";
+    }
+    out << "\n";
+    if (report->ok()) out << "no damaged record\n";
+  }
+  for (const auto& p : report->problems)
+    err << "mozzi-cli project check: damaged: " << p.record << ": " << p.message << "\n";
+  if (!report->ok()) {
+    err << "mozzi-cli project check: " << report->problems.size() << " damaged record"
+        << (report->problems.size() == 1 ? "" : "s") << " in " << file << "\n";
+    return kExitFailure;
+  }
+  return kExitOk;
+}
+
 int projectCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const auto parsed = ParsedArgs::parse(args, OptionSpec{{"--uff", "--csv", "--frf-set"}, {"--json", "--binary"}});
-  if (!parsed || parsed->positional().size() != 2) {
-    err << "mozzi-cli project: " << (parsed ? "expected a subcommand and a file" : parsed.error().describe()) << "\n"
-        << kUsage;
+  const auto parsed = ParsedArgs::parse(args, kSpec);
+  if (!parsed) {
+    err << "mozzi-cli project: " << parsed.error().describe() << "\n";
+    if (exitCodeFor(parsed.error()) == kExitUsage) err << kUsage;
+    return exitCodeFor(parsed.error());
+  }
+  if (parsed->positional().size() != 2) {
+    err << "mozzi-cli project: expected a subcommand and a file\n" << kUsage;
     return kExitUsage;
   }
   const std::string& sub = parsed->positional()[0];
@@ -295,13 +343,17 @@ int projectCommand(const std::vector<std::string>& args, std::ostream& out, std:
     return kExitOk;
   }
   if (sub == "demo") {
-    if (auto r = devices::sim::createDemoProject(file, buildinfo::kMozziVersion); !r)
-      return fail(err, "demo", r.error());
+    // Built under a temporary name and renamed into place: a killed run leaves
+    // no project or a whole one (core/io/project_store.h).
+    auto made = core::io::createProjectAtomically(
+        file, [](const std::string& temp) { return devices::sim::createDemoProject(temp, buildinfo::kMozziVersion); });
+    if (!made) return fail(err, "demo", made.error());
     out << "created demo project " << file << " with " << devices::sim::virtualSpecimens().size()
         << " virtual specimens\n";
     return kExitOk;
   }
   if (sub == "info") return info(file, parsed->flag("--json"), out, err);
+  if (sub == "check") return check(file, parsed->flag("--json"), out, err);
   if (sub == "export") {
     const auto uffPath = parsed->value("--uff");
     const auto csvPath = parsed->value("--csv");
@@ -310,19 +362,16 @@ int projectCommand(const std::vector<std::string>& args, std::ostream& out, std:
       return kExitUsage;
     }
     std::optional<std::int64_t> onlySet;
-    if (auto number = parsed->number("--frf-set"); !number) {
-      err << "mozzi-cli project export: " << number.error().describe() << "\n";
-      return kExitUsage;
-    } else if (number->has_value()) {
+    if (const auto number = parsed->number("--frf-set"); number && number->has_value()) {
       onlySet = static_cast<std::int64_t>(**number);
-      if (static_cast<double>(*onlySet) != **number || *onlySet <= 0) {
-        err << "mozzi-cli project export: --frf-set needs a positive whole id\n";
-        return kExitUsage;
-      }
     }
     if (csvPath && parsed->flag("--binary")) {
       err << "mozzi-cli project export: --binary applies to --uff only\n";
       return kExitUsage;
+    }
+    if (int rc = refuseOutputsOntoInputs(*parsed, kSpec, {file, file + "-wal", file + "-shm"}, "project export", err);
+        rc != kExitOk) {
+      return rc;
     }
     auto store = core::io::ProjectStore::open(file, core::io::ProjectStore::OpenMode::ReadOnly);
     if (!store) return fail(err, "export", store.error());
@@ -334,9 +383,10 @@ int projectCommand(const std::vector<std::string>& args, std::ostream& out, std:
 }
 
 const CommandRegistrar kRegistrar({"project",
-                                   "info|new|demo|export FILE.mozzi [--json] [--uff OUT.uff | --csv OUT.csv]",
-                                   "Create a project (empty or the demo), summarise it, or export its FRFs and modes",
-                                   projectCommand});
+                                   "info|new|demo|check|export FILE.mozzi [--json] [--uff OUT.uff | --csv OUT.csv]",
+                                   "Create a project (empty or the demo), summarise or check it, or export its FRFs "
+                                   "and modes",
+                                   projectCommand, &kSpec});
 
 }  // namespace
 }  // namespace mozzi::cli

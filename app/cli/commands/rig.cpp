@@ -154,19 +154,24 @@ int caps(const std::string& driver, const std::string& file, bool json, std::ost
     return kExitFailure;
   }
   // Capabilities are static data of the driver: no device needs to be present.
-  // A replay's channels come from its recording: open it when one is named.
+  // A replay's channels come from its recording's headers, read by create()
+  // without the samples (so a recording of any size is summarised at once).
+  if (!file.empty() && driver != "sim-replay") {
+    err << "mozzi-cli rig caps: --file is for the sim-replay driver\n";
+    return kExitUsage;
+  }
   auto dev = d->create(devices::DeviceDescriptor{driver, "", 0, 0, "", file});
   if (!dev) {
     err << "mozzi-cli rig caps: " << dev.error().describe() << "\n";
     return kExitFailure;
   }
-  if (!file.empty()) {
-    if (auto opened = (*dev)->open(); !opened) {
-      err << "mozzi-cli rig caps: " << opened.error().describe() << "\n";
-      return kExitFailure;
-    }
+  auto capabilities = file.empty() ? core::Result<devices::Capabilities>((*dev)->capabilities())
+                                   : devices::sim::replayRecordingCapabilities(file);
+  if (!capabilities) {
+    err << "mozzi-cli rig caps: " << capabilities.error().describe() << "\n";
+    return kExitFailure;
   }
-  const auto j = capsJson((*dev)->capabilities());
+  const auto j = capsJson(*capabilities);
   if (json) {
     out << j.dump(2) << "\n";
     return kExitOk;
@@ -407,6 +412,9 @@ int runTest(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
   return report(*o);
 }
 
+// list and caps (the option table of --help); run parses its own options.
+const OptionSpec kSpec{{"--file"}, {"--json"}};
+
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   if (!args.empty() && args[0] == "run") {
     const auto parsed = ParsedArgs::parse(args, OptionSpec{{"--specimen", "--rig", "--test", "--force", "--frequencies",
@@ -418,7 +426,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     }
     return runTest(*parsed, out, err);
   }
-  const auto parsed = ParsedArgs::parse(args, OptionSpec{{"--file"}, {"--json"}});
+  const auto parsed = ParsedArgs::parse(args, kSpec);
   if (!parsed) {
     err << parsed.error().describe() << "\n" << kUsage;
     return kExitUsage;
@@ -437,7 +445,7 @@ const CommandRegistrar kRegistrar(
      "--test static|dynamic|relaxation|steady-state [...] [--json]",
      "acquisition drivers, devices found, virtual specimens, capabilities and parameters; run a stiffness-rig or "
      "tyre-tester test into a project",
-     &run});
+     &run, &kSpec});
 
 }  // namespace
 }  // namespace mozzi::cli

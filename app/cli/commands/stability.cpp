@@ -25,24 +25,24 @@ constexpr const char* kUsage =
     "--speeds A:B:STEP [--json]\n"
     "       mozzi-cli stability motorcycle --params FILE [--fork-model 1|2|3|rigid] --speeds A:B:STEP [--json]\n";
 
-// "1,2.5,3" -> numbers; the error names the option.
-core::Result<std::vector<double>> numberList(const std::string& text, char sep, const std::string& option) {
-  std::vector<double> out;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, sep)) {
-    char* end = nullptr;
-    const double x = std::strtod(item.c_str(), &end);
-    if (item.empty() || end == item.c_str() || *end != '\0' || !std::isfinite(x)) {
-      return core::makeError(core::ErrorCode::InvalidArgument, "'" + item + "' is not a number", option);
-    }
-    out.push_back(x);
-  }
-  if (!text.empty() && text.back() == sep) {
-    return core::makeError(core::ErrorCode::InvalidArgument, "trailing separator", option);
-  }
-  return out;
-}
+// The option table (docs/cli/stability.md): road speeds; fork joint
+// stiffness up to 1e12 N m/rad (rigid for practical purposes, balance.h),
+// damping and bend arm of a real fork.
+const OptionSpec kSpec{
+    {"--params", "--fork-model"},
+    {"--json"},
+    {{"--speeds",
+      "speed grid",
+      {{"A", closed(0, 1000, "m/s")}, {"B", closed(0, 1000, "m/s")}, {"STEP", aboveTo(0, 1000, "m/s")}},
+      ':'},
+     {"--fork-bending",
+      "fork bending joint",
+      {{"k", aboveTo(0, 1e12, "N m/rad")}, {"c", closed(0, 1e6, "N m s/rad")}, {"hW", aboveTo(0, 5, "m")}},
+      ','},
+     {"--fork-torsion",
+      "fork torsion joint",
+      {{"k", aboveTo(0, 1e12, "N m/rad")}, {"c", closed(0, 1e6, "N m s/rad")}},
+      ','}}};
 
 nlohmann::json toJson(const std::string& model, const st::StabilitySweep& sweep) {
   nlohmann::json j;
@@ -94,8 +94,11 @@ void printText(std::ostream& out, const std::string& model, const st::StabilityS
 }
 
 int stabilityCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const auto parsed = ParsedArgs::parse(
-      args, OptionSpec{{"--params", "--fork-bending", "--fork-torsion", "--fork-model", "--speeds"}, {"--json"}});
+  const auto parsed = ParsedArgs::parse(args, kSpec);
+  if (!parsed && exitCodeFor(parsed.error()) == kExitFailure) {
+    err << "mozzi-cli stability: " << parsed.error().describe() << "\n";
+    return kExitFailure;
+  }
   if (!parsed || parsed->positional().size() != 1) {
     err << "mozzi-cli stability: " << (parsed ? "expected bicycle or motorcycle" : parsed.error().describe()) << "\n"
         << kUsage;
@@ -111,15 +114,11 @@ int stabilityCommand(const std::vector<std::string>& args, std::ostream& out, st
     err << "mozzi-cli stability: --speeds A:B:STEP is required\n" << kUsage;
     return kExitUsage;
   }
-  const auto range = numberList(*speedsText, ':', "--speeds");
-  if (!range || range->size() != 3) {
-    err << "mozzi-cli stability: " << (range ? "--speeds needs A:B:STEP" : range.error().describe()) << "\n" << kUsage;
-    return kExitUsage;
-  }
-  const auto speeds = st::speedGrid((*range)[0], (*range)[1], (*range)[2]);
+  const auto range = parsed->numbers("--speeds");  // A, B, STEP, range-checked by parse()
+  const auto speeds = st::speedGrid(range.at(0), range.at(1), range.at(2));
   if (!speeds) {
-    err << "mozzi-cli stability: " << speeds.error().describe() << "\n";
-    return kExitUsage;
+    err << "mozzi-cli stability: option --speeds: " << speeds.error().message << "\n";
+    return kExitFailure;
   }
 
   st::StabilitySystem system;
@@ -148,27 +147,19 @@ int stabilityCommand(const std::vector<std::string>& args, std::ostream& out, st
     }
     core::Result<st::BicycleModel> m = core::makeError(core::ErrorCode::InvalidArgument, "no model");
     if (bending) {
-      const auto v = numberList(*bending, ',', "--fork-bending");
-      if (!v || v->size() != 3) {
-        err << "mozzi-cli stability: " << (v ? "--fork-bending needs k,c,hW" : v.error().describe()) << "\n" << kUsage;
-        return kExitUsage;
-      }
-      m = st::forkBendingModel(params, {(*v)[0], (*v)[1], (*v)[2]});
+      const auto v = parsed->numbers("--fork-bending");  // k, c, hW, range-checked by parse()
+      m = st::forkBendingModel(params, {v.at(0), v.at(1), v.at(2)});
       model += " with fork bending";
     } else if (torsion) {
-      const auto v = numberList(*torsion, ',', "--fork-torsion");
-      if (!v || v->size() != 2) {
-        err << "mozzi-cli stability: " << (v ? "--fork-torsion needs k,c" : v.error().describe()) << "\n" << kUsage;
-        return kExitUsage;
-      }
-      m = st::forkTorsionModel(params, {(*v)[0], (*v)[1], 0.0});
+      const auto v = parsed->numbers("--fork-torsion");  // k, c
+      m = st::forkTorsionModel(params, {v.at(0), v.at(1), 0.0});
       model += " with fork torsion";
     } else {
       m = st::benchmarkModel(params);
     }
     if (!m) {
       err << "mozzi-cli stability: " << m.error().describe() << "\n";
-      return (bending || torsion) && m.error().code == core::ErrorCode::InvalidArgument ? kExitUsage : kExitFailure;
+      return kExitFailure;
     }
     system = st::bicycleSystem(*m);
   } else {
@@ -196,8 +187,9 @@ int stabilityCommand(const std::vector<std::string>& args, std::ostream& out, st
       fork = *f;
     }
     if (!((*speeds)[0] > 0.0)) {
-      err << "mozzi-cli stability motorcycle: speeds must be positive (tyre slip divides by speed)\n";
-      return kExitUsage;
+      err << "mozzi-cli stability motorcycle: option --speeds: speeds must be positive (tyre slip divides by "
+             "speed)\n";
+      return kExitFailure;
     }
     auto p = st::loadSharpParameters(*file);
     if (!p) {
@@ -230,7 +222,8 @@ const CommandRegistrar kRegistrar(
      "bicycle [--params FILE] [--fork-bending k,c,hW | --fork-torsion k,c] --speeds A:B:STEP "
      "[--json] | motorcycle --params FILE [--fork-model 1|2|3|rigid] --speeds A:B:STEP "
      "[--json]",
-     "Eigenvalues against speed with mode names and critical speeds (weave, capsize, wobble)", stabilityCommand});
+     "Eigenvalues against speed with mode names and critical speeds (weave, capsize, wobble)", stabilityCommand,
+     &kSpec});
 
 }  // namespace
 }  // namespace mozzi::cli

@@ -17,11 +17,26 @@ const char* kUsage =
     "Usage: mozzi-cli stiffness decompose --k-twist NM_PER_RAD --a-twist M --a-bend M --a-tors M\n"
     "         (--fork --alpha-deg DEG | --beta-twist-deg DEG --beta-bend-deg DEG --beta-tors-deg DEG) [--json]\n";
 
+// The option table: stiffness of a frame or fork (thesis Tables 1-11 are
+// 1e3..1e6 Nm/rad), axis arms within a few metres of the reference, angles
+// within a turn.
+const OptionSpec kSpec{{},
+                       {"--json", "--fork"},
+                       {{"--k-twist", aboveTo(0, 1e12, "N m/rad"), "twist stiffness k_tw"},
+                        {"--a-twist", closed(-100, 100, "m"), "twist axis arm a_tw"},
+                        {"--a-bend", closed(-100, 100, "m"), "bending axis arm a_bend"},
+                        {"--a-tors", closed(-100, 100, "m"), "torsion axis arm a_tors"},
+                        {"--alpha-deg", closed(-360, 360, "deg"), "fork axis angle alpha"},
+                        {"--beta-twist-deg", closed(-360, 360, "deg"), "twist axis inclination"},
+                        {"--beta-bend-deg", closed(-360, 360, "deg"), "bending axis inclination"},
+                        {"--beta-tors-deg", closed(-360, 360, "deg"), "torsion axis inclination"}}};
+
 int stiffnessCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const auto parsed =
-      ParsedArgs::parse(args, OptionSpec{{"--k-twist", "--a-twist", "--a-bend", "--a-tors", "--alpha-deg",
-                                          "--beta-twist-deg", "--beta-bend-deg", "--beta-tors-deg"},
-                                         {"--json", "--fork"}});
+  const auto parsed = ParsedArgs::parse(args, kSpec);
+  if (!parsed && exitCodeFor(parsed.error()) == kExitFailure) {
+    err << "mozzi-cli stiffness: " << parsed.error().describe() << "\n";
+    return kExitFailure;
+  }
   if (!parsed || parsed->positional().size() != 1 || parsed->positional()[0] != "decompose") {
     err << "mozzi-cli stiffness: " << (parsed ? "expected the subcommand 'decompose'" : parsed.error().describe())
         << "\n"
@@ -77,7 +92,7 @@ int stiffnessCommand(const std::vector<std::string>& args, std::ostream& out, st
 
 const CommandRegistrar kRegistrar({"stiffness", "decompose --k-twist K --a-twist A --a-bend A --a-tors A ... [--json]",
                                    "Decompose the twist stiffness into bending and torsion (eq. 24, 27, 35, 36)",
-                                   stiffnessCommand});
+                                   stiffnessCommand, &kSpec});
 
 }  // namespace
 }  // namespace mozzi::cli

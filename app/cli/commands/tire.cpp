@@ -54,7 +54,42 @@ int usage(std::ostream& err, const std::string& msg) {
   return kExitUsage;
 }
 
-// Reads a required or optional number option; false on a usage error.
+// The option table (docs/cli/tire.md): ranges of motorcycle, scooter,
+// bicycle and wheelchair tyres with room to spare (thesis ch. 5-7 values
+// are well inside).
+const OptionSpec kSpec{
+    {"--thesis-tyre", "--contact", "--hold"},
+    {"--json", "--magic-formula"},
+    {{"--half-length", aboveTo(0, 1, "m"), "contact patch half-length a"},
+     {"--speed", aboveTo(0, 100, "m/s"), "rolling speed"},
+     {"--force-sign", wholeNumber(-1, 1), "sign of the measured lateral force (-1 or 1)"},
+     {"--band", "band in Hz, LO < HI", {{"LO", closed(0, 1e4, "Hz")}, {"HI", aboveTo(0, 1e4, "Hz")}}, ':'},
+     {"--modes",
+      "ring modes",
+      {{"k", wholeNumber(0, 50)}, {"f", aboveTo(0, 1e4, "Hz")}, {"zeta", closed(0, 1)}},
+      ':',
+      true,
+      64},
+     {"--mass", aboveTo(0, 1000, "kg"), "ring (tyre) mass"},
+     {"--radius", aboveTo(0, 5, "m"), "ring or unloaded radius"},
+     {"--belt-share", aboveTo(0, 1), "share of the mass in the belt"},
+     {"--stiffness",
+      "ring stiffness per mode",
+      {{"k", wholeNumber(0, 50)}, {"C", aboveTo(0, 1e9, "N/m")}},
+      ':',
+      true,
+      64},
+     {"--cornering-stiffness", aboveTo(0, 1e7, "N/rad"), "cornering stiffness C_alpha"},
+     {"--load", aboveTo(0, 1e6, "N"), "vertical load F_z"},
+     {"--friction", aboveTo(0, 10), "friction coefficient"},
+     {"--trail", closed(-1, 1, "m"), "pneumatic trail"},
+     {"--frequencies", "frequencies", {{"f", aboveTo(0, 1e4, "Hz")}}, ',', true, 1000},
+     {"--damping-ratio", NumberRange(0, 1, false, true), "ring damping ratio"},
+     {"--window", aboveTo(0, 90, "deg"), "regression half-window"},
+     {"--nominal-load", aboveTo(0, 1e6, "N"), "Magic Formula nominal load F_z0"},
+     {"--nominal-pressure", aboveTo(0, 100, "bar"), "Magic Formula nominal pressure"}}};
+
+// Reads an optional number option, range-checked by parse().
 bool number(const ParsedArgs& a, const std::string& name, std::optional<double>& out, std::ostream& err) {
   auto v = a.number(name);
   if (!v) {
@@ -76,11 +111,20 @@ int relaxation(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
   tr::HarmonicYawSettings s;
   s.halfLength = *half;
   if (speed) s.speed = *speed;
-  if (sign) s.forceSign = *sign;
-  if (auto band = a.value("--band")) {
-    auto b = tr::parseNumberTuples(*band, 2, "--band");
-    if (!b || b->size() != 1) return usage(err, "--band needs LOW:HIGH in Hz");
-    s.bandLowHz = (*b)[0][0], s.bandHighHz = (*b)[0][1];
+  if (sign) {
+    if (*sign == 0.0) {
+      err << "mozzi-cli tire: option --force-sign = 0 is out of range; valid: -1 or 1\n";
+      return kExitFailure;
+    }
+    s.forceSign = *sign;
+  }
+  if (a.value("--band")) {
+    const auto b = a.numbers("--band");
+    if (!(b.at(1) > b.at(0))) {
+      err << "mozzi-cli tire: option --band needs LO < HI (got '" << *a.value("--band") << "')\n";
+      return kExitFailure;
+    }
+    s.bandLowHz = b[0], s.bandHighHz = b[1];
   }
   const std::string& file = a.positional()[1];
   auto t = tr::readNumericTable(file, tr::harmonicYawColumns());
@@ -162,10 +206,10 @@ int ring(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     return kExitUsage;
   const auto modesText = a.value("--modes");
   if (!modesText || !mass || !radius) return usage(err, "ring needs --modes, --mass and --radius");
-  auto tuples = tr::parseNumberTuples(*modesText, 3, "--modes");
-  if (!tuples) return usage(err, tuples.error().describe());
+  const auto values = a.numbers("--modes");  // k, f, zeta per mode, range-checked by parse()
   std::vector<tr::RingModeInput> in;
-  for (const auto& t : *tuples) in.push_back({static_cast<int>(t[0]), t[1], t[2]});
+  for (std::size_t k = 0; k + 2 < values.size(); k += 3)
+    in.push_back({static_cast<int>(values[k]), values[k + 1], values[k + 2]});
   tr::RingModelSettings s{*mass, share.value_or(0.8), *radius};
   auto r = tr::identifyRingModel(in, s);
   if (!r) return fail(err, "ring", r.error());
@@ -221,9 +265,9 @@ int predict(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     const auto st = a.value("--stiffness");
     if (!st || !C || !load)
       return usage(err, "predict needs --thesis-tyre, or --stiffness, --cornering-stiffness and --load");
-    auto tuples = tr::parseNumberTuples(*st, 2, "--stiffness");
-    if (!tuples) return usage(err, tuples.error().describe());
-    for (const auto& t : *tuples) stiff.push_back({static_cast<int>(t[0]), t[1], z});
+    const auto values = a.numbers("--stiffness");  // k, C per mode, range-checked by parse()
+    for (std::size_t k = 0; k + 1 < values.size(); k += 2)
+      stiff.push_back({static_cast<int>(values[k]), values[k + 1], z});
     fz = *load;
     cAlpha = *C;
     label = "user input";
@@ -247,11 +291,7 @@ int predict(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
 
   // Optional: sigma implied by the appendix-1 FRF phase at given frequencies (first pressure... each pressure).
   std::vector<double> freqs;
-  if (auto fl = a.value("--frequencies")) {
-    auto tuples = tr::parseNumberTuples(*fl, 1, "--frequencies");
-    if (!tuples) return usage(err, tuples.error().describe());
-    for (const auto& t : *tuples) freqs.push_back(t[0]);
-  }
+  if (a.value("--frequencies")) freqs = a.numbers("--frequencies");  // range-checked by parse()
   Json rows = Json::array();
   if (!a.flag("--json")) {
     out << "relaxation length prediction (thesis eq. 48-50), " << label << "\n  C_alpha " << cAlpha << " N/rad, F_z "
@@ -434,29 +474,11 @@ int steady(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
 }
 
 int tireCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const OptionSpec spec{{"--half-length",
-                         "--speed",
-                         "--force-sign",
-                         "--band",
-                         "--modes",
-                         "--mass",
-                         "--radius",
-                         "--belt-share",
-                         "--thesis-tyre",
-                         "--stiffness",
-                         "--cornering-stiffness",
-                         "--load",
-                         "--contact",
-                         "--friction",
-                         "--trail",
-                         "--frequencies",
-                         "--damping-ratio",
-                         "--window",
-                         "--nominal-load",
-                         "--nominal-pressure",
-                         "--hold"},
-                        {"--json", "--magic-formula"}};
-  const auto parsed = ParsedArgs::parse(args, spec);
+  const auto parsed = ParsedArgs::parse(args, kSpec);
+  if (!parsed && exitCodeFor(parsed.error()) == kExitFailure) {
+    err << "mozzi-cli tire: " << parsed.error().describe() << "\n";
+    return kExitFailure;
+  }
   if (!parsed) return usage(err, parsed.error().describe());
   if (parsed->positional().empty()) return usage(err, "expected a subcommand");
   const std::string& sub = parsed->positional()[0];
@@ -469,7 +491,7 @@ int tireCommand(const std::vector<std::string>& args, std::ostream& out, std::os
 
 const CommandRegistrar kRegistrar(
     {"tire", "relaxation|ring|predict|steady ... [--json]",
-     "Tyre relaxation length, ring modal model, prediction, steady-state and Magic Formula", tireCommand});
+     "Tyre relaxation length, ring modal model, prediction, steady-state and Magic Formula", tireCommand, &kSpec});
 
 }  // namespace
 }  // namespace mozzi::cli

@@ -3,7 +3,7 @@
 // Input formats are documented in docs/cli/stiffness.md.
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <sstream>
@@ -12,6 +12,7 @@
 #include "app/cli/command.h"
 #include "core/common/dof.h"
 #include "core/io/csv/csv_exchange.h"
+#include "core/io/text_file.h"
 #include "core/stiffness/dynamic_twist.h"
 #include "core/stiffness/plate_motion.h"
 #include "core/stiffness/screw_axis.h"
@@ -25,7 +26,13 @@ constexpr double kDeg = 180.0 / 3.14159265358979323846;
 
 // A plate CSV: '#' comments and blank lines ignored; rows starting with
 // "sensor,u,v" and "load,u,v" give the geometry; a row whose first field is
-// not a number (a header) is skipped; every other row is numeric data.
+// text that does not read as a number at all (a header) is skipped; every
+// other row is numeric data, and "nan" or "inf" there is an error, not a
+// header. Ranges (docs/cli/stiffness.md): positions within 100 m of the
+// plate origin, data values within 1e9 in SI units; the file at most 64 MiB.
+constexpr double kMaxPlatePosition = 100.0;  // [m]
+constexpr double kMaxPlateValue = 1e9;       // [N, m, Hz, deg, m/N ...]
+constexpr std::uint64_t kMaxPlateFileBytes = std::uint64_t{64} << 20;
 struct PlateCsv {
   std::vector<Vector2> sensors;
   Vector2 load = Vector2::Zero();
@@ -45,16 +52,23 @@ core::Result<std::vector<std::string>> splitLine(const std::string& line) {
   return out;
 }
 
-bool toNumber(const std::string& t, double& v) {
+// Parses the whole field as a number (nan and inf included: the caller
+// decides); false when it is not a number at all.
+bool parsesAsNumber(const std::string& t, double& v) {
   if (t.empty()) return false;
   char* end = nullptr;
   v = std::strtod(t.c_str(), &end);
-  return end == t.c_str() + t.size() && std::isfinite(v);
+  return end == t.c_str() + t.size();
+}
+
+bool toNumber(const std::string& t, double& v) {
+  return parsesAsNumber(t, v) && std::isfinite(v);
 }
 
 core::Result<PlateCsv> readPlateCsv(const std::string& path, bool needSensors, bool needRows = true) {
-  std::ifstream in(path);
-  if (!in) return core::makeError(core::ErrorCode::IoError, "cannot open file", path);
+  auto text = core::io::readTextFile(path, "plate CSV", kMaxPlateFileBytes);
+  if (!text) return text.error();
+  std::istringstream in(*text);
   PlateCsv csv;
   std::string line;
   int lineNo = 0;
@@ -69,6 +83,11 @@ core::Result<PlateCsv> readPlateCsv(const std::string& path, bool needSensors, b
       if (fields.size() != 3 || !toNumber(fields[1], u) || !toNumber(fields[2], v)) {
         return core::makeError(core::ErrorCode::ParseError, "expected '" + fields[0] + ",u,v' with numbers", where);
       }
+      for (double x : {u, v}) {
+        if (auto r = checkInRange(x, closed(-kMaxPlatePosition, kMaxPlatePosition, "m"), fields[0] + " position"); !r) {
+          return core::makeError(core::ErrorCode::ParseError, r.error().message, where);
+        }
+      }
       if (fields[0] == "sensor") {
         csv.sensors.emplace_back(u, v);
       } else {
@@ -78,11 +97,19 @@ core::Result<PlateCsv> readPlateCsv(const std::string& path, bool needSensors, b
       continue;
     }
     double probe = 0;
-    if (!toNumber(fields[0], probe)) continue;  // header row
+    if (!parsesAsNumber(fields[0], probe)) continue;  // header row ("nan" is data, and an error below)
     std::vector<double> row;
-    for (const auto& f : fields) {
+    for (std::size_t k = 0; k < fields.size(); ++k) {
+      const auto& f = fields[k];
       double v = 0;
-      if (!toNumber(f, v)) return core::makeError(core::ErrorCode::ParseError, "not a number: '" + f + "'", where);
+      if (!parsesAsNumber(f, v)) {
+        return core::makeError(core::ErrorCode::ParseError,
+                               "column " + std::to_string(k + 1) + " is not a number: '" + f.substr(0, 40) + "'",
+                               where);
+      }
+      if (auto r = checkInRange(v, closed(-kMaxPlateValue, kMaxPlateValue), "column " + std::to_string(k + 1)); !r) {
+        return core::makeError(core::ErrorCode::ParseError, r.error().message, where);
+      }
       row.push_back(v);
     }
     if (!csv.rows.empty() && row.size() != csv.rows.front().size()) {
@@ -351,9 +378,16 @@ const char* kTwistUsage =
     "Usage: mozzi-cli twist static|dynamic|modal FILE.csv [--freq HZ] [--type accelerance|mobility|receptance] "
     "[--frf FRF.csv [--responses DOF,DOF,DOF]] [--phase-tol-deg D] [--json]\n";
 
+// The option tables (docs/cli/stiffness.md).
+const OptionSpec kTwistSpec{{"--type", "--frf", "--responses"},
+                            {"--json"},
+                            {{"--freq", aboveTo(0, 1e5, "Hz"), "frequency of the mode"},
+                             {"--phase-tol-deg", aboveTo(0, 90, "deg"), "phase tolerance about 0/180"}}};
+const OptionSpec kMozziSpec{{}, {"--json", "--planar"}, {{"--sigma", aboveTo(0, 1, "m"), "measurement sigma floor"}}};
+
 int twistCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const auto parsed =
-      ParsedArgs::parse(args, OptionSpec{{"--freq", "--type", "--phase-tol-deg", "--frf", "--responses"}, {"--json"}});
+  const auto parsed = ParsedArgs::parse(args, kTwistSpec);
+  if (!parsed && exitCodeFor(parsed.error()) == kExitFailure) return fail(err, "twist", parsed.error());
   if (!parsed || parsed->positional().size() != 2) {
     err << "mozzi-cli twist: " << (parsed ? "expected a mode and a file" : parsed.error().describe()) << "\n"
         << kTwistUsage;
@@ -371,8 +405,9 @@ int twistCommand(const std::vector<std::string>& args, std::ostream& out, std::o
 // mozzi FILE.csv: rows x,y,z,dx,dy,dz (3-D screw axis) or, with --planar,
 // sensor rows plus one data row of lateral displacements (eq. 16).
 int mozziCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const auto parsed = ParsedArgs::parse(args, OptionSpec{{"--sigma"}, {"--json", "--planar"}});
+  const auto parsed = ParsedArgs::parse(args, kMozziSpec);
   const char* usage = "Usage: mozzi-cli mozzi FILE.csv [--planar] [--sigma M] [--json]\n";
+  if (!parsed && exitCodeFor(parsed.error()) == kExitFailure) return fail(err, "mozzi", parsed.error());
   if (!parsed || parsed->positional().size() != 1) {
     err << "mozzi-cli mozzi: " << (parsed ? "expected one file" : parsed.error().describe()) << "\n" << usage;
     return kExitUsage;
@@ -451,9 +486,9 @@ int mozziCommand(const std::vector<std::string>& args, std::ostream& out, std::o
 
 const CommandRegistrar kTwist({"twist", "static|dynamic|modal FILE.csv [--freq HZ] [--json]",
                                "Static, dynamic (actuator sweep) or modal twist axis of the reference plate",
-                               twistCommand});
+                               twistCommand, &kTwistSpec});
 const CommandRegistrar kMozzi({"mozzi", "FILE.csv [--planar] [--sigma M] [--json]",
-                               "Mozzi (instantaneous screw) axis from point displacements", mozziCommand});
+                               "Mozzi (instantaneous screw) axis from point displacements", mozziCommand, &kMozziSpec});
 
 }  // namespace
 }  // namespace mozzi::cli

@@ -1,6 +1,5 @@
 // mozzi-cli uff: summarise a universal file, or convert it between ASCII and
 // binary 58.
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -9,6 +8,7 @@
 
 #include "app/cli/args.h"
 #include "app/cli/command.h"
+#include "core/io/output_file.h"
 #include "core/io/uff/uff.h"
 
 namespace mozzi::cli {
@@ -171,15 +171,15 @@ int convert(const std::string& in, const std::string& outPath, uff::Encoding58 e
     err << "mozzi-cli uff convert: " << reader.error().describe() << "\n";
     return kExitFailure;
   }
-  if (in == outPath) {
-    err << "mozzi-cli uff convert: input and output are the same file\n";
-    return kExitUsage;
-  }
-  std::ofstream file(outPath, std::ios::binary | std::ios::trunc);
-  if (!file) {
-    err << "mozzi-cli uff convert: cannot create " << outPath << "\n";
+  // The output helper refuses the input itself (also through a symbolic or
+  // hard link) and writes a temporary file renamed into place only after a
+  // checked flush, fsync and close (core/io/output_file.h).
+  auto output = core::io::OutputFile::open(outPath, {in});
+  if (!output) {
+    err << "mozzi-cli uff convert: " << output.error().describe() << "\n";
     return kExitFailure;
   }
+  std::ostream& file = output->stream();
   uff::WriteOptions options;
   options.encoding = encoding;
   int written = 0;
@@ -196,14 +196,20 @@ int convert(const std::string& in, const std::string& outPath, uff::Encoding58 e
       continue;
     }
     if (auto r = uff::writeDataset(file, **d, options); !r) {
-      err << "mozzi-cli uff convert: " << r.error().describe() << "\n";
+      // A failed write is named by commit() (file and system reason).
+      err << "mozzi-cli uff convert: " << (file ? r.error() : output->commit().error()).describe() << "\n";
       return kExitFailure;
     }
     ++written;
   }
-  file.flush();
-  if (!file) {
-    err << "mozzi-cli uff convert: write to " << outPath << " failed\n";
+  if (written == 0) {
+    // Nothing to convert: no output file rather than an empty one.
+    err << "mozzi-cli uff convert: " << in << " holds no dataset Mozzi can convert; " << outPath
+        << " not written\n";
+    return kExitFailure;
+  }
+  if (auto r = output->commit(); !r) {
+    err << "mozzi-cli uff convert: " << r.error().describe() << "\n";
     return kExitFailure;
   }
   for (const auto& w : reader->warnings()) err << "warning: " << w.describe() << "\n";
@@ -213,8 +219,11 @@ int convert(const std::string& in, const std::string& outPath, uff::Encoding58 e
   return kExitOk;
 }
 
+// No numeric options; OUT of 'convert' is written through the output helper.
+const OptionSpec kSpec{{}, {"--json", "--binary", "--ascii"}};
+
 int uffCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const auto parsed = ParsedArgs::parse(args, OptionSpec{{}, {"--json", "--binary", "--ascii"}});
+  const auto parsed = ParsedArgs::parse(args, kSpec);
   if (!parsed || parsed->positional().empty()) {
     err << "mozzi-cli uff: " << (parsed ? "expected a subcommand" : parsed.error().describe()) << "\n" << kUsage;
     return kExitUsage;
@@ -244,7 +253,7 @@ int uffCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
 
 const CommandRegistrar kRegistrar({"uff", "info FILE [--json] | convert IN OUT [--binary|--ascii]",
                                    "Summarise a universal file, or convert 58 records between ASCII and binary",
-                                   uffCommand});
+                                   uffCommand, &kSpec});
 
 }  // namespace
 }  // namespace mozzi::cli

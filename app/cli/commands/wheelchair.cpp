@@ -2,13 +2,14 @@
 // steady turning and slalom, and the stiffness studies of §7.3/§7.4.
 // Options and output: docs/cli/tire.md.
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "app/cli/args.h"
 #include "app/cli/command.h"
+#include "app/cli/output.h"
+#include "core/io/output_file.h"
 #include "core/stability/wheelchair_model.h"
 
 namespace mozzi::cli {
@@ -32,6 +33,25 @@ int usage(std::ostream& err, const std::string& msg) {
   return kExitUsage;
 }
 
+// The option table: ranges a wheelchair can have (thesis ch. 7 values are
+// well inside); the frequency bound is the model's (kMaxSlalomFrequencyHz).
+const OptionSpec kSpec{{"--out", "--stiffness"},
+                       {"--json"},
+                       {{"--speed", aboveTo(0, 10, "m/s"), "forward speed"},
+                        {"--torque", closed(-1000, 1000, "N m"), "differential torque T_R - T_L (slalom amplitude)"},
+                        {"--yaw-rate", closed(-20, 20, "rad/s"), "prescribed yaw rate"},
+                        {"--frequency", aboveTo(0, st::kMaxSlalomFrequencyHz, "Hz"), "slalom frequency"},
+                        {"--duration", aboveTo(0, 3600, "s"), "simulated time"},
+                        {"--slalom-torque", closed(-1000, 1000, "N m"), "slalom torque amplitude (sensitivity)"},
+                        {"--mass", aboveTo(0, 1000, "kg"), "mass of chair and user"},
+                        {"--yaw-inertia", aboveTo(0, 1000, "kg m^2"), "yaw inertia"},
+                        {"--rear-axle-behind", closed(0, 2, "m"), "rear axle behind the centre of mass"},
+                        {"--caster-ahead", closed(0, 2, "m"), "casters ahead of the centre of mass"},
+                        {"--half-track", aboveTo(0, 2, "m"), "rear half-track"},
+                        {"--cornering-stiffness", aboveTo(0, 1e6, "N/rad"), "rear tyre cornering stiffness"},
+                        {"--aligning-stiffness", closed(0, 1e5, "N m/rad"), "rear tyre aligning stiffness"}},
+                       {"--out"}};
+
 Json steadyJson(const st::SteadyTurn& s) {
   return {{"u_m_s", s.u},
           {"v_m_s", s.v},
@@ -54,12 +74,12 @@ Json slalomJson(const st::SlalomSummary& s) {
 }
 
 int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const OptionSpec spec{{"--speed", "--torque", "--yaw-rate", "--frequency", "--duration", "--out", "--stiffness",
-                         "--slalom-torque", "--mass", "--yaw-inertia", "--rear-axle-behind", "--caster-ahead",
-                         "--half-track", "--cornering-stiffness", "--aligning-stiffness"},
-                        {"--json"}};
-  const auto a = ParsedArgs::parse(args, spec);
-  if (!a) return usage(err, a.error().describe());
+  const auto a = ParsedArgs::parse(args, kSpec);
+  if (!a) {
+    if (exitCodeFor(a.error()) == kExitUsage) return usage(err, a.error().describe());
+    err << "mozzi-cli wheelchair: " << a.error().describe() << "\n";
+    return kExitFailure;
+  }
   if (a->positional().size() != 1) return usage(err, "expected one subcommand");
   st::WheelchairParameters p;
   double speed = 4.0 / 3.6, torque = 6.0, frequency = 0.25, duration = 20.0, slalomTorque = 10.0;
@@ -76,16 +96,15 @@ int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, s
                                                                 {"--cornering-stiffness", &p.rearCorneringStiffness},
                                                                 {"--aligning-stiffness", &p.rearAligningStiffness}};
   for (const auto& [name, target] : numbers) {
-    auto v = a->number(name);
-    if (!v) return usage(err, v.error().describe());
-    if (*v) *target = **v;
+    if (auto v = a->number(name); v && *v) *target = **v;  // range-checked by parse()
   }
+  if (a->value("--out") && a->positional()[0] != "slalom") return usage(err, "--out is for the slalom");
+  if (int rc = refuseOutputsOntoInputs(*a, kSpec, {}, "wheelchair", err); rc != kExitOk) return rc;
   const std::string& sub = a->positional()[0];
   const bool json = a->flag("--json");
   if (sub == "steady") {
     // --yaw-rate prescribes the path (u, r) and returns the torque it needs.
     auto yawRate = a->number("--yaw-rate");
-    if (!yawRate) return usage(err, yawRate.error().describe());
     if (*yawRate && a->value("--torque")) return usage(err, "give --torque or --yaw-rate, not both");
     auto s = *yawRate ? st::steadyTurnAtYawRate(p, speed, **yawRate) : st::steadyTurn(p, speed, torque);
     if (!s) {
@@ -115,18 +134,22 @@ int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, s
     const auto* h = &run->history;
     const auto* s = &run->summary;
     if (auto file = a->value("--out")) {
-      std::ofstream f(*file);
-      f << std::setprecision(12);
-      if (!f) {
-        err << "mozzi-cli wheelchair slalom: cannot write " << *file << "\n";
+      // Temporary file renamed into place after a checked flush, fsync and
+      // close (core/io/output_file.h): a full disk fails the command.
+      auto written = core::io::writeOutputFile(*file, [&](std::ostream& f) -> core::Result<void> {
+        f << std::setprecision(12);
+        f << "t_s,x_m,y_m,psi_rad,u_m_s,v_m_s,r_rad_s,caster_right_rad,caster_left_rad,slip_right_rad,"
+             "slip_left_rad,torque_right_nm,torque_left_nm\n";
+        for (const auto& x : *h)
+          f << x.t << "," << x.x << "," << x.y << "," << x.psi << "," << x.u << "," << x.v << "," << x.r << ","
+            << x.deltaRight << "," << x.deltaLeft << "," << x.slipRight << "," << x.slipLeft << "," << x.torqueRight
+            << "," << x.torqueLeft << "\n";
+        return {};
+      });
+      if (!written) {
+        err << "mozzi-cli wheelchair slalom: " << written.error().describe() << "\n";
         return kExitFailure;
       }
-      f << "t_s,x_m,y_m,psi_rad,u_m_s,v_m_s,r_rad_s,caster_right_rad,caster_left_rad,slip_right_rad,slip_left_rad,"
-           "torque_right_nm,torque_left_nm\n";
-      for (const auto& x : *h)
-        f << x.t << "," << x.x << "," << x.y << "," << x.psi << "," << x.u << "," << x.v << "," << x.r << ","
-          << x.deltaRight << "," << x.deltaLeft << "," << x.slipRight << "," << x.slipLeft << "," << x.torqueRight
-          << "," << x.torqueLeft << "\n";
     }
     if (json) {
       out << slalomJson(*s).dump(2) << "\n";
@@ -174,7 +197,7 @@ int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, s
 
 const CommandRegistrar kRegistrar({"wheelchair", "steady|slalom|sensitivity [options] [--json]",
                                    "Wheelchair manoeuvres with measured tyre stiffnesses (thesis §7.2-§7.4)",
-                                   wheelchairCommand});
+                                   wheelchairCommand, &kSpec});
 
 }  // namespace
 }  // namespace mozzi::cli

@@ -11,6 +11,8 @@
 #include <ostream>
 #include <sstream>
 
+#include "core/io/output_file.h"
+
 namespace mozzi::core::io::csv {
 namespace {
 
@@ -218,12 +220,7 @@ Result<std::string> readWholeFile(const std::string& path) {
 }
 
 Result<void> writeFile(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) return makeError(ErrorCode::IoError, "cannot create the file", path);
-  out << text;
-  out.close();
-  if (!out) return makeError(ErrorCode::IoError, "cannot write the file", path);
-  return {};
+  return writeOutputFile(path, text);  // temporary file renamed into place (core/io/output_file.h)
 }
 
 }  // namespace

@@ -245,7 +245,13 @@ struct Function58 {
   bool binary = false;
   ByteOrder byteOrder = ByteOrder::LittleEndian;
 
-  Eigen::Index pointCount() const { return isComplex(ordinateType) ? complex.size() : real.size(); }
+  // With ReadOptions::skip58Data the data are not read: the vectors stay
+  // empty and declaredPoints holds record 7's point count.
+  std::int64_t declaredPoints = -1;
+  Eigen::Index pointCount() const {
+    if (declaredPoints >= 0) return static_cast<Eigen::Index>(declaredPoints);
+    return isComplex(ordinateType) ? complex.size() : real.size();
+  }
   // x_k = abscissaMin + k * abscissaIncrement when even, else the stored abscissa.
   Vector abscissaValues() const;
 };
@@ -294,6 +300,10 @@ struct ReadOptions {
   // Refuse a single dataset whose data would need more than this many bytes in
   // memory (protects against absurd headers and hostile files).
   std::uint64_t maxDatasetBytes = std::uint64_t{8} << 30;  // 8 GiB
+  // Read only the headers of 58 records (records 1-11) and skip their data
+  // without holding it: for a summary of a file of any size (e.g. a replay
+  // recording's channels). Function58::declaredPoints then gives the length.
+  bool skip58Data = false;
 };
 
 // Streaming reader: one dataset per next() call. Only the current dataset and a

@@ -981,6 +981,27 @@ Result<DatasetData> parse58(DatasetContext& ctx, const Binary58& bin) {
   }
   const std::uint64_t declared = static_cast<std::uint64_t>(declaredD);
   Source& src = ctx.source();
+  if (ctx.options().skip58Data) {
+    // Headers only: skip the data (binary block or ASCII lines) unread.
+    f.declaredPoints = static_cast<std::int64_t>(declared);
+    if (bin.binary) {
+      std::uint64_t skip = static_cast<std::uint64_t>(bin.byteCount);
+      if (skip > src.remaining()) {
+        return ctx.error("file truncated: the 58b header declares " + std::to_string(skip) +
+                         " bytes of binary data, only " + std::to_string(src.remaining()) + " remain");
+      }
+      std::vector<char> sink(static_cast<std::size_t>(std::min<std::uint64_t>(skip, 1 << 16)));
+      while (skip > 0) {
+        const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(skip, sink.size()));
+        if (src.readRaw(sink.data(), n) != n) return ctx.error("file truncated inside the binary data");
+        skip -= n;
+      }
+    } else {
+      while (ctx.next(line) == DatasetContext::Line::Ok) {
+      }
+    }
+    return DatasetData{std::move(f)};
+  }
 
   // Storage: the ordinates as doubles, interleaved (re, im) for complex.
   auto allocate = [&](std::uint64_t points) {

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/io/output_file.h"
 #include "core/io/uff/uff.h"
 
 namespace mozzi::core::io::uff {
@@ -361,15 +362,15 @@ Result<std::string> writeBytes(const UffFile& file, const WriteOptions& options)
 }
 
 Result<void> writeFile(const std::string& path, const UffFile& file, const WriteOptions& options) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) return makeError(ErrorCode::IoError, "cannot create file: " + std::string(std::strerror(errno)), path);
-  for (const auto& d : file.datasets) {
-    if (d.get<SkippedDataset>()) continue;  // content not kept; the reader warned
-    if (auto r = writeDataset(out, d, options); !r) return r.error();
-  }
-  out.flush();
-  if (!out) return makeError(ErrorCode::IoError, "write failed: " + std::string(std::strerror(errno)), path);
-  return {};
+  // Through the output helper: a temporary file renamed into place after a
+  // checked flush, fsync and close (core/io/output_file.h).
+  return writeOutputFile(path, [&](std::ostream& out) -> Result<void> {
+    for (const auto& d : file.datasets) {
+      if (d.get<SkippedDataset>()) continue;  // content not kept; the reader warned
+      if (auto r = writeDataset(out, d, options); !r) return r.error();
+    }
+    return {};
+  });
 }
 
 }  // namespace mozzi::core::io::uff

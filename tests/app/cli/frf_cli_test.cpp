@@ -151,9 +151,9 @@ TEST_F(FrfCli, TextSummaryAndExponentialWindow) {
 }
 
 TEST_F(FrfCli, UsageAndInputErrors) {
-  EXPECT_EQ(run({hits_}).code, kExitUsage);                       // no estimator
-  EXPECT_EQ(run({hits_, "--estimator", "H7"}).code, kExitUsage);  // unknown estimator
-  EXPECT_EQ(run({hits_, "--estimator", "H1", "--exp-window", "-1"}).code, kExitUsage);
+  EXPECT_EQ(run({hits_}).code, kExitUsage);                                               // no estimator
+  EXPECT_EQ(run({hits_, "--estimator", "H7"}).code, kExitUsage);                          // unknown estimator
+  EXPECT_EQ(run({hits_, "--estimator", "H1", "--exp-window", "-1"}).code, kExitFailure);  // out of range
   EXPECT_EQ(run({hits_, "--estimator", "H1", "--reference", "zz"}).code, kExitUsage);
   EXPECT_EQ(run({hits_, "--estimator", "H1", "--bogus"}).code, kExitUsage);
   const CliRun missing = run({(dir_ / "none.uff").string(), "--estimator", "H1"});
@@ -263,7 +263,7 @@ TEST_F(FrfMimoCli, CorrelatedShakersAreAFailureNamingTheBand) {
   // H2 and Hv take one reference
   EXPECT_EQ(run({blocks, "--estimator", "H2", "--reference", "1:+Z,3:+Z"}).code, kExitUsage);
   EXPECT_EQ(run({blocks, "--estimator", "H1", "--reference", "1:+Z,1:+Z"}).code, kExitUsage);
-  EXPECT_EQ(run({blocks, "--estimator", "H1", "--max-condition", "0.5"}).code, kExitUsage);
+  EXPECT_EQ(run({blocks, "--estimator", "H1", "--max-condition", "0.5"}).code, kExitFailure);  // out of range
   const CliRun h2 = run({blocks, "--estimator", "H2"});  // two force channels found in the file
   EXPECT_EQ(h2.code, kExitFailure);
   EXPECT_NE(h2.err.find("use H1"), std::string::npos) << h2.err;

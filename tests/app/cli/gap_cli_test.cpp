@@ -69,8 +69,9 @@ TEST(GapCli, TableAndExitCodes) {
   EXPECT_NE(table.out.find("Verdict: effect - mass_loading at 3+X"), std::string::npos) << table.out;
 
   EXPECT_EQ(run({"gap", "--model", f.model}).code, kExitUsage);
-  EXPECT_EQ(run({"gap", "--model", f.model, "--measured", f.frf, "--band", "9:3"}).code, kExitUsage);
-  EXPECT_EQ(run({"gap", "--model", f.model, "--measured", f.frf, "--bootstrap", "-1"}).code, kExitUsage);
+  // Values outside their range: exit 1 (docs/cli.md).
+  EXPECT_EQ(run({"gap", "--model", f.model, "--measured", f.frf, "--band", "9:3"}).code, kExitFailure);
+  EXPECT_EQ(run({"gap", "--model", f.model, "--measured", f.frf, "--bootstrap", "-1"}).code, kExitFailure);
   const CliRun unknown = run({"gap", "--model", f.model, "--measured", f.frf, "--effects", "tyre_magic"});
   EXPECT_EQ(unknown.code, kExitUsage);
   EXPECT_NE(unknown.err.find("mass_loading"), std::string::npos) << unknown.err;

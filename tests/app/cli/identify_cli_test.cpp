@@ -118,8 +118,8 @@ TEST(IdentifyCli, PeakAndCircleOnOneMode) {
 
 TEST(IdentifyCli, UsageAndFailureExitCodes) {
   const std::string in = writeSyntheticUff();
-  EXPECT_EQ(run({"identify", in}).code, kExitUsage);                       // no --band
-  EXPECT_EQ(run({"identify", in, "--band", "300:200"}).code, kExitUsage);  // LO >= HI
+  EXPECT_EQ(run({"identify", in}).code, kExitUsage);                         // no --band
+  EXPECT_EQ(run({"identify", in, "--band", "300:200"}).code, kExitFailure);  // LO >= HI: a value, exit 1
   EXPECT_EQ(run({"identify", in, "--band", "20:380", "--method", "x"}).code, kExitUsage);
   EXPECT_EQ(run({"identify", in, "--band", "140:160", "--method", "peak", "--stabilization", "s.csv"}).code,
             kExitUsage);

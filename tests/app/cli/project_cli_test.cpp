@@ -169,7 +169,7 @@ TEST_F(ProjectCli, ExportCsvIsExact) {
 TEST_F(ProjectCli, UsageAndInputErrors) {
   EXPECT_EQ(run({"project", "export", path_}).code, 2);  // neither --uff nor --csv
   EXPECT_EQ(run({"project", "export", path_, "--uff", "a", "--csv", "b"}).code, 2);
-  EXPECT_EQ(run({"project", "export", path_, "--csv", "x.csv", "--frf-set", "1.5"}).code, 2);
+  EXPECT_EQ(run({"project", "export", path_, "--csv", "x.csv", "--frf-set", "1.5"}).code, 1);  // out of range
   EXPECT_EQ(run({"project", "info", path_, "--bogus"}).code, 2);
   const auto missing = run({"project", "info", (dir_ / "none.mozzi").string()});
   EXPECT_EQ(missing.code, 1);

@@ -65,20 +65,21 @@ TEST(StabilityCli, UsageAndInputErrors) {
   EXPECT_EQ(run({"stability"}).code, kExitUsage);
   EXPECT_EQ(run({"stability", "tricycle", "--speeds", "0:1:1"}).code, kExitUsage);
   EXPECT_EQ(run({"stability", "bicycle"}).code, kExitUsage);
-  EXPECT_EQ(run({"stability", "bicycle", "--speeds", "0:10"}).code, kExitUsage);
-  EXPECT_EQ(run({"stability", "bicycle", "--speeds", "0:10:0"}).code, kExitUsage);
+  // A value outside its declared range is an input error, exit 1 (docs/cli.md).
+  EXPECT_EQ(run({"stability", "bicycle", "--speeds", "0:10"}).code, kExitFailure);
+  EXPECT_EQ(run({"stability", "bicycle", "--speeds", "0:10:0"}).code, kExitFailure);
   const CliRun both =
       run({"stability", "bicycle", "--fork-bending", "1,1,0.2", "--fork-torsion", "1,1", "--speeds", "0:1:1"});
   EXPECT_EQ(both.code, kExitUsage);
   EXPECT_NE(both.err.find("not both"), std::string::npos);
   const CliRun bad = run({"stability", "bicycle", "--fork-bending", "1,x,0.2", "--speeds", "0:1:1"});
-  EXPECT_EQ(bad.code, kExitUsage);
+  EXPECT_EQ(bad.code, kExitFailure);
   EXPECT_NE(bad.err.find("--fork-bending"), std::string::npos);
-  EXPECT_EQ(run({"stability", "bicycle", "--fork-torsion", "-5,1", "--speeds", "0:1:1"}).code, kExitUsage);
+  EXPECT_EQ(run({"stability", "bicycle", "--fork-torsion", "-5,1", "--speeds", "0:1:1"}).code, kExitFailure);
   EXPECT_EQ(run({"stability", "motorcycle", "--speeds", "5:10:1"}).code, kExitUsage);
   EXPECT_EQ(run({"stability", "motorcycle", "--params", kSharp, "--fork-model", "4", "--speeds", "5:10:1"}).code,
             kExitUsage);
-  EXPECT_EQ(run({"stability", "motorcycle", "--params", kSharp, "--speeds", "0:10:1"}).code, kExitUsage);
+  EXPECT_EQ(run({"stability", "motorcycle", "--params", kSharp, "--speeds", "0:10:1"}).code, kExitFailure);
   const CliRun missing = run({"stability", "motorcycle", "--params", "/nonexistent.csv", "--speeds", "5:10:1"});
   EXPECT_EQ(missing.code, kExitFailure);
   EXPECT_NE(missing.err.find("/nonexistent.csv"), std::string::npos);

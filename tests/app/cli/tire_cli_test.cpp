@@ -86,7 +86,7 @@ TEST(TireCli, RingPrintsModalStiffness) {
   const auto j = nlohmann::json::parse(r.out);
   const double w0 = 2 * kPi * 100;
   EXPECT_NEAR(j["modes"][0]["modal_stiffness_n_per_m"].get<double>(), 3.2 * w0 * w0, 1e-6);  // eq. 46, m_0 = 0.8 x 4
-  EXPECT_EQ(run({"tire", "ring", "--modes", "0:100", "--mass", "4", "--radius", "0.3"}).code, kExitUsage);
+  EXPECT_EQ(run({"tire", "ring", "--modes", "0:100", "--mass", "4", "--radius", "0.3"}).code, kExitFailure);
 }
 
 TEST(TireCli, SteadyGivesCorneringStiffnessAndRejectsNonMonotonicSweeps) {

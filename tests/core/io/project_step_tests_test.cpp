@@ -1,4 +1,4 @@
-// Schema 2 (issue 20): rig and tyre tests stored step by step, with a status,
+// Schema 3 (issue 20): rig and tyre tests stored step by step, with a status,
 // a note saying what is missing, results tied to their step and tyre-test
 // records; and the migration of a schema-1 file (its tests read "complete").
 #include <gtest/gtest.h>
@@ -115,14 +115,14 @@ TEST_F(StepTests, TyreTestStepsAppendPointsRecordsAndParameters) {
   EXPECT_FALSE(store->tyreTestRecord(id, 0).ok());
 }
 
-// A schema-1 project (the fuzz seed written at schema 1) migrates to schema 2:
+// A schema-1 project (the fuzz seed written at schema 1) migrates to the current schema:
 // its rig and tyre tests read as complete, their results as whole-test ones.
 TEST_F(StepTests, ASchemaOneProjectMigratesAndItsTestsReadComplete) {
   const fs::path seed = fs::path(MOZZI_SOURCE_DIR) / "tests/fuzz/corpus/project_open_fuzz/full_rollback_journal.mozzi";
   fs::copy_file(seed, file("old.mozzi"));
   auto store = ProjectStore::open(file("old.mozzi"));
   ASSERT_TRUE(store.ok()) << store.error().describe();
-  EXPECT_EQ(store->schemaVersion(), 2);
+  EXPECT_EQ(store->schemaVersion(), ProjectStore::currentSchemaVersion());
   auto rig = store->rigTest(1);
   ASSERT_TRUE(rig.ok()) << rig.error().describe();
   EXPECT_EQ(rig->status, TestStatus::Complete);

@@ -251,5 +251,45 @@ TEST(UffReader, CoordinateSystemAxesFollowFromTheDefinitionPoints) {
   EXPECT_NEAR((a * a.transpose() - Matrix3::Identity()).norm(), 0.0, 1e-12);
 }
 
+// Issue 17: skip58Data reads the headers of 58 records and skips the samples
+// unread (a replay's capabilities, a summary of a file of any size); the
+// point count comes from record 7, the data vectors stay empty.
+TEST(UffReaderHeadersOnly, Skip58DataKeepsHeadersAndPointCount) {
+  for (bool binary : {false, true}) {
+    UffFile file;
+    for (int c = 1; c <= 2; ++c) {
+      Function58 f;
+      f.functionType = FunctionType::TimeResponse;
+      f.loadCase = 1;
+      f.response = Channel58::fromDof(Dof{c, Direction::Z, false});
+      f.ordinateType = OrdinateType::RealDouble;
+      f.abscissaIncrement = 1.0 / 2048.0;
+      f.ordinateNumerator.unitsLabel = "m/s^2";
+      f.real = Vector::LinSpaced(5000, -1.0, 1.0);
+      f.binary = binary;
+      file.datasets.push_back(makeDataset(f));
+    }
+    auto bytes = writeBytes(file);
+    ASSERT_TRUE(bytes.ok());
+    ReadOptions options;
+    options.skip58Data = true;
+    auto reader = DatasetReader::fromBytes(*bytes, options);
+    int records = 0;
+    for (;;) {
+      auto d = reader.next();
+      ASSERT_TRUE(d.ok()) << d.error().describe();
+      if (!d->has_value()) break;
+      const auto* f = (*d)->get<Function58>();
+      ASSERT_NE(f, nullptr);
+      EXPECT_EQ(f->pointCount(), 5000);
+      EXPECT_EQ(f->real.size(), 0);
+      EXPECT_EQ(f->ordinateNumerator.unitsLabel, "m/s^2");
+      EXPECT_EQ(f->response.dof()->node, records + 1);
+      ++records;
+    }
+    EXPECT_EQ(records, 2) << (binary ? "58b" : "58");
+  }
+}
+
 }  // namespace
 }  // namespace mozzi::core::io::uff

@@ -78,5 +78,40 @@ TEST(BicycleFork, BendingArmIsTheCurveIntersection) {
   EXPECT_FALSE(bicycleForkBending(p, 21.0, 0.05, 30.0).ok());
 }
 
+// Issue 17: inputs at the edge of the double range (1e308 on any mass,
+// length or frequency) overflowed the inertias to inf and dereferenced the
+// failed series-stiffness / damping results (bad_variant_access). Now an
+// error naming the quantity, or a finite result; never a crash.
+TEST(BicycleFork, HugeInputsGiveAnErrorNotACrash) {
+  const auto p = params();
+  for (double huge : {1e308, 1e200, 1e-300}) {
+    for (int field = 0; field < 5; ++field) {
+      auto q = p;
+      double* targets[] = {&q.forkMass, &q.wheelMass, &q.wheelRadius, &q.tipDistance, &q.hubLength};
+      *targets[field] = huge;
+      const auto t = bicycleForkTorsion(q, 20.0, 0.1, 190.0, 220.0);
+      if (t.ok()) {
+        EXPECT_TRUE(std::isfinite(t->stiffnessAlone) && std::isfinite(t->damping)) << field << " " << huge;
+      }
+      const auto b = bicycleForkBending(q, 30.0, 0.1, 120.0);
+      if (b.ok()) {
+        EXPECT_TRUE(std::isfinite(b->stiffness) && std::isfinite(b->damping)) << field << " " << huge;
+      }
+    }
+    const auto f = bicycleForkTorsion(p, huge, 0.1, 190.0, 220.0);
+    if (f.ok()) {
+      EXPECT_TRUE(std::isfinite(f->damping));
+    }
+    const auto g = bicycleForkTorsion(p, 20.0, 0.1, 190.0, huge);
+    if (g.ok()) {
+      EXPECT_TRUE(std::isfinite(g->stiffnessAlone));
+    }
+  }
+  const auto lumped = forkLumpedModels({1e308, 0.6, 0.8, 0.3, 1e308, 0.25, 1e308, 0.03});
+  if (lumped.ok()) {
+    EXPECT_TRUE(std::isfinite(lumped->model3.pureMoment));
+  }
+}
+
 }  // namespace
 }  // namespace mozzi::core::stiffness
