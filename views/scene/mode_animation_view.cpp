@@ -284,7 +284,7 @@ bool ModeAnimationView::present(SceneView* scene, const Shape& shape, std::optio
   scene->setColourByMagnitude(colourCheck_->isChecked());
   scene->setUndeformedVisible(undeformedCheck_->isChecked());
   scene->setArrowsVisible(arrowsCheck_->isChecked());
-  scene->setLegendTitle(tr("|u| (scaled)"));
+  scene->setLegendTitle(tr("|u|"));
   field = std::move(spread).value();
   return true;
 }

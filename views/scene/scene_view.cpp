@@ -159,10 +159,16 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), pipeline_(new Pipeline)
   p.legend->SetLookupTable(p.lut);
   p.legend->SetNumberOfLabels(5);
   p.legend->SetLabelFormat("%.3g");
-  p.legend->SetMaximumWidthInPixels(110);
-  p.legend->SetPosition(0.88, 0.1);
-  p.legend->SetWidth(0.1);
+  // Fixed font sizes (VTK scales them with the window's DPI), labels left of
+  // the bar so nothing runs off the right edge of a narrow view.
+  p.legend->UnconstrainedFontSizeOn();
+  p.legend->GetTitleTextProperty()->SetFontSize(13);
+  p.legend->GetLabelTextProperty()->SetFontSize(12);
+  p.legend->SetTextPositionToPrecedeScalarBar();
+  p.legend->SetPosition(0.86, 0.08);
+  p.legend->SetWidth(0.12);
   p.legend->SetHeight(0.8);
+  p.legend->SetBarRatio(0.25);
   p.legend->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
   p.legend->GetTitleTextProperty()->ShadowOff();
   p.legend->GetTitleTextProperty()->ItalicOff();
@@ -402,11 +408,15 @@ void SceneView::applyStyle() {
   auto* nodes = p.nodeActor->GetProperty();
   auto* deformed = p.deformedActor->GetProperty();
   const bool large = isLarge();
+  // VTK draws in device pixels: sizes follow the screen's scale (high DPI).
+  const double dpr = std::max(1.0, vtkWidget_->devicePixelRatioF());
+  p.selectionActor->GetProperty()->SetPointSize(13.0 * dpr);
   // Sphere-shaded dots and wide lines are drawn by geometry shaders, which
   // Mesa llvmpipe runs on the CPU: large meshes get plain dots and thin lines.
   nodes->SetRenderPointsAsSpheres(!large);
   deformed->SetRenderPointsAsSpheres(!large);
-  deformed->SetLineWidth(large ? 1.0 : 3.0);
+  deformed->SetLineWidth(large ? 1.0 : 3.0 * dpr);
+  deformed->SetPointSize(6.0 * dpr);
   if (hasShape()) {
     // The undeformed mesh becomes a grey overlay (opaque for large meshes:
     // blending thousands of lines costs more than it shows).
@@ -414,15 +424,15 @@ void SceneView::applyStyle() {
     mesh->SetOpacity(large ? 1.0 : 0.45);
     mesh->SetLineWidth(1.0);
     nodes->SetColor(0.55, 0.58, 0.62);
-    nodes->SetPointSize(4.0);
+    nodes->SetPointSize(4.0 * dpr);
     p.meshActor->SetVisibility(undeformedVisible_ ? 1 : 0);
     p.nodeActor->SetVisibility(undeformedVisible_ && !large ? 1 : 0);
   } else {
     mesh->SetColor(0.11, 0.21, 0.34);
     mesh->SetOpacity(meshFaces_ > 0 ? 0.9 : 1.0);
-    mesh->SetLineWidth(large ? 1.0 : 2.0);
+    mesh->SetLineWidth(large ? 1.0 : 2.0 * dpr);
     nodes->SetColor(0.90, 0.22, 0.27);
-    nodes->SetPointSize(large ? 3.0 : 7.0);
+    nodes->SetPointSize(large ? 3.0 : 7.0 * dpr);
     p.meshActor->VisibilityOn();
     p.nodeActor->VisibilityOn();
   }
