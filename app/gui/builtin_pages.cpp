@@ -11,9 +11,11 @@
 
 #include "core/geometry/mesh_placement.h"
 #include "views/common/page_registry.h"
+#include "views/editors/mesh_editor_page.h"
 #include "views/gap/model_test_view.h"
 #include "views/panels/project_overview.h"
 #include "views/plots/frf_plot.h"
+#include "views/scene/mode_animation_page.h"
 #include "views/scene/scene_view.h"
 
 namespace mozzi {
@@ -143,6 +145,36 @@ void registerBuiltinPages(views::PageRegistry& registry) {
         return view;
       },
       /*singleton=*/true, /*openAtStart=*/false, nullptr});
+
+  // Mesh editor (views/editors): one tab per specimen.
+  registry.add(PageSpec{QStringLiteral("mesh-editor"), QT_TRANSLATE_NOOP("Pages", "Mesh Editor"),
+                        QT_TRANSLATE_NOOP("Pages", "Edit a specimen's measurement mesh: nodes, lines, faces, DOFs"),
+                        QString(), PageMenu::None,
+                        [](const ProjectItem& item) {
+                          return isKind(item, {RecordKind::Specimen, RecordKind::Mesh});
+                        },
+                        [](const PageContext& ctx) -> QWidget* {
+                          const qint64 specimen = ctx.item.specimenId ? ctx.item.specimenId : ctx.item.id;
+                          if (!ctx.model->store() || specimen == 0) return nullptr;
+                          auto* page = new views::MeshEditorPage(ctx.model, specimen, ctx.parent);
+                          const auto log = ctx.log;
+                          if (log) QObject::connect(page, &views::MeshEditorPage::message, page, log);
+                          return page;
+                        },
+                        /*singleton=*/false, /*openAtStart=*/false, nullptr});
+
+  // Mode animation (views/scene): one tab per modal result.
+  registry.add(PageSpec{QStringLiteral("mode-animation"), QT_TRANSLATE_NOOP("Pages", "Mode Animation"),
+                        QT_TRANSLATE_NOOP("Pages", "Animate identified or imported modes on their mesh"), QString(),
+                        PageMenu::Pages, [](const ProjectItem& item) { return item.kind == RecordKind::ModalResult; },
+                        [](const PageContext& ctx) -> QWidget* {
+                          const qint64 result = ctx.item.kind == RecordKind::ModalResult ? ctx.item.id : 0;
+                          auto* page = new views::ModeAnimationPage(ctx.model, result, ctx.parent);
+                          const auto log = ctx.log;
+                          if (log) QObject::connect(page, &views::ModeAnimationPage::message, page, log);
+                          return page;
+                        },
+                        /*singleton=*/false, /*openAtStart=*/false, nullptr});
 }
 
 }  // namespace app

@@ -18,7 +18,7 @@ Result<StoredMesh> meshFromUff(const uff::UffFile& file) {
     for (const auto& cs : set->systems) {
       StoredCoordinateSystem stored;
       stored.label = cs.label;
-      stored.name = cs.name;
+      stored.name = cs.name == "NONE" ? std::string() : cs.name;
       stored.kind = static_cast<StoredCoordinateSystem::Kind>(cs.type >= 0 && cs.type <= 2 ? cs.type : 0);
       stored.origin = cs.origin / lengthFactor;
       stored.rotation = cs.axes.transpose();  // UFF rows are the axes; stored columns are
@@ -42,6 +42,106 @@ Result<StoredMesh> meshFromUff(const uff::UffFile& file) {
     }
   }
   return mesh;
+}
+
+Result<MeshUffExport> meshToUff(const StoredMesh& mesh, const MeshUffOptions& options) {
+  MeshUffExport out;
+  auto& datasets = out.file.datasets;
+  if (!options.description.empty()) {
+    uff::Header151 header;
+    header.modelName = options.description;
+    header.description = "measurement mesh";
+    header.uffProgram = "Mozzi";
+    datasets.push_back(uff::makeDataset(header));
+  }
+  uff::Units164 units;  // SI: metre, newton; factors 1 so values are written as they are
+  units.unitsCode = 1;
+  units.description = "SI: Meter (newton)";
+  datasets.push_back(uff::makeDataset(units));
+
+  if (!mesh.coordinateSystems.empty()) {
+    uff::CoordinateSystemSet set;
+    set.datasetType = options.doublePrecision ? 2420 : 18;
+    set.partName = options.description.empty() ? std::string("NONE") : options.description.substr(0, 80);
+    const std::size_t width = options.doublePrecision ? 80 : 40;
+    for (const auto& stored : mesh.coordinateSystems) {
+      const std::string where = "coordinate system " + std::to_string(stored.label);
+      const std::string& name = stored.name;
+      if (name.size() > width || name.find_first_of("\r\n") != std::string::npos ||
+          (!name.empty() && (name.back() == ' ' || name.back() == '\t'))) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "its name cannot be written in dataset " + std::to_string(set.datasetType) + " (at most " +
+                             std::to_string(width) + " characters, no line breaks or trailing blanks)",
+                         where);
+      }
+      uff::CoordinateSystem cs;
+      cs.label = stored.label;
+      cs.type = static_cast<int>(stored.kind);
+      cs.name = name;
+      cs.origin = stored.origin;
+      cs.axes = stored.rotation.transpose();  // rows are the axes in UFF
+      cs.xPoint = stored.origin + stored.rotation.col(0);
+      cs.xzPoint = stored.origin + stored.rotation.col(2);
+      set.systems.push_back(std::move(cs));
+    }
+    datasets.push_back(uff::makeDataset(std::move(set)));
+  }
+  if (!mesh.nodes.empty()) {
+    uff::NodeSet set;
+    set.datasetType = options.doublePrecision ? 2411 : 15;
+    for (const auto& stored : mesh.nodes) {
+      uff::Node node;
+      node.label = stored.label;
+      node.definitionCs = stored.definitionCs;
+      node.displacementCs = stored.displacementCs;
+      node.color = 8;
+      node.xyz = stored.position;
+      set.nodes.push_back(node);
+    }
+    datasets.push_back(uff::makeDataset(std::move(set)));
+  }
+  // Trace lines: chains of consecutive segments, pen lifted (0) between chains.
+  constexpr std::size_t kMaxTraceNodes = 250;
+  std::vector<int> trace;
+  int traceNumber = 1;
+  auto flush = [&]() {
+    if (trace.empty()) return;
+    uff::TraceLine82 line;
+    line.traceNumber = traceNumber++;
+    line.color = 8;
+    line.description = "trace line " + std::to_string(line.traceNumber);
+    line.nodes = std::move(trace);
+    trace.clear();
+    datasets.push_back(uff::makeDataset(std::move(line)));
+  };
+  for (const auto& segment : mesh.lines) {
+    const bool continues = !trace.empty() && trace.back() == segment.nodeA;
+    const std::size_t needed = continues ? 1 : (trace.empty() ? 2 : 3);
+    if (trace.size() + needed > kMaxTraceNodes) flush();
+    if (!trace.empty() && trace.back() == segment.nodeA) {
+      trace.push_back(segment.nodeB);
+    } else {
+      if (!trace.empty()) trace.push_back(0);
+      trace.push_back(segment.nodeA);
+      trace.push_back(segment.nodeB);
+    }
+  }
+  flush();
+  out.facesLeftOut = static_cast<int>(mesh.faces.size());
+  return out;
+}
+
+Result<MeshUffExport> exportMeshUff(const StoredMesh& mesh, const std::string& path, const MeshUffOptions& options) {
+  auto out = meshToUff(mesh, options);
+  if (!out) return out.error();
+  if (auto written = uff::writeFile(path, out->file); !written) return written.error();
+  return out;
+}
+
+Result<StoredMesh> importMeshUff(const std::string& path) {
+  auto file = uff::readFile(path);
+  if (!file) return file.error();
+  return meshFromUff(*file);
 }
 
 Result<UffImportReport> importUff(ProjectStore& store, const std::string& uffPath, std::int64_t specimenId) {

@@ -35,7 +35,33 @@ struct UffImportReport {
 // length factor (UFF: SI value = file value / factor); coordinate-system axes
 // become rotation columns; each trace line gives one segment per pair of
 // consecutive nodes, node 0 lifting the pen.
+// A coordinate-system name "NONE" (the format's placeholder for no name)
+// becomes an empty name.
 Result<StoredMesh> meshFromUff(const uff::UffFile& file);
+
+// The inverse of meshFromUff, for exporting a mesh: 164 (SI, length factor 1),
+// coordinate systems as 2420 (or 18), nodes as 2411 (or 15), the line
+// segments as 82 trace lines (consecutive segments sharing a node form one
+// chain, node 0 lifts the pen between chains; at most 250 nodes per trace
+// line, as the format says). Faces have no dataset among these and are left
+// out (MeshUffExport::facesLeftOut says how many); the mesh CSV keeps them.
+// With doublePrecision (2411/2420, 17 significant digits) the file reads back
+// to the same doubles; 15/18 keep 6 significant digits (E13.5).
+struct MeshUffOptions {
+  bool doublePrecision = true;
+  std::string description;  // 151 model name; no 151 header when empty
+};
+struct MeshUffExport {
+  uff::UffFile file;
+  int facesLeftOut = 0;
+};
+// Names that the text records cannot hold (longer than 80 characters for 2420,
+// 40 for 18, line breaks, trailing blanks) are an error naming the system.
+Result<MeshUffExport> meshToUff(const StoredMesh& mesh, const MeshUffOptions& options = {});
+Result<MeshUffExport> exportMeshUff(const StoredMesh& mesh, const std::string& path,
+                                    const MeshUffOptions& options = {});
+// Reads the geometry datasets of a file (anything else in it is ignored).
+Result<StoredMesh> importMeshUff(const std::string& path);
 
 // Imports `uffPath` into `specimenId`. A specimen that already has a mesh keeps
 // it (the report says so); FRFs and modes are always added as new results.

@@ -2,21 +2,34 @@
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkActor.h>
+#include <vtkActor2D.h>
+#include <vtkArrowSource.h>
 #include <vtkAxesActor.h>
+#include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkGlyph3D.h>
+#include <vtkIntArray.h>
+#include <vtkLabeledDataMapper.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkOrientationMarkerWidget.h>
+#include <vtkPointData.h>
+#include <vtkPointPicker.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
-#include <QSurfaceFormat>
-#include <QVBoxLayout>
-
-#include <vtkCamera.h>
-#include <vtkGenericOpenGLRenderWindow.h>
-#include <vtkNew.h>
-#include <vtkOrientationMarkerWidget.h>
+#include <vtkProperty2D.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextProperty.h>
+#include <QEvent>
+#include <QMouseEvent>
+#include <QSurfaceFormat>
+#include <QVBoxLayout>
 #include <algorithm>
 #include <unordered_map>
 
@@ -28,12 +41,37 @@ struct SceneView::Pipeline {
   vtkNew<vtkRenderer> renderer;
   vtkNew<vtkAxesActor> axes;
   vtkNew<vtkOrientationMarkerWidget> marker;
+  // mesh layer (undeformed)
   vtkNew<vtkPolyData> mesh;
   vtkNew<vtkPolyDataMapper> meshMapper;
   vtkNew<vtkActor> meshActor;
-  vtkNew<vtkActor> nodeActor;
-  vtkNew<vtkPolyDataMapper> nodeMapper;
   vtkNew<vtkPolyData> nodes;
+  vtkNew<vtkPolyDataMapper> nodeMapper;
+  vtkNew<vtkActor> nodeActor;
+  // selection
+  vtkNew<vtkPolyData> selection;
+  vtkNew<vtkPolyDataMapper> selectionMapper;
+  vtkNew<vtkActor> selectionActor;
+  // labels
+  vtkNew<vtkLabeledDataMapper> labelMapper;
+  vtkNew<vtkActor2D> labelActor;
+  // deformed layer: its own points (written per tick), the mesh's cells
+  vtkNew<vtkPolyData> deformed;
+  vtkNew<vtkPoints> deformedPoints;
+  vtkNew<vtkDoubleArray> deformedCoords;
+  vtkNew<vtkDoubleArray> magnitude;
+  vtkNew<vtkPolyDataMapper> deformedMapper;
+  vtkNew<vtkActor> deformedActor;
+  vtkNew<vtkLookupTable> lut;
+  vtkNew<vtkScalarBarActor> legend;
+  // arrows at the arrow nodes: undeformed position, vector = displacement now
+  vtkNew<vtkPolyData> arrowInput;
+  vtkNew<vtkDoubleArray> arrowVectors;
+  vtkNew<vtkArrowSource> arrow;
+  vtkNew<vtkGlyph3D> glyphs;
+  vtkNew<vtkPolyDataMapper> arrowMapper;
+  vtkNew<vtkActor> arrowActor;
+  vtkNew<vtkPointPicker> picker;
 };
 
 void SceneView::prepareSurfaceFormat() {
@@ -45,36 +83,128 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), pipeline_(new Pipeline)
   layout->setContentsMargins(0, 0, 0, 0);
   vtkWidget_ = new QVTKOpenGLNativeWidget(this);
   vtkWidget_->setObjectName(QStringLiteral("sceneVtkWidget"));
+  vtkWidget_->installEventFilter(this);
   layout->addWidget(vtkWidget_);
+  Pipeline& p = *pipeline_;
 
-  vtkWidget_->setRenderWindow(pipeline_->window);
-  pipeline_->window->AddRenderer(pipeline_->renderer);
+  // No multisampling: with software OpenGL (Mesa llvmpipe) 8x MSAA multiplies
+  // the fill cost of every frame by about eight; lines stay readable without it.
+  p.window->SetMultiSamples(0);
+  vtkWidget_->setRenderWindow(p.window);
+  p.window->AddRenderer(p.renderer);
   // Light grey to white gradient: silhouettes and mode shapes read well on it in print too.
-  pipeline_->renderer->GradientBackgroundOn();
-  pipeline_->renderer->SetBackground(0.82, 0.85, 0.89);
-  pipeline_->renderer->SetBackground2(1.0, 1.0, 1.0);
+  p.renderer->GradientBackgroundOn();
+  p.renderer->SetBackground(0.82, 0.85, 0.89);
+  p.renderer->SetBackground2(1.0, 1.0, 1.0);
 
-  pipeline_->marker->SetOrientationMarker(pipeline_->axes);
-  pipeline_->marker->SetInteractor(pipeline_->window->GetInteractor());
-  pipeline_->marker->SetViewport(0.0, 0.0, 0.18, 0.18);
-  pipeline_->marker->SetEnabled(1);
-  pipeline_->marker->InteractiveOff();
+  p.marker->SetOrientationMarker(p.axes);
+  p.marker->SetInteractor(p.window->GetInteractor());
+  p.marker->SetViewport(0.0, 0.0, 0.18, 0.18);
+  p.marker->SetEnabled(1);
+  p.marker->InteractiveOff();
 
-  pipeline_->meshMapper->SetInputData(pipeline_->mesh);
-  pipeline_->meshActor->SetMapper(pipeline_->meshMapper);
-  pipeline_->meshActor->GetProperty()->SetColor(0.11, 0.21, 0.34);
-  pipeline_->meshActor->GetProperty()->SetLineWidth(2.0);
-  pipeline_->nodeMapper->SetInputData(pipeline_->nodes);
-  pipeline_->nodeActor->SetMapper(pipeline_->nodeMapper);
-  pipeline_->nodeActor->GetProperty()->SetColor(0.90, 0.22, 0.27);
-  pipeline_->nodeActor->GetProperty()->SetPointSize(7.0);
-  pipeline_->nodeActor->GetProperty()->RenderPointsAsSpheresOn();
-  pipeline_->renderer->AddActor(pipeline_->meshActor);
-  pipeline_->renderer->AddActor(pipeline_->nodeActor);
+  p.meshMapper->SetInputData(p.mesh);
+  p.meshActor->SetMapper(p.meshMapper);
+  p.meshActor->GetProperty()->SetColor(0.11, 0.21, 0.34);
+  p.meshActor->GetProperty()->SetLineWidth(2.0);
+  p.nodeMapper->SetInputData(p.nodes);
+  p.nodeActor->SetMapper(p.nodeMapper);
+  p.nodeActor->GetProperty()->SetColor(0.90, 0.22, 0.27);
+  p.nodeActor->GetProperty()->SetPointSize(7.0);
+  p.nodeActor->GetProperty()->RenderPointsAsSpheresOn();
+  p.renderer->AddActor(p.meshActor);
+  p.renderer->AddActor(p.nodeActor);
 
-  pipeline_->renderer->GetActiveCamera()->SetPosition(1.0, -1.5, 1.0);
-  pipeline_->renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
-  pipeline_->renderer->ResetCamera();
+  p.selectionMapper->SetInputData(p.selection);
+  p.selectionActor->SetMapper(p.selectionMapper);
+  p.selectionActor->GetProperty()->SetColor(1.0, 0.78, 0.0);
+  p.selectionActor->GetProperty()->SetPointSize(13.0);
+  p.selectionActor->GetProperty()->RenderPointsAsSpheresOn();
+  p.selectionActor->PickableOff();
+  p.renderer->AddActor(p.selectionActor);
+
+  p.labelMapper->SetInputData(p.nodes);
+  p.labelMapper->SetLabelModeToLabelFieldData();
+  p.labelMapper->SetFieldDataName("label");
+  p.labelMapper->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+  p.labelMapper->GetLabelTextProperty()->SetFontSize(12);
+  p.labelMapper->GetLabelTextProperty()->ShadowOff();
+  p.labelMapper->GetLabelTextProperty()->BoldOff();
+  p.labelActor->SetMapper(p.labelMapper);
+  p.labelActor->VisibilityOff();
+  p.renderer->AddActor2D(p.labelActor);
+
+  p.deformedCoords->SetNumberOfComponents(3);
+  p.deformedPoints->SetDataTypeToDouble();
+  p.deformedPoints->SetData(p.deformedCoords);
+  p.deformed->SetPoints(p.deformedPoints);
+  p.magnitude->SetName("displacement magnitude");
+  p.deformed->GetPointData()->SetScalars(p.magnitude);
+  p.lut->SetHueRange(0.667, 0.0);  // blue (still) to red (largest)
+  p.lut->SetNumberOfTableValues(256);
+  p.lut->Build();
+  p.deformedMapper->SetInputData(p.deformed);
+  p.deformedMapper->SetLookupTable(p.lut);
+  p.deformedMapper->SetScalarModeToUsePointData();
+  p.deformedMapper->UseLookupTableScalarRangeOff();
+  p.deformedActor->SetMapper(p.deformedMapper);
+  p.deformedActor->GetProperty()->SetColor(0.11, 0.21, 0.34);
+  p.deformedActor->GetProperty()->SetLineWidth(3.0);
+  p.deformedActor->GetProperty()->SetPointSize(6.0);
+  p.deformedActor->GetProperty()->RenderPointsAsSpheresOn();
+  p.deformedActor->PickableOff();
+  p.deformedActor->VisibilityOff();
+  p.renderer->AddActor(p.deformedActor);
+
+  p.legend->SetLookupTable(p.lut);
+  p.legend->SetNumberOfLabels(5);
+  p.legend->SetLabelFormat("%.3g");
+  // Fixed font sizes (VTK scales them with the window's DPI), labels left of
+  // the bar so nothing runs off the right edge of a narrow view.
+  p.legend->UnconstrainedFontSizeOn();
+  p.legend->GetTitleTextProperty()->SetFontSize(13);
+  p.legend->GetLabelTextProperty()->SetFontSize(12);
+  p.legend->SetTextPositionToPrecedeScalarBar();
+  p.legend->SetPosition(0.86, 0.08);
+  p.legend->SetWidth(0.12);
+  p.legend->SetHeight(0.8);
+  p.legend->SetBarRatio(0.25);
+  p.legend->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
+  p.legend->GetTitleTextProperty()->ShadowOff();
+  p.legend->GetTitleTextProperty()->ItalicOff();
+  p.legend->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+  p.legend->GetLabelTextProperty()->ShadowOff();
+  p.legend->GetLabelTextProperty()->ItalicOff();
+  p.legend->VisibilityOff();
+  p.renderer->AddActor2D(p.legend);
+
+  p.arrowVectors->SetNumberOfComponents(3);
+  p.arrowVectors->SetName("displacement");
+  p.arrowInput->GetPointData()->SetVectors(p.arrowVectors);
+  p.arrow->SetTipResolution(12);
+  p.arrow->SetShaftResolution(8);
+  p.glyphs->SetSourceConnection(p.arrow->GetOutputPort());
+  p.glyphs->SetInputData(p.arrowInput);
+  p.glyphs->SetVectorModeToUseVector();
+  p.glyphs->SetScaleModeToScaleByVector();
+  p.glyphs->OrientOn();
+  p.glyphs->SetScaleFactor(1.0);
+  p.arrowMapper->SetInputConnection(p.glyphs->GetOutputPort());
+  p.arrowMapper->ScalarVisibilityOff();
+  p.arrowActor->SetMapper(p.arrowMapper);
+  p.arrowActor->GetProperty()->SetColor(0.85, 0.33, 0.10);
+  p.arrowActor->PickableOff();
+  p.arrowActor->VisibilityOff();
+  p.renderer->AddActor(p.arrowActor);
+
+  p.picker->PickFromListOn();
+  p.picker->AddPickList(p.nodeActor);
+  p.picker->SetTolerance(0.01);
+
+  p.renderer->GetActiveCamera()->SetPosition(1.0, -1.5, 1.0);
+  p.renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
+  p.renderer->ResetCamera();
+  retranslate();
 }
 
 SceneView::~SceneView() {
@@ -85,20 +215,30 @@ vtkRenderer* SceneView::renderer() const {
   return pipeline_->renderer;
 }
 
-void SceneView::showMesh(const core::io::StoredMesh& mesh, const std::vector<core::Vector3>& globalPositions) {
+void SceneView::showMesh(const core::io::StoredMesh& mesh, const std::vector<core::Vector3>& globalPositions,
+                         bool resetCamera) {
+  Pipeline& p = *pipeline_;
   vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> vertices;
   vtkNew<vtkCellArray> lines;
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIntArray> labelArray;
+  labelArray->SetName("label");
   std::unordered_map<int, vtkIdType> index;
   const std::size_t n = std::min(mesh.nodes.size(), globalPositions.size());
+  labels_.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    const auto& p = globalPositions[i];
-    const vtkIdType id = points->InsertNextPoint(p[0], p[1], p[2]);
+    const auto& pos = globalPositions[i];
+    const vtkIdType id = points->InsertNextPoint(pos[0], pos[1], pos[2]);
     index[mesh.nodes[i].label] = id;
+    labels_[i] = mesh.nodes[i].label;
+    labelArray->InsertNextValue(mesh.nodes[i].label);
     vertices->InsertNextCell(1, &id);
   }
   skippedLines_ = 0;
   meshLines_ = 0;
+  meshFaces_ = 0;
   for (const auto& line : mesh.lines) {
     const auto a = index.find(line.nodeA);
     const auto b = index.find(line.nodeB);
@@ -110,13 +250,50 @@ void SceneView::showMesh(const core::io::StoredMesh& mesh, const std::vector<cor
     lines->InsertNextCell(2, ids);
     ++meshLines_;
   }
-  pipeline_->mesh->SetPoints(points);
-  pipeline_->mesh->SetLines(lines);
-  pipeline_->nodes->SetPoints(points);
-  pipeline_->nodes->SetVerts(vertices);
-  pipeline_->mesh->Modified();
-  pipeline_->nodes->Modified();
+  for (const auto& face : mesh.faces) {
+    vtkIdType ids[4];
+    int count = 0;
+    bool ok = true;
+    for (int label : {face.nodeA, face.nodeB, face.nodeC, face.nodeD}) {
+      if (label == 0 && count == 3) break;
+      const auto it = index.find(label);
+      if (it == index.end()) {
+        ok = false;
+        break;
+      }
+      ids[count++] = it->second;
+    }
+    if (!ok) {
+      ++skippedLines_;
+      continue;
+    }
+    polys->InsertNextCell(count, ids);
+    ++meshFaces_;
+  }
+  p.mesh->Initialize();
+  p.mesh->SetPoints(points);
+  p.mesh->SetLines(lines);
+  p.mesh->SetPolys(polys);
+  p.nodes->Initialize();
+  p.nodes->SetPoints(points);
+  p.nodes->SetVerts(vertices);
+  p.nodes->GetPointData()->AddArray(labelArray);
+  p.mesh->Modified();
+  p.nodes->Modified();
+  // Faces are drawn light and translucent so lines and nodes stay readable.
   meshPoints_ = static_cast<int>(n);
+  selected_.clear();
+  p.selection->Initialize();
+  clearShape();
+  if (resetCamera) {
+    p.renderer->ResetCamera();
+  } else {
+    p.renderer->ResetCameraClippingRange();  // new nodes far away are not clipped
+  }
+  render();
+}
+
+void SceneView::resetCamera() {
   pipeline_->renderer->ResetCamera();
   render();
 }
@@ -125,9 +302,248 @@ void SceneView::clearMesh() {
   showMesh({}, {});
 }
 
+void SceneView::setSelectedNodes(const std::vector<int>& labels) {
+  selected_ = labels;
+  Pipeline& p = *pipeline_;
+  vtkNew<vtkCellArray> verts;
+  std::unordered_map<int, vtkIdType> row;
+  for (std::size_t i = 0; i < labels_.size(); ++i) row[labels_[i]] = static_cast<vtkIdType>(i);
+  for (int label : labels) {
+    const auto it = row.find(label);
+    if (it != row.end()) verts->InsertNextCell(1, &it->second);
+  }
+  p.selection->Initialize();
+  p.selection->SetPoints(p.mesh->GetPoints());
+  p.selection->SetVerts(verts);
+  p.selection->Modified();
+  render();
+}
+
+void SceneView::setLabelsVisible(bool visible) {
+  pipeline_->labelActor->SetVisibility(visible ? 1 : 0);
+  render();
+}
+
+std::optional<int> SceneView::nodeAt(const QPoint& widgetPos) const {
+  if (labels_.empty()) return std::nullopt;
+  const double ratio = vtkWidget_->devicePixelRatioF();
+  const int height = static_cast<int>(vtkWidget_->height() * ratio);
+  const double x = widgetPos.x() * ratio;
+  const double y = height - 1 - widgetPos.y() * ratio;
+  Pipeline& p = *pipeline_;
+  if (!p.picker->Pick(x, y, 0.0, p.renderer)) return std::nullopt;
+  const vtkIdType id = p.picker->GetPointId();
+  if (id < 0 || id >= static_cast<vtkIdType>(labels_.size())) return std::nullopt;
+  return labels_[static_cast<std::size_t>(id)];
+}
+
+bool SceneView::setShape(const core::geometry::NodeDisplacements& u, const std::vector<int>& arrowNodes) {
+  Pipeline& p = *pipeline_;
+  vtkPoints* meshPoints = p.mesh->GetPoints();
+  const Eigen::Index n = meshPoints ? meshPoints->GetNumberOfPoints() : 0;
+  if (u.rows() != n || n == 0) return false;
+  // Built once per shape: base points, Re and Im parts, the deformed layer's
+  // arrays and cells. Ticks only write into deformedCoords and magnitude.
+  base_.resize(n, 3);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    double xyz[3];
+    meshPoints->GetPoint(i, xyz);
+    base_.row(i) << xyz[0], xyz[1], xyz[2];
+  }
+  shape_ = u;
+  re_ = core::geometry::realPart(u);
+  im_ = core::geometry::imagPart(u);
+  shapeRows_ = n;
+  p.deformedCoords->SetNumberOfTuples(n);
+  p.magnitude->SetNumberOfTuples(n);
+  p.deformed->SetLines(p.mesh->GetLines());
+  p.deformed->SetPolys(p.mesh->GetPolys());
+  // Large meshes: the lines show the nodes; per-node dots would double the
+  // vertex work of every frame under software OpenGL.
+  if (isLarge()) {
+    p.deformed->SetVerts(nullptr);
+  } else {
+    p.deformed->SetVerts(p.nodes->GetVerts());
+  }
+  arrowRows_.clear();
+  for (int row : arrowNodes)
+    if (row >= 0 && row < n) arrowRows_.push_back(row);
+  vtkNew<vtkPoints> arrowPoints;
+  arrowPoints->SetDataTypeToDouble();
+  arrowPoints->SetNumberOfPoints(static_cast<vtkIdType>(arrowRows_.size()));
+  for (std::size_t k = 0; k < arrowRows_.size(); ++k)
+    arrowPoints->SetPoint(static_cast<vtkIdType>(k), base_.row(arrowRows_[k]).data());
+  p.arrowInput->SetPoints(arrowPoints);
+  p.arrowVectors->SetNumberOfTuples(static_cast<vtkIdType>(arrowRows_.size()));
+  p.deformedActor->SetVisibility(1);
+  p.legend->SetVisibility(colourByMagnitude_ ? 1 : 0);
+  p.arrowActor->SetVisibility(arrowsVisible_ && !arrowRows_.empty() ? 1 : 0);
+  applyStyle();
+  updateColourRange();
+  setPhase(phase_);
+  return true;
+}
+
+void SceneView::clearShape() {
+  Pipeline& p = *pipeline_;
+  shapeRows_ = 0;
+  shape_.resize(0, 3);
+  base_.resize(0, 3);
+  re_.resize(0, 3);
+  im_.resize(0, 3);
+  arrowRows_.clear();
+  p.deformedActor->VisibilityOff();
+  p.legend->VisibilityOff();
+  p.arrowActor->VisibilityOff();
+  applyStyle();
+}
+
+bool SceneView::isLarge() const {
+  return meshPoints_ > kLargeMeshNodes;
+}
+
+void SceneView::applyStyle() {
+  Pipeline& p = *pipeline_;
+  auto* mesh = p.meshActor->GetProperty();
+  auto* nodes = p.nodeActor->GetProperty();
+  auto* deformed = p.deformedActor->GetProperty();
+  const bool large = isLarge();
+  // VTK draws in device pixels: sizes follow the screen's scale (high DPI).
+  const double dpr = std::max(1.0, vtkWidget_->devicePixelRatioF());
+  p.selectionActor->GetProperty()->SetPointSize(13.0 * dpr);
+  // Sphere-shaded dots and wide lines are drawn by geometry shaders, which
+  // Mesa llvmpipe runs on the CPU: large meshes get plain dots and thin lines.
+  nodes->SetRenderPointsAsSpheres(!large);
+  deformed->SetRenderPointsAsSpheres(!large);
+  deformed->SetLineWidth(large ? 1.0 : 3.0 * dpr);
+  deformed->SetPointSize(6.0 * dpr);
+  if (hasShape()) {
+    // The undeformed mesh becomes a grey overlay (opaque for large meshes:
+    // blending thousands of lines costs more than it shows).
+    mesh->SetColor(0.62, 0.65, 0.69);
+    mesh->SetOpacity(large ? 1.0 : 0.45);
+    mesh->SetLineWidth(1.0);
+    nodes->SetColor(0.55, 0.58, 0.62);
+    nodes->SetPointSize(4.0 * dpr);
+    p.meshActor->SetVisibility(undeformedVisible_ ? 1 : 0);
+    p.nodeActor->SetVisibility(undeformedVisible_ && !large ? 1 : 0);
+  } else {
+    mesh->SetColor(0.11, 0.21, 0.34);
+    mesh->SetOpacity(meshFaces_ > 0 ? 0.9 : 1.0);
+    mesh->SetLineWidth(large ? 1.0 : 2.0 * dpr);
+    nodes->SetColor(0.90, 0.22, 0.27);
+    nodes->SetPointSize(large ? 3.0 : 7.0 * dpr);
+    p.meshActor->VisibilityOn();
+    p.nodeActor->VisibilityOn();
+  }
+}
+
+void SceneView::setAmplitude(double amplitude) {
+  amplitude_ = amplitude;
+  if (!hasShape()) return;
+  updateColourRange();
+  setPhase(phase_);
+}
+
+void SceneView::setPhase(double theta) {
+  phase_ = theta;
+  if (!hasShape()) {
+    render();
+    return;
+  }
+  Pipeline& p = *pipeline_;
+  const auto scales = core::geometry::warpScales(amplitude_, theta);
+  core::geometry::deformPoints(base_.data(), re_.data(), im_.data(), shapeRows_, scales,
+                               p.deformedCoords->GetPointer(0), p.magnitude->GetPointer(0));
+  p.deformedCoords->Modified();
+  p.deformedPoints->Modified();
+  p.magnitude->Modified();
+  p.deformed->Modified();
+  if (p.arrowActor->GetVisibility()) {
+    double* v = p.arrowVectors->GetPointer(0);
+    for (std::size_t k = 0; k < arrowRows_.size(); ++k) {
+      const Eigen::Index r = arrowRows_[k];
+      for (int c = 0; c < 3; ++c) v[3 * k + c] = scales.re * re_(r, c) + scales.im * im_(r, c);
+    }
+    p.arrowVectors->Modified();
+    p.arrowInput->Modified();
+  }
+  render();
+}
+
+void SceneView::updateColourRange() {
+  colourRange_ = core::geometry::colourRange(shape_, amplitude_);
+  Pipeline& p = *pipeline_;
+  p.deformedMapper->SetScalarRange(colourRange_.min, colourRange_.max);
+  p.lut->SetTableRange(colourRange_.min, colourRange_.max);
+}
+
+void SceneView::setColourByMagnitude(bool on) {
+  colourByMagnitude_ = on;
+  Pipeline& p = *pipeline_;
+  p.deformedMapper->SetScalarVisibility(on ? 1 : 0);
+  p.legend->SetVisibility(on && hasShape() ? 1 : 0);
+  render();
+}
+
+void SceneView::setUndeformedVisible(bool on) {
+  undeformedVisible_ = on;
+  applyStyle();
+  render();
+}
+
+void SceneView::setArrowsVisible(bool on) {
+  arrowsVisible_ = on;
+  pipeline_->arrowActor->SetVisibility(on && hasShape() && !arrowRows_.empty() ? 1 : 0);
+  setPhase(phase_);
+}
+
+void SceneView::setLegendTitle(const QString& title) {
+  pipeline_->legend->SetTitle(title.toUtf8().constData());
+  render();
+}
+
+vtkPoints* SceneView::deformedPoints() const {
+  return pipeline_->deformedPoints;
+}
+
+QImage SceneView::grabFrame() {
+  render();
+  return vtkWidget_->grabFramebuffer();
+}
+
 void SceneView::render() {
   pipeline_->window->Render();
   ++framesRendered_;
+}
+
+bool SceneView::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == vtkWidget_) {
+    if (event->type() == QEvent::MouseButtonPress) {
+      auto* me = static_cast<QMouseEvent*>(event);
+      if (me->button() == Qt::LeftButton) {
+        pressPos_ = me->pos();
+        pressed_ = true;
+      }
+    } else if (event->type() == QEvent::MouseButtonRelease && pressed_) {
+      auto* me = static_cast<QMouseEvent*>(event);
+      pressed_ = false;
+      // A click, not a camera drag: at most a few pixels of travel.
+      if (me->button() == Qt::LeftButton && (me->pos() - pressPos_).manhattanLength() <= 4) {
+        if (const auto label = nodeAt(me->pos())) emit nodeClicked(*label, me->modifiers());
+      }
+    }
+  }
+  return QWidget::eventFilter(watched, event);
+}
+
+void SceneView::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  QWidget::changeEvent(event);
+}
+
+void SceneView::retranslate() {
+  pipeline_->legend->SetTitle(tr("|u|").toUtf8().constData());
 }
 
 }  // namespace views

@@ -1,17 +1,30 @@
 #pragma once
-// The 3-D work view: a VTK render window in a Qt widget with a ground grid and
-// an orientation marker in the mesh's axes. Geometry and mode animation are
-// added by the mesh and animation views built on top of it.
+// The 3-D work view: a VTK render window in a Qt widget with an orientation
+// marker in the mesh's axes, and layers drawn over one mesh:
+//   mesh       nodes (dots), trace lines, faces; the undeformed overlay while a
+//              shape is shown
+//   selection  highlighted nodes (the mesh editor's selection)
+//   labels     node numbers
+//   deformed   the mesh displaced by a shape, coloured by displacement magnitude
+//              with a legend
+//   arrows     displacement arrows at the measured nodes
+// Geometry and the shape arrays are built once (showMesh, setShape); each
+// animation tick only sets the phase (STYLE 12): core::geometry computes the
+// points from the two warp scales into the arrays VTK draws, then one render.
 
+#include <QImage>
 #include <QWidget>
+#include <optional>
 #include <vector>
 
 #include "core/common/eigen_types.h"
+#include "core/geometry/animation.h"
+#include "core/geometry/mode_shape.h"
 #include "core/io/project_records.h"
 
 class QVTKOpenGLNativeWidget;
 class vtkRenderer;
-class vtkOrientationMarkerWidget;
+class vtkPoints;
 
 namespace mozzi {
 namespace views {
@@ -32,22 +45,91 @@ class SceneView : public QWidget {
   static void prepareSurfaceFormat();
 
   // Draws a mesh: nodes as dots at their global positions (one per mesh node,
-  // same order), lines as segments between node labels. Segments naming a
-  // node the mesh lacks are skipped and counted. Replaces any mesh shown.
-  void showMesh(const core::io::StoredMesh& mesh, const std::vector<core::Vector3>& globalPositions);
+  // same order), lines as segments and faces as polygons between node labels.
+  // Segments and faces naming a node the mesh lacks are skipped and counted.
+  // Replaces any mesh shown and clears the shape. `resetCamera` false keeps
+  // the view (the editor redraws after each edit).
+  void showMesh(const core::io::StoredMesh& mesh, const std::vector<core::Vector3>& globalPositions,
+                bool resetCamera = true);
   void clearMesh();
+  // Frames everything drawn and renders.
+  void resetCamera();
   int meshPointCount() const { return meshPoints_; }
   int meshLineCount() const { return meshLines_; }
+  int meshFaceCount() const { return meshFaces_; }
   int skippedLineCount() const { return skippedLines_; }
 
+  // Selection and labels.
+  void setSelectedNodes(const std::vector<int>& labels);
+  const std::vector<int>& selectedNodes() const { return selected_; }
+  void setLabelsVisible(bool visible);
+  // The node drawn nearest `widgetPos` (widget pixels), if one is within a few pixels.
+  std::optional<int> nodeAt(const QPoint& widgetPos) const;
+
+  // --- shapes ---------------------------------------------------------------
+  // Shows `u` (one row per mesh node, global axes) on the mesh: builds the
+  // deformed layer once. `arrowNodes` are the mesh-node rows that get arrows
+  // (usually the measured ones). Errors when the row count differs from the mesh.
+  bool setShape(const core::geometry::NodeDisplacements& u, const std::vector<int>& arrowNodes = {});
+  void clearShape();
+  bool hasShape() const { return shapeRows_ > 0; }
+  // Amplitude A: displacement drawn = A x shape (see core/geometry/animation.h).
+  void setAmplitude(double amplitude);
+  double amplitude() const { return amplitude_; }
+  // Sets the phase theta [rad], updates the deformed points, renders once.
+  void setPhase(double theta);
+  double phase() const { return phase_; }
+  void setColourByMagnitude(bool on);
+  void setUndeformedVisible(bool on);
+  void setArrowsVisible(bool on);
+  void setLegendTitle(const QString& title);
+  core::geometry::ColourRange colourRange() const { return colourRange_; }
+  // The VTK points of the deformed layer (tests read the vertex positions).
+  vtkPoints* deformedPoints() const;
+
+  // The rendered picture at the widget's size (device pixels).
+  QImage grabFrame();
+
+ signals:
+  // A click (press and release without dragging) on a node.
+  void nodeClicked(int label, Qt::KeyboardModifiers modifiers);
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+  void changeEvent(QEvent* event) override;
+
  private:
+  void updateColourRange();
+  void retranslate();
+  // Meshes above this many nodes are drawn for speed (thin lines, plain dots,
+  // no dots on the deformed shape, opaque overlay): see applyStyle().
+  static constexpr int kLargeMeshNodes = 5000;
+  bool isLarge() const;
+  void applyStyle();
+
   QVTKOpenGLNativeWidget* vtkWidget_ = nullptr;
   struct Pipeline;
   Pipeline* pipeline_ = nullptr;
   int framesRendered_ = 0;
   int meshPoints_ = 0;
   int meshLines_ = 0;
+  int meshFaces_ = 0;
   int skippedLines_ = 0;
+  std::vector<int> labels_;  // node label per mesh point
+  std::vector<int> selected_;
+  // Shape state: base points and the two parts of the shape, split once.
+  core::geometry::NodePoints base_, re_, im_;
+  core::geometry::NodeDisplacements shape_;
+  std::vector<int> arrowRows_;
+  Eigen::Index shapeRows_ = 0;
+  double amplitude_ = 1.0;
+  double phase_ = 0.0;
+  bool colourByMagnitude_ = true;
+  bool undeformedVisible_ = true;
+  bool arrowsVisible_ = false;
+  core::geometry::ColourRange colourRange_;
+  QPoint pressPos_;
+  bool pressed_ = false;
 };
 
 }  // namespace views

@@ -12,6 +12,7 @@
 
 #include "core/common/frf_matrix.h"
 #include "core/common/result.h"
+#include "core/io/mesh_document.h"
 #include "core/io/project_records.h"
 #include "core/io/time_table.h"
 
@@ -35,6 +36,18 @@ Result<ModalTable> importModalCsv(const std::string& path);
 Result<void> exportTimeCsv(const TimeTable& table, const std::string& path);
 Result<void> exportFrfCsv(const FrfMatrix& frf, const std::string& path);
 Result<void> exportModalCsv(const ModalTable& table, const std::string& path);
+
+// Measurement meshes (docs/formats/csv.md, "Meshes"): sections
+// coordinate-systems, nodes, lines, faces, dofs and slaves, each a table of
+// numbers under its own header; a file with only a "node, x [mm], y [mm],
+// z [mm]" table is a mesh of nodes. What writeMeshCsv writes reads back to the
+// same document (same doubles, same order). The reader checks the format
+// (numbers, whole labels, units, UFF direction codes); geometry::validate
+// checks the mesh (labels unique, lines and faces on existing nodes).
+Result<void> writeMeshCsv(const MeshDocument& document, std::ostream& out);
+Result<MeshDocument> readMeshCsv(std::string_view text, const std::string& source);
+Result<MeshDocument> importMeshCsv(const std::string& path);
+Result<void> exportMeshCsv(const MeshDocument& document, const std::string& path);
 
 // Scale factor to SI and the SI unit for a unit text ("g" -> 9.80665, "m/s^2").
 // Exposed for the MATLAB importer's channel map. Unknown units are an error.

@@ -292,7 +292,7 @@ void MainWindowTest::aboutListsTheLinkedLibraryVersions() {
 }
 
 void MainWindowTest::sceneRendersWithOpenGl() {
-  auto* scene = window_->findChild<mozzi::views::SceneView*>();
+  auto* scene = window_->findChild<mozzi::views::SceneView*>(QStringLiteral("sceneTab"));
   QVERIFY(scene);
   window_->workArea()->setCurrentPage(scene);
   QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
@@ -312,7 +312,7 @@ void MainWindowTest::importedGeometryIsDrawnInThe3dView() {
   QVERIFY(window_->newProject(file(QStringLiteral("import-geometry.mozzi"))));
   const QString uff = QStringLiteral(MOZZI_SHARED_DATA_DIR "/uff/TestLab 161 164 18 15 82.uff");
   QVERIFY(window_->importUff(uff));
-  auto* scene = window_->findChild<mozzi::views::SceneView*>();
+  auto* scene = window_->findChild<mozzi::views::SceneView*>(QStringLiteral("sceneTab"));
   QCOMPARE(window_->workArea()->currentPage(), static_cast<QWidget*>(scene));
   QCOMPARE(scene->meshPointCount(), 36);
   QCOMPARE(scene->meshLineCount(), 30);

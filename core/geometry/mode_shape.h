@@ -1,0 +1,81 @@
+#pragma once
+// A mode shape (or an operating deflection shape) spread over every node of a
+// measurement mesh, in global axes, ready to animate.
+//
+// DOF values are in each node's displacement system (UFF 15/2411 field 3):
+// translations +/-X, Y, Z along that system's local axes at the node
+// (cartesian: the rotation columns; cylindrical: radial, tangential, axial;
+// spherical: radial, polar, azimuthal). Rotational DOFs are not drawn.
+//
+// Nodes without a measured DOF get their displacement, in this order:
+//  1. from slave rules, u(slave) = sum_k w_k u(master_k) (MeshDocument::slaves);
+//  2. by interpolation over the trace lines and face edges: the harmonic
+//     interpolant with edge weights 1/length, sum_j w_ij (u_i - u_j) = 0 for
+//     every free node i, which is linear interpolation by arc length along a
+//     chain between two measured nodes;
+//  3. nodes with no path to a measured node stay still (counted).
+
+#include <vector>
+
+#include "core/common/dof.h"
+#include "core/common/eigen_types.h"
+#include "core/common/frf_matrix.h"
+#include "core/common/result.h"
+#include "core/io/mesh_document.h"
+
+namespace mozzi::core::geometry {
+
+// Per node (rows in mesh.nodes order) a complex displacement (x, y, z) in
+// global axes, in the shape's own unit (unscaled).
+using NodeDisplacements = Eigen::Matrix<Complex, Eigen::Dynamic, 3>;
+// Per node (rows) a real (x, y, z) [m].
+using NodePoints = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+enum class NodeSource { Measured, Slaved, Interpolated, Still };
+
+struct ShapeField {
+  NodeDisplacements u;             // n x 3
+  std::vector<NodeSource> source;  // n
+  int measuredNodes = 0;
+  int slavedNodes = 0;
+  int interpolatedNodes = 0;
+  int stillNodes = 0;   // no measured neighbour reachable
+  int ignoredDofs = 0;  // rotations, DOFs on nodes the mesh lacks
+};
+
+struct FieldOptions {
+  bool interpolate = true;  // step 2 above (off: unmeasured nodes stay still)
+};
+
+// Global node positions as NodePoints (rows in mesh.nodes order).
+Result<NodePoints> nodePoints(const io::StoredMesh& mesh);
+
+// Spreads `values` (one per `dofs` entry) over the mesh of `document`.
+Result<ShapeField> shapeField(const io::MeshDocument& document, const std::vector<Dof>& dofs,
+                              const ComplexVectorRef& values, const FieldOptions& options = {});
+
+// Largest displacement magnitude of each node over a cycle:
+// max_theta |Re(u) sin(theta) + Im(u) cos(theta)|; with a = Re u, b = Im u,
+// = sqrt((|a|^2 + |b|^2)/2 + sqrt(((|a|^2 - |b|^2)/2)^2 + (a.b)^2)).
+Vector peakMagnitudes(const NodeDisplacements& u);
+
+// MAC of two shapes over the DOFs they share (modal::mac on the common DOFs,
+// in the order of `dofsA`). Errors when they share none.
+struct SharedMac {
+  double mac = 0.0;
+  int commonDofs = 0;
+};
+Result<SharedMac> macOnCommonDofs(const std::vector<Dof>& dofsA, const ComplexVectorRef& a,
+                                  const std::vector<Dof>& dofsB, const ComplexVectorRef& b);
+
+// Operating deflection shape: the column of responses to reference
+// `referenceIndex` at the frequency line nearest `frequencyHz`.
+struct Ods {
+  std::vector<Dof> dofs;  // the FRF set's responses
+  ComplexVector values;   // H(f_line) per response, in the set's FRF type
+  double lineHz = 0.0;    // the line used
+  Eigen::Index line = 0;
+};
+Result<Ods> operatingDeflectionShape(const FrfMatrix& frf, double frequencyHz, Eigen::Index referenceIndex = 0);
+
+}  // namespace mozzi::core::geometry
