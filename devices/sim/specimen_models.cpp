@@ -1,6 +1,8 @@
 #include "devices/sim/specimen_models.h"
 
+#include <Eigen/LU>
 #include <Eigen/QR>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

@@ -163,21 +163,9 @@ int runCampaign(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
                           "': the command line runs campaigns on the simulated hammer station (sim-hammer); a real "
                           "station is driven from the workbench");
   cp::VirtualCampaignOptions options;
-  auto hits = a.number("--hits");
-  if (!hits) return usage(err, hits.error().message);
-  if (*hits) {
-    if (!(**hits >= 1 && **hits <= 1000 && std::floor(**hits) == **hits))
-      return usage(err, "--hits must be an integer in 1..1000");
-    options.hitsPerPoint = static_cast<int>(**hits);
-  }
-  if (auto s = a.value("--seed")) {
-    char* end = nullptr;
-    errno = 0;
-    const unsigned long long v = std::strtoull(s->c_str(), &end, 10);
-    if (s->empty() || *end != '\0' || errno != 0 || (*s)[0] == '-')
-      return usage(err, "--seed must be a non-negative integer (got '" + *s + "')");
-    options.seed = v;
-  }
+  // Ranges checked by the parser (kSpec).
+  if (auto hits = a.number("--hits"); hits && hits->has_value()) options.hitsPerPoint = static_cast<int>(**hits);
+  if (auto seed = a.number("--seed"); seed && seed->has_value()) options.seed = static_cast<std::uint64_t>(**seed);
   const bool asJson = a.flag("--json");
 
   auto store = core::io::ProjectStore::open(path);
@@ -377,12 +365,20 @@ int status(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
   return kExitOk;
 }
 
+// The option table: hits per point as the campaign definition allows; the
+// seed within what a JSON summary carries exactly (2^53).
+const OptionSpec kSpec{{"--specimen", "--rig", "--constraint"},
+                       {"--new", "--json"},
+                       {{"--hits", wholeNumber(1, 1000), "accepted hits per point"},
+                        {"--seed", wholeNumber(0, 9007199254740992.0), "seed of the simulated hits"}}};
+
 int campaignCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  OptionSpec spec;
-  spec.valued = {"--specimen", "--rig", "--constraint", "--hits", "--seed"};
-  spec.flags = {"--new", "--json"};
-  auto parsed = ParsedArgs::parse(args, spec);
-  if (!parsed) return usage(err, parsed.error().message);
+  auto parsed = ParsedArgs::parse(args, kSpec);
+  if (!parsed) {
+    if (exitCodeFor(parsed.error()) == kExitUsage) return usage(err, parsed.error().message);
+    err << "mozzi-cli campaign: " << parsed.error().describe() << "\n";
+    return kExitFailure;
+  }
   const auto& pos = parsed->positional();
   if (pos.empty()) return usage(err, "expected run or status");
   if (pos[0] == "run") return runCampaign(*parsed, out, err);
@@ -400,7 +396,7 @@ const CommandRegistrar kRegistrar({"campaign",
                                    "[--new] [--seed S] [--json] | status PROJECT.mozzi [--json]",
                                    "impact campaigns on the simulated hammer station: run (or resume) with automatic "
                                    "decisions, list progress",
-                                   campaignCommand});
+                                   campaignCommand, &kSpec});
 
 }  // namespace
 }  // namespace mozzi::cli

@@ -176,10 +176,12 @@ TEST_F(CampaignCli, UsageAndInputErrors) {
   auto rig = run({"campaign", "run", p, "--specimen", "fork-a-with-wheel", "--rig", "mcc-usb1608fsplus"});
   EXPECT_EQ(rig.code, 2);
   EXPECT_NE(rig.err.find("sim-hammer"), std::string::npos);
-  EXPECT_EQ(run({"campaign", "run", p, "--specimen", "fork-a-with-wheel", "--rig", "sim-hammer", "--hits", "0"}).code,
-            2);
+  // A value outside its range or not a number is exit 1 naming the option (docs/cli.md, "Option ranges").
+  auto hits = run({"campaign", "run", p, "--specimen", "fork-a-with-wheel", "--rig", "sim-hammer", "--hits", "0"});
+  EXPECT_EQ(hits.code, 1);
+  EXPECT_NE(hits.err.find("--hits"), std::string::npos);
   EXPECT_EQ(run({"campaign", "run", p, "--specimen", "fork-a-with-wheel", "--rig", "sim-hammer", "--seed", "x"}).code,
-            2);
+            1);
   auto unknown = run({"campaign", "run", p, "--specimen", "fork-z", "--rig", "sim-hammer"});
   EXPECT_EQ(unknown.code, 1);
   EXPECT_NE(unknown.err.find("fork-z"), std::string::npos);
