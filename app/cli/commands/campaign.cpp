@@ -196,7 +196,7 @@ int runCampaign(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
       if (c.definition.specimenKey == choice->key && !c.finished()) {
         campaignId = c.campaign.id;
         resumed = true;
-        if ((*hits && c.definition.hitsPerPoint != options.hitsPerPoint) ||
+        if ((a.value("--hits") && c.definition.hitsPerPoint != options.hitsPerPoint) ||
             (a.value("--seed") && c.definition.seed != options.seed))
           err << "mozzi-cli campaign: resuming campaign " << c.campaign.id << " with its own settings ("
               << c.definition.hitsPerPoint << " hits per point, seed " << c.definition.seed
