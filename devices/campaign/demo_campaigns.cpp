@@ -75,8 +75,16 @@ core::Result<void> addDemoCampaigns(core::io::ProjectStore& store) {
     ErrorCatcher errors;
     (*engine)->addObserver(&errors);
     (*engine)->start();
-    // A simulated station at full speed: minutes would mean something is wrong.
-    const bool finished = (*engine)->waitUntilFinished(std::chrono::minutes(10));
+    // A simulated station at full speed: minutes would mean something is
+    // wrong, and an engine back at Idle with an error (auto-arm stopped after
+    // too many rejections in a row) will not go on by itself.
+    bool finished = false;
+    int idlePolls = 0;
+    for (int second = 0; second < 600 && !finished; ++second) {
+      finished = (*engine)->waitUntilFinished(std::chrono::seconds(1));
+      idlePolls = !finished && (*engine)->state() == EngineState::Idle && errors.first() ? idlePolls + 1 : 0;
+      if (idlePolls >= 2) break;
+    }
     (*engine)->stop();
     if (!finished) {
       auto e = errors.first();

@@ -104,6 +104,20 @@ class HammerModel final : public SignalModel {
     peak_ = parameterReal(config.parameters, "hammer.peak_force", 200.0);
     forceNoise_ = parameterReal(config.parameters, "noise.force_rms", 0.05);
     responseNoise_ = parameterReal(config.parameters, "noise.response_rms", 0.002);
+    // An ADC toggles its last code: half a code rms of input noise on each
+    // accelerometer input, in that channel's units (its range and sensitivity).
+    // Without it a DOF the hit cannot move (a node of every mode excited
+    // there) would read exactly zero, which only a broken cable does.
+    inputNoise_.assign(1 + kAccelerometers, responseNoise_);
+    for (const auto& ch : config.channels) {
+      if (ch.input < 1 || ch.input > kAccelerometers) continue;
+      const double voltsPerUnit = ch.transducer.sensitivityMvPerUnit / 1000.0 * ch.conditionerGain;
+      for (const auto& r : mcc::ranges())
+        if (r.code == ch.rangeCode && voltsPerUnit > 0.0) {
+          const double codeUnits = (r.maxVolts - r.minVolts) / 65536.0 / voltsPerUnit;
+          inputNoise_[static_cast<std::size_t>(ch.input)] = std::max(responseNoise_, 0.5 * codeUnits);
+        }
+    }
     pDouble_ = parameterReal(config.parameters, "fault.double_hit_probability", 0.0);
     pOverload_ = parameterReal(config.parameters, "fault.overload_probability", 0.0);
     overloadFactor_ = parameterReal(config.parameters, "fault.overload_factor", 30.0);
@@ -167,7 +181,8 @@ class HammerModel final : public SignalModel {
     std::mt19937_64 noiseRng(seed_ * 104729u + static_cast<std::uint64_t>(seg) + 3u);
     std::normal_distribution<double> normal(0.0, 1.0);
     for (Eigen::Index c = 1; c <= kAccelerometers; ++c)
-      for (Eigen::Index k = 0; k < ns; ++k) segment_(k, c) += responseNoise_ * normal(noiseRng);
+      for (Eigen::Index k = 0; k < ns; ++k)
+        segment_(k, c) += inputNoise_[static_cast<std::size_t>(c)] * normal(noiseRng);
     segmentIndex_ = seg;
     ++counters.hits;
     if (isDouble) ++counters.doubleHits;
@@ -178,6 +193,7 @@ class HammerModel final : public SignalModel {
   DrivenSystem driven_;
   std::vector<DofRow> responses_;
   double fs_ = 0.0, pulseWidth_ = 0.0, peak_ = 0.0, forceNoise_ = 0.0, responseNoise_ = 0.0;
+  std::vector<double> inputNoise_;  // per input: response noise, at least half an ADC code
   double pDouble_ = 0.0, pOverload_ = 0.0, overloadFactor_ = 30.0;
   std::int64_t interval_ = 1, preHit_ = 1;
   std::uint64_t seed_ = 1;
