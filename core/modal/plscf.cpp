@@ -223,6 +223,7 @@ Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const Plsc
     if (m != orders[nextOrder]) continue;
     ++nextOrder;
     const std::string at = where + ", order " + std::to_string(m);
+    if (opt.orderProgress && !opt.orderProgress(m)) return makeError(ErrorCode::Cancelled, "cancelled", at);
     const Eigen::Index mb = static_cast<Eigen::Index>(m) * ni, mb1 = mb + ni;
     // M_m = T_m - G_m (leading (m+1) ni block), symmetric.
     Matrix mm = tmat.topLeftCorner(mb1, mb1);
