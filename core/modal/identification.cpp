@@ -90,7 +90,7 @@ Result<SelectionFit> fitSelectedPoles(const FrfMatrix& frf, const std::vector<Co
     theta[2 * r] = poleFrequencyHz(l);
     theta[2 * r + 1] = poleZeta(l);
   }
-  auto vp = ModalVarpro::create(frf, {LineSegment{k0, k - k0}}, nm, band.lowerResidual, band.upperResidual);
+  auto vp = ModalVarpro::create(frf, {LineSegment{k0, k - k0}}, nm, band.lowerResidual, band.upperResidual, false);
   if (!vp) return makeError(vp.error().code, vp.error().message, where + ", band");
   if (!vp->evaluate(theta, false)) {
     return makeError(ErrorCode::NumericalFailure, "basis is rank deficient: duplicate poles or too narrow a band",

@@ -46,8 +46,8 @@ Result<ModalModel> lsfd(const FrfMatrix& frf, const std::vector<Complex>& poles,
   }
   // The basis, its QR and the solution for every FRF: the variable-projection
   // evaluation of refine.h at fixed poles (varpro.h), one implementation.
-  auto vp =
-      ModalVarpro::create(frf, {LineSegment{b.k0, b.nf}}, static_cast<int>(nm), opt.lowerResidual, opt.upperResidual);
+  auto vp = ModalVarpro::create(frf, {LineSegment{b.k0, b.nf}}, static_cast<int>(nm), opt.lowerResidual,
+                                opt.upperResidual, false);
   if (!vp) return makeError(vp.error().code, vp.error().message, where + ", band");
   Vector theta(2 * nm);
   for (Eigen::Index r = 0; r < nm; ++r) {

@@ -105,9 +105,19 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
   Eigen::LDLT<Matrix> ldlt(np);
   // SSR comes from ||Y||^2 - ||Q^T Y||^2: differences below this are rounding.
   const double ssrResolution = 1e-13 * yn2;
+  // Converged when the full Gauss-Newton step would lower SSR by less than
+  // 1e-6 s^2 (s^2 = SSR / (N - P)): the step is then below 1e-3 standard
+  // errors in every direction (delta^T J^T J delta = 2 x the decrease).
+  const double dof = static_cast<double>(2 * vp->lineCount() * m - (np + p * m));
+  Vector gnStep(np);
   for (int it = 0; it < opt.maxIterations; ++it) {
     if (opt.progress && !opt.progress(it, std::sqrt(ssr / yn2))) {
       return makeError(ErrorCode::Cancelled, "refinement cancelled", where);
+    }
+    ldlt.compute(h);
+    if (ldlt.info() == Eigen::Success) {
+      gnStep = ldlt.solve(-g);
+      if (gnStep.allFinite() && -g.dot(gnStep) <= 1e-6 * ssr / dof) break;  // -g.step = decrease of SSR
     }
     ++out.iterations;
     lhs = h;
@@ -180,7 +190,6 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
                      where);
   }
   const Matrix inv = cov.solve(Matrix::Identity(np, np));
-  const double dof = static_cast<double>(2 * vp->lineCount() * m - (np + p * m));
   const double s2 = finalSsr / dof;
   for (int r = 0; r < nm; ++r) {
     out.frequencyStdHz.push_back(std::sqrt(s2 * inv(2 * r, 2 * r)));

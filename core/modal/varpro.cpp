@@ -28,7 +28,7 @@ inline Eigen::Index derivCol(int r, int t, int c) {
 }  // namespace
 
 Result<ModalVarpro> ModalVarpro::create(const FrfMatrix& frf, std::vector<LineSegment> segments, int modes,
-                                        bool lowerResidual, bool upperResidual) {
+                                        bool lowerResidual, bool upperResidual, bool derivatives) {
   const std::string where = "variable projection";
   if (modes < 1) return makeError(ErrorCode::InvalidArgument, "no modes", where);
   ModalVarpro v;
@@ -74,23 +74,27 @@ Result<ModalVarpro> ModalVarpro::create(const FrfMatrix& frf, std::vector<LineSe
   if (!(v.yNorm2_ > 0.0) || !std::isfinite(v.yNorm2_)) {
     return makeError(ErrorCode::InvalidArgument, "FRFs are zero (or not finite) on the lines", where);
   }
-  const Eigen::Index rows = 2 * v.nf_, nd = 4 * modes;
-  v.phi_.resize(rows, v.p_);
-  v.e_.resize(rows, nd);
+  const Eigen::Index rows = 2 * v.nf_, nd = derivatives ? 4 * modes : 0;
+  v.withDerivatives_ = derivatives;
   v.a_.resize(rows, v.p_ + nd);
-  v.qr_ = Eigen::HouseholderQR<Matrix>(rows, v.p_);
+  v.r_.resize(v.p_, v.p_);
+  v.rTmp_.resize(v.p_, v.p_);
+  v.gram_.resize(v.p_, v.p_);
+  v.llt_ = Eigen::LLT<Matrix>(v.p_);
   v.hWork_.resize(v.p_ + nd);
   v.rWork_.resize(rows);
   v.w_.resize(v.p_ + nd, v.m_);
   v.x_.resize(v.p_, v.m_);
-  v.qtE_.resize(v.p_, nd);
-  v.epe_.resize(nd, nd);
-  v.g_.resize(v.p_, v.p_);
-  v.b_.resize(v.p_, v.m_ * 2 * modes);
   v.colNorm_.resize(v.p_);
-  v.grad_.resize(2 * modes);
-  v.jtjGp_.resize(2 * modes, 2 * modes);
-  v.jtjK_.resize(2 * modes, 2 * modes);
+  if (derivatives) {
+    v.qtE_.resize(v.p_, nd);
+    v.epe_.resize(nd, nd);
+    v.g_.resize(v.p_, v.p_);
+    v.b_.resize(v.p_, v.m_ * 2 * modes);
+    v.grad_.resize(2 * modes);
+    v.jtjGp_.resize(2 * modes, 2 * modes);
+    v.jtjK_.resize(2 * modes, 2 * modes);
+  }
   return v;
 }
 
@@ -120,10 +124,10 @@ bool ModalVarpro::fillBasis(const Eigen::Ref<const Vector>& theta, bool withDeri
       const double n1 = 1.0 / (sigma * sigma + d1 * d1), n2 = 1.0 / (sigma * sigma + d2 * d2);
       const Complex a(sigma * n1, -d1 * n1), b(sigma * n2, -d2 * n2);
       const Complex c1 = fn * (a + b), c2 = i1 * fn * (a - b);
-      phi_(row, basisCol(r, 0)) = c1.real();
-      phi_(row + 1, basisCol(r, 0)) = c1.imag();
-      phi_(row, basisCol(r, 1)) = c2.real();
-      phi_(row + 1, basisCol(r, 1)) = c2.imag();
+      a_(row, basisCol(r, 0)) = c1.real();
+      a_(row + 1, basisCol(r, 0)) = c1.imag();
+      a_(row, basisCol(r, 1)) = c2.real();
+      a_(row + 1, basisCol(r, 1)) = c2.imag();
       if (!withDerivatives) continue;
       // d lambda / d f = lambda / f = 2 pi (-zeta + i s); d lambda / d zeta = wn (-1 - i zeta / s)
       const Complex dl[2] = {Complex(-kTwoPi * z, kTwoPi * s), Complex(-wn, -wn * z / s)};
@@ -132,18 +136,18 @@ bool ModalVarpro::fillBasis(const Eigen::Ref<const Vector>& theta, bool withDeri
         // da = a^2 dlambda, db = b^2 conj(dlambda)
         const Complex da = a2 * dl[t], db = b2 * std::conj(dl[t]);
         const Complex e1 = fn * (da + db), e2 = i1 * fn * (da - db);
-        e_(row, derivCol(r, t, 0)) = e1.real();
-        e_(row + 1, derivCol(r, t, 0)) = e1.imag();
-        e_(row, derivCol(r, t, 1)) = e2.real();
-        e_(row + 1, derivCol(r, t, 1)) = e2.imag();
+        a_(row, p_ + derivCol(r, t, 0)) = e1.real();
+        a_(row + 1, p_ + derivCol(r, t, 0)) = e1.imag();
+        a_(row, p_ + derivCol(r, t, 1)) = e2.real();
+        a_(row + 1, p_ + derivCol(r, t, 1)) = e2.imag();
       }
     }
     Eigen::Index c = 2 * nm_;
     auto put = [&](Complex g) {
-      phi_(row, c) = g.real();
-      phi_(row + 1, c) = g.imag();
-      phi_(row, c + 1) = -g.imag();  // i g
-      phi_(row + 1, c + 1) = g.real();
+      a_(row, c) = g.real();
+      a_(row + 1, c) = g.imag();
+      a_(row, c + 1) = -g.imag();  // i g
+      a_(row + 1, c + 1) = g.real();
       c += 2;
     };
     if (upper_) put(fn);
@@ -152,26 +156,61 @@ bool ModalVarpro::fillBasis(const Eigen::Ref<const Vector>& theta, bool withDeri
   return true;
 }
 
-bool ModalVarpro::evaluate(const Eigen::Ref<const Vector>& theta, bool withDerivatives) {
-  derivatives_ = false;
-  if (theta.size() != 2 * nm_ || !fillBasis(theta, withDerivatives)) return false;
-  colNorm_ = phi_.colwise().norm().transpose();
-  qr_.compute(phi_);
-  // Rank: |T_cc| / ||column c|| is the sine of the angle between column c
-  // and the span of the columns before it.
+bool ModalVarpro::orthogonalize(const Eigen::Ref<const Vector>& theta) {
+  auto q = a_.leftCols(p_);
+  colNorm_ = q.colwise().norm().transpose();
+  for (Eigen::Index c = 0; c < p_; ++c) {
+    if (!(colNorm_[c] > 0.0) || !std::isfinite(colNorm_[c])) return false;
+  }
+  // CholeskyQR2 (Fukaya, Nakatsukasa, Yanagisawa and Yamamoto, 2014) on the
+  // column-equilibrated basis: two passes of Q <- Q U^-1 with U^T U = Q^T Q
+  // give Q orthonormal to rounding while the scaled basis is conditioned
+  // better than about 1e7; all of it matrix-matrix products.
+  q.array().rowwise() /= colNorm_.transpose().array();
+  r_.setIdentity();
+  bool ok = true;
+  for (int pass = 0; pass < 2 && ok; ++pass) {
+    gram_.setZero();
+    gram_.selfadjointView<Eigen::Lower>().rankUpdate(q.transpose());
+    llt_.compute(gram_);
+    ok = llt_.info() == Eigen::Success;
+    if (!ok) break;
+    llt_.matrixU().solveInPlace<Eigen::OnTheRight>(q);
+    rTmp_.noalias() = llt_.matrixU() * r_;
+    r_ = rTmp_;
+  }
+  // |R_cc| of the equilibrated basis is the sine of the angle between column
+  // c and the span of the columns before it.
+  for (Eigen::Index c = 0; ok && c < p_; ++c) ok = std::abs(r_(c, c)) > 1e-6;
+  if (ok) {
+    r_.array().rowwise() *= colNorm_.transpose().array();  // Phi = Q R
+    return true;
+  }
+  // Nearly dependent columns (two close poles): Householder QR, the basis
+  // filled again (the passes above overwrote it).
+  fillBasis(theta, false);
+  if (qr_.rows() != q.rows()) qr_ = Eigen::HouseholderQR<Matrix>(q.rows(), p_);
+  qr_.compute(q);
   const auto& qrm = qr_.matrixQR();
   for (Eigen::Index c = 0; c < p_; ++c) {
-    if (!(colNorm_[c] > 0.0) || !(std::abs(qrm(c, c)) > 1e-11 * colNorm_[c])) return false;
+    if (!(std::abs(qrm(c, c)) > 1e-11 * colNorm_[c])) return false;
   }
-  const Eigen::Index nd = 4 * nm_, cols = withDerivatives ? p_ + nd : p_;
-  // Thin Q into the left block of A.
-  auto q = a_.leftCols(p_);
+  r_ = qrm.topLeftCorner(p_, p_).triangularView<Eigen::Upper>();
   q.setIdentity();
   qr_.householderQ().applyThisOnTheLeft(q, hWork_);
+  return true;
+}
+
+bool ModalVarpro::evaluate(const Eigen::Ref<const Vector>& theta, bool withDerivatives) {
+  derivatives_ = false;
+  if (withDerivatives && !withDerivatives_) return false;
+  if (theta.size() != 2 * nm_ || !fillBasis(theta, withDerivatives)) return false;
+  // A = [Phi, E] now; Phi is replaced by Q and E by P E below.
+  if (!orthogonalize(theta)) return false;
+  const Eigen::Index nd = 4 * nm_, cols = withDerivatives ? p_ + nd : p_;
   if (withDerivatives) {
     // P E = E - Q (Q^T E) into the right block of A.
-    qtE_.noalias() = a_.leftCols(p_).transpose() * e_;
-    a_.rightCols(nd) = e_;
+    qtE_.noalias() = a_.leftCols(p_).transpose() * a_.rightCols(nd);
     a_.rightCols(nd).noalias() -= a_.leftCols(p_) * qtE_;
   }
   // [Z; F] = [Q, P E]^T Y: the one pass over the data.
@@ -184,12 +223,15 @@ bool ModalVarpro::evaluate(const Eigen::Ref<const Vector>& theta, bool withDeriv
   const auto z = w_.topRows(p_);
   ssr_ = std::max(0.0, yNorm2_ - z.squaredNorm());
   x_ = z;
-  qrm.topLeftCorner(p_, p_).triangularView<Eigen::Upper>().solveInPlace(x_);
+  r_.triangularView<Eigen::Upper>().solveInPlace(x_);
   if (!x_.allFinite()) return false;
   if (!withDerivatives) return true;
 
   const auto f = w_.bottomRows(nd);  // E^T R
-  epe_.noalias() = a_.rightCols(nd).transpose() * a_.rightCols(nd);
+  // E^T P E = (P E)^T (P E): symmetric, the lower half by a rank update.
+  epe_.setZero();
+  epe_.selfadjointView<Eigen::Lower>().rankUpdate(a_.rightCols(nd).transpose());
+  epe_.triangularView<Eigen::StrictlyUpper>() = epe_.transpose();
   g_.noalias() = x_ * x_.transpose();
   for (int r = 0; r < nm_; ++r) {
     for (int t = 0; t < 2; ++t) {
@@ -209,7 +251,7 @@ bool ModalVarpro::evaluate(const Eigen::Ref<const Vector>& theta, bool withDeriv
   }
   // B_j = T^-T D_j^T R: D_j^T R has rows 2r, 2r+1 = F rows of (r, t); T^T is
   // lower triangular, so rows above 2r stay zero.
-  const auto tUpper = qrm.topLeftCorner(p_, p_).triangularView<Eigen::Upper>();
+  const auto tLower = r_.transpose().triangularView<Eigen::Lower>();  // T^T
   for (int r = 0; r < nm_; ++r) {
     for (int t = 0; t < 2; ++t) {
       const int j = 2 * r + t;
@@ -217,7 +259,7 @@ bool ModalVarpro::evaluate(const Eigen::Ref<const Vector>& theta, bool withDeriv
       bj.setZero();
       bj.row(basisCol(r, 0)) = f.row(derivCol(r, t, 0));
       bj.row(basisCol(r, 1)) = f.row(derivCol(r, t, 1));
-      tUpper.transpose().solveInPlace(bj);
+      tLower.solveInPlace(bj);
     }
   }
   for (int j = 0; j < 2 * nm_; ++j) {
@@ -236,8 +278,9 @@ void ModalVarpro::modelValues(std::vector<ComplexMatrix>& out) const {
   for (Eigen::Index i = 0; i < ni_; ++i) {
     ComplexMatrix& h = out[static_cast<std::size_t>(i)];
     h.resize(nf_, no_);
+    // Phi X = Q Z
     Eigen::Map<Matrix>(reinterpret_cast<double*>(h.data()), 2 * nf_, no_).noalias() =
-        phi_ * x_.middleCols(i * no_, no_);
+        a_.leftCols(p_) * w_.topRows(p_).middleCols(i * no_, no_);
   }
 }
 
@@ -260,6 +303,12 @@ double ModalVarpro::explicitSsr() {
 }
 
 void ModalVarpro::denseResidual(const Eigen::Ref<const Vector>& theta, Vector& r, Matrix* jGp, Matrix* jK) {
+  // Phi and E before evaluate() overwrites them with Q and P E.
+  Matrix phi, e;
+  if (fillBasis(theta, true)) {
+    phi = a_.leftCols(p_);
+    e = a_.rightCols(4 * nm_);
+  }
   const bool ok = evaluate(theta, true);
   const Eigen::Index rows = 2 * nf_;
   r.resize(rows * m_);
@@ -272,23 +321,23 @@ void ModalVarpro::denseResidual(const Eigen::Ref<const Vector>& theta, Vector& r
   for (std::size_t s = 0; s < segments_.size(); ++s)
     for (Eigen::Index i = 0; i < ni_; ++i)
       y.block(segmentRow_[s], i * no_, 2 * segments_[s].count, no_) = ySegment(s, i);
-  const Matrix res = y - phi_ * x_;
+  const Matrix res = y - phi * x_;
   for (Eigen::Index c = 0; c < m_; ++c) r.segment(c * rows, rows) = res.col(c);
   if (!jGp && !jK) return;
   const Matrix q = a_.leftCols(p_);
-  const auto tUpper = qr_.matrixQR().topLeftCorner(p_, p_).triangularView<Eigen::Upper>();
+  const auto tLower = r_.transpose().triangularView<Eigen::Lower>();  // T^T
   if (jGp) jGp->resize(rows * m_, 2 * nm_);
   if (jK) jK->resize(rows * m_, 2 * nm_);
   for (int md = 0; md < nm_; ++md) {
     for (int t = 0; t < 2; ++t) {
       const int j = 2 * md + t;
       Matrix dj = Matrix::Zero(rows, p_);
-      dj.col(basisCol(md, 0)) = e_.col(derivCol(md, t, 0));
-      dj.col(basisCol(md, 1)) = e_.col(derivCol(md, t, 1));
+      dj.col(basisCol(md, 0)) = e.col(derivCol(md, t, 0));
+      dj.col(basisCol(md, 1)) = e.col(derivCol(md, t, 1));
       const Matrix djx = dj * x_;
       const Matrix kauf = -(djx - q * (q.transpose() * djx));
       Matrix bj = dj.transpose() * res;
-      tUpper.transpose().solveInPlace(bj);
+      tLower.solveInPlace(bj);
       const Matrix gp = kauf - q * bj;
       for (Eigen::Index c = 0; c < m_; ++c) {
         if (jK) jK->block(c * rows, j, rows, 1) = kauf.col(c);

@@ -13,7 +13,9 @@
 //   upper residual:  fn, i fn;   lower residual:  fl, i fl;   fn = (i w)^n, fl = (i w)^(n-2)
 // (n = 0, 1, 2 for receptance, mobility, accelerance). For fixed theta
 // X = Phi^+ Y and the projected functional is
-//   SSR(theta) = || P Y ||_F^2,   P = I - Q Q^T,   Phi = Q T (thin QR, T upper p x p).
+//   SSR(theta) = || P Y ||_F^2,   P = I - Q Q^T,   Phi = Q T (thin QR, T upper p x p,
+// by CholeskyQR2 on the column-equilibrated basis, Householder when two
+// columns are nearly dependent).
 // Derivatives: the two columns of mode r depend only on (f_r, zeta_r);
 // E (2 nf x 4 nm) holds d(column)/d(f_r), d(column)/d(zeta_r). With
 // D_j = dPhi/dtheta_j and the residual R = P Y (data minus model):
@@ -39,6 +41,7 @@
 
 #include <vector>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Householder>
 #include <Eigen/QR>
 
@@ -60,12 +63,15 @@ class ModalVarpro {
   // Views `frf` (which must outlive this object; nothing is copied) over the
   // given segments (ascending, not overlapping, DC excluded by the caller).
   // Errors: too few lines for the unknowns per FRF, FRFs zero on the lines.
+  // Without `derivatives` only evaluate(theta, false) is possible (LSFD at
+  // fixed poles) and the workspace is about a third of the size.
   static Result<ModalVarpro> create(const FrfMatrix& frf, std::vector<LineSegment> segments, int modes,
-                                    bool lowerResidual, bool upperResidual);
+                                    bool lowerResidual, bool upperResidual, bool derivatives = true);
 
   // Evaluates at theta (2 nm: f [Hz], zeta per mode). False when a pole is
-  // not admissible (f <= 0, zeta outside (0, 1)) or the basis is rank
-  // deficient (two equal poles): the caller treats it as a failed step.
+  // not admissible (f <= 0, zeta outside (0, 1)), the basis is rank
+  // deficient (two equal poles: the caller treats it as a failed step), or
+  // derivatives are asked of an object created without them.
   bool evaluate(const Eigen::Ref<const Vector>& theta, bool withDerivatives);
 
   // After evaluate(): SSR = ||Y - Phi X||^2 in the data's units squared.
@@ -103,6 +109,8 @@ class ModalVarpro {
  private:
   ModalVarpro() = default;
   bool fillBasis(const Eigen::Ref<const Vector>& theta, bool withDerivatives);
+  // Phi (left block of A) -> Q in place, R into r_. False when rank deficient.
+  bool orthogonalize(const Eigen::Ref<const Vector>& theta);
   // Y segment s of reference i: 2 count x no, a view into frf.h[i].
   Eigen::Map<const Matrix, 0, Eigen::OuterStride<>> ySegment(std::size_t s, Eigen::Index i) const;
 
@@ -115,23 +123,26 @@ class ModalVarpro {
   double yNorm2_ = 0.0;
   Vector omega_;           // rad/s per selected line
   ComplexVector fn_, fl_;  // (i w)^n and (i w)^(n-2) per line
-  Matrix phi_;             // 2 nf x p
-  Matrix a_;               // 2 nf x (p + 4 nm): [Q, P E]
-  Matrix e_;               // 2 nf x 4 nm: E
-  Eigen::HouseholderQR<Matrix> qr_;
-  Vector hWork_;  // Householder workspace
-  Vector rWork_;  // 2 nf: one model column (explicitSsr)
-  Matrix w_;      // (p + 4 nm) x m: [Z; F]
-  Matrix x_;      // p x m
-  Matrix qtE_;    // p x 4 nm
-  Matrix epe_;    // 4 nm x 4 nm: E^T P E
-  Matrix g_;      // p x p: X X^T
-  Matrix b_;      // p x (m 2 nm): B_j side by side
+  Matrix a_;               // 2 nf x (p + 4 nm): [Phi, E] filled, then [Q, P E]
+
+  Matrix r_;                         // p x p: Phi = Q R
+  Matrix rTmp_, gram_;               // p x p
+  Eigen::LLT<Matrix> llt_;           // of the Gram matrix (CholeskyQR2)
+  Eigen::HouseholderQR<Matrix> qr_;  // fallback for nearly dependent columns, sized when first needed
+  Vector hWork_;                     // Householder workspace
+  Vector rWork_;                     // 2 nf: one model column (explicitSsr)
+  Matrix w_;                         // (p + 4 nm) x m: [Z; F]
+  Matrix x_;                         // p x m
+  Matrix qtE_;                       // p x 4 nm
+  Matrix epe_;                       // 4 nm x 4 nm: E^T P E
+  Matrix g_;                         // p x p: X X^T
+  Matrix b_;                         // p x (m 2 nm): B_j side by side
   Vector colNorm_;
   Vector grad_;
   Matrix jtjGp_, jtjK_;
   double ssr_ = 0.0;
-  bool derivatives_ = false;
+  bool derivatives_ = false;     // the last evaluation has them
+  bool withDerivatives_ = true;  // workspace for them
 };
 
 // The modal model of an evaluation: `poles` (one per mode, in theta's order)
