@@ -23,7 +23,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
-#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -34,6 +33,7 @@
 #include "core/modal/identification.h"
 #include "core/modal/modal_model.h"
 #include "core/signal/hit_synthesis.h"
+#include "synthetic_frfs.h"
 
 namespace {
 
@@ -42,20 +42,16 @@ namespace uff = mozzi::core::io::uff;
 namespace md = mozzi::core::modal;
 namespace sg = mozzi::core::signal;
 using mozzi::core::Complex;
-using mozzi::core::ComplexMatrix;
 using mozzi::core::Direction;
 using mozzi::core::Dof;
 using mozzi::core::FrfMatrix;
 using mozzi::core::FrfType;
-using mozzi::core::Matrix;
-using mozzi::core::Vector;
 
-constexpr int kModes = 20;
 double trueFrequency(int r) {
-  return 80.0 + 90.0 * r;
+  return md::bench::syntheticFrequencyHz(r);
 }
 double trueZeta(int r) {
-  return 0.005 + 0.001 * r;
+  return md::bench::syntheticZeta(r);
 }
 
 fs::path dir() {
@@ -63,37 +59,10 @@ fs::path dir() {
   return env ? fs::path(env) : fs::temp_directory_path() / "mozzi_bench_cli";
 }
 
-// Accelerances of the 20-mode system at `no` responses on nf lines from df to nf df.
+// Accelerances of the 20-mode system of synthetic_frfs.h at `no` responses
+// on nf lines from df to nf df.
 FrfMatrix syntheticFrfs(int no, int nf, double df) {
-  std::mt19937 rng(3);
-  std::normal_distribution<double> nd(0.0, 1.0);
-  const int allOutputs = 100;
-  Matrix phi(allOutputs, kModes);
-  for (int o = 0; o < allOutputs; ++o)
-    for (int r = 0; r < kModes; ++r) phi(o, r) = nd(rng);
-  FrfMatrix frf;
-  frf.frequencyHz = Vector::LinSpaced(nf, df, df * nf);
-  for (int o = 0; o < no; ++o) frf.responses.push_back(Dof{o + 1, Direction::Z, false});
-  frf.references = {frf.responses[3]};
-  frf.type = FrfType::Accelerance;
-  std::vector<Complex> poles;
-  for (int r = 0; r < kModes; ++r) poles.push_back(md::poleFromFrequencyDamping(trueFrequency(r), trueZeta(r)));
-  ComplexMatrix h(nf, no);
-  for (int k = 0; k < nf; ++k) {
-    const double w = 2 * M_PI * frf.frequencyHz[k];
-    const Complex iw(0.0, w);
-    for (int o = 0; o < no; ++o) {
-      Complex acc(0.0, 0.0);
-      for (int r = 0; r < kModes; ++r) {
-        const Complex lam = poles[static_cast<std::size_t>(r)];
-        const Complex res = phi(o, r) * phi(3, r) / Complex(0.0, 2.0 * lam.imag());
-        acc += res / (iw - lam) + std::conj(res) / (iw - std::conj(lam));
-      }
-      h(k, o) = -w * w * acc * Complex(1.0 + 0.01 * nd(rng), 0.01 * nd(rng));
-    }
-  }
-  frf.h.push_back(std::move(h));
-  return frf;
+  return md::bench::syntheticFrfs(no, nf, df);
 }
 
 void writeFrfs(const FrfMatrix& frf, const fs::path& path) {
