@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <set>
 #include <string>
 
 #include "core/modal/varpro.h"
@@ -18,30 +20,16 @@ const char* identificationStageName(IdentificationStage stage) {
   return "identification";
 }
 
-Result<IdentificationResult> identifyModes(const FrfMatrix& frf, const IdentificationOptions& options,
-                                           const IdentificationCallback& progress) {
+namespace {
+
+using Report = std::function<bool(IdentificationStage, double)>;
+
+// LSFD for out.selected (participation factors carried over) and, when
+// options.refine, the refinement: the part of the pipeline after the selection.
+Result<void> fitSelection(const FrfMatrix& frf, const IdentificationOptions& options, const Report& report,
+                          IdentificationResult& out) {
   const std::string where = "identification";
-  auto report = [&](IdentificationStage stage, double fraction) {
-    return !progress || progress(IdentificationProgress{stage, fraction});
-  };
-  LsceOptions est = options.estimator;
-  const int lo = est.minOrder, hi = std::max(est.maxOrder, est.minOrder + 1);
-  est.orderProgress = [&](int order) {
-    return report(IdentificationStage::Diagram,
-                  std::clamp(static_cast<double>(order - lo) / static_cast<double>(hi - lo), 0.0, 1.0));
-  };
-  if (!report(IdentificationStage::Diagram, 0.0)) return makeError(ErrorCode::Cancelled, "cancelled", where);
-  auto diagram =
-      options.method == IdentificationMethod::Lsce ? lsceStabilization(frf, est) : plscfStabilization(frf, est);
-  if (!diagram) return diagram.error();
-
-  IdentificationResult out;
-  if (!report(IdentificationStage::Selection, 0.0)) return makeError(ErrorCode::Cancelled, "cancelled", where);
-  auto selected = selectPoles(*diagram, est);
-  if (!selected) return selected.error();
-  out.diagram = std::move(diagram).value();
-  out.selected = std::move(selected).value();
-
+  const LsceOptions& est = options.estimator;
   if (!report(IdentificationStage::Lsfd, 0.0)) return makeError(ErrorCode::Cancelled, "cancelled", where);
   std::vector<Complex> poles;
   for (const auto& s : out.selected) poles.push_back(s.pole);
@@ -67,6 +55,72 @@ Result<IdentificationResult> identifyModes(const FrfMatrix& frf, const Identific
     if (!refined) return refined.error();
     out.refined = std::move(refined).value();
   }
+  return {};
+}
+
+}  // namespace
+
+Result<IdentificationResult> identifyModes(const FrfMatrix& frf, const IdentificationOptions& options,
+                                           const IdentificationCallback& progress) {
+  const std::string where = "identification";
+  auto report = [&](IdentificationStage stage, double fraction) {
+    return !progress || progress(IdentificationProgress{stage, fraction});
+  };
+  LsceOptions est = options.estimator;
+  const int lo = est.minOrder, hi = std::max(est.maxOrder, est.minOrder + 1);
+  est.orderProgress = [&](int order) {
+    return report(IdentificationStage::Diagram,
+                  std::clamp(static_cast<double>(order - lo) / static_cast<double>(hi - lo), 0.0, 1.0));
+  };
+  if (!report(IdentificationStage::Diagram, 0.0)) return makeError(ErrorCode::Cancelled, "cancelled", where);
+  auto diagram =
+      options.method == IdentificationMethod::Lsce ? lsceStabilization(frf, est) : plscfStabilization(frf, est);
+  if (!diagram) return diagram.error();
+
+  IdentificationResult out;
+  if (!report(IdentificationStage::Selection, 0.0)) return makeError(ErrorCode::Cancelled, "cancelled", where);
+  auto selected = selectPoles(*diagram, est);
+  if (!selected) return selected.error();
+  out.diagram = std::move(diagram).value();
+  out.selected = std::move(selected).value();
+
+  if (auto ok = fitSelection(frf, options, report, out); !ok) return ok.error();
+  return out;
+}
+
+Result<IdentificationResult> reselectModes(const FrfMatrix& frf, StabilizationDiagram diagram,
+                                           const std::vector<std::size_t>& diagramPoles,
+                                           const IdentificationOptions& options,
+                                           const IdentificationCallback& progress) {
+  const std::string where = "pole re-selection";
+  if (diagramPoles.empty()) return makeError(ErrorCode::InvalidArgument, "no poles selected", where);
+  std::set<std::size_t> seen;
+  IdentificationResult out;
+  for (const std::size_t i : diagramPoles) {
+    if (i >= diagram.poles.size()) {
+      return makeError(
+          ErrorCode::InvalidArgument,
+          "pole " + std::to_string(i) + " is not in the diagram (" + std::to_string(diagram.poles.size()) + " poles)",
+          where);
+    }
+    if (!seen.insert(i).second) {
+      return makeError(ErrorCode::InvalidArgument, "pole " + std::to_string(i) + " selected twice", where);
+    }
+    const StabilizationPole& p = diagram.poles[i];
+    SelectedPole s;
+    s.pole = p.pole;
+    s.participation = p.participation;
+    s.clusterSize = 1;
+    out.selected.push_back(std::move(s));
+  }
+  // In frequency order, as the automatic selection gives them.
+  std::sort(out.selected.begin(), out.selected.end(),
+            [](const SelectedPole& a, const SelectedPole& b) { return a.pole.imag() < b.pole.imag(); });
+  out.diagram = std::move(diagram);
+  auto report = [&](IdentificationStage stage, double fraction) {
+    return !progress || progress(IdentificationProgress{stage, fraction});
+  };
+  if (auto ok = fitSelection(frf, options, report, out); !ok) return ok.error();
   return out;
 }
 

@@ -4,9 +4,11 @@
 //   band, method, orders -> stabilization diagram (pLSCF or LSCE) ->
 //   automatic pole selection -> LSFD -> refinement (variable projection,
 //   standard errors), with progress and cancel.
-// And the cheap step behind a click in the stabilization diagram: for a pole
-// set the user chose, LSFD residues and the synthesised FRFs
-// (fitSelectedPoles; milliseconds on the ModeLAB beam, docs/performance/modal.md).
+// After a click in the stabilization diagram, without re-running the diagram:
+// fitSelectedPoles (LSFD residues and the synthesised FRFs for a pole set,
+// the preview: 34 ms on the ModeLAB beam) and reselectModes (the same result
+// as identifyModes for a selection of diagram poles, refinement and standard
+// errors included). Figures: docs/performance/commands.md.
 
 #include <functional>
 #include <optional>
@@ -61,6 +63,20 @@ Result<IdentificationResult> identifyModes(const FrfMatrix& frf, const Identific
                                            const IdentificationCallback& progress = {});
 
 // --- Re-selection -------------------------------------------------------------
+
+// The user changed the selection in the diagram of a previous identifyModes:
+// `diagramPoles` are indices into diagram.poles (a click picks the pole
+// nearest the cursor; clusterSize 1, no spreads). The diagram is kept (pass
+// the previous result's, moved); LSFD and, when options.refine, the
+// refinement with its standard errors run for the new selection, in
+// frequency order: the cost of an LSFD plus a refinement, not of the diagram
+// (docs/performance/commands.md). options.estimator gives the band.
+// Errors: no pole, an index outside the diagram or given twice
+// (InvalidArgument), then as identifyModes after the selection.
+Result<IdentificationResult> reselectModes(const FrfMatrix& frf, StabilizationDiagram diagram,
+                                           const std::vector<std::size_t>& diagramPoles,
+                                           const IdentificationOptions& options,
+                                           const IdentificationCallback& progress = {});
 
 struct SelectionFit {
   ModalModel model;            // LSFD residues and residual terms for the chosen poles

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "core/modal/synthetic_system.h"
@@ -114,6 +116,82 @@ TEST(Identification, ReselectionFitMatchesLsfdAndSynthesis) {
   EXPECT_NEAR(fit->relativeError, *err, 1e-9);
   EXPECT_GT(fit->relativeError, 0.05);  // a mode is missing: the fit is visibly worse
   EXPECT_FALSE(fitSelectedPoles(frf, {}, band).ok());
+}
+
+// Re-selection in the diagram of a previous run (the workbench's click then
+// "refine"): picking, for every automatically selected mode, the diagram pole
+// nearest to it at the highest order gives back the same refined modes, to
+// 1% of their standard errors (the refinement converges to the same minimum
+// from another start; its stop leaves < 1e-3 standard errors); the diagram is
+// kept untouched; dropping a pole gives fitSelectedPoles' residues as the
+// LSFD model. Bad selections are errors naming the index.
+TEST(Identification, ReselectionKeepsTheDiagramAndRefinesTheChosenPoles) {
+  const FrfMatrix frf = accelerances(sixModeSystem(), {2}, 0.0, 400.0, 0.1, 0.01, 7);
+  const auto opt = options();
+  auto full = identifyModes(frf, opt);
+  ASSERT_TRUE(full.ok()) << full.error().describe();
+  const auto& diagram = full->diagram;
+  const int top = diagram.orders.back();
+  std::vector<std::size_t> picks;
+  for (const auto& s : full->selected) {
+    std::size_t best = diagram.poles.size();
+    for (std::size_t i = 0; i < diagram.poles.size(); ++i) {
+      if (diagram.poles[i].order != top) continue;
+      if (best == diagram.poles.size() ||
+          std::abs(diagram.poles[i].pole - s.pole) < std::abs(diagram.poles[best].pole - s.pole))
+        best = i;
+    }
+    ASSERT_LT(best, diagram.poles.size());
+    picks.push_back(best);
+  }
+  std::reverse(picks.begin(), picks.end());  // any order: the result is in frequency order
+  std::vector<IdentificationStage> stages;
+  auto again = reselectModes(frf, diagram, picks, opt, [&](const IdentificationProgress& p) {
+    if (stages.empty() || stages.back() != p.stage) stages.push_back(p.stage);
+    return true;
+  });
+  ASSERT_TRUE(again.ok()) << again.error().describe();
+  EXPECT_EQ(stages, (std::vector<IdentificationStage>{IdentificationStage::Lsfd, IdentificationStage::Refinement}));
+  EXPECT_EQ(again->diagram.poles.size(), diagram.poles.size());
+  ASSERT_TRUE(again->refined.has_value());
+  ASSERT_EQ(again->model().modes.size(), full->model().modes.size());
+  for (std::size_t r = 0; r < again->model().modes.size(); ++r) {
+    const Mode& a = again->model().modes[r];
+    const Mode& b = full->model().modes[r];
+    EXPECT_LT(std::abs(a.frequencyHz() - b.frequencyHz()), 0.01 * full->refined->frequencyStdHz[r]) << "mode " << r;
+    EXPECT_LT(std::abs(a.zeta() - b.zeta()), 0.01 * full->refined->zetaStd[r]) << "mode " << r;
+    EXPECT_NEAR(again->refined->frequencyStdHz[r], full->refined->frequencyStdHz[r],
+                0.01 * full->refined->frequencyStdHz[r]);
+  }
+
+  // Drop the 150 Hz mode (4th in frequency), LSFD only.
+  IdentificationOptions lsfdOnly = opt;
+  lsfdOnly.refine = false;
+  std::vector<std::size_t> five = picks;
+  std::sort(five.begin(), five.end(),
+            [&](std::size_t a, std::size_t b) { return diagram.poles[a].pole.imag() < diagram.poles[b].pole.imag(); });
+  five.erase(five.begin() + 3);
+  auto dropped = reselectModes(frf, diagram, five, lsfdOnly);
+  ASSERT_TRUE(dropped.ok()) << dropped.error().describe();
+  EXPECT_FALSE(dropped->refined.has_value());
+  std::vector<Complex> poles;
+  for (std::size_t i : five) poles.push_back(diagram.poles[i].pole);
+  LsfdOptions band;
+  band.bandLowHz = 20.0;
+  band.bandHighHz = 380.0;
+  auto preview = fitSelectedPoles(frf, poles, band);
+  ASSERT_TRUE(preview.ok());
+  ASSERT_EQ(dropped->model().modes.size(), 5u);
+  for (std::size_t r = 0; r < 5; ++r) {
+    const ComplexMatrix& a = dropped->model().modes[r].residue;
+    EXPECT_LT((a - preview->model.modes[r].residue).norm(), 1e-12 * a.norm());
+  }
+
+  EXPECT_EQ(reselectModes(frf, diagram, {}, opt).error().code, ErrorCode::InvalidArgument);
+  auto outside = reselectModes(frf, diagram, {diagram.poles.size()}, opt);
+  ASSERT_FALSE(outside.ok());
+  EXPECT_NE(outside.error().message.find(std::to_string(diagram.poles.size())), std::string::npos);
+  EXPECT_EQ(reselectModes(frf, diagram, {picks[0], picks[0]}, opt).error().code, ErrorCode::InvalidArgument);
 }
 
 }  // namespace
