@@ -206,7 +206,7 @@ BENCHMARK(BM_UffInfo_Hits)->Unit(benchmark::kMillisecond)->UseRealTime();
 // A click in the stabilization diagram of the ModeLAB beam (9 FRFs x 47,872
 // lines, 65-1000 Hz): the automatically selected poles with one pole removed,
 // LSFD + synthesis of every FRF on the band (target: 50 ms).
-void BM_PoleClick_Beam(benchmark::State& state) {
+const FrfMatrix& modelabBeam() {
   static const FrfMatrix beam = [] {
     std::vector<std::string> files;
     std::vector<Dof> hammers;
@@ -220,6 +220,11 @@ void BM_PoleClick_Beam(benchmark::State& state) {
     return mozzi::core::io::readSignalCalcRovingHammer(files, hammers, Dof{4, Direction::X, true}, FrfType::Accelerance)
         .value();
   }();
+  return beam;
+}
+
+void BM_PoleClick_Beam(benchmark::State& state) {
+  const FrfMatrix& beam = modelabBeam();
   md::IdentificationOptions opt;
   opt.estimator.bandLowHz = 65.0;
   opt.estimator.bandHighHz = 1000.0;
@@ -250,6 +255,46 @@ void BM_PoleClick_Beam(benchmark::State& state) {
   state.counters["rel_err"] = err;
 }
 BENCHMARK(BM_PoleClick_Beam)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The full result for the new selection (reselectModes: LSFD + refinement
+// with standard errors, the diagram kept) after the same click: the diagram
+// poles of the highest order nearest to the automatic selection, the last
+// one dropped.
+void BM_Reselect_Beam(benchmark::State& state) {
+  const FrfMatrix& beam = modelabBeam();
+  md::IdentificationOptions opt;
+  opt.estimator.bandLowHz = 65.0;
+  opt.estimator.bandHighHz = 1000.0;
+  opt.estimator.maxOrder = 60;
+  auto id = md::identifyModes(beam, opt);
+  if (!id) {
+    state.SkipWithError(id.error().describe().c_str());
+    return;
+  }
+  const auto& poles = id->diagram.poles;
+  std::vector<std::size_t> picks;
+  for (const auto& s : id->selected) {
+    std::size_t best = poles.size();
+    for (std::size_t i = 0; i < poles.size(); ++i) {
+      if (poles[i].order != id->diagram.orders.back()) continue;
+      if (best == poles.size() || std::abs(poles[i].pole - s.pole) < std::abs(poles[best].pole - s.pole)) best = i;
+    }
+    if (best < poles.size()) picks.push_back(best);
+  }
+  if (picks.size() > 1) picks.pop_back();
+  md::IdentificationResult last;
+  for (auto _ : state) {
+    auto r = md::reselectModes(beam, id->diagram, picks, opt);
+    if (!r) {
+      state.SkipWithError(r.error().describe().c_str());
+      return;
+    }
+    last = std::move(r).value();
+  }
+  state.counters["modes"] = static_cast<double>(last.model().modes.size());
+  state.counters["iterations"] = last.refined ? last.refined->iterations : 0;
+}
+BENCHMARK(BM_Reselect_Beam)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 
