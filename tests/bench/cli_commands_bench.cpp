@@ -28,11 +28,11 @@
 #include <vector>
 
 #include "app/cli/command.h"
-#include "core/io/modelab_ascii.h"
 #include "core/io/uff/uff.h"
 #include "core/modal/identification.h"
 #include "core/modal/modal_model.h"
 #include "core/signal/hit_synthesis.h"
+#include "modelab_beam.h"
 #include "synthetic_frfs.h"
 
 namespace {
@@ -207,20 +207,7 @@ BENCHMARK(BM_UffInfo_Hits)->Unit(benchmark::kMillisecond)->UseRealTime();
 // lines, 65-1000 Hz): the automatically selected poles with one pole removed,
 // LSFD + synthesis of every FRF on the band (target: 50 ms).
 const FrfMatrix& modelabBeam() {
-  static const FrfMatrix beam = [] {
-    std::vector<std::string> files;
-    std::vector<Dof> hammers;
-    for (int i = 1; i <= 9; ++i) {
-      char name[160];
-      std::snprintf(name, sizeof name, "%s/modelab-beam/SignalCalc/ASCII%05d/Hxysv%05d.txt", MOZZI_SHARED_DATA_DIR, i,
-                    i);
-      files.emplace_back(name);
-      hammers.push_back(Dof{i, Direction::X, false});
-    }
-    return mozzi::core::io::readSignalCalcRovingHammer(files, hammers, Dof{4, Direction::X, true}, FrfType::Accelerance)
-        .value();
-  }();
-  return beam;
+  return md::bench::modelabBeam();
 }
 
 void BM_PoleClick_Beam(benchmark::State& state) {

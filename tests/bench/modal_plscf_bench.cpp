@@ -9,28 +9,16 @@
 #include <string>
 #include <vector>
 
-#include "core/io/modelab_ascii.h"
 #include "core/modal/lsce.h"
 #include "core/modal/plscf.h"
+#include "modelab_beam.h"
 #include "synthetic_frfs.h"
 
 namespace mozzi::core::modal {
 namespace {
 
 const FrfMatrix& beam() {
-  static const FrfMatrix frf = [] {
-    std::vector<std::string> files;
-    std::vector<Dof> hammers;
-    for (int i = 1; i <= 9; ++i) {
-      char name[96];
-      std::snprintf(name, sizeof name, "%s/modelab-beam/SignalCalc/ASCII%05d/Hxysv%05d.txt", MOZZI_SHARED_DATA_DIR, i,
-                    i);
-      files.emplace_back(name);
-      hammers.push_back(Dof{i, Direction::X, false});
-    }
-    return io::readSignalCalcRovingHammer(files, hammers, Dof{4, Direction::X, true}, FrfType::Accelerance).value();
-  }();
-  return frf;
+  return bench::modelabBeam();
 }
 
 // 100 responses x `refs` references, 20,000 lines (0.1 .. 2000 Hz), the
