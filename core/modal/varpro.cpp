@@ -205,15 +205,11 @@ bool ModalVarpro::evaluate(const Eigen::Ref<const Vector>& theta, bool withDeriv
   derivatives_ = false;
   if (withDerivatives && !withDerivatives_) return false;
   if (theta.size() != 2 * nm_ || !fillBasis(theta, withDerivatives)) return false;
-  // A = [Phi, E] now; Phi is replaced by Q and E by P E below.
+  // A = [Phi, E] now; Phi is replaced by Q below (E stays).
   if (!orthogonalize(theta)) return false;
   const Eigen::Index nd = 4 * nm_, cols = withDerivatives ? p_ + nd : p_;
-  if (withDerivatives) {
-    // P E = E - Q (Q^T E) into the right block of A.
-    qtE_.noalias() = a_.leftCols(p_).transpose() * a_.rightCols(nd);
-    a_.rightCols(nd).noalias() -= a_.leftCols(p_) * qtE_;
-  }
-  // [Z; F] = [Q, P E]^T Y: the one pass over the data.
+  if (withDerivatives) qtE_.noalias() = a_.leftCols(p_).transpose() * a_.rightCols(nd);  // Q^T E
+  // [Z; E^T Y] = [Q, E]^T Y: the one pass over the data.
   auto w = w_.topRows(cols);
   w.setZero();
   for (std::size_t s = 0; s < segments_.size(); ++s) {
@@ -227,10 +223,14 @@ bool ModalVarpro::evaluate(const Eigen::Ref<const Vector>& theta, bool withDeriv
   if (!x_.allFinite()) return false;
   if (!withDerivatives) return true;
 
-  const auto f = w_.bottomRows(nd);  // E^T R
-  // E^T P E = (P E)^T (P E): symmetric, the lower half by a rank update.
+  // F = E^T R = E^T (Y - Q Z) = E^T Y - (Q^T E)^T Z, and
+  // E^T P E = E^T E - (Q^T E)^T (Q^T E): P E is never formed (it cost one
+  // more product of the size of Q^T E). Both symmetric parts by rank updates.
+  auto f = w_.bottomRows(nd);
+  f.noalias() -= qtE_.transpose() * z;
   epe_.setZero();
   epe_.selfadjointView<Eigen::Lower>().rankUpdate(a_.rightCols(nd).transpose());
+  epe_.selfadjointView<Eigen::Lower>().rankUpdate(qtE_.transpose(), -1.0);
   epe_.triangularView<Eigen::StrictlyUpper>() = epe_.transpose();
   g_.noalias() = x_ * x_.transpose();
   for (int r = 0; r < nm_; ++r) {
@@ -303,7 +303,7 @@ double ModalVarpro::explicitSsr() {
 }
 
 void ModalVarpro::denseResidual(const Eigen::Ref<const Vector>& theta, Vector& r, Matrix* jGp, Matrix* jK) {
-  // Phi and E before evaluate() overwrites them with Q and P E.
+  // Phi and E before evaluate() overwrites Phi with Q.
   Matrix phi, e;
   if (fillBasis(theta, true)) {
     phi = a_.leftCols(p_);

@@ -26,9 +26,10 @@
 //   J_K^T J_K     = sum_{c,c'} (E^T P E)_{(j,c),(l,c')} (X X^T)_{(j,c),(l,c')}
 //   J_GP^T J_GP   = J_K^T J_K + <B_j, B_l>,   B_j = T^-T D_j^T R   (p x m)
 // None of them needs J itself (2 nf m x 2 nm: 290 MB for 100 FRFs x 9,000
-// lines and 10 modes): one product [Q, P E]^T Y over the data per evaluation
-// gives Z = Q^T Y and F = E^T P Y = E^T R; everything else is p x m or
-// (4 nm)^2 sized. SSR = ||Y||^2 - ||Z||^2.
+// lines and 10 modes): one product [Q, E]^T Y over the data per evaluation
+// gives Z = Q^T Y and E^T Y, hence F = E^T R = E^T Y - (Q^T E)^T Z; with
+// E^T P E = E^T E - (Q^T E)^T (Q^T E) P E is never formed. Everything else is
+// p x m or (4 nm)^2 sized. SSR = ||Y||^2 - ||Z||^2.
 //
 // J_K^T J_K is the Schur complement of the full problem's Gauss-Newton matrix
 // (nonlinear and linear parameters together) on the nonlinear block, so
@@ -123,7 +124,7 @@ class ModalVarpro {
   double yNorm2_ = 0.0;
   Vector omega_;           // rad/s per selected line
   ComplexVector fn_, fl_;  // (i w)^n and (i w)^(n-2) per line
-  Matrix a_;               // 2 nf x (p + 4 nm): [Phi, E] filled, then [Q, P E]
+  Matrix a_;               // 2 nf x (p + 4 nm): [Phi, E] filled, then [Q, E]
 
   Matrix r_;                         // p x p: Phi = Q R
   Matrix rTmp_, gram_;               // p x p
