@@ -17,6 +17,7 @@
 // Counters: for identify, the largest relative frequency and damping errors
 // of the identified modes against the generating ones (band 50-950 Hz).
 #include <benchmark/benchmark.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -121,7 +122,8 @@ std::string file(const std::string& name) {
   const fs::path p = dir() / name;
   if (fs::exists(p)) return p.string();
   fs::create_directories(dir());
-  const fs::path tmp = p.string() + ".part";
+  // A name of its own: two benchmark runs (e.g. ctest -j) may write at once.
+  const fs::path tmp = p.string() + "." + std::to_string(::getpid()) + ".part";
   if (name == "identify_100x20000.uff") {
     writeFrfs(syntheticFrfs(100, 20000, 0.1), tmp);
   } else if (name == "identify_10x5000.uff") {
