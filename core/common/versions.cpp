@@ -2,7 +2,7 @@
 
 #include <ceres/version.h>
 #include <fftw3.h>
-#include <matio.h>
+#include <matio_pubconf.h>  // the version built against: libmatio itself is loaded only to read a MAT file
 #include <sqlite3.h>
 #include <zlib.h>
 #include <Eigen/Core>
@@ -10,8 +10,6 @@
 namespace mozzi::core {
 
 LibraryVersions coreLibraryVersions() {
-  int matMajor = 0, matMinor = 0, matRelease = 0;
-  Mat_GetLibraryVersion(&matMajor, &matMinor, &matRelease);
   std::string fftw = fftw_version;  // "fftw-3.3.10-sse2-avx"
   if (fftw.rfind("fftw-", 0) == 0) fftw = fftw.substr(5);
   return {
@@ -21,7 +19,7 @@ LibraryVersions coreLibraryVersions() {
       {"FFTW", fftw},
       {"SQLite", sqlite3_libversion()},
       {"zlib", zlibVersion()},
-      {"matio", std::to_string(matMajor) + "." + std::to_string(matMinor) + "." + std::to_string(matRelease)},
+      {"matio", MATIO_VERSION_STR},
   };
 }
 

@@ -202,6 +202,7 @@ Result<StabilizationDiagram> lsceStabilization(const FrfMatrix& frf, const LsceO
   std::vector<Matrix> numer(static_cast<std::size_t>(no));  // Prony numerators n_k (p x ni) per output
   for (const int p : orders) {
     const std::string at = where + ", order " + std::to_string(p);
+    if (opt.orderProgress && !opt.orderProgress(p)) return makeError(ErrorCode::Cancelled, "cancelled", at);
     const Eigen::Index pb = p * ni;
     theta = lmat.topLeftCorner(pb, pb).transpose().triangularView<Eigen::Upper>().solve(c.topRows(pb));
     if (!theta.allFinite()) return makeError(ErrorCode::NumericalFailure, "AR coefficients are not finite", at);

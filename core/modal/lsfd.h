@@ -6,7 +6,8 @@
 //                + L (i omega)^(n-2)
 // (modal_model.h convention: U upper residual, -L/omega^2 lower residual in
 // receptance). All FRFs share the poles, so one QR of the basis serves every
-// response and reference column.
+// response and reference column (computed by the variable-projection code of
+// varpro.h at fixed poles).
 
 #include <vector>
 

@@ -16,6 +16,8 @@
 // Cholesky factor R = L L^T: with W_o = L^-1 S_o (nested), the order-m matrix
 // is T_m - sum_{j <= m} sum_o w_oj^T w_oj (leading block), a running sum.
 
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "core/common/eigen_types.h"
@@ -52,6 +54,9 @@ struct PlscfOptions {
   int minClusterSize = 5;
   // Poles join a cluster within this relative frequency distance of its median.
   double clusterFrequencyTolerance = 0.005;
+  // Called before each order of the diagram is solved (pLSCF and LSCE);
+  // returning false stops with ErrorCode::Cancelled. Empty: not called.
+  std::function<bool(int order)> orderProgress;
 };
 
 enum class PoleStatus {

@@ -1,63 +1,58 @@
 #include "core/modal/refine.h"
 
-#include <ceres/ceres.h>
-
 #include <Eigen/Dense>
-#include <array>
+#include <algorithm>
 #include <cmath>
-#include <memory>
 #include <string>
 
-#include "core/modal/lsfd.h"
+#include "core/modal/varpro.h"
 
 namespace mozzi::core::modal {
 
 namespace {
-constexpr double kTwoPi = 2.0 * M_PI;
 
-struct Problem {
-  const FrfMatrix* frf = nullptr;
-  LsfdOptions lsfd;
-  Eigen::Index k0 = 0, nf = 0;
-  double scale = 1.0;  // data RMS
-  int modes = 0;
-};
-
-std::vector<Complex> polesFrom(double const* const* p, int modes) {
-  std::vector<Complex> out;
-  for (int r = 0; r < modes; ++r) out.push_back(poleFromFrequencyDamping(p[r][0], p[r][1]));
+// Lines of the band the fit uses (refine.h: the lines carrying the modes when
+// the band holds more than maxLines).
+std::vector<LineSegment> fitLines(const FrfMatrix& frf, Eigen::Index k0, Eigen::Index nf, const ModalModel& initial,
+                                  Eigen::Index maxLines) {
+  if (maxLines <= 0 || nf <= maxLines) return {LineSegment{k0, nf}};
+  constexpr double kHalfWidths = 8.0;  // > 99.9% of the information on (f, zeta) of an isolated mode
+  constexpr Eigen::Index kMinHalfLines = 10, kBlock = 16;
+  std::vector<char> keep(static_cast<std::size_t>(nf), 0);
+  const double* f = frf.frequencyHz.data() + k0;
+  for (const Mode& m : initial.modes) {
+    const double fr = m.frequencyHz(), half = kHalfWidths * m.zeta() * fr;
+    const Eigen::Index c = std::lower_bound(f, f + nf, fr) - f;
+    const Eigen::Index lo = std::min(std::lower_bound(f, f + nf, fr - half) - f, c - kMinHalfLines);
+    const Eigen::Index hi = std::max(std::upper_bound(f, f + nf, fr + half) - f, c + kMinHalfLines);
+    for (Eigen::Index k = std::max<Eigen::Index>(lo, 0); k < std::min(hi, nf); ++k)
+      keep[static_cast<std::size_t>(k)] = 1;
+  }
+  const Eigen::Index marked = std::count(keep.begin(), keep.end(), 1);
+  const Eigen::Index rest = nf - marked, budget = maxLines - marked;
+  if (budget >= rest) return {LineSegment{k0, nf}};
+  if (budget >= kBlock) {
+    // blocks of kBlock lines every `stride` lines over the whole band
+    const double stride = static_cast<double>(kBlock) * static_cast<double>(rest) / static_cast<double>(budget);
+    for (double s = 0.5 * (stride - kBlock); s < static_cast<double>(nf); s += stride) {
+      const Eigen::Index b = std::max<Eigen::Index>(0, static_cast<Eigen::Index>(s));
+      for (Eigen::Index k = b; k < std::min(b + kBlock, nf); ++k) keep[static_cast<std::size_t>(k)] = 1;
+    }
+  }
+  std::vector<LineSegment> out;
+  for (Eigen::Index k = 0; k < nf;) {
+    if (!keep[static_cast<std::size_t>(k)]) {
+      ++k;
+      continue;
+    }
+    Eigen::Index e = k;
+    while (e < nf && keep[static_cast<std::size_t>(e)]) ++e;
+    out.push_back(LineSegment{k0 + k, e - k});
+    k = e;
+  }
   return out;
 }
 
-// Projected residual: data minus the LSFD fit for these poles.
-bool projectedResidual(const Problem& pb, const std::vector<Complex>& poles, double* res, ModalModel* fitOut) {
-  for (const auto& l : poles) {
-    if (!(l.real() < 0.0) || !(l.imag() > 0.0)) return false;
-  }
-  auto fit = lsfd(*pb.frf, poles, pb.lsfd);
-  if (!fit) return false;
-  const FrfMatrix& frf = *pb.frf;
-  Eigen::Index idx = 0;
-  for (Eigen::Index i = 0; i < frf.referenceCount(); ++i) {
-    for (Eigen::Index o = 0; o < frf.responseCount(); ++o) {
-      for (Eigen::Index k = pb.k0; k < pb.k0 + pb.nf; ++k) {
-        const Complex d =
-            frf.h[static_cast<std::size_t>(i)](k, o) - synthesize(*fit, o, i, kTwoPi * frf.frequencyHz[k], frf.type);
-        res[idx++] = d.real() / pb.scale;
-        res[idx++] = d.imag() / pb.scale;
-      }
-    }
-  }
-  if (fitOut) *fitOut = std::move(fit).value();
-  return true;
-}
-
-struct Functor {
-  const Problem* pb;
-  bool operator()(double const* const* p, double* res) const {
-    return projectedResidual(*pb, polesFrom(p, pb->modes), res, nullptr);
-  }
-};
 }  // namespace
 
 Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& initial, const RefineOptions& opt) {
@@ -65,99 +60,140 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
   if (auto ok = frf.validate(); !ok) return ok.error();
   if (auto ok = initial.validate(); !ok) return ok.error();
   if (initial.modes.empty()) return makeError(ErrorCode::InvalidArgument, "no modes to refine", where);
-  Problem pb;
-  pb.frf = &frf;
-  pb.lsfd = LsfdOptions{opt.bandLowHz, opt.bandHighHz, opt.lowerResidual, opt.upperResidual};
-  while (pb.k0 < frf.lineCount() && (frf.frequencyHz[pb.k0] < opt.bandLowHz || frf.frequencyHz[pb.k0] == 0.0)) ++pb.k0;
-  Eigen::Index k = pb.k0;
+  Eigen::Index k0 = 0;
+  while (k0 < frf.lineCount() && (frf.frequencyHz[k0] < opt.bandLowHz || frf.frequencyHz[k0] == 0.0)) ++k0;
+  Eigen::Index k = k0;
   while (k < frf.lineCount() && frf.frequencyHz[k] <= opt.bandHighHz) ++k;
-  pb.nf = k - pb.k0;
-  pb.modes = static_cast<int>(initial.modes.size());
-  const Eigen::Index nres = 2 * pb.nf * frf.responseCount() * frf.referenceCount();
-  const Eigen::Index nlin = frf.responseCount() * frf.referenceCount() *
-                            (2 * pb.modes + (opt.lowerResidual ? 2 : 0) + (opt.upperResidual ? 2 : 0));
-  const Eigen::Index npar = 2 * pb.modes + nlin;
-  if (nres <= npar) {
+  const Eigen::Index nf = k - k0;
+  const int nm = static_cast<int>(initial.modes.size());
+  const Eigen::Index m = frf.responseCount() * frf.referenceCount();
+  const Eigen::Index p = 2 * nm + (opt.lowerResidual ? 2 : 0) + (opt.upperResidual ? 2 : 0);
+  if (2 * nf * m <= 2 * nm + p * m) {
     return makeError(
         ErrorCode::InvalidArgument,
-        "band holds " + std::to_string(pb.nf) + " lines, too few for " + std::to_string(npar) + " parameters",
+        "band holds " + std::to_string(nf) + " lines, too few for " + std::to_string(2 * nm + p * m) + " parameters",
         where + ", band");
   }
-  double ss = 0.0;
-  for (const auto& h : frf.h) ss += h.middleRows(pb.k0, pb.nf).squaredNorm();
-  pb.scale = std::sqrt(ss / static_cast<double>(nres / 2));
-  if (!(pb.scale > 0.0)) return makeError(ErrorCode::InvalidArgument, "FRFs are zero in the band", where);
+  auto segments = fitLines(frf, k0, nf, initial, opt.maxLines);
+  auto vp = ModalVarpro::create(frf, std::move(segments), nm, opt.lowerResidual, opt.upperResidual);
+  if (!vp) return makeError(vp.error().code, vp.error().message, where + ", band");
 
-  std::vector<std::array<double, 2>> params(static_cast<std::size_t>(pb.modes));
-  std::vector<Complex> poles0;
-  for (int r = 0; r < pb.modes; ++r) {
-    params[static_cast<std::size_t>(r)] = {initial.modes[static_cast<std::size_t>(r)].frequencyHz(),
-                                           initial.modes[static_cast<std::size_t>(r)].zeta()};
-    poles0.push_back(initial.modes[static_cast<std::size_t>(r)].pole);
+  const Eigen::Index np = 2 * nm;
+  Vector theta(np);
+  for (int r = 0; r < nm; ++r) {
+    theta[2 * r] = initial.modes[static_cast<std::size_t>(r)].frequencyHz();
+    theta[2 * r + 1] = initial.modes[static_cast<std::size_t>(r)].zeta();
   }
-  Vector r0(nres);
-  if (!projectedResidual(pb, poles0, r0.data(), nullptr)) {
-    return makeError(ErrorCode::NumericalFailure, "LSFD fails for the initial poles", where);
-  }
-
-  auto* cost = new ceres::DynamicNumericDiffCostFunction<Functor, ceres::CENTRAL>(new Functor{&pb});
-  for (int r = 0; r < pb.modes; ++r) cost->AddParameterBlock(2);
-  cost->SetNumResiduals(static_cast<int>(nres));
-  ceres::Problem problem;
-  std::vector<double*> blocks;
-  for (auto& p : params) blocks.push_back(p.data());
-  problem.AddResidualBlock(cost, nullptr, blocks);
-  for (auto* b : blocks) {
-    problem.SetParameterLowerBound(b, 0, 1e-6);
-    problem.SetParameterLowerBound(b, 1, 1e-7);
-    problem.SetParameterUpperBound(b, 1, 0.99);
-  }
-  ceres::Solver::Options so;
-  so.linear_solver_type = ceres::DENSE_QR;
-  so.max_num_iterations = opt.maxIterations;
-  so.logging_type = ceres::SILENT;
-  so.function_tolerance = 1e-12;
-  so.parameter_tolerance = 1e-12;
-  ceres::Solver::Summary summary;
-  ceres::Solve(so, &problem, &summary);
-  if (!summary.IsSolutionUsable()) {
-    return makeError(ErrorCode::NumericalFailure, "Ceres did not converge: " + summary.message, where);
-  }
-
   RefineResult out;
-  out.iterations = static_cast<int>(summary.iterations.size());
-  out.initialRelativeError = r0.norm() / std::sqrt(static_cast<double>(nres / 2));
-  std::vector<Complex> poles;
-  for (const auto& p : params) poles.push_back(poleFromFrequencyDamping(p[0], p[1]));
-  Vector rf(nres);
-  if (!projectedResidual(pb, poles, rf.data(), &out.model)) {
-    return makeError(ErrorCode::NumericalFailure, "LSFD fails for the refined poles", where);
+  out.bandLines = nf;
+  out.fittedLines = vp->lineCount();
+  if (!vp->evaluate(theta, true)) {
+    return makeError(ErrorCode::NumericalFailure, "LSFD fails for the initial poles (rank-deficient basis)", where);
   }
-  out.finalRelativeError = rf.norm() / std::sqrt(static_cast<double>(nres / 2));
-  for (std::size_t r = 0; r < out.model.modes.size(); ++r) {
-    out.model.modes[r].participation = initial.modes[r].participation;
+  ++out.evaluations;
+  const double yn2 = vp->dataNorm2();
+  double ssr = vp->ssr();
+  out.initialRelativeError = std::sqrt(ssr / yn2);
+  Matrix h = vp->gaussNewton();
+  Vector g = vp->gradient();
+  bool atTheta = true;  // vp holds the evaluation at theta
+
+  // Levenberg-Marquardt with Marquardt's diagonal scaling and Nielsen's damping update.
+  double mu = 1e-3, nu = 2.0;
+  Matrix lhs(np, np);
+  Vector delta(np), trial(np);
+  Eigen::LDLT<Matrix> ldlt(np);
+  // SSR comes from ||Y||^2 - ||Q^T Y||^2: differences below this are rounding.
+  const double ssrResolution = 1e-13 * yn2;
+  // Converged when the full Gauss-Newton step would lower SSR by less than
+  // 1e-6 s^2 (s^2 = SSR / (N - P)): the step is then below 1e-3 standard
+  // errors in every direction (delta^T J^T J delta = 2 x the decrease).
+  const double dof = static_cast<double>(2 * vp->lineCount() * m - (np + p * m));
+  Vector gnStep(np);
+  for (int it = 0; it < opt.maxIterations; ++it) {
+    if (opt.progress && !opt.progress(it, std::sqrt(ssr / yn2))) {
+      return makeError(ErrorCode::Cancelled, "refinement cancelled", where);
+    }
+    ldlt.compute(h);
+    if (ldlt.info() == Eigen::Success) {
+      gnStep = ldlt.solve(-g);
+      if (gnStep.allFinite() && -g.dot(gnStep) <= 1e-6 * ssr / dof) break;  // -g.step = decrease of SSR
+    }
+    ++out.iterations;
+    lhs = h;
+    lhs.diagonal() += mu * h.diagonal().cwiseMax(1e-300);
+    ldlt.compute(lhs);
+    delta = ldlt.solve(-g);
+    if (ldlt.info() != Eigen::Success || !delta.allFinite()) {
+      mu *= nu;
+      nu *= 2.0;
+      continue;
+    }
+    trial = theta + delta;
+    for (int r = 0; r < nm; ++r) {  // stay admissible: f > 0, 0 < zeta < 1
+      trial[2 * r] = std::max(trial[2 * r], 0.5 * theta[2 * r]);
+      trial[2 * r + 1] = std::clamp(trial[2 * r + 1], std::max(1e-7, 0.1 * theta[2 * r + 1]), 0.99);
+    }
+    delta = trial - theta;
+    bool small = true;
+    for (int r = 0; r < nm; ++r) {
+      small = small && std::abs(delta[2 * r]) <= 1e-11 * theta[2 * r] &&
+              std::abs(delta[2 * r + 1]) <= 1e-9 * theta[2 * r + 1];
+    }
+    if (small) break;
+    const double predicted = -g.dot(delta) - 0.5 * delta.dot(h * delta);  // of SSR / 2
+    ++out.evaluations;
+    atTheta = false;
+    if (!vp->evaluate(trial, true)) {
+      mu *= nu;
+      nu *= 2.0;
+      continue;
+    }
+    const double actual = 0.5 * (ssr - vp->ssr());
+    const double rho = predicted > 0.0 ? actual / predicted : -1.0;
+    if (rho > 0.0) {
+      theta = trial;
+      h = vp->gaussNewton();
+      g = vp->gradient();
+      atTheta = true;
+      const double old = ssr;
+      ssr = vp->ssr();
+      mu *= std::max(1.0 / 3.0, 1.0 - std::pow(2.0 * rho - 1.0, 3));
+      nu = 2.0;
+      if (old - ssr <= std::max(1e-12 * old, ssrResolution)) break;
+    } else {
+      if (predicted <= ssrResolution) break;  // no decrease left to see
+      mu *= nu;
+      nu *= 2.0;
+    }
+  }
+  if (!atTheta) {
+    if (!vp->evaluate(theta, true)) return makeError(ErrorCode::NumericalFailure, "LSFD fails at the solution", where);
+    ++out.evaluations;
   }
 
-  // Final Jacobian of the projected residual (Ceres' own evaluation).
-  ceres::CRSMatrix crs;
-  double finalCost = 0.0;
-  problem.Evaluate(ceres::Problem::EvaluateOptions(), &finalCost, nullptr, nullptr, &crs);
-  Matrix jac = Matrix::Zero(crs.num_rows, crs.num_cols);
-  for (int row = 0; row < crs.num_rows; ++row)
-    for (int q = crs.rows[static_cast<std::size_t>(row)]; q < crs.rows[static_cast<std::size_t>(row) + 1]; ++q)
-      jac(row, crs.cols[static_cast<std::size_t>(q)]) = crs.values[static_cast<std::size_t>(q)];
-  const Matrix jtj = jac.transpose() * jac;
-  Eigen::LDLT<Matrix> ldlt(jtj);
-  if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().minCoeff() > 0.0)) {
+  // Model: poles from theta, residues and residual terms from X.
+  std::vector<Complex> poles;
+  for (int r = 0; r < nm; ++r) poles.push_back(poleFromFrequencyDamping(theta[2 * r], theta[2 * r + 1]));
+  out.model = modalModelFromLinear(*vp, frf, poles);
+  for (int r = 0; r < nm; ++r) {
+    out.model.modes[static_cast<std::size_t>(r)].participation =
+        initial.modes[static_cast<std::size_t>(r)].participation;
+  }
+
+  const double finalSsr = vp->explicitSsr();
+  out.finalRelativeError = std::sqrt(finalSsr / yn2);
+  const Matrix& jtj = vp->kaufman();
+  Eigen::LDLT<Matrix> cov(jtj);
+  if (cov.info() != Eigen::Success || !(cov.vectorD().minCoeff() > 0.0)) {
     return makeError(ErrorCode::NumericalFailure, "J^T J is singular: a frequency or damping is not identifiable",
                      where);
   }
-  const Matrix cov = ldlt.solve(Matrix::Identity(jtj.rows(), jtj.cols()));
-  // s^2 in the scaled units: SSR / (N - P); the parameters are in Hz and zeta directly.
-  const double s2 = rf.squaredNorm() / static_cast<double>(nres - npar);
-  for (int r = 0; r < pb.modes; ++r) {
-    out.frequencyStdHz.push_back(std::sqrt(s2 * cov(2 * r, 2 * r)));
-    out.zetaStd.push_back(std::sqrt(s2 * cov(2 * r + 1, 2 * r + 1)));
+  const Matrix inv = cov.solve(Matrix::Identity(np, np));
+  const double s2 = finalSsr / dof;
+  for (int r = 0; r < nm; ++r) {
+    out.frequencyStdHz.push_back(std::sqrt(s2 * inv(2 * r, 2 * r)));
+    out.zetaStd.push_back(std::sqrt(s2 * inv(2 * r + 1, 2 * r + 1)));
   }
   return out;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 #include "core/signal/fft.h"
@@ -63,7 +64,8 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
     ChannelQuality cq;
     cq.name = record.channels[static_cast<std::size_t>(c)].name;
     cq.dof = record.channels[static_cast<std::size_t>(c)].dof;
-    cq.peak = x.cwiseAbs().maxCoeff();
+    const double hi = x.maxCoeff(), lo = x.minCoeff();
+    cq.peak = std::max(std::abs(hi), std::abs(lo));  // max |x|
     if (quiet >= 2) {
       const auto head = x.head(quiet);
       const double mean = head.mean();
@@ -76,15 +78,22 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
     }
     const double fullScale = record.channels[static_cast<std::size_t>(c)].fullScale;
     if (fullScale > 0.0) {
-      for (Eigen::Index i = 0; i < n; ++i) {
-        if (std::abs(x[i]) >= options.fullScaleMargin * fullScale) ++cq.clippedSamples;
-      }
+      cq.clippedSamples = (x.array().abs() >= options.fullScaleMargin * fullScale).count();
     } else {
       // flat tops: runs of >= clipRunLength samples pinned at a significant extreme
-      const double hi = x.maxCoeff(), lo = x.minCoeff();
       const double tol = 1e-9 * cq.peak;
+      // No run can be longer than the samples at the extreme: one vectorised
+      // count of them first (usually the peak alone), the run scan only when
+      // there are enough.
+      const double* xp = x.data();
+      std::int64_t nearHi = 0, nearLo = 0;
+      for (Eigen::Index i = 0; i < n; ++i) {
+        nearHi += std::abs(xp[i] - hi) <= tol;
+        nearLo += std::abs(xp[i] - lo) <= tol;
+      }
       for (const double extreme : {hi, lo}) {
         if (std::abs(extreme) < 0.5 * cq.peak) continue;
+        if ((extreme == hi ? nearHi : nearLo) < options.clipRunLength) continue;
         Eigen::Index run = 0;
         for (Eigen::Index i = 0; i <= n; ++i) {
           if (i < n && std::abs(x[i] - extreme) <= tol) {
@@ -177,12 +186,12 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
   // over [0, end + max(width, 4 samples)], zero elsewhere, full record length
   const Eigen::Index guard = std::max<Eigen::Index>(4, static_cast<Eigen::Index>(std::ceil(q.pulseWidthS * fs)));
   const Eigen::Index cut = std::min<Eigen::Index>(n, static_cast<Eigen::Index>(std::ceil(end)) + guard + 1);
-  Vector pulseOnly = Vector::Zero(n);
-  pulseOnly.head(cut) = f.head(cut);
-  if (second >= 0 && second < cut) pulseOnly.segment(b + 1, cut - b - 1).setZero();
+  // f becomes the pulse alone, in place (it is not read after this).
+  f.tail(n - cut).setZero();
+  if (second >= 0 && second < cut) f.segment(b + 1, cut - b - 1).setZero();
   auto fft = RealFft::forLength(n);
   if (!fft) return fft.error();
-  auto spec = (*fft)->transform(pulseOnly);
+  auto spec = (*fft)->transform(f);
   if (!spec) return spec.error();
   const Vector energy = spec->cwiseAbs2();  // |F(f)|^2
   const double df = fs / static_cast<double>(n);

@@ -6,68 +6,25 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
-#include <random>
 #include <string>
 #include <vector>
 
-#include "core/io/modelab_ascii.h"
 #include "core/modal/lsce.h"
 #include "core/modal/plscf.h"
+#include "modelab_beam.h"
+#include "synthetic_frfs.h"
 
 namespace mozzi::core::modal {
 namespace {
 
 const FrfMatrix& beam() {
-  static const FrfMatrix frf = [] {
-    std::vector<std::string> files;
-    std::vector<Dof> hammers;
-    for (int i = 1; i <= 9; ++i) {
-      char name[96];
-      std::snprintf(name, sizeof name, "%s/modelab-beam/SignalCalc/ASCII%05d/Hxysv%05d.txt", MOZZI_SHARED_DATA_DIR, i,
-                    i);
-      files.emplace_back(name);
-      hammers.push_back(Dof{i, Direction::X, false});
-    }
-    return io::readSignalCalcRovingHammer(files, hammers, Dof{4, Direction::X, true}, FrfType::Accelerance).value();
-  }();
-  return frf;
+  return bench::modelabBeam();
 }
 
-// 100 responses x `refs` references, 20,000 lines (0 .. 2000 Hz at 0.1 Hz),
-// 20 modes with random real shapes, 1% noise.
+// 100 responses x `refs` references, 20,000 lines (0.1 .. 2000 Hz), the
+// 20-mode set of synthetic_frfs.h.
 FrfMatrix synthetic(int refs) {
-  std::mt19937 rng(3);
-  std::normal_distribution<double> nd(0.0, 1.0);
-  const int no = 100, nm = 20, nf = 20000;
-  Matrix phi(no, nm);
-  for (int o = 0; o < no; ++o)
-    for (int r = 0; r < nm; ++r) phi(o, r) = nd(rng);
-  FrfMatrix frf;
-  frf.frequencyHz = Vector::LinSpaced(nf, 0.1, 0.1 * nf);
-  for (int o = 0; o < no; ++o) frf.responses.push_back(Dof{o + 1, Direction::Z, false});
-  for (int i = 0; i < refs; ++i) frf.references.push_back(frf.responses[static_cast<std::size_t>(17 * i + 3)]);
-  frf.type = FrfType::Accelerance;
-  std::vector<Complex> poles;
-  for (int r = 0; r < nm; ++r) poles.push_back(poleFromFrequencyDamping(80.0 + 90.0 * r, 0.005 + 0.001 * r));
-  for (int i = 0; i < refs; ++i) {
-    const int ref = 17 * i + 3;
-    ComplexMatrix h(nf, no);
-    for (int k = 0; k < nf; ++k) {
-      const double w = 2 * M_PI * frf.frequencyHz[k];
-      const Complex iw(0.0, w);
-      for (int o = 0; o < no; ++o) {
-        Complex acc(0.0, 0.0);
-        for (int r = 0; r < nm; ++r) {
-          const Complex res = phi(o, r) * phi(ref, r) / Complex(0.0, 2.0 * poles[static_cast<std::size_t>(r)].imag());
-          acc += res / (iw - poles[static_cast<std::size_t>(r)]) +
-                 std::conj(res) / (iw - std::conj(poles[static_cast<std::size_t>(r)]));
-        }
-        h(k, o) = -w * w * acc * Complex(1.0 + 0.01 * nd(rng), 0.01 * nd(rng));
-      }
-    }
-    frf.h.push_back(std::move(h));
-  }
-  return frf;
+  return bench::syntheticFrfs(100, 20000, 0.1, refs);
 }
 
 // Times `estimator(frf, options)` (pLSCF or LSCE stabilization) over orders 2..range(0).

@@ -8,8 +8,8 @@
 // Documented in docs/cli/frf.md.
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
@@ -17,6 +17,7 @@
 #include "app/cli/command.h"
 #include "app/cli/output.h"
 #include "core/io/uff/uff.h"
+#include "core/io/uff_hits.h"
 #include "core/signal/frf_estimator.h"
 #include "core/signal/hit_quality.h"
 
@@ -30,115 +31,13 @@ constexpr const char* kUsage =
     "Usage: mozzi-cli frf HITS.uff --estimator H1|H2|Hv [--force-window S] [--exp-window TAU]\n"
     "                 [--reference NODE:DIR[,NODE:DIR...]] [--max-condition C] [--out FRF.uff] [--json]\n";
 
-// UFF record 9 specific data type -> transducer kind (8 displacement,
-// 11 velocity, 12 acceleration, 13 excitation force).
-sg::TransducerKind kindFromUff(int specificDataType) {
-  switch (specificDataType) {
-    case 8: return sg::TransducerKind::Displacement;
-    case 11: return sg::TransducerKind::Velocity;
-    case 12: return sg::TransducerKind::Acceleration;
-    case 13: return sg::TransducerKind::Force;
-    default: return sg::TransducerKind::Other;
-  }
-}
-
-struct Hit {
-  int loadCase = 0;
-  sg::TimeRecord record;
-};
-
-// Time-response records grouped by load case, channels in file order.
-core::Result<std::vector<Hit>> hitsFromUff(const uff::UffFile& file, const std::string& path,
-                                           const std::vector<core::Dof>& references) {
-  std::map<int, std::vector<const uff::Function58*>> byCase;
-  std::vector<int> order;
-  for (const auto* f : file.all<uff::Function58>()) {
-    if (f->functionType != uff::FunctionType::TimeResponse) continue;
-    if (!byCase.count(f->loadCase)) order.push_back(f->loadCase);
-    byCase[f->loadCase].push_back(f);
-  }
-  if (order.empty()) {
-    return core::makeError(core::ErrorCode::NotFound, "no time-response records (dataset 58, function type 1)", path);
-  }
-  std::vector<Hit> hits;
-  for (int lc : order) {
-    const auto& recs = byCase[lc];
-    const std::string where = path + ", load case " + std::to_string(lc);
-    Hit hit;
-    hit.loadCase = lc;
-    sg::TimeRecord& r = hit.record;
-    const uff::Function58& first = *recs.front();
-    if (!first.evenSpacing || !(first.abscissaIncrement > 0.0)) {
-      return core::makeError(core::ErrorCode::Unsupported, "time records must be evenly sampled", where);
-    }
-    r.sampleRateHz = 1.0 / first.abscissaIncrement;
-    // record 7 abscissa minimum < 0: the samples before t = 0 are the pre-trigger
-    r.preTriggerSamples =
-        first.abscissaMin < 0.0 ? static_cast<Eigen::Index>(std::lround(-first.abscissaMin * r.sampleRateHz)) : 0;
-    const Eigen::Index n = first.pointCount();
-    r.samples.resize(n, static_cast<Eigen::Index>(recs.size()));
-    for (std::size_t c = 0; c < recs.size(); ++c) {
-      const uff::Function58& f = *recs[c];
-      const std::string cw = where + ", channel " + std::to_string(c);
-      if (uff::isComplex(f.ordinateType)) {
-        return core::makeError(core::ErrorCode::Unsupported, "time record has complex ordinates", cw);
-      }
-      if (f.pointCount() != n || !f.evenSpacing || f.abscissaIncrement != first.abscissaIncrement ||
-          f.abscissaMin != first.abscissaMin) {
-        return core::makeError(core::ErrorCode::InvalidArgument,
-                               "channel's length or time axis differs from the first channel (mismatched lengths)", cw);
-      }
-      auto dof = f.response.dof();
-      if (!dof) return core::makeError(dof.error().code, dof.error().message, cw);
-      sg::Channel ch;
-      ch.dof = *dof;
-      ch.name = core::formatDof(*dof);
-      ch.transducer.kind = kindFromUff(f.ordinateNumerator.specificDataType);
-      ch.transducer.unit = f.ordinateNumerator.unitsLabel;
-      r.channels.push_back(ch);
-      r.samples.col(static_cast<Eigen::Index>(c)) = f.real;
-    }
-    if (!references.empty()) {
-      // The named DOFs are the references: among channels at such a DOF (a
-      // driving point has force and response there) prefer the one typed as
-      // force. Other force channels are not references.
-      std::vector<std::size_t> picks;
-      for (const core::Dof& reference : references) {
-        std::optional<std::size_t> pick;
-        for (std::size_t c = 0; c < r.channels.size(); ++c) {
-          if (r.channels[c].dof != reference) continue;
-          if (!pick || (r.channels[c].transducer.kind == sg::TransducerKind::Force &&
-                        r.channels[*pick].transducer.kind != sg::TransducerKind::Force)) {
-            pick = c;
-          }
-        }
-        if (!pick) {
-          return core::makeError(core::ErrorCode::NotFound,
-                                 "no channel at the reference DOF " + core::formatDof(reference), where);
-        }
-        picks.push_back(*pick);
-      }
-      for (std::size_t c = 0; c < r.channels.size(); ++c) {
-        auto& kind = r.channels[c].transducer.kind;
-        if (std::find(picks.begin(), picks.end(), c) != picks.end()) {
-          kind = sg::TransducerKind::Force;
-        } else if (kind == sg::TransducerKind::Force) {
-          kind = sg::TransducerKind::Other;  // another force channel is not a reference
-        }
-      }
-    }
-    hits.push_back(std::move(hit));
-  }
-  return hits;
-}
-
 std::string fmt(double v, const char* f = "%.4g") {
   char buf[64];
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
 }
 
-// The force channels of a hit after hitsFromUff: the references.
+// The force channels of a hit (core/io/uff_hits.h applied --reference): the references.
 std::vector<Eigen::Index> forceChannels(const sg::TimeRecord& r) {
   std::vector<Eigen::Index> refs;
   for (Eigen::Index c = 0; c < r.channelCount(); ++c) {
@@ -217,41 +116,48 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
 
   if (int rc = refuseOutputsOntoInputs(*parsed, kSpec, {path}, "frf", err); rc != kExitOk) return rc;
 
-  auto file = uff::readFile(path);
-  if (!file) {
-    err << "mozzi-cli frf: " << file.error().describe() << "\n";
+  // Hits stream from the file one at a time, read straight into reused
+  // sample matrices (core/io/uff_hits.h): memory is two hits, not the file.
+  auto hitReader = core::io::UffHitReader::open(path, references);
+  if (!hitReader) {
+    err << "mozzi-cli frf: " << hitReader.error().describe() << "\n";
     return kExitFailure;
-  }
-  auto hits = hitsFromUff(*file, path, references);
-  if (!hits) {
-    err << "mozzi-cli frf: " << hits.error().describe() << "\n";
-    return kExitFailure;
-  }
-  if (forceWidth->has_value()) {
-    // A window narrower than one sample keeps at most the sample at t = 0: the
-    // FRF would be noise with coherence near 0.
-    const double rate = hits->front().record.sampleRateHz;
-    if (**forceWidth * rate < 1.0) {
-      err << "mozzi-cli frf: option --force-window = " << fmt(**forceWidth) << " s is shorter than one sample of "
-          << path << " (1/" << fmt(rate) << " Hz = " << fmt(1.0 / rate) << " s)\n";
-      return kExitFailure;
-    }
   }
 
   // Force window: the given width, tapered over a quarter of it.
   sg::FrfOptions options = sg::FrfOptions::hammer(*estimator, *forceWidth, forceWidth->value_or(0.0) * 0.25, *tau);
-  options.referenceChannels = forceChannels(hits->front().record);
   if (maxCondition->has_value()) options.maxReferenceConditionNumber = **maxCondition;
   // Several references: the load cases are blocks of a shaker (random) test,
   // not hammer hits, so only the overload check of the hit assessment applies.
-  const bool multiReference = options.referenceChannels.size() > 1;
+  bool multiReference = false;
   std::optional<sg::SpectralAverager> averager;
   nlohmann::json jsonHits = nlohmann::json::array();
   std::ostringstream text;
   int accepted = 0, rejected = 0;
   double band10 = 0.0, band20 = 0.0;
   bool haveBand = false;
-  for (const Hit& hit : *hits) {
+  for (bool firstHit = true;; firstHit = false) {
+    auto nextHit = hitReader->next();
+    if (!nextHit) {
+      err << "mozzi-cli frf: " << nextHit.error().describe() << "\n";
+      return kExitFailure;
+    }
+    if (!*nextHit) break;
+    const core::io::UffHit& hit = **nextHit;
+    if (firstHit) {
+      if (forceWidth->has_value()) {
+        // A window narrower than one sample keeps at most the sample at t = 0:
+        // the FRF would be noise with coherence near 0.
+        const double rate = hit.record.sampleRateHz;
+        if (**forceWidth * rate < 1.0) {
+          err << "mozzi-cli frf: option --force-window = " << fmt(**forceWidth) << " s is shorter than one sample of "
+              << path << " (1/" << fmt(rate) << " Hz = " << fmt(1.0 / rate) << " s)\n";
+          return kExitFailure;
+        }
+      }
+      options.referenceChannels = forceChannels(hit.record);
+      multiReference = options.referenceChannels.size() > 1;
+    }
     sg::HitQualityOptions qo;
     if (!options.referenceChannels.empty()) qo.referenceChannel = options.referenceChannels.front();
     auto q = sg::assessHit(hit.record, qo);

@@ -1,6 +1,8 @@
 // mozzi-cli identify: modal identification of the FRFs in a UFF file or of
-// an FRF set of a project (docs/cli/identify.md). pLSCF or LSCE + LSFD + Ceres refinement (standard
-// errors), or single-mode peak picking / circle fit over the band.
+// an FRF set of a project (docs/cli/identify.md). pLSCF or LSCE + LSFD +
+// refinement by variable projection (standard errors) through
+// core::modal::identifyModes, or single-mode peak picking / circle fit over
+// the band.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,9 +16,7 @@
 #include "app/cli/output.h"
 #include "core/io/project_store.h"
 #include "core/io/uff/uff.h"
-#include "core/modal/lsce.h"
-#include "core/modal/plscf.h"
-#include "core/modal/refine.h"
+#include "core/modal/identification.h"
 #include "core/modal/sdof.h"
 #include "core/modal/shape_tools.h"
 #include "core/signal/window.h"
@@ -32,6 +32,10 @@ constexpr const char* kUsage =
     "Usage: mozzi-cli identify FRF.uff --band LO:HI [--method plscf|lsce|circle|peak] [--max-order N]\n"
     "                          [--stabilization OUT.csv] [--modes OUT.uff] [--json]\n"
     "       mozzi-cli identify PROJECT.mozzi --frf-set ID --band LO:HI [same options]\n";
+
+// Refinement on the lines carrying the modes when the band holds more lines
+// than this (core/modal/refine.h; docs/cli/identify.md).
+constexpr Eigen::Index kRefineMaxLines = 0;
 
 int usage(std::ostream& err, const std::string& why) {
   err << "mozzi-cli identify: " << why << "\n" << kUsage;
@@ -122,9 +126,7 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
   if (auto set = parsed->value("--frf-set")) {
     frf = projectFrf(input, *set, &tauS);
   } else {
-    auto file = uff::readFile(input);
-    if (!file) return fail(err, file.error());
-    frf = uff::toFrfMatrix(*file);
+    frf = uff::readFrfMatrix(input);  // streamed: memory is the FRF matrix
   }
   if (!frf) {
     core::Error e = frf.error();
@@ -135,29 +137,26 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
   md::ModalModel model;
   std::vector<Row> rows;
   if (method == "plscf" || method == "lsce") {
-    md::LsceOptions opt;  // the pLSCF options plus the LSCE window (defaults)
-    opt.bandLowHz = lo;
-    opt.bandHighHz = hi;
-    opt.maxOrder = maxOrder;
-    const bool lsce = method == "lsce";
-    auto res = lsce ? md::identifyLsce(*frf, opt) : md::identifyPlscf(*frf, opt);
+    md::IdentificationOptions opt;  // the pLSCF options plus the LSCE window (defaults)
+    opt.method = method == "lsce" ? md::IdentificationMethod::Lsce : md::IdentificationMethod::Plscf;
+    opt.estimator.bandLowHz = lo;
+    opt.estimator.bandHighHz = hi;
+    opt.estimator.maxOrder = maxOrder;
+    opt.refineMaxLines = kRefineMaxLines;
+    auto res = md::identifyModes(*frf, opt);
     if (auto csv = parsed->value("--stabilization")) {
-      auto diag = res    ? core::Result<md::StabilizationDiagram>(res->diagram)
-                  : lsce ? md::lsceStabilization(*frf, opt)
-                         : md::plscfStabilization(*frf, opt);
+      // the diagram is written even when no mode qualifies
+      auto diag = res                                            ? core::Result<md::StabilizationDiagram>(res->diagram)
+                  : opt.method == md::IdentificationMethod::Lsce ? md::lsceStabilization(*frf, opt.estimator)
+                                                                 : md::plscfStabilization(*frf, opt.estimator);
       if (!diag) return fail(err, diag.error());
       if (auto w = md::writeStabilizationCsv(*diag, *csv); !w) return fail(err, w.error());
     }
     if (!res) return fail(err, res.error());
-    md::RefineOptions ro;
-    ro.bandLowHz = lo;
-    ro.bandHighHz = hi;
-    auto refined = md::refineModalModel(*frf, res->model, ro);
-    if (!refined) return fail(err, refined.error());
-    model = refined->model;
+    model = res->model();
     for (std::size_t r = 0; r < model.modes.size(); ++r) {
-      rows.push_back(
-          {model.modes[r].frequencyHz(), model.modes[r].zeta(), refined->frequencyStdHz[r], refined->zetaStd[r], 0.0});
+      rows.push_back({model.modes[r].frequencyHz(), model.modes[r].zeta(), res->refined->frequencyStdHz[r],
+                      res->refined->zetaStd[r], 0.0});
     }
   } else {
     if (parsed->value("--stabilization")) return usage(err, "--stabilization needs --method plscf or lsce");

@@ -1,6 +1,6 @@
 #include "core/io/mat/mat_import.h"
 
-#include <matio.h>
+#include <matio.h>  // types only: the functions come from matio_library.h
 #include <unistd.h>
 
 #include <cmath>
@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "core/io/csv/csv_exchange.h"
+#include "core/io/mat/matio_library.h"
 
 namespace mozzi::core::io::mat {
 namespace {
@@ -17,11 +18,17 @@ namespace {
 // Largest array read from a .mat file: 2^28 elements (2 GiB as double).
 constexpr std::uint64_t kMaxElements = std::uint64_t{1} << 28;
 
+// The loaded library. openMat (and matV73Supported) load it and report a
+// failure; everything else runs only after one of them succeeded.
+const MatioLibrary* api() {
+  return *matioLibrary();
+}
+
 struct MatCloser {
-  void operator()(mat_t* m) const { Mat_Close(m); }
+  void operator()(mat_t* m) const { api()->close(m); }
 };
 struct VarFreer {
-  void operator()(matvar_t* v) const { Mat_VarFree(v); }
+  void operator()(matvar_t* v) const { api()->varFree(v); }
 };
 using MatFile = std::unique_ptr<mat_t, MatCloser>;
 using MatVar = std::unique_ptr<matvar_t, VarFreer>;
@@ -53,7 +60,9 @@ Result<MatFile> openMat(const std::string& path) {
   if (!std::filesystem::is_regular_file(path, ec)) {
     return makeError(ErrorCode::NotFound, "the .mat file does not exist", path);
   }
-  mat_t* m = Mat_Open(path.c_str(), MAT_ACC_RDONLY);
+  auto lib = matioLibrary();
+  if (!lib) return makeError(lib.error().code, lib.error().message, path);
+  mat_t* m = (*lib)->open(path.c_str(), MAT_ACC_RDONLY);
   if (!m) return makeError(ErrorCode::ParseError, "not a MATLAB .mat file libmatio can read (v4, v5, v7, v7.3)", path);
   return MatFile(m);
 }
@@ -116,13 +125,13 @@ Result<Array> readArray(mat_t* mat, const std::string& name, const std::string& 
   if (name.empty()) return makeError(ErrorCode::InvalidArgument, "no variable name given", path);
   const std::size_t dot = name.find('.');
   const std::string top = name.substr(0, dot);
-  MatVar info(Mat_VarReadInfo(mat, top.c_str()));
+  MatVar info(api()->varReadInfo(mat, top.c_str()));
   if (!info) return makeError(ErrorCode::NotFound, "no such variable in the file", where);
   const matvar_t* target = info.get();
   if (dot != std::string::npos) {
     if (info->class_type != MAT_C_STRUCT)
       return makeError(ErrorCode::InvalidArgument, "'" + top + "' is not a struct", where);
-    target = Mat_VarGetStructFieldByName(info.get(), name.substr(dot + 1).c_str(), 0);
+    target = api()->varGetStructFieldByName(info.get(), name.substr(dot + 1).c_str(), 0);
     if (!target) return makeError(ErrorCode::NotFound, "no such struct field", where);
   }
   if (!isNumericClass(target->class_type)) {
@@ -132,11 +141,11 @@ Result<Array> readArray(mat_t* mat, const std::string& name, const std::string& 
   auto n = elementCount(target, where);
   if (!n) return n.error();
   // Sizes are plausible: read the data.
-  MatVar full(Mat_VarRead(mat, top.c_str()));
+  MatVar full(api()->varRead(mat, top.c_str()));
   if (!full) return makeError(ErrorCode::ParseError, "libmatio cannot read the variable's data", where);
   const matvar_t* v = full.get();
   if (dot != std::string::npos) {
-    v = Mat_VarGetStructFieldByName(full.get(), name.substr(dot + 1).c_str(), 0);
+    v = api()->varGetStructFieldByName(full.get(), name.substr(dot + 1).c_str(), 0);
     if (!v) return makeError(ErrorCode::NotFound, "no such struct field", where);
   }
   auto n2 = elementCount(v, where);
@@ -178,9 +187,11 @@ bool matV73Supported() {
   static const bool supported = [] {
     const auto path =
         std::filesystem::temp_directory_path() / ("mozzi_matio_probe_" + std::to_string(::getpid()) + ".mat");
-    mat_t* m = Mat_CreateVer(path.string().c_str(), nullptr, MAT_FT_MAT73);
+    auto lib = matioLibrary();
+    if (!lib) return false;
+    mat_t* m = (*lib)->createVer(path.string().c_str(), nullptr, MAT_FT_MAT73);
     const bool ok = m != nullptr;
-    if (m) Mat_Close(m);
+    if (m) (*lib)->close(m);
     std::error_code ec;
     std::filesystem::remove(path, ec);
     return ok;
@@ -193,7 +204,7 @@ Result<std::vector<MatVariableInfo>> listVariables(const std::string& path) {
   if (!mat) return mat.error();
   std::vector<MatVariableInfo> out;
   for (;;) {
-    MatVar v(Mat_VarReadNextInfo(mat->get()));
+    MatVar v(api()->varReadNextInfo(mat->get()));
     if (!v) break;
     MatVariableInfo info;
     info.name = v->name ? v->name : "";

@@ -21,6 +21,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <memory>
 #include <optional>
@@ -248,9 +249,14 @@ struct Function58 {
   // With ReadOptions::skip58Data the data are not read: the vectors stay
   // empty and declaredPoints holds record 7's point count.
   std::int64_t declaredPoints = -1;
+  // Ordinates written to the reader's ordinate sink (ReadOptions) instead of
+  // `real` / `complex`, which then stay empty; 0 otherwise.
+  std::uint64_t sinkPoints = 0;
+
   Eigen::Index pointCount() const {
     if (declaredPoints >= 0) return static_cast<Eigen::Index>(declaredPoints);
-    return isComplex(ordinateType) ? complex.size() : real.size();
+    const Eigen::Index held = isComplex(ordinateType) ? complex.size() : real.size();
+    return held > 0 ? held : static_cast<Eigen::Index>(sinkPoints);
   }
   // x_k = abscissaMin + k * abscissaIncrement when even, else the stored abscissa.
   Vector abscissaValues() const;
@@ -304,6 +310,15 @@ struct ReadOptions {
   // without holding it: for a summary of a file of any size (e.g. a replay
   // recording's channels). Function58::declaredPoints then gives the length.
   bool skip58Data = false;
+  // Where the ordinates of a 58 record go, so that a caller streaming a file
+  // reads them straight into its own arrays (no copy, no allocation per
+  // record). Called once records 1-11 are parsed, before any value is read,
+  // with the record so far and its point count: return room for `points`
+  // ordinates as doubles (Re, Im interleaved for complex ordinates, i.e. the
+  // layout of std::complex<double>), or nullptr to let the record hold them.
+  // Written ordinates are not kept in the record (Function58::sinkPoints).
+  // A record cut short (fewer points than declared) leaves the rest unwritten.
+  std::function<double*(const Function58& header, std::uint64_t points)> ordinateSink;
 };
 
 // Streaming reader: one dataset per next() call. Only the current dataset and a
@@ -380,6 +395,10 @@ struct FrfConversionOptions {
 // every pair has one. Other function types are ignored.
 Result<FrfMatrix> toFrfMatrix(const std::vector<Function58>& functions, const FrfConversionOptions& options = {});
 Result<FrfMatrix> toFrfMatrix(const UffFile& file, const FrfConversionOptions& options = {});
+// The same from a file, streamed: complex FRF records are read straight into
+// the FRF matrix (one reference: no copy at all), other datasets are dropped
+// as they are read, so memory is the FRF matrix, not the file (issue 19).
+Result<FrfMatrix> readFrfMatrix(const std::string& path, const FrfConversionOptions& options = {});
 
 // FrfMatrix -> one FRF record (complex double) per pair, response-major
 // within each reference, then one coherence record (real double) per pair when

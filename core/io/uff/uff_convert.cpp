@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <functional>
 #include <map>
 
 #include "core/io/uff/uff.h"
@@ -55,14 +57,16 @@ bool sameAxis(const Vector& a, const Vector& b) {
 
 }  // namespace
 
-Result<FrfMatrix> toFrfMatrix(const std::vector<Function58>& functions, const FrfConversionOptions& options) {
+namespace {
+
+// FRF and coherence records -> FrfMatrix (toFrfMatrix's rules). The
+// ordinates of a complex FRF record are pool->col(column(f)) when column(f)
+// >= 0 (read there by readFrfMatrix), else the record's own. One reference
+// with the pool's columns in response order: the pool becomes h[0], no copy.
+Result<FrfMatrix> assemble(const std::vector<const Function58*>& frfs, const std::vector<const Function58*>& cohs,
+                           const FrfConversionOptions& options, ComplexMatrix* pool,
+                           const std::function<Eigen::Index(const Function58*)>& column) {
   FrfMatrix m;
-  std::vector<const Function58*> frfs;
-  std::vector<const Function58*> cohs;
-  for (const auto& f : functions) {
-    if (f.functionType == FunctionType::Frf) frfs.push_back(&f);
-    if (f.functionType == FunctionType::Coherence) cohs.push_back(&f);
-  }
   if (frfs.empty()) {
     return makeError(ErrorCode::NotFound, "no FRF record (dataset 58 with function type 4) in the input", "dataset 58");
   }
@@ -96,7 +100,7 @@ Result<FrfMatrix> toFrfMatrix(const std::vector<Function58>& functions, const Fr
   m.type = *type;
   m.frequencyHz = frfs.front()->abscissaValues();
   const Eigen::Index nf = m.frequencyHz.size();
-  m.h.assign(m.references.size(), ComplexMatrix::Zero(nf, m.responseCount()));
+  std::vector<const Function58*> ordered;  // reference-major, response order
   for (std::size_t ii = 0; ii < m.references.size(); ++ii) {
     for (Eigen::Index oo = 0; oo < m.responseCount(); ++oo) {
       const Dof& o = m.responses[static_cast<std::size_t>(oo)];
@@ -114,10 +118,28 @@ Result<FrfMatrix> toFrfMatrix(const std::vector<Function58>& functions, const Fr
                              " lines)",
                          "dataset 58");
       }
-      if (isComplex(f.ordinateType)) {
-        m.h[ii].col(oo) = f.complex;
+      ordered.push_back(&f);
+    }
+  }
+  bool inPlace = pool && m.references.size() == 1 && pool->rows() == nf;
+  for (std::size_t q = 0; inPlace && q < ordered.size(); ++q)
+    inPlace = column(ordered[q]) == static_cast<Eigen::Index>(q);
+  if (inPlace) {
+    pool->conservativeResize(nf, m.responseCount());  // shrinks in place
+    m.h.push_back(std::move(*pool));
+  } else {
+    m.h.assign(m.references.size(), ComplexMatrix(nf, m.responseCount()));
+    for (std::size_t q = 0; q < ordered.size(); ++q) {
+      const Function58& f = *ordered[q];
+      auto dst = m.h[q / static_cast<std::size_t>(m.responseCount())].col(
+          static_cast<Eigen::Index>(q % static_cast<std::size_t>(m.responseCount())));
+      const Eigen::Index c = pool ? column(&f) : -1;
+      if (c >= 0) {
+        dst = pool->col(c);
+      } else if (isComplex(f.ordinateType)) {
+        dst = f.complex;
       } else {
-        m.h[ii].col(oo) = f.real.cast<Complex>();
+        dst = f.real.cast<Complex>();
       }
     }
   }
@@ -129,7 +151,8 @@ Result<FrfMatrix> toFrfMatrix(const std::vector<Function58>& functions, const Fr
     if (o && i) cohByPair.emplace(std::make_pair(*o, *i), c);
   }
   bool complete = !cohByPair.empty();
-  std::vector<Matrix> coherence(m.references.size(), Matrix::Zero(nf, m.responseCount()));
+  std::vector<Matrix> coherence;
+  if (complete) coherence.assign(m.references.size(), Matrix::Zero(nf, m.responseCount()));
   for (std::size_t ii = 0; complete && ii < m.references.size(); ++ii) {
     for (Eigen::Index oo = 0; complete && oo < m.responseCount(); ++oo) {
       auto it = cohByPair.find({m.responses[static_cast<std::size_t>(oo)], m.references[ii]});
@@ -146,12 +169,74 @@ Result<FrfMatrix> toFrfMatrix(const std::vector<Function58>& functions, const Fr
   return m;
 }
 
-Result<FrfMatrix> toFrfMatrix(const UffFile& file, const FrfConversionOptions& options) {
-  std::vector<Function58> fs;
-  for (const Function58* f : file.all<Function58>()) {
-    if (f->functionType == FunctionType::Frf || f->functionType == FunctionType::Coherence) fs.push_back(*f);
+Result<FrfMatrix> assembleRecords(const std::vector<const Function58*>& functions,
+                                  const FrfConversionOptions& options) {
+  std::vector<const Function58*> frfs, cohs;
+  for (const Function58* f : functions) {
+    if (f->functionType == FunctionType::Frf) frfs.push_back(f);
+    if (f->functionType == FunctionType::Coherence) cohs.push_back(f);
   }
-  return toFrfMatrix(fs, options);
+  return assemble(frfs, cohs, options, nullptr, {});
+}
+
+}  // namespace
+
+Result<FrfMatrix> toFrfMatrix(const std::vector<Function58>& functions, const FrfConversionOptions& options) {
+  std::vector<const Function58*> ptrs;
+  for (const auto& f : functions) ptrs.push_back(&f);
+  return assembleRecords(ptrs, options);
+}
+
+Result<FrfMatrix> toFrfMatrix(const UffFile& file, const FrfConversionOptions& options) {
+  return assembleRecords(file.all<Function58>(), options);
+}
+
+Result<FrfMatrix> readFrfMatrix(const std::string& path, const FrfConversionOptions& options) {
+  // Complex FRF records are read into the columns of one pool, sized from
+  // the file (no FRF record takes fewer than 4 bytes a point in either
+  // encoding), so that untouched capacity is address space, not memory.
+  std::error_code ec;
+  const std::uint64_t fileBytes = std::filesystem::file_size(path, ec);
+  ComplexMatrix pool;
+  std::vector<Function58> records;  // FRF headers (ordinates in the pool) and coherence records
+  std::vector<Eigen::Index> columns;
+  Eigen::Index used = 0, lastColumn = -1;  // pool column of the record the sink saw last
+  ReadOptions ro;
+  ro.ordinateSink = [&](const Function58& f, std::uint64_t points) -> double* {
+    lastColumn = -1;
+    if (f.functionType != FunctionType::Frf || !isComplex(f.ordinateType)) return nullptr;
+    const Eigen::Index n = static_cast<Eigen::Index>(points);
+    if (pool.size() == 0) {
+      // at most 1 GiB of address space up front; more grows by doubling
+      const std::uint64_t bound = (std::uint64_t{1} << 30) / (16 * std::max<std::uint64_t>(points, 1)) + 1;
+      const std::uint64_t capacity =
+          std::min(bound, ec ? std::uint64_t{16} : fileBytes / std::max<std::uint64_t>(4 * points, 1) + 1);
+      pool.resize(n, static_cast<Eigen::Index>(capacity));
+    }
+    if (n != pool.rows()) return nullptr;  // another axis: kept in the record, reported by assemble()
+    if (used == pool.cols()) pool.conservativeResize(n, 2 * pool.cols());
+    lastColumn = used++;
+    return reinterpret_cast<double*>(pool.col(lastColumn).data());
+  };
+  auto reader = DatasetReader::open(path, std::move(ro));
+  if (!reader) return reader.error();
+  for (;;) {
+    auto ds = reader->next();
+    if (!ds) return ds.error();
+    if (!*ds) break;
+    Function58* f = (*ds)->get<Function58>();
+    if (!f || (f->functionType != FunctionType::Frf && f->functionType != FunctionType::Coherence)) continue;
+    columns.push_back(f->functionType == FunctionType::Frf ? lastColumn : -1);
+    records.push_back(std::move(*f));
+  }
+  std::vector<const Function58*> frfs, cohs;
+  std::map<const Function58*, Eigen::Index> columnOf;
+  for (std::size_t q = 0; q < records.size(); ++q) {
+    const Function58* f = &records[q];
+    columnOf[f] = columns[q];
+    (f->functionType == FunctionType::Frf ? frfs : cohs).push_back(f);
+  }
+  return assemble(frfs, cohs, options, &pool, [&](const Function58* f) { return columnOf.at(f); });
 }
 
 Result<std::vector<Function58>> fromFrfMatrix(const FrfMatrix& frf) {

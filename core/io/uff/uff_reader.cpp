@@ -1012,9 +1012,27 @@ Result<DatasetData> parse58(DatasetContext& ctx, const Binary58& bin) {
     }
     if (!f.evenSpacing) f.abscissa.resize(static_cast<Eigen::Index>(points));
   };
-  auto ordinates = [&]() -> double* { return cplx ? reinterpret_cast<double*>(f.complex.data()) : f.real.data(); };
+  // Ordinates go to the caller's sink when it gives room (ReadOptions::ordinateSink).
+  double* external = nullptr;
+  auto place = [&](std::uint64_t points) {
+    if (ctx.options().ordinateSink) external = ctx.options().ordinateSink(f, points);
+    if (external) {
+      if (!f.evenSpacing) f.abscissa.resize(static_cast<Eigen::Index>(points));
+    } else {
+      allocate(points);
+    }
+  };
+  auto ordinates = [&]() -> double* {
+    if (external) return external;
+    return cplx ? reinterpret_cast<double*>(f.complex.data()) : f.real.data();
+  };
   auto shrink = [&](std::uint64_t points) {
     const Eigen::Index n = static_cast<Eigen::Index>(points);
+    if (external) {
+      f.sinkPoints = points;
+      if (!f.evenSpacing) f.abscissa.conservativeResize(n);
+      return;
+    }
     if (cplx) {
       f.complex.conservativeResize(n);
     } else {
@@ -1039,7 +1057,7 @@ Result<DatasetData> parse58(DatasetContext& ctx, const Binary58& bin) {
       ctx.warnAt(record7Line, "the binary block has " + std::to_string(byteCount - needed) +
                                   " bytes after the declared points; ignored");
     }
-    allocate(points);
+    place(points);
     const bool swap = (bin.order == ByteOrder::LittleEndian) != hostIsLittleEndian();
     const std::uint64_t totalValues = points * perPoint;
     double* ord = ordinates();
@@ -1101,6 +1119,7 @@ Result<DatasetData> parse58(DatasetContext& ctx, const Binary58& bin) {
         if (!std::isfinite(xs[i])) return ctx.error("binary abscissa value " + std::to_string(i) + " is not finite");
       }
     }
+    if (external) f.sinkPoints = points;
     return DatasetData{std::move(f)};
   }
 
@@ -1110,7 +1129,7 @@ Result<DatasetData> parse58(DatasetContext& ctx, const Binary58& bin) {
   const std::uint64_t totalDeclared = declared * perPoint;
   const std::uint64_t possible = src.remaining() / 2 + 1;
   const std::uint64_t capacityValues = std::min(totalDeclared, possible);
-  allocate(capacityValues / perPoint);
+  place(capacityValues / perPoint);
   double* ord = ordinates();
   double* xs = f.evenSpacing ? nullptr : f.abscissa.data();
   const std::uint64_t capacity = (capacityValues / perPoint) * perPoint;
@@ -1177,6 +1196,8 @@ Result<DatasetData> parse58(DatasetContext& ctx, const Binary58& bin) {
     ctx.warnAt(record7Line, "record 7 declares " + std::to_string(declared) + " points, the data hold " +
                                 std::to_string(points) + "; the record is read with " + std::to_string(points));
     shrink(points);
+  } else if (external) {
+    f.sinkPoints = points;
   }
   return DatasetData{std::move(f)};
 }

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -13,14 +14,16 @@ namespace {
 
 using testing::sixModeSystem;
 
-// Synthetic accelerances (reference DOF 3) with additive complex Gaussian
-// noise of 1% of each FRF's RMS (homoscedastic, the least-squares assumption).
-FrfMatrix noisy(const testing::SyntheticSystem& sys, unsigned seed) {
-  FrfMatrix frf = testing::accelerances(sys, {2}, 20.0, 380.0, 0.2, 0.0, 1);
+// Synthetic accelerances (reference DOF 3) from fLo to fHi at 0.2 Hz with
+// additive complex Gaussian noise of the same level on every line of every
+// FRF, 1% of the overall RMS (homoscedastic: the least-squares assumption
+// behind the standard errors).
+FrfMatrix noisy(const testing::SyntheticSystem& sys, unsigned seed, double fLo = 20.0, double fHi = 380.0) {
+  FrfMatrix frf = testing::accelerances(sys, {2}, fLo, fHi, 0.2, 0.0, 1);
   std::mt19937 rng(seed);
   std::normal_distribution<double> nd(0.0, 1.0);
+  const double rms = std::sqrt(frf.h[0].squaredNorm() / static_cast<double>(frf.h[0].size()));
   for (Eigen::Index o = 0; o < 6; ++o) {
-    const double rms = std::sqrt(frf.h[0].col(o).squaredNorm() / static_cast<double>(frf.lineCount()));
     for (Eigen::Index k = 0; k < frf.lineCount(); ++k)
       frf.h[0](k, o) += 0.01 * rms / std::sqrt(2.0) * Complex(nd(rng), nd(rng));
   }
@@ -41,27 +44,32 @@ ModalModel perturbedStart(const testing::SyntheticSystem& sys) {
   return m;
 }
 
-// From a perturbed start Ceres returns to the true modes (within the issue's
-// 0.1% / 5% tolerances), and the standard errors from the final Jacobian
-// match the scatter over independent noise realisations: the empirical
-// standard deviation of 10 realisations has about 24% sampling uncertainty
-// (1/sqrt(2 (n-1))), so each of the 12 quantities must agree within a factor
-// 2.5 (more than 3 sigma) and their pooled geometric-mean ratio (about 7%
-// sampling uncertainty) within 0.75 .. 1.33.
+// From a perturbed start the refinement returns to the true modes (within
+// the 0.1% / 5% tolerances), and the standard errors from the final
+// Jacobian match the scatter over independent noise realisations (Monte
+// Carlo): the empirical standard deviation of 40 realisations has about 11%
+// sampling uncertainty (1/sqrt(2 (n-1))), so each of the 12 quantities must
+// agree within a factor 1.5 (more than 3.5 sigma) and their pooled
+// geometric-mean ratio (about 3.3% if independent; the quantities are
+// correlated, so 6% is assumed) within 0.85 .. 1.18. The mean error of every
+// estimate must be within 4 standard errors of the mean (no bias beyond noise).
 TEST(Refine, ConvergesAndStandardErrorsMatchScatter) {
   const auto sys = sixModeSystem();
   RefineOptions opt;
   opt.bandLowHz = 20.0;
   opt.bandHighHz = 380.0;
-  const int runs = 10;
+  const int runs = 40;
   std::vector<std::vector<double>> f(6), z(6);
   std::vector<double> fStd(6), zStd(6);
+  int iterations = 0;
   for (int s = 0; s < runs; ++s) {
     const FrfMatrix frf = noisy(sys, 100 + static_cast<unsigned>(s));
     auto res = refineModalModel(frf, perturbedStart(sys), opt);
     ASSERT_TRUE(res.ok()) << res.error().describe();
     ASSERT_EQ(res->model.modes.size(), 6u);
     EXPECT_LT(res->finalRelativeError, res->initialRelativeError);
+    EXPECT_EQ(res->fittedLines, res->bandLines);
+    iterations = std::max(iterations, res->iterations);
     for (int r = 0; r < 6; ++r) {
       const auto& md = res->model.modes[static_cast<std::size_t>(r)];
       EXPECT_LT(std::abs(md.frequencyHz() - sys.fn[r]) / sys.fn[r], 1e-3) << "mode " << r + 1;
@@ -72,10 +80,15 @@ TEST(Refine, ConvergesAndStandardErrorsMatchScatter) {
       zStd[static_cast<std::size_t>(r)] += res->zetaStd[static_cast<std::size_t>(r)] / runs;
     }
   }
-  auto sd = [](const std::vector<double>& v) {
-    double mu = 0, s2 = 0;
+  std::printf("at most %d Levenberg-Marquardt iterations\n", iterations);
+  auto mean = [](const std::vector<double>& v) {
+    double mu = 0;
     for (double x : v) mu += x;
-    mu /= static_cast<double>(v.size());
+    return mu / static_cast<double>(v.size());
+  };
+  auto sd = [&](const std::vector<double>& v) {
+    const double mu = mean(v);
+    double s2 = 0;
     for (double x : v) s2 += (x - mu) * (x - mu);
     return std::sqrt(s2 / static_cast<double>(v.size() - 1));
   };
@@ -85,14 +98,67 @@ TEST(Refine, ConvergesAndStandardErrorsMatchScatter) {
     logRatio += (std::log(fStd[r] / ef) + std::log(zStd[r] / ez)) / 12.0;
     std::printf("mode %zu: f std predicted %.3g Hz, scatter %.3g Hz; zeta std predicted %.3g, scatter %.3g\n", r + 1,
                 fStd[r], ef, zStd[r], ez);
-    EXPECT_GT(fStd[r], ef / 2.5);
-    EXPECT_LT(fStd[r], ef * 2.5);
-    EXPECT_GT(zStd[r], ez / 2.5);
-    EXPECT_LT(zStd[r], ez * 2.5);
+    EXPECT_GT(fStd[r], ef / 1.5) << "mode " << r + 1;
+    EXPECT_LT(fStd[r], ef * 1.5) << "mode " << r + 1;
+    EXPECT_GT(zStd[r], ez / 1.5) << "mode " << r + 1;
+    EXPECT_LT(zStd[r], ez * 1.5) << "mode " << r + 1;
+    const double sqrtN = std::sqrt(static_cast<double>(runs));
+    EXPECT_LT(std::abs(mean(f[r]) - sys.fn[static_cast<Eigen::Index>(r)]), 4.0 * fStd[r] / sqrtN) << "mode " << r + 1;
+    EXPECT_LT(std::abs(mean(z[r]) - sys.zeta[static_cast<Eigen::Index>(r)]), 4.0 * zStd[r] / sqrtN) << "mode " << r + 1;
   }
   std::printf("pooled predicted / scatter ratio %.3f\n", std::exp(logRatio));
-  EXPECT_GT(std::exp(logRatio), 0.75);
-  EXPECT_LT(std::exp(logRatio), 1.33);
+  EXPECT_GT(std::exp(logRatio), 0.85);
+  EXPECT_LT(std::exp(logRatio), 1.18);
+}
+
+// Refinement on the lines carrying the modes: band 20-1000 Hz (4901 lines),
+// at most 3000 lines. The windows of 8 half-widths (mode 5, zeta 0.1 at
+// 214 Hz, alone spans 43-385 Hz) keep almost all the information on frequency
+// and damping, blocks of 16 lines cover the rest, so the estimates move by
+// less than one standard error from the all-lines fit and the standard errors
+// grow by less than 30%.
+TEST(Refine, LinesCarryingTheModesKeepTheEstimates) {
+  const auto sys = sixModeSystem();
+  const FrfMatrix frf = noisy(sys, 5, 20.0, 1000.0);
+  RefineOptions opt;
+  opt.bandLowHz = 20.0;
+  opt.bandHighHz = 1000.0;
+  auto all = refineModalModel(frf, perturbedStart(sys), opt);
+  ASSERT_TRUE(all.ok()) << all.error().describe();
+  opt.maxLines = 3000;
+  auto thin = refineModalModel(frf, perturbedStart(sys), opt);
+  ASSERT_TRUE(thin.ok()) << thin.error().describe();
+  EXPECT_EQ(thin->bandLines, 4901);
+  EXPECT_LE(thin->fittedLines, 3000 + 16);
+  EXPECT_GT(thin->fittedLines, 2500);
+  std::printf("fitted on %ld of %ld lines\n", static_cast<long>(thin->fittedLines), static_cast<long>(thin->bandLines));
+  for (std::size_t r = 0; r < 6; ++r) {
+    const Mode &a = all->model.modes[r], &b = thin->model.modes[r];
+    std::printf("mode %zu: f %.5f / %.5f (std %.2g), zeta %.6f / %.6f (std %.2g)\n", r + 1, a.frequencyHz(),
+                b.frequencyHz(), all->frequencyStdHz[r], a.zeta(), b.zeta(), all->zetaStd[r]);
+    EXPECT_LT(std::abs(a.frequencyHz() - b.frequencyHz()), all->frequencyStdHz[r]) << "mode " << r + 1;
+    EXPECT_LT(std::abs(a.zeta() - b.zeta()), all->zetaStd[r]) << "mode " << r + 1;
+    EXPECT_LT(thin->frequencyStdHz[r], 1.3 * all->frequencyStdHz[r]) << "mode " << r + 1;
+    EXPECT_LT(thin->zetaStd[r], 1.3 * all->zetaStd[r]) << "mode " << r + 1;
+  }
+}
+
+TEST(Refine, ProgressCanCancel) {
+  const auto sys = sixModeSystem();
+  const FrfMatrix frf = noisy(sys, 1);
+  RefineOptions opt;
+  opt.bandLowHz = 20.0;
+  opt.bandHighHz = 380.0;
+  int calls = 0;
+  opt.progress = [&](int iteration, double relativeError) {
+    EXPECT_EQ(iteration, calls);
+    EXPECT_GT(relativeError, 0.0);
+    return ++calls < 2;
+  };
+  auto res = refineModalModel(frf, perturbedStart(sys), opt);
+  ASSERT_FALSE(res.ok());
+  EXPECT_EQ(res.error().code, ErrorCode::Cancelled);
+  EXPECT_EQ(calls, 2);
 }
 
 TEST(Refine, RejectsEmptyModelAndTinyBand) {

@@ -1,0 +1,92 @@
+#pragma once
+// The identification pipeline as one call, the code `mozzi-cli identify` runs
+// and the workbench's identification page calls (issue 19):
+//   band, method, orders -> stabilization diagram (pLSCF or LSCE) ->
+//   automatic pole selection -> LSFD -> refinement (variable projection,
+//   standard errors), with progress and cancel.
+// After a click in the stabilization diagram, without re-running the diagram:
+// fitSelectedPoles (LSFD residues and the synthesised FRFs for a pole set,
+// the preview: 34 ms on the ModeLAB beam) and reselectModes (the same result
+// as identifyModes for a selection of diagram poles, refinement and standard
+// errors included). Figures: docs/performance/commands.md.
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "core/common/frf_matrix.h"
+#include "core/common/result.h"
+#include "core/modal/lsce.h"
+#include "core/modal/lsfd.h"
+#include "core/modal/modal_model.h"
+#include "core/modal/plscf.h"
+#include "core/modal/refine.h"
+
+namespace mozzi::core::modal {
+
+enum class IdentificationMethod { Plscf, Lsce };
+
+enum class IdentificationStage { Diagram, Selection, Lsfd, Refinement };
+const char* identificationStageName(IdentificationStage stage);  // "stabilization diagram", ...
+
+struct IdentificationProgress {
+  IdentificationStage stage = IdentificationStage::Diagram;
+  double fraction = 0.0;  // of the stage, 0..1 (diagram: orders done; refinement: iterations of the maximum)
+};
+// Returning false cancels: identifyModes returns ErrorCode::Cancelled.
+using IdentificationCallback = std::function<bool(const IdentificationProgress&)>;
+
+struct IdentificationOptions {
+  IdentificationMethod method = IdentificationMethod::Plscf;
+  // Band, orders, stability criteria, automatic selection; the LSCE window
+  // (pLSCF ignores it). Its orderProgress is replaced by the callback's.
+  LsceOptions estimator;
+  bool refine = true;
+  int maxRefineIterations = 50;
+  // Refinement on the lines carrying the modes when the band holds more
+  // (RefineOptions::maxLines); 0 = every line.
+  Eigen::Index refineMaxLines = 0;
+};
+
+struct IdentificationResult {
+  StabilizationDiagram diagram;
+  std::vector<SelectedPole> selected;
+  ModalModel lsfdModel;                 // LSFD for the selected poles, lower and upper residuals
+  std::optional<RefineResult> refined;  // when options.refine
+  // The final model: refined when refinement ran, else the LSFD one.
+  const ModalModel& model() const { return refined ? refined->model : lsfdModel; }
+};
+
+// Errors: those of the estimator (band, orders, singular equations), no
+// stable mode in band (NotFound), LSFD and refinement failures, Cancelled.
+Result<IdentificationResult> identifyModes(const FrfMatrix& frf, const IdentificationOptions& options,
+                                           const IdentificationCallback& progress = {});
+
+// --- Re-selection -------------------------------------------------------------
+
+// The user changed the selection in the diagram of a previous identifyModes:
+// `diagramPoles` are indices into diagram.poles (a click picks the pole
+// nearest the cursor; clusterSize 1, no spreads). The diagram is kept (pass
+// the previous result's, moved); LSFD and, when options.refine, the
+// refinement with its standard errors run for the new selection, in
+// frequency order: the cost of an LSFD plus a refinement, not of the diagram
+// (docs/performance/commands.md). options.estimator gives the band.
+// Errors: no pole, an index outside the diagram or given twice
+// (InvalidArgument), then as identifyModes after the selection.
+Result<IdentificationResult> reselectModes(const FrfMatrix& frf, StabilizationDiagram diagram,
+                                           const std::vector<std::size_t>& diagramPoles,
+                                           const IdentificationOptions& options,
+                                           const IdentificationCallback& progress = {});
+
+struct SelectionFit {
+  ModalModel model;            // LSFD residues and residual terms for the chosen poles
+  FrfMatrix synthesis;         // the model's FRFs on the band's lines (responses, references, type of the data)
+  double relativeError = 0.0;  // sqrt(sum |H - H_model|^2 / sum |H|^2) over the band
+};
+
+// LSFD and synthesis for a pole set the user chose (a pole clicked in the
+// stabilization diagram added or removed): one QR of the basis and two
+// products over the band's data. Errors: as lsfd().
+Result<SelectionFit> fitSelectedPoles(const FrfMatrix& frf, const std::vector<Complex>& poles, const LsfdOptions& band);
+
+}  // namespace mozzi::core::modal

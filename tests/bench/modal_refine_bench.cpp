@@ -1,0 +1,160 @@
+// The modal refinement as a kernel (issue 19: "a refinement that costs about
+// as much as one LSFD"): on the 20-mode synthetic set (synthetic_frfs.h),
+// band 50-950 Hz (10 modes), starting from the LSFD model of the poles the
+// automatic selection of the pLSCF diagram (orders to 60) picked:
+//   BM_Lsfd_*          LSFD at those poles (residues, lower/upper residuals)
+//   BM_VarproEval_*    one variable-projection evaluation with the Jacobian
+//                      (what each Levenberg-Marquardt trial costs)
+//   BM_Refine_*        the whole refinement with standard errors
+// Counters: iterations and evaluations of the refinement, and its largest
+// relative frequency and damping errors against the generating modes.
+// Figures and commands: docs/performance/commands.md.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/modal/identification.h"
+#include "core/modal/lsfd.h"
+#include "core/modal/refine.h"
+#include "core/modal/varpro.h"
+#include "synthetic_frfs.h"
+
+namespace mozzi::core::modal {
+namespace {
+
+constexpr double kLowHz = 50.0, kHighHz = 950.0;
+
+struct Case {
+  FrfMatrix frf;
+  ModalModel start;  // LSFD model of the automatically selected poles
+  std::vector<Complex> poles;
+};
+
+Case dataset(int no, int nf, double df) {
+  Case c;
+  c.frf = bench::syntheticFrfs(no, nf, df);
+  IdentificationOptions opt;
+  opt.estimator.bandLowHz = kLowHz;
+  opt.estimator.bandHighHz = kHighHz;
+  opt.estimator.maxOrder = 60;
+  opt.refine = false;
+  auto id = identifyModes(c.frf, opt);
+  if (id) {
+    c.start = id->lsfdModel;
+    for (const auto& m : c.start.modes) c.poles.push_back(m.pole);
+  }
+  return c;
+}
+const Case& large() {
+  static const Case c = dataset(100, 20000, 0.1);  // 100 FRFs x 20,000 lines, 9,000 in the band
+  return c;
+}
+const Case& small() {
+  static const Case c = dataset(10, 5000, 0.2);  // 10 FRFs x 5,000 lines, 4,500 in the band
+  return c;
+}
+
+void runLsfd(benchmark::State& state, const Case& c) {
+  if (c.poles.empty()) {
+    state.SkipWithError("no poles selected");
+    return;
+  }
+  LsfdOptions opt;
+  opt.bandLowHz = kLowHz;
+  opt.bandHighHz = kHighHz;
+  for (auto _ : state) {
+    auto m = lsfd(c.frf, c.poles, opt);
+    if (!m) {
+      state.SkipWithError(m.error().describe().c_str());
+      return;
+    }
+    benchmark::DoNotOptimize(m->modes.data());
+  }
+  state.counters["modes"] = static_cast<double>(c.poles.size());
+}
+
+void runEvaluation(benchmark::State& state, const Case& c) {
+  Eigen::Index k0 = 0, k = 0;
+  while (k0 < c.frf.lineCount() && c.frf.frequencyHz[k0] < kLowHz) ++k0;
+  k = k0;
+  while (k < c.frf.lineCount() && c.frf.frequencyHz[k] <= kHighHz) ++k;
+  const int nm = static_cast<int>(c.poles.size());
+  auto vp = ModalVarpro::create(c.frf, {LineSegment{k0, k - k0}}, nm, true, true);
+  if (!vp || nm == 0) {
+    state.SkipWithError("variable projection not created");
+    return;
+  }
+  Vector theta(2 * nm);
+  for (int r = 0; r < nm; ++r) {
+    theta[2 * r] = poleFrequencyHz(c.poles[static_cast<std::size_t>(r)]);
+    theta[2 * r + 1] = poleZeta(c.poles[static_cast<std::size_t>(r)]);
+  }
+  for (auto _ : state) {
+    if (!vp->evaluate(theta, true)) {
+      state.SkipWithError("evaluation failed");
+      return;
+    }
+    benchmark::DoNotOptimize(vp->ssr());
+  }
+  state.counters["lines"] = static_cast<double>(k - k0);
+}
+
+void runRefine(benchmark::State& state, const Case& c) {
+  if (c.poles.empty()) {
+    state.SkipWithError("no poles selected");
+    return;
+  }
+  RefineOptions opt;
+  opt.bandLowHz = kLowHz;
+  opt.bandHighHz = kHighHz;
+  RefineResult last;
+  for (auto _ : state) {
+    auto r = refineModalModel(c.frf, c.start, opt);
+    if (!r) {
+      state.SkipWithError(r.error().describe().c_str());
+      return;
+    }
+    last = std::move(r).value();
+  }
+  double fErr = 0.0, zErr = 0.0;
+  for (const auto& m : last.model.modes) {
+    const int r = static_cast<int>(std::lround((m.frequencyHz() - 80.0) / 90.0));
+    fErr = std::max(fErr, std::abs(m.frequencyHz() - bench::syntheticFrequencyHz(r)) / bench::syntheticFrequencyHz(r));
+    zErr = std::max(zErr, std::abs(m.zeta() - bench::syntheticZeta(r)) / bench::syntheticZeta(r));
+  }
+  state.counters["iterations"] = last.iterations;
+  state.counters["evaluations"] = last.evaluations;
+  state.counters["f_rel_err"] = fErr;
+  state.counters["zeta_rel_err"] = zErr;
+}
+
+void BM_Lsfd_100x20000(benchmark::State& state) {
+  runLsfd(state, large());
+}
+BENCHMARK(BM_Lsfd_100x20000)->Unit(benchmark::kMillisecond);
+void BM_VarproEval_100x20000(benchmark::State& state) {
+  runEvaluation(state, large());
+}
+BENCHMARK(BM_VarproEval_100x20000)->Unit(benchmark::kMillisecond);
+void BM_Refine_100x20000(benchmark::State& state) {
+  runRefine(state, large());
+}
+BENCHMARK(BM_Refine_100x20000)->Unit(benchmark::kMillisecond);
+
+void BM_Lsfd_10x5000(benchmark::State& state) {
+  runLsfd(state, small());
+}
+BENCHMARK(BM_Lsfd_10x5000)->Unit(benchmark::kMillisecond);
+void BM_VarproEval_10x5000(benchmark::State& state) {
+  runEvaluation(state, small());
+}
+BENCHMARK(BM_VarproEval_10x5000)->Unit(benchmark::kMillisecond);
+void BM_Refine_10x5000(benchmark::State& state) {
+  runRefine(state, small());
+}
+BENCHMARK(BM_Refine_10x5000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace mozzi::core::modal
