@@ -93,7 +93,7 @@ std::vector<ParameterSpec> formSpecs(FormSection section) {
           real("acquisition.record_s", "Record length", "s", 0.1, 60.0, 2.0, "long enough for the response to die out"),
           real("acquisition.pre_trigger", "Pre-trigger", "", 0.0, 0.5, 0.1,
                "fraction of the record kept before the trigger (common practice 10%)"),
-          real("acquisition.trigger_level", "Trigger level", "N", 0.001, 100000.0, 10.0,
+          real("acquisition.trigger_level", "Trigger level", "N", 0.01, 100000.0, 10.0,
                "force that starts a hit (rising slope on the hammer channel)"),
           real("acquisition.frf_max_hz", "FRF band", "Hz", 0.0, 50000.0, 0.0,
                "FRF lines stored up to here; 0 = sample rate / 2.56"),

@@ -3,6 +3,7 @@
 #include <QComboBox>
 #include <QEvent>
 #include <QFormLayout>
+#include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
@@ -112,14 +113,17 @@ CampaignWizard::CampaignWizard(ProjectModel* model, QWidget* parent) : QWizard(p
   auto* acquisitionLayout = new QVBoxLayout(acquisitionBody);
   acquisition_ = new ParameterForm(cp::formSpecs(cp::FormSection::Acquisition), acquisitionBody);
   acquisition_->setObjectName(QStringLiteral("wizardAcquisitionForm"));
-  station_ = new ParameterForm(acquisitionBody);
+  stationBox_ = new QGroupBox(acquisitionBody);
+  auto* stationLayout = new QVBoxLayout(stationBox_);
+  station_ = new ParameterForm(stationBox_);
+  stationLayout->addWidget(station_);
   station_->setObjectName(QStringLiteral("wizardStationForm"));
   problem_ = new QLabel(acquisitionBody);
   problem_->setObjectName(QStringLiteral("wizardProblem"));
   problem_->setWordWrap(true);
   problem_->setStyleSheet(QStringLiteral("QLabel { color: #b3261e; }"));
   acquisitionLayout->addWidget(acquisition_);
-  acquisitionLayout->addWidget(station_);
+  acquisitionLayout->addWidget(stationBox_);
   acquisitionLayout->addWidget(problem_);
   acquisitionLayout->addStretch(1);
   makePage(this, AcquisitionPage, QStringLiteral("wizardAcquisitionPage"), &intro_[5], acquisitionBody);
@@ -205,6 +209,12 @@ void CampaignWizard::rebuildFromVirtualSpecimen() {
     auto* form = new ParameterForm(cp::formSpecs(cp::FormSection::Channel));
     form->setObjectName(QStringLiteral("wizardChannel%1").arg(c));
     note(form->setValues(cp::formValues(*base_, cp::FormSection::Channel, c)));
+    if (base_->channels[c].roving) {
+      if (auto* dof = qobject_cast<QLineEdit*>(form->editor("channel.dof"))) {
+        dof->setEnabled(false);
+        dof->setPlaceholderText(tr("roving: the point being measured"));
+      }
+    }
     channels_.push_back(form);
     const auto& ch = base_->channels[c];
     channelTabs_->addTab(form, tr("AI%1: %2").arg(ch.input).arg(QString::fromStdString(ch.name)));
@@ -340,6 +350,8 @@ void CampaignWizard::retranslate() {
     if (auto* l = qobject_cast<QLabel*>(form->labelForField(name_))) l->setText(tr("Campaign name:"));
   }
   station_->setToolTip(tr("The station driver's parameters"));
+  stationBox_->setTitle(base_ ? tr("Station parameters (%1)").arg(QString::fromStdString(base_->driver))
+                              : tr("Station parameters"));
 }
 
 }  // namespace views

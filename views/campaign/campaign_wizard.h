@@ -15,6 +15,7 @@
 #include "devices/campaign/campaign_definition.h"
 
 class QComboBox;
+class QGroupBox;
 class QLabel;
 class QLineEdit;
 class QListWidget;
@@ -85,6 +86,7 @@ class CampaignWizard : public QWizard {
   std::vector<ParameterForm*> channels_;
   ParameterForm* acquisition_ = nullptr;
   ParameterForm* station_ = nullptr;
+  QGroupBox* stationBox_ = nullptr;
   QLabel* problem_ = nullptr;
   std::vector<QLabel*> intro_;
 };

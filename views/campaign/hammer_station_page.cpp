@@ -4,6 +4,7 @@
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
 #include <qwt_plot_grid.h>
+#include <qwt_text.h>
 #include <QAction>
 #include <QApplication>
 #include <QCheckBox>
@@ -53,6 +54,16 @@ QString stateName(cp::EngineState state) {
     case cp::EngineState::Finished: return HammerStationPage::tr("Campaign finished");
   }
   return QString();
+}
+
+// Axis titles in the page's normal font (Qwt's default is large and bold:
+// too big for the traces at 1280x800).
+void setAxisText(QwtPlot* plot, int axis, const QString& text) {
+  QwtText title(text);
+  QFont f = plot->font();
+  f.setBold(false);
+  title.setFont(f);
+  plot->setAxisTitle(axis, title);
 }
 
 QString dofText(const core::Dof& dof) {
@@ -125,12 +136,15 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   verdict_->setFont(big);
   verdict_->setAlignment(Qt::AlignCenter);
   verdict_->setWordWrap(true);
-  verdict_->setMinimumHeight(QFontMetrics(big).height() * 2);
+  // Fixed heights: a new verdict must not relayout the page (and so re-render
+  // every plot) while a campaign runs.
+  verdict_->setFixedHeight(QFontMetrics(big).lineSpacing() * 2 + 12);
   verdict_->setAutoFillBackground(true);
   verdictDetail_ = new QLabel(this);
   verdictDetail_->setObjectName(QStringLiteral("hammerVerdictDetail"));
   verdictDetail_->setAlignment(Qt::AlignCenter);
   verdictDetail_->setWordWrap(true);
+  verdictDetail_->setFixedHeight(QFontMetrics(font()).lineSpacing() * 2 + 4);
   trigger_ = new QLabel(this);
   trigger_->setObjectName(QStringLiteral("hammerTrigger"));
   trigger_->setAlignment(Qt::AlignCenter);
@@ -139,9 +153,11 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   stateLabel_ = new QLabel(this);
   stateLabel_->setObjectName(QStringLiteral("hammerState"));
   stateLabel_->setWordWrap(true);
+  stateLabel_->setFixedHeight(QFontMetrics(font()).lineSpacing() * 2 + 4);
   station_ = new QLabel(this);
   station_->setObjectName(QStringLiteral("hammerStation"));
   station_->setWordWrap(true);
+  station_->setFixedHeight(QFontMetrics(font()).lineSpacing() * 2 + 4);
   banner_ = new QLabel(this);
   banner_->setObjectName(QStringLiteral("hammerBanner"));
   banner_->setWordWrap(true);
@@ -183,7 +199,7 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   traces_->setObjectName(QStringLiteral("hammerTraces"));
   traces_->setCanvasBackground(Qt::white);
   traces_->enableAxis(QwtPlot::yRight, true);
-  traces_->setMinimumHeight(150);
+  traces_->setMinimumHeight(190);
   auto* grid = new QwtPlotGrid;
   grid->setMajorPen(QColor(0, 0, 0, 40), 0.0, Qt::DotLine);
   grid->attach(traces_);
@@ -203,8 +219,14 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   auto* leftSplit = new QSplitter(Qt::Vertical, left);
   leftSplit->addWidget(traces_);
   leftSplit->addWidget(frf_);
-  leftSplit->setStretchFactor(0, 2);
-  leftSplit->setStretchFactor(1, 3);
+  leftSplit->setStretchFactor(0, 1);
+  leftSplit->setStretchFactor(1, 1);
+  frfHint_ = new QLabel(left);
+  frfHint_->setObjectName(QStringLiteral("hammerFrfHint"));
+  frfHint_->setAlignment(Qt::AlignCenter);
+  frfHint_->setWordWrap(true);
+  leftSplit->addWidget(frfHint_);
+  frf_->hide();  // until the point has an accepted hit
   leftLayout->addWidget(leftSplit, 1);
 
   // --- right: progress over the mesh, actions, log --------------------------------
@@ -214,6 +236,7 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   progressLabel_ = new QLabel(right);
   progressLabel_->setObjectName(QStringLiteral("hammerProgressText"));
   progressLabel_->setWordWrap(true);
+  progressLabel_->setFixedHeight(QFontMetrics(font()).lineSpacing() * 2 + 4);
   progress_ = new QProgressBar(right);
   progress_->setObjectName(QStringLiteral("hammerProgress"));
   progress_->setRange(0, 1000);
@@ -225,6 +248,10 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   points_->setSelectionMode(QAbstractItemView::SingleSelection);
   points_->verticalHeader()->setVisible(false);
   points_->horizontalHeader()->setStretchLastSection(true);
+  for (int c = 0; c < 3; ++c) points_->horizontalHeader()->setSectionResizeMode(c, QHeaderView::ResizeToContents);
+  points_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  points_->setWordWrap(false);
+  points_->setTextElideMode(Qt::ElideRight);
   points_->setFocusPolicy(Qt::NoFocus);
   points_->setMinimumHeight(140);
   rightLayout->addWidget(progressLabel_);
@@ -265,6 +292,8 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   log_->setObjectName(QStringLiteral("hammerLog"));
   log_->setFocusPolicy(Qt::NoFocus);
   log_->setMinimumHeight(60);
+  log_->setWordWrap(true);
+  log_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   rightLayout->addWidget(log_, 1);
 
   auto* split = new QSplitter(Qt::Horizontal, this);
@@ -282,11 +311,11 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   setFocusPolicy(Qt::StrongFocus);
 
   // --- wiring ------------------------------------------------------------------
-  connect(session_, &CampaignSession::stateChanged, this, &HammerStationPage::onState);
   connect(session_, &CampaignSession::verdictReady, this, &HammerStationPage::onVerdict);
   connect(session_, &CampaignSession::hitCommitted, this, &HammerStationPage::onCommitted);
   connect(session_, &CampaignSession::runningFrf, this, &HammerStationPage::onRunningFrf);
   connect(session_, &CampaignSession::progressChanged, this, &HammerStationPage::onProgress);
+  connect(session_, &CampaignSession::stateChanged, this, &HammerStationPage::onState);
   connect(session_, &CampaignSession::finished, this, &HammerStationPage::onFinished);
   connect(session_, &CampaignSession::engineError, this, [this](const QString& message) {
     showBanner(message);
@@ -303,6 +332,10 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   connect(ctx_.model, &ProjectModel::campaignsChanged, this, [this] { reloadCampaigns(); });
   connect(campaigns_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] { updateActions(); });
   connect(points_, &QTableWidget::itemSelectionChanged, this, [this] { updateActions(); });
+  connect(responseChannel_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
+    shownGeneration_ = 0;
+    retranslate();
+  });
 
   refresh_ = new QTimer(this);
   refresh_->setInterval(kRefreshMs);
@@ -397,20 +430,24 @@ bool HammerStationPage::startCampaign() {
   const QSignalBlocker block(responseChannel_);
   responseChannel_->clear();
   responseChannels_.clear();
+  responseUnits_.clear();
   for (std::size_t c = 0; c < def.channels.size(); ++c) {
     if (static_cast<int>(c) == forceChannel_) continue;
     responseChannels_.push_back(static_cast<int>(c));
     responseChannel_->addItem(QString::fromStdString(def.channels[c].name));
+    responseUnits_ << QString::fromStdString(def.channels[c].transducer.unit);
   }
-  traces_->setAxisTitle(
-      QwtPlot::yLeft,
-      tr("Force [%1]")
-          .arg(QString::fromStdString(def.channels[static_cast<std::size_t>(forceChannel_)].transducer.unit)));
+  setAxisText(traces_, QwtPlot::yLeft,
+              tr("Force [%1]")
+                  .arg(QString::fromStdString(def.channels[static_cast<std::size_t>(forceChannel_)].transducer.unit)));
   frf_->setFrfs(nullptr);
+  frf_->hide();
+  frfHint_->show();
   showingRecord_ = false;
   log(tr("Campaign started on %1").arg(QString::fromStdString(def.driver)));
   retranslate();
   updateActions();
+  setFocus();  // the keys act on the page, not on a field that had the focus
   return true;
 }
 
@@ -536,7 +573,7 @@ void HammerStationPage::refreshTraces() {
     (*time)[i] = static_cast<double>(live.firstSample + i) / live.sampleRateHz;
   forceCurve_->setData(new VectorSeries(time, force));
   if (responseColumn >= 0) responseCurve_->setData(new VectorSeries(time, column(live.blocks, responseColumn)));
-  traces_->setAxisTitle(QwtPlot::xBottom, tr("Time since arming [s]"));
+  setAxisText(traces_, QwtPlot::xBottom, tr("Time since arming [s]"));
   traces_->replot();
   ++traceRefreshes_;
 }
@@ -554,7 +591,7 @@ void HammerStationPage::showRecordTraces(const core::signal::TimeRecord& record)
   if (r >= 0 && r < static_cast<int>(responseChannels_.size()) && responseChannels_[r] < record.samples.cols())
     responseCurve_->setData(
         new VectorSeries(time, std::make_shared<core::Vector>(record.samples.col(responseChannels_[r]))));
-  traces_->setAxisTitle(QwtPlot::xBottom, tr("Time in the hit's record [s]"));
+  setAxisText(traces_, QwtPlot::xBottom, tr("Time in the hit's record [s]"));
   traces_->replot();
   ++traceRefreshes_;
 }
@@ -562,7 +599,7 @@ void HammerStationPage::showRecordTraces(const core::signal::TimeRecord& record)
 void HammerStationPage::onState(cp::EngineState state, const QString& message) {
   const bool newArm = state == cp::EngineState::Armed && state_ != cp::EngineState::Armed;
   state_ = state;
-  stateLabel_->setText(message.isEmpty() ? stateName(state) : stateName(state) + QStringLiteral(" — ") + message);
+  stateLabel_->setText(stateName(state));
   if (newArm) {
     showingRecord_ = false;
     shownGeneration_ = 0;
@@ -616,6 +653,10 @@ void HammerStationPage::onRunningFrf(const cp::RunningFrfEvent& e) {
   const int response = std::max(0, frf_->currentResponse());
   const int reference = std::max(0, frf_->currentReference());
   frf_->setFrfs(e.frf);
+  if (!frf_->isVisible()) {
+    frfHint_->hide();
+    frf_->show();
+  }
   frf_->showPair(response, reference);
   pointTitle_->setText(tr("Point %1 (%2): running FRF of %n accepted hit(s)", nullptr, e.hits)
                            .arg(e.position + 1)
@@ -651,7 +692,7 @@ void HammerStationPage::onProgress(const cp::EngineProgress& p) {
       status = tr("done");
       background = QColor(214, 240, 219);
     } else if (current) {
-      status = tr("NEXT: measuring");
+      status = tr("measuring now");
       background = QColor(255, 221, 87);
     } else {
       status = pt.attempts > 0 ? tr("started") : tr("to do");
@@ -675,7 +716,11 @@ void HammerStationPage::onProgress(const cp::EngineProgress& p) {
   }
   if (pointChanged && p.current) {
     points_->scrollToItem(points_->item(*p.current, 0), QAbstractItemView::PositionAtCenter);
-    if (!showingRecord_) frf_->setFrfs(nullptr);
+    if (!showingRecord_) {
+      frf_->setFrfs(nullptr);
+      frf_->hide();
+      frfHint_->show();
+    }
     pointTitle_->setText(tr("Point %1 (%2)").arg(*p.current + 1).arg(dofText(p.points[*p.current].dof)));
   }
   updateActions();
@@ -707,18 +752,20 @@ void HammerStationPage::retranslate() {
   autoArm_->setText(tr("Arm again after each decision"));
   autoArm_->setToolTip(tr("Applies when the campaign starts"));
   responseLabel_->setText(tr("Response:"));
-  skipReason_->setPlaceholderText(tr("Reason for skipping or redoing a point (S skips the current point)"));
+  skipReason_->setPlaceholderText(tr("Reason for Skip or Redo"));
+  skipReason_->setToolTip(tr("Type the reason, then S skips the current point or R measures the selected point again"));
   points_->setHorizontalHeaderLabels({tr("Point"), tr("DOF"), tr("Hits"), tr("Status")});
   traces_->setTitle(QString());
   forceCurve_->setTitle(tr("Force"));
   responseCurve_->setTitle(responseChannel_->currentText().isEmpty() ? tr("Response")
                                                                      : responseChannel_->currentText());
-  traces_->setAxisTitle(QwtPlot::yRight, tr("Response [EU]"));
-  if (traces_->axisTitle(QwtPlot::yLeft).isEmpty()) traces_->setAxisTitle(QwtPlot::yLeft, tr("Force [N]"));
+  setAxisText(traces_, QwtPlot::yRight, tr("Response [EU]"));
+  if (traces_->axisTitle(QwtPlot::yLeft).isEmpty()) setAxisText(traces_, QwtPlot::yLeft, tr("Force [N]"));
   if (traces_->axisTitle(QwtPlot::xBottom).isEmpty())
-    traces_->setAxisTitle(QwtPlot::xBottom, tr("Time since arming [s]"));
+    setAxisText(traces_, QwtPlot::xBottom, tr("Time since arming [s]"));
   if (!state_) stateLabel_->setText(session_->isRunning() ? QString() : tr("Not started: choose a campaign, press F5"));
   if (station_->text().isEmpty()) station_->setText(tr("Station: not connected"));
+  frfHint_->setText(tr("The running FRF and coherence of the point appear after its first accepted hit."));
   if (pointTitle_->text().isEmpty()) pointTitle_->setText(tr("No point yet"));
   if (verdictHeadline_.isEmpty()) verdictDetail_->setText(tr("The verdict of each hit appears here."));
 }

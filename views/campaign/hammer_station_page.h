@@ -17,6 +17,7 @@
 
 #include <QPointer>
 #include <QString>
+#include <QStringList>
 #include <QWidget>
 #include <optional>
 
@@ -116,6 +117,7 @@ class HammerStationPage : public QWidget {
   QwtPlotCurve* forceCurve_ = nullptr;
   QwtPlotCurve* responseCurve_ = nullptr;
   FrfPlot* frf_ = nullptr;
+  QLabel* frfHint_ = nullptr;
   QProgressBar* progress_ = nullptr;
   QLabel* progressLabel_ = nullptr;
   QTableWidget* points_ = nullptr;
@@ -139,6 +141,7 @@ class HammerStationPage : public QWidget {
   int traceRefreshes_ = 0;
   int forceChannel_ = 0;
   std::vector<int> responseChannels_;
+  QStringList responseUnits_;
   QString verdictHeadline_;
 };
 
