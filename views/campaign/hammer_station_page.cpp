@@ -20,6 +20,7 @@
 #include <QListWidget>
 #include <QProgressBar>
 #include <QSplitter>
+#include <QStackedWidget>
 #include <QTableWidget>
 #include <QTime>
 #include <QTimer>
@@ -218,15 +219,19 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   frf_->setMinimumHeight(220);
   auto* leftSplit = new QSplitter(Qt::Vertical, left);
   leftSplit->addWidget(traces_);
-  leftSplit->addWidget(frf_);
   leftSplit->setStretchFactor(0, 1);
   leftSplit->setStretchFactor(1, 1);
+  // The FRF and a hint in one stack: switching between them does not
+  // relayout the page.
   frfHint_ = new QLabel(left);
   frfHint_->setObjectName(QStringLiteral("hammerFrfHint"));
   frfHint_->setAlignment(Qt::AlignCenter);
   frfHint_->setWordWrap(true);
-  leftSplit->addWidget(frfHint_);
-  frf_->hide();  // until the point has an accepted hit
+  frfStack_ = new QStackedWidget(left);
+  frfStack_->addWidget(frfHint_);
+  frfStack_->addWidget(frf_);
+  leftSplit->addWidget(frfStack_);
+
   leftLayout->addWidget(leftSplit, 1);
 
   // --- right: progress over the mesh, actions, log --------------------------------
@@ -441,8 +446,7 @@ bool HammerStationPage::startCampaign() {
               tr("Force [%1]")
                   .arg(QString::fromStdString(def.channels[static_cast<std::size_t>(forceChannel_)].transducer.unit)));
   frf_->setFrfs(nullptr);
-  frf_->hide();
-  frfHint_->show();
+  frfStack_->setCurrentWidget(frfHint_);
   showingRecord_ = false;
   log(tr("Campaign started on %1").arg(QString::fromStdString(def.driver)));
   retranslate();
@@ -653,10 +657,7 @@ void HammerStationPage::onRunningFrf(const cp::RunningFrfEvent& e) {
   const int response = std::max(0, frf_->currentResponse());
   const int reference = std::max(0, frf_->currentReference());
   frf_->setFrfs(e.frf);
-  if (!frf_->isVisible()) {
-    frfHint_->hide();
-    frf_->show();
-  }
+  frfStack_->setCurrentWidget(frf_);
   frf_->showPair(response, reference);
   pointTitle_->setText(tr("Point %1 (%2): running FRF of %n accepted hit(s)", nullptr, e.hits)
                            .arg(e.position + 1)
@@ -718,8 +719,7 @@ void HammerStationPage::onProgress(const cp::EngineProgress& p) {
     points_->scrollToItem(points_->item(*p.current, 0), QAbstractItemView::PositionAtCenter);
     if (!showingRecord_) {
       frf_->setFrfs(nullptr);
-      frf_->hide();
-      frfHint_->show();
+      frfStack_->setCurrentWidget(frfHint_);
     }
     pointTitle_->setText(tr("Point %1 (%2)").arg(*p.current + 1).arg(dofText(p.points[*p.current].dof)));
   }
@@ -759,7 +759,11 @@ void HammerStationPage::retranslate() {
   forceCurve_->setTitle(tr("Force"));
   responseCurve_->setTitle(responseChannel_->currentText().isEmpty() ? tr("Response")
                                                                      : responseChannel_->currentText());
-  setAxisText(traces_, QwtPlot::yRight, tr("Response [EU]"));
+  {
+    const int r = responseChannel_->currentIndex();
+    const QString unit = r >= 0 && r < responseUnits_.size() ? responseUnits_[r] : tr("EU");
+    setAxisText(traces_, QwtPlot::yRight, tr("Response [%1]").arg(unit));
+  }
   if (traces_->axisTitle(QwtPlot::yLeft).isEmpty()) setAxisText(traces_, QwtPlot::yLeft, tr("Force [N]"));
   if (traces_->axisTitle(QwtPlot::xBottom).isEmpty())
     setAxisText(traces_, QwtPlot::xBottom, tr("Time since arming [s]"));

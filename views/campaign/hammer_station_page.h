@@ -31,6 +31,7 @@ class QLabel;
 class QLineEdit;
 class QListWidget;
 class QProgressBar;
+class QStackedWidget;
 class QTableWidget;
 class QTimer;
 class QToolButton;
@@ -118,6 +119,7 @@ class HammerStationPage : public QWidget {
   QwtPlotCurve* responseCurve_ = nullptr;
   FrfPlot* frf_ = nullptr;
   QLabel* frfHint_ = nullptr;
+  QStackedWidget* frfStack_ = nullptr;
   QProgressBar* progress_ = nullptr;
   QLabel* progressLabel_ = nullptr;
   QTableWidget* points_ = nullptr;

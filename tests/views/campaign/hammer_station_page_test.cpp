@@ -4,7 +4,8 @@
 // point, a simulated hand that double-hits a third of the time), then at
 // the page with the keyboard only: A arms, the simulated hand hits, a double
 // hit is rejected with Backspace, a clean hit accepted with Space, point
-// after point to the end. Then the project is read back through the
+// after point; the first point is redone (R) and a fourth one skipped with
+// a reason (S). Then the project is read back through the
 // ProjectStore: the hits (accepted and rejected, with the reasons) and the FRF
 // set tied to the campaign, which must equal the FRFs core computes from the
 // stored hits (devices::campaign::computeCampaignFrf) bit for bit. An
@@ -161,11 +162,16 @@ void HammerStationPageTest::wholeCampaignFromTheKeyboard() {
     for (std::size_t c = 1; c < base->channels.size() && wanted.size() < kPoints; ++c)
       wanted.push_back(QString::fromStdString(mozzi::core::formatDof(base->channels[c].dof)));
     QCOMPARE(static_cast<int>(wanted.size()), kPoints);
+    int last = -1;
     for (int i = 0; i < wizard->pointList()->count(); ++i) {
       QListWidgetItem* item = wizard->pointList()->item(i);
       const bool keep = std::find(wanted.begin(), wanted.end(), item->text()) != wanted.end();
       item->setCheckState(keep ? Qt::Checked : Qt::Unchecked);
+      if (keep) last = i;
     }
+    // One more point after them, which the technician skips with a reason.
+    QVERIFY(last + 1 < wizard->pointList()->count());
+    wizard->pointList()->item(last + 1)->setCheckState(Qt::Checked);
   }
   auto* hits = qobject_cast<QSpinBox*>(wizard->excitationForm()->editor("campaign.hits_per_point"));
   QVERIFY(hits);
@@ -189,7 +195,7 @@ void HammerStationPageTest::wholeCampaignFromTheKeyboard() {
   }
   auto definition = wizard->definition();
   QVERIFY2(definition, definition ? "" : definition.error().describe().c_str());
-  QCOMPARE(static_cast<int>(definition->points.size()), kPoints);
+  QCOMPARE(static_cast<int>(definition->points.size()), kPoints + 1);
   QCOMPARE(definition->hitsPerPoint, kHits);
   QCOMPARE(definition->channels[0].transducer.serial, std::string("H-4711"));
   QCOMPARE(definition->driver, std::string("sim-hammer"));
@@ -217,7 +223,8 @@ void HammerStationPageTest::wholeCampaignFromTheKeyboard() {
   QVERIFY(waitForState(page, {cp::EngineState::Idle}, 10000));
 
   int accepted = 0, rejectedDoubleHits = 0, otherRejections = 0;
-  bool shotRejected = false, shotArmed = false;
+  bool shotRejected = false, shotArmed = false, redone = false;
+  const QString skipReason = QStringLiteral("sensor cable in the way");
   double armedMs = 0.0;
   int refreshesWhileArmed = 0;
   while (page.engineState() != cp::EngineState::Finished) {
@@ -225,6 +232,27 @@ void HammerStationPageTest::wholeCampaignFromTheKeyboard() {
     QVERIFY2(waitForState(page, {cp::EngineState::Idle, cp::EngineState::Finished}, 20000),
              qPrintable(page.stateText()));
     if (page.engineState() == cp::EngineState::Finished) break;
+    QTRY_VERIFY(page.currentPoint().has_value());
+    // Redo: once point 1 is done, the technician selects it and presses R;
+    // the engine sets its hits aside and measures it again at once.
+    if (!redone && *page.currentPoint() == 1) {
+      page.pointTable()->selectRow(0);
+      watchdog.phase = "redo (R)";
+      press(page, Qt::Key_R);
+      redone = true;
+      QTRY_COMPARE(page.currentPoint().value_or(-1), 0);
+      QTRY_COMPARE(page.pointTable()->item(0, 2)->text(), QStringLiteral("0 / %1").arg(kHits));
+      page.pointTable()->clearSelection();
+      continue;
+    }
+    // Skip: the last point, with a reason typed in the box, then S.
+    if (*page.currentPoint() == kPoints) {
+      page.skipReasonEdit()->setText(skipReason);
+      watchdog.phase = "skip (S)";
+      press(page, Qt::Key_S);
+      QVERIFY2(waitForState(page, {cp::EngineState::Finished}, 20000), qPrintable(page.stateText()));
+      break;
+    }
     QVERIFY(page.action(QStringLiteral("arm"))->isEnabled());
     watchdog.phase = "arm (A)";
     press(page, Qt::Key_A);  // arm
@@ -283,7 +311,8 @@ void HammerStationPageTest::wholeCampaignFromTheKeyboard() {
       "traces refreshed at %.1f Hz while armed; longest GUI-thread stall %.1f ms (%s), %.1f ms idle\n",
       accepted, rejectedDoubleHits, otherRejections, runSeconds, refreshHz, watchdog.worstStallMs(), watchdog.worstAt(),
       idle.worstStallMs());
-  QCOMPARE(accepted, kPoints * kHits);
+  QVERIFY(redone);
+  QCOMPARE(accepted, kPoints * kHits + kHits);  // point 1 twice (redo)
   QVERIFY2(rejectedDoubleHits >= 1, "the simulated hand (35% double hits, seed 1) double-hit at least once");
   QVERIFY(shotRejected);
   // Live blocks come every ~50 ms (the driver's default block): the traces
@@ -300,7 +329,8 @@ void HammerStationPageTest::wholeCampaignFromTheKeyboard() {
   // --- what the page shows at the end ------------------------------------------------
   QVERIFY2(page.verdictText().contains(QStringLiteral("COMPLETE")), qPrintable(page.verdictText()));
   QTableWidget* table = page.pointTable();
-  QCOMPARE(table->rowCount(), kPoints);
+  QTRY_VERIFY(table->rowCount() == kPoints + 1 && table->item(kPoints, 3) &&
+              table->item(kPoints, 3)->text() == QStringLiteral("skipped: ") + skipReason);
   for (int r = 0; r < kPoints; ++r) {
     QCOMPARE(table->item(r, 2)->text(), QStringLiteral("%1 / %2").arg(kHits).arg(kHits));
     QCOMPARE(table->item(r, 3)->text(), QStringLiteral("done"));
@@ -312,14 +342,17 @@ void HammerStationPageTest::wholeCampaignFromTheKeyboard() {
   QVERIFY(store);
   auto stored = store->hits(campaignId);
   QVERIFY(stored);
-  int storedAccepted = 0, storedDouble = 0;
+  int storedAccepted = 0, storedDouble = 0, storedRedone = 0;
   for (const auto& h : *stored) {
     if (h.accepted)
       ++storedAccepted;
     else if (h.qualityReasons.find("double") != std::string::npos)
       ++storedDouble;
+    else if (h.qualityReasons.find("redone") != std::string::npos)
+      ++storedRedone;
   }
   QCOMPARE(storedAccepted, kPoints * kHits);
+  QCOMPARE(storedRedone, kHits);  // point 1's first hits, set aside by the redo
   QCOMPARE(storedDouble, rejectedDoubleHits);
   QCOMPARE(static_cast<int>(stored->size()), accepted + rejectedDoubleHits + otherRejections);
   auto sets = store->frfSets();
@@ -335,6 +368,8 @@ void HammerStationPageTest::wholeCampaignFromTheKeyboard() {
   auto loaded = cp::loadCampaign(*store, campaignId);
   QVERIFY(loaded);
   QVERIFY(loaded->finished());
+  QVERIFY(loaded->schedule.point(kPoints).skipped);
+  QCOMPARE(loaded->schedule.point(kPoints).skipReason, skipReason.toStdString());
   auto recomputed = cp::computeCampaignFrf(*store, *loaded);
   QVERIFY(recomputed);
   QCOMPARE(recomputed->hitIds.size(), static_cast<std::size_t>(kPoints * kHits));
