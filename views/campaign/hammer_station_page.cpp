@@ -231,6 +231,8 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   frfStack_->addWidget(frfHint_);
   frfStack_->addWidget(frf_);
   leftSplit->addWidget(frfStack_);
+  frfStack_->setMinimumHeight(280);  // magnitude and coherence readable at 1280x800
+  leftSplit->setSizes({1, 1});       // half and half, whatever the hint's size
 
   leftLayout->addWidget(leftSplit, 1);
 
