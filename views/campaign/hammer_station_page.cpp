@@ -61,6 +61,7 @@ QString stateName(cp::EngineState state) {
 // too big for the traces at 1280x800).
 void setAxisText(QwtPlot* plot, int axis, const QString& text) {
   QwtText title(text);
+  title.setRenderFlags(Qt::AlignCenter | Qt::TextWordWrap);  // a long title wraps on a short plot
   QFont f = plot->font();
   f.setBold(false);
   title.setFont(f);
@@ -216,11 +217,12 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   frf_ = new FrfPlot(left);
   frf_->setObjectName(QStringLiteral("hammerFrf"));
   frf_->phasePlot()->hide();  // magnitude and coherence: what decides whether a point is good
+  // The page's normal font for the FRF's axis titles too (FrfPlot sets
+  // their text later; Qwt keeps the font).
+  for (QwtPlot* plot : {frf_->magnitudePlot(), frf_->coherencePlot()})
+    for (int axis : {QwtPlot::yLeft, QwtPlot::xBottom}) setAxisText(plot, axis, plot->axisTitle(axis).text());
   frf_->setMinimumHeight(220);
-  auto* leftSplit = new QSplitter(Qt::Vertical, left);
-  leftSplit->addWidget(traces_);
-  leftSplit->setStretchFactor(0, 1);
-  leftSplit->setStretchFactor(1, 1);
+  leftLayout->addWidget(traces_, 1);
   // The FRF and a hint in one stack: switching between them does not
   // relayout the page.
   frfHint_ = new QLabel(left);
@@ -230,11 +232,8 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   frfStack_ = new QStackedWidget(left);
   frfStack_->addWidget(frfHint_);
   frfStack_->addWidget(frf_);
-  leftSplit->addWidget(frfStack_);
+  leftLayout->addWidget(frfStack_, 1);
   frfStack_->setMinimumHeight(280);  // magnitude and coherence readable at 1280x800
-  leftSplit->setSizes({1, 1});       // half and half, whatever the hint's size
-
-  leftLayout->addWidget(leftSplit, 1);
 
   // --- right: progress over the mesh, actions, log --------------------------------
   auto* right = new QWidget(this);
