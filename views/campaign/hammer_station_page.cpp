@@ -222,7 +222,7 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   for (QwtPlot* plot : {frf_->magnitudePlot(), frf_->coherencePlot()})
     for (int axis : {QwtPlot::yLeft, QwtPlot::xBottom}) setAxisText(plot, axis, plot->axisTitle(axis).text());
   frf_->setMinimumHeight(220);
-  leftLayout->addWidget(traces_, 1);
+  leftLayout->addWidget(traces_, 2);
   // The FRF and a hint in one stack: switching between them does not
   // relayout the page.
   frfHint_ = new QLabel(left);
@@ -232,7 +232,7 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   frfStack_ = new QStackedWidget(left);
   frfStack_->addWidget(frfHint_);
   frfStack_->addWidget(frf_);
-  leftLayout->addWidget(frfStack_, 1);
+  leftLayout->addWidget(frfStack_, 3);
   frfStack_->setMinimumHeight(280);  // magnitude and coherence readable at 1280x800
 
   // --- right: progress over the mesh, actions, log --------------------------------
@@ -660,6 +660,9 @@ void HammerStationPage::onRunningFrf(const cp::RunningFrfEvent& e) {
   frf_->setFrfs(e.frf);
   frfStack_->setCurrentWidget(frf_);
   frf_->showPair(response, reference);
+  // Short axis titles: the FRF shares the column with the traces.
+  setAxisText(frf_->magnitudePlot(), QwtPlot::yLeft, tr("|H| [dB]"));
+  setAxisText(frf_->coherencePlot(), QwtPlot::yLeft, tr("Coh."));
   pointTitle_->setText(tr("Point %1 (%2): running FRF of %n accepted hit(s)", nullptr, e.hits)
                            .arg(e.position + 1)
                            .arg(dofText(e.point)));
