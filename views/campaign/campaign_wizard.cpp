@@ -76,11 +76,16 @@ CampaignWizard::CampaignWizard(ProjectModel* model, QWidget* parent) : QWizard(p
     virtual_->addItem(QString::fromStdString(e.name), QString::fromStdString(e.key));
   specimen_ = new QComboBox(specimenBody);
   specimen_->setObjectName(QStringLiteral("wizardSpecimen"));
+  driver_ = new QComboBox(specimenBody);
+  driver_->setObjectName(QStringLiteral("wizardStation"));
+  driver_->addItem(QStringLiteral("-"), QStringLiteral("sim-hammer"));
+  driver_->addItem(QStringLiteral("-"), QStringLiteral("mcc-usb1608fsplus"));
   name_ = new QLineEdit(specimenBody);
   name_->setObjectName(QStringLiteral("wizardName"));
   specimenLayout->addRow(QStringLiteral("-"), virtual_);
   specimenLayout->addRow(QStringLiteral("-"), specimen_);
   specimenLayout->addRow(QStringLiteral("-"), name_);
+  specimenLayout->addRow(QStringLiteral("-"), driver_);
   makePage(this, SpecimenPage, QStringLiteral("wizardSpecimenPage"), &intro_[0], specimenBody);
 
   // 2. Template mesh and points
@@ -133,6 +138,10 @@ CampaignWizard::CampaignWizard(ProjectModel* model, QWidget* parent) : QWizard(p
     reloadSpecimens();
   });
   connect(template_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] { fillPoints(); });
+  connect(driver_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
+    rebuildFromVirtualSpecimen();
+    retranslate();
+  });
 
   rebuildFromVirtualSpecimen();
   reloadSpecimens();
@@ -187,6 +196,13 @@ void CampaignWizard::rebuildFromVirtualSpecimen() {
   }
   base_ = std::move(def).value();
   base_->meshTemplate = devices::sim::meshTemplateKey(key);
+  // A real station: the same set-up, the DAQ's own parameters (read from
+  // the device when it is plugged in, else its defaults).
+  const std::string driver = driver_->currentData().toString().toStdString();
+  if (!driver.empty() && driver != base_->driver) {
+    base_->driver = driver;
+    base_->deviceParameters.clear();
+  }
   {
     const QSignalBlocker block(template_);
     const int index = template_->findData(QString::fromStdString(base_->meshTemplate));
@@ -329,8 +345,8 @@ void CampaignWizard::retranslate() {
   page(TransducerPage)->setTitle(tr("Transducers"));
   page(AcquisitionPage)->setTitle(tr("Acquisition and rejection rules"));
   intro_[0]->setText(
-      tr("The specimen to test and the simulated station's model of it. The campaign starts from the "
-         "set-up of the thesis for that specimen; every later page can change it."));
+      tr("The specimen to test, its model in the simulated station, and the station. The campaign starts from "
+         "the set-up of the thesis for that specimen; every later page can change it."));
   intro_[1]->setText(
       tr("The template mesh the points come from. Untick the points you will not measure; they are "
          "measured in the order shown."));
@@ -344,7 +360,10 @@ void CampaignWizard::retranslate() {
   intro_[5]->setText(
       tr("How each hit is recorded and which hits are rejected automatically; below, the station's "
          "own parameters."));
+  driver_->setItemText(0, tr("Simulated hammer station (sim-hammer)"));
+  driver_->setItemText(1, tr("MCC USB-1608FS-Plus (real DAQ)"));
   if (auto* form = qobject_cast<QFormLayout*>(specimen_->parentWidget()->layout())) {
+    if (auto* l = qobject_cast<QLabel*>(form->labelForField(driver_))) l->setText(tr("Station:"));
     if (auto* l = qobject_cast<QLabel*>(form->labelForField(virtual_))) l->setText(tr("Virtual specimen:"));
     if (auto* l = qobject_cast<QLabel*>(form->labelForField(specimen_))) l->setText(tr("Project specimen:"));
     if (auto* l = qobject_cast<QLabel*>(form->labelForField(name_))) l->setText(tr("Campaign name:"));
@@ -352,6 +371,8 @@ void CampaignWizard::retranslate() {
   station_->setToolTip(tr("The station driver's parameters"));
   stationBox_->setTitle(base_ ? tr("Station parameters (%1)").arg(QString::fromStdString(base_->driver))
                               : tr("Station parameters"));
+  stationBox_->setToolTip(station_->specs().empty() ? tr("Plug the device in to see and set its parameters")
+                                                    : QString());
 }
 
 }  // namespace views

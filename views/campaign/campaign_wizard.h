@@ -44,6 +44,7 @@ class CampaignWizard : public QWizard {
   // For tests: the widgets a user fills in.
   QComboBox* specimenBox() const { return specimen_; }
   QComboBox* virtualSpecimenBox() const { return virtual_; }
+  QComboBox* stationBox() const { return driver_; }
   QComboBox* templateBox() const { return template_; }
   QListWidget* pointList() const { return points_; }
   QLineEdit* nameEdit() const { return name_; }
@@ -76,6 +77,7 @@ class CampaignWizard : public QWizard {
 
   QComboBox* specimen_ = nullptr;
   QComboBox* virtual_ = nullptr;
+  QComboBox* driver_ = nullptr;
   QLineEdit* name_ = nullptr;
   QComboBox* template_ = nullptr;
   QLabel* templateNotes_ = nullptr;

@@ -151,6 +151,15 @@ void HammerStationPageTest::wholeCampaignFromTheKeyboard() {
   QVERIFY(armIndex >= 0);
   wizard->virtualSpecimenBox()->setCurrentIndex(armIndex);
   QCOMPARE(wizard->specimenBox()->currentData().toLongLong(), 0LL);  // added to the empty project at the end
+  // A real DAQ keeps the set-up and drops the simulator's parameters.
+  wizard->stationBox()->setCurrentIndex(wizard->stationBox()->findData(QStringLiteral("mcc-usb1608fsplus")));
+  {
+    auto real = wizard->definition();
+    QVERIFY2(real, real ? "" : real.error().describe().c_str());
+    QCOMPARE(real->driver, std::string("mcc-usb1608fsplus"));
+    QVERIFY(real->deviceParameters.count("specimen") == 0);
+  }
+  wizard->stationBox()->setCurrentIndex(wizard->stationBox()->findData(QStringLiteral("sim-hammer")));
   QVERIFY(wizard->pointList()->count() > kPoints);
   // The points: the accelerometers' own DOFs (driving points; every mode
   // shows there, while the first points of the template sit at the clamped
