@@ -119,6 +119,15 @@ const std::vector<const char*>& parameterTexts() {
       QT_TRANSLATE_NOOP("Parameters", "Slip during a camber sweep"),
       QT_TRANSLATE_NOOP("Parameters", "Gyro noise"),
       QT_TRANSLATE_NOOP("Parameters", "Moment noise"),
+      // sim-hammer on the spatial specimens (issue 15).
+      QT_TRANSLATE_NOOP("Parameters", "Hammer point"),
+      QT_TRANSLATE_NOOP("Parameters",
+                        "DOF label of the mesh the hammer strikes, e.g. 12:+Y (-Y: struck the other way); empty = the "
+                        "specimen's driving point (the thesis's hammer point)"),
+      QT_TRANSLATE_NOOP("Parameters", "Accelerometer DOFs"),
+      QT_TRANSLATE_NOOP("Parameters",
+                        "comma-separated DOF labels of the mesh for acc 1..7 in order; empty = the first DOFs of the "
+                        "mesh; inputs without a DOF read noise only"),
       // Campaign definition (devices/campaign/campaign_form.h), the new-campaign wizard's forms.
       QT_TRANSLATE_NOOP("Parameters", "Constraint"),
       QT_TRANSLATE_NOOP("Parameters", "how the specimen is held during the test (thesis §1.4)"),
