@@ -10,6 +10,8 @@
 #include <memory>
 
 #include "core/geometry/mesh_placement.h"
+#include "views/campaign/campaign_session.h"
+#include "views/campaign/hammer_station_page.h"
 #include "views/common/page_registry.h"
 #include "views/editors/mesh_editor_page.h"
 #include "views/gap/model_test_view.h"
@@ -175,6 +177,23 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                           return page;
                         },
                         /*singleton=*/false, /*openAtStart=*/false, nullptr});
+
+  registry.add(PageSpec{QStringLiteral("hammer-station"), QT_TRANSLATE_NOOP("Pages", "Hammer Station"),
+                        QT_TRANSLATE_NOOP("Pages", "Run an impact campaign point by point: arm, hit, accept or reject"),
+                        QString(), PageMenu::Tools,
+                        [](const ProjectItem& item) { return item.kind == RecordKind::Campaign; },
+                        [](const PageContext& ctx) -> QWidget* {
+                          auto* page = new views::HammerStationPage(ctx);
+                          page->setObjectName(QStringLiteral("hammerStationTab"));
+                          return page;
+                        },
+                        /*singleton=*/true, /*openAtStart=*/false,
+                        [](QWidget* page, const PageContext& ctx) {
+                          auto* station = static_cast<views::HammerStationPage*>(page);
+                          // A running campaign keeps the page: the selection cannot switch it.
+                          if (ctx.item.kind == RecordKind::Campaign && !station->session()->isRunning())
+                            station->showCampaign(ctx.item.id);
+                        }});
 }
 
 }  // namespace app
