@@ -536,7 +536,39 @@ struct FrfNoise {
   // simulated data set refits the level only (frf_noise.h, rescaleFrfNoise).
   std::vector<FrfNoiseFit> fits;
   std::shared_ptr<const std::vector<ComplexMatrix>> reference;
+  // Coherence: the relative H1 error per line (per reference, nf x no); the
+  // sigma follows from it and the FRF read, on simulated data too.
+  std::vector<Matrix> coherenceRelative;
 };
+
+// Sigma from the coherence's relative errors r (Bendat & Piersol eq. 9.65).
+// The error is relative to the true |H|, which the reading overstates on
+// average by 1 + 2 r^2 (its own noise) and, where the noise dominates (r > 1),
+// scatters down to zero: |H|^2 is taken as the larger of the line's own and
+// the median over five lines, so a reading that happens to fall near zero
+// does not get a near-zero sigma.
+std::vector<Matrix> coherenceSigma(const FrfMatrix& data, const std::vector<Matrix>& rel, double tiny) {
+  const Eigen::Index nf = data.lineCount(), no = data.responseCount();
+  std::vector<Matrix> out;
+  for (std::size_t i = 0; i < data.h.size(); ++i) {
+    Matrix s(nf, no);
+    for (Eigen::Index o = 0; o < no; ++o) {
+      const ComplexVector h = data.h[i].col(o);
+      for (Eigen::Index k = 0; k < nf; ++k) {
+        std::array<double, 5> near{};
+        int count = 0;
+        for (Eigen::Index j = std::max<Eigen::Index>(0, k - 2); j <= std::min(nf - 1, k + 2); ++j)
+          near[static_cast<std::size_t>(count++)] = std::norm(h[j]);
+        std::nth_element(near.begin(), near.begin() + count / 2, near.begin() + count);
+        const double mag2 = std::max(std::norm(h[k]), near[static_cast<std::size_t>(count / 2)]);
+        const double r = rel[i](k, o);
+        s(k, o) = std::max(r * std::sqrt(mag2 / (1.0 + 2.0 * r * r)), tiny);
+      }
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
 
 class FrfProblem final : public GapProblem {
  public:
@@ -558,7 +590,13 @@ class FrfProblem final : public GapProblem {
       misRow_[c] = static_cast<Eigen::Index>(evalDofs_.size());
       evalDofs_.push_back(core_->defs[c].other);
     }
-    if (noise_.sigma.empty()) estimateNoise();
+    if (noise_.sigma.empty()) {
+      if (noise_.source == NoiseSource::Coherence) {
+        noise_.sigma = coherenceSigma(data_, noise_.coherenceRelative, tinySigma());
+      } else {
+        estimateNoise();
+      }
+    }
   }
 
   std::string dataKind() const override { return "frf"; }
@@ -621,8 +659,8 @@ class FrfProblem final : public GapProblem {
 
   // Prediction plus noise drawn with the whitening sigma of this problem. A
   // noise model estimated from the data is estimated again from the simulated
-  // data (the bootstrap then carries the estimate's own error); a coherence,
-  // replicate or stated one is kept.
+  // data, one from the coherence re-derived from the simulated reading (the
+  // bootstrap then carries their own error); a replicate or stated one is kept.
   std::unique_ptr<GapProblem> simulated(const double* theta, int candidate, const double* phi,
                                         std::mt19937_64& rng) const override {
     std::vector<ComplexMatrix> h;
@@ -638,7 +676,9 @@ class FrfProblem final : public GapProblem {
           sim.h[i](k, o) = h[i](k, o) + Complex(s * re, s * im);
         }
     FrfNoise noise = noise_;
-    if (noise.source == NoiseSource::Estimated) noise.sigma.clear();  // refitted (its level) from the simulated lines
+    // Estimated: its level refitted from the simulated lines; coherence: the
+    // sigma re-derived from the simulated reading (the same relative errors).
+    if (noise.source == NoiseSource::Estimated || noise.source == NoiseSource::Coherence) noise.sigma.clear();
     return std::make_unique<FrfProblem>(core_, std::move(sim), resp_, refs_, std::move(noise), options_);
   }
 
@@ -1343,33 +1383,21 @@ Result<std::unique_ptr<GapProblem>> makeFrfProblem(const StructuralModel& model,
     noise.report.description = "From the coherence in the file (H1 random error, Bendat & Piersol eq. 9.65, " +
                                std::to_string(options.averages) + " averages), at least " +
                                formatNumber(100 * kCoherenceFloor, 2) + "% per component.";
+    noise.report.estimated = true;  // read from the same data: its |H| is noisy too
     for (Eigen::Index i = 0; i < ni; ++i) {
-      Matrix s(nf, no);
+      Matrix rel(nf, no);
       for (Eigen::Index o = 0; o < no; ++o) {
         double sum = 0;
-        const ComplexVector h = data.h[static_cast<std::size_t>(i)].col(o);
         for (Eigen::Index k = 0; k < nf; ++k) {
           const double g2 = std::clamp(data.coherence[static_cast<std::size_t>(i)](k, o), 1e-6, 1.0);
-          const double r = std::max(kCoherenceFloor, std::sqrt((1 - g2) / (2.0 * options.averages * g2)));
-          sum += r;
-          // The error is relative to the true |H|, which the reading
-          // overstates on average by 1 + 2 r^2 (its own noise) and, where the
-          // noise dominates (r > 1), scatters down to zero: |H|^2 is taken as
-          // the larger of the line's own and the median over five lines, so a
-          // reading that happens to fall near zero does not get a near-zero
-          // sigma.
-          std::array<double, 5> near{};
-          int count = 0;
-          for (Eigen::Index j = std::max<Eigen::Index>(0, k - 2); j <= std::min(nf - 1, k + 2); ++j)
-            near[static_cast<std::size_t>(count++)] = std::norm(h[j]);
-          std::nth_element(near.begin(), near.begin() + count / 2, near.begin() + count);
-          const double mag2 = std::max(std::norm(h[k]), near[static_cast<std::size_t>(count / 2)]);
-          s(k, o) = std::max(r * std::sqrt(mag2 / (1.0 + 2.0 * r * r)), tiny);
+          rel(k, o) = std::max(kCoherenceFloor, std::sqrt((1 - g2) / (2.0 * options.averages * g2)));
+          sum += rel(k, o);
         }
         noise.report.entries.push_back({label(i, o), "", sum / static_cast<double>(nf), 0.0, unit, 0});
       }
-      noise.sigma.push_back(s);
+      noise.coherenceRelative.push_back(rel);
     }
+    noise.sigma = coherenceSigma(data, noise.coherenceRelative, tiny);
   } else if (source == NoiseSource::Replicates) {
     noise.report.source = "replicates";
     noise.report.description = "From the scatter of " + std::to_string(options.replicates.size()) +
