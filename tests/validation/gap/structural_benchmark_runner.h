@@ -9,10 +9,12 @@
 // (tests/bench/gap_benchmark_bench.cpp).
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -561,6 +563,81 @@ inline void printNoiseRow(const std::string& name, const Summary& s) {
               s.controlNone, s.controls, pct(s.controlAttributions, s.controls), s.controlAttributions, s.controls,
               pct(s.twoBothNamed, s.twoEffects), s.twoBothNamed, s.twoEffects, 100 * s.medianSizeError,
               s.diagnoses > 0 ? s.seconds / s.diagnoses : 0.0);
+}
+
+// The case's own right answer (issues 10 and 16): a control `none`; an
+// effect case names the true effect (`effect` or `partial`); a two-effect case
+// names both at their locations; an ambiguous pair does not commit to the
+// wrong member; an out-of-catalogue case is not a clean `effect`; a
+// calibrated-group member is named with `effect`.
+inline bool answeredRight(const CaseResult& r) {
+  using core::gap::Verdict;
+  if (!r.ok) return false;
+  const bool named = r.verdict == Verdict::Effect || r.verdict == Verdict::Partial;
+  switch (r.c.kind) {
+    case CaseKind::Control: return r.verdict == Verdict::None;
+    case CaseKind::Effect: return named && r.bestEffect == r.c.effect;
+    case CaseKind::TwoEffects:
+      return named &&
+             (namedRight(r.bestEffect, r.bestLocation, r.c.effect, r.c.location) ||
+              namedRight(r.secondEffect, r.secondLocation, r.c.effect, r.c.location)) &&
+             (namedRight(r.bestEffect, r.bestLocation, r.c.effect2, r.c.location2) ||
+              namedRight(r.secondEffect, r.secondLocation, r.c.effect2, r.c.location2));
+    case CaseKind::Ambiguous:
+      return !(r.verdict == Verdict::Effect && (r.bestEffect != r.c.effect || r.bestLocation != r.c.location));
+    case CaseKind::OutOfCatalogue: return r.verdict != Verdict::Effect;
+    case CaseKind::CalibratedGroup:
+      return r.verdict == Verdict::Effect && r.bestEffect == r.c.effect && r.bestLocation == r.c.location;
+  }
+  return false;
+}
+
+// Row label of the verdict table: the case kind, and the true effect(s).
+inline std::string tableRow(const Case& c) {
+  if (c.kind == CaseKind::Control) return "control (no effect)";
+  if (c.kind == CaseKind::TwoEffects) return c.effect + " + " + c.effect2;
+  if (c.kind == CaseKind::Ambiguous) return c.modesData ? "ambiguous pair (modes)" : "ambiguous pair (FRF)";
+  if (c.kind == CaseKind::OutOfCatalogue) return "out of catalogue (absorber)";
+  if (c.kind == CaseKind::CalibratedGroup) return "calibrated-group member";
+  return c.effect;
+}
+
+// The verdicts over noise models and cases, one Markdown table: per row (case
+// kind or true effect) and noise model, right answers / cases and the
+// verdicts given (E effect, P partial, N none, A ambiguous, U unexplained,
+// I not identifiable, X failed).
+inline void printVerdictTable(const std::vector<CaseResult>& results, const std::vector<NoiseCase>& noises) {
+  std::vector<std::string> rows;
+  for (const auto& r : results)
+    if (std::find(rows.begin(), rows.end(), tableRow(r.c)) == rows.end()) rows.push_back(tableRow(r.c));
+  std::printf("\n| case |");
+  for (const auto& n : noises) std::printf(" %s |", n.name.c_str());
+  std::printf("\n|---|");
+  for (std::size_t i = 0; i < noises.size(); ++i) std::printf("---|");
+  std::printf("\n");
+  for (const auto& row : rows) {
+    std::printf("| %s |", row.c_str());
+    for (const auto& n : noises) {
+      int total = 0, right = 0;
+      std::map<char, int> letters;
+      for (const auto& r : results) {
+        if (tableRow(r.c) != row || r.c.noise.name != n.name) continue;
+        ++total;
+        if (answeredRight(r)) ++right;
+        const char* v = r.ok ? core::gap::verdictName(r.verdict) : "x";
+        ++letters[static_cast<char>(v[0] == 'n' && v[1] == 'o' && v[2] == 't' ? 'I' : std::toupper(v[0]))];
+      }
+      if (total == 0) {
+        std::printf(" |");
+        continue;
+      }
+      std::printf(" %d/%d", right, total);
+      for (const char l : std::string("EPNAUIX"))
+        if (letters.count(l)) std::printf(" %c%d", l, letters[l]);
+      std::printf(" |");
+    }
+    std::printf("\n");
+  }
 }
 
 inline void printSummary(const Summary& s) {

@@ -67,6 +67,10 @@ TEST(GapStructuralBenchmark, HiddenTruthTargets) {
   for (const auto& noise : cfg.noises) {
     if (byNoise.count(noise.name)) printNoiseRow(noise.name, summarise(byNoise[noise.name]));
   }
+  std::printf(
+      "\nVerdicts per case and noise model (right answers / cases; E effect, P partial, N none, "
+      "A ambiguous, U unexplained, I not identifiable)\n");
+  printVerdictTable(results, cfg.noises);
   const Summary s = summarise(results);
   printSummary(s);
   EXPECT_EQ(s.failures, 0);
