@@ -1,6 +1,7 @@
 #include "core/gap/diagnosis.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -483,7 +484,57 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
     ep.pairsFitted = static_cast<int>(pairs->size());
     if (!pairs->empty()) {
       const engine::PairFit& bp = pairs->front();
-      const std::size_t ia = rankOf.at(bp.a), ib = rankOf.at(bp.b);
+      std::size_t ia = rankOf.at(bp.a), ib = rankOf.at(bp.b);
+      // Each member alone, refitted from the pair's optimum with the other
+      // removed: a single fit that stopped short of its own optimum would
+      // otherwise credit the other member with the difference and name a
+      // second effect of no size. A better optimum replaces the single fit.
+      auto refitAlone = [&](std::size_t m, Eigen::Index offset) {
+        RankedEffect& e = d.ranking[m];
+        const auto q = static_cast<Eigen::Index>(alt[m].phi.size());
+        Model single(problem, theta, alt[m].candidate, alt[m].phi);
+        Eigen::VectorXd start(p + q);
+        start << bp.u.head(p), bp.u.segment(p + offset, q);
+        FitOptions fo;
+        fo.maxIterations = 60;
+        const FitResult fit = engine::fitModel(single, {engine::clipToBox(single, start)}, fo);
+        const double nllBefore = fit0.nll - 0.5 * e.likelihoodRatio;
+        if (!fit.ok || !(fit.nll < nllBefore - 1e-6 * (1.0 + std::abs(nllBefore)))) return;
+        alt[m].u = fit.u;
+        e.theta = single.thetaX(fit.u);
+        e.parameters = single.phiX(fit.u);
+        e.likelihoodRatio = std::max(0.0, 2.0 * (fit0.nll - fit.nll));
+        e.aicc = aicc(fit.nll, freeCount(theta) + freeCount(alt[m].phi), n);
+        e.chiSquare = fit.chiSquare;
+        e.fitPValue = fitP(fit.chiSquare, freeCount(alt[m].phi));
+        if (m < static_cast<std::size_t>(options.reportTop)) {
+          e.gapAfter = problem.metrics(e.theta.data(), e.candidateIndex, e.parameters.data());
+          applyHolmFlags(e.gapAfter, options.alpha);
+          e.shrinkPct = d.gapBefore.overall != 0.0 ? 100.0 * (1.0 - e.gapAfter.overall / d.gapBefore.overall) : 0.0;
+        }
+      };
+      const auto qLead = static_cast<Eigen::Index>(alt[ia].phi.size());
+      refitAlone(ia, 0);
+      refitAlone(ib, qLead);
+      // A refit may have moved a member above the leader: the ranking stays
+      // best first (the moved entry goes to the front).
+      std::size_t top = 0;
+      for (std::size_t i = 1; i < fittedCount; ++i)
+        if (d.ranking[i].likelihoodRatio > d.ranking[top].likelihoodRatio) top = i;
+      if (top != 0) {
+        const auto t = static_cast<long>(top);
+        std::rotate(d.ranking.begin(), d.ranking.begin() + t, d.ranking.begin() + t + 1);
+        std::rotate(alt.begin(), alt.begin() + t, alt.begin() + t + 1);
+        auto moved = [&](std::size_t i) { return i == top ? std::size_t{0} : (i < top ? i + 1 : i); };
+        ia = moved(ia);
+        ib = moved(ib);
+      }
+      // Members listed best single first; their sizes sit in the pair's phi
+      // as bp.a's then bp.b's.
+      std::array<std::pair<std::size_t, Eigen::Index>, 2> members{{{ia, 0}, {ib, qLead}}};
+      if (ib < ia) std::swap(members[0], members[1]);
+      ia = members[0].first;
+      ib = members[1].first;
       const double nllA = fit0.nll - 0.5 * d.ranking[ia].likelihoodRatio;
       const double nllB = fit0.nll - 0.5 * d.ranking[ib].likelihoodRatio;
       ep.rankingIndex = {static_cast<int>(ia), static_cast<int>(ib)};
@@ -500,9 +551,8 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
       const Eigen::VectorXd u = usePolished ? polished.u : bp.u;
       ep.theta = model.thetaX(u);
       const std::vector<double> phi = model.phiX(u);
-      const std::size_t qa = d.ranking[ia].candidate.parameters.size();
-      std::size_t offset = 0;
-      for (std::size_t m : {ia, ib}) {
+      for (const auto& [m, start] : members) {
+        const auto offset = static_cast<std::size_t>(start);
         RankedEffect e;
         e.candidateIndex = d.ranking[m].candidateIndex;
         e.candidate = d.ranking[m].candidate;
@@ -517,10 +567,8 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
           e.identifiable = false;
           e.note = "no covariance at the joint optimum";
         }
-        offset += q;
         ep.effects.push_back(std::move(e));
       }
-      (void)qa;
       ep.chiSquare = bp.chiSquare;
       ep.fitPValue = fitP(bp.chiSquare, freeCount(bp.phi));
       auto held = engine::heldOutImprovement(combo, theta, u0, {0, bp.phi, u});

@@ -80,6 +80,7 @@ struct CaseResult {
   std::vector<std::string> secondLocation;
   double fittedSize2 = std::nan("");
   std::string noiseSource;  // the noise model the diagnosis chose
+  std::string explanation;  // the diagnosis's paragraph
   double seconds = 0.0;
 };
 
@@ -396,6 +397,7 @@ inline CaseResult runCase(const Case& c, const BenchConfig& cfg, unsigned long l
   }
   res.ok = true;
   res.verdict = d->verdict;
+  res.explanation = d->explanation;
   res.noiseSource = d->noise.source;
   const bool two = d->verdictSet.size() == 2 && d->verdict != core::gap::Verdict::Ambiguous && d->pairFitted &&
                    d->pair.effects.size() == 2;

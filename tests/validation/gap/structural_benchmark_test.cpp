@@ -46,6 +46,17 @@ TEST(GapStructuralBenchmark, HiddenTruthTargets) {
   std::vector<CaseResult> results(cases.size());
   std::atomic<std::size_t> next{0};
   std::mutex printMutex;
+  // MOZZI_GAP_BENCH_ONLY=i runs case i alone (its index in the printed
+  // table, same seed) and prints the diagnosis's explanation: for a look at
+  // one case; the targets are not asserted then.
+  if (const char* only = std::getenv("MOZZI_GAP_BENCH_ONLY")) {
+    const auto i = static_cast<std::size_t>(std::atol(only));
+    ASSERT_LT(i, cases.size());
+    const CaseResult r = runCase(cases[i], cfg, cfg.seed + 1000 + i);
+    printCase(r);
+    std::printf("%s\n", r.explanation.c_str());
+    return;
+  }
   auto worker = [&] {
     for (std::size_t i = next++; i < cases.size(); i = next++) {
       results[i] = runCase(cases[i], cfg, cfg.seed + 1000 + i);
