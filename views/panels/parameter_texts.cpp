@@ -1,0 +1,127 @@
+// The labels and help texts of the built-in drivers' parameters, marked for
+// lupdate in the context "Parameters" (devices/ has no Qt, so its English texts
+// are listed here). ParameterForm translates them; a test checks that every
+// built-in driver's texts are in this list. A new parameter: add its label and
+// help at the end, then the lead's translation pass picks them up.
+#include "views/panels/parameter_texts.h"
+
+#include <QtGlobal>
+
+namespace mozzi {
+namespace views {
+
+const std::vector<const char*>& parameterTexts() {
+  static const std::vector<const char*> texts = {
+      QT_TRANSLATE_NOOP("Parameters", "Actuator mode"),
+      QT_TRANSLATE_NOOP("Parameters", "slow triangular ramp or sine excitation (§1.1)"),
+      QT_TRANSLATE_NOOP("Parameters", "Ramp peak force"),
+      QT_TRANSLATE_NOOP("Parameters", "the actuator applies up to 5000 N statically (§1.1)"),
+      QT_TRANSLATE_NOOP("Parameters", "Ramp period"),
+      QT_TRANSLATE_NOOP("Parameters", "one triangle -F -> +F -> -F; the generator's RAMP at 50% symmetry"),
+      QT_TRANSLATE_NOOP("Parameters", "Sine frequency"),
+      QT_TRANSLATE_NOOP("Parameters", "dynamic excitation from 1 to 45 Hz (§1.1)"),
+      QT_TRANSLATE_NOOP("Parameters", "Sine force amplitude"),
+      QT_TRANSLATE_NOOP("Parameters",
+                        "set-point amplitude; the actuator's achievable amplitude falls with frequency (§1.1)"),
+      QT_TRANSLATE_NOOP("Parameters", "Set-point scale"),
+      QT_TRANSLATE_NOOP("Parameters", "input scale of the actuator controller: 500 N/V maps +/-10 V onto +/-5000 N"),
+      QT_TRANSLATE_NOOP("Parameters", "Generator channel"),
+      QT_TRANSLATE_NOOP("Parameters", "output wired to the actuator controller's set-point input"),
+      QT_TRANSLATE_NOOP("Parameters", "On FIFO overrun"),
+      QT_TRANSLATE_NOOP("Parameters", "restart: clear the FIFO, report the gap and scan on; stop: end the session"),
+      QT_TRANSLATE_NOOP("Parameters", "Transfer timeout"),
+      QT_TRANSLATE_NOOP(
+          "Parameters",
+          "a bulk transfer that brings no data for this long ends the session (at least twice its fill time)"),
+      QT_TRANSLATE_NOOP("Parameters", "Transfer length"),
+      QT_TRANSLATE_NOOP("Parameters",
+                        "data per bulk transfer; four are queued, so about 400 ms of data are buffered on the host"),
+      QT_TRANSLATE_NOOP("Parameters", "Loop"),
+      QT_TRANSLATE_NOOP("Parameters", "start again at the end of the recording (until stop or the scan count)"),
+      QT_TRANSLATE_NOOP("Parameters", "Real-time pacing"),
+      QT_TRANSLATE_NOOP(
+          "Parameters",
+          "deliver data at the pace of the (simulated or recorded) clock; off = as fast as the consumer takes it"),
+      QT_TRANSLATE_NOOP("Parameters", "Random seed"),
+      QT_TRANSLATE_NOOP("Parameters", "same seed, same data: noise, hit timing and faults are reproducible"),
+      QT_TRANSLATE_NOOP("Parameters", "Overrun probability per block"),
+      QT_TRANSLATE_NOOP("Parameters", "each block is lost with this probability and reported as an overrun"),
+      QT_TRANSLATE_NOOP("Parameters", "Disconnect after"),
+      QT_TRANSLATE_NOOP("Parameters", "unplug the simulated device after this much data (0 = never)"),
+      QT_TRANSLATE_NOOP("Parameters", "Time out after"),
+      QT_TRANSLATE_NOOP("Parameters", "stop sending data after this much data, as a stalled transfer (0 = never)"),
+      QT_TRANSLATE_NOOP("Parameters", "Specimen"),
+      QT_TRANSLATE_NOOP(
+          "Parameters",
+          "virtual specimen with thesis modal parameters (Tables 6, 8, 11, 14, 16, 18, 19, 20; frames §2.1, §2.2)"),
+      QT_TRANSLATE_NOOP("Parameters", "Hammer tip"),
+      QT_TRANSLATE_NOOP("Parameters", "contact time pi sqrt(m/k): steel 0.3 ms, plastic 1 ms, rubber 3 ms"),
+      QT_TRANSLATE_NOOP("Parameters", "Peak force"),
+      QT_TRANSLATE_NOOP("Parameters", "nominal peak of a hit (+/-10%)"),
+      QT_TRANSLATE_NOOP("Parameters", "Time between hits"),
+      QT_TRANSLATE_NOOP("Parameters", "one hit every so many seconds"),
+      QT_TRANSLATE_NOOP("Parameters", "Force noise"),
+      QT_TRANSLATE_NOOP("Parameters", "white noise RMS on the hammer"),
+      QT_TRANSLATE_NOOP("Parameters", "Response noise"),
+      QT_TRANSLATE_NOOP("Parameters", "white noise RMS on each accelerometer"),
+      QT_TRANSLATE_NOOP("Parameters", "Double-hit probability"),
+      QT_TRANSLATE_NOOP("Parameters", "a hit rebounds (second contact at half the peak) with this probability"),
+      QT_TRANSLATE_NOOP("Parameters", "Overload probability"),
+      QT_TRANSLATE_NOOP("Parameters", "a hit is struck this many times harder than nominal with this probability"),
+      QT_TRANSLATE_NOOP("Parameters", "Overload factor"),
+      QT_TRANSLATE_NOOP("Parameters", "peak multiplier of an overloaded hit"),
+      QT_TRANSLATE_NOOP("Parameters",
+                        "virtual specimen with thesis static stiffness and twist axis (Tables 3, 4, 5, 7, 9, 10, 13)"),
+      QT_TRANSLATE_NOOP("Parameters",
+                        "up to 5000 N (§1.1); 0 = the thesis's range for the specimen (±300 N, fork B ±500 N, "
+                        "swing-arms 1000 N assumed)"),
+      QT_TRANSLATE_NOOP("Parameters", "0 -> +F -> -F -> 0"),
+      QT_TRANSLATE_NOOP("Parameters", "dynamic excitation up to 45 Hz (§1.1)"),
+      QT_TRANSLATE_NOOP("Parameters", "Sine amplitude at 1 Hz"),
+      QT_TRANSLATE_NOOP("Parameters", "falls logarithmically with frequency to 20% at 45 Hz"),
+      QT_TRANSLATE_NOOP("Parameters", "Load-cell noise"),
+      QT_TRANSLATE_NOOP("Parameters", "white noise RMS on the load cell"),
+      QT_TRANSLATE_NOOP("Parameters", "Tyre"),
+      QT_TRANSLATE_NOOP("Parameters", "one of the six thesis tyres (chapter 5, Tables 15-17)"),
+      QT_TRANSLATE_NOOP("Parameters", "Inflation pressure"),
+      QT_TRANSLATE_NOOP("Parameters", "selects the contact half-length of Table 17 (interpolated)"),
+      QT_TRANSLATE_NOOP("Parameters", "Vertical load"),
+      QT_TRANSLATE_NOOP("Parameters", "0 = the thesis test load (1500 N; 1000 N for the 12 inch tyres, §5.4)"),
+      QT_TRANSLATE_NOOP("Parameters", "Cornering stiffness"),
+      QT_TRANSLATE_NOOP("Parameters", "0 = 13 F_z /rad (assumed, core/tire/thesis_tyres.h)"),
+      QT_TRANSLATE_NOOP("Parameters", "Camber stiffness"),
+      QT_TRANSLATE_NOOP("Parameters", "0 = 0.9 F_z /rad (assumed)"),
+      QT_TRANSLATE_NOOP("Parameters", "Relaxation length"),
+      QT_TRANSLATE_NOOP("Parameters", "0 = the thesis prediction of eq. 48 for this tyre and pressure"),
+      QT_TRANSLATE_NOOP("Parameters", "Disk speed"),
+      QT_TRANSLATE_NOOP("Parameters",
+                        "forward speed of the track under the tyre; the thesis tests ran at 5 km/h (§1.9)"),
+      QT_TRANSLATE_NOOP("Parameters", "Test"),
+      QT_TRANSLATE_NOOP("Parameters",
+                        "harmonic yaw for the relaxation length (§1.9), or a steady side-slip or camber sweep"),
+      QT_TRANSLATE_NOOP("Parameters", "Yaw amplitude"),
+      QT_TRANSLATE_NOOP("Parameters", "harmonic yaw amplitude (§5.1: 1.5 deg)"),
+      QT_TRANSLATE_NOOP("Parameters", "Yaw frequencies"),
+      QT_TRANSLATE_NOOP("Parameters", "the step-increasing frequencies of §5.1; a trigger mark starts each"),
+      QT_TRANSLATE_NOOP("Parameters", "Cycles per frequency"),
+      QT_TRANSLATE_NOOP("Parameters", "about 10 cycles at each frequency (§5.1)"),
+      QT_TRANSLATE_NOOP("Parameters", "Yaw servo limit"),
+      QT_TRANSLATE_NOOP("Parameters", "the machine reaches 10 deg; 6 deg by default against arm oscillations (§1.8)"),
+      QT_TRANSLATE_NOOP("Parameters", "Camber servo limit"),
+      QT_TRANSLATE_NOOP("Parameters", "the machine reaches 54 deg; 45 deg by default (§1.8)"),
+      QT_TRANSLATE_NOOP("Parameters", "Slip sweep amplitude"),
+      QT_TRANSLATE_NOOP("Parameters", "side-slip triangle 0 -> +max -> -max -> 0"),
+      QT_TRANSLATE_NOOP("Parameters", "Camber sweep amplitude"),
+      QT_TRANSLATE_NOOP("Parameters", "camber triangle 0 -> +max -> -max -> 0"),
+      QT_TRANSLATE_NOOP("Parameters", "Sweep period"),
+      QT_TRANSLATE_NOOP("Parameters", "slow enough to be quasi-static (sigma/V is about 0.1 s at 5 km/h)"),
+      QT_TRANSLATE_NOOP("Parameters", "Camber during a slip sweep"),
+      QT_TRANSLATE_NOOP("Parameters", "Slip during a camber sweep"),
+      QT_TRANSLATE_NOOP("Parameters", "Gyro noise"),
+      QT_TRANSLATE_NOOP("Parameters", "Moment noise"),
+  };
+  return texts;
+}
+
+}  // namespace views
+}  // namespace mozzi
