@@ -43,6 +43,16 @@ TEST(GapModelabBeam, WorkedExample) {
   ASSERT_TRUE(d.ok()) << d.error().describe();
   std::printf("%s\n", core::gap::diagnosisToJson(*d).dump(1).substr(0, 20000).c_str());
   std::printf("verdict %s\n%s\n", core::gap::verdictName(d->verdict), d->explanation.c_str());
+  // Pinned (25 Nov 2026): the export has no coherence, so the noise model is
+  // estimated from the data; the calibrated geometry model stays far from the
+  // measurement (chi-square 5.07e6 on 26,943 degrees of freedom) and the best
+  // candidate (a 0.145 kg mass at hammer point 8) makes the held-out bands
+  // worse, so nothing is attributed: `unexplained`, no effect named.
+  EXPECT_EQ(d->noise.source, "estimated");
+  EXPECT_EQ(d->verdict, core::gap::Verdict::Unexplained) << d->explanation;
+  EXPECT_TRUE(d->verdictSet.empty());
+  ASSERT_FALSE(d->ranking.empty());
+  EXPECT_LT(d->ranking[0].heldOutImprovement, 0.0);
 }
 
 }  // namespace
