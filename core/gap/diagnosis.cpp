@@ -1,6 +1,7 @@
 #include "core/gap/diagnosis.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -11,6 +12,7 @@
 #include "core/gap/engine/bootstrap.h"
 #include "core/gap/engine/checks.h"
 #include "core/gap/engine/fit.h"
+#include "core/gap/engine/pairs.h"
 #include "core/gap/engine/screen.h"
 #include "core/gap/engine/statistics.h"
 
@@ -52,6 +54,11 @@ constexpr int kStartIterations = 20;
 // Random restarts for at most this many leading candidates (by the LR of the
 // deterministic starts).
 constexpr int kRestartedCandidates = 5;
+// ... and only those whose first likelihood ratio is at least this share of the
+// leader's: a candidate explaining less than a quarter of what the leader does
+// from its linear and nominal starts does not overtake it from random ones
+// (the restarts were most of a diagnosis's time on 16,000-residual problems).
+constexpr double kRestartShare = 0.25;
 // Top-two margins LR_a - LR_b above this are not simulated: under the linear-
 // Gaussian approximation the flip probability is Phi(-sqrt(D) / 2) < 0.0014.
 constexpr double kObviousMargin = 36.0;
@@ -189,6 +196,7 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
   d.chiSquare = fit0.chiSquare;
   d.dof = std::max(1, n - freeCount(theta));
   d.fitPValue = chiSquareSurvival(d.chiSquare, d.dof);
+  d.noise = problem.noiseModel();
 
   // Step 2: where (Holm over the rows of each kind).
   d.gapBefore = problem.metrics(d.calibrated.data(), -1, nullptr);
@@ -224,6 +232,22 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
   d.threshold = null->threshold;
   d.thresholdLinearised = linear;
   d.bootstrapSamples = options.bootstrapSamples;
+  // Goodness of fit of a model with `extra` free parameters beyond theta.
+  auto fitP = [&](double chi2, int extra) {
+    if (!d.fitFromBootstrap) return chiSquareSurvival(chi2, std::max(1, d.dof - extra));
+    const double z = (chi2 - (d.nullChiSquareMean - extra)) / d.nullChiSquareSd;
+    return 0.5 * std::erfc(z / std::sqrt(2.0));
+  };
+  if (d.noise.estimated && null->baselineChiSquares.size() >= 2) {
+    const auto& c = null->baselineChiSquares;
+    double mean = 0, var = 0;
+    for (double x : c) mean += x / static_cast<double>(c.size());
+    for (double x : c) var += (x - mean) * (x - mean) / static_cast<double>(c.size() - 1);
+    d.fitFromBootstrap = true;
+    d.nullChiSquareMean = mean;
+    d.nullChiSquareSd = std::sqrt(std::max(var, 2.0 * d.dof) + d.noise.chiSquareVariance);
+    d.fitPValue = fitP(d.chiSquare, 0);
+  }
 
   // Step 4: nonlinear fit of every identifiable candidate jointly with theta.
   Eigen::VectorXd rAug0;
@@ -278,7 +302,9 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
   std::stable_sort(byLr.begin(), byLr.end(), [&](std::size_t a, std::size_t b) { return firstLr[a] > firstLr[b]; });
   if (byLr.size() > static_cast<std::size_t>(kRestartedCandidates)) byLr.resize(kRestartedCandidates);
   for (std::size_t c : byLr) {
-    if (!needsRestarts[c] || options.multistarts <= 2) continue;
+    // Restarts only where they could change the verdict: candidates within
+    // a factor kRestartShare of the leader's likelihood ratio.
+    if (!needsRestarts[c] || options.multistarts <= 2 || firstLr[c] < kRestartShare * firstLr[byLr.front()]) continue;
     if (!keepGoing(0.8, "candidate restarts")) return cancelled();
     const auto& sc = screen.candidates[c];
     Model model(problem, theta, sc.index, sc.phi);
@@ -331,7 +357,7 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
     const int k = freeCount(theta) + freeCount(sc.phi);
     e.aicc = aicc(fit.nll, k, n);
     e.chiSquare = fit.chiSquare;
-    e.fitPValue = chiSquareSurvival(fit.chiSquare, std::max(1, n - k));
+    e.fitPValue = fitP(fit.chiSquare, freeCount(sc.phi));
     e.heldOutImprovement = kNaN;
     if (fit.rankDeficient) {
       e.identifiable = false;
@@ -392,6 +418,7 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
     if (!held) return held.error();
     e.heldOutImprovement = *held;
     e.gapAfter = problem.metrics(e.theta.data(), e.candidateIndex, e.parameters.data());
+    applyHolmFlags(e.gapAfter, options.alpha);
     e.shrinkPct = d.gapBefore.overall != 0.0 ? 100.0 * (1.0 - e.gapAfter.overall / d.gapBefore.overall) : 0.0;
   }
 
@@ -434,6 +461,139 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
     }
   }
 
+  // Step 4, pairs: two effects at once when the best single leaves a
+  // significant residual (or always, when asked).
+  const bool wantPairs =
+      options.pairs != DiagnosisOptions::PairMode::Never && significant && fittedCount >= 2 &&
+      d.ranking[0].identifiable &&
+      (options.pairs == DiagnosisOptions::PairMode::Always || d.ranking[0].fitPValue < options.fitAlpha);
+  if (wantPairs) {
+    if (!keepGoing(0.96, "pair fits")) return cancelled();
+    std::vector<engine::SingleFit> singles;
+    std::map<int, std::size_t> rankOf;  // candidate -> ranking index
+    for (std::size_t i = 0; i < fittedCount; ++i) {
+      rankOf[d.ranking[i].candidateIndex] = i;
+      if (!d.ranking[i].identifiable) continue;
+      singles.push_back({alt[i].candidate, alt[i].phi, alt[i].u, fit0.nll - 0.5 * d.ranking[i].likelihoodRatio});
+    }
+    auto pairs = engine::fitPairs(problem, theta, singles, options.pairLeaders,
+                                  [&](double f) { return keepGoing(0.96 + 0.03 * f, "pair fits"); });
+    if (!pairs) return pairs.error();
+    d.pairFitted = true;
+    EffectPair& ep = d.pair;
+    ep.pairsFitted = static_cast<int>(pairs->size());
+    if (!pairs->empty()) {
+      const engine::PairFit& bp = pairs->front();
+      std::size_t ia = rankOf.at(bp.a), ib = rankOf.at(bp.b);
+      // Each member alone, refitted from the pair's optimum with the other
+      // removed: a single fit that stopped short of its own optimum would
+      // otherwise credit the other member with the difference and name a
+      // second effect of no size. A better optimum replaces the single fit.
+      auto refitAlone = [&](std::size_t m, Eigen::Index offset) {
+        RankedEffect& e = d.ranking[m];
+        const auto q = static_cast<Eigen::Index>(alt[m].phi.size());
+        Model single(problem, theta, alt[m].candidate, alt[m].phi);
+        Eigen::VectorXd start(p + q);
+        start << bp.u.head(p), bp.u.segment(p + offset, q);
+        FitOptions fo;
+        fo.maxIterations = 60;
+        const FitResult fit = engine::fitModel(single, {engine::clipToBox(single, start)}, fo);
+        const double nllBefore = fit0.nll - 0.5 * e.likelihoodRatio;
+        if (!fit.ok || !(fit.nll < nllBefore - 1e-6 * (1.0 + std::abs(nllBefore)))) return;
+        alt[m].u = fit.u;
+        e.theta = single.thetaX(fit.u);
+        e.parameters = single.phiX(fit.u);
+        e.likelihoodRatio = std::max(0.0, 2.0 * (fit0.nll - fit.nll));
+        e.aicc = aicc(fit.nll, freeCount(theta) + freeCount(alt[m].phi), n);
+        e.chiSquare = fit.chiSquare;
+        e.fitPValue = fitP(fit.chiSquare, freeCount(alt[m].phi));
+        if (m < static_cast<std::size_t>(options.reportTop)) {
+          e.gapAfter = problem.metrics(e.theta.data(), e.candidateIndex, e.parameters.data());
+          applyHolmFlags(e.gapAfter, options.alpha);
+          e.shrinkPct = d.gapBefore.overall != 0.0 ? 100.0 * (1.0 - e.gapAfter.overall / d.gapBefore.overall) : 0.0;
+        }
+      };
+      const auto qLead = static_cast<Eigen::Index>(alt[ia].phi.size());
+      refitAlone(ia, 0);
+      refitAlone(ib, qLead);
+      // A refit may have moved a member above the leader: the ranking stays
+      // best first (the moved entry goes to the front).
+      std::size_t top = 0;
+      for (std::size_t i = 1; i < fittedCount; ++i)
+        if (d.ranking[i].likelihoodRatio > d.ranking[top].likelihoodRatio) top = i;
+      if (top != 0) {
+        const auto t = static_cast<long>(top);
+        std::rotate(d.ranking.begin(), d.ranking.begin() + t, d.ranking.begin() + t + 1);
+        std::rotate(alt.begin(), alt.begin() + t, alt.begin() + t + 1);
+        auto moved = [&](std::size_t i) { return i == top ? std::size_t{0} : (i < top ? i + 1 : i); };
+        ia = moved(ia);
+        ib = moved(ib);
+      }
+      // Members listed best single first; their sizes sit in the pair's phi
+      // as bp.a's then bp.b's.
+      std::array<std::pair<std::size_t, Eigen::Index>, 2> members{{{ia, 0}, {ib, qLead}}};
+      if (ib < ia) std::swap(members[0], members[1]);
+      ia = members[0].first;
+      ib = members[1].first;
+      const double nllA = fit0.nll - 0.5 * d.ranking[ia].likelihoodRatio;
+      const double nllB = fit0.nll - 0.5 * d.ranking[ib].likelihoodRatio;
+      ep.rankingIndex = {static_cast<int>(ia), static_cast<int>(ib)};
+      ep.likelihoodRatio = std::max(0.0, 2.0 * (fit0.nll - bp.nll));
+      // What each member adds beyond the other alone.
+      ep.eachRatio = {std::max(0.0, 2.0 * (nllB - bp.nll)), std::max(0.0, 2.0 * (nllA - bp.nll))};
+      ep.significant = ep.eachRatio[0] > d.threshold && ep.eachRatio[1] > d.threshold;
+      engine::ComboProblem combo(problem, {bp.a, bp.b});
+      engine::Model model(combo, theta, 0, bp.phi);
+      FitOptions fc;
+      fc.covariance = true;
+      const FitResult polished = engine::fitModel(model, {bp.u}, fc);
+      const bool usePolished = polished.ok && polished.nll <= bp.nll + 1e-9 * (1.0 + std::abs(bp.nll));
+      const Eigen::VectorXd u = usePolished ? polished.u : bp.u;
+      ep.theta = model.thetaX(u);
+      const std::vector<double> phi = model.phiX(u);
+      for (const auto& [m, start] : members) {
+        const auto offset = static_cast<std::size_t>(start);
+        RankedEffect e;
+        e.candidateIndex = d.ranking[m].candidateIndex;
+        e.candidate = d.ranking[m].candidate;
+        e.theta = ep.theta;
+        e.fitted = true;
+        const std::size_t q = e.candidate.parameters.size();
+        e.parameters.assign(phi.begin() + static_cast<long>(offset), phi.begin() + static_cast<long>(offset + q));
+        if (usePolished && polished.stdErrors.size() == static_cast<std::size_t>(p) + phi.size()) {
+          e.stdErrors.assign(polished.stdErrors.begin() + p + static_cast<long>(offset),
+                             polished.stdErrors.begin() + p + static_cast<long>(offset + q));
+        } else {
+          e.identifiable = false;
+          e.note = "no covariance at the joint optimum";
+        }
+        ep.effects.push_back(std::move(e));
+      }
+      ep.chiSquare = bp.chiSquare;
+      ep.fitPValue = fitP(bp.chiSquare, freeCount(bp.phi));
+      auto held = engine::heldOutImprovement(combo, theta, u0, {0, bp.phi, u});
+      if (!held) return held.error();
+      ep.heldOutImprovement = *held;
+      for (std::size_t m : {ia, ib}) {
+        RankedEffect& e = d.ranking[m];
+        if (e.gapAfter.entries.empty() && e.gapAfter.overall == 0.0) {
+          e.gapAfter = problem.metrics(e.theta.data(), e.candidateIndex, e.parameters.data());
+          applyHolmFlags(e.gapAfter, options.alpha);
+          e.shrinkPct = d.gapBefore.overall != 0.0 ? 100.0 * (1.0 - e.gapAfter.overall / d.gapBefore.overall) : 0.0;
+        }
+      }
+      ep.gapAfterOne = d.ranking[ia].gapAfter;
+      ep.shrinkOnePct = d.ranking[ia].shrinkPct;
+      ep.gapAfterBoth = problem.combinedMetrics(ep.theta.data(), {bp.a, bp.b}, phi.data());
+      applyHolmFlags(ep.gapAfterBoth, options.alpha);
+      ep.shrinkBothPct =
+          d.gapBefore.overall != 0.0 ? 100.0 * (1.0 - ep.gapAfterBoth.overall / d.gapBefore.overall) : 0.0;
+    }
+  }
+  const bool pairHolds = d.pairFitted && d.pair.significant && !d.pair.effects.empty() &&
+                         d.pair.effects[0].identifiable && d.pair.effects[1].identifiable &&
+                         !(std::isfinite(d.pair.heldOutImprovement) && d.pair.heldOutImprovement <= 0.0);
+
   // Step 8: verdict.
   std::ostringstream ex;
   ex << "Calibrated " << d.calibration.size() << " model parameter(s); the whitened residual chi-square is "
@@ -442,6 +602,12 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
      << formatNumber(1 - options.alpha, 3) << " quantile of the largest likelihood ratio over " << identifiable.size()
      << " identifiable candidate(s) in " << d.bootstrapSamples << " data sets simulated without an effect ("
      << (linear ? "linearised refits" : "full refits") << (null->fromCache ? ", cached" : "") << "). ";
+  if (!d.noise.description.empty()) ex << "Noise model (" << d.noise.source << "): " << d.noise.description << ' ';
+  if (d.fitFromBootstrap) {
+    ex << "The goodness of fit is judged against the baseline chi-square of the simulated data sets (mean "
+       << formatNumber(d.nullChiSquareMean, 4) << ", sd " << formatNumber(d.nullChiSquareSd, 3)
+       << "), which carries the noise estimate's own error. ";
+  }
   for (std::size_t i = 0; i < d.calibration.size(); ++i) {
     const Parameter& c = d.calibration[i];
     const double pull = c.priorSigma > 0.0 ? std::abs(d.calibrated[i] - c.nominal) / c.priorSigma : 0.0;
@@ -498,6 +664,23 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
     } else if (heldOutFails) {
       d.verdict = Verdict::Unexplained;
       ex << "It does not improve the held-out data, so it is not attributed.";
+    } else if (best.fitPValue < options.fitAlpha && pairHolds) {
+      const EffectPair& ep = d.pair;
+      d.verdict = ep.fitPValue >= options.fitAlpha ? Verdict::Effect : Verdict::Partial;
+      d.verdictSet = ep.rankingIndex;
+      ex << "After it the residual is still beyond noise (chi-square " << formatNumber(best.chiSquare, 4)
+         << ", p = " << formatNumber(best.fitPValue, 2) << "). Two effects at once: " << label(ep.effects[0].candidate)
+         << " with " << sizes(ep.effects[0]) << " and " << label(ep.effects[1].candidate) << " with "
+         << sizes(ep.effects[1]) << " (fitted together; each improves the fit given the other by a likelihood ratio of "
+         << formatNumber(ep.eachRatio[0], 4) << " and " << formatNumber(ep.eachRatio[1], 4) << " against "
+         << formatNumber(d.threshold, 3) << "). The gap is " << formatNumber(d.gapBefore.overall, 3) << " before, "
+         << formatNumber(ep.gapAfterOne.overall, 3) << " after the first alone and "
+         << formatNumber(ep.gapAfterBoth.overall, 3) << " after both (shrink " << formatNumber(ep.shrinkBothPct, 3)
+         << "%). "
+         << (d.verdict == Verdict::Effect
+                 ? "With both the residual is within noise: attributed to the two."
+                 : "Even with both the residual is beyond noise (p = " + formatNumber(ep.fitPValue, 2) +
+                       "): the two explain the gap only in part.");
     } else if (best.fitPValue < options.fitAlpha) {
       d.verdict = explained >= 0.5 ? Verdict::Partial : Verdict::Unexplained;
       if (d.verdict == Verdict::Partial) d.verdictSet = {0};

@@ -35,6 +35,14 @@ struct DiagnosisOptions {
   double flipLimit = 0.10;    // flip probability above which the top two are "ambiguous" (GAP.md: 10%)
   double fitAlpha = 0.01;     // goodness-of-fit level for "the data are still far from the model"
   int reportTop = 3;          // effects that get held-out checks, gap_after and shrink_pct
+  // Two effects at once (issue 16): Auto fits pairs when the best single
+  // effect is significant yet leaves a residual beyond noise; Always fits them
+  // whenever an effect is significant (the verdict still uses them only then);
+  // Never skips them. Pairs: each of the best `pairLeaders` singles with every
+  // other candidate the problem can combine it with.
+  enum class PairMode { Auto, Always, Never };
+  PairMode pairs = PairMode::Auto;
+  int pairLeaders = 3;
   // Called now and then with the fraction done (0..1) and the current step;
   // returning false cancels (diagnose then returns ErrorCode::Cancelled).
   // The workbench runs the diagnosis off the GUI thread and uses this.
@@ -67,6 +75,25 @@ struct RankedEffect {
   std::string note;        // why not identifiable (singular values, null direction), in words
 };
 
+// Two effects fitted jointly (issue 16). A verdict `effect` (or `partial`)
+// names both when each improves the fit beyond the attribution threshold given
+// the other and the pair fits where the best single does not.
+struct EffectPair {
+  std::vector<RankedEffect> effects;  // the two: candidate, joint sizes and standard errors (leader first)
+  std::vector<int> rankingIndex;      // their entries in Diagnosis::ranking (single fits)
+  std::vector<double> theta;          // calibration refitted with both
+  double likelihoodRatio = 0.0;       // 2 (NLL_baseline - NLL_pair)
+  std::vector<double> eachRatio;      // per member: 2 (NLL of the other alone - NLL_pair)
+  double chiSquare = 0.0;
+  double fitPValue = 1.0;
+  double heldOutImprovement = 0.0;  // relative drop of the held-out residual against the baseline
+  GapMetrics gapAfterOne;           // after the leader alone (its single fit)
+  GapMetrics gapAfterBoth;
+  double shrinkOnePct = 0.0, shrinkBothPct = 0.0;
+  bool significant = false;  // both members beyond the threshold
+  int pairsFitted = 0;       // pairs tried
+};
+
 struct Diagnosis {
   std::string dataKind;
   std::vector<Parameter> calibration;  // definitions
@@ -76,15 +103,25 @@ struct Diagnosis {
   double threshold = 0.0;              // bootstrap (1 - alpha) quantile of max LR under no effect
   bool thresholdLinearised = false;    // the bootstrap used the linearised refits
   int bootstrapSamples = 0;
-  double chiSquare = 0.0;             // baseline goodness of fit: |r|^2 of the whitened residuals
-  int dof = 0;                        // residual count minus free calibration parameters
-  double fitPValue = 1.0;             // P(chi2_dof > chiSquare)
+  double chiSquare = 0.0;  // baseline goodness of fit: |r|^2 of the whitened residuals
+  int dof = 0;             // residual count minus free calibration parameters
+  double fitPValue = 1.0;  // P(chi2_dof > chiSquare), or against the bootstrap's null (below)
+  NoiseModel noise;        // the noise model behind the whitening (issue 16)
+  // With a noise model estimated from the data, the goodness of fit is judged
+  // against the baseline chi-square of the bootstrap's simulated data sets
+  // (normal with their mean and standard deviation, at least sqrt(2 dof),
+  // plus NoiseModel::chiSquareVariance), which carries the estimate's own
+  // error; otherwise against chi2_dof.
+  bool fitFromBootstrap = false;
+  double nullChiSquareMean = 0.0, nullChiSquareSd = 0.0;
+  bool pairFitted = false;  // pairs were fitted (pair below is the best)
+  EffectPair pair;
   double flipProbability = -1.0;      // top-two ambiguity check; < 0 when not run
   bool flipEstimated = false;         // from the margin alone (LR_1 - LR_2 >= 36), not simulated
   std::string separatingMeasurement;  // where the top two differ most (ambiguous verdicts)
   std::vector<RankedEffect> ranking;  // best first
   Verdict verdict = Verdict::None;
-  std::vector<int> verdictSet;  // indices into ranking (several when ambiguous)
+  std::vector<int> verdictSet;  // indices into ranking (several when ambiguous, or two effects at once)
   std::string explanation;      // one paragraph a user can read (and the separating measurement)
 };
 

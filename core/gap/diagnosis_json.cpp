@@ -79,6 +79,52 @@ nlohmann::json effectToJson(const RankedEffect& e, double threshold) {
   return j;
 }
 
+nlohmann::json noiseToJson(const NoiseModel& n) {
+  nlohmann::json entries = nlohmann::json::array();
+  for (const auto& e : n.entries) {
+    entries.push_back({{"label", e.label},
+                       {"band", e.band.empty() ? nlohmann::json(nullptr) : nlohmann::json(e.band)},
+                       {"relative", number(e.relative)},
+                       {"floor", number(e.floor)},
+                       {"unit", e.unit},
+                       {"lines", e.lines}});
+  }
+  return {{"source", n.source}, {"estimated", n.estimated}, {"description", n.description}, {"entries", entries}};
+}
+
+nlohmann::json pairToJson(const Diagnosis& d) {
+  if (!d.pairFitted) return nullptr;
+  const EffectPair& p = d.pair;
+  nlohmann::json effects = nlohmann::json::array();
+  for (const auto& e : p.effects) {
+    nlohmann::json j{
+        {"effect", e.candidate.effect},
+        {"location", e.candidate.location},
+        {"parameters", named(e.candidate.parameters, e.parameters)},
+        {"units", nlohmann::json::object()},
+        {"std_errors", e.stdErrors.empty() ? nlohmann::json(nullptr) : named(e.candidate.parameters, e.stdErrors)}};
+    for (const auto& q : e.candidate.parameters) j["units"][q.name] = q.unit;
+    effects.push_back(j);
+  }
+  if (effects.empty()) return {{"pairs_fitted", p.pairsFitted}, {"effects", effects}};
+  return {{"pairs_fitted", p.pairsFitted},
+          {"effects", effects},
+          {"significant", p.significant},
+          {"likelihood_ratio", number(p.likelihoodRatio)},
+          {"likelihood_ratio_each", {number(p.eachRatio[0]), number(p.eachRatio[1])}},
+          {"threshold", number(d.threshold)},
+          {"chi_square", number(p.chiSquare)},
+          {"fit_p_value", number(p.fitPValue)},
+          {"held_out_improvement", number(p.heldOutImprovement)},
+          {"calibration", p.theta},
+          {"gap_before", number(d.gapBefore.overall)},
+          {"gap_after_one", number(p.gapAfterOne.overall)},
+          {"gap_after_both", number(p.gapAfterBoth.overall)},
+          {"shrink_one_pct", number(p.shrinkOnePct)},
+          {"shrink_both_pct", number(p.shrinkBothPct)},
+          {"gap_after_both_detail", metricsToJson(p.gapAfterBoth)}};
+}
+
 }  // namespace
 
 nlohmann::json metricsToJson(const GapMetrics& metrics) {
@@ -101,23 +147,30 @@ nlohmann::json diagnosisToJson(const Diagnosis& d) {
                                           {"nominal", number(d.calibration[i].nominal)},
                                           {"unit", d.calibration[i].unit}};
   }
-  return nlohmann::json{
-      {"data_kind", d.dataKind},
-      {"calibration", calibration},
-      {"goodness_of_fit", {{"chi_square", number(d.chiSquare)}, {"dof", d.dof}, {"p_value", number(d.fitPValue)}}},
-      {"gap_before", metricsToJson(d.gapBefore)},
-      {"where", groupByKind(d.where)},
-      {"verdict", verdictName(d.verdict)},
-      {"verdict_set", d.verdictSet},
-      {"threshold",
-       {{"likelihood_ratio", number(d.threshold)},
-        {"bootstrap_samples", d.bootstrapSamples},
-        {"method", d.thresholdLinearised ? "linearised" : "full_refit"}}},
-      {"flip_probability", d.flipProbability >= 0.0 ? number(d.flipProbability) : nullptr},
-      {"separating_measurement", d.separatingMeasurement},
-      {"ranking", ranking},
-      {"best", best},
-      {"explanation", d.explanation}};
+  return nlohmann::json{{"data_kind", d.dataKind},
+                        {"calibration", calibration},
+                        {"goodness_of_fit",
+                         {{"chi_square", number(d.chiSquare)},
+                          {"dof", d.dof},
+                          {"p_value", number(d.fitPValue)},
+                          {"method", d.fitFromBootstrap ? "bootstrap" : "chi_square"},
+                          {"null_mean", d.fitFromBootstrap ? number(d.nullChiSquareMean) : nlohmann::json(nullptr)},
+                          {"null_sd", d.fitFromBootstrap ? number(d.nullChiSquareSd) : nlohmann::json(nullptr)}}},
+                        {"noise_model", noiseToJson(d.noise)},
+                        {"two_effects", pairToJson(d)},
+                        {"gap_before", metricsToJson(d.gapBefore)},
+                        {"where", groupByKind(d.where)},
+                        {"verdict", verdictName(d.verdict)},
+                        {"verdict_set", d.verdictSet},
+                        {"threshold",
+                         {{"likelihood_ratio", number(d.threshold)},
+                          {"bootstrap_samples", d.bootstrapSamples},
+                          {"method", d.thresholdLinearised ? "linearised" : "full_refit"}}},
+                        {"flip_probability", d.flipProbability >= 0.0 ? number(d.flipProbability) : nullptr},
+                        {"separating_measurement", d.separatingMeasurement},
+                        {"ranking", ranking},
+                        {"best", best},
+                        {"explanation", d.explanation}};
 }
 
 }  // namespace mozzi::core::gap

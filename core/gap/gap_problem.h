@@ -44,6 +44,9 @@ struct GapEntry {
   double value = 0.0;    // the gap in the row's own measure (relative residual, % error...)
   double z = 0.0;        // value in units of its measurement uncertainty (0 when not applicable)
   bool flagged = false;  // significant after Holm correction over the rows of its kind
+  // z is a chi-square excess (residual beyond noise): only a large positive z
+  // is a gap, so the Holm test is one-sided; otherwise two-sided.
+  bool oneSided = false;
   // Named extra figures: "frequency_error_pct", "zeta_error_pct", "mac",
   // "measured", "predicted", ...
   std::vector<std::pair<std::string, double>> details;
@@ -65,6 +68,34 @@ struct OverlayCurve {
   std::vector<double> x;
   std::vector<double> measured;
   std::vector<double> predicted;
+};
+
+// The measurement noise behind the whitening (GAP.md step 0), as reported.
+struct NoiseEntry {
+  std::string label;      // what it applies to: "4+X / 1+X" (one FRF), "mode 2", "all"
+  std::string band;       // "10-120 Hz"; empty = the whole fitted band
+  double relative = 0.0;  // relative sigma per real/imaginary component (fraction of |H|)
+  double floor = 0.0;     // additive sigma per component, in the data's own unit
+  std::string unit;       // unit of `floor`
+  int lines = 0;          // lines the figures were fitted on (0: not fitted)
+};
+
+struct NoiseModel {
+  // "estimated" (fitted from the data being diagnosed), "coherence", "replicates"
+  // (scatter of repeated hits), "stated" (given by the user), "floors" (fixed
+  // sigma floors of GAP.md step 0).
+  std::string source = "stated";
+  // Fitted from the same data: the bootstrap refits it on every simulated data
+  // set, and the goodness of fit is judged against the bootstrap's own
+  // chi-square distribution (the noise estimate's error included).
+  bool estimated = false;
+  std::string description;  // one sentence: the model and how it was obtained
+  std::vector<NoiseEntry> entries;
+  // Variance the noise estimate's own error adds to the chi-square of all
+  // residuals: sum over the groups fitted separately (FRFs) of
+  // n_g^2 var(log sigma_g^2). The bootstrap refits the level only; this
+  // covers the shape (floor against relative part) too. 0 when not estimated.
+  double chiSquareVariance = 0.0;
 };
 
 class GapProblem {
@@ -94,6 +125,32 @@ class GapProblem {
 
   // The gap as a user reads it (step 2 of GAP.md), for the given parameters.
   virtual GapMetrics metrics(const double* theta, int candidate, const double* phi) const = 0;
+
+  // The noise model behind the whitened residuals.
+  virtual NoiseModel noiseModel() const { return {}; }
+
+  // Two (or more) effects at once (GAP.md step 4, "pairs"): the residuals,
+  // metrics and overlay with the candidates in `combo` all applied, their
+  // parameters concatenated in phi in the order of `combo`. Problems that
+  // cannot combine a set return false from combinable() (the default).
+  virtual bool combinable(const std::vector<int>& combo) const {
+    (void)combo;
+    return false;
+  }
+  virtual bool combinedResiduals(const double* theta, const std::vector<int>& combo, const double* phi,
+                                 double* r) const {
+    if (combo.size() == 1) return residuals(theta, combo[0], phi, r);
+    return false;
+  }
+  virtual GapMetrics combinedMetrics(const double* theta, const std::vector<int>& combo, const double* phi) const {
+    if (combo.size() == 1) return metrics(theta, combo[0], phi);
+    return {};
+  }
+  virtual std::vector<OverlayCurve> combinedOverlay(const double* theta, const std::vector<int>& combo,
+                                                    const double* phi) const {
+    if (combo.size() == 1) return overlay(theta, combo[0], phi);
+    return {};
+  }
 
   // Curves for the overlay (one per measured FRF, mode set or condition
   // series); empty when the problem has nothing to plot.

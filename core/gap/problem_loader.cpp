@@ -30,6 +30,20 @@ Result<std::unique_ptr<GapProblem>> loadStructural(const structural::StructuralM
   so.bandHighHz = options.bandHighHz;
   so.reportBands = options.reportBands;
   so.relativeFloor = options.relativeFloor;
+  so.additiveFloor = options.additiveFloor;
+  using Source = structural::StructuralOptions::NoiseSource;
+  if (options.noise == "auto") {
+    so.noise = Source::Auto;
+  } else if (options.noise == "estimated") {
+    so.noise = Source::Estimated;
+  } else if (options.noise == "coherence") {
+    so.noise = Source::Coherence;
+  } else if (options.noise == "stated") {
+    so.noise = Source::Stated;
+  } else {
+    return makeError(ErrorCode::InvalidArgument,
+                     "unknown noise model '" + options.noise + "' (auto, estimated, coherence, stated)", "--noise");
+  }
   so.averages = options.averages;
   auto file = io::uff::readFile(measuredPath);
   if (!file) return file.error();

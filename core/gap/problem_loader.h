@@ -21,8 +21,13 @@ struct LoadOptions {
   double bandLowHz = 0.0;  // fitted band (structural data)
   double bandHighHz = std::numeric_limits<double>::infinity();
   std::vector<std::pair<double, double>> reportBands;  // "where" bands; empty = octaves
-  double relativeFloor = 0.01;                         // FRF relative noise floor per component
-  int averages = 10;                                   // averages behind the coherence (noise from coherence)
+  // FRF noise model (structural::StructuralOptions::NoiseSource): "auto"
+  // (coherence when the file has it, else estimated from the data),
+  // "estimated", "coherence" or "stated" (relativeFloor and additiveFloor).
+  std::string noise = "auto";
+  double relativeFloor = 0.01;  // stated relative sigma per component
+  double additiveFloor = 0.0;   // stated additive sigma per component, in the FRF's unit
+  int averages = 10;            // averages behind the coherence (noise from coherence)
 };
 
 // The schema of a JSON model file ("mozzi-model/1", ...), or "uff" for a

@@ -57,6 +57,12 @@ QString joined(const std::vector<std::string>& items) {
   return list.join(QStringLiteral(", "));
 }
 
+// The verdict names two effects fitted together (issue 16).
+bool twoEffects(const core::gap::Diagnosis& d) {
+  return d.verdictSet.size() == 2 && d.verdict != core::gap::Verdict::Ambiguous && d.pairFitted &&
+         d.pair.effects.size() == 2;
+}
+
 QColor verdictColour(core::gap::Verdict verdict) {
   switch (verdict) {
     case core::gap::Verdict::Effect: return QColor(42, 157, 143);
@@ -397,6 +403,13 @@ void ModelTestView::showDiagnosis() {
   if (!diagnosis_) return;
   const auto& d = *diagnosis_;
   verdict_->setText(tr("Verdict: %1").arg(QString::fromLatin1(core::gap::verdictName(d.verdict))));
+  if (twoEffects(d)) {
+    // Two effects at once (issue 16): name both.
+    verdict_->setText(tr("Verdict: %1 (%2 and %3)")
+                          .arg(QString::fromLatin1(core::gap::verdictName(d.verdict)),
+                               QString::fromStdString(d.pair.effects[0].candidate.effect),
+                               QString::fromStdString(d.pair.effects[1].candidate.effect)));
+  }
   QPalette palette = verdict_->palette();
   palette.setColor(QPalette::WindowText, verdictColour(d.verdict));
   verdict_->setPalette(palette);
@@ -507,7 +520,15 @@ void ModelTestView::computeOverlays() {
     best = &d.ranking[static_cast<size_t>(d.verdictSet.front())];
   else if (!d.ranking.empty())
     best = &d.ranking.front();
-  if (best && best->candidateIndex >= 0 && best->theta.size() == d.calibrated.size()) {
+  if (twoEffects(d) && d.pair.theta.size() == d.calibrated.size()) {
+    std::vector<double> phi;
+    for (const auto& e : d.pair.effects) phi.insert(phi.end(), e.parameters.begin(), e.parameters.end());
+    after_ = diagnosed_->combinedOverlay(
+        d.pair.theta.data(), {d.pair.effects[0].candidateIndex, d.pair.effects[1].candidateIndex}, phi.data());
+    afterLabel_ = tr("model + %1 + %2")
+                      .arg(QString::fromStdString(d.pair.effects[0].candidate.effect),
+                           QString::fromStdString(d.pair.effects[1].candidate.effect));
+  } else if (best && best->candidateIndex >= 0 && best->theta.size() == d.calibrated.size()) {
     after_ = diagnosed_->overlay(best->theta.data(), best->candidateIndex, best->parameters.data());
     afterLabel_ = tr("model + %1").arg(QString::fromStdString(best->candidate.effect));
   }

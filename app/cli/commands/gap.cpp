@@ -24,7 +24,8 @@ namespace gap = core::gap;
 
 constexpr const char* kSynopsis =
     "--model MODEL --measured TEST [--band LO:HI] [--bands A:B,C:D...] [--effects a,b,...] [--json] "
-    "[--bootstrap N] [--seed S] [--multistarts N] [--noise-floor REL] [--averages N]";
+    "[--bootstrap N] [--seed S] [--multistarts N] [--noise auto|estimated|coherence|stated] [--noise-floor REL] "
+    "[--averages N] [--pairs auto|always|never]";
 
 int usage(std::ostream& err, const std::string& why) {
   err << "mozzi-cli gap: " << why << "\nUsage: mozzi-cli gap " << kSynopsis << "\n";
@@ -114,6 +115,45 @@ void printMetrics(std::ostream& out, const gap::GapMetrics& m) {
   }
 }
 
+void printNoise(std::ostream& out, const gap::NoiseModel& n) {
+  if (n.description.empty() && n.entries.empty()) return;
+  out << "\nNoise model: " << n.source << "\n  " << n.description << "\n";
+  if (n.entries.empty()) return;
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "  %-24s %-18s %-10s %-12s %s\n", "applies to", "band", "relative", "floor", "lines");
+  out << buf;
+  for (const auto& e : n.entries) {
+    const std::string floor = core::formatNumber(e.floor, 3) + (e.unit.empty() ? "" : " " + e.unit);
+    std::snprintf(buf, sizeof buf, "  %-24s %-18s %-10s %-12s %s\n", e.label.c_str(),
+                  e.band.empty() ? "(all)" : e.band.c_str(), core::formatNumber(e.relative, 3).c_str(), floor.c_str(),
+                  e.lines > 0 ? std::to_string(e.lines).c_str() : "-");
+    out << buf;
+  }
+}
+
+void printPair(std::ostream& out, const gap::Diagnosis& d) {
+  if (!d.pairFitted || d.pair.effects.size() != 2) return;
+  const auto& p = d.pair;
+  out << "\nTwo effects at once (best of " << p.pairsFitted << " pairs" << (p.significant ? "" : ", not significant")
+      << ")\n";
+  for (std::size_t m = 0; m < 2; ++m) {
+    const auto& e = p.effects[m];
+    std::string sizes;
+    for (std::size_t q = 0; q < e.candidate.parameters.size() && q < e.parameters.size(); ++q) {
+      const auto& def = e.candidate.parameters[q];
+      sizes += (sizes.empty() ? "" : ", ") + def.name + " " + core::formatNumber(e.parameters[q], 3);
+      if (q < e.stdErrors.size()) sizes += " +/- " + core::formatNumber(e.stdErrors[q], 2);
+      if (!def.unit.empty()) sizes += " " + def.unit;
+    }
+    out << "  " << e.candidate.effect << " at " << locationText(e.candidate) << ": " << sizes << " (LR given the other "
+        << core::formatNumber(p.eachRatio[m], 3) << ")\n";
+  }
+  out << "  gap " << core::formatNumber(d.gapBefore.overall, 3) << " before, "
+      << core::formatNumber(p.gapAfterOne.overall, 3) << " after one, " << core::formatNumber(p.gapAfterBoth.overall, 3)
+      << " after both (shrink " << core::formatNumber(p.shrinkBothPct, 3)
+      << "%), fit p = " << core::formatNumber(p.fitPValue, 2) << "\n";
+}
+
 void printRanking(std::ostream& out, const gap::Diagnosis& d) {
   out << "\nRanking (likelihood-ratio threshold " << core::formatNumber(d.threshold, 3) << ", bootstrap "
       << d.bootstrapSamples << ")\n";
@@ -139,7 +179,7 @@ void printRanking(std::ostream& out, const gap::Diagnosis& d) {
 
 // The option table (docs/cli/gap.md).
 const OptionSpec kSpec{
-    {"--model", "--measured", "--bands", "--effects"},
+    {"--model", "--measured", "--bands", "--effects", "--noise", "--pairs"},
     {"--json"},
     {{"--band", "analysis band in Hz, LO < HI", {{"LO", closed(0, 1e6, "Hz")}, {"HI", aboveTo(0, 1e6, "Hz")}}, ':'},
      {"--bootstrap", wholeNumber(0, 100000), "bootstrap samples"},
@@ -190,7 +230,27 @@ int gapCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   integer("--multistarts", options.multistarts);
   integer("--averages", load.averages);
   options.seed = static_cast<unsigned long long>(seed);
-  if (auto nf = parsed->number("--noise-floor"); nf && nf->has_value()) load.relativeFloor = **nf;
+  if (auto nf = parsed->number("--noise-floor"); nf && nf->has_value()) {
+    load.relativeFloor = **nf;
+    load.noise = "stated";  // a stated relative sigma replaces the estimate
+  }
+  if (auto noise = parsed->value("--noise")) {
+    if (*noise != "auto" && *noise != "estimated" && *noise != "coherence" && *noise != "stated") {
+      return usage(err, "--noise must be auto, estimated, coherence or stated (got '" + *noise + "')");
+    }
+    load.noise = *noise;
+  }
+  if (auto pairs = parsed->value("--pairs")) {
+    if (*pairs == "auto") {
+      options.pairs = gap::DiagnosisOptions::PairMode::Auto;
+    } else if (*pairs == "always") {
+      options.pairs = gap::DiagnosisOptions::PairMode::Always;
+    } else if (*pairs == "never") {
+      options.pairs = gap::DiagnosisOptions::PairMode::Never;
+    } else {
+      return usage(err, "--pairs must be auto, always or never (got '" + *pairs + "')");
+    }
+  }
 
   auto problem = gap::loadGapProblem(*model, *measured, load);
   if (!problem) return fail(err, problem.error());
@@ -214,9 +274,20 @@ int gapCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     return kExitOk;
   }
   printMetrics(out, diagnosis->gapBefore);
+  printNoise(out, diagnosis->noise);
   printRanking(out, *diagnosis);
+  printPair(out, *diagnosis);
   out << "\nVerdict: " << gap::verdictName(diagnosis->verdict);
-  if (!diagnosis->verdictSet.empty()) {
+  const bool two = diagnosis->verdictSet.size() == 2 && diagnosis->pairFitted && diagnosis->pair.effects.size() == 2 &&
+                   diagnosis->verdict != gap::Verdict::Ambiguous;
+  if (two) {
+    const auto& p = diagnosis->pair;
+    out << " - " << p.effects[0].candidate.effect << " at " << locationText(p.effects[0].candidate) << " and "
+        << p.effects[1].candidate.effect << " at " << locationText(p.effects[1].candidate) << ", gap "
+        << core::formatNumber(diagnosis->gapBefore.overall, 3) << " -> " << core::formatNumber(p.gapAfterOne.overall, 3)
+        << " -> " << core::formatNumber(p.gapAfterBoth.overall, 3) << " (shrink "
+        << core::formatNumber(p.shrinkBothPct, 3) << "%)";
+  } else if (!diagnosis->verdictSet.empty()) {
     const auto& best = diagnosis->ranking[static_cast<std::size_t>(diagnosis->verdictSet.front())];
     out << " - " << best.candidate.effect << " at " << locationText(best.candidate) << ", gap "
         << core::formatNumber(diagnosis->gapBefore.overall, 3) << " -> " << core::formatNumber(best.gapAfter.overall, 3)

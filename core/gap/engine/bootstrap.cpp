@@ -28,7 +28,7 @@ std::string cacheKey(const Model& baseline, const Screen& screen, const std::vec
   const GapProblem& problem = baseline.problem();
   std::ostringstream s;
   s.precision(17);
-  s << problem.dataKind() << '#' << problem.residualCount() << '#';
+  s << problem.dataKind() << '#' << problem.residualCount() << '#' << problem.noiseModel().source << '#';
   for (int f : problem.folds()) s << f << ',';
   s << '#';
   for (const auto& t : baseline.theta()) describe(s, t.def);
@@ -73,7 +73,9 @@ Result<NullCalibration> calibrateNull(const Model& baseline, const Eigen::Vector
   }
   NullCalibration out;
   out.mode = options.mode;
-  if (candidates.empty()) return out;
+  // Without candidates there is no threshold, but an estimated noise model
+  // still needs the baseline's null chi-square: simulate then too.
+  if (candidates.empty() && !baseline.problem().noiseModel().estimated) return out;
   const GapProblem& problem = baseline.problem();
   const std::vector<double> theta0 = baseline.thetaX(u0);
   const int p = baseline.parameterCount();
@@ -96,10 +98,16 @@ Result<NullCalibration> calibrateNull(const Model& baseline, const Eigen::Vector
     if (options.mode == NullMode::Linearised) {
       for (int c : candidates) maxRatio = std::max(maxRatio, screen.linearRatio(c, rAug));
       out.maxRatios.push_back(maxRatio);
+      // Linear refit of theta: what the calibration cannot absorb,
+      // |(I - Q Q') r|^2 (prior rows included: a handful against thousands).
+      const Eigen::VectorXd absorbed =
+          screen.basis.cols() > 0 ? Eigen::VectorXd(screen.basis.transpose() * rAug) : Eigen::VectorXd::Zero(0);
+      out.baselineChiSquares.push_back(std::max(0.0, rAug.squaredNorm() - absorbed.squaredNorm()));
       continue;
     }
     const FitResult fit0 = fitModel(base, {u0}, fo);
     if (!fit0.ok) return makeError(ErrorCode::NumericalFailure, "baseline refit failed on simulated data", where);
+    out.baselineChiSquares.push_back(fit0.chiSquare);
     for (int c : candidates) {
       const ScreenedCandidate& sc = screen.candidates[static_cast<std::size_t>(c)];
       Model model(*sim, baseline.theta(), sc.index, sc.phi);
@@ -115,7 +123,7 @@ Result<NullCalibration> calibrateNull(const Model& baseline, const Eigen::Vector
     }
     out.maxRatios.push_back(maxRatio);
   }
-  out.threshold = empiricalQuantile(out.maxRatios, 1.0 - options.alpha);
+  out.threshold = candidates.empty() ? 0.0 : empiricalQuantile(out.maxRatios, 1.0 - options.alpha);
   if (options.useCache) {
     std::lock_guard<std::mutex> lock(cacheMutex);
     cache()[key] = out;

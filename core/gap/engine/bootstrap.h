@@ -31,6 +31,9 @@ struct NullOptions {
 struct NullCalibration {
   double threshold = 0.0;
   std::vector<double> maxRatios;  // max_k LR_k per bootstrap sample
+  // Baseline chi-square |r|^2 after the (linearised or full) refit per sample:
+  // the goodness-of-fit null when the noise model is estimated from the data.
+  std::vector<double> baselineChiSquares;
   NullMode mode = NullMode::FullRefit;
   bool fromCache = false;
 };

@@ -64,7 +64,8 @@ bool Model::residuals(const double* u, double* r) const {
   if (rows_.empty()) {
     ok = problem_.residuals(theta_buf_.data(), candidate, phi, r);
     if (ok) {
-      for (int j = 0; j < problem_.residualCount(); ++j) ok = ok && std::isfinite(r[j]);
+      const int n = problem_.residualCount();
+      for (int j = 0; j < n; ++j) ok = ok && std::isfinite(r[j]);
     }
     return ok;
   }

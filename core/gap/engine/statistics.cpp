@@ -104,12 +104,20 @@ std::vector<bool> holmReject(const std::vector<double>& pValues, double alpha) {
 void applyHolmFlags(GapMetrics& metrics, double alpha) {
   std::map<std::string, std::vector<std::size_t>> byKind;
   for (std::size_t i = 0; i < metrics.entries.size(); ++i) {
-    if (metrics.entries[i].z != 0.0 && std::isfinite(metrics.entries[i].z))
-      byKind[metrics.entries[i].kind].push_back(i);
+    GapEntry& e = metrics.entries[i];
+    if (e.z != 0.0 && std::isfinite(e.z)) {
+      byKind[e.kind].push_back(i);
+    } else if (!std::isfinite(e.z)) {
+      e.flagged = false;  // no figure, no finding (issue 17: z = NaN was flagged)
+    }
   }
   for (const auto& [kind, rows] : byKind) {
     std::vector<double> p;
-    for (std::size_t i : rows) p.push_back(normalTwoSidedP(metrics.entries[i].z));
+    for (std::size_t i : rows) {
+      const GapEntry& e = metrics.entries[i];
+      // One-sided rows (chi-square excess): P(Z > z); a row better than noise is no gap.
+      p.push_back(e.oneSided ? 0.5 * std::erfc(e.z / std::sqrt(2.0)) : normalTwoSidedP(e.z));
+    }
     const auto reject = holmReject(p, alpha);
     for (std::size_t j = 0; j < rows.size(); ++j) metrics.entries[rows[j]].flagged = reject[j];
   }

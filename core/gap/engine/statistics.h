@@ -26,9 +26,11 @@ double empiricalQuantile(std::vector<double> values, double p);
 std::vector<bool> holmReject(const std::vector<double>& pValues, double alpha);
 
 // Flags the rows of `metrics` by Holm's correction over the rows of each kind,
-// with two-sided normal p-values from their z-scores. Rows with z == 0 (no
-// uncertainty available) are not tested and keep the flag the problem gave.
-// Problems may call it from metrics(); the engine applies it to gap_before.
+// with normal p-values from their z-scores (one-sided upper tail for rows
+// marked oneSided, else two-sided). Rows with z == 0 (no uncertainty
+// available) are not tested and keep the flag the problem gave; rows with a
+// non-finite z are never flagged. The one rule for "where": the engine applies
+// it with the user's alpha to gap_before and every gap_after.
 void applyHolmFlags(GapMetrics& metrics, double alpha);
 
 }  // namespace mozzi::core::gap

@@ -99,7 +99,14 @@ Result<std::string> elementName(const json& item, const std::string& where, cons
     return parseError(where, field + ".name", "expected a non-empty string");
   }
   const std::string name = item["name"].get<std::string>();
-  if (name == "damping") return parseError(where, field + ".name", "'damping' is reserved for the damping scale");
+  if (name == "damping" || name == "stiffness" || name == "mass") {
+    return parseError(where, field + ".name",
+                      "'" + name + "' is reserved (a parameter acting on it scales the whole " +
+                          (name == "damping" ? std::string("damping")
+                           : name == "mass"  ? "M"
+                                             : "K") +
+                          ")");
+  }
   if (!names.insert(name).second) return parseError(where, field + ".name", "duplicate element name '" + name + "'");
   return name;
 }
@@ -182,14 +189,15 @@ Result<void> parseParameters(const json& root, StructuralModel& model, const std
     param.name = p["name"].get<std::string>();
     if (!names.insert(param.name).second) return parseError(where, field + ".name", "duplicate parameter name");
     if (!p.contains("acts_on") || !p["acts_on"].is_array() || p["acts_on"].empty()) {
-      return parseError(where, field + ".acts_on", "expected a non-empty array of spring/mass names or \"damping\"");
+      return parseError(where, field + ".acts_on",
+                        "expected a non-empty array of spring/mass names, \"damping\", \"stiffness\" or \"mass\"");
     }
     for (std::size_t j = 0; j < p["acts_on"].size(); ++j) {
       const json& e = p["acts_on"][j];
       const std::string f = field + ".acts_on[" + std::to_string(j) + "]";
       if (!e.is_string()) return parseError(where, f, "expected a name");
       const std::string name = e.get<std::string>();
-      if (name != "damping" && elements.count(name) == 0) {
+      if (name != "damping" && name != "stiffness" && name != "mass" && elements.count(name) == 0) {
         return parseError(where, f, "unknown element '" + name + "' (not a spring or mass name)");
       }
       param.actsOn.push_back(name);

@@ -16,7 +16,9 @@
 // boundary_stiffness) and to the calibration parameters, which scale them:
 // K(theta) = K + sum_p (theta_p - 1) K_p, M(theta) likewise (K_p = the named
 // elements parameter p acts on). A parameter acting on "damping" scales C or
-// every modal damping ratio.
+// every modal damping ratio; one acting on "stiffness" or "mass" scales the
+// whole K or M (a model built from geometry whose section or material is known
+// only roughly, e.g. EI and rho A of a beam).
 
 #include <string>
 #include <string_view>
@@ -47,7 +49,7 @@ struct LumpedMass {
 
 struct ModelParameter {
   std::string name;
-  std::vector<std::string> actsOn;  // spring / mass names, or "damping"
+  std::vector<std::string> actsOn;  // spring / mass names, or "damping", "stiffness", "mass"
   double nominal = 1.0;             // scale factor of those elements
   double lower = 0.0;
   double upper = 0.0;

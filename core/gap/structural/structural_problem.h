@@ -19,7 +19,8 @@
 //   exponential_window  every pole's decay + a = 1/tau [1/s]: the FRF at
 //                       s = i omega + a
 //   sensor_misalignment response channel at o reads cos(a) x_o + sin(a) x_p,
-//                       p another DOF of the same node and kind
+//                       p another DOF of the same node and kind (tilt a in
+//                       degrees)
 //
 // Receptance of the augmented model, in the generalised coordinates of
 // model_file.h (x = T q): H(s) = T (K_q (1 + i eta) + s C_q + s^2 M_q)^-1 T^T,
@@ -47,13 +48,25 @@ struct StructuralOptions {
   double bandHighHz = std::numeric_limits<double>::infinity();
   // Bands of the "where" table; empty = octave bands over the data.
   std::vector<std::pair<double, double>> reportBands;
-  // FRF noise: relative standard deviation per real/imaginary component,
-  // sigma = |H_measured| max(relativeFloor, sqrt(1 - g^2) / (g sqrt(2 n_avg)))
-  // (the normalised random error of an H1 estimate from n_avg averages with
-  // coherence g, Bendat & Piersol, "Random data", eq. 9.65). Without coherence
-  // the floor alone.
-  double relativeFloor = 0.01;
-  int averages = 10;
+  // FRF noise (issue 16, docs/gap.md "Noise from the data"), per real and
+  // imaginary component: sigma^2 = (relative |H|)^2 + floor^2.
+  //  - Estimated: relative part and additive floor fitted per FRF (and per
+  //    band where the data show a different level) from the data's own lines
+  //    (frf_noise.h); re-estimated on every simulated data set.
+  //  - Coherence: the normalised random error of an H1 estimate from n_avg
+  //    averages with coherence g, sqrt(1 - g^2) / (g sqrt(2 n_avg)) (Bendat &
+  //    Piersol, "Random data", eq. 9.65), at least 0.1%.
+  //  - Replicates: the scatter of repeated hits (`replicates`, same layout as
+  //    the measured set, which is their mean), smoothed by the same model.
+  //  - Stated: relativeFloor and additiveFloor as given.
+  //  - Auto: coherence when the file has it, else replicates when given, else
+  //    estimated.
+  enum class NoiseSource { Auto, Estimated, Coherence, Replicates, Stated };
+  NoiseSource noise = NoiseSource::Auto;
+  double relativeFloor = 0.01;  // Stated: relative sigma per component
+  double additiveFloor = 0.0;   // Stated: additive sigma per component, in the FRF's unit
+  int averages = 10;            // Coherence: averages behind the estimate
+  std::vector<FrfMatrix> replicates;
   // Mode data (GAP.md step 0): relative sigma floors of frequency and damping;
   // shape components relative to the largest measured component.
   double frequencySigmaFloor = 0.002;

@@ -65,9 +65,19 @@ Result<std::unique_ptr<TireGapProblem>> TireGapProblem::create(TireGapModel mode
     return makeError(ErrorCode::InvalidArgument, "the cornering stiffness uncertainty must be positive", where);
   if (model.excitationHz.empty())
     return makeError(ErrorCode::InvalidArgument, "at least one excitation frequency is needed", where);
-  for (double f : model.excitationHz)
-    if (!(f > 0.0) || !std::isfinite(f))
-      return makeError(ErrorCode::InvalidArgument, "excitation frequencies must be positive", where);
+  if (model.excitationHz.size() > kMaxExcitationFrequencies)
+    return makeError(ErrorCode::InvalidArgument,
+                     "at most " + std::to_string(kMaxExcitationFrequencies) + " excitation frequencies (got " +
+                         std::to_string(model.excitationHz.size()) + ")",
+                     "excitation_hz");
+  for (std::size_t i = 0; i < model.excitationHz.size(); ++i) {
+    const double f = model.excitationHz[i];
+    if (!(f > 0.0) || !(f <= kMaxExcitationHz))
+      return makeError(ErrorCode::InvalidArgument,
+                       "excitation frequencies must lie in (0, " + formatNumber(kMaxExcitationHz) + "] Hz (got " +
+                           formatNumber(f) + ")",
+                       "excitation_hz[" + std::to_string(i) + "]");
+  }
   if (measured.empty()) return makeError(ErrorCode::InvalidArgument, "no measured relaxation lengths", where);
   const double pLo = model.contactPatch.front().first / 1e5, pHi = model.contactPatch.back().first / 1e5;
   for (std::size_t j = 0; j < measured.size(); ++j) {

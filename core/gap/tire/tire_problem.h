@@ -40,6 +40,13 @@
 
 namespace mozzi::core::gap {
 
+// Limits of the excitation frequencies (issue 17): every residual evaluation
+// solves the ring model at each of them (3,000 took 28 s per diagnosis), and
+// the relaxation test of §5.4 excites at three of about 1 Hz; 64 frequencies
+// up to 200 Hz cover any relaxation test and keep a diagnosis within seconds.
+inline constexpr std::size_t kMaxExcitationFrequencies = 64;
+inline constexpr double kMaxExcitationHz = 200.0;
+
 struct TireGapModel {
   std::string label;                                        // "110/70-16 (thesis Tables 16, 17)"
   tire::RingModel ring;                                     // modes k = 0 and 1 at least (eq. 48)

@@ -42,11 +42,15 @@ TEST(EngineStatistics, HolmFlagsEachKindSeparately) {
   GapMetrics m;
   // Bands: z = 3 (p = 0.0027 <= 0.05 / 2) rejected, then z = 2.2 (p = 0.028
   // <= 0.05 / 1) rejected too.
-  m.entries = {{"band", "a", 1, 3.0, false, {}},
-               {"band", "b", 1, 2.2, false, {}},
-               {"mode", "1", 1, 2.2, false, {}},
-               {"mode", "2", 1, 0.1, false, {}},
-               {"dof", "1+Z", 1, 0.0, true, {}}};
+  m.entries = {{"band", "a", 1, 3.0, false, false, {}},
+               {"band", "b", 1, 2.2, false, false, {}},
+               {"mode", "1", 1, 2.2, false, false, {}},
+               {"mode", "2", 1, 0.1, false, false, {}},
+               {"dof", "1+Z", 1, 0.0, true, false, {}},
+               // One-sided (a chi-square excess): z = -3 is better than
+               // noise, no gap (p = 0.9987); z = 3 alone: p = 0.00135 <= 0.05.
+               {"condition", "lo", 1, -3.0, false, true, {}},
+               {"overall", "hi", 1, 3.0, false, true, {}}};
   applyHolmFlags(m, 0.05);
   EXPECT_TRUE(m.entries[0].flagged);
   EXPECT_TRUE(m.entries[1].flagged);
@@ -55,6 +59,8 @@ TEST(EngineStatistics, HolmFlagsEachKindSeparately) {
   EXPECT_FALSE(m.entries[3].flagged);
   // No z-score: the problem's own flag stands.
   EXPECT_TRUE(m.entries[4].flagged);
+  EXPECT_FALSE(m.entries[5].flagged);
+  EXPECT_TRUE(m.entries[6].flagged);
 }
 
 TEST(EngineStatistics, EmpiricalQuantileInterpolates) {

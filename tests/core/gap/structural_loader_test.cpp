@@ -75,7 +75,9 @@ TEST(GapLoader, Uff55ModelPredictsTheSpatialFrfs) {
   truth.dampingScale = 1.0;
   truth.groupScale = 1.0;
   const std::string frfPath = writeFrf(gap_bench::measure(s.model, truth, m, rng), "swing_frf.uff");
-  auto p = loadGapProblem(modelPath, frfPath, LoadOptions{});
+  LoadOptions stated;  // noise-free data: residuals in units of a stated 1%
+  stated.noise = "stated";
+  auto p = loadGapProblem(modelPath, frfPath, stated);
   ASSERT_TRUE(p.ok()) << p.error().describe();
   EXPECT_EQ((*p)->dataKind(), "frf");
   EXPECT_TRUE((*p)->calibrationParameters().empty());

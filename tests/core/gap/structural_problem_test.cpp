@@ -52,7 +52,10 @@ class ReproducesTruth : public ::testing::TestWithParam<bool> {};
 TEST_P(ReproducesTruth, ForEachEffect) {
   const auto s = GetParam() ? gap_bench::viscousC(gap_bench::forkWheel()) : gap_bench::forkWheel();
   const int n = s.model.dofCount();
+  // Noise-free data: the residuals in units of a stated 1% sigma.
   StructuralOptions opt;
+  opt.noise = StructuralOptions::NoiseSource::Stated;
+  opt.relativeFloor = 0.01;
   std::mt19937_64 rng(1);
   struct Case {
     const char* effect;
@@ -98,8 +101,8 @@ TEST_P(ReproducesTruth, ForEachEffect) {
     Truth t(n);
     t.misDof = 6;  // 4+X leans towards 4+Z
     t.misOther = 7;
-    t.misAngle = 0.1;
-    cases.push_back({"sensor_misalignment", {"4+X", "4+Z"}, {0.1}, t, {1.0, 1.0}});
+    t.misAngle = 0.1;  // rad; the catalogue's tilt is in degrees
+    cases.push_back({"sensor_misalignment", {"4+X", "4+Z"}, {0.1 * 180.0 / M_PI}, t, {1.0, 1.0}});
   }
   for (const auto& c : cases) {
     const FrfMatrix frf = gap_bench::measure(s.model, c.truth, fullMeasurement(s, 0.0), rng);
@@ -125,7 +128,9 @@ TEST(StructuralProblem, ChannelSignsAndUnknownDofs) {
   FrfMatrix frf = gap_bench::measure(s.model, Truth(s.model.dofCount()), fullMeasurement(s, 0.0), rng);
   frf.responses[4] = *parseDof("3-X");
   frf.h[0].col(4) *= -1.0;
-  auto p = makeFrfProblem(s.model, frf);
+  StructuralOptions stated;
+  stated.noise = StructuralOptions::NoiseSource::Stated;
+  auto p = makeFrfProblem(s.model, frf, stated);
   ASSERT_TRUE(p.ok()) << p.error().describe();
   EXPECT_LT(maxAbsResidual(**p, {1.0, 1.0}, -1, {}), 1e-3);
   frf.responses[4] = *parseDof("9+X");
@@ -134,14 +139,16 @@ TEST(StructuralProblem, ChannelSignsAndUnknownDofs) {
   EXPECT_NE(bad.error().message.find("9:+X"), std::string::npos) << bad.error().describe();
 }
 
-// With 1% noise the whitened chi-square is N within 4 of its standard
-// deviations sqrt(2N) (the sigma comes from the noisy |H|, a second-order
-// bias of ~1e-4), for the measured data and for simulated().
+// With 1% noise, stated as such, the whitened chi-square is N within 4 of its
+// standard deviations sqrt(2N) (the sigma comes from the noisy |H|, a
+// second-order bias of ~1e-4), for the measured data and for simulated().
 TEST(StructuralProblem, ChiSquareMatchesResidualCountWithNoise) {
   const auto s = gap_bench::frame();
   std::mt19937_64 rng(3);
   const FrfMatrix frf = gap_bench::measure(s.model, Truth(s.model.dofCount()), fullMeasurement(s, 0.01), rng);
-  auto p = makeFrfProblem(s.model, frf);
+  StructuralOptions stated;
+  stated.noise = StructuralOptions::NoiseSource::Stated;
+  auto p = makeFrfProblem(s.model, frf, stated);
   ASSERT_TRUE(p.ok()) << p.error().describe();
   const std::vector<double> theta{1.0, 1.0};
   auto chi2 = [&](const GapProblem& q) {
@@ -287,7 +294,9 @@ TEST(StructuralProblem, ResidualModeMovesNoMode) {
   const auto s = gap_bench::swingArm();
   std::mt19937_64 rng(4);
   const FrfMatrix frf = gap_bench::measure(s.model, Truth(s.model.dofCount()), fullMeasurement(s, 0.0), rng);
-  auto p = makeFrfProblem(s.model, frf);
+  StructuralOptions stated;
+  stated.noise = StructuralOptions::NoiseSource::Stated;
+  auto p = makeFrfProblem(s.model, frf, stated);
   ASSERT_TRUE(p.ok());
   const int cand = findCandidate(**p, "residual_mode", {"3+Z"});
   ASSERT_GE(cand, 0);

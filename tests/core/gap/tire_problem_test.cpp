@@ -272,5 +272,33 @@ TEST(TireGapLoader, RejectsBadFilesWithTheirPlace) {
   EXPECT_EQ(missing.error().code, ErrorCode::IoError);
 }
 
+// Issue 17: excitation frequencies have a stated range and count, checked
+// before any computation (1e30 Hz crashed the diagnosis; 100,000 frequencies
+// ran for minutes).
+TEST(TireGapProblem, ExcitationFrequenciesHaveALimit) {
+  const auto& t = tyre110();
+  auto withExcitation = [&](std::vector<double> hz) {
+    auto model = parseTireGapModel(thesisModelJson(t.size), "test");
+    EXPECT_TRUE(model) << model.error().describe();
+    model->excitationHz = std::move(hz);
+    return TireGapProblem::create(*model, pointsFrom(t, 1.0));
+  };
+  auto huge = withExcitation({0.84, 1e30});
+  ASSERT_FALSE(huge);
+  EXPECT_EQ(huge.error().where, "excitation_hz[1]");
+  EXPECT_NE(huge.error().describe().find("(0, 200] Hz"), std::string::npos) << huge.error().describe();
+  auto negative = withExcitation({-1.0});
+  ASSERT_FALSE(negative);
+  EXPECT_EQ(negative.error().where, "excitation_hz[0]");
+  auto nan = withExcitation({std::nan("")});
+  ASSERT_FALSE(nan);
+  EXPECT_EQ(nan.error().where, "excitation_hz[0]");
+  auto many = withExcitation(std::vector<double>(100000, 1.0));
+  ASSERT_FALSE(many);
+  EXPECT_EQ(many.error().where, "excitation_hz");
+  EXPECT_NE(many.error().describe().find("at most 64"), std::string::npos) << many.error().describe();
+  EXPECT_TRUE(withExcitation(std::vector<double>(kMaxExcitationFrequencies, kMaxExcitationHz)));
+}
+
 }  // namespace
 }  // namespace mozzi::core::gap

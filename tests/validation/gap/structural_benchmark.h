@@ -1,6 +1,6 @@
 #pragma once
-// Benchmark generator for the structural sim-to-real gap (issue 10, GAP.md
-// "Testing it honestly"): three lumped structures of thesis magnitude, each
+// Benchmark generator for the structural sim-to-real gap (issues 10 and 16,
+// GAP.md "Testing it honestly"): four lumped structures of thesis magnitude, each
 // effect of the catalogue applied to a hidden truth, measurement noise, and
 // FRFs computed INDEPENDENTLY of core/gap (direct inversion of
 // K' + s C' + s^2 M' per line, no modal expansion), so a wrong modal sum or a
@@ -15,10 +15,14 @@
 //    grounded.
 //  - swing_arm: pivot, mid-arm and axle with Z and X, pivot bearing grounded,
 //    shock between mid-arm Z and ground.
+//  - subframe: a seat subframe, 5 DOFs, two hammer points.
+// Measurement noise: relative and/or an additive floor, with or without
+// coherence records (issue 16).
 // Each has Rayleigh damping (viscous C = alpha M + beta K, zeta 1-3%) and two
 // calibration parameters: a damping scale and a stiffness group with a 5% prior.
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <random>
@@ -175,8 +179,31 @@ inline Structure swingArm() {
   return s;
 }
 
+// A seat subframe: two nodes with X and Z, a rear node with Z only (5 DOFs),
+// two hammer points (2+Z, 3+Z); mounts to the main frame as grounded springs.
+// Also the 5-DOF model of the speed benchmark (docs/performance/gap.md).
+inline Structure seatSubframe() {
+  Structure s;
+  s.name = "subframe";
+  const std::vector<std::string> l = {"1+X", "1+Z", "2+X", "2+Z", "3+Z"};
+  const std::vector<double> mass = {1.2, 1.2, 0.9, 0.9, 1.6};
+  const std::vector<SpringSpec> sp = {{"mount_x", "1+X", "ground", 7.0e5}, {"mount_z", "1+Z", "ground", 4.0e5},
+                                      {"rail_x", "1+X", "2+X", 3.0e5},     {"rail_z", "1+Z", "2+Z", 2.2e5},
+                                      {"strut", "2+Z", "ground", 1.2e5},   {"tail", "2+Z", "3+Z", 9.0e4},
+                                      {"web", "2+X", "2+Z", 5.0e4}};
+  const auto [al, be] = rayleigh(25, 0.02, 200, 0.02);
+  s.model = buildModel(s.name, l, mass, sp, al, be, {"rail_x", "rail_z"});
+  s.references = {"2+Z", "3+Z"};
+  s.bandLowHz = 5;
+  s.bandHighHz = 350;
+  s.calibratedGroup = "rail";
+  s.alpha = al;
+  s.beta = be;
+  return s;
+}
+
 inline std::vector<Structure> structures() {
-  return {forkWheel(), frame(), swingArm()};
+  return {forkWheel(), frame(), swingArm(), seatSubframe()};
 }
 
 // Stiffness matrix of one named spring of the model (independent of core/gap).
@@ -258,9 +285,18 @@ struct Measurement {
   double lowHz = 0, highHz = 0;
   int lines = 0;
   double relativeNoise = 0.01;  // per real/imaginary component, relative to |H|
+  // Additive floor per component, as a fraction of the FRF's median |H| over
+  // the band: it dominates near antiresonances and at the low end (issue 16).
+  double floorNoise = 0.0;
+  // Write coherence consistent with the noise (H1 from `averages` averages:
+  // g^2 = 1 / (1 + 2 n_avg (sigma / |H|)^2), Bendat & Piersol eq. 9.65 inverted).
+  bool coherence = false;
+  int averages = 10;
 };
 
-// Noisy accelerances of the truth as a FrfMatrix (what the diagnosis gets).
+// Noisy accelerances of the truth as a FrfMatrix (what the diagnosis gets):
+// relative noise plus an additive floor per component, and coherence when the
+// spec asks for it.
 inline core::FrfMatrix measure(const StructuralModel& m, const Truth& t, const Measurement& spec,
                                std::mt19937_64& rng) {
   core::FrfMatrix frf;
@@ -270,7 +306,6 @@ inline core::FrfMatrix measure(const StructuralModel& m, const Truth& t, const M
   frf.frequencyHz = Vector::LinSpaced(spec.lines, spec.lowHz, spec.highHz);
   const auto no = static_cast<Eigen::Index>(spec.responses.size());
   frf.h.assign(spec.references.size(), ComplexMatrix(spec.lines, no));
-  std::normal_distribution<double> nd(0.0, 1.0);
   for (int k = 0; k < spec.lines; ++k) {
     const double w = 2 * M_PI * frf.frequencyHz[k];
     // The exponential window multiplies the impulse response by exp(-a t):
@@ -284,11 +319,28 @@ inline core::FrfMatrix measure(const StructuralModel& m, const Truth& t, const M
         const int ro = m.findDof(frf.responses[static_cast<std::size_t>(o)]);
         Complex v = h(ro, ri);
         if (ro == t.misDof) v = std::cos(t.misAngle) * v + std::sin(t.misAngle) * h(t.misOther, ri);
-        const double sd = spec.relativeNoise * std::abs(v);
-        frf.h[i](k, o) = v + Complex(sd * nd(rng), sd * nd(rng));
+        frf.h[i](k, o) = v;
       }
     }
   }
+  std::normal_distribution<double> nd(0.0, 1.0);
+  if (spec.coherence) frf.coherence.assign(spec.references.size(), core::Matrix(spec.lines, no));
+  for (std::size_t i = 0; i < spec.references.size(); ++i)
+    for (Eigen::Index o = 0; o < no; ++o) {
+      std::vector<double> mags;
+      for (int k = 0; k < spec.lines; ++k) mags.push_back(std::abs(frf.h[i](k, o)));
+      std::nth_element(mags.begin(), mags.begin() + static_cast<long>(mags.size() / 2), mags.end());
+      const double floor = spec.floorNoise * mags[mags.size() / 2];
+      for (int k = 0; k < spec.lines; ++k) {
+        const Complex v = frf.h[i](k, o);
+        const double sd = std::hypot(spec.relativeNoise * std::abs(v), floor);
+        frf.h[i](k, o) = v + Complex(sd * nd(rng), sd * nd(rng));
+        if (spec.coherence) {
+          const double rel = sd / std::max(std::abs(v), 1e-300);
+          frf.coherence[i](k, o) = 1.0 / (1.0 + 2.0 * spec.averages * rel * rel);
+        }
+      }
+    }
   return frf;
 }
 
