@@ -25,14 +25,14 @@
 #include <QTreeWidget>
 
 #include "app/build_info.h"
-#include "app/gui/project_document.h"
+#include "app/gui/builtin_pages.h"
 #include "core/common/versions.h"
-#include "core/geometry/mesh_placement.h"
 #include "devices/common/versions.h"
-#include "views/gap/model_test_view.h"
-#include "views/panels/project_overview.h"
-#include "views/plots/frf_plot.h"
-#include "views/scene/scene_view.h"
+#include "views/common/job_runner.h"
+#include "views/common/job_status_widget.h"
+#include "views/common/page_tabs.h"
+#include "views/common/project_model.h"
+#include "views/common/project_tree.h"
 
 // Resources compiled into the static mozzi_app library must be registered by
 // hand (the linker drops their unreferenced initialisers). Global scope: the
@@ -47,8 +47,6 @@ namespace app {
 namespace {
 
 constexpr int kMaxRecentFiles = 8;
-constexpr int kRoleTable = Qt::UserRole + 1;
-constexpr int kRoleId = Qt::UserRole + 4;  // row id of a specimen, FRF set or modal result
 
 const char* const kSettingsGeometry = "window/geometry";
 const char* const kSettingsState = "window/state";
@@ -66,29 +64,30 @@ QStringList MainWindow::availableLanguages() {
   return codes;
 }
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new ProjectDocument(this)) {
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), model_(new views::ProjectModel(this)), jobs_(new views::JobRunner(this)) {
   initMozziResources();
   setObjectName(QStringLiteral("MozziMainWindow"));
   setWindowIcon(QIcon(QStringLiteral(":/icons/mozzi.svg")));
   translator_ = new QTranslator(this);
+  model_->setMozziVersion(QString::fromLatin1(buildinfo::kMozziVersion));
+  registerBuiltinPages(pages_);
 
-  tabs_ = new QTabWidget(this);
-  tabs_->setObjectName(QStringLiteral("workArea"));
-  tabs_->setDocumentMode(true);
-  tabs_->setMovable(true);
-  overview_ = new views::ProjectOverview(tabs_);
-  overview_->setObjectName(QStringLiteral("overviewTab"));
-  scene_ = new views::SceneView(tabs_);
-  scene_->setObjectName(QStringLiteral("sceneTab"));
-  tabs_->addTab(overview_, QString());
-  tabs_->addTab(scene_, QString());
+  tabs_ = new views::PageTabs(&pages_, model_, jobs_, this);
+  tabs_->setLog([this](const QString& line) { log(line); });
   setCentralWidget(tabs_);
 
   createActions();
   createMenus();
   createDocks();
-  statusBar();
+  jobStatus_ = new views::JobStatusWidget(jobs_, statusBar());
+  statusBar()->addPermanentWidget(jobStatus_);
+  jobStatus_->hide();
+  connect(jobs_, &views::JobRunner::jobFinished, this, [this](int, bool ok) {
+    if (!ok) statusBar()->showMessage(tr("A job stopped before its end; see its page"), 5000);
+  });
   defaultState_ = saveState();
+  applyDefaultDockSizes();
 
   QSettings settings;
   recentFiles_ = settings.value(QLatin1String(kSettingsRecent)).toStringList();
@@ -96,34 +95,62 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), document_(new Pro
   restoreState(settings.value(QLatin1String(kSettingsState)).toByteArray());
   if (!geometry().isValid() || settings.value(QLatin1String(kSettingsGeometry)).isNull()) resize(1280, 800);
 
+  connect(model_, &views::ProjectModel::projectChanged, this, &MainWindow::onProjectChanged);
+  connect(model_, &views::ProjectModel::recordsChanged, this, [this](views::RecordKind kind) {
+    if (kind != views::RecordKind::Hit) showProperties();  // a campaign commits a hit every few seconds
+  });
+  tabs_->openStartPages();
+
   QString lang = settings.value(QLatin1String(kSettingsLanguage)).toString();
   if (lang.isEmpty()) lang = QLocale::system().name().left(2);
   if (!availableLanguages().contains(lang)) lang = QStringLiteral("en");
   if (!setLanguage(lang)) retranslateUi();  // source strings are English
 
-  connect(document_, &ProjectDocument::changed, this, &MainWindow::refreshFromDocument);
-  refreshFromDocument();
+  onProjectChanged();
   updateRecentMenu();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  // Workers may still write to the project or notify the model: stop them first.
+  jobs_->cancelAll();
+  jobs_->waitForDone();
+  delete tabs_;  // pages before the model they observe
+  tabs_ = nullptr;
+}
 
 void MainWindow::createActions() {
   newAction_ = new QAction(this);
   newAction_->setShortcut(QKeySequence::New);
-  connect(newAction_, &QAction::triggered, this, &MainWindow::onNew);
+  connect(newAction_, &QAction::triggered, this, [this] {
+    const QString path = askProjectFile(tr("New Project"), QString(), true);
+    if (!path.isEmpty()) newProject(path);
+  });
   openAction_ = new QAction(this);
   openAction_->setShortcut(QKeySequence::Open);
-  connect(openAction_, &QAction::triggered, this, &MainWindow::onOpen);
+  connect(openAction_, &QAction::triggered, this, [this] {
+    const QString path = askProjectFile(tr("Open Project"), QString(), false);
+    if (!path.isEmpty()) openProject(path);
+  });
   saveAsAction_ = new QAction(this);
   saveAsAction_->setShortcut(QKeySequence::SaveAs);
-  connect(saveAsAction_, &QAction::triggered, this, &MainWindow::onSaveAs);
+  connect(saveAsAction_, &QAction::triggered, this, [this] {
+    const QString path = askProjectFile(tr("Save Project As"), QString(), true);
+    if (!path.isEmpty()) saveProjectAs(path);
+  });
   closeProjectAction_ = new QAction(this);
-  connect(closeProjectAction_, &QAction::triggered, document_, &ProjectDocument::close);
+  connect(closeProjectAction_, &QAction::triggered, model_, &views::ProjectModel::close);
   importUffAction_ = new QAction(this);
-  connect(importUffAction_, &QAction::triggered, this, &MainWindow::onImportUff);
+  connect(importUffAction_, &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import Universal File"), projectFolder(),
+                                                      tr("Universal files (*.uff *.unv);;All files (*)"));
+    if (!path.isEmpty()) importUff(path);
+  });
   exportImageAction_ = new QAction(this);
-  connect(exportImageAction_, &QAction::triggered, this, &MainWindow::onExportImage);
+  connect(exportImageAction_, &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Work Area"), projectFolder(),
+                                                      tr("PNG images (*.png);;JPEG images (*.jpg)"));
+    if (!path.isEmpty()) exportWorkAreaImage(path);
+  });
   quitAction_ = new QAction(this);
   quitAction_->setShortcut(QKeySequence::Quit);
   quitAction_->setMenuRole(QAction::QuitRole);
@@ -135,13 +162,18 @@ void MainWindow::createActions() {
     updateRecentMenu();
   });
   resetLayoutAction_ = new QAction(this);
-  connect(resetLayoutAction_, &QAction::triggered, this, [this] { restoreState(defaultState_); });
+  connect(resetLayoutAction_, &QAction::triggered, this, [this] {
+    restoreState(defaultState_);
+    applyDefaultDockSizes();
+  });
   demoAction_ = new QAction(this);
-  connect(demoAction_, &QAction::triggered, this, &MainWindow::onCreateDemo);
+  connect(demoAction_, &QAction::triggered, this, [this] {
+    const QString path =
+        askProjectFile(tr("Create Demo Project"), QDir(projectFolder()).filePath(QStringLiteral("demo.mozzi")), true);
+    if (!path.isEmpty()) createDemoProject(path);
+  });
   integrityAction_ = new QAction(this);
   connect(integrityAction_, &QAction::triggered, this, &MainWindow::onCheckIntegrity);
-  modelTestAction_ = new QAction(this);
-  connect(modelTestAction_, &QAction::triggered, this, [this] { openModelTest(); });
   aboutAction_ = new QAction(this);
   aboutAction_->setMenuRole(QAction::AboutRole);
   connect(aboutAction_, &QAction::triggered, this, &MainWindow::onAbout);
@@ -156,6 +188,17 @@ void MainWindow::createActions() {
     action->setCheckable(true);
     action->setData(code);
     connect(action, &QAction::triggered, this, [this, code] { setLanguage(code); });
+  }
+
+  // One action per page that opens from a menu, in the order of the table.
+  for (const views::PageSpec& spec : pages_.pages()) {
+    if (spec.menu == views::PageMenu::None) continue;
+    auto* action = new QAction(this);
+    action->setObjectName(QStringLiteral("page:") + spec.id);
+    if (!spec.iconPath.isEmpty()) action->setIcon(QIcon(spec.iconPath));
+    const QString id = spec.id;
+    connect(action, &QAction::triggered, this, [this, id] { openPage(id); });
+    pageActions_.append(qMakePair(action, &spec));
   }
 }
 
@@ -178,11 +221,14 @@ void MainWindow::createMenus() {
   languageMenu_ = new QMenu(this);
   languageMenu_->addActions(languageGroup_->actions());
 
+  pagesMenu_ = menuBar()->addMenu(QString());
   toolsMenu_ = menuBar()->addMenu(QString());
   toolsMenu_->addAction(demoAction_);
   toolsMenu_->addAction(integrityAction_);
   toolsMenu_->addSeparator();
-  toolsMenu_->addAction(modelTestAction_);
+  for (const auto& [action, spec] : pageActions_) {
+    (spec->menu == views::PageMenu::Tools ? toolsMenu_ : pagesMenu_)->addAction(action);
+  }
 
   helpMenu_ = menuBar()->addMenu(QString());
   helpMenu_->addAction(aboutAction_);
@@ -190,20 +236,13 @@ void MainWindow::createMenus() {
 }
 
 void MainWindow::createDocks() {
-  projectTree_ = new QTreeWidget(this);
-  projectTree_->setObjectName(QStringLiteral("projectTree"));
-  projectTree_->setColumnCount(2);
-  projectTree_->header()->setStretchLastSection(false);
-  projectTree_->header()->setSectionResizeMode(0, QHeaderView::Stretch);
-  projectTree_->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
-  connect(projectTree_, &QTreeWidget::currentItemChanged, this,
-          [this](QTreeWidgetItem* current) { showProperties(current); });
-  // Double-click (or Enter) on an FRF set plots it.
-  connect(projectTree_, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) {
-    if (item && item->data(0, kRoleTable).toString() == QLatin1String("frf-set")) {
-      openFrfSet(item->data(0, kRoleId).toLongLong());
-    }
+  projectTree_ = new views::ProjectTree(model_, this);
+  connect(projectTree_, &views::ProjectTree::currentProjectItemChanged, this, [this](const views::ProjectItem& item) {
+    showProperties();
+    tabs_->followSelection(item);
   });
+  connect(projectTree_, &views::ProjectTree::openRequested, this, &MainWindow::openItem);
+  connect(projectTree_, &QWidget::customContextMenuRequested, this, &MainWindow::showTreeMenu);
   projectDock_ = new QDockWidget(this);
   projectDock_->setObjectName(QStringLiteral("projectDock"));
   projectDock_->setWidget(projectTree_);
@@ -236,6 +275,12 @@ void MainWindow::createDocks() {
   viewMenu_->addMenu(languageMenu_);
 }
 
+// The tree wide enough for specimen names, the log a few lines high.
+void MainWindow::applyDefaultDockSizes() {
+  resizeDocks({projectDock_}, {fontMetrics().averageCharWidth() * 36}, Qt::Horizontal);
+  resizeDocks({logDock_}, {fontMetrics().lineSpacing() * 7}, Qt::Vertical);
+}
+
 void MainWindow::retranslateUi() {
   fileMenu_->setTitle(tr("&File"));
   newAction_->setText(tr("&New Project..."));
@@ -263,22 +308,21 @@ void MainWindow::retranslateUi() {
                                                   : code);
     action->setChecked(code == language_);
   }
+  pagesMenu_->setTitle(tr("&Pages"));
   toolsMenu_->setTitle(tr("&Tools"));
   demoAction_->setText(tr("Create &Demo Project..."));
   integrityAction_->setText(tr("Check Project &Integrity"));
-  modelTestAction_->setText(tr("&Model vs Test..."));
-  modelTestAction_->setStatusTip(
-      tr("Diagnose where a model and a test disagree and which unmodelled effect explains it"));
-  if (modelTest_) tabs_->setTabText(tabs_->indexOf(modelTest_), tr("Model vs Test"));
+  for (const auto& [action, spec] : pageActions_) {
+    action->setText(views::PageRegistry::title(*spec));
+    action->setStatusTip(views::PageRegistry::summary(*spec));
+  }
   helpMenu_->setTitle(tr("&Help"));
   aboutAction_->setText(tr("&About Mozzi"));
   aboutQtAction_->setText(tr("About &Qt"));
-  tabs_->setTabText(tabs_->indexOf(overview_), tr("Overview"));
-  tabs_->setTabText(tabs_->indexOf(scene_), tr("3-D View"));
-  projectTree_->setHeaderLabels({tr("Item"), tr("Count")});
+  tabs_->retitle();
   properties_->setHorizontalHeaderLabels({tr("Property"), tr("Value")});
   updateRecentMenu();
-  refreshFromDocument();
+  onProjectChanged();
 }
 
 bool MainWindow::setLanguage(const QString& code) {
@@ -297,112 +341,56 @@ void MainWindow::changeEvent(QEvent* event) {
   QMainWindow::changeEvent(event);
 }
 
-void MainWindow::refreshFromDocument() {
-  projectTree_->clear();
-  properties_->setRowCount(0);
-  const bool open = document_->isOpen();
+void MainWindow::onProjectChanged() {
+  const bool open = model_->isOpen();
   saveAsAction_->setEnabled(open);
-  importUffAction_->setEnabled(open && !document_->isReadOnly());
+  importUffAction_->setEnabled(open && !model_->isReadOnly());
   closeProjectAction_->setEnabled(open);
   integrityAction_->setEnabled(open);
   if (!open) {
-    overview_->clear();
     setWindowTitle(tr("Mozzi"));
-    return;
+  } else {
+    setWindowTitle(tr("%1 - Mozzi").arg(QFileInfo(model_->path()).fileName()) +
+                   (model_->isReadOnly() ? tr(" [read-only]") : QString()));
   }
-  const QString path = document_->path();
-  setWindowTitle(tr("%1 - Mozzi").arg(QFileInfo(path).fileName()) +
-                 (document_->isReadOnly() ? tr(" [read-only]") : QString()));
-  auto summary = document_->summary();
-  if (!summary) {
-    showError(tr("Project"), tr("Could not read the project."), summary.error());
-    return;
-  }
-  overview_->showSummary(path, *summary, document_->isReadOnly(), document_->readOnlyReason());
-
-  auto* root = new QTreeWidgetItem(projectTree_, {QFileInfo(path).completeBaseName()});
-  root->setData(0, kRoleTable, QStringLiteral("project"));
-  auto* specimens = new QTreeWidgetItem(root, {tr("Specimens"), QString::number(summary->specimens.size())});
-  specimens->setData(0, kRoleTable, QStringLiteral("specimen"));
-  QTreeWidgetItem* selected = root;
-  for (const auto& sp : summary->specimens) {
-    auto* item = new QTreeWidgetItem(specimens, {QString::fromStdString(sp.name)});
-    item->setData(0, kRoleTable, QStringLiteral("specimen-row"));
-    item->setData(0, Qt::UserRole + 2, QString::fromStdString(sp.kind));
-    item->setData(0, Qt::UserRole + 3, QString::fromStdString(sp.description));
-    item->setData(0, kRoleId, QVariant::fromValue<qlonglong>(sp.id));
-    if (sp.id == currentSpecimen_) selected = item;
-  }
-  if (auto sets = document_->frfSets(); sets && !sets->empty()) {
-    auto* group = new QTreeWidgetItem(root, {tr("FRF sets"), QString::number(sets->size())});
-    for (const auto& set : *sets) {
-      auto* item = new QTreeWidgetItem(
-          group, {QString::fromStdString(set.name), QString::number(set.responseCount * set.referenceCount)});
-      item->setData(0, kRoleTable, QStringLiteral("frf-set"));
-      item->setData(0, kRoleId, QVariant::fromValue<qlonglong>(set.id));
-      item->setData(0, Qt::UserRole + 2, QString::fromStdString(set.source));
-      item->setData(0, Qt::UserRole + 3, QStringLiteral("%1|%2").arg(set.lineCount).arg(static_cast<int>(set.type)));
-    }
-    projectTree_->expandItem(group);
-  }
-  if (auto results = document_->modalResults(); results && !results->empty()) {
-    auto* group = new QTreeWidgetItem(root, {tr("Modal results"), QString::number(results->size())});
-    for (const auto& result : *results) {
-      auto* item = new QTreeWidgetItem(group, {QString::fromStdString(result.name), QString::number(result.modeCount)});
-      item->setData(0, kRoleTable, QStringLiteral("modal-result"));
-      item->setData(0, kRoleId, QVariant::fromValue<qlonglong>(result.id));
-      item->setData(0, Qt::UserRole + 2, QString::fromStdString(result.method));
-      item->setData(0, Qt::UserRole + 3,
-                    QStringLiteral("%1 - %2 Hz").arg(result.bandLowHz, 0, 'f', 1).arg(result.bandHighHz, 0, 'f', 1));
-    }
-    projectTree_->expandItem(group);
-  }
-  auto* data = new QTreeWidgetItem(root, {tr("Data")});
-  for (const auto& count : summary->counts) {
-    if (count.table == "specimen") continue;
-    auto* item = new QTreeWidgetItem(data, {QString::fromStdString(count.table), QString::number(count.rows)});
-    item->setData(0, kRoleTable, QString::fromStdString(count.table));
-  }
-  projectTree_->expandItem(root);
-  projectTree_->expandItem(specimens);
-  projectTree_->setCurrentItem(selected);
+  showProperties();
 }
 
-void MainWindow::showProperties(QTreeWidgetItem* item) {
-  properties_->setRowCount(0);
-  if (!item) return;
-  QList<QPair<QString, QString>> rows;
-  const QString role = item->data(0, kRoleTable).toString();
-  if (role == QLatin1String("project")) {
-    rows << qMakePair(tr("File"), QDir::toNativeSeparators(document_->path()));
-    rows << qMakePair(tr("Access"), document_->isReadOnly() ? tr("read-only: %1").arg(document_->readOnlyReason())
-                                                            : tr("read-write"));
-  } else if (role == QLatin1String("specimen-row")) {
-    rows << qMakePair(tr("Name"), item->text(0));
-    rows << qMakePair(tr("Kind"), item->data(0, Qt::UserRole + 2).toString());
-    rows << qMakePair(tr("Description"), item->data(0, Qt::UserRole + 3).toString());
-    showSpecimenMesh(item->data(0, kRoleId).toLongLong());
-    rows << qMakePair(tr("Mesh"), tr("%1 nodes, %2 lines").arg(scene_->meshPointCount()).arg(scene_->meshLineCount()));
-  } else if (role == QLatin1String("frf-set")) {
-    const QStringList detail = item->data(0, Qt::UserRole + 3).toString().split(QLatin1Char('|'));
-    rows << qMakePair(tr("Name"), item->text(0));
-    rows << qMakePair(tr("Source"), item->data(0, Qt::UserRole + 2).toString());
-    rows << qMakePair(tr("Frequency lines"), detail.value(0));
-    rows << qMakePair(tr("Response/reference pairs"), item->text(1));
-  } else if (role == QLatin1String("modal-result")) {
-    rows << qMakePair(tr("Name"), item->text(0));
-    rows << qMakePair(tr("Method"), item->data(0, Qt::UserRole + 2).toString());
-    rows << qMakePair(tr("Band"), item->data(0, Qt::UserRole + 3).toString());
-    rows << qMakePair(tr("Modes"), item->text(1));
-  } else {
-    rows << qMakePair(tr("Item"), item->text(0));
-    if (!item->text(1).isEmpty()) rows << qMakePair(tr("Count"), item->text(1));
-  }
+void MainWindow::showProperties() {
+  const auto rows = projectTree_->currentProperties();
   properties_->setRowCount(rows.size());
   for (int r = 0; r < rows.size(); ++r) {
     properties_->setItem(r, 0, new QTableWidgetItem(rows[r].first));
-    properties_->setItem(r, 1, new QTableWidgetItem(rows[r].second));
+    auto* value = new QTableWidgetItem(rows[r].second);
+    value->setToolTip(rows[r].second);  // long paths and descriptions are cut in the cell
+    properties_->setItem(r, 1, value);
   }
+}
+
+// The tree's context menu: "Open in <page>" for every page that opens the item.
+void MainWindow::showTreeMenu(const QPoint& pos) {
+  const views::ProjectItem item = views::ProjectTree::itemOf(projectTree_->itemAt(pos));
+  const auto pages = pages_.pagesFor(item);
+  if (pages.empty()) return;
+  QMenu menu(this);
+  for (const views::PageSpec* spec : pages) {
+    QAction* action = menu.addAction(tr("Open in %1").arg(views::PageRegistry::title(*spec)));
+    const QString id = spec->id;
+    connect(action, &QAction::triggered, this, [this, id, item] { openPage(id, item); });
+  }
+  menu.exec(projectTree_->viewport()->mapToGlobal(pos));
+}
+
+QWidget* MainWindow::openPage(const QString& pageId, const views::ProjectItem& item) {
+  return tabs_->openPage(pageId, item);
+}
+
+QWidget* MainWindow::openItem(const views::ProjectItem& item) {
+  return tabs_->openItem(item);
+}
+
+bool MainWindow::selectItem(const views::ProjectItem& item) {
+  return projectTree_->selectItem(item);
 }
 
 void MainWindow::log(const QString& line) {
@@ -452,19 +440,30 @@ QString MainWindow::projectFolder() const {
   return last.isEmpty() ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation) : last;
 }
 
+// A .mozzi file name from a file dialog ("" when cancelled); saving adds the extension.
+QString MainWindow::askProjectFile(const QString& title, const QString& suggested, bool save) {
+  const QString start = suggested.isEmpty() ? projectFolder() : suggested;
+  if (!save) {
+    return QFileDialog::getOpenFileName(this, title, start, tr("Mozzi projects (*.mozzi);;All files (*)"));
+  }
+  const QString path = QFileDialog::getSaveFileName(this, title, start, tr("Mozzi projects (*.mozzi)"));
+  if (path.isEmpty() || path.endsWith(QLatin1String(".mozzi"))) return path;
+  return path + QStringLiteral(".mozzi");
+}
+
 bool MainWindow::openProject(const QString& path) {
-  if (auto r = document_->open(path); !r) {
+  if (auto r = model_->open(path); !r) {
     showError(tr("Open Project"), tr("Could not open %1.").arg(QDir::toNativeSeparators(path)), r.error());
     return false;
   }
   addRecentFile(path);
   log(tr("Opened %1").arg(QDir::toNativeSeparators(path)));
-  if (document_->isReadOnly()) log(tr("Read-only: %1").arg(document_->readOnlyReason()));
+  if (model_->isReadOnly()) log(tr("Read-only: %1").arg(model_->readOnlyReason()));
   return true;
 }
 
 bool MainWindow::newProject(const QString& path) {
-  if (auto r = document_->create(path); !r) {
+  if (auto r = model_->create(path); !r) {
     showError(tr("New Project"), tr("Could not create %1.").arg(QDir::toNativeSeparators(path)), r.error());
     return false;
   }
@@ -474,7 +473,7 @@ bool MainWindow::newProject(const QString& path) {
 }
 
 bool MainWindow::createDemoProject(const QString& path) {
-  if (auto r = document_->createDemo(path); !r) {
+  if (auto r = model_->createDemo(path); !r) {
     showError(tr("Demo Project"), tr("Could not create the demo project %1.").arg(QDir::toNativeSeparators(path)),
               r.error());
     return false;
@@ -485,7 +484,7 @@ bool MainWindow::createDemoProject(const QString& path) {
 }
 
 bool MainWindow::saveProjectAs(const QString& path) {
-  if (auto r = document_->saveAs(path); !r) {
+  if (auto r = model_->saveAs(path); !r) {
     showError(tr("Save Project As"), tr("Could not save the project as %1.").arg(QDir::toNativeSeparators(path)),
               r.error());
     return false;
@@ -496,7 +495,7 @@ bool MainWindow::saveProjectAs(const QString& path) {
 }
 
 bool MainWindow::exportWorkAreaImage(const QString& path) {
-  const QPixmap image = tabs_->currentWidget() ? tabs_->currentWidget()->grab() : tabs_->grab();
+  const QPixmap image = tabs_->currentPage() ? tabs_->currentPage()->grab() : tabs_->grab();
   if (!image.save(path)) {
     showError(tr("Export Image"), tr("Could not write %1.").arg(QDir::toNativeSeparators(path)),
               core::makeError(core::ErrorCode::IoError, "the image could not be written (folder or format)",
@@ -507,105 +506,32 @@ bool MainWindow::exportWorkAreaImage(const QString& path) {
   return true;
 }
 
-void MainWindow::showSpecimenMesh(std::int64_t specimenId) {
-  currentSpecimen_ = specimenId;
-  auto mesh = document_->mesh(specimenId);
-  if (!mesh) {
-    scene_->clearMesh();
-    log(tr("Cannot show the mesh: %1").arg(QString::fromStdString(mesh.error().describe())));
-    return;
-  }
-  auto positions = core::geometry::globalNodePositions(*mesh);
-  if (!positions) {
-    scene_->clearMesh();
-    log(tr("Cannot place the mesh: %1").arg(QString::fromStdString(positions.error().describe())));
-    return;
-  }
-  scene_->showMesh(*mesh, *positions);
-  if (scene_->skippedLineCount() > 0) {
-    log(tr("%n trace line segment(s) name nodes the mesh does not have and are not drawn", nullptr,
-           scene_->skippedLineCount()));
-  }
-}
-
-bool MainWindow::selectSpecimen(std::int64_t specimenId) {
-  for (QTreeWidgetItem* item : projectTree_->findItems(QStringLiteral("*"), Qt::MatchWildcard | Qt::MatchRecursive)) {
-    if (item->data(0, kRoleTable).toString() == QLatin1String("specimen-row") &&
-        item->data(0, kRoleId).toLongLong() == specimenId) {
-      projectTree_->setCurrentItem(item);
-      return true;
-    }
-  }
-  return false;
-}
-
-bool MainWindow::openFrfSet(std::int64_t frfSetId) {
-  const QString key = QStringLiteral("frf-%1").arg(frfSetId);
-  for (int i = 0; i < tabs_->count(); ++i) {
-    if (tabs_->widget(i)->property("mozziKey").toString() == key) {
-      tabs_->setCurrentIndex(i);
-      return true;
-    }
-  }
-  auto frf = document_->frfSet(frfSetId);
-  if (!frf) {
-    showError(tr("FRF Set"), tr("Could not read the FRF set."), frf.error());
-    return false;
-  }
-  QString name = QString::number(frfSetId);
-  if (auto sets = document_->frfSets()) {
-    for (const auto& set : *sets) {
-      if (set.id == frfSetId) name = QString::fromStdString(set.name);
-    }
-  }
-  auto* plot = new views::FrfPlot(tabs_);
-  plot->setProperty("mozziKey", key);
-  plot->setFrfs(std::make_shared<const core::FrfMatrix>(std::move(frf).value()));
-  tabs_->setCurrentIndex(tabs_->addTab(plot, tr("FRF: %1").arg(name)));
-  return true;
-}
-
-views::ModelTestView* MainWindow::openModelTest() {
-  if (!modelTest_) {
-    modelTest_ = new views::ModelTestView(tabs_);
-    modelTest_->setObjectName(QStringLiteral("modelTestTab"));
-    tabs_->addTab(modelTest_, tr("Model vs Test"));
-    connect(modelTest_, &views::ModelTestView::finished, this, [this](bool ok) {
-      log(ok ? tr("Model vs test: %1").arg(modelTest_->verdictText())
-             : tr("Model vs test: %1").arg(modelTest_->statusText()));
-    });
-  }
-  tabs_->setCurrentWidget(modelTest_);
-  return modelTest_;
-}
-
 bool MainWindow::importUff(const QString& path) {
-  if (!document_->isOpen()) return false;
-  std::int64_t specimen = currentSpecimen_;
-  auto summary = document_->summary();
+  if (!model_->isOpen()) return false;
+  auto summary = model_->summary();
   if (!summary) {
     showError(tr("Import"), tr("Could not read the project."), summary.error());
     return false;
   }
+  // The selected item's specimen, else the first, else a new one named after the file.
+  qint64 specimen = projectTree_->currentProjectItem().specimenId;
   bool known = false;
   for (const auto& sp : summary->specimens) known = known || sp.id == specimen;
   if (!known) specimen = summary->specimens.empty() ? 0 : summary->specimens.front().id;
   if (specimen == 0) {
-    auto id = document_->addSpecimen(QFileInfo(path).completeBaseName(), QStringLiteral("imported"));
+    auto id = model_->addSpecimen(QFileInfo(path).completeBaseName(), QStringLiteral("imported"));
     if (!id) {
       showError(tr("Import"), tr("Could not add a specimen for %1.").arg(QDir::toNativeSeparators(path)), id.error());
       return false;
     }
     specimen = *id;
   }
-  auto report = document_->importUff(path, specimen);
+  auto report = model_->importUff(path, specimen);
   if (!report) {
     showError(tr("Import"), tr("Could not import %1; the project is unchanged.").arg(QDir::toNativeSeparators(path)),
               report.error());
     return false;
   }
-  currentSpecimen_ = specimen;
-  refreshFromDocument();
   log(tr("Imported %1: %2 nodes, %3 lines, %4 FRFs, %5 modes")
           .arg(QDir::toNativeSeparators(path))
           .arg(report->nodes)
@@ -613,64 +539,23 @@ bool MainWindow::importUff(const QString& path) {
           .arg(report->frfPairs)
           .arg(report->modes));
   for (const auto& note : report->notes) log(QStringLiteral("  ") + QString::fromStdString(note));
-  if (report->frfSetId)
-    openFrfSet(*report->frfSetId);
-  else if (report->nodes > 0)
-    tabs_->setCurrentWidget(scene_);
+  const views::ProjectItem specimenItem{views::RecordKind::Specimen, specimen, specimen};
+  selectItem(specimenItem);
+  if (report->frfSetId) {
+    openItem({views::RecordKind::FrfSet, *report->frfSetId, specimen});
+  } else if (report->nodes > 0) {
+    openItem(specimenItem);
+  }
   return true;
 }
 
-void MainWindow::onImportUff() {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Import Universal File"), projectFolder(),
-                                                    tr("Universal files (*.uff *.unv);;All files (*)"));
-  if (!path.isEmpty()) importUff(path);
-}
-
-void MainWindow::onNew() {
-  const QString path =
-      QFileDialog::getSaveFileName(this, tr("New Project"), projectFolder(), tr("Mozzi projects (*.mozzi)"));
-  if (path.isEmpty()) return;
-  newProject(path.endsWith(QLatin1String(".mozzi")) ? path : path + QStringLiteral(".mozzi"));
-}
-
-void MainWindow::onOpen() {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Open Project"), projectFolder(),
-                                                    tr("Mozzi projects (*.mozzi);;All files (*)"));
-  if (!path.isEmpty()) openProject(path);
-}
-
-void MainWindow::onSaveAs() {
-  const QString path =
-      QFileDialog::getSaveFileName(this, tr("Save Project As"), projectFolder(), tr("Mozzi projects (*.mozzi)"));
-  if (path.isEmpty()) return;
-  saveProjectAs(path.endsWith(QLatin1String(".mozzi")) ? path : path + QStringLiteral(".mozzi"));
-}
-
-void MainWindow::onExportImage() {
-  const QString path = QFileDialog::getSaveFileName(this, tr("Export Work Area"), projectFolder(),
-                                                    tr("PNG images (*.png);;JPEG images (*.jpg)"));
-  if (!path.isEmpty()) exportWorkAreaImage(path);
-}
-
-void MainWindow::onCreateDemo() {
-  const QString path = QFileDialog::getSaveFileName(this, tr("Create Demo Project"),
-                                                    QDir(projectFolder()).filePath(QStringLiteral("demo.mozzi")),
-                                                    tr("Mozzi projects (*.mozzi)"));
-  if (path.isEmpty()) return;
-  createDemoProject(path.endsWith(QLatin1String(".mozzi")) ? path : path + QStringLiteral(".mozzi"));
-}
-
 void MainWindow::onCheckIntegrity() {
-  if (!document_->isOpen()) return;
-  // Re-opening read-only runs the same checks as opening (SQLite quick_check,
-  // application id, schema version) without disturbing the open session.
-  auto check =
-      core::io::ProjectStore::open(document_->path().toStdString(), core::io::ProjectStore::OpenMode::ReadOnly);
-  if (!check) {
+  if (!model_->isOpen()) return;
+  if (auto check = model_->checkIntegrity(); !check) {
     showError(tr("Check Project Integrity"), tr("The project failed its integrity check."), check.error());
     return;
   }
-  log(tr("Integrity check passed: %1").arg(QDir::toNativeSeparators(document_->path())));
+  log(tr("Integrity check passed: %1").arg(QDir::toNativeSeparators(model_->path())));
   statusBar()->showMessage(tr("Integrity check passed"), 5000);
 }
 

@@ -1,41 +1,39 @@
 #pragma once
-// Mozzi's main window: project tree, properties and log docks around a tabbed
-// work area; File, View, Tools and Help menus. Layout, language and recent
-// files persist in QSettings.
+// Mozzi's main window, a frame (WORKBENCH.md): menus, the project tree,
+// properties and log docks, the work area of page tabs, the running jobs in the
+// status bar, settings. It owns the one ProjectModel and JobRunner and knows
+// pages only through the page registry (app/gui/builtin_pages.cpp).
 
 #include <QMainWindow>
 #include <QMessageBox>
 #include <QPointer>
 #include <QStringList>
-#include <cstdint>
+
+#include "views/common/page_registry.h"
 
 class QAction;
 class QActionGroup;
 class QDockWidget;
 class QMenu;
-
 class QPlainTextEdit;
-class QTabWidget;
 class QTableWidget;
 class QTranslator;
-class QTreeWidget;
-class QTreeWidgetItem;
 
 namespace mozzi {
 namespace core {
 struct Error;
 }  // namespace core
 namespace views {
-class ModelTestView;
-class ProjectOverview;
-class SceneView;
+class JobRunner;
+class JobStatusWidget;
+class PageTabs;
+class ProjectModel;
+class ProjectTree;
 }  // namespace views
 }  // namespace mozzi
 
 namespace mozzi {
 namespace app {
-
-class ProjectDocument;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -51,23 +49,27 @@ class MainWindow : public QMainWindow {
   bool saveProjectAs(const QString& path);
   bool exportWorkAreaImage(const QString& path);
   // Imports a UFF file into the selected specimen (a new specimen named after
-  // the file when the project has none).
+  // the file when the project has none), then shows what it brought.
   bool importUff(const QString& path);
-  // Selects a specimen in the tree: its mesh goes to the 3-D view.
-  bool selectSpecimen(std::int64_t specimenId);
-  // Opens (or raises) a tab plotting a stored FRF set.
-  bool openFrfSet(std::int64_t frfSetId);
-  std::int64_t currentSpecimen() const { return currentSpecimen_; }
-  // Opens (or raises) the "Model vs test" gap-diagnosis tab.
-  views::ModelTestView* openModelTest();
+
+  // Opens (or raises) a registered page, on an item or from a menu; nullptr
+  // when the page is unknown, does not open the item, or could not be built.
+  QWidget* openPage(const QString& pageId, const views::ProjectItem& item = {});
+  // Opens an item in its default page (as a double-click in the tree does).
+  QWidget* openItem(const views::ProjectItem& item);
+  // Selects the item's row in the project tree; false if it has none.
+  bool selectItem(const views::ProjectItem& item);
 
   // Switches the interface language ("en", "it"); returns false if unknown.
   bool setLanguage(const QString& code);
   QString language() const { return language_; }
 
   QStringList recentFiles() const { return recentFiles_; }
-  ProjectDocument* document() const { return document_; }
-  QTabWidget* workArea() const { return tabs_; }
+  views::ProjectModel* model() const { return model_; }
+  views::JobRunner* jobs() const { return jobs_; }
+  const views::PageRegistry& pages() const { return pages_; }
+  views::PageTabs* workArea() const { return tabs_; }
+  views::ProjectTree* projectTree() const { return projectTree_; }
   QString aboutText() const;
   // The message box showing the last error, while it is open.
   QMessageBox* errorBox() const { return errorBox_; }
@@ -83,34 +85,30 @@ class MainWindow : public QMainWindow {
   void createActions();
   void createMenus();
   void createDocks();
+  void applyDefaultDockSizes();
   void retranslateUi();
-  void refreshFromDocument();
+  void onProjectChanged();
+  void showProperties();
+  void showTreeMenu(const QPoint& pos);
   void updateRecentMenu();
   void addRecentFile(const QString& path);
   void showError(const QString& title, const QString& action, const core::Error& error);
-  void showProperties(QTreeWidgetItem* item);
   QString projectFolder() const;
+  QString askProjectFile(const QString& title, const QString& suggested, bool save);
 
-  void onNew();
-  void onOpen();
-  void onSaveAs();
-  void onExportImage();
-  void onImportUff();
-  void showSpecimenMesh(std::int64_t specimenId);
-  void onCreateDemo();
   void onCheckIntegrity();
   void onAbout();
 
-  ProjectDocument* document_ = nullptr;
-  QTabWidget* tabs_ = nullptr;
-  views::ProjectOverview* overview_ = nullptr;
-  views::SceneView* scene_ = nullptr;
-  QPointer<views::ModelTestView> modelTest_;
+  views::PageRegistry pages_;
+  views::ProjectModel* model_ = nullptr;
+  views::JobRunner* jobs_ = nullptr;
+  views::PageTabs* tabs_ = nullptr;
+  views::ProjectTree* projectTree_ = nullptr;
+  views::JobStatusWidget* jobStatus_ = nullptr;
 
   QDockWidget* projectDock_ = nullptr;
   QDockWidget* propertiesDock_ = nullptr;
   QDockWidget* logDock_ = nullptr;
-  QTreeWidget* projectTree_ = nullptr;
   QTableWidget* properties_ = nullptr;
   QPlainTextEdit* log_ = nullptr;
 
@@ -119,6 +117,7 @@ class MainWindow : public QMainWindow {
   QMenu* importMenu_ = nullptr;
   QMenu* exportMenu_ = nullptr;
   QMenu* viewMenu_ = nullptr;
+  QMenu* pagesMenu_ = nullptr;
   QMenu* languageMenu_ = nullptr;
   QMenu* toolsMenu_ = nullptr;
   QMenu* helpMenu_ = nullptr;
@@ -134,17 +133,17 @@ class MainWindow : public QMainWindow {
   QAction* resetLayoutAction_ = nullptr;
   QAction* demoAction_ = nullptr;
   QAction* integrityAction_ = nullptr;
-  QAction* modelTestAction_ = nullptr;
   QAction* aboutAction_ = nullptr;
   QAction* aboutQtAction_ = nullptr;
   QActionGroup* languageGroup_ = nullptr;
+  // One action per page of the registry that has a menu (text set in retranslateUi).
+  QList<QPair<QAction*, const views::PageSpec*>> pageActions_;
 
   QStringList recentFiles_;
   QString language_;
   QTranslator* translator_ = nullptr;
   QByteArray defaultState_;
   QPointer<QMessageBox> errorBox_;
-  std::int64_t currentSpecimen_ = 0;
 };
 
 }  // namespace app

@@ -52,7 +52,7 @@ class ThreadedDevice : public Device {
 
   void setState(DeviceState s) { state_ = s; }
   bool stopRequested() const { return stopRequested_.load(); }
-  void emit(StreamEvent&& event) { sink_(std::move(event)); }
+  void publish(StreamEvent&& event) { sink_(std::move(event)); }
   // The last event of a session: marks it ended (to be reaped) and sends it.
   void endSession(EndReason reason, std::int64_t delivered, const std::string& message);
   // Real-time pacing: sleeps until `seconds` of stream time after `wallStart`

@@ -320,7 +320,7 @@ class Usb1608FsPlusDevice final : public ThreadedDevice {
     emitBlocks(true);  // hand on every complete scan before the gap
     const bool restart =
         parameterText(config_.parameters, "overrun.policy", "restart") == "restart" && halt && fifo && !stopRequested();
-    emit(StreamEvent(OverrunEvent{delivered_, -1, restart, detail}));
+    publish(StreamEvent(OverrunEvent{delivered_, -1, restart, detail}));
     if (!restart) {
       finish(EndReason::Overrun, detail);
       return false;

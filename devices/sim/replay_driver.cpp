@@ -236,7 +236,7 @@ class ReplayDevice final : public ThreadedDevice {
       next += n;
       if (realtime) paceTo(wallStart, static_cast<double>(next) / config_.sampleRateHz);
       emitBlock(std::move(b));
-      for (auto& m : marks) emit(StreamEvent(m));
+      for (auto& m : marks) publish(StreamEvent(m));
     }
   }
 

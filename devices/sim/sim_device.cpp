@@ -147,7 +147,7 @@ class SimDevice final : public SimulatedRig {
       if (config_.scanCount > 0) n = std::min(n, config_.scanCount - next);
       if (pOverrun > 0.0 && uniform(rng) < pOverrun) {
         // The block is lost: report it and skip it on the simulated clock.
-        emit(StreamEvent(OverrunEvent{next, n, true, "simulated FIFO overrun (fault injection)"}));
+        publish(StreamEvent(OverrunEvent{next, n, true, "simulated FIFO overrun (fault injection)"}));
         std::lock_guard<std::mutex> l(countersMutex_);
         ++counters_.overruns;
         counters_.lostScans += n;
@@ -178,7 +178,7 @@ class SimDevice final : public SimulatedRig {
       marks.clear();
       model_->marks(b.firstSample, static_cast<Eigen::Index>(n), marks);
       emitBlock(std::move(b));
-      for (auto& m : marks) emit(StreamEvent(m));
+      for (auto& m : marks) publish(StreamEvent(m));
     }
   }
 

@@ -29,7 +29,6 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTextBrowser>
-#include <QThread>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -39,6 +38,8 @@
 #include "core/common/text.h"
 #include "core/gap/diagnosis_json.h"
 #include "core/gap/problem_loader.h"
+#include "views/common/job_runner.h"
+#include "views/plots/plot_export.h"
 
 namespace mozzi {
 namespace views {
@@ -90,7 +91,8 @@ QVector<QPointF> points(const std::vector<double>& x, const std::vector<double>&
 
 }  // namespace
 
-ModelTestView::ModelTestView(QWidget* parent) : QWidget(parent) {
+ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
+    : QWidget(parent), jobs_(jobs ? jobs : new JobRunner(this)) {
   auto* layout = new QVBoxLayout(this);
 
   auto* inputs = new QGridLayout;
@@ -202,6 +204,7 @@ ModelTestView::ModelTestView(QWidget* parent) : QWidget(parent) {
   measuredCurve_ = addCurve(overlayPlot_, QColor(29, 53, 87), Qt::SolidLine);
   beforeCurve_ = addCurve(overlayPlot_, QColor(230, 57, 70), Qt::DashLine);
   afterCurve_ = addCurve(overlayPlot_, QColor(42, 157, 143), Qt::SolidLine);
+  installPlotExportAction(overlayPlot_);
   overlayLayout->addWidget(overlayChoice_);
   overlayLayout->addWidget(overlayPlot_, 1);
   results_->addTab(whereTabs_, QString());
@@ -236,12 +239,9 @@ ModelTestView::ModelTestView(QWidget* parent) : QWidget(parent) {
 }
 
 ModelTestView::~ModelTestView() {
-  // The worker holds only shared state; ask it to stop and wait so it never
-  // outlives the widget it reports to.
-  if (worker_) {
-    cancel();
-    worker_->wait();
-  }
+  // The job holds only shared state and delivers nothing once the view is
+  // gone; ask it to stop so it does not run on for nobody.
+  cancel();
 }
 
 void ModelTestView::setModelPath(const QString& path) {
@@ -267,7 +267,7 @@ void ModelTestView::setEffects(const QStringList& names) {
   }
 }
 bool ModelTestView::isRunning() const {
-  return worker_ && worker_->isRunning();
+  return jobId_ != 0 && jobs_->isRunning(jobId_);
 }
 QString ModelTestView::statusText() const {
   return status_->text();
@@ -346,44 +346,27 @@ bool ModelTestView::run() {
     setStatus(tr("Tick at least one candidate effect."));
     return false;
   }
-  cancelRequested_ = std::make_shared<std::atomic<bool>>(false);
-  auto cancelFlag = cancelRequested_;
-  QPointer<ModelTestView> self(this);
-  options.progress = [self, cancelFlag](double fraction, const std::string& step) {
-    const QString text = QString::fromStdString(step);
-    QMetaObject::invokeMethod(
-        self.data(),
-        [self, fraction, text] {
-          if (self) self->onProgress(fraction, text);
-        },
-        Qt::QueuedConnection);
-    return !cancelFlag->load();
-  };
-  result_.reset();
-  error_.clear();
   auto problem = problem_;
   running_ = problem_;
-  worker_ = QThread::create([this, problem, options] {
-    auto result = core::gap::diagnose(*problem, options);
-    if (result.ok()) {
-      result_ = std::move(result.value());
-    } else {
-      error_ = QString::fromStdString(result.error().describe());
-    }
-  });
-  connect(worker_, &QThread::finished, this, &ModelTestView::onFinished);
-  connect(worker_, &QThread::finished, worker_, &QObject::deleteLater);
+  jobId_ = jobs_->run<core::gap::Diagnosis>(
+      this, tr("Model vs test diagnosis"),
+      [problem, options](JobProgress& progress) {
+        core::gap::DiagnosisOptions withProgress = options;
+        withProgress.progress = progress.callback();  // reports, and stops the fit when cancelled
+        return core::gap::diagnose(*problem, withProgress);
+      },
+      [this](core::Result<core::gap::Diagnosis> result) { onFinished(std::move(result)); },
+      [this](double fraction, const QString& step) { onProgress(fraction, step); });
   run_->setEnabled(false);
   load_->setEnabled(false);
   cancel_->setEnabled(true);
   progress_->setValue(0);
   setStatus(tr("Diagnosing..."));
-  worker_->start();
   return true;
 }
 
 void ModelTestView::cancel() {
-  if (cancelRequested_) cancelRequested_->store(true);
+  if (isRunning()) jobs_->cancel(jobId_);
 }
 
 void ModelTestView::onProgress(double fraction, const QString& step) {
@@ -391,20 +374,20 @@ void ModelTestView::onProgress(double fraction, const QString& step) {
   if (!step.isEmpty()) setStatus(step);
 }
 
-void ModelTestView::onFinished() {
+void ModelTestView::onFinished(core::Result<core::gap::Diagnosis> result) {
+  jobId_ = 0;
   run_->setEnabled(true);
   load_->setEnabled(true);
   cancel_->setEnabled(false);
-  const bool ok = result_.has_value();
+  const bool ok = result.ok();
   if (ok) {
-    diagnosis_ = std::move(result_);
-    result_.reset();
+    diagnosis_ = std::move(result).value();
     diagnosed_ = running_;
     progress_->setValue(1000);
     setStatus(tr("Diagnosis done."));
     showDiagnosis();
   } else {
-    setStatus(tr("The diagnosis stopped: %1").arg(error_));
+    setStatus(tr("The diagnosis stopped: %1").arg(QString::fromStdString(result.error().describe())));
   }
   export_->setEnabled(diagnosis_.has_value());
   emit finished(ok);

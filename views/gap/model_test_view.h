@@ -6,10 +6,8 @@
 // the measured/model overlay before and after the best effect; export it all as
 // a report (HTML with the figures, plus the JSON the CLI writes).
 
-#include <QPointer>
 #include <QString>
 #include <QWidget>
-#include <atomic>
 #include <memory>
 #include <optional>
 
@@ -28,17 +26,20 @@ class QSpinBox;
 class QTabWidget;
 class QTableWidget;
 class QTextBrowser;
-class QThread;
 class QwtPlot;
 class QwtPlotCurve;
 
 namespace mozzi {
 namespace views {
 
+class JobRunner;
+
 class ModelTestView : public QWidget {
   Q_OBJECT
  public:
-  explicit ModelTestView(QWidget* parent = nullptr);
+  // Runs the diagnosis on `jobs` (the window's runner); without one the view
+  // keeps a runner of its own.
+  explicit ModelTestView(QWidget* parent = nullptr, JobRunner* jobs = nullptr);
   ~ModelTestView() override;
 
   // What the buttons do; the GUI tests call these directly.
@@ -52,7 +53,7 @@ class ModelTestView : public QWidget {
   // Reads both files and lists the candidate effects; false (and a message in
   // the status line) when a file cannot be used.
   bool loadInputs();
-  // Starts the diagnosis in a worker thread; false when inputs are missing or
+  // Starts the diagnosis as a job of the JobRunner; false when inputs are missing or
   // a run is under way. finished() is emitted when it ends (ok or not).
   bool run();
   void cancel();
@@ -81,7 +82,7 @@ class ModelTestView : public QWidget {
   void browseModel();
   void browseTest();
   void onProgress(double fraction, const QString& step);
-  void onFinished();
+  void onFinished(core::Result<core::gap::Diagnosis> result);
   void showDiagnosis();
   void fillWhere();
   void fillRanking();
@@ -129,12 +130,8 @@ class ModelTestView : public QWidget {
   std::vector<core::gap::OverlayCurve> after_;
   QString afterLabel_;
 
-  // Worker state: the thread writes result_ and error_, the GUI reads them
-  // after the thread has finished.
-  QPointer<QThread> worker_;
-  std::shared_ptr<std::atomic<bool>> cancelRequested_;
-  std::optional<core::gap::Diagnosis> result_;
-  QString error_;
+  JobRunner* jobs_ = nullptr;
+  int jobId_ = 0;  // the diagnosis under way (0: none)
 };
 
 }  // namespace views

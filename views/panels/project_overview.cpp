@@ -8,6 +8,8 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include "views/common/project_model.h"
+
 namespace mozzi {
 namespace views {
 
@@ -32,6 +34,29 @@ ProjectOverview::ProjectOverview(QWidget* parent) : QWidget(parent) {
   layout->addWidget(details_);
   layout->addWidget(specimens_, 1);
   retranslate();
+}
+
+void ProjectOverview::setModel(ProjectModel* model) {
+  if (model_) disconnect(model_, nullptr, this, nullptr);
+  model_ = model;
+  if (model_) {
+    connect(model_, &ProjectModel::projectChanged, this, &ProjectOverview::refresh);
+    connect(model_, &ProjectModel::specimensChanged, this, &ProjectOverview::refresh);
+  }
+  refresh();
+}
+
+void ProjectOverview::refresh() {
+  if (!model_ || !model_->isOpen()) {
+    clear();
+    return;
+  }
+  auto summary = model_->summary();
+  if (!summary) {
+    clear();
+    return;
+  }
+  showSummary(model_->path(), *summary, model_->isReadOnly(), model_->readOnlyReason());
 }
 
 void ProjectOverview::showSummary(const QString& path, const core::io::ProjectSummary& summary, bool readOnly,

@@ -12,10 +12,16 @@ class QTableWidget;
 namespace mozzi {
 namespace views {
 
+class ProjectModel;
+
 class ProjectOverview : public QWidget {
   Q_OBJECT
  public:
   explicit ProjectOverview(QWidget* parent = nullptr);
+
+  // Shows the model's open project and follows its changes.
+  void setModel(ProjectModel* model);
+  void refresh();
 
   void showSummary(const QString& path, const core::io::ProjectSummary& summary, bool readOnly,
                    const QString& readOnlyReason);
@@ -36,6 +42,7 @@ class ProjectOverview : public QWidget {
   bool readOnly_ = false;
   QString readOnlyReason_;
   bool hasProject_ = false;
+  ProjectModel* model_ = nullptr;
 };
 
 }  // namespace views

@@ -11,6 +11,7 @@
 #include <QVBoxLayout>
 
 #include "core/common/plot_math.h"
+#include "views/plots/plot_export.h"
 #include "views/plots/vector_series.h"
 
 namespace mozzi {
@@ -47,6 +48,7 @@ FrfPlot::FrfPlot(QWidget* parent) : QWidget(parent) {
   phase_ = makePlot(this, QStringLiteral("frfPhase"), &phaseCurve_, QColor(230, 57, 70));
   coherence_ = makePlot(this, QStringLiteral("frfCoherence"), &coherenceCurve_, QColor(42, 157, 143));
   coherence_->setAxisScale(QwtPlot::yLeft, 0.0, 1.05);
+  for (QwtPlot* plot : {magnitude_, phase_, coherence_}) installPlotExportAction(plot);
   layout->addWidget(magnitude_, 3);
   layout->addWidget(phase_, 2);
   layout->addWidget(coherence_, 1);
@@ -139,6 +141,10 @@ void FrfPlot::retranslate() {
   }
   magnitude_->setAxisTitle(QwtPlot::yLeft, type.isEmpty() ? tr("Magnitude [dB]") : tr("|H| %1 [dB]").arg(type));
   phase_->setAxisTitle(QwtPlot::yLeft, tr("Phase [deg]"));
+  // Curve titles name the columns of an exported CSV.
+  magnitudeCurve_->setTitle(tr("magnitude"));
+  phaseCurve_->setTitle(tr("phase"));
+  coherenceCurve_->setTitle(tr("coherence"));
   coherence_->setAxisTitle(QwtPlot::yLeft, tr("Coherence"));
   coherence_->setAxisTitle(QwtPlot::xBottom, tr("Frequency [Hz]"));
 }

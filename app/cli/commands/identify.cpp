@@ -1,8 +1,9 @@
-// mozzi-cli identify: modal identification of the FRFs in a UFF file
-// (docs/cli/identify.md). pLSCF or LSCE + LSFD + Ceres refinement (standard
+// mozzi-cli identify: modal identification of the FRFs in a UFF file or of
+// an FRF set of a project (docs/cli/identify.md). pLSCF or LSCE + LSFD + Ceres refinement (standard
 // errors), or single-mode peak picking / circle fit over the band.
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
@@ -10,12 +11,15 @@
 
 #include "app/cli/args.h"
 #include "app/cli/command.h"
+#include "core/io/project_store.h"
 #include "core/io/uff/uff.h"
 #include "core/modal/lsce.h"
 #include "core/modal/plscf.h"
 #include "core/modal/refine.h"
 #include "core/modal/sdof.h"
 #include "core/modal/shape_tools.h"
+#include "core/signal/window.h"
+#include "devices/campaign/campaign_definition.h"
 
 namespace mozzi::cli {
 namespace {
@@ -25,7 +29,8 @@ namespace uff = core::io::uff;
 
 constexpr const char* kUsage =
     "Usage: mozzi-cli identify FRF.uff --band LO:HI [--method plscf|lsce|circle|peak] [--max-order N]\n"
-    "                          [--stabilization OUT.csv] [--modes OUT.uff] [--json]\n";
+    "                          [--stabilization OUT.csv] [--modes OUT.uff] [--json]\n"
+    "       mozzi-cli identify PROJECT.mozzi --frf-set ID --band LO:HI [same options]\n";
 
 int usage(std::ostream& err, const std::string& why) {
   err << "mozzi-cli identify: " << why << "\n" << kUsage;
@@ -37,6 +42,34 @@ int fail(std::ostream& err, const core::Error& e) {
   return kExitFailure;
 }
 
+// FRF set `text` of a project (read-only). When a campaign measured it with
+// an exponential window, *tauS is its time constant (the identified damping
+// is corrected for it), else 0.
+core::Result<core::FrfMatrix> projectFrf(const std::string& path, const std::string& text, double* tauS) {
+  char* end = nullptr;
+  const long long id = std::strtoll(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || id <= 0)
+    return core::makeError(core::ErrorCode::InvalidArgument,
+                           "--frf-set takes a positive FRF set id (got '" + text + "')", "--frf-set");
+  auto store = core::io::ProjectStore::open(path, core::io::ProjectStore::OpenMode::ReadOnly);
+  if (!store) return store.error();
+  auto frf = store->frfSet(id);
+  if (!frf) return frf.error();
+  *tauS = 0.0;
+  auto sets = store->frfSets();
+  if (!sets) return sets.error();
+  for (const auto& s : *sets) {
+    if (s.id != id || !s.campaignId) continue;
+    auto c = store->campaign(*s.campaignId);
+    if (!c) return c.error();
+    if (c->settingsJson.empty() || c->settingsJson == "{}") break;
+    auto def = devices::campaign::parseDefinition(c->settingsJson);
+    if (!def) return def.error();
+    *tauS = def->windows.exponentialTauS;
+  }
+  return frf;
+}
+
 struct Row {
   double f = 0, zeta = 0;
   std::optional<double> fStd, zStd;
@@ -45,11 +78,12 @@ struct Row {
 
 int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   OptionSpec spec;
-  spec.valued = {"--band", "--method", "--max-order", "--stabilization", "--modes"};
+  spec.valued = {"--band", "--method", "--max-order", "--stabilization", "--modes", "--frf-set"};
   spec.flags = {"--json"};
   auto parsed = ParsedArgs::parse(args, spec);
   if (!parsed) return usage(err, parsed.error().message);
-  if (parsed->positional().size() != 1) return usage(err, "expected one FRF file");
+  if (parsed->positional().size() != 1)
+    return usage(err, parsed->value("--frf-set") ? "expected one project file" : "expected one FRF file");
   const auto bandText = parsed->value("--band");
   if (!bandText) return usage(err, "--band LO:HI is required");
   double lo = 0, hi = 0;
@@ -79,9 +113,18 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     maxOrder = static_cast<int>(**mo);
   }
 
-  auto file = uff::readFile(parsed->positional()[0]);
-  if (!file) return fail(err, file.error());
-  auto frf = uff::toFrfMatrix(*file);
+  const std::string& input = parsed->positional()[0];
+  if (!parsed->value("--frf-set") && input.size() > 6 && input.compare(input.size() - 6, 6, ".mozzi") == 0)
+    return usage(err, "a project needs --frf-set ID (mozzi-cli project info lists the FRF sets)");
+  double tauS = 0.0;  // exponential window of the measurement, removed from the damping
+  core::Result<core::FrfMatrix> frf = core::makeError(core::ErrorCode::NotFound, "no FRFs");
+  if (auto set = parsed->value("--frf-set")) {
+    frf = projectFrf(parsed->positional()[0], *set, &tauS);
+  } else {
+    auto file = uff::readFile(parsed->positional()[0]);
+    if (!file) return fail(err, file.error());
+    frf = uff::toFrfMatrix(*file);
+  }
   if (!frf) return fail(err, frf.error());
 
   md::ModalModel model;
@@ -122,6 +165,14 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     mode.residue = est->residue;
     model.modes.push_back(mode);
     rows.push_back({est->frequencyHz, est->zeta, std::nullopt, std::nullopt, 0.0});
+  }
+  if (tauS > 0.0) {
+    for (auto& r : rows) {
+      auto corrected = core::signal::correctExponentialWindowDamping({r.f, r.zeta}, tauS);
+      if (!corrected) return fail(err, corrected.error());
+      r.f = corrected->naturalFrequencyHz;
+      r.zeta = corrected->zeta;
+    }
   }
   auto shapes = md::modeShapes(model, 0);
   if (!shapes) return fail(err, shapes.error());
@@ -184,11 +235,11 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
   return kExitOk;
 }
 
-const CommandRegistrar kRegistrar({"identify",
-                                   "FRF.uff --band LO:HI [--method plscf|lsce|circle|peak] [--max-order N] "
-                                   "[--stabilization OUT.csv] [--modes OUT.uff] [--json]",
-                                   "Modal identification: frequencies, damping (zeta, eta), standard errors, MPC",
-                                   identifyCommand});
+const CommandRegistrar kRegistrar(
+    {"identify",
+     "FRF.uff|PROJECT.mozzi [--frf-set ID] --band LO:HI [--method plscf|lsce|circle|peak] [--max-order N] "
+     "[--stabilization OUT.csv] [--modes OUT.uff] [--json]",
+     "Modal identification: frequencies, damping (zeta, eta), standard errors, MPC", identifyCommand});
 
 }  // namespace
 }  // namespace mozzi::cli

@@ -2,6 +2,7 @@
 // Mesa's software OpenGL: docks, every menu action, project open errors,
 // persistence, languages, the About box, and a screenshot for the record.
 #include <qwt_global.h>
+#include <qwt_plot.h>
 #include <sqlite3.h>
 #include <vtkVersion.h>
 #include <QAction>
@@ -21,18 +22,25 @@
 #include <QTreeWidget>
 #include <QtTest>
 
+#include <atomic>
 #include <memory>
 
 #include "app/gui/main_window.h"
-#include "app/gui/project_document.h"
 #include "core/io/uff/uff.h"
 #include "devices/sim/virtual_specimens.h"
+#include "views/common/job_runner.h"
+#include "views/common/job_status_widget.h"
+#include "views/common/page_tabs.h"
+#include "views/common/project_model.h"
+#include "views/common/project_tree.h"
 #include "views/gap/model_test_view.h"
 #include "views/panels/project_overview.h"
 #include "views/plots/frf_plot.h"
 #include "views/scene/scene_view.h"
 
 using mozzi::app::MainWindow;
+using mozzi::views::ProjectItem;
+using mozzi::views::RecordKind;
 
 class MainWindowTest : public QObject {
   Q_OBJECT
@@ -52,6 +60,9 @@ class MainWindowTest : public QObject {
   void importedFrfsOpenAPlotTab();
   void unreadableImportLeavesTheProjectUnchanged();
   void modelVsTestOpensOneTabThatFollowsTheLanguage();
+  void everyMenuPageOfTheTableHasAnActionThatOpensIt();
+  void treeOpensItemsInTheirPages();
+  void runningJobsShowInTheStatusBar();
   void screenshot();
 
  private:
@@ -155,7 +166,7 @@ void MainWindowTest::missingAndCorruptFilesShowAClearMessageAndKeepTheWindowUsab
            qPrintable(window_->errorBox()->informativeText()));
   window_->errorBox()->close();
   // The project that was open stays open.
-  QCOMPARE(window_->document()->path(), file(QStringLiteral("menus.mozzi")));
+  QCOMPARE(window_->model()->path(), file(QStringLiteral("menus.mozzi")));
 
   QFile corrupt(file(QStringLiteral("corrupt.mozzi")));
   QVERIFY(corrupt.open(QIODevice::WriteOnly));
@@ -184,7 +195,7 @@ void MainWindowTest::missingAndCorruptFilesShowAClearMessageAndKeepTheWindowUsab
   QVERIFY(window_->openProject(file(QStringLiteral("menus.mozzi"))));
   // Opening the project that is already open (Open Recent) keeps it writable.
   QVERIFY(window_->openProject(file(QStringLiteral("menus.mozzi"))));
-  QVERIFY(!window_->document()->isReadOnly());
+  QVERIFY(!window_->model()->isReadOnly());
 }
 
 void MainWindowTest::demoProjectFillsTreeOverviewAndProperties() {
@@ -221,7 +232,7 @@ void MainWindowTest::recentFilesAndLayoutPersist() {
   auto* log = window_->findChild<QDockWidget*>(QStringLiteral("logDock"));
   log->hide();
   window_->close();  // saves geometry and dock state
-  window_->document()->close();
+  window_->model()->close();
 
   MainWindow second;
   second.show();
@@ -240,9 +251,9 @@ void MainWindowTest::saveAsCopiesAndOpensTheCopy() {
   QVERIFY(window_->createDemoProject(file(QStringLiteral("original.mozzi"))));
   const QString copy = file(QStringLiteral("copy.mozzi"));
   QVERIFY(window_->saveProjectAs(copy));
-  QCOMPARE(window_->document()->path(), copy);
-  QVERIFY(!window_->document()->isReadOnly());
-  auto summary = window_->document()->summary();
+  QCOMPARE(window_->model()->path(), copy);
+  QVERIFY(!window_->model()->isReadOnly());
+  auto summary = window_->model()->summary();
   QVERIFY(summary.ok());
   QCOMPARE(summary->specimens.size(), mozzi::devices::sim::virtualSpecimens().size());
   // Saving onto an existing project of another name is refused without touching it.
@@ -259,7 +270,8 @@ void MainWindowTest::languageSwitchesToItalianAndBack() {
   QStringList texts;
   for (QAction* a : fileMenu->actions()) texts << a->text();
   QVERIFY2(texts.contains(QStringLiteral("&Apri progetto...")), qPrintable(texts.join(QStringLiteral("|"))));
-  QCOMPARE(window_->workArea()->tabText(0), QStringLiteral("Panoramica"));
+  // Tab titles come from the page table (context "Pages") and follow the language.
+  QCOMPARE(window_->workArea()->tabText(0), QCoreApplication::translate("Pages", "Overview"));
   QCOMPARE(QSettings().value(QStringLiteral("ui/language")).toString(), QStringLiteral("it"));
   QVERIFY(window_->setLanguage(QStringLiteral("en")));
   texts.clear();
@@ -282,7 +294,7 @@ void MainWindowTest::aboutListsTheLinkedLibraryVersions() {
 void MainWindowTest::sceneRendersWithOpenGl() {
   auto* scene = window_->findChild<mozzi::views::SceneView*>();
   QVERIFY(scene);
-  window_->workArea()->setCurrentWidget(scene);
+  window_->workArea()->setCurrentPage(scene);
   QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
   const int before = scene->framesRendered();
   scene->render();
@@ -301,7 +313,7 @@ void MainWindowTest::importedGeometryIsDrawnInThe3dView() {
   const QString uff = QStringLiteral(MOZZI_SHARED_DATA_DIR "/uff/TestLab 161 164 18 15 82.uff");
   QVERIFY(window_->importUff(uff));
   auto* scene = window_->findChild<mozzi::views::SceneView*>();
-  QCOMPARE(window_->workArea()->currentWidget(), static_cast<QWidget*>(scene));
+  QCOMPARE(window_->workArea()->currentPage(), static_cast<QWidget*>(scene));
   QCOMPARE(scene->meshPointCount(), 36);
   QCOMPARE(scene->meshLineCount(), 30);
   QCOMPARE(scene->skippedLineCount(), 0);
@@ -344,7 +356,7 @@ void MainWindowTest::importedFrfsOpenAPlotTab() {
   const int tabsBefore = window_->workArea()->count();
   QVERIFY(window_->importUff(path));
   QCOMPARE(window_->workArea()->count(), tabsBefore + 1);
-  auto* plot = qobject_cast<mozzi::views::FrfPlot*>(window_->workArea()->currentWidget());
+  auto* plot = qobject_cast<mozzi::views::FrfPlot*>(window_->workArea()->currentPage());
   QVERIFY(plot);
   QCOMPARE(plot->pairCount(), 2);
   QCOMPARE(plot->shownSamples(), size_t(n));
@@ -360,7 +372,7 @@ void MainWindowTest::importedFrfsOpenAPlotTab() {
 
 void MainWindowTest::unreadableImportLeavesTheProjectUnchanged() {
   QVERIFY(window_->createDemoProject(file(QStringLiteral("import-bad.mozzi"))));
-  auto before = window_->document()->summary();
+  auto before = window_->model()->summary();
   QVERIFY(before.ok());
   QFile bad(file(QStringLiteral("bad.uff")));
   QVERIFY(bad.open(QIODevice::WriteOnly));
@@ -370,7 +382,7 @@ void MainWindowTest::unreadableImportLeavesTheProjectUnchanged() {
   QVERIFY(window_->errorBox() && window_->errorBox()->isVisible());
   QVERIFY2(window_->errorBox()->text().contains(QStringLiteral("unchanged")), qPrintable(window_->errorBox()->text()));
   window_->errorBox()->close();
-  auto after = window_->document()->summary();
+  auto after = window_->model()->summary();
   QVERIFY(after.ok());
   QCOMPARE(after->counts.size(), before->counts.size());
   for (size_t i = 0; i < before->counts.size(); ++i) QCOMPARE(after->counts[i].rows, before->counts[i].rows);
@@ -379,29 +391,126 @@ void MainWindowTest::unreadableImportLeavesTheProjectUnchanged() {
 // Tools > Model vs Test opens the gap view once (a second call raises it) and
 // its tab title follows the interface language like every other tab.
 void MainWindowTest::modelVsTestOpensOneTabThatFollowsTheLanguage() {
-  mozzi::views::ModelTestView* view = window_->openModelTest();
+  auto* view = qobject_cast<mozzi::views::ModelTestView*>(window_->openPage(QStringLiteral("model-vs-test")));
   QVERIFY(view);
-  QCOMPARE(window_->workArea()->currentWidget(), view);
+  QCOMPARE(window_->workArea()->currentPage(), view);
   const int tabs = window_->workArea()->count();
   window_->workArea()->setCurrentIndex(0);
-  QCOMPARE(window_->openModelTest(), view);
+  QCOMPARE(window_->openPage(QStringLiteral("model-vs-test")), view);
   QCOMPARE(window_->workArea()->count(), tabs);
-  QCOMPARE(window_->workArea()->currentWidget(), view);
-  const int index = window_->workArea()->indexOf(view);
+  QCOMPARE(window_->workArea()->currentPage(), view);
+  const int index = window_->workArea()->indexOfPage(view);
   QCOMPARE(window_->workArea()->tabText(index), QStringLiteral("Model vs Test"));
   QVERIFY(window_->setLanguage(QStringLiteral("it")));
-  QCOMPARE(window_->workArea()->tabText(index), QStringLiteral("Modello contro prova"));
+  QCOMPARE(window_->workArea()->tabText(index), QCoreApplication::translate("Pages", "Model vs Test"));
   // Widgets get LanguageChange as a posted event: wait for it.
   QTRY_VERIFY(view->verdictText().contains(QStringLiteral("Nessuna diagnosi")));
   QVERIFY(window_->setLanguage(QStringLiteral("en")));
   QCOMPARE(window_->workArea()->tabText(index), QStringLiteral("Model vs Test"));
 }
 
+// The Pages and Tools menus are built from the page table: one action per page
+// with a menu, and triggering it opens that page.
+void MainWindowTest::everyMenuPageOfTheTableHasAnActionThatOpensIt() {
+  int withMenu = 0;
+  for (const auto& spec : window_->pages().pages()) {
+    if (spec.menu == mozzi::views::PageMenu::None) continue;
+    ++withMenu;
+    auto* action = window_->findChild<QAction*>(QStringLiteral("page:") + spec.id);
+    QVERIFY2(action, qPrintable(spec.id));
+    QCOMPARE(action->text(), mozzi::views::PageRegistry::title(spec));
+    action->trigger();
+    QWidget* page = window_->workArea()->currentPage();
+    QVERIFY2(page, qPrintable(spec.id));
+    QCOMPARE(window_->workArea()->specOf(page)->id, spec.id);
+  }
+  QVERIFY(withMenu >= 3);  // overview, 3-D view, model vs test
+  // The overview and the 3-D view open with the window.
+  QVERIFY(window_->workArea()->findPage(QStringLiteral("overview")));
+  QVERIFY(window_->workArea()->findPage(QStringLiteral("scene")));
+  window_->workArea()->setCurrentIndex(0);
+}
+
+// Double-click in the tree opens an item in its default page; the tree's
+// context menu offers every page that opens it.
+void MainWindowTest::treeOpensItemsInTheirPages() {
+  QVERIFY(window_->newProject(file(QStringLiteral("tree-open.mozzi"))));
+  auto sp = window_->model()->addSpecimen(QStringLiteral("Fork A"), QStringLiteral("fork"));
+  QVERIFY(sp.ok());
+  mozzi::core::FrfMatrix frf;
+  frf.frequencyHz = mozzi::core::Vector::LinSpaced(50, 1.0, 50.0);
+  frf.responses = {{2, mozzi::core::Direction::X, false}};
+  frf.references = {{1, mozzi::core::Direction::X, true}};
+  frf.h.emplace_back(mozzi::core::ComplexMatrix::Constant(50, 1, mozzi::core::Complex(0.0, -1e-4)));
+  mozzi::core::io::FrfSetInfo info;
+  info.specimenId = *sp;
+  info.name = "fork roving";
+  auto set = window_->model()->addFrfSet(info, frf);
+  QVERIFY(set.ok());
+  const ProjectItem item{RecordKind::FrfSet, *set, *sp};
+  QVERIFY(window_->selectItem(item));
+  auto* tree = window_->projectTree();
+  const int tabs = window_->workArea()->count();
+  emit tree->itemActivated(tree->currentItem(), 0);
+  QCOMPARE(window_->workArea()->count(), tabs + 1);
+  auto* plot = qobject_cast<mozzi::views::FrfPlot*>(window_->workArea()->currentPage());
+  QVERIFY(plot);
+  QCOMPARE(plot->shownSamples(), size_t(50));
+  QCOMPARE(window_->workArea()->tabText(window_->workArea()->currentIndex()), QStringLiteral("FRF: fork roving"));
+  // The FRF plots carry the export action.
+  QVERIFY(!plot->magnitudePlot()->actions().isEmpty());
+
+  // The context menu lists "Open in <page>" for the pages of the row.
+  QTimer::singleShot(0, [] {
+    auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+    if (!menu) return;
+    QStringList texts;
+    for (QAction* a : menu->actions()) texts << a->text();
+    menu->close();
+    qApp->setProperty("treeMenuTexts", texts);
+  });
+  const QRect rect = tree->visualItemRect(tree->currentItem());
+  emit tree->customContextMenuRequested(rect.center());
+  QCOMPARE(qApp->property("treeMenuTexts").toStringList(), QStringList{QStringLiteral("Open in FRF")});
+  // Closing the project closes the tabs of its records.
+  window_->model()->close();
+  QCOMPARE(window_->workArea()->count(), tabs);
+}
+
+void MainWindowTest::runningJobsShowInTheStatusBar() {
+  auto* status = window_->findChild<mozzi::views::JobStatusWidget*>(QStringLiteral("jobStatus"));
+  QVERIFY(status);
+  QVERIFY(!status->isVisible());
+  std::atomic<bool> release{false};
+  bool done = false;
+  window_->jobs()->run<int>(
+      QStringLiteral("Long computation"),
+      [&](mozzi::views::JobProgress& p) -> mozzi::core::Result<int> {
+        p.report(0.5, "half way");
+        while (!release.load()) QThread::msleep(1);
+        return 1;
+      },
+      [&](mozzi::core::Result<int> r) { done = r.ok(); });
+  QVERIFY(status->isVisible());
+  QCOMPARE(status->text(), QStringLiteral("Long computation"));
+  release = true;
+  QTRY_VERIFY(done);
+  QVERIFY(!status->isVisible());
+}
+
 void MainWindowTest::screenshot() {
   QVERIFY(window_->createDemoProject(file(QStringLiteral("screenshot.mozzi"))));
+  window_->showNormal();
+  window_->resize(1280, 800);
+  window_->workArea()->setCurrentIndex(0);
+  QTest::qWait(50);
   const QString folder = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR", QDir::tempPath());
   QDir().mkpath(folder);
-  const QString path = QDir(folder).filePath(QStringLiteral("main_window.png"));
+  // Run again with QT_SCALE_FACTOR=2 for the high-DPI picture.
+  const QString scale = qEnvironmentVariable("QT_SCALE_FACTOR");
+  const QString name =
+      scale.isEmpty() ? QStringLiteral("main_window.png") : QStringLiteral("main_window_scale%1.png").arg(scale);
+  const QString path = QDir(folder).filePath(name);
   QVERIFY(window_->grab().save(path));
   QVERIFY(QFileInfo(path).size() > 10000);
   qInfo("screenshot: %s", qPrintable(path));

@@ -1,0 +1,173 @@
+// The page table. One entry per page: add yours at the end of
+// registerBuiltinPages() (docs/workbench-pages.md); keep the page's code in
+// views/<area>/ and only the wiring here.
+#include "app/gui/builtin_pages.h"
+
+#include <QCoreApplication>
+#include <QVariant>
+#include <functional>
+#include <initializer_list>
+#include <memory>
+
+#include "core/geometry/mesh_placement.h"
+#include "views/common/page_registry.h"
+#include "views/gap/model_test_view.h"
+#include "views/panels/project_overview.h"
+#include "views/plots/frf_plot.h"
+#include "views/rigs/rig_test_page.h"
+#include "views/scene/scene_view.h"
+
+namespace mozzi {
+namespace app {
+
+namespace {
+
+using views::PageContext;
+using views::PageMenu;
+using views::PageSpec;
+using views::ProjectItem;
+using views::RecordKind;
+
+bool isKind(const ProjectItem& item, std::initializer_list<RecordKind> kinds) {
+  for (RecordKind kind : kinds) {
+    if (item.kind == kind) return true;
+  }
+  return false;
+}
+
+// --- 3-D view: the selected specimen's mesh ---------------------------------------
+// (views/scene owns the view; this is only its wiring to the project.)
+
+void showSpecimenMesh(views::SceneView* scene, views::ProjectModel* model, qint64 specimenId,
+                      const std::function<void(const QString&)>& log) {
+  scene->setProperty("mozziSpecimen", QVariant::fromValue<qlonglong>(specimenId));
+  core::io::ProjectStore* store = model->store();
+  if (!store || specimenId == 0) {
+    scene->clearMesh();
+    return;
+  }
+  auto mesh = store->mesh(specimenId);
+  if (!mesh) {
+    scene->clearMesh();
+    if (log)
+      log(QCoreApplication::translate("Pages", "Cannot show the mesh: %1")
+              .arg(QString::fromStdString(mesh.error().describe())));
+    return;
+  }
+  auto positions = core::geometry::globalNodePositions(*mesh);
+  if (!positions) {
+    scene->clearMesh();
+    if (log)
+      log(QCoreApplication::translate("Pages", "Cannot place the mesh: %1")
+              .arg(QString::fromStdString(positions.error().describe())));
+    return;
+  }
+  scene->showMesh(*mesh, *positions);
+  if (scene->skippedLineCount() > 0 && log) {
+    log(QCoreApplication::translate("Pages",
+                                    "%n trace line segment(s) name nodes the mesh does not have and are not drawn",
+                                    nullptr, scene->skippedLineCount()));
+  }
+}
+
+QWidget* createScene(const PageContext& ctx) {
+  auto* scene = new views::SceneView(ctx.parent);
+  scene->setObjectName(QStringLiteral("sceneTab"));
+  views::ProjectModel* model = ctx.model;
+  const auto log = ctx.log;
+  const auto shown = [scene] { return scene->property("mozziSpecimen").toLongLong(); };
+  QObject::connect(model, &views::ProjectModel::meshChanged, scene, [=](qint64 specimenId) {
+    if (specimenId == shown() || specimenId == 0) showSpecimenMesh(scene, model, shown(), log);
+  });
+  QObject::connect(model, &views::ProjectModel::projectChanged, scene, [=] { showSpecimenMesh(scene, model, 0, log); });
+  return scene;
+}
+
+}  // namespace
+
+void registerBuiltinPages(views::PageRegistry& registry) {
+  registry.add(PageSpec{QStringLiteral("overview"), QT_TRANSLATE_NOOP("Pages", "Overview"),
+                        QT_TRANSLATE_NOOP("Pages", "The open project: file, schema, specimens"), QString(),
+                        PageMenu::Pages, [](const ProjectItem& item) { return item.kind == RecordKind::Project; },
+                        [](const PageContext& ctx) -> QWidget* {
+                          auto* page = new views::ProjectOverview(ctx.parent);
+                          page->setObjectName(QStringLiteral("overviewTab"));
+                          page->setModel(ctx.model);
+                          return page;
+                        },
+                        /*singleton=*/true, /*openAtStart=*/true, nullptr});
+
+  registry.add(PageSpec{QStringLiteral("scene"), QT_TRANSLATE_NOOP("Pages", "3-D View"),
+                        QT_TRANSLATE_NOOP("Pages", "The selected specimen's measurement mesh in 3-D"), QString(),
+                        PageMenu::Pages,
+                        [](const ProjectItem& item) {
+                          return isKind(item, {RecordKind::Specimen, RecordKind::Mesh});
+                        },
+                        createScene, /*singleton=*/true, /*openAtStart=*/true,
+                        [](QWidget* page, const PageContext& ctx) {
+                          const qint64 specimen = ctx.item.specimenId ? ctx.item.specimenId : ctx.item.id;
+                          showSpecimenMesh(static_cast<views::SceneView*>(page), ctx.model, specimen, ctx.log);
+                        }});
+
+  registry.add(PageSpec{QStringLiteral("frf-plot"), QT_TRANSLATE_NOOP("Pages", "FRF"),
+                        QT_TRANSLATE_NOOP("Pages", "Magnitude, phase and coherence of a stored FRF set"), QString(),
+                        PageMenu::None, [](const ProjectItem& item) { return item.kind == RecordKind::FrfSet; },
+                        [](const PageContext& ctx) -> QWidget* {
+                          core::io::ProjectStore* store = ctx.model->store();
+                          if (!store) return nullptr;
+                          auto frf = store->frfSet(ctx.item.id);
+                          if (!frf) {
+                            if (ctx.log)
+                              ctx.log(QCoreApplication::translate("Pages", "Could not read the FRF set: %1")
+                                          .arg(QString::fromStdString(frf.error().describe())));
+                            return nullptr;
+                          }
+                          auto* plot = new views::FrfPlot(ctx.parent);
+                          plot->setFrfs(std::make_shared<const core::FrfMatrix>(std::move(frf).value()));
+                          return plot;
+                        },
+                        /*singleton=*/false, /*openAtStart=*/false, nullptr});
+
+  registry.add(PageSpec{
+      QStringLiteral("model-vs-test"), QT_TRANSLATE_NOOP("Pages", "Model vs Test"),
+      QT_TRANSLATE_NOOP("Pages", "Diagnose where a model and a test disagree and which unmodelled effect explains it"),
+      QString(), PageMenu::Tools, nullptr,
+      [](const PageContext& ctx) -> QWidget* {
+        auto* view = new views::ModelTestView(ctx.parent, ctx.jobs);
+        view->setObjectName(QStringLiteral("modelTestTab"));
+        const auto log = ctx.log;
+        QObject::connect(view, &views::ModelTestView::finished, view, [view, log](bool ok) {
+          if (log)
+            log(QCoreApplication::translate("Pages", "Model vs test: %1")
+                    .arg(ok ? view->verdictText() : view->statusText()));
+        });
+        return view;
+      },
+      /*singleton=*/true, /*openAtStart=*/false, nullptr});
+  // Stiffness rig and tyre tester (issue 20): run a test sequence on the
+  // simulated rig, or show a stored test opened from the project tree.
+  const auto rigPage = [](views::RigTestPage::Rig rig, const char* objectName) {
+    return [rig, objectName](const PageContext& ctx) -> QWidget* {
+      auto* page = new views::RigTestPage(rig, ctx);
+      page->setObjectName(QLatin1String(objectName));
+      return page;
+    };
+  };
+  const auto showStoredTest = [](QWidget* page, const PageContext& ctx) {
+    static_cast<views::RigTestPage*>(page)->showStoredTest(ctx.item.id);
+  };
+  registry.add(PageSpec{QStringLiteral("stiffness-rig"), QT_TRANSLATE_NOOP("Pages", "Stiffness Rig"),
+                        QT_TRANSLATE_NOOP("Pages", "Static and dynamic stiffness tests on the Motostiffmeter"),
+                        QString(), PageMenu::Pages,
+                        [](const ProjectItem& item) { return item.kind == RecordKind::RigTest; },
+                        rigPage(views::RigTestPage::Rig::Stiffness, "stiffnessRigTab"),
+                        /*singleton=*/true, /*openAtStart=*/false, showStoredTest});
+  registry.add(PageSpec{QStringLiteral("tyre-tester"), QT_TRANSLATE_NOOP("Pages", "Tyre Tester"),
+                        QT_TRANSLATE_NOOP("Pages", "Relaxation and steady-state tests on the Mototiremeter"), QString(),
+                        PageMenu::Pages, [](const ProjectItem& item) { return item.kind == RecordKind::TyreTest; },
+                        rigPage(views::RigTestPage::Rig::Tyre, "tyreTesterTab"),
+                        /*singleton=*/true, /*openAtStart=*/false, showStoredTest});
+}
+
+}  // namespace app
+}  // namespace mozzi

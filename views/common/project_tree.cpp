@@ -1,0 +1,206 @@
+#include "views/common/project_tree.h"
+
+#include <QDir>
+#include <QEvent>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QTreeWidgetItemIterator>
+
+namespace mozzi {
+namespace views {
+
+namespace {
+
+constexpr int kRoleKind = Qt::UserRole + 1;
+constexpr int kRoleId = Qt::UserRole + 2;
+constexpr int kRoleSpecimen = Qt::UserRole + 3;
+constexpr int kRoleProperties = Qt::UserRole + 4;  // QStringList: name, value, name, value, ...
+
+QString text(const std::string& s) {
+  return QString::fromStdString(s);
+}
+
+}  // namespace
+
+ProjectTree::ProjectTree(ProjectModel* model, QWidget* parent) : QTreeWidget(parent), model_(model) {
+  qRegisterMetaType<mozzi::views::ProjectItem>("mozzi::views::ProjectItem");
+  setObjectName(QStringLiteral("projectTree"));
+  setColumnCount(2);
+  header()->setStretchLastSection(false);
+  header()->setSectionResizeMode(0, QHeaderView::Stretch);
+  header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+  setContextMenuPolicy(Qt::CustomContextMenu);
+  connect(this, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* current) {
+    if (!rebuilding_) emit currentProjectItemChanged(itemOf(current));
+  });
+  connect(this, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* row) {
+    const ProjectItem item = itemOf(row);
+    if (item.kind != RecordKind::None) emit openRequested(item);
+  });
+  connect(model_, &ProjectModel::projectChanged, this, [this] {
+    projectReplaced_ = true;  // the same ids now name other records
+    refresh();
+  });
+  connect(model_, &ProjectModel::recordsChanged, this, [this](RecordKind kind) {
+    if (kind != RecordKind::Hit) refresh();  // hits are not listed; a campaign commits one every few seconds
+  });
+  refresh();
+}
+
+ProjectItem ProjectTree::itemOf(const QTreeWidgetItem* row) {
+  if (!row) return {};
+  return ProjectItem{static_cast<RecordKind>(row->data(0, kRoleKind).toInt()), row->data(0, kRoleId).toLongLong(),
+                     row->data(0, kRoleSpecimen).toLongLong()};
+}
+
+QTreeWidgetItem* ProjectTree::addRow(QTreeWidgetItem* parent, const QStringList& texts, const ProjectItem& item) {
+  auto* row = parent ? new QTreeWidgetItem(parent, texts) : new QTreeWidgetItem(this, texts);
+  row->setToolTip(0, texts.value(0));  // long names are cut in a narrow dock
+  row->setData(0, kRoleKind, static_cast<int>(item.kind));
+  row->setData(0, kRoleId, QVariant::fromValue<qlonglong>(item.id));
+  row->setData(0, kRoleSpecimen, QVariant::fromValue<qlonglong>(item.specimenId));
+  return row;
+}
+
+bool ProjectTree::selectItem(const ProjectItem& item) {
+  for (QTreeWidgetItemIterator it(this); *it; ++it) {
+    const ProjectItem row = itemOf(*it);
+    if (row.kind == item.kind && row.id == item.id) {
+      setCurrentItem(*it);
+      return true;
+    }
+  }
+  return false;
+}
+
+QList<QPair<QString, QString>> ProjectTree::currentProperties() const {
+  QList<QPair<QString, QString>> rows;
+  const QTreeWidgetItem* row = currentItem();
+  if (!row) return rows;
+  const QStringList props = row->data(0, kRoleProperties).toStringList();
+  if (props.isEmpty()) {
+    rows << qMakePair(tr("Item"), row->text(0));
+    if (!row->text(1).isEmpty()) rows << qMakePair(tr("Count"), row->text(1));
+    return rows;
+  }
+  for (int i = 0; i + 1 < props.size(); i += 2) rows << qMakePair(props[i], props[i + 1]);
+  const ProjectItem item = itemOf(row);
+  if (item.kind == RecordKind::Specimen && model_->store()) {
+    QString mesh = tr("none");
+    if (auto m = model_->store()->mesh(item.id); m && !m->nodes.empty()) {
+      mesh = tr("%1 nodes, %2 lines").arg(m->nodes.size()).arg(m->lines.size());
+    }
+    rows << qMakePair(tr("Mesh"), mesh);
+  }
+  return rows;
+}
+
+void ProjectTree::refresh() {
+  const ProjectItem selected = currentProjectItem();
+  rebuilding_ = true;
+  clear();
+  setHeaderLabels({tr("Item"), tr("Count")});
+  core::io::ProjectStore* store = model_->store();
+  auto summary = model_->summary();
+  if (!store || !summary) {
+    rebuilding_ = false;
+    if (selected.kind != RecordKind::None || projectReplaced_) emit currentProjectItemChanged({});
+    projectReplaced_ = false;
+    return;
+  }
+  const QString path = model_->path();
+  auto* root = addRow(nullptr, {QFileInfo(path).completeBaseName()}, {RecordKind::Project, 0, 0});
+  root->setData(
+      0, kRoleProperties,
+      QStringList{tr("File"), QDir::toNativeSeparators(path), tr("Access"),
+                  model_->isReadOnly() ? tr("read-only: %1").arg(model_->readOnlyReason()) : tr("read-write")});
+
+  auto* specimens = addRow(root, {tr("Specimens"), QString::number(summary->specimens.size())}, {});
+  for (const auto& sp : summary->specimens) {
+    auto* row = addRow(specimens, {text(sp.name)}, {RecordKind::Specimen, sp.id, sp.id});
+    // The mesh row is added when the specimen is selected (a mesh can be large).
+    row->setData(
+        0, kRoleProperties,
+        QStringList{tr("Name"), text(sp.name), tr("Kind"), text(sp.kind), tr("Description"), text(sp.description)});
+    if (auto campaigns = store->campaigns(sp.id); campaigns && !campaigns->empty()) {
+      for (const auto& c : *campaigns) {
+        auto* crow = addRow(row, {text(c.name)}, {RecordKind::Campaign, c.id, sp.id});
+        crow->setData(0, kRoleProperties,
+                      QStringList{tr("Name"), text(c.name), tr("Kind"), text(c.kind), tr("Notes"), text(c.notes)});
+      }
+    }
+  }
+  if (auto sets = store->frfSets(); sets && !sets->empty()) {
+    auto* group = addRow(root, {tr("FRF sets"), QString::number(sets->size())}, {});
+    for (const auto& set : *sets) {
+      auto* row = addRow(group, {text(set.name), QString::number(set.responseCount * set.referenceCount)},
+                         {RecordKind::FrfSet, set.id, set.specimenId});
+      row->setData(0, kRoleProperties,
+                   QStringList{tr("Name"), text(set.name), tr("Source"), text(set.source), tr("Frequency lines"),
+                               QString::number(set.lineCount), tr("Response/reference pairs"),
+                               QString::number(set.responseCount * set.referenceCount)});
+    }
+    expandItem(group);
+  }
+  if (auto results = store->modalResults(); results && !results->empty()) {
+    auto* group = addRow(root, {tr("Modal results"), QString::number(results->size())}, {});
+    for (const auto& result : *results) {
+      auto* row = addRow(group, {text(result.name), QString::number(result.modeCount)},
+                         {RecordKind::ModalResult, result.id, result.specimenId});
+      row->setData(0, kRoleProperties,
+                   QStringList{tr("Name"), text(result.name), tr("Method"), text(result.method), tr("Band"),
+                               tr("%1 - %2 Hz").arg(result.bandLowHz, 0, 'f', 1).arg(result.bandHighHz, 0, 'f', 1),
+                               tr("Modes"), QString::number(result.modeCount)});
+    }
+    expandItem(group);
+  }
+  // Rig and tyre tests (devices/rigtests, the stiffness-rig and tyre-tester pages).
+  const auto statusText = [this](core::io::TestStatus status) {
+    switch (status) {
+      case core::io::TestStatus::Running: return tr("running");
+      case core::io::TestStatus::Complete: return tr("complete");
+      case core::io::TestStatus::Interrupted: return tr("interrupted");
+      case core::io::TestStatus::Failed: return tr("failed");
+    }
+    return QString();
+  };
+  const auto addTests = [&](const QString& title, RecordKind kind, const std::vector<core::io::TestInfo>& tests) {
+    auto* group = addRow(root, {title, QString::number(tests.size())}, {});
+    for (const auto& t : tests) {
+      auto* row = addRow(group, {text(t.name), statusText(t.status)}, {kind, t.id, t.specimenId});
+      row->setData(0, kRoleProperties,
+                   QStringList{tr("Name"), text(t.name), tr("Specimen"), text(t.specimenName), tr("Kind"), text(t.kind),
+                               tr("Status"), statusText(t.status), tr("Note"), text(t.statusNote), tr("Recorded (UTC)"),
+                               text(t.recordedUtc), tr("Steps recorded"), QString::number(t.recordCount), tr("Results"),
+                               QString::number(t.resultCount)});
+    }
+    expandItem(group);
+  };
+  if (auto tests = store->rigTests(); tests && !tests->empty()) addTests(tr("Rig tests"), RecordKind::RigTest, *tests);
+  if (auto tests = store->tyreTests(); tests && !tests->empty())
+    addTests(tr("Tyre tests"), RecordKind::TyreTest, *tests);
+  auto* data = addRow(root, {tr("Data")}, {});
+  for (const auto& count : summary->counts) {
+    if (count.table == "specimen") continue;
+    addRow(data, {text(count.table), QString::number(count.rows)}, {});
+  }
+  expandItem(root);
+  expandItem(specimens);
+  if (selected.kind == RecordKind::None || !selectItem(selected)) setCurrentItem(root);
+  rebuilding_ = false;
+  // Observers hear of the selection only when it moved to another record.
+  if (currentProjectItem() != selected || projectReplaced_) emit currentProjectItemChanged(currentProjectItem());
+  projectReplaced_ = false;
+}
+
+QSize ProjectTree::sizeHint() const {
+  return QSize(fontMetrics().averageCharWidth() * 36, QTreeWidget::sizeHint().height());
+}
+
+void ProjectTree::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) refresh();
+  QTreeWidget::changeEvent(event);
+}
+
+}  // namespace views
+}  // namespace mozzi
