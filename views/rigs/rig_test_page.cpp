@@ -192,15 +192,13 @@ QString resultLabel(const std::string& key) {
   return q;
 }
 
-QwtPlotCurve* addCurve(QwtPlot* plot, const QColor& colour, int yAxis = QwtPlot::yLeft, bool points = false) {
+QwtPlotCurve* addCurve(QwtPlot* plot, const QColor& colour, int yAxis = QwtPlot::yLeft) {
   auto* c = new QwtPlotCurve();
-  c->setPen(QPen(colour, points ? 0.0 : 1.5));
+  c->setPen(QPen(colour, 1.5));
   c->setRenderHint(QwtPlotItem::RenderAntialiased, true);
   c->setYAxis(yAxis);
-  if (points) {
-    c->setStyle(QwtPlotCurve::NoCurve);
-    c->setSymbol(new QwtSymbol(QwtSymbol::Ellipse, QBrush(colour), QPen(colour), QSize(7, 7)));
-  }
+  c->setLegendAttribute(QwtPlotCurve::LegendShowLine, true);
+  c->setLegendAttribute(QwtPlotCurve::LegendShowSymbol, true);
   c->attach(plot);
   return c;
 }
@@ -317,7 +315,7 @@ void RigTestPage::buildUi() {
   auto* resultsLayout = new QVBoxLayout(resultsBox_);
   headline_ = new QLabel;
   headline_->setObjectName(QStringLiteral("headline"));
-  headline_->setWordWrap(true);
+  headline_->setWordWrap(false);  // its few lines always fit; the table gives way
   QFont bold = headline_->font();
   bold.setBold(true);
   bold.setPointSizeF(bold.pointSizeF() * 1.15);
@@ -414,11 +412,16 @@ void RigTestPage::fillTests() {
   const QSignalBlocker block(test_);
   test_->clear();
   if (rig_ == Rig::Stiffness) {
-    test_->addItem(tr("Static ramp (k_lat, twist axis, k_tw)"), QStringLiteral("static"));
-    test_->addItem(tr("Sine sweep (dynamic twist axis)"), QStringLiteral("dynamic"));
+    test_->addItem(tr("Static ramp"), QStringLiteral("static"));
+    test_->setItemData(0, tr("A slow force ramp: k_lat, the twist axis, a_tw and k_tw"), Qt::ToolTipRole);
+    test_->addItem(tr("Sine sweep"), QStringLiteral("dynamic"));
+    test_->setItemData(1, tr("A sine per frequency: the dynamic twist axis and stiffness"), Qt::ToolTipRole);
   } else {
-    test_->addItem(tr("Harmonic yaw (relaxation length)"), QStringLiteral("relaxation"));
-    test_->addItem(tr("Steady state (side-slip and camber sweeps)"), QStringLiteral("steady-state"));
+    test_->addItem(tr("Harmonic yaw"), QStringLiteral("relaxation"));
+    test_->setItemData(0, tr("Yaw oscillations at a list of frequencies: the relaxation length"), Qt::ToolTipRole);
+    test_->addItem(tr("Steady-state sweeps"), QStringLiteral("steady-state"));
+    test_->setItemData(1, tr("Side-slip and camber sweeps: the characteristics and the Magic Formula"),
+                       Qt::ToolTipRole);
   }
   const int i = test_->findData(current);
   if (i >= 0) test_->setCurrentIndex(i);
@@ -485,22 +488,40 @@ void RigTestPage::setRunning(bool running) {
 void RigTestPage::resetPlots() {
   const bool stiff = rig_ == Rig::Stiffness;
   const QString id = testId();
-  livePlot_->detachItems(QwtPlotItem::Rtti_PlotCurve, true);
-  resultPlot_->detachItems(QwtPlotItem::Rtti_PlotCurve, true);
   timeLeftData_.clear();
   timeRightData_.clear();
   xyData_.clear();
   xySecondData_.clear();
   liveStep_ = -1;
-  timeLeft_ = addCurve(livePlot_, QColor(31, 119, 180));
-  timeRight_ = addCurve(livePlot_, QColor(214, 39, 40), QwtPlot::yRight);
+  if (!timeLeft_) {  // the curves are made once; a reset empties and re-titles them
+    timeLeft_ = addCurve(livePlot_, QColor(31, 119, 180));
+    timeRight_ = addCurve(livePlot_, QColor(214, 39, 40), QwtPlot::yRight);
+    xyLive_ = addCurve(resultPlot_, QColor(31, 119, 180));
+    xySecond_ = addCurve(resultPlot_, QColor(44, 160, 44));
+    fitLine_ = addCurve(resultPlot_, QColor(0, 0, 0));
+    fitLine2_ = addCurve(resultPlot_, QColor(120, 120, 120));
+    fitLine_->setPen(QPen(Qt::black, 1.5, Qt::DashLine));
+    fitLine2_->setPen(QPen(QColor(120, 120, 120), 1.5, Qt::DashLine));
+  }
   const bool steady = id == QLatin1String("steady-state");
-  xyLive_ = addCurve(resultPlot_, QColor(31, 119, 180), QwtPlot::yLeft, steady);
-  xySecond_ = addCurve(resultPlot_, QColor(44, 160, 44), QwtPlot::yLeft, steady);
-  fitLine_ = addCurve(resultPlot_, QColor(0, 0, 0));
-  fitLine2_ = addCurve(resultPlot_, QColor(120, 120, 120));
-  fitLine_->setPen(QPen(Qt::black, 1.5, Qt::DashLine));
-  fitLine2_->setPen(QPen(QColor(120, 120, 120), 1.5, Qt::DashLine));
+  for (QwtPlotCurve* c : {xyLive_, xySecond_}) {
+    // Steady state: one point per set-point; otherwise a line through the scans.
+    c->setStyle(steady ? QwtPlotCurve::NoCurve : QwtPlotCurve::Lines);
+    const QColor colour = c->pen().color();
+    c->setSymbol(steady ? new QwtSymbol(QwtSymbol::Ellipse, QBrush(colour), QPen(colour), QSize(7, 7)) : nullptr);
+  }
+  for (QwtPlotCurve* c : {timeLeft_, timeRight_, xyLive_, xySecond_, fitLine_, fitLine2_})
+    c->setSamples(QVector<QPointF>());
+  // Which curves this test draws (and lists in the legend).
+  const bool second = !stiff && steady;
+  const bool fit = stiff ? id == QLatin1String("static") : steady;
+  const std::pair<QwtPlotCurve*, bool> used[] = {{xySecond_, second}, {fitLine_, fit}, {fitLine2_, second}};
+  for (const auto& [c, on] : used) {
+    c->setVisible(on);
+    c->setItemAttribute(QwtPlotItem::Legend, on);
+  }
+  // A measured line under a stored fit is drawn wide and light, so both show where they agree.
+  xyLive_->setPen(QPen(fit && !steady ? QColor(120, 170, 220) : QColor(31, 119, 180), fit && !steady ? 5.0 : 1.5));
   livePlot_->setAxisTitle(QwtPlot::xBottom, tr("Time [s]"));
   if (stiff) {
     timeWindowS_ = id == QLatin1String("dynamic") ? kSineTimeWindowS : 0.0;
@@ -513,10 +534,7 @@ void RigTestPage::resetPlots() {
     resultPlot_->setAxisTitle(QwtPlot::xBottom, tr("Load-point displacement [mm]"));
     resultPlot_->setAxisTitle(QwtPlot::yLeft, tr("Force [N]"));
     xyLive_->setTitle(id == QLatin1String("dynamic") ? tr("current frequency") : tr("measured"));
-    xySecond_->setVisible(false);
-    xySecond_->setItemAttribute(QwtPlotItem::Legend, false);
     fitLine_->setTitle(tr("F = k_lat x (stored k_lat)"));
-    fitLine2_->setItemAttribute(QwtPlotItem::Legend, false);
   } else {
     timeWindowS_ = kTyreTimeWindowS;
     livePlot_->setTitle(tr("Lateral force and aligning moment"));
@@ -527,7 +545,7 @@ void RigTestPage::resetPlots() {
     resultPlot_->setAxisTitle(QwtPlot::yLeft, tr("F_y [N]"));
     if (steady) {
       resultPlot_->setTitle(tr("Steady-state characteristic"));
-      resultPlot_->setAxisTitle(QwtPlot::xBottom, tr("Side-slip or camber angle [deg]"));
+      resultPlot_->setAxisTitle(QwtPlot::xBottom, tr("Side-slip, camber [deg]"));
       xyLive_->setTitle(tr("F_y vs side-slip"));
       xySecond_->setTitle(tr("F_y vs camber"));
       fitLine_->setTitle(tr("cornering stiffness (stored)"));
@@ -536,9 +554,6 @@ void RigTestPage::resetPlots() {
       resultPlot_->setTitle(tr("Lateral force vs yaw angle"));
       resultPlot_->setAxisTitle(QwtPlot::xBottom, tr("Yaw angle [deg]"));
       xyLive_->setTitle(tr("current frequency"));
-      xySecond_->setItemAttribute(QwtPlotItem::Legend, false);
-      fitLine_->setItemAttribute(QwtPlotItem::Legend, false);
-      fitLine2_->setItemAttribute(QwtPlotItem::Legend, false);
     }
   }
   livePlot_->setAxisAutoScale(QwtPlot::xBottom);
@@ -546,6 +561,8 @@ void RigTestPage::resetPlots() {
   livePlot_->setAxisAutoScale(QwtPlot::yRight);
   resultPlot_->setAxisAutoScale(QwtPlot::xBottom);
   resultPlot_->setAxisAutoScale(QwtPlot::yLeft);
+  livePlot_->updateLegend();
+  resultPlot_->updateLegend();
   livePlot_->replot();
   resultPlot_->replot();
 }
@@ -920,7 +937,7 @@ void RigTestPage::showStoredTest(qint64 id) {
     case core::io::TestStatus::Failed: word = tr("failed"); break;
   }
   QString head = tr("'%1' (%2)").arg(qs(name), word);
-  if (!note.empty()) head += QStringLiteral(": ") + qs(note);
+  headline_->setToolTip(qs(note));  // the status line shows it too
   if (!headline.isEmpty()) head += QStringLiteral("\n") + headline.join(QStringLiteral("\n"));
   headline_->setText(head);
 

@@ -49,6 +49,7 @@ namespace {
 void saveShot(QWidget& page, const QString& name) {
   const QString shots = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR");
   if (shots.isEmpty()) return;
+  QTest::qWait(200);  // the layout requests the result posted are handled before the picture
   QDir().mkpath(shots);
   const bool hiDpi = qApp->devicePixelRatio() > 1.0;
   page.grab().save(shots + QStringLiteral("/") + name + (hiDpi ? QStringLiteral("@2x") : QString()) +
