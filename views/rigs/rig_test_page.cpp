@@ -26,6 +26,7 @@
 #include <cmath>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <variant>
 
 #include "core/io/project_store.h"
 #include "devices/rigtests/rig_sequence.h"
@@ -48,8 +49,8 @@ namespace rt = devices::rigtests;
 struct RigHandOver {
   std::mutex mutex;
   std::vector<rt::LiveReadout> live;
-  std::vector<rt::StepReport> steps;
-  std::vector<std::string> log;
+  // Step reports and log lines in the order they came (the log view shows both).
+  std::vector<std::variant<rt::StepReport, std::string>> events;
   std::optional<rt::Progress> progress;
   std::optional<rt::Outcome> outcome;  // kept even when the job ends cancelled
   bool specimenAdded = false;
@@ -100,11 +101,11 @@ core::Result<rt::Outcome> runOnSimulatedRig(JobProgress& progress, RigHandOver& 
   };
   cb.step = [&](const rt::StepReport& s) {
     std::lock_guard<std::mutex> lock(handOver.mutex);
-    handOver.steps.push_back(s);
+    handOver.events.emplace_back(s);
   };
   cb.log = [&](const std::string& line) {
     std::lock_guard<std::mutex> lock(handOver.mutex);
-    handOver.log.push_back(line);
+    handOver.events.emplace_back(line);
   };
   auto out = run(**device, rt::StoreTarget{store.get(), who->specimenId, ""}, cb, &handOver.cancel);
   if (out) {
@@ -502,6 +503,7 @@ void RigTestPage::resetPlots() {
     fitLine2_ = addCurve(resultPlot_, QColor(120, 120, 120));
     fitLine_->setPen(QPen(Qt::black, 1.5, Qt::DashLine));
     fitLine2_->setPen(QPen(QColor(120, 120, 120), 1.5, Qt::DashLine));
+    timeLeft_->setPen(QPen(QColor(31, 119, 180), 3.0));  // wide: an in-phase trace on the right axis covers it
   }
   const bool steady = id == QLatin1String("steady-state");
   for (QwtPlotCurve* c : {xyLive_, xySecond_}) {
@@ -731,20 +733,25 @@ void RigTestPage::onDone(bool ok, const QString& message) {
 void RigTestPage::drain() {
   if (!handOver_) return;
   std::vector<rt::LiveReadout> live;
-  std::vector<rt::StepReport> steps;
-  std::vector<std::string> lines;
+  std::vector<std::variant<rt::StepReport, std::string>> events;
   {
     std::lock_guard<std::mutex> lock(handOver_->mutex);
     live.swap(handOver_->live);
-    steps.swap(handOver_->steps);
-    lines.swap(handOver_->log);
+    events.swap(handOver_->events);
   }
   for (const auto& r : live) onLive(r);
-  for (const auto& s : steps) onStep(s);
-  for (const auto& l : lines) logView_->appendPlainText(qs(l));
-  if (!steps.empty())  // the running test's committed steps are in the project now
+  bool stepped = false;
+  for (const auto& e : events) {
+    if (const auto* step = std::get_if<rt::StepReport>(&e)) {
+      onStep(*step);
+      stepped = true;
+    } else {
+      logView_->appendPlainText(qs(std::get<std::string>(e)));
+    }
+  }
+  if (stepped)  // the running test's committed steps are in the project now
     model_->notifyChanged(rig_ == Rig::Stiffness ? RecordKind::RigTest : RecordKind::TyreTest);
-  if (!live.empty() || !steps.empty() || dirty_) replot();
+  if (!live.empty() || stepped || dirty_) replot();
 }
 
 void RigTestPage::onLive(const rt::LiveReadout& r) {
@@ -903,7 +910,7 @@ void RigTestPage::showStoredTest(qint64 id) {
   results_->setRowCount(static_cast<int>(rows.size()));
   const std::string headlineKeys[] = {
       "k_lat", "k_tw", "axis_inclination", "relaxation_length_m", "cornering_stiffness", "camber_stiffness"};
-  QStringList headline;
+  QStringList headline, stepHeadline;
   for (int i = 0; i < static_cast<int>(rows.size()); ++i) {
     const Row& r = rows[static_cast<std::size_t>(i)];
     const auto s = shown(r.value, r.uncertainty, r.unit);
@@ -919,6 +926,7 @@ void RigTestPage::showStoredTest(qint64 id) {
       auto* item = new QTableWidgetItem(items[c]);
       if (c == 2 || c == 3) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
       item->setData(Qt::UserRole, qs(r.key));
+      item->setToolTip(items[c]);  // a long quantity's name is elided in its column
       results_->setItem(i, c, item);
     }
     if (!r.step)
@@ -926,6 +934,9 @@ void RigTestPage::showStoredTest(qint64 id) {
         if (r.key == k)
           headline << QStringLiteral("%1 = %2 ± %3 %4")
                           .arg(resultLabel(r.key), number(s.value), number(s.uncertainty), s.unit);
+    if (r.step && r.key == "k_lat")  // a sine sweep: the dynamic stiffness per frequency
+      stepHeadline << QStringLiteral("%1: %2 = %3 ± %4 %5")
+                          .arg(step, resultLabel(r.key), number(s.value), number(s.uncertainty), s.unit);
   }
   results_->resizeColumnsToContents();
   results_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);
@@ -938,6 +949,7 @@ void RigTestPage::showStoredTest(qint64 id) {
   }
   QString head = tr("'%1' (%2)").arg(qs(name), word);
   headline_->setToolTip(qs(note));  // the status line shows it too
+  if (headline.isEmpty()) headline = stepHeadline.mid(0, 4);
   if (!headline.isEmpty()) head += QStringLiteral("\n") + headline.join(QStringLiteral("\n"));
   headline_->setText(head);
 

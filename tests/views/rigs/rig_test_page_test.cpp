@@ -211,6 +211,35 @@ class RigTestPageTest : public QObject {
     saveShot(page, QStringLiteral("tyre_tester_steady_state"));
   }
 
+  void sineSweepStoresEachFrequency() {
+    RigTestPage page(RigTestPage::Rig::Stiffness, context());
+    page.resize(1280, 800);
+    page.show();
+    QVERIFY(page.selectSpecimen(QStringLiteral("fork-a-with-wheel")));
+    QVERIFY(page.selectTest(QStringLiteral("dynamic")));
+    QVERIFY(page.testForm()->setValues({{"dynamic.frequencies", std::string("2, 8")}}).ok());
+    QVERIFY(page.rigForm()->setValues({{"sim.seed", std::int64_t{6}}, {"sim.realtime", false}}).ok());
+    QSignalSpy finished(&page, &RigTestPage::finished);
+    QTest::mouseClick(page.runButton(), Qt::LeftButton);
+    QVERIFY(finished.wait(120000));
+    QVERIFY2(finished.first().first().toBool(), qPrintable(page.statusText()));
+    auto stored = model_.store()->rigTest(*page.lastTestId());
+    QVERIFY(stored.ok());
+    QCOMPARE(stored->kind, mozzi::core::io::StoredRigTest::Kind::Dynamic);
+    // A dynamic k_lat per frequency, in the table with its step's label.
+    int perStep = 0;
+    for (const auto& r : stored->results) perStep += r.step && r.quantity == "k_lat";
+    QCOMPARE(perStep, 2);
+    int rows = 0;
+    for (int r = 0; r < page.resultsTable()->rowCount(); ++r)
+      rows += page.resultsTable()->item(r, 1)->data(Qt::UserRole).toString() == QLatin1String("k_lat") &&
+              page.resultsTable()->item(r, 0)->text().contains(QStringLiteral("Hz"));
+    QCOMPARE(rows, 2);
+    // The last frequency's force-displacement loop and its 2 s of traces.
+    QVERIFY(curveTitled(page.resultPlot(), QStringLiteral("current frequency"))->dataSize() > 100);
+    saveShot(page, QStringLiteral("stiffness_rig_sine"));
+  }
+
   void setPointsBeyondTheLimitsAreRefusedBeforeAnythingMoves() {
     RigTestPage page(RigTestPage::Rig::Tyre, context());
     QVERIFY(page.selectTest(QStringLiteral("steady-state")));
