@@ -119,6 +119,22 @@ const std::vector<const char*>& parameterTexts() {
       QT_TRANSLATE_NOOP("Parameters", "Slip during a camber sweep"),
       QT_TRANSLATE_NOOP("Parameters", "Gyro noise"),
       QT_TRANSLATE_NOOP("Parameters", "Moment noise"),
+      // Drivers' parameters added by the spatial specimens and the tyre tester's sweeps.
+      QT_TRANSLATE_NOOP("Parameters", "Hammer point"),
+      QT_TRANSLATE_NOOP("Parameters",
+                        "DOF label of the mesh the hammer strikes, e.g. 12:+Y (-Y: struck the other way); empty = the "
+                        "specimen's driving point (the thesis's hammer point)"),
+      QT_TRANSLATE_NOOP("Parameters", "Accelerometer DOFs"),
+      QT_TRANSLATE_NOOP("Parameters",
+                        "comma-separated DOF labels of the mesh for acc 1..7 in order; empty = the first DOFs of the "
+                        "mesh; inputs without a DOF read noise only"),
+      QT_TRANSLATE_NOOP("Parameters",
+                        "harmonic yaw for the relaxation length (§1.9), a side-slip or camber sweep, or one held "
+                        "steady-state set-point (sweep.slip_deg, sweep.camber_deg; appendix 2)"),
+      QT_TRANSLATE_NOOP("Parameters",
+                        "the machine reaches 55 deg (appendix 2; §1.8 prints 54); 45 deg by default (§1.8)"),
+      QT_TRANSLATE_NOOP("Parameters", "also the held camber of a steady-state set-point"),
+      QT_TRANSLATE_NOOP("Parameters", "also the held side-slip of a steady-state set-point"),
       // The rig test sequences' settings (devices/rigtests/sequence_parameters.cpp).
       QT_TRANSLATE_NOOP("Parameters", "F of the ramp 0 -> +F -> -F -> 0 (the thesis uses 300 N, fork B 500 N; §1.2)"),
       QT_TRANSLATE_NOOP("Parameters", "Ramp duration"),

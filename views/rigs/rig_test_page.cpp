@@ -254,6 +254,10 @@ void RigTestPage::buildUi() {
   testLabel_ = new QLabel;
   setupForm->addRow(specimenLabel_, specimen_);
   setupForm->addRow(testLabel_, test_);
+  setupInfo_ = new QLabel;
+  setupInfo_->setObjectName(QStringLiteral("setup"));
+  setupInfo_->setWordWrap(true);
+  setupForm->addRow(setupInfo_);
   leftLayout->addWidget(setupBox_);
 
   rigBox_ = new QGroupBox;
@@ -365,6 +369,7 @@ void RigTestPage::buildUi() {
   auto* stopKey = new QShortcut(QKeySequence(Qt::Key_Escape), this);
   stopKey->setContext(Qt::WidgetWithChildrenShortcut);
   connect(stopKey, &QShortcut::activated, this, &RigTestPage::stop);
+  connect(rigForm_, &ParameterForm::valuesChanged, this, [this] { showSetup(); });
   connect(specimen_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] { rebuildTestForm(); });
   connect(test_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
     rebuildTestForm();
@@ -388,6 +393,7 @@ void RigTestPage::retranslate() {
   results_->setHorizontalHeaderLabels({tr("Step"), tr("Quantity"), tr("Value"), tr("Std. uncertainty"), tr("Unit")});
   fillTests();
   if (status_->text().isEmpty()) setStatus(tr("Ready. Pick a test and press Run."));
+  showSetup();
   if (!isRunning()) resetPlots();
 }
 
@@ -450,7 +456,46 @@ QString RigTestPage::specimenKey() const {
   return specimen_->currentData().toString();
 }
 
+QString RigTestPage::setupText() const {
+  return setupInfo_->text();
+}
+
+void RigTestPage::showSetup() {
+  const std::string key = specimenKey().toStdString();
+  const auto values = rigForm_->values();
+  const auto mm = [](double m) { return QString::number(m * 1e3, 'f', 0); };
+  if (rig_ == Rig::Stiffness) {
+    auto setup = rt::simulatedStiffnessSetup(key, 1, false);
+    if (!setup) {
+      setupInfo_->setText(qs(setup.error().describe()));
+      return;
+    }
+    QStringList points;
+    for (const auto& p : setup->laserPoints) points << QStringLiteral("(%1, %2)").arg(mm(p.x()), mm(p.y()));
+    setupInfo_->setText(
+        tr("Plate (u, v) [mm]: %n laser(s) at %1; load point at (%2, %3); the other end locked.", nullptr,
+           static_cast<int>(points.size()))
+            .arg(points.join(QStringLiteral(", ")), mm(setup->loadPoint.x()), mm(setup->loadPoint.y())));
+  } else {
+    auto setup = rt::simulatedTyreSetup(key, devices::parameterReal(values, "tyre.pressure_bar", 2.0), 1, false);
+    if (!setup) {
+      setupInfo_->setText(qs(setup.error().describe()));
+      return;
+    }
+    setupInfo_->setText(tr("Load F_z %1 N; contact half-length a %2 mm (Table 17); working limits side-slip "
+                           "±%3°, camber ±%4° (machine ±%5°, ±%6°, disk up to %7 km/h).")
+                            .arg(setup->verticalLoadN, 0, 'f', 0)
+                            .arg(mm(setup->halfLengthM))
+                            .arg(setup->slipLimitDeg)
+                            .arg(setup->camberLimitDeg)
+                            .arg(rt::kMachineMaxSlipDeg)
+                            .arg(rt::kMachineMaxCamberDeg)
+                            .arg(rt::kMachineMaxSpeedKmh));
+  }
+}
+
 void RigTestPage::rebuildTestForm() {
+  showSetup();
   const auto* entry = devices::sim::findSpecimen(specimenKey().toStdString());
   const double force = entry && entry->statics ? entry->statics->testForceN : 300.0;
   const QString id = testId();

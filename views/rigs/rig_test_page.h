@@ -71,6 +71,9 @@ class RigTestPage : public QWidget {
   QwtPlot* resultPlot() const { return resultPlot_; }
   QString statusText() const;
   QString readoutText() const;
+  // The rig's set-up for the chosen specimen (plate points, load point; tyre
+  // load, contact half-length and limits).
+  QString setupText() const;
 
   // Selects a specimen by catalogue key ("fork-a-with-wheel") and a test by
   // id ("static", "dynamic", "relaxation", "steady-state"); false if absent.
@@ -108,6 +111,7 @@ class RigTestPage : public QWidget {
   void fillSpecimens();
   void fillTests();
   void rebuildTestForm();
+  void showSetup();
   void drain();
   void onLive(const devices::rigtests::LiveReadout& r);
   void onStep(const devices::rigtests::StepReport& s);
@@ -139,6 +143,7 @@ class RigTestPage : public QWidget {
   QProgressBar* progress_ = nullptr;
   QLabel* status_ = nullptr;
   QLabel* readout_ = nullptr;
+  QLabel* setupInfo_ = nullptr;
   QwtPlot* livePlot_ = nullptr;
   QwtPlot* resultPlot_ = nullptr;
   QTableWidget* results_ = nullptr;

@@ -85,6 +85,8 @@ class RigTestPageTest : public QObject {
     page.show();
     QVERIFY(page.selectSpecimen(QStringLiteral("fork-a-with-wheel")));
     QVERIFY(page.selectTest(QStringLiteral("static")));
+    // The set-up shown is the simulated rig's: four lasers on the plate and the load point.
+    QVERIFY2(page.setupText().contains(QStringLiteral("4 laser(s)")), qPrintable(page.setupText()));
     QVERIFY(page.testForm()->setValues({{"static.period", 4.0}}).ok());
     QVERIFY(page.rigForm()->setValues({{"sim.seed", std::int64_t{5}}, {"sim.realtime", true}}).ok());
     QSignalSpy rigTests(&model_, &ProjectModel::rigTestsChanged);
