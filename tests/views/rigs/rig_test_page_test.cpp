@@ -24,6 +24,7 @@
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTreeWidgetItemIterator>
 #include <QtTest>
 #include <cmath>
 
@@ -34,6 +35,7 @@
 #include "devices/sim/specimen_catalogue.h"
 #include "views/common/job_runner.h"
 #include "views/common/project_model.h"
+#include "views/common/project_tree.h"
 #include "views/panels/parameter_form.h"
 #include "views/panels/parameter_texts.h"
 
@@ -268,6 +270,28 @@ class RigTestPageTest : public QObject {
     QVERIFY(stored.ok());
     QCOMPARE(stored->status, mozzi::core::io::TestStatus::Interrupted);
     QVERIFY2(page.statusText().contains(QStringLiteral("Interrupted")), qPrintable(page.statusText()));
+  }
+
+  void projectTreeListsTheStoredTestsAndOpensThem() {
+    // The tests the pages stored above, as the project tree shows them.
+    mozzi::views::ProjectTree tree(&model_);
+    tree.refresh();
+    int rig = 0, tyre = 0;
+    for (QTreeWidgetItemIterator it(&tree); *it; ++it) {
+      const auto item = mozzi::views::ProjectTree::itemOf(*it);
+      rig += item.kind == RecordKind::RigTest;
+      tyre += item.kind == RecordKind::TyreTest;
+    }
+    QCOMPARE(static_cast<size_t>(rig), model_.store()->rigTests().value().size());
+    QCOMPARE(static_cast<size_t>(tyre), model_.store()->tyreTests().value().size());
+    QVERIFY(rig >= 3 && tyre >= 2);
+    // Opened from the tree on a stored test, the page shows that test's results.
+    const auto first = model_.store()->rigTests().value().front();
+    PageContext ctx = context();
+    ctx.item = {RecordKind::RigTest, first.id, first.specimenId};
+    RigTestPage page(RigTestPage::Rig::Stiffness, ctx);
+    QCOMPARE(page.lastTestId().value_or(0), first.id);
+    QVERIFY(page.resultsTable()->rowCount() > 0);
   }
 
   void sequenceSettingsAreTranslatable() {
