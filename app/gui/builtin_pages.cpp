@@ -17,6 +17,7 @@
 #include "views/gap/model_test_view.h"
 #include "views/panels/project_overview.h"
 #include "views/plots/frf_plot.h"
+#include "views/rigs/rig_test_page.h"
 #include "views/scene/mode_animation_page.h"
 #include "views/scene/scene_view.h"
 
@@ -194,6 +195,29 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                           if (ctx.item.kind == RecordKind::Campaign && !station->session()->isRunning())
                             station->showCampaign(ctx.item.id);
                         }});
+  // Stiffness rig and tyre tester (issue 20): run a test sequence on the
+  // simulated rig, or show a stored test opened from the project tree.
+  const auto rigPage = [](views::RigTestPage::Rig rig, const char* objectName) {
+    return [rig, objectName](const PageContext& ctx) -> QWidget* {
+      auto* page = new views::RigTestPage(rig, ctx);
+      page->setObjectName(QLatin1String(objectName));
+      return page;
+    };
+  };
+  const auto showStoredTest = [](QWidget* page, const PageContext& ctx) {
+    static_cast<views::RigTestPage*>(page)->showStoredTest(ctx.item.id);
+  };
+  registry.add(PageSpec{QStringLiteral("stiffness-rig"), QT_TRANSLATE_NOOP("Pages", "Stiffness Rig"),
+                        QT_TRANSLATE_NOOP("Pages", "Static and dynamic stiffness tests on the Motostiffmeter"),
+                        QString(), PageMenu::Pages,
+                        [](const ProjectItem& item) { return item.kind == RecordKind::RigTest; },
+                        rigPage(views::RigTestPage::Rig::Stiffness, "stiffnessRigTab"),
+                        /*singleton=*/true, /*openAtStart=*/false, showStoredTest});
+  registry.add(PageSpec{QStringLiteral("tyre-tester"), QT_TRANSLATE_NOOP("Pages", "Tyre Tester"),
+                        QT_TRANSLATE_NOOP("Pages", "Relaxation and steady-state tests on the Mototiremeter"), QString(),
+                        PageMenu::Pages, [](const ProjectItem& item) { return item.kind == RecordKind::TyreTest; },
+                        rigPage(views::RigTestPage::Rig::Tyre, "tyreTesterTab"),
+                        /*singleton=*/true, /*openAtStart=*/false, showStoredTest});
 }
 
 }  // namespace app

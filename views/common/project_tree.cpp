@@ -154,6 +154,31 @@ void ProjectTree::refresh() {
     }
     expandItem(group);
   }
+  // Rig and tyre tests (devices/rigtests, the stiffness-rig and tyre-tester pages).
+  const auto statusText = [this](core::io::TestStatus status) {
+    switch (status) {
+      case core::io::TestStatus::Running: return tr("running");
+      case core::io::TestStatus::Complete: return tr("complete");
+      case core::io::TestStatus::Interrupted: return tr("interrupted");
+      case core::io::TestStatus::Failed: return tr("failed");
+    }
+    return QString();
+  };
+  const auto addTests = [&](const QString& title, RecordKind kind, const std::vector<core::io::TestInfo>& tests) {
+    auto* group = addRow(root, {title, QString::number(tests.size())}, {});
+    for (const auto& t : tests) {
+      auto* row = addRow(group, {text(t.name), statusText(t.status)}, {kind, t.id, t.specimenId});
+      row->setData(0, kRoleProperties,
+                   QStringList{tr("Name"), text(t.name), tr("Specimen"), text(t.specimenName), tr("Kind"), text(t.kind),
+                               tr("Status"), statusText(t.status), tr("Note"), text(t.statusNote), tr("Recorded (UTC)"),
+                               text(t.recordedUtc), tr("Steps recorded"), QString::number(t.recordCount), tr("Results"),
+                               QString::number(t.resultCount)});
+    }
+    expandItem(group);
+  };
+  if (auto tests = store->rigTests(); tests && !tests->empty()) addTests(tr("Rig tests"), RecordKind::RigTest, *tests);
+  if (auto tests = store->tyreTests(); tests && !tests->empty())
+    addTests(tr("Tyre tests"), RecordKind::TyreTest, *tests);
   auto* data = addRow(root, {tr("Data")}, {});
   for (const auto& count : summary->counts) {
     if (count.table == "specimen") continue;

@@ -120,6 +120,7 @@ const std::vector<const char*>& parameterTexts() {
       QT_TRANSLATE_NOOP("Parameters", "Gyro noise"),
       QT_TRANSLATE_NOOP("Parameters", "Moment noise"),
       // sim-hammer on the spatial specimens (issue 15).
+      // Drivers' parameters added by the spatial specimens and the tyre tester's sweeps.
       QT_TRANSLATE_NOOP("Parameters", "Hammer point"),
       QT_TRANSLATE_NOOP("Parameters",
                         "DOF label of the mesh the hammer strikes, e.g. 12:+Y (-Y: struck the other way); empty = the "
@@ -178,9 +179,46 @@ const std::vector<const char*>& parameterTexts() {
       QT_TRANSLATE_NOOP("Parameters", "Measured DOF"),
       QT_TRANSLATE_NOOP("Parameters", "where it measures, e.g. 7:+Y (ignored on the roving channel)"),
       QT_TRANSLATE_NOOP("Parameters", "Hits per point"),
+      QT_TRANSLATE_NOOP("Parameters", "accepted hits averaged at each point (thesis §1.6: five)"),
+      QT_TRANSLATE_NOOP("Parameters", "H1 (noise on the response), H2 (noise on the force) or Hv"),
       QT_TRANSLATE_NOOP("Parameters",
-                        "accepted hits averaged at each point (thesis §1.6: five)H1 (noise on the response), H2 (noise "
-                        "on the force) or Hv"),
+                        "harmonic yaw for the relaxation length (§1.9), a side-slip or camber sweep, or one held "
+                        "steady-state set-point (sweep.slip_deg, sweep.camber_deg; appendix 2)"),
+      QT_TRANSLATE_NOOP("Parameters",
+                        "the machine reaches 55 deg (appendix 2; §1.8 prints 54); 45 deg by default (§1.8)"),
+      QT_TRANSLATE_NOOP("Parameters", "also the held camber of a steady-state set-point"),
+      QT_TRANSLATE_NOOP("Parameters", "also the held side-slip of a steady-state set-point"),
+      // The rig test sequences' settings (devices/rigtests/sequence_parameters.cpp).
+      QT_TRANSLATE_NOOP("Parameters", "F of the ramp 0 -> +F -> -F -> 0 (the thesis uses 300 N, fork B 500 N; §1.2)"),
+      QT_TRANSLATE_NOOP("Parameters", "Ramp duration"),
+      QT_TRANSLATE_NOOP("Parameters", "time of the whole ramp; slow, so the specimen's inertia plays no part (§1.2)"),
+      QT_TRANSLATE_NOOP("Parameters", "Frequencies"),
+      QT_TRANSLATE_NOOP("Parameters",
+                        "sine frequencies in the actuator's band of 1 to 45 Hz, separated by commas (§1.3)"),
+      QT_TRANSLATE_NOOP("Parameters", "Force amplitude"),
+      QT_TRANSLATE_NOOP("Parameters", "sine set-point; the actuator's force falls with frequency (§1.1)"),
+      QT_TRANSLATE_NOOP("Parameters", "Settling cycles"),
+      QT_TRANSLATE_NOOP("Parameters", "cycles discarded after the soft start (at least 1 s)"),
+      QT_TRANSLATE_NOOP("Parameters", "Recorded cycles"),
+      QT_TRANSLATE_NOOP("Parameters", "whole cycles fitted with a sine per channel (at least 1 s)"),
+      QT_TRANSLATE_NOOP("Parameters", "speed of the rotating disk (the thesis runs the yaw test at 5 km/h, §1.9)"),
+      QT_TRANSLATE_NOOP("Parameters", "harmonic yaw frequencies, separated by commas (§5.1: 0.42 to 2.10 Hz)"),
+      QT_TRANSLATE_NOOP("Parameters", "amplitude of the side-slip oscillation (§1.9: 1.5 deg)"),
+      QT_TRANSLATE_NOOP("Parameters", "yaw cycles recorded at each frequency (§5.1: about 10)"),
+      QT_TRANSLATE_NOOP("Parameters", "cycles dropped at the start of each frequency (the lag's transient)"),
+      QT_TRANSLATE_NOOP("Parameters", "speed of the rotating disk (appendix 2)"),
+      QT_TRANSLATE_NOOP("Parameters", "Side-slip set-points"),
+      QT_TRANSLATE_NOOP("Parameters",
+                        "the side-slip sweep at zero camber, separated by commas (machine limit +/-10 deg)"),
+      QT_TRANSLATE_NOOP("Parameters", "Camber set-points"),
+      QT_TRANSLATE_NOOP("Parameters",
+                        "the camber sweep at zero side-slip, separated by commas (machine limit +/-55 deg)"),
+      QT_TRANSLATE_NOOP("Parameters", "Settling time"),
+      QT_TRANSLATE_NOOP("Parameters", "wait after each set-point before averaging (appendix 2 holds 10 s)"),
+      QT_TRANSLATE_NOOP("Parameters", "Averaging time"),
+      QT_TRANSLATE_NOOP("Parameters", "forces and moments averaged per set-point"),
+      QT_TRANSLATE_NOOP("Parameters", "Magic Formula fit"),
+      QT_TRANSLATE_NOOP("Parameters", "fit the Magic Formula to F_y and M_z at the end"),
   };
   return texts;
 }

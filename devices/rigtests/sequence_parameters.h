@@ -1,0 +1,43 @@
+#pragma once
+// The settings of the rig test sequences as ParameterSpec lists, so that one
+// form builder (views/panels/parameter_form.h) shows them and a new setting
+// appears in the workbench without GUI code (WORKBENCH.md "Forms from
+// declarations"), and the map a form returns back as the sequence's settings.
+// Lists of frequencies and set-points are Text parameters of comma-separated
+// numbers ("1, 2, 5, 10"). Angles are in degrees and speeds in km/h, as the
+// operator sets them at the machine (§1.8, §1.9). The conversions check the
+// form of each value (the error names the key); the sequences' check*Settings
+// then check the values against the machine's limits.
+
+#include <string>
+#include <vector>
+
+#include "core/common/result.h"
+#include "devices/common/parameters.h"
+#include "devices/rigtests/stiffness_tests.h"
+#include "devices/rigtests/tyre_tests.h"
+
+namespace mozzi::devices::rigtests {
+
+// Stiffness rig. `peakForceN`: the default peak force (the specimen's test force).
+std::vector<ParameterSpec> staticTestParameters(double peakForceN = 300.0);
+core::Result<StaticTestSettings> staticSettingsFrom(const ParameterMap& values);
+std::vector<ParameterSpec> dynamicTestParameters(double amplitudeN = 300.0);
+core::Result<DynamicTestSettings> dynamicSettingsFrom(const ParameterMap& values);
+
+// Tyre tester.
+std::vector<ParameterSpec> relaxationTestParameters();
+core::Result<RelaxationSettings> relaxationSettingsFrom(const ParameterMap& values);
+std::vector<ParameterSpec> steadyStateTestParameters();
+core::Result<SteadyStateSettings> steadyStateSettingsFrom(const ParameterMap& values);
+
+// The simulated rigs' own settings a front end offers, as the simulated
+// devices declare them: "sim.seed" (noise seed), "sim.realtime" (paced like
+// the real rig), and for the tyre tester "tyre.pressure_bar" (Table 17's
+// half-length at that pressure). Empty if the driver cannot be created.
+std::vector<ParameterSpec> simulatedRigParameters(bool tyreTester);
+
+// "1, 2, 5": the numbers of a list parameter; the error names `key`.
+core::Result<std::vector<double>> parseNumberList(const std::string& text, const std::string& key);
+
+}  // namespace mozzi::devices::rigtests

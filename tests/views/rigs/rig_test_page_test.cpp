@@ -1,0 +1,325 @@
+// The stiffness-rig and tyre-tester pages drive the devices/rigtests
+// sequences on the simulated rigs as a user does (pick the specimen and the
+// test, set the form, press Run) and must store a result that matches what the
+// simulated rig was built with, an independent source:
+//  - stiffness rig, static ramp on fork A with wheel: k_lat and k_tw of the
+//    virtual specimen (devices/sim/specimen_catalogue: Table 10, 56.1 kN/m),
+//    within 1% (the tolerance; the ramp's noise on 4 s of data at
+//    1 kHz leaves k_lat's standard uncertainty near 0.1%);
+//  - tyre tester, harmonic yaw at 1.26 Hz on the 120/70 R17 tyre at 2 bar:
+//    the relaxation length the simulator's tyre uses (sim::tyreTesterSetup,
+//    eq. 48 with Tables 16 and 17), within 2% (the tolerance).
+// Both run in real time (the rig's pace): the live plots must be redrawn at
+// 20 Hz or more while the GUI thread stays free. Screenshots of both pages.
+#include "views/rigs/rig_test_page.h"
+
+#include <qwt_plot.h>
+#include <qwt_plot_curve.h>
+#include <qwt_plot_item.h>
+#include <QApplication>
+#include <QComboBox>
+#include <QDir>
+#include <QPushButton>
+#include <QSet>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTreeWidgetItemIterator>
+#include <QtTest>
+#include <cmath>
+
+#include "core/io/project_store.h"
+#include "devices/rigtests/sequence_parameters.h"
+#include "devices/rigtests/tyre_tests.h"
+#include "devices/sim/sim_drivers.h"
+#include "devices/sim/specimen_catalogue.h"
+#include "views/common/job_runner.h"
+#include "views/common/project_model.h"
+#include "views/common/project_tree.h"
+#include "views/panels/parameter_form.h"
+#include "views/panels/parameter_texts.h"
+
+using mozzi::views::JobRunner;
+using mozzi::views::PageContext;
+using mozzi::views::ProjectModel;
+using mozzi::views::RecordKind;
+using mozzi::views::RigTestPage;
+namespace rt = mozzi::devices::rigtests;
+
+namespace {
+
+void saveShot(QWidget& page, const QString& name) {
+  const QString shots = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR");
+  if (shots.isEmpty()) return;
+  QTest::qWait(200);  // the layout requests the result posted are handled before the picture
+  QDir().mkpath(shots);
+  const bool hiDpi = qApp->devicePixelRatio() > 1.0;
+  page.grab().save(shots + QStringLiteral("/") + name + (hiDpi ? QStringLiteral("@2x") : QString()) +
+                   QStringLiteral(".png"));
+}
+
+QwtPlotCurve* curveTitled(QwtPlot* plot, const QString& title) {
+  for (auto* item : plot->itemList(QwtPlotItem::Rtti_PlotCurve))
+    if (item->title().text() == title) return static_cast<QwtPlotCurve*>(item);
+  return nullptr;
+}
+
+const mozzi::core::io::StoredRigTest::Result* rigResult(const mozzi::core::io::StoredRigTest& t, const char* key) {
+  for (const auto& r : t.results)
+    if (!r.step && r.quantity == key) return &r;
+  return nullptr;
+}
+
+}  // namespace
+
+class RigTestPageTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    QVERIFY(dir_.isValid());
+    auto created = model_.create(dir_.filePath(QStringLiteral("rigs.mozzi")));
+    QVERIFY2(created.ok(), created.ok() ? "" : created.error().describe().c_str());
+  }
+
+  void staticRampStoresTheSpecimensStiffness() {
+    RigTestPage page(RigTestPage::Rig::Stiffness, context());
+    page.resize(1280, 800);
+    page.show();
+    QVERIFY(page.selectSpecimen(QStringLiteral("fork-a-with-wheel")));
+    QVERIFY(page.selectTest(QStringLiteral("static")));
+    // The set-up shown is the simulated rig's: four lasers on the plate and the load point.
+    QVERIFY2(page.setupText().contains(QStringLiteral("4 laser(s)")), qPrintable(page.setupText()));
+    QVERIFY(page.testForm()->setValues({{"static.period", 4.0}}).ok());
+    QVERIFY(page.rigForm()->setValues({{"sim.seed", std::int64_t{5}}, {"sim.realtime", true}}).ok());
+    QSignalSpy rigTests(&model_, &ProjectModel::rigTestsChanged);
+    QSignalSpy finished(&page, &RigTestPage::finished);
+    QTest::mouseClick(page.runButton(), Qt::LeftButton);
+    QVERIFY(page.isRunning());
+    QVERIFY(!page.runButton()->isEnabled());
+    QVERIFY(finished.wait(120000));
+    QVERIFY2(finished.first().first().toBool(), qPrintable(page.statusText()));
+    QVERIFY(!rigTests.isEmpty());  // other pages (the project tree) hear of it
+
+    // Live plots at >= 20 Hz while the ramp ran (4 s in real time).
+    qInfo("stiffness rig: %d redraws, %.1f Hz", page.redrawCount(), page.redrawRateHz());
+    QVERIFY2(page.redrawRateHz() >= 20.0, qPrintable(QString::number(page.redrawRateHz())));
+    QVERIFY(page.redrawCount() >= 60);
+
+    // What the project holds, against the virtual specimen's Table 10 values.
+    QVERIFY(page.lastTestId().has_value());
+    auto stored = model_.store()->rigTest(*page.lastTestId());
+    QVERIFY(stored.ok());
+    QCOMPARE(stored->status, mozzi::core::io::TestStatus::Complete);
+    const auto& statics = *mozzi::devices::sim::findSpecimen("fork-a-with-wheel")->statics;
+    const auto* kLat = rigResult(*stored, "k_lat");
+    const auto* kTw = rigResult(*stored, "k_tw");
+    QVERIFY(kLat && kTw);
+    qInfo("k_lat %.1f N/m (specimen %.1f), k_tw %.1f N m/rad (specimen %.1f)", kLat->value, statics.lateralStiffness,
+          kTw->value, statics.twistStiffness);
+    QVERIFY(std::abs(kLat->value / statics.lateralStiffness - 1.0) < 0.01);
+    QVERIFY(std::abs(kTw->value / statics.twistStiffness - 1.0) < 0.01);
+
+    // The table shows the stored k_lat; the plot's measured loop spans the
+    // peak force and the stored k_lat's line runs through it.
+    bool shown = false;
+    for (int r = 0; r < page.resultsTable()->rowCount(); ++r)
+      if (page.resultsTable()->item(r, 1)->data(Qt::UserRole).toString() == QLatin1String("k_lat"))
+        shown = std::abs(page.resultsTable()->item(r, 2)->text().toDouble() / kLat->value - 1.0) < 1e-4;
+    QVERIFY(shown);
+    auto* measured = curveTitled(page.resultPlot(), QStringLiteral("measured"));
+    auto* fit = curveTitled(page.resultPlot(), QStringLiteral("F = k_lat x (stored k_lat)"));
+    QVERIFY(measured && fit);
+    QVERIFY(measured->dataSize() > 500);
+    const QRectF box = measured->boundingRect();
+    QVERIFY2(std::abs(box.bottom() / statics.testForceN - 1.0) < 0.05, qPrintable(QString::number(box.bottom())));
+    QVERIFY(std::abs(box.top() / statics.testForceN + 1.0) < 0.05);
+    QCOMPARE(fit->dataSize(), size_t{2});
+    const QPointF a = fit->sample(0), b = fit->sample(1);
+    QVERIFY(std::abs((b.y() - a.y()) / ((b.x() - a.x()) * 1e-3) / kLat->value - 1.0) < 1e-9);
+    QVERIFY(!page.readoutText().isEmpty());
+    saveShot(page, QStringLiteral("stiffness_rig"));
+  }
+
+  void relaxationTestStoresTheTyresRelaxationLength() {
+    RigTestPage page(RigTestPage::Rig::Tyre, context());
+    page.resize(1280, 800);
+    page.show();
+    QVERIFY(page.selectSpecimen(QStringLiteral("tyre-120-70-r17")));
+    QVERIFY(page.selectTest(QStringLiteral("relaxation")));
+    QVERIFY(page.testForm()
+                ->setValues({{"relaxation.frequencies", std::string("1.26")},
+                             {"relaxation.cycles", std::int64_t{5}},
+                             {"relaxation.settle_cycles", std::int64_t{1}}})
+                .ok());
+    QVERIFY(page.rigForm()
+                ->setValues({{"sim.seed", std::int64_t{9}}, {"sim.realtime", true}, {"tyre.pressure_bar", 2.0}})
+                .ok());
+    QSignalSpy tyreTests(&model_, &ProjectModel::tyreTestsChanged);
+    QSignalSpy finished(&page, &RigTestPage::finished);
+    QTest::mouseClick(page.runButton(), Qt::LeftButton);
+    QVERIFY(finished.wait(120000));
+    QVERIFY2(finished.first().first().toBool(), qPrintable(page.statusText()));
+    QVERIFY(!tyreTests.isEmpty());
+    qInfo("tyre tester: %d redraws, %.1f Hz", page.redrawCount(), page.redrawRateHz());
+    QVERIFY(page.redrawRateHz() >= 20.0);
+
+    // The simulator's own tyre (not the sequence): sigma from eq. 48.
+    auto setup = rt::simulatedTyreSetup("tyre-120-70-r17", 2.0, 9, false);
+    QVERIFY(setup.ok());
+    const double sigma = mozzi::devices::sim::tyreTesterSetup(setup->daqParameters).value().relaxationLength;
+    QVERIFY(page.lastTestId().has_value());
+    auto stored = model_.store()->tyreTest(*page.lastTestId());
+    QVERIFY(stored.ok());
+    QCOMPARE(stored->kind, std::string("relaxation"));
+    const mozzi::core::io::StoredTyreTest::Parameter* measured = nullptr;
+    for (const auto& p : stored->parameters)
+      if (!p.step && p.name == "relaxation_length_m") measured = &p;
+    QVERIFY(measured);
+    qInfo("relaxation length %.4f m (virtual tyre %.4f m)", measured->value, sigma);
+    QVERIFY(std::abs(measured->value / sigma - 1.0) < 0.02);
+
+    // The F_y-yaw loop of the frequency and the time traces were drawn.
+    QVERIFY(curveTitled(page.resultPlot(), QStringLiteral("current frequency"))->dataSize() > 100);
+    QVERIFY(curveTitled(page.livePlot(), QStringLiteral("F_y [N]"))->dataSize() > 100);
+    saveShot(page, QStringLiteral("tyre_tester"));
+  }
+
+  void steadyStateSweepsDrawTheCharacteristic() {
+    RigTestPage page(RigTestPage::Rig::Tyre, context());
+    page.resize(1280, 800);
+    page.show();
+    QVERIFY(page.selectTest(QStringLiteral("steady-state")));
+    QVERIFY(page.testForm()
+                ->setValues({{"steady.slip", std::string("-3, -2, -1, 0, 1, 2, 3")},
+                             {"steady.camber", std::string("-20, -10, 0, 10, 20")},
+                             {"steady.settle", 0.5},
+                             {"steady.hold", 0.5},
+                             {"steady.magic_formula", false}})
+                .ok());
+    QVERIFY(page.rigForm()->setValues({{"sim.seed", std::int64_t{10}}, {"sim.realtime", false}}).ok());
+    QSignalSpy finished(&page, &RigTestPage::finished);
+    QTest::mouseClick(page.runButton(), Qt::LeftButton);
+    QVERIFY(finished.wait(120000));
+    QVERIFY2(finished.first().first().toBool(), qPrintable(page.statusText()));
+    auto setup = rt::simulatedTyreSetup("tyre-120-70-r17", 2.0, 10, false);
+    const double c = mozzi::devices::sim::tyreTesterSetup(setup->daqParameters).value().corneringStiffness;
+    auto stored = model_.store()->tyreTest(*page.lastTestId());
+    QVERIFY(stored.ok());
+    double measured = 0.0;
+    for (const auto& p : stored->parameters)
+      if (!p.step && p.name == "cornering_stiffness") measured = p.value;
+    qInfo("cornering stiffness %.0f N/rad (virtual tyre %.0f N/rad)", measured, c);
+    QVERIFY(std::abs(measured / c - 1.0) < 0.01);  // the 1%
+    QCOMPARE(curveTitled(page.resultPlot(), QStringLiteral("F_y vs side-slip"))->dataSize(), size_t{7});
+    QCOMPARE(curveTitled(page.resultPlot(), QStringLiteral("F_y vs camber"))->dataSize(), size_t{5});
+    saveShot(page, QStringLiteral("tyre_tester_steady_state"));
+  }
+
+  void sineSweepStoresEachFrequency() {
+    RigTestPage page(RigTestPage::Rig::Stiffness, context());
+    page.resize(1280, 800);
+    page.show();
+    QVERIFY(page.selectSpecimen(QStringLiteral("fork-a-with-wheel")));
+    QVERIFY(page.selectTest(QStringLiteral("dynamic")));
+    QVERIFY(page.testForm()->setValues({{"dynamic.frequencies", std::string("2, 8")}}).ok());
+    QVERIFY(page.rigForm()->setValues({{"sim.seed", std::int64_t{6}}, {"sim.realtime", false}}).ok());
+    QSignalSpy finished(&page, &RigTestPage::finished);
+    QTest::mouseClick(page.runButton(), Qt::LeftButton);
+    QVERIFY(finished.wait(120000));
+    QVERIFY2(finished.first().first().toBool(), qPrintable(page.statusText()));
+    auto stored = model_.store()->rigTest(*page.lastTestId());
+    QVERIFY(stored.ok());
+    QCOMPARE(stored->kind, mozzi::core::io::StoredRigTest::Kind::Dynamic);
+    // A dynamic k_lat per frequency, in the table with its step's label.
+    int perStep = 0;
+    for (const auto& r : stored->results) perStep += r.step && r.quantity == "k_lat";
+    QCOMPARE(perStep, 2);
+    int rows = 0;
+    for (int r = 0; r < page.resultsTable()->rowCount(); ++r)
+      rows += page.resultsTable()->item(r, 1)->data(Qt::UserRole).toString() == QLatin1String("k_lat") &&
+              page.resultsTable()->item(r, 0)->text().contains(QStringLiteral("Hz"));
+    QCOMPARE(rows, 2);
+    // The last frequency's force-displacement loop and its 2 s of traces.
+    QVERIFY(curveTitled(page.resultPlot(), QStringLiteral("current frequency"))->dataSize() > 100);
+    saveShot(page, QStringLiteral("stiffness_rig_sine"));
+  }
+
+  void setPointsBeyondTheLimitsAreRefusedBeforeAnythingMoves() {
+    RigTestPage page(RigTestPage::Rig::Tyre, context());
+    QVERIFY(page.selectTest(QStringLiteral("steady-state")));
+    QVERIFY(page.testForm()->setValues({{"steady.camber", std::string("0, 30, 56")}}).ok());
+    const auto before = model_.store()->tyreTests().value().size();
+    QTest::mouseClick(page.runButton(), Qt::LeftButton);
+    QVERIFY(!page.isRunning());
+    QVERIFY2(page.statusText().contains(QStringLiteral("55 deg")), qPrintable(page.statusText()));
+    QCOMPARE(model_.store()->tyreTests().value().size(), before);
+  }
+
+  void stopKeepsTheFinishedSteps() {
+    RigTestPage page(RigTestPage::Rig::Stiffness, context());
+    QVERIFY(page.selectTest(QStringLiteral("dynamic")));
+    QVERIFY(page.testForm()->setValues({{"dynamic.frequencies", std::string("5, 10")}}).ok());
+    QSignalSpy finished(&page, &RigTestPage::finished);
+    QTest::mouseClick(page.runButton(), Qt::LeftButton);
+    QTest::qWait(500);
+    QTest::mouseClick(page.stopButton(), Qt::LeftButton);
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(finished.first().first().toBool(), false);
+    QVERIFY(page.lastTestId().has_value());
+    auto stored = model_.store()->rigTest(*page.lastTestId());
+    QVERIFY(stored.ok());
+    QCOMPARE(stored->status, mozzi::core::io::TestStatus::Interrupted);
+    QVERIFY2(page.statusText().contains(QStringLiteral("Interrupted")), qPrintable(page.statusText()));
+  }
+
+  void projectTreeListsTheStoredTestsAndOpensThem() {
+    // The tests the pages stored above, as the project tree shows them.
+    mozzi::views::ProjectTree tree(&model_);
+    tree.refresh();
+    int rig = 0, tyre = 0;
+    for (QTreeWidgetItemIterator it(&tree); *it; ++it) {
+      const auto item = mozzi::views::ProjectTree::itemOf(*it);
+      rig += item.kind == RecordKind::RigTest;
+      tyre += item.kind == RecordKind::TyreTest;
+    }
+    QCOMPARE(static_cast<size_t>(rig), model_.store()->rigTests().value().size());
+    QCOMPARE(static_cast<size_t>(tyre), model_.store()->tyreTests().value().size());
+    QVERIFY(rig >= 3 && tyre >= 2);
+    // Opened from the tree on a stored test, the page shows that test's results.
+    const auto first = model_.store()->rigTests().value().front();
+    PageContext ctx = context();
+    ctx.item = {RecordKind::RigTest, first.id, first.specimenId};
+    RigTestPage page(RigTestPage::Rig::Stiffness, ctx);
+    QCOMPARE(page.lastTestId().value_or(0), first.id);
+    QVERIFY(page.resultsTable()->rowCount() > 0);
+  }
+
+  void sequenceSettingsAreTranslatable() {
+    QSet<QString> listed;
+    for (const char* t : mozzi::views::parameterTexts()) listed.insert(QString::fromUtf8(t));
+    std::vector<mozzi::devices::ParameterSpec> specs;
+    for (const auto& list : {rt::staticTestParameters(), rt::dynamicTestParameters(), rt::relaxationTestParameters(),
+                             rt::steadyStateTestParameters(), rt::simulatedRigParameters(true)})
+      specs.insert(specs.end(), list.begin(), list.end());
+    QStringList missing;
+    for (const auto& s : specs)
+      for (const auto& t : {s.label, s.help})
+        if (!listed.contains(QString::fromStdString(t))) missing << QString::fromStdString(t);
+    QVERIFY2(missing.isEmpty(), qPrintable(missing.join(QLatin1Char('\n'))));
+  }
+
+ private:
+  PageContext context() {
+    PageContext ctx;
+    ctx.model = &model_;
+    ctx.jobs = &jobs_;
+    return ctx;
+  }
+
+  QTemporaryDir dir_;
+  ProjectModel model_;
+  JobRunner jobs_;
+};
+
+QTEST_MAIN(RigTestPageTest)
+#include "rig_test_page_test.moc"

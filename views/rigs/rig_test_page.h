@@ -1,0 +1,178 @@
+#pragma once
+// The stiffness-rig page (Motostiffmeter, thesis §1.1 to §1.3) and the
+// tyre-tester page (Mototiremeter, §1.8, §1.9): pick a specimen, the test
+// sequence and its settings (forms built from the sequences' and the
+// simulated rig's ParameterSpec lists), run it on the simulated rig through
+// devices/rigtests off the GUI thread (views::JobRunner), follow it on live
+// readouts and Qwt plots redrawn at 25 Hz, stop it, and read the result the
+// sequence stored in the project (results table, fitted line on the plot).
+//
+// The page computes nothing: the sequence (devices/rigtests) runs the test,
+// fits and stores; the page shows what it sends (live blocks, step reports)
+// and then what the project holds. The sequence's callbacks run on the job's
+// worker thread; they only append to a locked hand-over buffer that a GUI
+// timer drains every 40 ms (never more than one redraw per tick, whatever the
+// data rate: a simulated rig out of real time delivers much faster).
+
+#include <QElapsedTimer>
+#include <QPointF>
+#include <QString>
+#include <QVector>
+#include <QWidget>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "views/common/page_registry.h"
+
+class QComboBox;
+class QLabel;
+class QPlainTextEdit;
+class QProgressBar;
+class QPushButton;
+class QTableWidget;
+class QTimer;
+class QwtPlot;
+class QwtPlotCurve;
+class QGroupBox;
+
+namespace mozzi {
+namespace devices::rigtests {
+struct LiveReadout;
+struct StepReport;
+}  // namespace devices::rigtests
+
+namespace views {
+
+class ParameterForm;
+struct RigHandOver;
+
+class RigTestPage : public QWidget {
+  Q_OBJECT
+ public:
+  enum class Rig { Stiffness, Tyre };
+
+  RigTestPage(Rig rig, const PageContext& ctx);
+  ~RigTestPage() override;
+
+  Rig rig() const { return rig_; }
+
+  // The controls, for tests and for the user guide's figures.
+  QComboBox* specimenBox() const { return specimen_; }
+  QComboBox* testBox() const { return test_; }
+  ParameterForm* rigForm() const { return rigForm_; }
+  ParameterForm* testForm() const { return testForm_; }
+  QPushButton* runButton() const { return run_; }
+  QPushButton* stopButton() const { return stop_; }
+  QTableWidget* resultsTable() const { return results_; }
+  QwtPlot* livePlot() const { return livePlot_; }
+  QwtPlot* resultPlot() const { return resultPlot_; }
+  QString statusText() const;
+  QString readoutText() const;
+  // The rig's set-up for the chosen specimen (plate points, load point; tyre
+  // load, contact half-length and limits).
+  QString setupText() const;
+
+  // Selects a specimen by catalogue key ("fork-a-with-wheel") and a test by
+  // id ("static", "dynamic", "relaxation", "steady-state"); false if absent.
+  bool selectSpecimen(const QString& key);
+  bool selectTest(const QString& id);
+
+  bool isRunning() const { return jobId_ != 0; }
+  // The test the last run stored (rig_test.id or tyre_test.id).
+  std::optional<qint64> lastTestId() const { return lastTestId_; }
+  // Live plot redraws since the run started (the 25 Hz timer's) and their
+  // mean rate between the first and the last one [Hz] (0 before two).
+  int redrawCount() const { return redraws_; }
+  double redrawRateHz() const;
+
+  // Shows a stored test of this page's kind (its results from the project).
+  void showStoredTest(qint64 testId);
+
+ public slots:
+  // Checks the settings (the error is shown, nothing moves) and starts the run.
+  void start();
+  // Asks the sequence to stop: it keeps the steps committed and stores the
+  // test as interrupted.
+  void stop();
+
+ signals:
+  // The run ended (ok: the sequence completed the test).
+  void finished(bool ok);
+
+ protected:
+  void changeEvent(QEvent* event) override;
+
+ private:
+  void buildUi();
+  void retranslate();
+  void fillSpecimens();
+  void fillTests();
+  void rebuildTestForm();
+  void showSetup();
+  void drain();
+  void onLive(const devices::rigtests::LiveReadout& r);
+  void onStep(const devices::rigtests::StepReport& s);
+  void onDone(bool ok, const QString& message);
+  void resetPlots();
+  void replot();
+  void setStatus(const QString& text, bool error = false);
+  void setRunning(bool running);
+  QString testId() const;
+  QString specimenKey() const;
+
+  Rig rig_;
+  ProjectModel* model_;
+  JobRunner* jobs_;
+  std::function<void(const QString&)> log_;
+
+  QGroupBox* setupBox_ = nullptr;
+  QGroupBox* rigBox_ = nullptr;
+  QGroupBox* testBoxGroup_ = nullptr;
+  QGroupBox* resultsBox_ = nullptr;
+  QLabel* specimenLabel_ = nullptr;
+  QLabel* testLabel_ = nullptr;
+  QComboBox* specimen_ = nullptr;
+  QComboBox* test_ = nullptr;
+  ParameterForm* rigForm_ = nullptr;
+  ParameterForm* testForm_ = nullptr;
+  QPushButton* run_ = nullptr;
+  QPushButton* stop_ = nullptr;
+  QProgressBar* progress_ = nullptr;
+  QLabel* status_ = nullptr;
+  QLabel* readout_ = nullptr;
+  QLabel* setupInfo_ = nullptr;
+  QwtPlot* livePlot_ = nullptr;
+  QwtPlot* resultPlot_ = nullptr;
+  QTableWidget* results_ = nullptr;
+  QPlainTextEdit* logView_ = nullptr;
+  QLabel* headline_ = nullptr;
+  QTimer* timer_ = nullptr;
+
+  // Live curves: live plot (time traces, two axes), result plot (two curves
+  // plus a fitted line).
+  QwtPlotCurve* timeLeft_ = nullptr;
+  QwtPlotCurve* timeRight_ = nullptr;
+  QwtPlotCurve* xyLive_ = nullptr;
+  QwtPlotCurve* xySecond_ = nullptr;
+  QwtPlotCurve* fitLine_ = nullptr;
+  QwtPlotCurve* fitLine2_ = nullptr;
+  QVector<QPointF> timeLeftData_, timeRightData_, xyData_, xySecondData_;
+  double timeWindowS_ = 0.0;  // 0: keep the whole step
+  int liveStep_ = -1;
+  bool dirty_ = false;
+  int redraws_ = 0;
+  qint64 firstRedrawMs_ = -1, lastRedrawMs_ = -1;
+  QElapsedTimer clock_;
+
+  std::shared_ptr<RigHandOver> handOver_;
+  int jobId_ = 0;
+  std::optional<qint64> lastTestId_;
+  QString runningTest_;
+  std::vector<std::string> roles_;  // tyre tester: channel names of F_y, M_z, yaw angle, camber angle
+};
+
+}  // namespace views
+}  // namespace mozzi
