@@ -3,6 +3,8 @@
 // tested without a display: magnitude in dB, phase in degrees (wrapped or
 // unwrapped) and axis ranges that end on round numbers.
 
+#include <vector>
+
 #include "core/common/eigen_types.h"
 
 namespace mozzi::core {
@@ -25,5 +27,31 @@ struct AxisRange {
 // power of ten on a linear axis, decades on a logarithmic one (lo, hi > 0 there).
 // A degenerate or non-finite input gives a unit-wide range around the value.
 AxisRange roundedRange(double lo, double hi, bool logarithmic);
+
+// --- Display decimation ---------------------------------------------------------
+// A curve of 20,000 lines drawn into 1,000 pixel columns puts 20 samples in
+// each column; only the lowest and highest of them are visible. The decimated
+// curve keeps, per pixel column of [xLo, xHi] (equal widths in x, or in log10 x
+// on a logarithmic axis), the samples holding that column's minimum and
+// maximum y, in their original order, plus the last sample left of xLo and the
+// first right of xHi so the line runs to the plot's edges. Drawn, it covers
+// exactly the pixels the full curve covers; it has at most 2 columns + 2
+// points. Non-finite y are skipped. x must be ascending. A curve with no more
+// than 2 columns + 2 samples in the range is returned unchanged (that range).
+struct DecimatedCurve {
+  Vector x, y;
+  std::vector<Eigen::Index> index;  // source sample of each point
+};
+DecimatedCurve decimateMinMax(const VectorRef& x, const VectorRef& y, double xLo, double xHi, int columns,
+                              bool logarithmicX = false);
+
+// Index of the sample of ascending x nearest to `value` (-1 when x is empty).
+Eigen::Index nearestSample(const VectorRef& x, double value);
+
+// Range of the finite y whose x lies in [xLo, xHi] (on a logarithmic axis only
+// y > 0 count), padded by `margin` of the span on either side (a factor on a
+// logarithmic axis); what autoscale shows. Empty selection: {0, 1}, or {1, 10}.
+AxisRange dataRange(const VectorRef& x, const VectorRef& y, double xLo, double xHi, bool logarithmicY,
+                    double margin = 0.05);
 
 }  // namespace mozzi::core

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/modal/lsfd.h"
+#include "core/modal/mode_merging.h"
 #include "core/modal/shape_tools.h"
 #include "core/modal/stabilization.h"
 
@@ -209,6 +210,7 @@ Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const Plsc
   diag.bandLowHz = opt.bandLowHz;
   diag.bandHighHz = opt.bandHighHz;
   diag.samplingTime = dt;
+  diag.resolutionHz = frequencyResolutionHz(frf.frequencyHz, opt.bandLowHz, opt.bandHighHz);
 
   Matrix g = Matrix::Zero(nb, nb);  // running sum_{j<=m} sum_o w_oj^T w_oj (lower triangle)
   std::size_t nextOrder = 0;
@@ -335,10 +337,12 @@ Result<std::vector<SelectedPole>> selectPoles(const StabilizationDiagram& diagra
     s.clusterSize = static_cast<int>(c.members.size());
     s.frequencySpreadHz = stdev(fs);  // over the upper half used for the estimate
     s.zetaSpread = stdev(zs);
+    s.shape = c.members.back()->shape;
     out.push_back(std::move(s));
   }
   std::sort(out.begin(), out.end(),
             [](const SelectedPole& a, const SelectedPole& b) { return std::abs(a.pole) < std::abs(b.pole); });
+  mergeSameModes(out, opt, diagram.resolutionHz);
   if (out.empty()) {
     return makeError(ErrorCode::NotFound,
                      "no stable mode in band " + hz(diagram.bandLowHz) + " .. " + hz(diagram.bandHighHz) +
