@@ -67,53 +67,58 @@ AxisRange roundedRange(double lo, double hi, bool logarithmic) {
   return {std::floor(lo / step) * step, std::ceil(hi / step) * step};
 }
 
-DecimatedCurve decimateMinMax(const VectorRef& x, const VectorRef& y, double xLo, double xHi, int columns,
-                              bool logarithmicX) {
+std::vector<Eigen::Index> pixelColumnStarts(const VectorRef& x, double xLo, double xHi, int columns,
+                                            bool logarithmicX) {
+  std::vector<Eigen::Index> starts;
+  const Eigen::Index n = x.size();
+  if (columns < 1) return starts;
+  if (xLo > xHi) std::swap(xLo, xHi);
+  const bool logX = logarithmicX && xLo > 0.0 && xHi > xLo;
+  const double a = logX ? std::log10(xLo) : xLo, b = logX ? std::log10(xHi) : xHi;
+  const double* xb = x.data();
+  starts.resize(static_cast<std::size_t>(columns) + 1);
+  Eigen::Index from = 0;
+  for (int c = 0; c < columns; ++c) {
+    const double t = a + (b - a) * static_cast<double>(c) / static_cast<double>(columns);
+    const double edge = c == 0 ? xLo : (logX ? std::pow(10.0, t) : t);
+    from = std::lower_bound(xb + from, xb + n, edge) - xb;
+    starts[static_cast<std::size_t>(c)] = from;
+  }
+  starts[static_cast<std::size_t>(columns)] = std::upper_bound(xb + from, xb + n, xHi) - xb;
+  return starts;
+}
+
+DecimatedCurve decimateMinMax(const VectorRef& x, const VectorRef& y, const std::vector<Eigen::Index>& starts) {
   DecimatedCurve out;
   const Eigen::Index n = std::min(x.size(), y.size());
-  if (n == 0 || columns < 1) return out;
-  if (xLo > xHi) std::swap(xLo, xHi);
-  // First sample >= xLo and first > xHi; one sample either side is kept.
-  const double* xb = x.data();
-  Eigen::Index first = std::lower_bound(xb, xb + n, xLo) - xb;
-  Eigen::Index last = std::upper_bound(xb, xb + n, xHi) - xb;  // one past
-  first = std::max<Eigen::Index>(0, first - 1);
-  last = std::min<Eigen::Index>(n, last + 1);
+  if (n == 0 || starts.size() < 2) return out;
   std::vector<Eigen::Index>& idx = out.index;
-  const bool logX = logarithmicX && xLo > 0.0 && xHi > xLo;
-  if (last - first <= 2 * static_cast<Eigen::Index>(columns) + 2) {
-    for (Eigen::Index k = first; k < last; ++k) {
-      if (std::isfinite(y[k])) idx.push_back(k);
+  idx.reserve(2 * starts.size() + 2);
+  const Eigen::Index first = std::min(starts.front(), n), end = std::min(starts.back(), n);
+  // The last sample left of the range, so the line runs to the left edge.
+  for (Eigen::Index k = first - 1; k >= 0; --k) {
+    if (std::isfinite(y[k])) {
+      idx.push_back(k);
+      break;
     }
-  } else {
-    const double a = logX ? std::log10(xLo) : xLo;
-    const double b = logX ? std::log10(xHi) : xHi;
-    const double scale = b > a ? static_cast<double>(columns) / (b - a) : 0.0;
-    auto column = [&](double xv) -> long {
-      if (xv < xLo) return -1;
-      if (xv > xHi) return columns;
-      const double u = ((logX ? std::log10(xv) : xv) - a) * scale;
-      return std::min<long>(columns - 1, static_cast<long>(u));
-    };
-    Eigen::Index k = first;
-    while (k < last) {
-      const long c = column(x[k]);
-      Eigen::Index lo = -1, hi = -1;
-      Eigen::Index j = k;
-      for (; j < last && column(x[j]) == c; ++j) {
-        if (!std::isfinite(y[j])) continue;
-        if (lo < 0 || y[j] < y[lo]) lo = j;
-        if (hi < 0 || y[j] > y[hi]) hi = j;
-      }
-      if (c < 0 || c >= columns) {
-        // Outside the range: only the sample nearest the edge.
-        Eigen::Index edge = c < 0 ? j - 1 : k;
-        if (std::isfinite(y[edge])) idx.push_back(edge);
-      } else if (lo >= 0) {
-        idx.push_back(std::min(lo, hi));
-        if (hi != lo) idx.push_back(std::max(lo, hi));
-      }
-      k = j;
+  }
+  for (std::size_t c = 0; c + 1 < starts.size(); ++c) {
+    const Eigen::Index b = std::min(starts[c], n), e = std::min(starts[c + 1], n);
+    Eigen::Index lo = -1, hi = -1;
+    for (Eigen::Index j = b; j < e; ++j) {
+      const double v = y[j];
+      if (!std::isfinite(v)) continue;
+      if (lo < 0 || v < y[lo]) lo = j;
+      if (hi < 0 || v > y[hi]) hi = j;
+    }
+    if (lo < 0) continue;
+    idx.push_back(std::min(lo, hi));
+    if (hi != lo) idx.push_back(std::max(lo, hi));
+  }
+  for (Eigen::Index k = end; k < n; ++k) {
+    if (std::isfinite(y[k])) {
+      idx.push_back(k);
+      break;
     }
   }
   out.x.resize(static_cast<Eigen::Index>(idx.size()));
@@ -123,6 +128,11 @@ DecimatedCurve decimateMinMax(const VectorRef& x, const VectorRef& y, double xLo
     out.y[static_cast<Eigen::Index>(q)] = y[idx[q]];
   }
   return out;
+}
+
+DecimatedCurve decimateMinMax(const VectorRef& x, const VectorRef& y, double xLo, double xHi, int columns,
+                              bool logarithmicX) {
+  return decimateMinMax(x, y, pixelColumnStarts(x, xLo, xHi, columns, logarithmicX));
 }
 
 Eigen::Index nearestSample(const VectorRef& x, double value) {
@@ -154,6 +164,24 @@ AxisRange dataRange(const VectorRef& x, const VectorRef& y, double xLo, double x
   }
   const double pad = hi > lo ? margin * (hi - lo) : std::max(0.5, 0.5 * std::abs(hi));
   return {lo - pad, hi + pad};
+}
+
+Rgb heatColour(double v) {
+  if (!(v >= 0.0)) v = 0.0;
+  if (v > 1.0) v = 1.0;
+  // Piecewise linear through white, yellow (255, 230, 90), orange (245, 130, 30),
+  // dark red (150, 0, 20) at 0, 1/3, 2/3, 1.
+  static const double stops[4][3] = {{255, 255, 255}, {255, 230, 90}, {245, 130, 30}, {150, 0, 20}};
+  const double u = v * 3.0;
+  const int i = std::min(2, static_cast<int>(u));
+  const double t = u - i;
+  auto mix = [&](int c) { return static_cast<int>(std::lround(stops[i][c] + t * (stops[i + 1][c] - stops[i][c]))); };
+  return {mix(0), mix(1), mix(2)};
+}
+
+bool heatColourIsDark(double v) {
+  const Rgb c = heatColour(v);
+  return 0.299 * c.r + 0.587 * c.g + 0.114 * c.b < 140.0;
 }
 
 }  // namespace mozzi::core

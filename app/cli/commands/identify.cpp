@@ -1,6 +1,8 @@
-// mozzi-cli identify: modal identification of the FRFs in a UFF file
-// (docs/cli/identify.md). pLSCF or LSCE + LSFD + Ceres refinement (standard
-// errors), or single-mode peak picking / circle fit over the band.
+// mozzi-cli identify: modal identification of the FRFs in a UFF file or of an
+// FRF set of a project (docs/cli/identify.md). pLSCF or LSCE + LSFD + Ceres
+// refinement (standard errors), or single-mode peak picking / circle fit over
+// the band. With --store the modes become a modal result of the project, the
+// same table the workbench's identification page saves (core::modal::modalTableOf).
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -10,9 +12,11 @@
 
 #include "app/cli/args.h"
 #include "app/cli/command.h"
+#include "core/io/project_store.h"
 #include "core/io/uff/uff.h"
 #include "core/modal/lsce.h"
 #include "core/modal/plscf.h"
+#include "core/modal/pole_selection.h"
 #include "core/modal/refine.h"
 #include "core/modal/sdof.h"
 #include "core/modal/shape_tools.h"
@@ -25,7 +29,8 @@ namespace uff = core::io::uff;
 
 constexpr const char* kUsage =
     "Usage: mozzi-cli identify FRF.uff --band LO:HI [--method plscf|lsce|circle|peak] [--max-order N]\n"
-    "                          [--stabilization OUT.csv] [--modes OUT.uff] [--json]\n";
+    "                          [--stabilization OUT.csv] [--modes OUT.uff] [--json]\n"
+    "       mozzi-cli identify PROJECT.mozzi --frf-set ID --band LO:HI [--store] [same options]\n";
 
 int usage(std::ostream& err, const std::string& why) {
   err << "mozzi-cli identify: " << why << "\n" << kUsage;
@@ -37,6 +42,29 @@ int fail(std::ostream& err, const core::Error& e) {
   return kExitFailure;
 }
 
+// FRF set `text` of a project; *info receives its record (specimen, name).
+core::Result<core::FrfMatrix> projectFrf(const core::io::ProjectStore& store, const std::string& text,
+                                         core::io::FrfSetInfo* info) {
+  char* end = nullptr;
+  const long long id = std::strtoll(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || id <= 0)
+    return core::makeError(core::ErrorCode::InvalidArgument,
+                           "--frf-set takes a positive FRF set id (got '" + text + "')", "--frf-set");
+  auto sets = store.frfSets();
+  if (!sets) return sets.error();
+  bool found = false;
+  for (const auto& s : *sets) {
+    if (s.id == id) {
+      *info = s;
+      found = true;
+    }
+  }
+  if (!found)
+    return core::makeError(core::ErrorCode::NotFound,
+                           "the project has no FRF set " + text + " (mozzi-cli project info lists them)", "--frf-set");
+  return store.frfSet(id);
+}
+
 struct Row {
   double f = 0, zeta = 0;
   std::optional<double> fStd, zStd;
@@ -45,11 +73,18 @@ struct Row {
 
 int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   OptionSpec spec;
-  spec.valued = {"--band", "--method", "--max-order", "--stabilization", "--modes"};
-  spec.flags = {"--json"};
+  spec.valued = {"--band", "--method", "--max-order", "--stabilization", "--modes", "--frf-set"};
+  spec.flags = {"--json", "--store"};
   auto parsed = ParsedArgs::parse(args, spec);
   if (!parsed) return usage(err, parsed.error().message);
-  if (parsed->positional().size() != 1) return usage(err, "expected one FRF file");
+  if (parsed->positional().size() != 1)
+    return usage(err, parsed->value("--frf-set") ? "expected one project file" : "expected one FRF file");
+  const std::string& input = parsed->positional()[0];
+  const bool isProject = input.size() > 6 && input.compare(input.size() - 6, 6, ".mozzi") == 0;
+  if (isProject && !parsed->value("--frf-set"))
+    return usage(err, "a project needs --frf-set ID (mozzi-cli project info lists the FRF sets)");
+  if (parsed->flag("--store") && !parsed->value("--frf-set"))
+    return usage(err, "--store keeps the modes in a project: give PROJECT.mozzi --frf-set ID");
   const auto bandText = parsed->value("--band");
   if (!bandText) return usage(err, "--band LO:HI is required");
   double lo = 0, hi = 0;
@@ -79,9 +114,22 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     maxOrder = static_cast<int>(**mo);
   }
 
-  auto file = uff::readFile(parsed->positional()[0]);
-  if (!file) return fail(err, file.error());
-  auto frf = uff::toFrfMatrix(*file);
+  std::optional<core::io::ProjectStore> store;
+  core::io::FrfSetInfo setInfo;
+  core::Result<core::FrfMatrix> frf = core::makeError(core::ErrorCode::NotFound, "no FRFs");
+  if (auto set = parsed->value("--frf-set")) {
+    // Read-only unless the modes are to be stored.
+    auto opened = core::io::ProjectStore::open(input, parsed->flag("--store")
+                                                          ? core::io::ProjectStore::OpenMode::ReadWrite
+                                                          : core::io::ProjectStore::OpenMode::ReadOnly);
+    if (!opened) return fail(err, opened.error());
+    store.emplace(std::move(opened).value());
+    frf = projectFrf(*store, *set, &setInfo);
+  } else {
+    auto file = uff::readFile(input);
+    if (!file) return fail(err, file.error());
+    frf = uff::toFrfMatrix(*file);
+  }
   if (!frf) return fail(err, frf.error());
 
   md::ModalModel model;
@@ -154,8 +202,27 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     if (auto w = uff::writeFile(*modesPath, outFile); !w) return fail(err, w.error());
   }
 
+  std::optional<std::int64_t> storedId;
+  if (parsed->flag("--store")) {
+    // The table the identification page saves: f, zeta and the shapes of reference 0.
+    auto table = md::modalTableOf(model);
+    if (!table) return fail(err, table.error());
+    core::io::ModalResultInfo info;
+    info.specimenId = setInfo.specimenId;
+    info.frfSetId = setInfo.id;
+    info.method = md::storedMethodName(method);
+    info.name = md::defaultModalResultName(method, lo, hi);
+    info.bandLowHz = lo;
+    info.bandHighHz = hi;
+    auto id = store->addModalResult(info, *table);
+    if (!id) return fail(err, id.error());
+    storedId = *id;
+  }
+
   if (parsed->flag("--json")) {
     nlohmann::json j;
+    if (storedId) j["modal_result_id"] = *storedId;
+    if (parsed->value("--frf-set")) j["frf_set_id"] = setInfo.id;
     j["method"] = method;
     j["band_hz"] = {lo, hi};
     j["normalisation"] =
@@ -181,11 +248,13 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
                   2 * row.zeta, fs, zs, row.mpc);
     out << buf;
   }
+  if (storedId) out << "stored as modal result " << *storedId << "\n";
   return kExitOk;
 }
 
 const CommandRegistrar kRegistrar({"identify",
-                                   "FRF.uff --band LO:HI [--method plscf|lsce|circle|peak] [--max-order N] "
+                                   "FRF.uff|PROJECT.mozzi [--frf-set ID [--store]] --band LO:HI "
+                                   "[--method plscf|lsce|circle|peak] [--max-order N] "
                                    "[--stabilization OUT.csv] [--modes OUT.uff] [--json]",
                                    "Modal identification: frequencies, damping (zeta, eta), standard errors, MPC",
                                    identifyCommand});

@@ -76,17 +76,28 @@ TEST(PlotMath, MinMaxDecimationKeepsEveryColumnsExtremes) {
     const double lo = 100.0, hi = 800.0;
     const DecimatedCurve d = decimateMinMax(x, y, lo, hi, columns, logX);
     ASSERT_LE(d.x.size(), 2 * columns + 2);
+    ASSERT_LT(d.x.size(), n / 10);
     ASSERT_EQ(d.x.size(), static_cast<Eigen::Index>(d.index.size()));
     // Edges: the samples just outside the range are kept.
     EXPECT_LT(d.x[0], lo);
     EXPECT_GT(d.x[d.x.size() - 1], hi);
     for (Eigen::Index q = 1; q < d.x.size(); ++q) ASSERT_LT(d.index[q - 1], d.index[q]);  // original order
-    // Same column arithmetic as the implementation (a boundary sample must
-    // fall in the same column on both sides).
-    auto t = [&](double v) { return logX ? std::log10(v) : v; };
+    // Column of a sample from the column starts (checked against the edges below).
+    const auto starts = pixelColumnStarts(x, lo, hi, columns, logX);
+    ASSERT_EQ(starts.size(), static_cast<std::size_t>(columns) + 1);
+    for (int c = 0; c < columns; ++c) {
+      const double t0 = logX ? std::log10(lo) : lo, t1 = logX ? std::log10(hi) : hi;
+      const double edge = logX ? std::pow(10.0, t0 + (t1 - t0) * c / columns) : t0 + (t1 - t0) * c / columns;
+      const Eigen::Index s0 = starts[static_cast<std::size_t>(c)];
+      ASSERT_GE(x[s0], edge * (1 - 1e-12)) << c;
+      if (s0 > 0) {
+        ASSERT_LT(x[s0 - 1], edge * (1 + 1e-12)) << c;
+      }
+    }
     auto col = [&](double v) {
-      const double u = (t(v) - t(lo)) * (static_cast<double>(columns) / (t(hi) - t(lo)));
-      return std::min(columns - 1, static_cast<int>(u));
+      int c = 0;
+      while (c + 1 < columns && v >= x[starts[static_cast<std::size_t>(c) + 1]]) ++c;
+      return c;
     };
     std::vector<double> fullMin(columns, 1e300), fullMax(columns, -1e300), decMin = fullMin, decMax = fullMax;
     for (int k = 0; k < n; ++k) {
@@ -114,6 +125,11 @@ TEST(PlotMath, MinMaxDecimationOfShortCurvesAndNaN) {
   const DecimatedCurve d = decimateMinMax(x, y, 0.0, 4.0, 100);
   ASSERT_EQ(d.x.size(), 4);  // unchanged, the NaN dropped
   EXPECT_EQ(d.y[1], 3.0);
+  // A range inside the data keeps one sample either side.
+  const DecimatedCurve inner = decimateMinMax(x, y, 2.5, 3.5, 10);
+  ASSERT_EQ(inner.x.size(), 3);
+  EXPECT_EQ(inner.x[0], 2.0);
+  EXPECT_EQ(inner.x[2], 4.0);
   EXPECT_EQ(decimateMinMax(Vector(), Vector(), 0, 1, 10).x.size(), 0);
 }
 
@@ -135,6 +151,17 @@ TEST(PlotMath, NearestSampleAndDataRange) {
   const AxisRange none = dataRange(x, y, 20, 30, false);
   EXPECT_EQ(none.lower, 0.0);
   EXPECT_EQ(none.upper, 1.0);
+}
+
+TEST(PlotMath, HeatColourEndsAndDarkness) {
+  EXPECT_EQ(heatColour(0.0).r, 255);
+  EXPECT_EQ(heatColour(0.0).b, 255);
+  EXPECT_EQ(heatColour(1.0).r, 150);
+  EXPECT_EQ(heatColour(1.0).g, 0);
+  EXPECT_EQ(heatColour(2.0).r, 150);  // clamped
+  EXPECT_EQ(heatColour(std::nan("")).g, 255);
+  EXPECT_FALSE(heatColourIsDark(0.0));
+  EXPECT_TRUE(heatColourIsDark(1.0));
 }
 
 }  // namespace

@@ -77,6 +77,48 @@ TEST(ModeMerging, KeepsTheBestSupportedPoleOfEachGroup) {
   EXPECT_NEAR(poleFrequencyHz(sel[1].pole), 958.58, 1e-9);
 }
 
+// The real case, rebuilt as a diagram: besides a mode at 420 Hz, two pole
+// tracks 0.16 Hz apart at 958.42 and 958.58 Hz, stable from order 10 to 60,
+// with shapes too different (MAC 0.5) for the clustering to join them. The
+// clustering alone keeps both (the behaviour before); with the resolution rule
+// at 1 Hz lines, one, the better supported.
+TEST(ModeMerging, SelectPolesMergesTwoTracksWithinOneLine) {
+  StabilizationDiagram d;
+  d.bandLowHz = 300.0;
+  d.bandHighHz = 1600.0;
+  d.resolutionHz = 1.0;
+  for (int m = 2; m <= 60; ++m) d.orders.push_back(m);
+  auto add = [&](int order, double f, double zeta, const ComplexVector& shape) {
+    StabilizationPole p;
+    p.order = order;
+    p.pole = poleFromFrequencyDamping(f, zeta);
+    p.frequencyHz = f;
+    p.zeta = zeta;
+    p.status = PoleStatus::Stable;
+    p.shape = shape;
+    p.participation = ComplexVector::Ones(1);
+    d.poles.push_back(p);
+  };
+  for (int m = 10; m <= 60; ++m) {
+    const double jitter = 1e-4 * ((m * 7) % 5 - 2);  // Hz, a stable track
+    add(m, 420.0 + jitter, 0.005, shape3(1, 0.7, 0.2));
+    add(m, 958.42 + jitter, 2e-4, shape3(1, 0, 0));
+    if (m >= 14) add(m, 958.58 + jitter, 2e-4, shape3(1, 1, 0));  // MAC 0.5 with the other track
+  }
+  PlscfOptions opt;
+  StabilizationDiagram before = d;
+  before.resolutionHz = 0.0;
+  auto raw = selectPoles(before, opt);
+  ASSERT_TRUE(raw.ok()) << raw.error().describe();
+  EXPECT_EQ(raw->size(), 3u);  // two modes at 958 Hz without the rule
+  auto sel = selectPoles(d, opt);
+  ASSERT_TRUE(sel.ok()) << sel.error().describe();
+  ASSERT_EQ(sel->size(), 2u);
+  EXPECT_NEAR(poleFrequencyHz((*sel)[0].pole), 420.0, 1e-3);
+  EXPECT_NEAR(poleFrequencyHz((*sel)[1].pole), 958.42, 1e-3);  // 51 orders against 47
+  EXPECT_EQ((*sel)[1].clusterSize, 51);
+}
+
 // Three accelerances (roving hammer over 3 points, one accelerometer) at 1 Hz
 // resolution: 420 Hz (zeta 0.5%), 958 Hz (zeta 0.02%, half-power width 0.38 Hz,
 // under half a line) and 1350 Hz (zeta 0.3%), 0.5% complex noise per line.
@@ -116,6 +158,12 @@ TEST(ModeMerging, AutomaticSelectionGivesOneModeAtASharp958HzResonance) {
   auto res = identifyPlscf(frf, opt);
   ASSERT_TRUE(res.ok()) << res.error().describe();
   EXPECT_DOUBLE_EQ(res->diagram.resolutionHz, 1.0);
+  // What the selection gives without the resolution rule (the old behaviour).
+  StabilizationDiagram unmerged = res->diagram;
+  unmerged.resolutionHz = 0.0;
+  auto raw = selectPoles(unmerged, opt);
+  ASSERT_TRUE(raw.ok());
+  for (const auto& s : *raw) std::printf("without the rule: %.3f Hz (%d orders)\n", poleFrequencyHz(s.pole), s.clusterSize);
   int near958 = 0;
   for (const auto& m : res->model.modes) {
     std::printf("selected %.3f Hz zeta %.6f\n", m.frequencyHz(), m.zeta());
