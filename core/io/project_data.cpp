@@ -96,6 +96,7 @@ Result<Eigen::MatrixXf> columnSamples(sqlite3_stmt* stmt, int first, const std::
 // --- mesh -----------------------------------------------------------------------
 
 Result<void> ProjectStore::setMesh(std::int64_t specimenId, const StoredMesh& mesh) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r;
   const std::string where = path_ + ", mesh of specimen " + std::to_string(specimenId);
   for (const auto& n : mesh.nodes) {
@@ -184,6 +185,7 @@ Result<void> ProjectStore::setMesh(std::int64_t specimenId, const StoredMesh& me
 }
 
 Result<StoredMesh> ProjectStore::mesh(std::int64_t specimenId) const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", mesh of specimen " + std::to_string(specimenId);
   StoredMesh mesh;
   {
@@ -261,6 +263,7 @@ Result<StoredMesh> ProjectStore::mesh(std::int64_t specimenId) const {
 // --- rig set-ups -------------------------------------------------------------------
 
 Result<std::int64_t> ProjectStore::addRigSetup(const StoredRigSetup& setup) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r.error();
   const std::string where = path_ + ", rig set-up '" + setup.name + "'";
   if (setup.name.empty()) return makeError(ErrorCode::InvalidArgument, "a rig set-up needs a name", where);
@@ -293,6 +296,7 @@ Result<std::int64_t> ProjectStore::addRigSetup(const StoredRigSetup& setup) {
 }
 
 Result<StoredRigSetup> ProjectStore::rigSetup(std::int64_t rigSetupId) const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", rig set-up " + std::to_string(rigSetupId);
   StoredRigSetup s;
   {
@@ -334,27 +338,33 @@ Result<StoredRigSetup> ProjectStore::rigSetup(std::int64_t rigSetupId) const {
 
 // --- campaigns and hits --------------------------------------------------------------
 
-Result<std::int64_t> ProjectStore::addCampaign(const StoredCampaign& campaign) {
+Result<std::int64_t> ProjectStore::addCampaign(const StoredCampaign& campaign,
+                                               const std::vector<StoredCampaignPoint>& points) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r.error();
   const std::string where = path_ + ", campaign '" + campaign.name + "'";
   if (campaign.name.empty()) return makeError(ErrorCode::InvalidArgument, "a campaign needs a name", where);
   sql::Transaction tx(db_, where);
   if (!tx.begun()) return tx.begun().error();
   sql::Statement stmt(db_,
-                      "INSERT INTO campaign(specimen_id, rig_setup_id, name, kind, started_utc, notes)"
-                      " VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+                      "INSERT INTO campaign(specimen_id, rig_setup_id, name, kind, started_utc, notes, settings_json)"
+                      " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)");
   stmt.bind(1, campaign.specimenId).bind(2, campaign.rigSetupId).bind(3, campaign.name).bind(4, campaign.kind);
-  stmt.bind(5, sql::nowUtc()).bind(6, campaign.notes);
+  stmt.bind(5, campaign.startedUtc.empty() ? sql::nowUtc() : campaign.startedUtc).bind(6, campaign.notes);
+  stmt.bind(7, campaign.settingsJson.empty() ? std::string("{}") : campaign.settingsJson);
   if (stmt.step() != SQLITE_DONE) return sqliteError(db_, "cannot store the campaign", where);
   const std::int64_t id = sqlite3_last_insert_rowid(db_);
+  if (auto r = sql::insertCampaignPoints(db_, id, points, where); !r) return r.error();
   if (auto r = tx.commit(); !r) return r.error();
   return id;
 }
 
 Result<std::vector<StoredCampaign>> ProjectStore::campaigns(std::int64_t specimenId) const {
-  sql::Statement stmt(db_,
-                      "SELECT id, specimen_id, rig_setup_id, name, kind, notes FROM campaign WHERE specimen_id = ?1"
-                      " ORDER BY id");
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
+  sql::Statement stmt(
+      db_,
+      "SELECT id, specimen_id, rig_setup_id, name, kind, notes, started_utc, settings_json FROM campaign"
+      " WHERE specimen_id = ?1 ORDER BY id");
   stmt.bind(1, specimenId);
   std::vector<StoredCampaign> out;
   int rc;
@@ -366,6 +376,8 @@ Result<std::vector<StoredCampaign>> ProjectStore::campaigns(std::int64_t specime
     c.name = sql::columnText(stmt.get(), 3);
     c.kind = sql::columnText(stmt.get(), 4);
     c.notes = sql::columnText(stmt.get(), 5);
+    c.startedUtc = sql::columnText(stmt.get(), 6);
+    c.settingsJson = sql::columnText(stmt.get(), 7);
     out.push_back(std::move(c));
   }
   if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read campaigns", path_);
@@ -373,6 +385,7 @@ Result<std::vector<StoredCampaign>> ProjectStore::campaigns(std::int64_t specime
 }
 
 Result<std::int64_t> ProjectStore::commitHit(const StoredHit& hit) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r.error();
   const std::string where =
       path_ + ", campaign " + std::to_string(hit.campaignId) + ", hit " + std::to_string(hit.sequence);
@@ -423,6 +436,7 @@ Result<std::int64_t> ProjectStore::commitHit(const StoredHit& hit) {
 }
 
 Result<StoredHit> ProjectStore::hit(std::int64_t hitId) const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = hitWhere(path_, hitId);
   StoredHit h;
   {
@@ -474,6 +488,7 @@ Result<StoredHit> ProjectStore::hit(std::int64_t hitId) const {
 }
 
 Result<std::vector<HitInfo>> ProjectStore::hits(std::int64_t campaignId) const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", campaign " + std::to_string(campaignId);
   sql::Statement stmt(db_,
                       "SELECT id, sequence, point_node, point_direction, recorded_utc, sample_rate_hz, channel_count,"
@@ -505,6 +520,7 @@ Result<std::vector<HitInfo>> ProjectStore::hits(std::int64_t campaignId) const {
 
 Result<void> ProjectStore::setHitAcceptance(std::int64_t hitId, bool accepted, std::uint32_t qualityFlags,
                                             const std::string& reasons) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r;
   const std::string where = hitWhere(path_, hitId);
   sql::Transaction tx(db_, where);
@@ -520,6 +536,7 @@ Result<void> ProjectStore::setHitAcceptance(std::int64_t hitId, bool accepted, s
 
 Result<std::int64_t> ProjectStore::addFrfSet(const FrfSetInfo& info, const FrfMatrix& frf,
                                              const std::vector<std::int64_t>& hitIds) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r.error();
   const std::string where = path_ + ", FRF set '" + info.name + "'";
   if (info.name.empty()) return makeError(ErrorCode::InvalidArgument, "an FRF set needs a name", where);
@@ -575,6 +592,7 @@ Result<std::int64_t> ProjectStore::addFrfSet(const FrfSetInfo& info, const FrfMa
 }
 
 Result<std::vector<FrfSetInfo>> ProjectStore::frfSets() const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   sql::Statement stmt(db_,
                       "SELECT s.id, s.specimen_id, s.campaign_id, s.name, s.source, s.estimator, s.frf_type,"
                       " s.line_count, (SELECT count(DISTINCT response_index) FROM frf WHERE frf_set_id = s.id),"
@@ -602,6 +620,7 @@ Result<std::vector<FrfSetInfo>> ProjectStore::frfSets() const {
 }
 
 Result<FrfMatrix> ProjectStore::frfSet(std::int64_t frfSetId) const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", FRF set " + std::to_string(frfSetId);
   FrfMatrix frf;
   std::int64_t lines = 0;
@@ -691,6 +710,7 @@ Result<FrfMatrix> ProjectStore::frfSet(std::int64_t frfSetId) const {
 // --- modal results ---------------------------------------------------------------------
 
 Result<std::int64_t> ProjectStore::addModalResult(const ModalResultInfo& info, const ModalTable& table) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r.error();
   const std::string where = path_ + ", modal result '" + info.name + "'";
   if (info.name.empty()) return makeError(ErrorCode::InvalidArgument, "a modal result needs a name", where);
@@ -743,6 +763,7 @@ Result<std::int64_t> ProjectStore::addModalResult(const ModalResultInfo& info, c
 }
 
 Result<std::vector<ModalResultInfo>> ProjectStore::modalResults() const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   sql::Statement stmt(db_,
                       "SELECT r.id, r.specimen_id, r.frf_set_id, r.name, r.method, r.band_low_hz, r.band_high_hz,"
                       " (SELECT count(*) FROM mode WHERE modal_result_id = r.id) FROM modal_result r ORDER BY r.id");
@@ -765,6 +786,7 @@ Result<std::vector<ModalResultInfo>> ProjectStore::modalResults() const {
 }
 
 Result<ModalTable> ProjectStore::modalResult(std::int64_t modalResultId) const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", modal result " + std::to_string(modalResultId);
   {
     sql::Statement exists(db_, "SELECT 1 FROM modal_result WHERE id = ?1");
@@ -818,6 +840,7 @@ Result<ModalTable> ProjectStore::modalResult(std::int64_t modalResultId) const {
 // --- rig tests ------------------------------------------------------------------------
 
 Result<std::int64_t> ProjectStore::addRigTest(const StoredRigTest& test) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r.error();
   const std::string where = path_ + ", rig test '" + test.name + "'";
   if (test.name.empty()) return makeError(ErrorCode::InvalidArgument, "a rig test needs a name", where);
@@ -847,6 +870,7 @@ Result<std::int64_t> ProjectStore::addRigTest(const StoredRigTest& test) {
 }
 
 Result<StoredRigTest> ProjectStore::rigTest(std::int64_t rigTestId) const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", rig test " + std::to_string(rigTestId);
   StoredRigTest t;
   {
@@ -877,6 +901,7 @@ Result<StoredRigTest> ProjectStore::rigTest(std::int64_t rigTestId) const {
 
 Result<std::int64_t> ProjectStore::addRigTestRecord(std::int64_t rigTestId, int step, double sampleRateHz,
                                                     const Eigen::MatrixXf& samples) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r.error();
   const std::string where = path_ + ", rig test " + std::to_string(rigTestId) + ", step " + std::to_string(step);
   if (auto r = checkSamples(samples, sampleRateHz, where); !r) return r.error();
@@ -899,6 +924,7 @@ Result<std::int64_t> ProjectStore::addRigTestRecord(std::int64_t rigTestId, int 
 }
 
 Result<Eigen::MatrixXf> ProjectStore::rigTestRecord(std::int64_t rigTestId, int step, double* sampleRateHz) const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", rig test " + std::to_string(rigTestId) + ", step " + std::to_string(step);
   sql::Statement stmt(db_,
                       "SELECT sample_rate_hz, channel_count, sample_count, encoding, samples, samples_crc32"
@@ -914,6 +940,7 @@ Result<Eigen::MatrixXf> ProjectStore::rigTestRecord(std::int64_t rigTestId, int 
 // --- tyre tests -------------------------------------------------------------------------
 
 Result<std::int64_t> ProjectStore::addTyreTest(const StoredTyreTest& test) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r.error();
   const std::string where = path_ + ", tyre test '" + test.name + "'";
   if (test.name.empty()) return makeError(ErrorCode::InvalidArgument, "a tyre test needs a name", where);
@@ -959,6 +986,7 @@ Result<std::int64_t> ProjectStore::addTyreTest(const StoredTyreTest& test) {
 }
 
 Result<StoredTyreTest> ProjectStore::tyreTest(std::int64_t tyreTestId) const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", tyre test " + std::to_string(tyreTestId);
   StoredTyreTest t;
   {
@@ -1010,6 +1038,7 @@ Result<StoredTyreTest> ProjectStore::tyreTest(std::int64_t tyreTestId) const {
 // --- models and analyses ------------------------------------------------------------------
 
 Result<std::int64_t> ProjectStore::addModel(const StoredModel& model) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r.error();
   const std::string where = path_ + ", model '" + model.name + "'";
   if (model.name.empty()) return makeError(ErrorCode::InvalidArgument, "a model needs a name", where);
@@ -1027,6 +1056,7 @@ Result<std::int64_t> ProjectStore::addModel(const StoredModel& model) {
 }
 
 Result<std::int64_t> ProjectStore::addAnalysis(const StoredAnalysis& analysis) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r.error();
   const std::string where = path_ + ", analysis '" + analysis.name + "'";
   if (analysis.name.empty()) return makeError(ErrorCode::InvalidArgument, "an analysis needs a name", where);
@@ -1068,6 +1098,7 @@ Result<std::int64_t> ProjectStore::addAnalysis(const StoredAnalysis& analysis) {
 }
 
 Result<StoredAnalysis> ProjectStore::analysis(std::int64_t analysisId) const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", analysis " + std::to_string(analysisId);
   StoredAnalysis a;
   auto optId = [](sqlite3_stmt* s, int c) -> std::optional<std::int64_t> {

@@ -87,6 +87,16 @@ struct StoredCampaign {
   std::string name;
   std::string kind = "roving-hammer";  // "roving-hammer", "roving-accelerometer", "shaker", "other"
   std::string notes;
+  std::string startedUtc;           // filled by the store
+  std::string settingsJson = "{}";  // the campaign definition (devices/campaign), "{}" when none
+};
+
+// One point of a campaign's roving schedule (position = order of roving).
+struct StoredCampaignPoint {
+  int position = 0;
+  Dof dof;
+  bool skipped = false;
+  std::string skipReason;  // the technician's words
 };
 
 // Why a hit may be rejected; bits of StoredHit::qualityFlags.

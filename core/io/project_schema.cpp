@@ -342,10 +342,31 @@ CREATE TABLE gap_finding (
 CREATE INDEX gap_finding_analysis ON gap_finding(analysis_id);
 )sql";
 
+// Schema 2 (issue 15, campaign engine): the campaign's definition as JSON
+// (devices/campaign/campaign_definition.h) and its roving schedule: every
+// point in roving order, skipped or not with the technician's reason. Whether
+// a point is done is not stored: it is done when it holds the definition's
+// number of accepted hits, so a crash between a hit's commit and a status
+// update cannot leave the two disagreeing.
+constexpr const char* kSchema2 = R"sql(
+ALTER TABLE campaign ADD COLUMN settings_json TEXT NOT NULL DEFAULT '{}';
+
+CREATE TABLE campaign_point (
+  campaign_id INTEGER NOT NULL REFERENCES campaign(id) ON DELETE CASCADE,
+  position    INTEGER NOT NULL CHECK (position >= 0),
+  node        INTEGER NOT NULL,
+  direction   INTEGER NOT NULL CHECK (direction BETWEEN -6 AND 6 AND direction <> 0),
+  skipped     INTEGER NOT NULL DEFAULT 0 CHECK (skipped IN (0, 1)),
+  skip_reason TEXT NOT NULL DEFAULT '',
+  PRIMARY KEY (campaign_id, position),
+  UNIQUE (campaign_id, node, direction)
+) STRICT, WITHOUT ROWID;
+)sql";
+
 }  // namespace
 
 const std::vector<const char*>& projectMigrations() {
-  static const std::vector<const char*> migrations{kSchema1};
+  static const std::vector<const char*> migrations{kSchema1, kSchema2};
   return migrations;
 }
 
@@ -358,6 +379,7 @@ const std::vector<const char*>& projectDataTables() {
                                                "rig_setup",
                                                "transducer",
                                                "campaign",
+                                               "campaign_point",
                                                "hit",
                                                "hit_channel",
                                                "frf_set",

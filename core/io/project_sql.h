@@ -12,6 +12,7 @@
 
 #include "core/common/dof.h"
 #include "core/common/result.h"
+#include "core/io/project_records.h"
 
 namespace mozzi::core::io::sql {
 
@@ -31,6 +32,11 @@ std::string columnText(sqlite3_stmt* stmt, int column);
 // an error naming `where`.
 Result<Dof> columnDof(sqlite3_stmt* stmt, int nodeColumn, int directionColumn, const std::string& where);
 std::optional<Dof> columnOptionalDof(sqlite3_stmt* stmt, int nodeColumn, int directionColumn);
+
+// Inserts a campaign's schedule inside the caller's transaction (checks
+// positions 0..n-1 and distinct DOFs); project_campaign.cpp.
+Result<void> insertCampaignPoints(sqlite3* db, std::int64_t campaignId, const std::vector<StoredCampaignPoint>& points,
+                                  const std::string& where);
 
 class Statement {
  public:

@@ -183,11 +183,13 @@ Result<ProjectStore> ProjectStore::open(const std::string& path, OpenMode mode) 
 }
 
 int ProjectStore::schemaVersion() const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   auto v = queryInt(db_, "PRAGMA user_version", path_);
   return v ? static_cast<int>(*v) : 0;
 }
 
 Result<ProjectSummary> ProjectStore::summary() const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   ProjectSummary s;
   s.schemaVersion = schemaVersion();
   {
@@ -230,6 +232,7 @@ Result<void> ProjectStore::requireWritable() const {
 
 Result<std::int64_t> ProjectStore::addSpecimen(const std::string& name, const std::string& kind,
                                                const std::string& description) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r.error();
   if (name.empty()) return makeError(ErrorCode::InvalidArgument, "a specimen needs a name", path_);
   sql::Transaction tx(db_, path_ + ", specimen '" + name + "'");
@@ -243,6 +246,7 @@ Result<std::int64_t> ProjectStore::addSpecimen(const std::string& name, const st
 }
 
 Result<void> ProjectStore::checkpoint() {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r;
   int logFrames = 0, checkpointed = 0;
   if (sqlite3_wal_checkpoint_v2(db_, nullptr, SQLITE_CHECKPOINT_PASSIVE, &logFrames, &checkpointed) != SQLITE_OK) {
@@ -251,7 +255,13 @@ Result<void> ProjectStore::checkpoint() {
   return {};
 }
 
+Result<void> ProjectStore::setDurable(bool durable) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
+  return exec(db_, durable ? "PRAGMA synchronous = FULL" : "PRAGMA synchronous = OFF", path_);
+}
+
 Result<void> ProjectStore::deleteSpecimen(std::int64_t specimenId) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   if (auto r = requireWritable(); !r) return r.error();
   const std::string where = path_ + ", specimen " + std::to_string(specimenId);
   sql::Transaction tx(db_, where);
@@ -264,6 +274,7 @@ Result<void> ProjectStore::deleteSpecimen(std::int64_t specimenId) {
 }
 
 Result<void> ProjectStore::saveAs(const std::string& path) const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   std::error_code ec;
   if (std::filesystem::exists(path, ec) && std::filesystem::equivalent(path, path_, ec)) {
     return makeError(ErrorCode::InvalidArgument, "cannot save a project onto itself", path);

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -78,8 +79,22 @@ class ProjectStore {
   Result<std::int64_t> addRigSetup(const StoredRigSetup& setup);
   Result<StoredRigSetup> rigSetup(std::int64_t rigSetupId) const;
 
-  Result<std::int64_t> addCampaign(const StoredCampaign& campaign);
+  // Adds a campaign and, in the same transaction, its roving schedule
+  // (positions 0..n-1, distinct DOFs; may be empty).
+  Result<std::int64_t> addCampaign(const StoredCampaign& campaign, const std::vector<StoredCampaignPoint>& points = {});
   Result<std::vector<StoredCampaign>> campaigns(std::int64_t specimenId) const;
+  Result<StoredCampaign> campaign(std::int64_t campaignId) const;
+  // The roving schedule (project_campaign.cpp). setCampaignPoints replaces
+  // it; positions must be 0..n-1 and DOFs distinct.
+  Result<void> setCampaignPoints(std::int64_t campaignId, const std::vector<StoredCampaignPoint>& points);
+  Result<std::vector<StoredCampaignPoint>> campaignPoints(std::int64_t campaignId) const;
+  Result<void> setCampaignPointSkipped(std::int64_t campaignId, int position, bool skipped, const std::string& reason);
+  // Redo a point: in one transaction its accepted hits become rejected
+  // (kHitManualReject, `reason` appended) and its skip is cleared. Returns
+  // how many hits were set aside.
+  Result<int> redoCampaignPoint(std::int64_t campaignId, int position, const std::string& reason);
+  // The hits an FRF set was estimated from (frf_hit), in hit id order.
+  Result<std::vector<std::int64_t>> frfSetHits(std::int64_t frfSetId) const;
 
   // Commits one hit (accepted or rejected) in its own transaction and returns
   // its row id only after COMMIT has returned: when this returns a value the
@@ -96,8 +111,18 @@ class ProjectStore {
   // WAL never reaches SQLite's auto-checkpoint size during a campaign, so no
   // commit pays for a checkpoint (docs/performance/project.md).
   Result<void> checkpoint();
-  SampleEncoding hitEncoding() const { return hitEncoding_; }
-  void setHitEncoding(SampleEncoding encoding) { hitEncoding_ = encoding; }
+  // synchronous = FULL (the default: every commit fsync'd) or OFF (no fsync:
+  // a power cut may lose recent commits). OFF only while bulk-writing content
+  // that can be made again (the demo project's campaigns).
+  Result<void> setDurable(bool durable);
+  SampleEncoding hitEncoding() const {
+    const std::lock_guard<std::recursive_mutex> lock(*mutex_);
+    return hitEncoding_;
+  }
+  void setHitEncoding(SampleEncoding encoding) {
+    const std::lock_guard<std::recursive_mutex> lock(*mutex_);
+    hitEncoding_ = encoding;
+  }
 
   // FRF sets: one FrfMatrix each, optionally tied to the campaign and hits it
   // was estimated from. info.id/lineCount/... are filled from `frf`.
@@ -129,7 +154,12 @@ class ProjectStore {
   Result<void> saveAs(const std::string& path) const;
 
   // The raw connection for the io layer's own tables; never exposed past core.
+  // Hold mutex() while using it from a program with several threads.
   sqlite3* connection() const { return db_; }
+  // Every public method holds this lock for its whole run, so one store can be
+  // shared between threads (the GUI reads while the campaign engine commits).
+  // Recursive: a method may call another. Reads wait for a commit in progress.
+  std::recursive_mutex& mutex() const { return *mutex_; }
 
   static int currentSchemaVersion();
 
@@ -140,6 +170,8 @@ class ProjectStore {
 
   SampleEncoding hitEncoding_ = SampleEncoding::Raw;
 
+  // On the heap so that the store stays movable; moves happen before sharing.
+  std::unique_ptr<std::recursive_mutex> mutex_ = std::make_unique<std::recursive_mutex>();
   sqlite3* db_ = nullptr;
   std::string path_;
   bool readOnly_ = false;

@@ -34,6 +34,28 @@ struct Tip {
 // hammer (PCB 086C03): steel ~0.3 ms, plastic ~1 ms, rubber ~3 ms.
 constexpr Tip kTips[] = {{"steel", 1.6e7}, {"plastic", 1.6e6}, {"rubber", 1.6e5}};
 constexpr double kHammerMassKg = 0.16;
+// Hammer + 7 accelerometers: the 8 inputs of the MCC USB-1608FS-Plus.
+constexpr int kAccelerometers = 7;
+
+// Comma-separated DOF labels, blanks ignored: "12:+Y, 13:+Z".
+std::vector<std::string> splitLabels(const std::string& text) {
+  std::vector<std::string> out;
+  std::string cur;
+  auto flush = [&] {
+    const auto b = cur.find_first_not_of(" \t");
+    const auto e = cur.find_last_not_of(" \t");
+    if (b != std::string::npos) out.push_back(cur.substr(b, e - b + 1));
+    cur.clear();
+  };
+  for (char c : text) {
+    if (c == ',')
+      flush();
+    else
+      cur += c;
+  }
+  flush();
+  return out;
+}
 
 class HammerModel final : public SignalModel {
  public:
@@ -41,7 +63,35 @@ class HammerModel final : public SignalModel {
     auto spec = modalSpecimen(parameterText(config.parameters, "specimen", "fork-a-without-wheel"));
     if (!spec) return spec.error();
     specimen_ = *spec;
-    system_ = specimen_.toMdof();
+    // Hammer point: "hammer.point", or the specimen's driving point.
+    DofRow drive{specimen_.excitedDof, 1.0};
+    const std::string point = parameterText(config.parameters, "hammer.point", "");
+    if (!splitLabels(point).empty()) {
+      const auto labels = splitLabels(point);
+      if (labels.size() != 1)
+        return core::makeError(core::ErrorCode::InvalidArgument,
+                               "hammer.point takes one DOF label, not \"" + point + "\"", "parameter hammer.point");
+      auto row = specimen_.findDof(labels.front());
+      if (!row) return core::makeError(row.error().code, "hammer.point: " + row.error().message, row.error().where);
+      drive = *row;
+    }
+    driven_ = specimen_.drivenSystem(drive.row, drive.sign);
+    // Accelerometer DOFs: "response.dofs", or the first DOFs of the mesh.
+    responses_.clear();
+    const auto labels = splitLabels(parameterText(config.parameters, "response.dofs", ""));
+    if (labels.size() > static_cast<std::size_t>(kAccelerometers))
+      return core::makeError(core::ErrorCode::InvalidArgument,
+                             std::to_string(labels.size()) + " response DOFs for " + std::to_string(kAccelerometers) +
+                                 " accelerometer inputs",
+                             "parameter response.dofs");
+    for (const auto& label : labels) {
+      auto row = specimen_.findDof(label);
+      if (!row) return core::makeError(row.error().code, "response.dofs: " + row.error().message, row.error().where);
+      responses_.push_back(*row);
+    }
+    if (labels.empty())
+      for (Eigen::Index j = 0; j < std::min<Eigen::Index>(kAccelerometers, specimen_.shapes.rows()); ++j)
+        responses_.push_back(DofRow{j, 1.0});
     fs_ = config.sampleRateHz;
     interval_ = std::max<std::int64_t>(
         16, static_cast<std::int64_t>(std::llround(parameterReal(config.parameters, "hammer.interval_s", 4.0) * fs_)));
@@ -93,20 +143,30 @@ class HammerModel final : public SignalModel {
     spec.oversampling = 8;
     spec.peakForceN = peak_ * (isOverload ? overloadFactor_ : 1.0) * (0.9 + 0.2 * u(rng));  // the hand varies +/-10%
     spec.pulseWidthS = pulseWidth_;
-    spec.excitedDof = specimen_.excitedDof;
+    spec.excitedDof = 0;  // coordinate 0 of the driven system is the hammer point
     spec.forceNoiseRms = forceNoise_;
-    spec.responseNoiseRms = responseNoise_;
+    spec.responseNoiseRms = 0.0;  // added below, per accelerometer, after the map to the mesh DOFs
     spec.seed = seed_ * 7777u + static_cast<std::uint64_t>(seg) + 1u;
-    spec.dofLabels = specimen_.dofs;
     if (isDouble) {
       spec.secondHitDelayS = 4.0 * pulseWidth_ + 0.004;  // a rebound a few ms after the first contact
       spec.secondHitFraction = 0.5;
     }
-    auto rec = core::signal::synthesizeHammerHit(system_, spec);
-    if (rec)
-      segment_ = rec->samples;
-    else
-      segment_ = core::Matrix::Zero(static_cast<Eigen::Index>(interval_), specimen_.shapes.rows() + 1);
+    const Eigen::Index ns = static_cast<Eigen::Index>(interval_);
+    segment_ = core::Matrix::Zero(ns, 1 + kAccelerometers);
+    auto rec = core::signal::synthesizeHammerHit(driven_.system, spec);
+    if (rec) {
+      // Accelerations of the driven coordinates y -> accelerometer DOFs: x = output * y.
+      segment_.col(0) = rec->samples.col(0);
+      const Eigen::Index m = driven_.output.cols();
+      for (std::size_t a = 0; a < responses_.size(); ++a) {
+        const core::Vector map = responses_[a].sign * driven_.output.row(responses_[a].row).transpose();
+        segment_.col(static_cast<Eigen::Index>(a + 1)) = rec->samples.middleCols(1, m) * map;
+      }
+    }
+    std::mt19937_64 noiseRng(seed_ * 104729u + static_cast<std::uint64_t>(seg) + 3u);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    for (Eigen::Index c = 1; c <= kAccelerometers; ++c)
+      for (Eigen::Index k = 0; k < ns; ++k) segment_(k, c) += responseNoise_ * normal(noiseRng);
     segmentIndex_ = seg;
     ++counters.hits;
     if (isDouble) ++counters.doubleHits;
@@ -114,7 +174,8 @@ class HammerModel final : public SignalModel {
   }
 
   ModalSpecimen specimen_;
-  core::signal::LinearMdof system_;
+  DrivenSystem driven_;
+  std::vector<DofRow> responses_;
   double fs_ = 0.0, pulseWidth_ = 0.0, peak_ = 0.0, forceNoise_ = 0.0, responseNoise_ = 0.0;
   double pDouble_ = 0.0, pOverload_ = 0.0, overloadFactor_ = 30.0;
   std::int64_t interval_ = 1, preHit_ = 1;
@@ -126,7 +187,8 @@ class HammerModel final : public SignalModel {
 Capabilities hammerCapabilities() {
   Capabilities caps;
   caps.model = "Simulated impact hammer station";
-  caps.inputs = {simInput("hammer", true), simInput("acc 1", true), simInput("acc 2", true), simInput("acc 3", true)};
+  caps.inputs = {simInput("hammer", true)};
+  for (int a = 1; a <= kAccelerometers; ++a) caps.inputs.push_back(simInput("acc " + std::to_string(a), true));
   caps.rates = RateSpec{1.0, 51200.0, 204800.0, 0.0, true};
   caps.triggers = {TriggerKind::Immediate, TriggerKind::Software};
   caps.fifoSamples = mcc::kFifoSamples;
@@ -136,6 +198,26 @@ Capabilities hammerCapabilities() {
           "specimen", "Specimen", ParameterType::Choice, "", std::nullopt, std::nullopt, modalSpecimenKeys(),
           std::string("fork-a-without-wheel"),
           "virtual specimen with thesis modal parameters (Tables 6, 8, 11, 14, 16, 18, 19, 20; frames §2.1, §2.2)"},
+      ParameterSpec{"hammer.point",
+                    "Hammer point",
+                    ParameterType::Text,
+                    "",
+                    std::nullopt,
+                    std::nullopt,
+                    {},
+                    std::string(""),
+                    "DOF label of the mesh the hammer strikes, e.g. 12:+Y (-Y: struck the other way); empty = the "
+                    "specimen's driving point (the thesis's hammer point)"},
+      ParameterSpec{"response.dofs",
+                    "Accelerometer DOFs",
+                    ParameterType::Text,
+                    "",
+                    std::nullopt,
+                    std::nullopt,
+                    {},
+                    std::string(""),
+                    "comma-separated DOF labels of the mesh for acc 1..7 in order; empty = the first DOFs of the "
+                    "mesh; inputs without a DOF read noise only"},
       ParameterSpec{"hammer.tip",
                     "Hammer tip",
                     ParameterType::Choice,

@@ -37,9 +37,15 @@ class SimulatedRig : public ThreadedDevice {
   virtual FaultCounters counters() const = 0;
 };
 
-// Impact hammer station: PCB 086C03 hammer (2.25 mV/N) and three
-// accelerometers (10 mV/(m/s^2), PCB M352C65, thesis §1.4) on a virtual
-// specimen simulated by core/signal's exact MDOF integration.
+// Impact hammer station: PCB 086C03 hammer (2.25 mV/N) and up to seven
+// accelerometers (10 mV/(m/s^2), PCB M352C65, thesis §1.4; hammer + 7 = the 8
+// inputs of the MCC USB-1608FS-Plus) on a spatial virtual specimen
+// (specimen_models.h) simulated by core/signal's exact MDOF integration.
+// "hammer.point" (a DOF label of the specimen's mesh, empty = its driving
+// point) is where the hammer strikes; "response.dofs" (comma-separated DOF
+// labels, empty = the first DOFs of the mesh) are the accelerometers of inputs
+// 1..7 in order; an input without a DOF reads noise only. An unknown label
+// fails configure() with an error naming the label and the specimen.
 std::unique_ptr<Driver> makeHammerStationDriver();
 // Motostiffmeter (thesis §1.1): actuator static ramp up to 5000 N or sine
 // 1..45 Hz with amplitude falling logarithmically with frequency, load cell

@@ -53,9 +53,11 @@ struct SpecimenEntry {
   std::vector<CatalogueMode> modes;
   std::string staticSource;  // empty without static data
   std::optional<StaticProperties> statics;
-  // Modal mass per mode [kg] of the driving-point-normalised model when there
-  // is no static stiffness to fix it (tyres: ring m_k of eq. 45); empty with
-  // static data (then the modal model's static compliance is 1/k_lat).
+  // Modal mass per mode [kg], shapes scaled to a largest component of 1, when
+  // there is no static stiffness to fix it (tyres: ring m_k of eq. 45, the
+  // largest component being point 100; forks without wheel a quarter of the
+  // fork's mass; bicycles 5 kg, bicycle forks 0.5 or 1.5 kg, assumed); empty
+  // with static data (then the modal model's static compliance is 1/k_lat).
   std::vector<double> modalMass;
 
   double zeta(std::size_t mode) const;  // viscous damping ratio of the model

@@ -1,73 +1,119 @@
 #include "devices/sim/specimen_models.h"
 
-#include <Eigen/LU>
-#include <Eigen/SVD>
+#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
+
+#include "core/geometry/mesh_templates.h"
+#include "devices/sim/mode_shapes.h"
 
 namespace mozzi::devices::sim {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-// Out-of-band completion modes: a specimen with fewer tabulated modes than
-// the three accelerometers of the hammer station gets stiff modes at 2.5 x
-// its highest frequency (5% damping) so every DOF has a physical response;
-// they lie above the band an identification looks at.
+// Out-of-band completion modes (mode_shapes.h) at 2.5, 2.75 and 3 x the
+// highest tabulated frequency, 5% damping: above the band an identification
+// looks at, they give every DOF of the mesh a physical response.
 constexpr double kCompletionFrequencyFactor = 2.5;
 constexpr double kCompletionZeta = 0.05;
-constexpr Eigen::Index kMinDofs = 3;
-
-// Generic shapes on n DOFs: entries of magnitude 0.4..1 with mixed signs from a
-// fixed linear congruential sequence (the same on every platform), columns of
-// unit length; the first well-conditioned draw is kept, so every mode is seen
-// at every DOF and no DOF is a node.
-core::Matrix genericShapes(Eigen::Index n) {
-  std::uint64_t state = 0x2545F4914F6CDD1DULL + static_cast<std::uint64_t>(n);
-  auto next = [&state] {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return static_cast<double>(state >> 11) / 9007199254740992.0;  // [0, 1)
-  };
-  core::Matrix v(n, n);
-  for (int attempt = 0; attempt < 1000; ++attempt) {
-    for (Eigen::Index r = 0; r < n; ++r)
-      for (Eigen::Index j = 0; j < n; ++j) v(j, r) = (next() < 0.5 ? -1.0 : 1.0) * (0.4 + 0.6 * next());
-    for (Eigen::Index r = 0; r < n; ++r) {
-      if (v(0, r) < 0) v.col(r) *= -1.0;  // positive at the driving point
-      v.col(r).normalize();
-    }
-    Eigen::JacobiSVD<core::Matrix> svd(v);
-    const double cond = svd.singularValues()(0) / svd.singularValues()(n - 1);
-    if (cond < 8.0) break;
-  }
-  return v;
-}
-
-core::Dof meshDof(Eigen::Index j) {
-  static const char* dirs[] = {"+Z", "+Y", "+X"};
-  return *core::parseDof(std::to_string(j + 1) + ":" + dirs[j % 3]);
-}
+// Their modal mass is 10 times the tabulated modes' (they stand for stiffer,
+// heavier higher modes; an accelerance grows with w^2, and they must not
+// dominate the accelerometers' range at the driving point).
+constexpr double kCompletionMassFactor = 10.0;
 }  // namespace
 
-core::signal::LinearMdof ModalSpecimen::toMdof() const {
-  const core::Matrix inv = shapes.inverse();
-  const Eigen::Index n = static_cast<Eigen::Index>(frequencyHz.size());
+core::Result<DofRow> ModalSpecimen::findDof(const core::Dof& dof) const {
+  for (std::size_t j = 0; j < dofs.size(); ++j) {
+    const core::Dof& d = dofs[j];
+    if (d.node == dof.node && d.direction == dof.direction)
+      return DofRow{static_cast<Eigen::Index>(j), d.negative == dof.negative ? 1.0 : -1.0};
+  }
+  return core::makeError(core::ErrorCode::NotFound,
+                         "DOF " + core::formatDof(dof) + " is not on the mesh " + meshTemplate + " of the specimen",
+                         "specimen " + key);
+}
+
+core::Result<DofRow> ModalSpecimen::findDof(const std::string& label) const {
+  auto dof = core::parseDof(label);
+  if (!dof)
+    return core::makeError(core::ErrorCode::ParseError, "\"" + label + "\" is not a DOF label (e.g. 12:+Y)",
+                           "specimen " + key);
+  return findDof(*dof);
+}
+
+core::signal::LinearMdof ModalSpecimen::modalSystem() const {
+  const Eigen::Index n = shapes.cols();
+  core::signal::LinearMdof sys;
+  sys.mass = core::Matrix::Identity(n, n);
+  sys.stiffness = core::Matrix::Zero(n, n);
+  sys.damping = core::Matrix::Zero(n, n);
+  for (Eigen::Index r = 0; r < n; ++r) {
+    const double w = 2.0 * kPi * frequencyHz[static_cast<std::size_t>(r)];
+    sys.stiffness(r, r) = w * w;
+    sys.damping(r, r) = 2.0 * zeta[static_cast<std::size_t>(r)] * w;
+  }
+  return sys;
+}
+
+DrivenSystem ModalSpecimen::drivenSystem(Eigen::Index drive, double sign) const {
+  const Eigen::Index n = shapes.cols();
+  DrivenSystem d;
+  const core::Vector phi = sign * shapes.row(drive).transpose();  // phi_e
+  const double norm = phi.norm();
+  if (!(norm > 1e-12 * std::max(1.0, shapes.cwiseAbs().maxCoeff()))) {
+    d.system = modalSystem();
+    d.output = core::Matrix::Zero(shapes.rows(), n);
+    d.excited = false;
+    return d;
+  }
+  // T^-1 = [phi_e / |phi_e|^2, Q / |phi_e|], Q: orthonormal complement of phi_e.
+  core::Matrix tInv(n, n);
+  tInv.col(0) = phi / (norm * norm);
+  if (n > 1) {
+    Eigen::HouseholderQR<core::Matrix> qr(phi);
+    const core::Matrix full = qr.householderQ();
+    tInv.rightCols(n - 1) = full.rightCols(n - 1) / norm;
+  }
   core::Vector w2(n), c(n);
   for (Eigen::Index r = 0; r < n; ++r) {
     const double w = 2.0 * kPi * frequencyHz[static_cast<std::size_t>(r)];
     w2(r) = w * w;
     c(r) = 2.0 * zeta[static_cast<std::size_t>(r)] * w;
   }
-  core::signal::LinearMdof sys;
-  sys.mass = inv.transpose() * inv;
-  sys.stiffness = inv.transpose() * w2.asDiagonal() * inv;
-  sys.damping = inv.transpose() * c.asDiagonal() * inv;
+  d.system.mass = tInv.transpose() * tInv;
+  d.system.stiffness = tInv.transpose() * w2.asDiagonal() * tInv;
+  d.system.damping = tInv.transpose() * c.asDiagonal() * tInv;
   // Symmetrise the round-off of the products.
-  sys.mass = 0.5 * (sys.mass + sys.mass.transpose()).eval();
-  sys.stiffness = 0.5 * (sys.stiffness + sys.stiffness.transpose()).eval();
-  sys.damping = 0.5 * (sys.damping + sys.damping.transpose()).eval();
-  return sys;
+  d.system.mass = 0.5 * (d.system.mass + d.system.mass.transpose()).eval();
+  d.system.stiffness = 0.5 * (d.system.stiffness + d.system.stiffness.transpose()).eval();
+  d.system.damping = 0.5 * (d.system.damping + d.system.damping.transpose()).eval();
+  d.output = shapes * tInv;
+  return d;
+}
+
+std::complex<double> ModalSpecimen::receptance(Eigen::Index i, Eigen::Index j, double omega) const {
+  std::complex<double> h(0.0, 0.0);
+  for (Eigen::Index r = 0; r < shapes.cols(); ++r) {
+    const double w = 2.0 * kPi * frequencyHz[static_cast<std::size_t>(r)];
+    const std::complex<double> den(w * w - omega * omega, 2.0 * zeta[static_cast<std::size_t>(r)] * w * omega);
+    h += shapes(i, r) * shapes(j, r) / den;
+  }
+  return h;
+}
+
+double ModalSpecimen::staticCompliance(Eigen::Index i, Eigen::Index j) const {
+  double s = 0.0;
+  for (Eigen::Index r = 0; r < shapes.cols(); ++r) {
+    const double w = 2.0 * kPi * frequencyHz[static_cast<std::size_t>(r)];
+    s += shapes(i, r) * shapes(j, r) / (w * w);
+  }
+  return s;
+}
+
+std::string meshTemplateKey(const std::string& specimenKey) {
+  const SpecimenEntry* e = findSpecimen(specimenKey);
+  return e ? templateKeyFor(*e) : std::string();
 }
 
 std::vector<std::string> modalSpecimenKeys() {
@@ -79,51 +125,61 @@ core::Result<ModalSpecimen> modalSpecimen(const std::string& key) {
   if (!e) return core::makeError(core::ErrorCode::NotFound, "no such virtual specimen", "specimen " + key);
   if (e->modes.empty())
     return core::makeError(core::ErrorCode::InvalidArgument, "the specimen has no modal data", "specimen " + key);
+  const std::string templateKey = templateKeyFor(*e);
+  const auto* mesh = core::geometry::findMeshTemplate(templateKey);
+  if (!mesh)
+    return core::makeError(core::ErrorCode::NotFound, "no measurement mesh for this specimen", "specimen " + key);
+  auto spatial = spatialShapes(*e, *mesh);
+  if (!spatial) return spatial.error();
+
   ModalSpecimen m;
   m.key = e->key;
   m.name = e->name;
   m.source = e->modalSource;
+  m.meshTemplate = templateKey;
+  m.dofs = mesh->measurementDofs;
+  m.excitedDof = spatial->drivingDof;
+  m.modeShapes = spatial->descriptions;
+  m.tabulatedModes = spatial->tabulatedModes;
   double fMax = 0.0;
   for (std::size_t r = 0; r < e->modes.size(); ++r) {
     m.frequencyHz.push_back(e->modes[r].frequencyHz);
     m.zeta.push_back(e->zeta(r));
     fMax = std::max(fMax, e->modes[r].frequencyHz);
   }
-  const Eigen::Index n = std::max<Eigen::Index>(kMinDofs, static_cast<Eigen::Index>(e->modes.size()));
+  const Eigen::Index n = spatial->shapes.cols();
   for (Eigen::Index r = static_cast<Eigen::Index>(e->modes.size()); r < n; ++r) {
-    m.frequencyHz.push_back(kCompletionFrequencyFactor * fMax * (1.0 + 0.1 * static_cast<double>(r)));
+    const double k = static_cast<double>(r - static_cast<Eigen::Index>(e->modes.size()));
+    m.frequencyHz.push_back(kCompletionFrequencyFactor * fMax * (1.0 + 0.1 * k));
     m.zeta.push_back(kCompletionZeta);
   }
-  const core::Matrix v = genericShapes(n);
+  const core::Matrix& v = spatial->shapes;
+  const Eigen::Index drive = spatial->drivingDof;
+  const Eigen::Index nTab = static_cast<Eigen::Index>(e->modes.size());
   core::Vector modalMass(n);
   if (e->statics) {
-    // Equal modal masses with sum_r v_0r^2 / (m w_r^2) = 1 / k_lat.
+    // Equal modal masses m (10 m for the completion modes) with
+    // sum_r v_er^2 / (m_r w_r^2) = 1 / k_lat.
     double s = 0.0;
     for (Eigen::Index r = 0; r < n; ++r) {
       const double w = 2.0 * kPi * m.frequencyHz[static_cast<std::size_t>(r)];
-      s += v(0, r) * v(0, r) / (w * w);
+      s += v(drive, r) * v(drive, r) / (w * w) / (r < nTab ? 1.0 : kCompletionMassFactor);
     }
-    modalMass.setConstant(e->statics->lateralStiffness * s);
-  } else {
-    const double fallback = e->modalMass.empty() ? 1.0 : e->modalMass.back();
     for (Eigen::Index r = 0; r < n; ++r)
-      modalMass(r) =
-          r < static_cast<Eigen::Index>(e->modalMass.size()) ? e->modalMass[static_cast<std::size_t>(r)] : fallback;
+      modalMass(r) = e->statics->lateralStiffness * s * (r < nTab ? 1.0 : kCompletionMassFactor);
+  } else {
+    double largest = 0.0;
+    for (Eigen::Index r = 0; r < nTab; ++r) {
+      modalMass(r) = r < static_cast<Eigen::Index>(e->modalMass.size())
+                         ? e->modalMass[static_cast<std::size_t>(r)]
+                         : (e->modalMass.empty() ? 1.0 : e->modalMass.back());
+      largest = std::max(largest, modalMass(r));
+    }
+    for (Eigen::Index r = nTab; r < n; ++r) modalMass(r) = kCompletionMassFactor * largest;
   }
-  m.shapes.resize(n, n);
+  m.shapes.resize(v.rows(), n);
   for (Eigen::Index r = 0; r < n; ++r) m.shapes.col(r) = v.col(r) / std::sqrt(modalMass(r));
-  for (Eigen::Index j = 0; j < n; ++j) m.dofs.push_back(meshDof(j));
-  m.excitedDof = 0;
   return m;
-}
-
-double ModalSpecimen::staticCompliance(Eigen::Index i, Eigen::Index j) const {
-  double s = 0.0;
-  for (Eigen::Index r = 0; r < shapes.cols(); ++r) {
-    const double w = 2.0 * kPi * frequencyHz[static_cast<std::size_t>(r)];
-    s += shapes(i, r) * shapes(j, r) / (w * w);
-  }
-  return s;
 }
 
 double StaticSpecimen::displacementAt(const core::Vector2& p, double forceN) const {

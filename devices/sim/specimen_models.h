@@ -1,13 +1,33 @@
 #pragma once
 // Mechanical models of the virtual specimens used by the simulated rigs, with
-// the thesis values they reproduce. Modal models are built so that their
-// natural frequencies and viscous damping ratios are exactly the tabulated
-// ones: with mass-normalised shapes Phi (dofs x modes, invertible),
-//   M = Phi^-T Phi^-1,  K = Phi^-T diag(w_r^2) Phi^-1,  C = Phi^-T diag(2 zeta_r w_r) Phi^-1
-// so that Phi^T M Phi = I, Phi^T K Phi = diag(w_r^2) (thesis eq. 1, 2) and
-// the damping is classical. Static models give the displacement normal to
-// the reference plate as a rotation about the twist axis (thesis §1.2, eq. 29-32).
+// the thesis values they reproduce.
+//
+// Modal models are spatial: each catalogue specimen lives on the measurement
+// mesh of its thesis set-up (core/geometry/mesh_templates.h), and its mode
+// shapes over that mesh's DOFs follow the thesis's description of each mode
+// (devices/sim/mode_shapes.h: cantilever bending, torsion about the
+// component's axis, rigid wheel motion, tyre ring modes). The natural
+// frequencies and viscous damping ratios are exactly the tabulated ones.
+//
+// How the model is simulated. A mesh has more DOFs (up to 96) than the
+// specimen has modes (2 to 7, plus 3 out-of-band completion modes), so
+// Phi (dofs x modes, mass-normalised, full column rank) is not square and
+// M = Phi^-T Phi^-1 does not exist. The model is the reduced one of thesis
+// eq. 1-2 in modal coordinates q (x = Phi q):
+//   q'' + diag(2 zeta_r w_r) q' + diag(w_r^2) q = Phi^T f,
+// so H_ij(w) = sum_r phi_ir phi_jr / (w_r^2 - w^2 + 2 i zeta_r w_r w) (thesis
+// eq. 21), symmetric (H_ij = H_ji). A hammer hit at DOF e is simulated exactly
+// by core/signal's MDOF integration (mdof_simulation.h) on an equivalent
+// square system (drivenSystem): coordinates y = T q with T = [phi_e^T;
+// |phi_e| Q^T], Q an orthonormal basis of the complement of phi_e (rows of
+// Phi are phi_j^T). Then y_0 = x_e, the hit is a force on y_0 alone
+// (T^-T phi_e = e_0), M_y = T^-T T^-1 = I / |phi_e|^2, K_y = T^-T diag(w_r^2)
+// T^-1, C_y = T^-T diag(2 zeta_r w_r) T^-1 (the same poles), and the response
+// at every mesh DOF is x = Phi T^-1 y, a constant linear map that commutes
+// with the anti-aliasing filter and the sampling of hit_synthesis.h. A DOF
+// with phi_e = 0 (a node of every mode) gives no response.
 
+#include <complex>
 #include <string>
 #include <vector>
 
@@ -19,29 +39,69 @@
 
 namespace mozzi::devices::sim {
 
+// A DOF of a specimen's mesh as a row of its shapes, with the sign of the
+// label ("12:-Y" is the row of 12:+Y with sign -1).
+struct DofRow {
+  Eigen::Index row = 0;
+  double sign = 1.0;
+};
+
+// The square system equivalent to the modal model for a force at one DOF
+// (see the header comment): force on coordinate 0 only, x = output * y.
+struct DrivenSystem {
+  core::signal::LinearMdof system;  // modes x modes
+  core::Matrix output;              // dofs x modes
+  bool excited = true;              // false: the DOF is a node of every mode (no response)
+};
+
 struct ModalSpecimen {
   std::string key;  // "fork-a-without-wheel"
   std::string name;
-  std::string source;               // thesis table
-  std::vector<double> frequencyHz;  // per mode
-  std::vector<double> zeta;         // viscous damping ratio per mode
-  core::Matrix shapes;              // dofs x modes, mass-normalised [1/sqrt(kg)]
-  std::vector<core::Dof> dofs;      // measurement DOF of each row
-  Eigen::Index excitedDof = 0;      // the hammer point (row of `shapes`)
+  std::string source;                   // thesis table
+  std::string meshTemplate;             // core/geometry mesh template key
+  std::vector<double> frequencyHz;      // per mode: the tabulated ones, then the completion modes
+  std::vector<double> zeta;             // viscous damping ratio per mode
+  std::vector<std::string> modeShapes;  // what each mode does on the mesh
+  std::size_t tabulatedModes = 0;       // the first tabulatedModes modes are the thesis's
+  core::Matrix shapes;                  // dofs x modes, mass-normalised [1/sqrt(kg)]
+  std::vector<core::Dof> dofs;          // measurement DOF of each row (the template's, in order)
+  Eigen::Index excitedDof = 0;          // the driving point: the thesis's hammer / static load point (row)
 
-  core::signal::LinearMdof toMdof() const;
+  // The row of a DOF label such as "12:+Y" or "12:-Y"; an unknown or
+  // malformed label is an error naming the label and the specimen.
+  core::Result<DofRow> findDof(const std::string& label) const;
+  core::Result<DofRow> findDof(const core::Dof& dof) const;
+
+  // The model in modal coordinates: M = I, K = diag(w_r^2), C = diag(2 zeta_r w_r).
+  core::signal::LinearMdof modalSystem() const;
+  // The square system for a force at `drive` (sign -1: a force along the
+  // negative direction of that row's DOF).
+  DrivenSystem drivenSystem(Eigen::Index drive, double sign = 1.0) const;
+  // Receptance H_ij(w) [m/N], sum_r phi_ir phi_jr / (w_r^2 - w^2 + 2 i zeta_r w_r w).
+  std::complex<double> receptance(Eigen::Index i, Eigen::Index j, double omega) const;
   // Static compliance between DOFs i and j, sum_r phi_ir phi_jr / w_r^2 [m/N].
   double staticCompliance(Eigen::Index i, Eigen::Index j) const;
 };
 
-// The modal model of a catalogue specimen (specimen_catalogue.h): its
-// tabulated frequencies and damping (eta as zeta = eta / 2) on a small mesh of
-// max(3, modes) DOFs with generic, well-conditioned shapes (the thesis shows
-// its shapes only as figures). DOF 0 is the hammer point and, for specimens
-// with static data, the static load point: the modal masses are chosen so
-// that the model's static compliance there, sum_r phi_0r^2 / w_r^2, is the
-// tabulated 1/k_lat (thesis §1: the static compliance is the sum of the modal
-// compliances). Others use the catalogue's modal masses.
+// The mesh template of a catalogue specimen (core/geometry/mesh_templates.h),
+// "" for an unknown key: frames A, B -> motorcycle-frame-20, -26; frame C ->
+// motorcycle-frame-22 (with engine: -22-engine-10); swing-arms A, B ->
+// swing-arm-6, -18; forks -> motorcycle-fork-10 (with wheel: -10-wheel-8);
+// tyres -> tyre-6; bicycles -> bicycle-9-12; bicycle forks -> bicycle-fork-9
+// (with wheel: -9-wheel-8).
+std::string meshTemplateKey(const std::string& specimenKey);
+
+// The modal model of a catalogue specimen (specimen_catalogue.h) on its mesh
+// template: its tabulated frequencies and damping (eta as zeta = eta / 2),
+// shapes from mode_shapes.h, and three out-of-band completion modes (2.5, 2.75
+// and 3 x the highest tabulated frequency, 5% damping) on the 3-D meshes.
+// Modal masses (each shape scaled to a largest component of 1 first): for
+// specimens with static data, equal masses chosen so that the static
+// compliance at the driving point, sum_r phi_er^2 / w_r^2, is the tabulated
+// 1/k_lat (thesis §1: the static compliance is the sum of the modal
+// compliances; the driving point is the static load point); for tyres the ring
+// masses m_k of eq. 45 (the shapes are then normalised at point 100, as in
+// §5.3); otherwise the catalogue's assumed masses.
 core::Result<ModalSpecimen> modalSpecimen(const std::string& key);
 std::vector<std::string> modalSpecimenKeys();  // every catalogue key
 

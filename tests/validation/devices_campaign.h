@@ -77,8 +77,36 @@ inline std::uint8_t rangeFor(double peakVolts) {
   return best;
 }
 
-// Hammer (input 0, at DOF 1 of the specimen) and three accelerometers (DOFs
-// 1 to 3), one hit every recordSeconds + 1 s.
+// Accelerometer rows that see every tabulated mode of a spatial specimen: the
+// driving point first, then, greedily, the row that most raises the weakest
+// mode's best relative amplitude (|phi_jr| / max_j |phi_jr|) over the rows
+// chosen so far.
+inline std::vector<Eigen::Index> observingRows(const sim::ModalSpecimen& spec, std::size_t count) {
+  std::vector<Eigen::Index> rows = {spec.excitedDof};
+  const Eigen::Index nm = static_cast<Eigen::Index>(spec.tabulatedModes);
+  core::Matrix rel(spec.shapes.rows(), nm);
+  for (Eigen::Index r = 0; r < nm; ++r)
+    rel.col(r) = spec.shapes.col(r).cwiseAbs() / spec.shapes.col(r).cwiseAbs().maxCoeff();
+  core::Vector best = rel.row(spec.excitedDof).transpose();
+  while (rows.size() < count) {
+    Eigen::Index pick = 0;
+    double score = -1.0;
+    for (Eigen::Index j = 0; j < rel.rows(); ++j) {
+      if (std::find(rows.begin(), rows.end(), j) != rows.end()) continue;
+      const double s = best.cwiseMax(rel.row(j).transpose()).minCoeff() + 1e-3 * rel.row(j).sum();
+      if (s > score) {
+        score = s;
+        pick = j;
+      }
+    }
+    rows.push_back(pick);
+    best = best.cwiseMax(rel.row(pick).transpose());
+  }
+  return rows;
+}
+
+// Hammer (input 0) at the specimen's driving point and three accelerometers
+// (inputs 1-3) on observingRows, one hit every recordSeconds + 1 s.
 inline std::optional<AcquisitionConfig> hammerConfig(const HammerCampaign& c) {
   const double interval = c.recordSeconds + 1.0;
   AcquisitionConfig cfg;
@@ -92,18 +120,23 @@ inline std::optional<AcquisitionConfig> hammerConfig(const HammerCampaign& c) {
   f.name = "hammer";
   f.rangeCode = 4;  // +/-1.25 V: 555 N full scale at 2.25 mV/N
   f.transducer = core::signal::Transducer{core::signal::TransducerKind::Force, "PCB 086C03", "", 2.25, "N", true};
-  f.dof = spec->dofs[0];
+  f.dof = spec->dofs[static_cast<std::size_t>(spec->excitedDof)];
   cfg.channels.push_back(f);
+  const auto rows = observingRows(*spec, 3);
+  std::string responseDofs;
   for (int i = 1; i <= 3; ++i) {
+    const core::Dof dof = spec->dofs[static_cast<std::size_t>(rows[static_cast<std::size_t>(i - 1)])];
     ChannelConfig a;
     a.input = i;
-    a.name = "acc " + core::formatDof(spec->dofs[static_cast<std::size_t>(i - 1)]);
+    a.name = "acc " + core::formatDof(dof);
     a.rangeCode = c.responseRange;
     a.transducer =
         core::signal::Transducer{core::signal::TransducerKind::Acceleration, "PCB M352C65", "", 10.0, "m/s^2", true};
-    a.dof = spec->dofs[static_cast<std::size_t>(i - 1)];
+    a.dof = dof;
     cfg.channels.push_back(a);
+    responseDofs += (i > 1 ? "," : "") + core::formatDof(dof);
   }
+  cfg.parameters["response.dofs"] = responseDofs;
   cfg.parameters["sim.realtime"] = false;
   cfg.parameters["specimen"] = c.specimen;
   cfg.parameters["hammer.interval_s"] = interval;

@@ -97,10 +97,11 @@ testing::HammerCampaign campaignFor(const std::string& key) {
   // I = 2 F T / pi; mode r contributes I phi_0r phi_jr w_r.
   const double impulse = 2.0 * c.peakForceN * 1e-3 / kPi;
   double peak = 0.0;
-  for (Eigen::Index j = 0; j < 3; ++j) {
+  const Eigen::Index e = spec.excitedDof;
+  for (Eigen::Index j : testing::observingRows(spec, 3)) {
     double a = 0.0;
     for (Eigen::Index r = 0; r < spec.shapes.cols(); ++r)
-      a += std::abs(spec.shapes(0, r) * spec.shapes(j, r)) * 2.0 * kPi * spec.frequencyHz[static_cast<std::size_t>(r)];
+      a += std::abs(spec.shapes(e, r) * spec.shapes(j, r)) * 2.0 * kPi * spec.frequencyHz[static_cast<std::size_t>(r)];
     peak = std::max(peak, impulse * a);
   }
   c.responseRange = testing::rangeFor(peak * 0.010);  // 10 mV/(m/s^2)

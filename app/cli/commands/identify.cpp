@@ -3,8 +3,11 @@
 // refinement (standard errors), or single-mode peak picking / circle fit over
 // the band. With --store the modes become a modal result of the project, the
 // same table the workbench's identification page saves (core::modal::modalTableOf).
+// A set measured by a campaign with an exponential window has the window's
+// decay removed from the identified damping (devices/campaign/frf_set_window.h).
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
@@ -20,6 +23,8 @@
 #include "core/modal/refine.h"
 #include "core/modal/sdof.h"
 #include "core/modal/shape_tools.h"
+#include "core/signal/window.h"
+#include "devices/campaign/frf_set_window.h"
 
 namespace mozzi::cli {
 namespace {
@@ -42,9 +47,10 @@ int fail(std::ostream& err, const core::Error& e) {
   return kExitFailure;
 }
 
-// FRF set `text` of a project; *info receives its record (specimen, name).
+// FRF set `text` of a project; *info receives its record (specimen, name),
+// *tauS the time constant of the exponential window it was measured with (0: none).
 core::Result<core::FrfMatrix> projectFrf(const core::io::ProjectStore& store, const std::string& text,
-                                         core::io::FrfSetInfo* info) {
+                                         core::io::FrfSetInfo* info, double* tauS) {
   char* end = nullptr;
   const long long id = std::strtoll(text.c_str(), &end, 10);
   if (text.empty() || *end != '\0' || id <= 0)
@@ -62,6 +68,9 @@ core::Result<core::FrfMatrix> projectFrf(const core::io::ProjectStore& store, co
   if (!found)
     return core::makeError(core::ErrorCode::NotFound,
                            "the project has no FRF set " + text + " (mozzi-cli project info lists them)", "--frf-set");
+  auto tau = devices::campaign::frfSetExponentialTauS(store, id);
+  if (!tau) return tau.error();
+  *tauS = *tau;
   return store.frfSet(id);
 }
 
@@ -116,15 +125,16 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
 
   std::optional<core::io::ProjectStore> store;
   core::io::FrfSetInfo setInfo;
+  double tauS = 0.0;  // exponential window of the measurement, removed from the damping
   core::Result<core::FrfMatrix> frf = core::makeError(core::ErrorCode::NotFound, "no FRFs");
   if (auto set = parsed->value("--frf-set")) {
     // Read-only unless the modes are to be stored.
-    auto opened = core::io::ProjectStore::open(input, parsed->flag("--store")
-                                                          ? core::io::ProjectStore::OpenMode::ReadWrite
-                                                          : core::io::ProjectStore::OpenMode::ReadOnly);
+    auto opened =
+        core::io::ProjectStore::open(input, parsed->flag("--store") ? core::io::ProjectStore::OpenMode::ReadWrite
+                                                                    : core::io::ProjectStore::OpenMode::ReadOnly);
     if (!opened) return fail(err, opened.error());
     store.emplace(std::move(opened).value());
-    frf = projectFrf(*store, *set, &setInfo);
+    frf = projectFrf(*store, *set, &setInfo, &tauS);
   } else {
     auto file = uff::readFile(input);
     if (!file) return fail(err, file.error());
@@ -171,6 +181,14 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     model.modes.push_back(mode);
     rows.push_back({est->frequencyHz, est->zeta, std::nullopt, std::nullopt, 0.0});
   }
+  if (tauS > 0.0) {
+    for (auto& r : rows) {
+      auto corrected = core::signal::correctExponentialWindowDamping({r.f, r.zeta}, tauS);
+      if (!corrected) return fail(err, corrected.error());
+      r.f = corrected->naturalFrequencyHz;
+      r.zeta = corrected->zeta;
+    }
+  }
   auto shapes = md::modeShapes(model, 0);
   if (!shapes) return fail(err, shapes.error());
   for (std::size_t r = 0; r < rows.size(); ++r) rows[r].mpc = md::mpc(shapes->shapes.col(static_cast<Eigen::Index>(r)));
@@ -207,6 +225,10 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     // The table the identification page saves: f, zeta and the shapes of reference 0.
     auto table = md::modalTableOf(model);
     if (!table) return fail(err, table.error());
+    for (std::size_t r = 0; r < rows.size(); ++r) {  // the printed numbers (window decay removed)
+      table->modes[r].frequencyHz = rows[r].f;
+      table->modes[r].dampingRatio = rows[r].zeta;
+    }
     core::io::ModalResultInfo info;
     info.specimenId = setInfo.specimenId;
     info.frfSetId = setInfo.id;

@@ -103,6 +103,7 @@ TEST(HammerStation, SameSeedSameData) {
 
 TEST(HammerStation, DoubleHitsAndOverloadsOnRequest) {
   auto cfg = hammerConfig(4096.0, 6.0);
+  cfg.channels[0].rangeCode = 1;  // +/-5 V: 2222 N full scale at 2.25 mV/N
   cfg.parameters["fault.double_hit_probability"] = 0.5;
   cfg.parameters["fault.overload_probability"] = 0.5;
   auto s = run(makeHammerStationDriver(), cfg);
@@ -111,8 +112,9 @@ TEST(HammerStation, DoubleHitsAndOverloadsOnRequest) {
   EXPECT_GT(n.doubleHits, 0);
   EXPECT_LT(n.doubleHits, 6);
   EXPECT_GT(n.overloadHits, 0);
-  // Overloaded hits (30 x 200 N > 4444 N full scale) put >= 3 force samples at
-  // full scale; the trigger flags exactly those records.
+  // Overloaded hits (30 x 200 N = 5400..6600 N > 2222 N full scale) put the
+  // middle 3 of the 4 samples of their 1 ms pulse at full scale; the trigger
+  // flags exactly those records.
   EXPECT_FALSE(s->collector.overloads().empty());
   SoftwareTriggerConfig tc;
   tc.channel = 0;
