@@ -152,8 +152,9 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                         }});
 
   registry.add(PageSpec{QStringLiteral("frf-plot"), QT_TRANSLATE_NOOP("Pages", "FRF"),
-                        QT_TRANSLATE_NOOP("Pages", "The FRFs of a stored set: Bode, real and imaginary, Nyquist, "
-                                                   "coherence, sum and CMIF, with a cursor"),
+                        QT_TRANSLATE_NOOP("Pages",
+                                          "The FRFs of a stored set: Bode, real and imaginary, Nyquist, "
+                                          "coherence, sum and CMIF, with a cursor"),
                         QString(), PageMenu::None,
                         [](const ProjectItem& item) { return item.kind == RecordKind::FrfSet; }, createFrfPage,
                         /*singleton=*/false, /*openAtStart=*/false, nullptr});

@@ -60,8 +60,8 @@ namespace {
 Result<void> checkPicks(const FrfMatrix& frf, const std::vector<FrfPick>& picks, const char* where) {
   if (picks.empty()) return makeError(ErrorCode::InvalidArgument, "no FRF chosen", where);
   for (const auto& p : picks) {
-    if (p.response < 0 || p.response >= frf.responseCount() || p.reference < 0 ||
-        p.reference >= frf.referenceCount() || static_cast<std::size_t>(p.reference) >= frf.h.size()) {
+    if (p.response < 0 || p.response >= frf.responseCount() || p.reference < 0 || p.reference >= frf.referenceCount() ||
+        static_cast<std::size_t>(p.reference) >= frf.h.size()) {
       return makeError(ErrorCode::InvalidArgument,
                        "FRF (response " + std::to_string(p.response) + ", reference " + std::to_string(p.reference) +
                            ") is not in the set of " + std::to_string(frf.responseCount()) + " x " +
@@ -112,8 +112,7 @@ Result<FrfMatrix> frfSubset(const FrfMatrix& frf, const std::vector<FrfPick>& pi
 int nearestMode(const std::vector<double>& modeFrequenciesHz, double frequencyHz) {
   int best = -1;
   for (std::size_t r = 0; r < modeFrequenciesHz.size(); ++r) {
-    if (best < 0 ||
-        std::abs(modeFrequenciesHz[r] - frequencyHz) < std::abs(modeFrequenciesHz[best] - frequencyHz)) {
+    if (best < 0 || std::abs(modeFrequenciesHz[r] - frequencyHz) < std::abs(modeFrequenciesHz[best] - frequencyHz)) {
       best = static_cast<int>(r);
     }
   }

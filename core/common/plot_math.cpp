@@ -145,8 +145,7 @@ Eigen::Index nearestSample(const VectorRef& x, double value) {
   return value - x[k - 1] <= x[k] - value ? k - 1 : k;
 }
 
-AxisRange dataRange(const VectorRef& x, const VectorRef& y, double xLo, double xHi, bool logarithmicY,
-                    double margin) {
+AxisRange dataRange(const VectorRef& x, const VectorRef& y, double xLo, double xHi, bool logarithmicY, double margin) {
   if (xLo > xHi) std::swap(xLo, xHi);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   const Eigen::Index n = std::min(x.size(), y.size());

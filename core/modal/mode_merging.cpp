@@ -95,8 +95,7 @@ void mergeSameModes(std::vector<SelectedPole>& selected, const PlscfOptions& opt
   selected = std::move(out);
 }
 
-std::string describeSameMode(const SameModePair& p, const std::vector<ModeCandidate>& cand,
-                             const SameModeCriteria& c) {
+std::string describeSameMode(const SameModePair& p, const std::vector<ModeCandidate>& cand, const SameModeCriteria& c) {
   const std::string a = formatNumber(cand[p.first].frequencyHz, 6) + " Hz";
   const std::string b = formatNumber(cand[p.second].frequencyHz, 6) + " Hz";
   const std::string apart = a + " and " + b + " are " + formatNumber(p.separationHz, 3) + " Hz apart";

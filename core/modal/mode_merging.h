@@ -29,8 +29,8 @@ namespace mozzi::core::modal {
 double frequencyResolutionHz(const VectorRef& frequencyHz, double lowHz, double highHz);
 
 struct SameModeCriteria {
-  double resolutionHz = 0.0;        // 1: poles closer than this are one mode
-  double macThreshold = 0.98;       // 2: shapes at least this alike ...
+  double resolutionHz = 0.0;         // 1: poles closer than this are one mode
+  double macThreshold = 0.98;        // 2: shapes at least this alike ...
   double frequencyTolerance = 0.01;  // ... within this relative distance
 };
 
@@ -59,14 +59,13 @@ struct SameModePair {
 SameModePair compareModes(const ModeCandidate& a, const ModeCandidate& b, const SameModeCriteria& criteria);
 
 // Every pair of candidates that are one mode.
-std::vector<SameModePair> findSameModes(const std::vector<ModeCandidate>& candidates,
-                                        const SameModeCriteria& criteria);
+std::vector<SameModePair> findSameModes(const std::vector<ModeCandidate>& candidates, const SameModeCriteria& criteria);
 
 // Groups of candidates that are one mode (connected through the pairs), and
 // one kept per group: the one with the largest `support` (orders backing it),
 // ties to the smaller index. Returns the kept indices, ascending.
-std::vector<std::size_t> keepOnePerMode(const std::vector<ModeCandidate>& candidates,
-                                        const std::vector<int>& support, const SameModeCriteria& criteria);
+std::vector<std::size_t> keepOnePerMode(const std::vector<ModeCandidate>& candidates, const std::vector<int>& support,
+                                        const SameModeCriteria& criteria);
 
 // The automatic selection's last step: merges selected poles that are one
 // mode (keeping the one whose cluster holds the most orders). Uses

@@ -5,6 +5,7 @@
 
 #include "core/common/text.h"
 #include "core/modal/shape_tools.h"
+#include "core/signal/window.h"
 
 namespace mozzi::core::modal {
 
@@ -22,9 +23,10 @@ int representativePole(const StabilizationDiagram& diagram, Complex pole, double
       continue;
     }
     const auto& b = diagram.poles[static_cast<std::size_t>(best)];
-    const bool better = (stable && !bestStable) ||
-                        (stable == bestStable && (p.order > b.order || (p.order == b.order && std::abs(p.frequencyHz - f) <
-                                                                                                  std::abs(b.frequencyHz - f))));
+    const bool better =
+        (stable && !bestStable) ||
+        (stable == bestStable &&
+         (p.order > b.order || (p.order == b.order && std::abs(p.frequencyHz - f) < std::abs(b.frequencyHz - f))));
     if (better) {
       best = static_cast<int>(i);
       bestStable = stable;
@@ -125,6 +127,19 @@ std::string defaultModalResultName(const std::string& key, double lo, double hi)
   return storedMethodName(key) + " " + formatNumber(lo, 6) + " .. " + formatNumber(hi, 6) + " Hz";
 }
 
+std::string uniqueModalResultName(const std::vector<io::ModalResultInfo>& existing, std::int64_t specimenId,
+                                  const std::string& name) {
+  auto taken = [&](const std::string& n) {
+    for (const auto& r : existing) {
+      if (r.specimenId == specimenId && r.name == n) return true;
+    }
+    return false;
+  };
+  std::string candidate = name;
+  for (int k = 2; taken(candidate); ++k) candidate = name + " (" + std::to_string(k) + ")";
+  return candidate;
+}
+
 Result<io::ModalTable> modalTableOf(const ModalModel& model) {
   io::ModalTable table;
   table.dofs = model.responses;
@@ -139,6 +154,44 @@ Result<io::ModalTable> modalTableOf(const ModalModel& model) {
     table.modes.push_back(std::move(m));
   }
   return table;
+}
+
+namespace {
+
+Result<signal::PoleEstimate> unwindowed(double frequencyHz, double zeta, double tauS, std::size_t mode) {
+  auto c = signal::correctExponentialWindowDamping({frequencyHz, zeta}, tauS);
+  if (!c) {
+    Error e = c.error();
+    e.message = "mode " + std::to_string(mode + 1) + ": " + e.message;
+    return e;
+  }
+  return c;
+}
+
+}  // namespace
+
+Result<void> removeExponentialWindow(std::vector<ModalTableRow>& rows, double tauS) {
+  if (!(tauS > 0.0)) return {};
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    auto c = unwindowed(rows[r].frequencyHz, rows[r].zeta, tauS, r);
+    if (!c) return c.error();
+    rows[r].frequencyHz = c->naturalFrequencyHz;
+    rows[r].zeta = c->zeta;
+    rows[r].eta = 2.0 * c->zeta;
+    if (rows[r].zetaStd) rows[r].etaStd = 2.0 * *rows[r].zetaStd;
+  }
+  return {};
+}
+
+Result<void> removeExponentialWindow(io::ModalTable& table, double tauS) {
+  if (!(tauS > 0.0)) return {};
+  for (std::size_t r = 0; r < table.modes.size(); ++r) {
+    auto c = unwindowed(table.modes[r].frequencyHz, table.modes[r].dampingRatio, tauS, r);
+    if (!c) return c.error();
+    table.modes[r].frequencyHz = c->naturalFrequencyHz;
+    table.modes[r].dampingRatio = c->zeta;
+  }
+  return {};
 }
 
 }  // namespace mozzi::core::modal

@@ -14,8 +14,8 @@
 #include "core/common/frf_matrix.h"
 #include "core/common/result.h"
 #include "core/io/project_records.h"
-#include "core/modal/mode_merging.h"
 #include "core/modal/modal_model.h"
+#include "core/modal/mode_merging.h"
 #include "core/modal/plscf.h"
 
 namespace mozzi::core::modal {
@@ -36,11 +36,11 @@ int nearestDiagramPole(const StabilizationDiagram& diagram, double frequencyHz, 
 struct ModalTableRow {
   double frequencyHz = 0.0;
   double zeta = 0.0;
-  double eta = 0.0;  // loss factor 2 zeta
+  double eta = 0.0;                                       // loss factor 2 zeta
   std::optional<double> frequencyStdHz, zetaStd, etaStd;  // standard errors (after refinement)
-  double mpc = 0.0;           // modal phase collinearity [0, 1]
-  double mpdDegrees = 0.0;    // mean phase deviation [deg]
-  double complexity = 0.0;    // 1 - MPC: 0 for a real (normal) mode
+  double mpc = 0.0;                                       // modal phase collinearity [0, 1]
+  double mpdDegrees = 0.0;                                // mean phase deviation [deg]
+  double complexity = 0.0;                                // 1 - MPC: 0 for a real (normal) mode
 };
 
 // Rows of the modal table: shapes from the residues of reference 0 (as the
@@ -71,10 +71,23 @@ std::vector<SelectionWarning> selectionWarnings(const std::vector<ModeCandidate>
 std::string storedMethodName(const std::string& methodKey);
 // "PolyMAX 65 .. 1000 Hz": the name of a stored result when none is given.
 std::string defaultModalResultName(const std::string& methodKey, double bandLowHz, double bandHighHz);
+// `name` if no result of the specimen has it, else "name (2)", "name (3)", ...:
+// a project holds one modal result of a name per specimen, and identifying the
+// same band twice with the default name must not fail.
+std::string uniqueModalResultName(const std::vector<io::ModalResultInfo>& existing, std::int64_t specimenId,
+                                  const std::string& name);
 
 // The modal result stored in a project: DOFs = the model's responses, one
 // StoredMode per mode with f, zeta and the shape of reference 0 (unit modal
 // mass at a driving point, else max component: modeShapes).
 Result<io::ModalTable> modalTableOf(const ModalModel& model);
+
+// Removes the decay an exponential window of time constant tauS [s] added to
+// every mode (core::signal::correctExponentialWindowDamping): natural
+// frequency and zeta (and eta) of each row / stored mode. Standard errors are
+// kept (the correction shifts the decay rate by the constant 1/tau). tauS <= 0
+// changes nothing. Errors: those of the correction, naming the mode.
+Result<void> removeExponentialWindow(std::vector<ModalTableRow>& rows, double tauS);
+Result<void> removeExponentialWindow(io::ModalTable& table, double tauS);
 
 }  // namespace mozzi::core::modal

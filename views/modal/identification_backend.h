@@ -27,8 +27,8 @@ class JobProgress;
 namespace identification {
 
 enum class Method { Plscf = 0, Lsce, Peak, CircleFit };
-const char* methodKey(Method method);          // "plscf", "lsce", "peak", "circle" (the CLI's --method)
-std::string storedMethodName(Method method);   // "PolyMAX", ... as the CLI stores it (core::modal::storedMethodName)
+const char* methodKey(Method method);         // "plscf", "lsce", "peak", "circle" (the CLI's --method)
+std::string storedMethodName(Method method);  // "PolyMAX", ... as the CLI stores it (core::modal::storedMethodName)
 enum class Backdrop { Sum = 0, Cmif };
 
 struct Options {

@@ -18,12 +18,14 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 #include <ctime>
 
 #include "core/io/project_store.h"
 #include "core/modal/mode_merging.h"
 #include "core/modal/shape_tools.h"
+#include "devices/campaign/frf_set_window.h"
 #include "views/common/job_runner.h"
 #include "views/common/project_model.h"
 #include "views/plots/decimating_curve.h"
@@ -104,13 +106,19 @@ IdentificationPage::IdentificationPage(const PageContext& ctx) : QWidget(ctx.par
   cancelButton_->setEnabled(false);
   progress_ = new QProgressBar(this);
   progress_->setRange(0, 1000);
-  progress_->setMaximumWidth(160);
-  for (QWidget* w : std::initializer_list<QWidget*>{setLabel_, setBox_, bandLabel_, lowBox_, highBox_, methodLabel_,
-                                                   methodBox_, orderLabel_, orderBox_, backdropLabel_, backdropBox_,
-                                                   refineBox_, runButton_, cancelButton_, progress_})
+  progress_->setMaximumWidth(200);
+  // Two rows, so that the page fits 1280 pixels at any scale: what is
+  // identified (set, band), then how (method, order, backdrop) and the run.
+  for (QWidget* w : std::initializer_list<QWidget*>{setLabel_, setBox_, bandLabel_, lowBox_, highBox_})
     bar->addWidget(w);
   bar->setStretchFactor(setBox_, 1);
+  auto* bar2 = new QHBoxLayout;
+  for (QWidget* w : std::initializer_list<QWidget*>{methodLabel_, methodBox_, orderLabel_, orderBox_, backdropLabel_,
+                                                    backdropBox_, refineBox_, runButton_, cancelButton_, progress_})
+    bar2->addWidget(w);
+  bar2->addStretch(1);
   layout->addLayout(bar);
+  layout->addLayout(bar2);
   status_ = new QLabel(this);
   status_->setObjectName(QStringLiteral("identificationStatus"));
   status_->setWordWrap(true);
@@ -147,6 +155,10 @@ IdentificationPage::IdentificationPage(const PageContext& ctx) : QWidget(ctx.par
   buttons->addWidget(nameEdit_, 2);
   buttons->addWidget(saveButton_);
   tableLayout->addLayout(buttons);
+  // Small minimum sizes: the splitters share what the window has (1280x800 at
+  // scale 1 and 2), the user drags them.
+  diagram_->setMinimumSize(200, 160);
+  table_->setMinimumHeight(60);
   left->addWidget(diagram_);
   left->addWidget(tablePane);
   left->setStretchFactor(0, 3);
@@ -164,6 +176,8 @@ IdentificationPage::IdentificationPage(const PageContext& ctx) : QWidget(ctx.par
   residuals_->verticalHeader()->setVisible(false);
   residuals_->horizontalHeader()->setStretchLastSection(true);
   residuals_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  synthesis_->setMinimumSize(160, 120);
+  residuals_->setMinimumHeight(60);
   synthLayout->addWidget(synthesisFrfBox_);
   synthLayout->addWidget(synthesis_, 3);
   synthLayout->addWidget(residuals_, 1);
@@ -175,6 +189,8 @@ IdentificationPage::IdentificationPage(const PageContext& ctx) : QWidget(ctx.par
   macLabel_ = new QLabel(macPane);
   mac_ = new MacPlot(macPane);
   mac_->setObjectName(QStringLiteral("identificationMac"));
+  autoMac_->setMinimumSize(120, 100);
+  mac_->setMinimumSize(120, 100);
   macLayout->addWidget(autoMacLabel_);
   macLayout->addWidget(autoMac_, 1);
   macLayout->addWidget(macLabel_);
@@ -239,6 +255,14 @@ bool IdentificationPage::setFrfSet(qint64 id) {
     setStatus(tr("FRF set %1 holds no FRF to identify").arg(id), true);
     return false;
   }
+  auto tau = devices::campaign::frfSetExponentialTauS(*store, id);
+  if (!tau) {
+    setStatus(
+        tr("Cannot read the windows of FRF set %1: %2").arg(id).arg(QString::fromStdString(tau.error().describe())),
+        true);
+    return false;
+  }
+  windowTauS_ = *tau;
   specimenId_ = 0;
   if (auto sets = store->frfSets()) {
     for (const auto& s : *sets) {
@@ -268,14 +292,18 @@ bool IdentificationPage::setFrfSet(qint64 id) {
   for (const auto& ref : frf_->references) {
     for (const auto& rsp : frf_->responses) synthesisFrfBox_->addItem(tr("H %1 / %2").arg(dofText(rsp), dofText(ref)));
   }
-  setStatus(tr("FRF set %1: %2 responses x %3 references, %4 lines, %5 to %6 Hz. Choose a band and run.")
-                .arg(id)
-                .arg(frf_->responseCount())
-                .arg(frf_->referenceCount())
-                .arg(frf_->lineCount())
-                .arg(frf_->frequencyHz[0])
-                .arg(frf_->frequencyHz[frf_->lineCount() - 1]),
-            false);
+  QString text = tr("FRF set %1: %2 responses x %3 references, %4 lines, %5 to %6 Hz. Choose a band and run.")
+                     .arg(id)
+                     .arg(frf_->responseCount())
+                     .arg(frf_->referenceCount())
+                     .arg(frf_->lineCount())
+                     .arg(frf_->frequencyHz[0])
+                     .arg(frf_->frequencyHz[frf_->lineCount() - 1]);
+  if (windowTauS_ > 0.0)
+    text += QLatin1Char(' ') + tr("Measured with an exponential window (tau = %1 s): its damping is removed from the "
+                                  "modes.")
+                                   .arg(windowTauS_);
+  setStatus(text, false);
   updateSelection();
   return true;
 }
@@ -320,8 +348,7 @@ void IdentificationPage::run() {
   progress_->setValue(0);
   setStatus(tr("Identifying %1 .. %2 Hz ...").arg(opt.bandLowHz).arg(opt.bandHighHz), false);
   jobId_ = jobs_->run<identification::Outcome>(
-      this, tr("Identification"),
-      [frf, opt](JobProgress& p) { return identification::identify(*frf, opt, p); },
+      this, tr("Identification"), [frf, opt](JobProgress& p) { return identification::identify(*frf, opt, p); },
       [this](core::Result<identification::Outcome> r) { onFinished(std::move(r)); },
       [this](double f, const QString& step) {
         progress_->setValue(static_cast<int>(f * 1000));
@@ -352,9 +379,9 @@ void IdentificationPage::onFinished(core::Result<identification::Outcome> result
   progress_->setValue(1000);
   outcome_ = std::move(result).value();
   auto frequency = std::make_shared<const core::Vector>(frf_->frequencyHz);
-  diagram_->setDiagram(outcome_->diagram, frequency, outcome_->backdropDb,
-                       outcome_->options.backdrop == identification::Backdrop::Cmif ? tr("CMIF 1 [dB]")
-                                                                                     : tr("|sum of FRFs| [dB]"));
+  diagram_->setDiagram(
+      outcome_->diagram, frequency, outcome_->backdropDb,
+      outcome_->options.backdrop == identification::Backdrop::Cmif ? tr("CMIF 1 [dB]") : tr("|sum of FRFs| [dB]"));
   // The automatic selection as chosen poles: each drawn on its representative pole.
   automatic_.clear();
   const md::PlscfOptions est = identification::estimatorOptions(outcome_->options);
@@ -380,7 +407,8 @@ void IdentificationPage::onFinished(core::Result<identification::Outcome> result
                 .arg(outcome_->options.bandLowHz)
                 .arg(outcome_->options.bandHighHz),
             false);
-  if (log_) log_(tr("Identification of FRF set %1: %n mode(s)", nullptr, static_cast<int>(automatic_.size())).arg(frfSetId_));
+  if (log_)
+    log_(tr("Identification of FRF set %1: %n mode(s)", nullptr, static_cast<int>(automatic_.size())).arg(frfSetId_));
   emit finished(true);
 }
 
@@ -439,8 +467,8 @@ void IdentificationPage::updateSelection() {
   diagram_->setSelection(indices, freqs);
   warnings_.clear();
   if (outcome_ && outcome_->diagram) {
-    warnings_ = md::selectionWarnings(
-        cand, md::sameModeCriteria(identification::estimatorOptions(outcome_->options), outcome_->diagram->resolutionHz));
+    warnings_ = md::selectionWarnings(cand, md::sameModeCriteria(identification::estimatorOptions(outcome_->options),
+                                                                 outcome_->diagram->resolutionHz));
   }
   fit_.reset();
   if (frf_ && outcome_ && !chosen_.empty()) {
@@ -450,17 +478,19 @@ void IdentificationPage::updateSelection() {
       fit.model = outcome_->model;
       fit_ = fit;
     } else {
-      auto fit = identification::fitSelection(*frf_, chosenPoles(), outcome_->options.bandLowHz,
-                                              outcome_->options.bandHighHz);
+      auto fit =
+          identification::fitSelection(*frf_, chosenPoles(), outcome_->options.bandLowHz, outcome_->options.bandHighHz);
       if (fit) {
         fit_ = std::move(fit).value();
       } else {
-        setStatus(tr("The chosen poles cannot be fitted: %1").arg(QString::fromStdString(fit.error().describe())), true);
+        setStatus(tr("The chosen poles cannot be fitted: %1").arg(QString::fromStdString(fit.error().describe())),
+                  true);
       }
     }
   }
   QStringList lines;
-  for (const auto& w : warnings_) lines << tr("Warning: %1. Remove one of the two.").arg(QString::fromStdString(w.text));
+  for (const auto& w : warnings_)
+    lines << tr("Warning: %1. Remove one of the two.").arg(QString::fromStdString(w.text));
   warning_->setText(lines.join(QLatin1Char('\n')));
   warning_->setVisible(!lines.isEmpty());
   showTable();
@@ -478,6 +508,11 @@ void IdentificationPage::showTable() {
     const md::ModalModel& m = automatic ? outcome_->model : fit_->model;
     auto rows = automatic ? md::modalTableRows(m, outcome_->frequencyStdHz, outcome_->zetaStd) : md::modalTableRows(m);
     if (rows) rows_ = std::move(rows).value();
+    if (auto c = md::removeExponentialWindow(rows_, windowTauS_); !c) {
+      setStatus(
+          tr("Cannot remove the exponential window's damping: %1").arg(QString::fromStdString(c.error().describe())),
+          true);
+    }
   }
   table_->setRowCount(static_cast<int>(rows_.size()));
   auto opt = [](const std::optional<double>& v, int digits) {
@@ -526,10 +561,9 @@ void IdentificationPage::showSynthesis() {
   std::vector<std::pair<double, QString>> items;
   for (Eigen::Index ii = 0; ii < fit_->residual.cols(); ++ii) {
     for (Eigen::Index oo = 0; oo < fit_->residual.rows(); ++oo) {
-      items.push_back({fit_->residual(oo, ii),
-                       tr("H %1 / %2")
-                           .arg(dofText(frf_->responses[static_cast<std::size_t>(oo)]),
-                                dofText(frf_->references[static_cast<std::size_t>(ii)]))});
+      items.push_back({fit_->residual(oo, ii), tr("H %1 / %2")
+                                                   .arg(dofText(frf_->responses[static_cast<std::size_t>(oo)]),
+                                                        dofText(frf_->references[static_cast<std::size_t>(ii)]))});
     }
   }
   std::sort(items.begin(), items.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
@@ -571,11 +605,14 @@ void IdentificationPage::save(const QString& name) {
     emit saveFailed(tr("Nothing to save: run the identification and choose at least one pole."));
     return;
   }
-  // The CLI's name unless the user gave one.
-  const QString title = name.isEmpty() ? QString::fromStdString(md::defaultModalResultName(
-                                             identification::methodKey(outcome_->options.method),
-                                             outcome_->options.bandLowHz, outcome_->options.bandHighHz))
-                                       : name;
+  // The CLI's name unless the user gave one (made unique as the CLI makes it).
+  QString title = name;
+  if (title.isEmpty()) {
+    std::string base = md::defaultModalResultName(identification::methodKey(outcome_->options.method),
+                                                  outcome_->options.bandLowHz, outcome_->options.bandHighHz);
+    if (auto existing = model_->store()->modalResults()) base = md::uniqueModalResultName(*existing, specimenId_, base);
+    title = QString::fromStdString(base);
+  }
   if ((selectionIsAutomatic_ && outcome_->refined) || !outcome_->diagram) {
     storeModel(outcome_->model, title);  // refined already, the CLI's numbers
     return;
@@ -591,7 +628,8 @@ void IdentificationPage::save(const QString& name) {
       [this, title](core::Result<md::RefineResult> r) {
         jobId_ = 0;
         if (!r) {
-          const QString why = tr("Refinement failed, nothing saved: %1").arg(QString::fromStdString(r.error().describe()));
+          const QString why =
+              tr("Refinement failed, nothing saved: %1").arg(QString::fromStdString(r.error().describe()));
           setStatus(why, true);
           emit saveFailed(why);
           return;
@@ -602,6 +640,9 @@ void IdentificationPage::save(const QString& name) {
 
 void IdentificationPage::storeModel(const md::ModalModel& model, const QString& name) {
   auto table = md::modalTableOf(model);
+  if (table) {  // the table's numbers: the window's decay removed, as the CLI stores them
+    if (auto c = md::removeExponentialWindow(*table, windowTauS_); !c) table = c.error();
+  }
   if (!table) {
     const QString why = tr("Cannot store the modes: %1").arg(QString::fromStdString(table.error().describe()));
     setStatus(why, true);
@@ -661,8 +702,9 @@ void IdentificationPage::retranslate() {
   backdropBox_->setItemText(1, tr("CMIF"));
   backdropBox_->setToolTip(tr("What the stabilization diagram is drawn over"));
   refineBox_->setText(tr("Refine"));
-  refineBox_->setToolTip(tr("Refine frequencies, damping and residues together after the automatic selection "
-                            "(standard errors; as mozzi-cli identify)"));
+  refineBox_->setToolTip(
+      tr("Refine frequencies, damping and residues together after the automatic selection "
+         "(standard errors; as mozzi-cli identify)"));
   runButton_->setText(tr("Run"));
   cancelButton_->setText(tr("Cancel"));
   autoButton_->setText(tr("Automatic selection"));
@@ -670,8 +712,8 @@ void IdentificationPage::retranslate() {
   nameEdit_->setPlaceholderText(tr("Name of the modal result"));
   saveButton_->setText(tr("Save modes"));
   saveButton_->setToolTip(tr("Refine the chosen poles and store them as a modal result of the project"));
-  table_->setHorizontalHeaderLabels({tr("Mode"), tr("f [Hz]"), tr("std f [Hz]"), tr("zeta"), tr("std zeta"),
-                                     tr("eta"), tr("MPC"), tr("MPD [deg]"), tr("Complexity")});
+  table_->setHorizontalHeaderLabels({tr("Mode"), tr("f [Hz]"), tr("std f [Hz]"), tr("zeta"), tr("std zeta"), tr("eta"),
+                                     tr("MPC"), tr("MPD [deg]"), tr("Complexity")});
   residuals_->setHorizontalHeaderLabels({tr("FRF"), tr("Residual [%]")});
   tabs_->setTabText(0, tr("Synthesis"));
   tabs_->setTabText(1, tr("MAC"));

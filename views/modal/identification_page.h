@@ -12,6 +12,7 @@
 // identification_backend.h.
 
 #include <QWidget>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -21,6 +22,7 @@
 #include "views/common/page_registry.h"
 #include "views/modal/identification_backend.h"
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -50,6 +52,8 @@ class IdentificationPage : public QWidget {
   // --- what a user sets and does (tests drive these as the widgets do) ---
   bool setFrfSet(qint64 frfSetId);
   qint64 frfSetId() const { return frfSetId_; }
+  // Time constant of the set's exponential window [s] (0: none), removed from the damping.
+  double windowTauS() const { return windowTauS_; }
   void setBand(double lowHz, double highHz);
   void setMethod(identification::Method method);
   void setMaxOrder(int order);
@@ -117,6 +121,9 @@ class IdentificationPage : public QWidget {
   std::function<void(const QString&)> log_;
   qint64 frfSetId_ = 0;
   qint64 specimenId_ = 0;
+  // Exponential window of the campaign that measured the set [s], 0: none;
+  // its decay is removed from the table and the saved modes, as the CLI does.
+  double windowTauS_ = 0.0;
   std::shared_ptr<const core::FrfMatrix> frf_;
   std::optional<identification::Outcome> outcome_;
   std::vector<Chosen> chosen_;
@@ -141,7 +148,7 @@ class IdentificationPage : public QWidget {
   QSpinBox* orderBox_ = nullptr;
   QLabel* backdropLabel_ = nullptr;
   QComboBox* backdropBox_ = nullptr;
-  class QCheckBox* refineBox_ = nullptr;
+  QCheckBox* refineBox_ = nullptr;
   QPushButton* runButton_ = nullptr;
   QPushButton* cancelButton_ = nullptr;
   QProgressBar* progress_ = nullptr;

@@ -6,8 +6,8 @@
 #include <QPainter>
 #include <QPolygon>
 #include <QPolygonF>
-#include <vector>
 #include <cmath>
+#include <vector>
 
 #include "core/common/plot_math.h"
 #include "views/plots/vector_series.h"

@@ -1,6 +1,9 @@
 #include "views/plots/frf_plot.h"
 
+#include <qwt_legend.h>
 #include <qwt_plot_curve.h>
+#include <qwt_scale_draw.h>
+#include <qwt_scale_widget.h>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QEvent>
@@ -23,7 +26,7 @@ namespace {
 
 // Ten distinguishable colours (Tableau 10), cycled over the overlay.
 QColor overlayColour(std::size_t i) {
-  static const QColor colours[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44},  {214, 39, 40},  {148, 103, 189},
+  static const QColor colours[] = {{31, 119, 180}, {255, 127, 14},  {44, 160, 44},   {214, 39, 40},  {148, 103, 189},
                                    {140, 86, 75},  {227, 119, 194}, {127, 127, 127}, {188, 189, 34}, {23, 190, 207}};
   return colours[i % 10];
 }
@@ -44,6 +47,38 @@ DecimatingCurve* addCurve(QwtPlot* plot, const QString& title, std::shared_ptr<c
 
 QString dofText(const core::Dof& d) {
   return QString::fromStdString(core::formatDof(d));
+}
+
+// Stacked plots share their x axis: their left axes get the width of the
+// widest, so the canvases, the ticks and the cursor line up.
+void alignLeftAxes(const std::vector<QwtPlot*>& plots) {
+  double extent = 0.0;
+  for (QwtPlot* p : plots) {
+    QwtScaleWidget* w = p->axisWidget(QwtPlot::yLeft);
+    w->scaleDraw()->setMinimumExtent(0.0);
+    if (!p->isHidden()) extent = std::max(extent, w->scaleDraw()->extent(w->font()));
+  }
+  for (QwtPlot* p : plots) {
+    QwtScaleWidget* w = p->axisWidget(QwtPlot::yLeft);
+    if (w->scaleDraw()->minimumExtent() == extent) continue;
+    w->scaleDraw()->setMinimumExtent(extent);
+    w->updateGeometry();
+    p->updateLayout();
+  }
+}
+
+// Nyquist: one unit per pixel on both axes, so a mode's circle is a circle;
+// the ranges grow about their centres to keep every sample in view.
+void equalAspect(QwtPlot* p) {
+  const QRect c = p->canvas()->contentsRect();
+  if (c.width() < 10 || c.height() < 10) return;
+  const QwtInterval x = p->axisInterval(QwtPlot::xBottom), y = p->axisInterval(QwtPlot::yLeft);
+  if (!(x.width() > 0.0) || !(y.width() > 0.0)) return;
+  const double u = std::max(x.width() / c.width(), y.width() / c.height());
+  const double cx = 0.5 * (x.minValue() + x.maxValue()), cy = 0.5 * (y.minValue() + y.maxValue());
+  p->setAxisScale(QwtPlot::xBottom, cx - 0.5 * u * c.width(), cx + 0.5 * u * c.width());
+  p->setAxisScale(QwtPlot::yLeft, cy - 0.5 * u * c.height(), cy + 0.5 * u * c.height());
+  p->replot();
 }
 
 }  // namespace
@@ -97,6 +132,9 @@ FrfPlot::FrfPlot(QWidget* parent) : QWidget(parent) {
   secondary_->setObjectName(QStringLiteral("frfSecondary"));
   coherence_ = new InteractivePlot(this);
   coherence_->setObjectName(QStringLiteral("frfCoherence"));
+  // Small minimum sizes: three stacked plots and the readout fit a 1280x800
+  // window (and half that in logical pixels at scale 2).
+  for (InteractivePlot* plot : {main_, secondary_, coherence_}) plot->setMinimumSize(200, 90);
   layout->addWidget(main_, 3);
   layout->addWidget(secondary_, 2);
   layout->addWidget(coherence_, 1);
@@ -123,14 +161,27 @@ FrfPlot::FrfPlot(QWidget* parent) : QWidget(parent) {
       if (syncing_) return;
       setCursorFrequency(x);
     });
-    connect(plot, &InteractivePlot::xRangeChanged, this,
-            [this, plot](double lo, double hi) { syncX(plot, lo, hi); });
+    connect(plot, &InteractivePlot::xRangeChanged, this, [this, plot](double lo, double hi) { syncX(plot, lo, hi); });
+    connect(plot->axisWidget(QwtPlot::yLeft), &QwtScaleWidget::scaleDivChanged, this, [this] {
+      alignLeftAxes({main_, secondary_, coherence_});
+    });
   }
+  main_->canvas()->installEventFilter(this);
   retranslate();
   redraw(false);
 }
 
 FrfPlot::~FrfPlot() = default;
+
+bool FrfPlot::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == main_->canvas() && event->type() == QEvent::Resize && view_ == View::Nyquist && !syncing_) {
+    syncing_ = true;
+    main_->autoscale();
+    equalAspect(main_);
+    syncing_ = false;
+  }
+  return QWidget::eventFilter(watched, event);
+}
 
 QwtPlot* FrfPlot::magnitudePlot() const {
   return main_;
@@ -316,8 +367,7 @@ QString FrfPlot::curveTitle(const core::FrfPick& p) const {
 
 void FrfPlot::redraw(bool keepX) {
   const QwtInterval oldX = main_->axisInterval(QwtPlot::xBottom);
-  for (InteractivePlot* plot : {main_, secondary_, coherence_})
-    plot->detachItems(QwtPlotItem::Rtti_PlotCurve, true);
+  for (InteractivePlot* plot : {main_, secondary_, coherence_}) plot->detachItems(QwtPlotItem::Rtti_PlotCurve, true);
   const bool hasCoherence = frfs_ && !frfs_->coherence.empty();
   secondary_->setVisible(view_ == View::Bode || view_ == View::RealImaginary);
   coherence_->setVisible(view_ == View::Bode && hasCoherence);
@@ -325,9 +375,9 @@ void FrfPlot::redraw(bool keepX) {
   unwrapBox_->setEnabled(view_ == View::Bode || view_ == View::Phase);
   cmifBox_->setEnabled(view_ == View::Bode || view_ == View::Magnitude);
   const bool magnitudeView = view_ == View::Bode || view_ == View::Magnitude;
-  const core::FrfView magnitude = magnitudeScale_ == MagnitudeScale::Decibel ? core::FrfView::MagnitudeDb
+  const core::FrfView magnitude = magnitudeScale_ == MagnitudeScale::Decibel  ? core::FrfView::MagnitudeDb
                                   : magnitudeScale_ == MagnitudeScale::Linear ? core::FrfView::MagnitudeLinear
-                                                                               : core::FrfView::MagnitudeLog;
+                                                                              : core::FrfView::MagnitudeLog;
   const core::FrfView phase = unwrap_ ? core::FrfView::PhaseUnwrapped : core::FrfView::PhaseWrapped;
   core::FrfView mainView = magnitude;
   switch (view_) {
@@ -354,7 +404,8 @@ void FrfPlot::redraw(bool keepX) {
       } else {
         addCurve(main_, title, frequency_, share(core::frfViewValues(h, mainView)), colour, w, antialias);
       }
-      if (view_ == View::Bode) addCurve(secondary_, title, frequency_, share(core::frfViewValues(h, phase)), colour, w, antialias);
+      if (view_ == View::Bode)
+        addCurve(secondary_, title, frequency_, share(core::frfViewValues(h, phase)), colour, w, antialias);
       if (view_ == View::RealImaginary)
         addCurve(secondary_, title, frequency_, share(core::frfViewValues(h, core::FrfView::Imaginary)), colour, w,
                  antialias);
@@ -383,7 +434,8 @@ void FrfPlot::redraw(bool keepX) {
       }
     }
   }
-  if (keepX && oldX.width() > 0 && view_ != View::Nyquist && frfs_ && main_->axisInterval(QwtPlot::xBottom).width() > 0) {
+  if (keepX && oldX.width() > 0 && view_ != View::Nyquist && frfs_ &&
+      main_->axisInterval(QwtPlot::xBottom).width() > 0) {
     syncing_ = true;
     for (InteractivePlot* plot : {main_, secondary_, coherence_}) {
       plot->setAxisScale(QwtPlot::xBottom, oldX.minValue(), oldX.maxValue());
@@ -400,13 +452,28 @@ void FrfPlot::redraw(bool keepX) {
     c->setAxisScale(QwtPlot::yLeft, 0.0, 1.05);
     c->replot();
   }
+  if (view_ == View::Nyquist) {
+    syncing_ = true;
+    equalAspect(main_);
+    syncing_ = false;
+  }
+  // A legend names the curves of a small overlay (up to 8), above the plot so the
+  // stacked canvases keep one width; more would hide the plot.
+  const std::size_t curveCount = main_->itemList(QwtPlotItem::Rtti_PlotCurve).size();
+  if (curveCount > 1 && curveCount <= 8) {
+    if (!main_->legend()) main_->insertLegend(new QwtLegend(main_), QwtPlot::TopLegend);
+  } else if (main_->legend()) {
+    main_->insertLegend(nullptr);
+  }
   retranslate();
+  alignLeftAxes({main_, secondary_, coherence_});
   updateReadout();
 }
 
 void FrfPlot::autoscale() {
   syncing_ = true;
   for (InteractivePlot* plot : {main_, secondary_, coherence_}) plot->autoscale();
+  if (view_ == View::Nyquist) equalAspect(main_);
   syncing_ = false;
   if (view_ == View::Coherence || view_ == View::Bode) {
     InteractivePlot* c = view_ == View::Coherence ? main_ : coherence_;
@@ -448,9 +515,10 @@ void FrfPlot::updateReadout() {
     return;
   }
   if (!cursorHz_) {
-    readout_->setText(tr("%n FRF(s) shown. Click a plot for a cursor; arrows step it, Shift+arrows pan, "
+    readout_->setText(tr("%n FRF(s) shown (%1). Click a plot for a cursor; arrows step it, Shift+arrows pan, "
                          "Ctrl+arrows or the wheel zoom, Home autoscales.",
-                         nullptr, static_cast<int>(picks_.size())));
+                         nullptr, static_cast<int>(picks_.size()))
+                          .arg(typeText()));
     return;
   }
   const Eigen::Index k = core::nearestSample(frfs_->frequencyHz, *cursorHz_);
@@ -499,25 +567,44 @@ void FrfPlot::changeEvent(QEvent* event) {
   QWidget::changeEvent(event);
 }
 
-QString FrfPlot::magnitudeTitle() const {
-  QString type;
-  if (frfs_) {
-    switch (frfs_->type) {
-      case core::FrfType::Receptance: type = tr("receptance [m/N]"); break;
-      case core::FrfType::Mobility: type = tr("mobility [(m/s)/N]"); break;
-      case core::FrfType::Accelerance: type = tr("accelerance [(m/s^2)/N]"); break;
-    }
+QString FrfPlot::unitText() const {
+  if (!frfs_) return QString();
+  switch (frfs_->type) {
+    case core::FrfType::Receptance: return tr("m/N");
+    case core::FrfType::Mobility: return tr("(m/s)/N");
+    case core::FrfType::Accelerance: return tr("(m/s^2)/N");
   }
+  return QString();
+}
+
+QString FrfPlot::typeText() const {
+  if (!frfs_) return QString();
+  switch (frfs_->type) {
+    case core::FrfType::Receptance: return tr("receptance");
+    case core::FrfType::Mobility: return tr("mobility");
+    case core::FrfType::Accelerance: return tr("accelerance");
+  }
+  return QString();
+}
+
+// Short enough for one line along the axis of a 1280x800 window's Bode plot.
+QString FrfPlot::magnitudeTitle() const {
+  const QString unit = unitText();
   if (magnitudeScale_ == MagnitudeScale::Decibel)
-    return type.isEmpty() ? tr("|H| [dB]") : tr("|H| %1, dB re 1").arg(type);
-  return type.isEmpty() ? tr("|H|") : tr("|H| %1").arg(type);
+    return unit.isEmpty() ? tr("|H| [dB]") : tr("|H| [dB re 1 %1]").arg(unit);
+  return unit.isEmpty() ? tr("|H|") : tr("|H| [%1]").arg(unit);
+}
+
+QString FrfPlot::partTitle(const QString& part) const {
+  const QString unit = unitText();
+  return unit.isEmpty() ? part : tr("%1 [%2]").arg(part, unit);
 }
 
 void FrfPlot::retranslate() {
   viewLabel_->setText(tr("View"));
   showLabel_->setText(tr("Show"));
-  const QStringList views = {tr("Bode"), tr("Magnitude"), tr("Phase"), tr("Real and imaginary"), tr("Nyquist"),
-                             tr("Coherence")};
+  const QStringList views = {tr("Bode"),    tr("Magnitude"), tr("Phase"), tr("Real and imaginary"),
+                             tr("Nyquist"), tr("Coherence")};
   for (int i = 0; i < views.size(); ++i) viewBox_->setItemText(i, views[i]);
   const QStringList scales = {tr("dB"), tr("Linear"), tr("Logarithmic")};
   for (int i = 0; i < scales.size(); ++i) scaleBox_->setItemText(i, scales[i]);
@@ -540,14 +627,14 @@ void FrfPlot::retranslate() {
     case View::Bode:
     case View::Magnitude: main_->setAxisTitle(QwtPlot::yLeft, magnitudeTitle()); break;
     case View::Phase: main_->setAxisTitle(QwtPlot::yLeft, phaseTitle); break;
-    case View::RealImaginary: main_->setAxisTitle(QwtPlot::yLeft, tr("Re H")); break;
+    case View::RealImaginary: main_->setAxisTitle(QwtPlot::yLeft, partTitle(tr("Re H"))); break;
     case View::Nyquist:
-      main_->setAxisTitle(QwtPlot::yLeft, tr("Im H"));
-      main_->setAxisTitle(QwtPlot::xBottom, tr("Re H"));
+      main_->setAxisTitle(QwtPlot::yLeft, partTitle(tr("Im H")));
+      main_->setAxisTitle(QwtPlot::xBottom, partTitle(tr("Re H")));
       break;
     case View::Coherence: main_->setAxisTitle(QwtPlot::yLeft, tr("Coherence")); break;
   }
-  secondary_->setAxisTitle(QwtPlot::yLeft, view_ == View::RealImaginary ? tr("Im H") : phaseTitle);
+  secondary_->setAxisTitle(QwtPlot::yLeft, view_ == View::RealImaginary ? partTitle(tr("Im H")) : phaseTitle);
   coherence_->setAxisTitle(QwtPlot::yLeft, tr("Coherence"));
   if (view_ == View::Bode) {
     main_->setAxisTitle(QwtPlot::xBottom, QString());

@@ -9,6 +9,7 @@
 
 #include <QWidget>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/common/frf_display.h"
@@ -72,6 +73,7 @@ class FrfPlot : public QWidget {
 
  protected:
   void changeEvent(QEvent* event) override;
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   void retranslate();
@@ -82,6 +84,9 @@ class FrfPlot : public QWidget {
   void syncX(InteractivePlot* from, double lower, double upper);
   QString curveTitle(const core::FrfPick& pick) const;
   QString magnitudeTitle() const;
+  QString unitText() const;                      // "m/N", ... by FRF type
+  QString typeText() const;                      // "receptance", ...
+  QString partTitle(const QString& part) const;  // "Re H [m/N]"
 
   std::shared_ptr<const core::FrfMatrix> frfs_;
   std::shared_ptr<const core::Vector> frequency_;

@@ -55,8 +55,8 @@ InteractivePlot::InteractivePlot(QWidget* parent) : QwtPlot(parent) {
   // Shift + left drag pans too (touchpads have no middle button).
   auto* shiftPanner = new QwtPlotPanner(canvas());
   shiftPanner->setMouseButton(Qt::LeftButton, Qt::ShiftModifier);
-  picker_ = new QwtPlotPicker(QwtPlot::xBottom, QwtPlot::yLeft, QwtPicker::NoRubberBand, QwtPicker::AlwaysOff,
-                              canvas());
+  picker_ =
+      new QwtPlotPicker(QwtPlot::xBottom, QwtPlot::yLeft, QwtPicker::NoRubberBand, QwtPicker::AlwaysOff, canvas());
   picker_->setStateMachine(new QwtPickerClickPointMachine);
   connect(picker_, QOverload<const QPointF&>::of(&QwtPlotPicker::selected), this, [this](const QPointF& p) {
     const QPoint pixel(static_cast<int>(std::lround(transform(QwtPlot::xBottom, p.x()))),
@@ -184,7 +184,8 @@ void InteractivePlot::stepCursor(int lines) {
 void InteractivePlot::zoomX(double factor) {
   const QwtInterval x = axisInterval(QwtPlot::xBottom);
   if (logX_ && x.minValue() > 0.0) {
-    const double a = std::log10(x.minValue()), b = std::log10(x.maxValue()), m = 0.5 * (a + b), h = 0.5 * (b - a) * factor;
+    const double a = std::log10(x.minValue()), b = std::log10(x.maxValue()), m = 0.5 * (a + b),
+                 h = 0.5 * (b - a) * factor;
     setAxisScale(QwtPlot::xBottom, std::pow(10.0, m - h), std::pow(10.0, m + h));
   } else {
     const double m = 0.5 * (x.minValue() + x.maxValue()), h = 0.5 * x.width() * factor;

@@ -225,15 +225,15 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     // The table the identification page saves: f, zeta and the shapes of reference 0.
     auto table = md::modalTableOf(model);
     if (!table) return fail(err, table.error());
-    for (std::size_t r = 0; r < rows.size(); ++r) {  // the printed numbers (window decay removed)
-      table->modes[r].frequencyHz = rows[r].f;
-      table->modes[r].dampingRatio = rows[r].zeta;
-    }
+    // The printed numbers: the window's decay removed as from the rows above.
+    if (auto c = md::removeExponentialWindow(*table, tauS); !c) return fail(err, c.error());
     core::io::ModalResultInfo info;
     info.specimenId = setInfo.specimenId;
     info.frfSetId = setInfo.id;
     info.method = md::storedMethodName(method);
-    info.name = md::defaultModalResultName(method, lo, hi);
+    auto existing = store->modalResults();
+    if (!existing) return fail(err, existing.error());
+    info.name = md::uniqueModalResultName(*existing, info.specimenId, md::defaultModalResultName(method, lo, hi));
     info.bandLowHz = lo;
     info.bandHighHz = hi;
     auto id = store->addModalResult(info, *table);

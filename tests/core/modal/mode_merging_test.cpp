@@ -125,7 +125,7 @@ TEST(ModeMerging, SelectPolesMergesTwoTracksWithinOneLine) {
 FrfMatrix threeFrfSet() {
   const double fn[3] = {420.0, 958.0, 1350.0}, zeta[3] = {0.005, 0.0002, 0.003};
   const double phi[3][3] = {{1.0, 0.6, -0.4}, {0.7, -1.0, 0.3}, {0.2, 0.9, 1.0}};  // [point][mode]
-  const double phiRef[3] = {0.8, 0.5, -0.6};                                        // accelerometer
+  const double phiRef[3] = {0.8, 0.5, -0.6};                                       // accelerometer
   FrfMatrix f;
   f.frequencyHz = Vector::LinSpaced(2001, 0.0, 2000.0);
   f.type = FrfType::Accelerance;
@@ -163,7 +163,8 @@ TEST(ModeMerging, AutomaticSelectionGivesOneModeAtASharp958HzResonance) {
   unmerged.resolutionHz = 0.0;
   auto raw = selectPoles(unmerged, opt);
   ASSERT_TRUE(raw.ok());
-  for (const auto& s : *raw) std::printf("without the rule: %.3f Hz (%d orders)\n", poleFrequencyHz(s.pole), s.clusterSize);
+  for (const auto& s : *raw)
+    std::printf("without the rule: %.3f Hz (%d orders)\n", poleFrequencyHz(s.pole), s.clusterSize);
   int near958 = 0;
   for (const auto& m : res->model.modes) {
     std::printf("selected %.3f Hz zeta %.6f\n", m.frequencyHz(), m.zeta());
