@@ -135,9 +135,11 @@ FrfPlot::FrfPlot(QWidget* parent) : QWidget(parent) {
   // Small minimum sizes: three stacked plots and the readout fit a 1280x800
   // window (and half that in logical pixels at scale 2).
   for (InteractivePlot* plot : {main_, secondary_, coherence_}) plot->setMinimumSize(200, 90);
+  coherence_->setMinimumHeight(150);               // it carries the frequency axis under its canvas
+  coherence_->setAxisMaxMajor(QwtPlot::yLeft, 3);  // 0, 0.5, 1: readable in a short plot
   layout->addWidget(main_, 3);
   layout->addWidget(secondary_, 2);
-  layout->addWidget(coherence_, 1);
+  layout->addWidget(coherence_, 2);
   readout_ = new QLabel(this);
   readout_->setObjectName(QStringLiteral("frfReadout"));
   readout_->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -636,10 +638,12 @@ void FrfPlot::retranslate() {
   }
   secondary_->setAxisTitle(QwtPlot::yLeft, view_ == View::RealImaginary ? partTitle(tr("Im H")) : phaseTitle);
   coherence_->setAxisTitle(QwtPlot::yLeft, tr("Coherence"));
-  if (view_ == View::Bode) {
-    main_->setAxisTitle(QwtPlot::xBottom, QString());
-    if (!coherence_->isHidden()) secondary_->setAxisTitle(QwtPlot::xBottom, QString());
-  }
+  // Stacked plots share one frequency axis, drawn under the lowest: the
+  // height goes to the curves (three plots in a 1280x800 window).
+  const bool coherenceBelow = view_ == View::Bode && !coherence_->isHidden();
+  const bool secondaryBelow = (view_ == View::Bode || view_ == View::RealImaginary) && !secondary_->isHidden();
+  main_->enableAxis(QwtPlot::xBottom, !secondaryBelow);
+  secondary_->enableAxis(QwtPlot::xBottom, !coherenceBelow);
 }
 
 }  // namespace views

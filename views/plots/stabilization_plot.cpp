@@ -39,12 +39,14 @@ StabilizationPlot::StabilizationPlot(QWidget* parent) : InteractivePlot(parent) 
   backdrop_->setPen(QColor(90, 90, 90), 1.0);
   backdrop_->setYAxis(QwtPlot::yRight);
   backdrop_->setZ(5);
+  backdrop_->setLegendAttribute(QwtPlotCurve::LegendShowLine, true);
   backdrop_->attach(this);
   // Order of the status curves: New (drawn first, at the back) .. Stable.
   for (int s = 0; s <= static_cast<int>(core::modal::PoleStatus::Stable); ++s) {
     auto* c = new QwtPlotCurve;
     c->setStyle(QwtPlotCurve::NoCurve);
     c->setSymbol(statusSymbol(static_cast<core::modal::PoleStatus>(s)));
+    c->setLegendAttribute(QwtPlotCurve::LegendShowSymbol, true);  // the legend shows the diagram's symbols
     c->setZ(10 + s);
     c->attach(this);
     statusCurves_.push_back(c);
@@ -52,6 +54,7 @@ StabilizationPlot::StabilizationPlot(QWidget* parent) : InteractivePlot(parent) 
   selectedCurve_ = new QwtPlotCurve;
   selectedCurve_->setStyle(QwtPlotCurve::NoCurve);
   selectedCurve_->setSymbol(new QwtSymbol(QwtSymbol::Rect, QBrush(), QPen(QColor(220, 0, 0), 2.0), QSize(13, 13)));
+  selectedCurve_->setLegendAttribute(QwtPlotCurve::LegendShowSymbol, true);
   selectedCurve_->setZ(30);
   selectedCurve_->attach(this);
   connect(this, &InteractivePlot::clicked, this, &StabilizationPlot::onClicked);
