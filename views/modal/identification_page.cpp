@@ -174,6 +174,7 @@ IdentificationPage::IdentificationPage(const PageContext& ctx) : QWidget(ctx.par
   residuals_ = new QTableWidget(0, 2, synthPane);
   residuals_->setObjectName(QStringLiteral("identificationResiduals"));
   residuals_->verticalHeader()->setVisible(false);
+  residuals_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
   residuals_->horizontalHeader()->setStretchLastSection(true);
   residuals_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   synthesis_->setMinimumSize(160, 120);
@@ -292,6 +293,20 @@ bool IdentificationPage::setFrfSet(qint64 id) {
   for (const auto& ref : frf_->references) {
     for (const auto& rsp : frf_->responses) synthesisFrfBox_->addItem(tr("H %1 / %2").arg(dofText(rsp), dofText(ref)));
   }
+  // The synthesis starts on the strongest FRF (a DOF no mode moves gives a
+  // zero FRF, nothing to compare).
+  int strongest = 0;
+  double best = -1.0;
+  for (std::size_t i = 0; i < frf_->h.size(); ++i) {
+    for (Eigen::Index o = 0; o < frf_->responseCount(); ++o) {
+      const double n = frf_->h[i].col(o).squaredNorm();
+      if (n > best) {
+        best = n;
+        strongest = static_cast<int>(static_cast<Eigen::Index>(i) * frf_->responseCount() + o);
+      }
+    }
+  }
+  synthesisFrfBox_->setCurrentIndex(strongest);
   QString text = tr("FRF set %1: %2 responses x %3 references, %4 lines, %5 to %6 Hz. Choose a band and run.")
                      .arg(id)
                      .arg(frf_->responseCount())

@@ -199,16 +199,27 @@ void FrfPlot::setFrfs(std::shared_ptr<const core::FrfMatrix> frfs) {
   filter_ = {};
   cursorHz_.reset();
   rebuildChoices();
-  picks_ = frfs_ && frfs_->responseCount() > 0 && frfs_->referenceCount() > 0
-               ? std::vector<core::FrfPick>{core::FrfPick{0, 0}}
-               : std::vector<core::FrfPick>{};
-  // The first FRF alone, as a start: choose "all" in the boxes for the overlay.
-  if (!picks_.empty()) {
+  // The strongest FRF alone, as a start (a DOF no mode moves gives a zero
+  // FRF, nothing to look at): choose "all" in the boxes for the overlay.
+  picks_.clear();
+  if (frfs_ && frfs_->responseCount() > 0 && frfs_->referenceCount() > 0) {
+    core::FrfPick best{0, 0};
+    double bestNorm = -1.0;
+    for (std::size_t i = 0; i < frfs_->h.size(); ++i) {
+      for (Eigen::Index o = 0; o < frfs_->responseCount(); ++o) {
+        const double n = frfs_->h[i].col(o).squaredNorm();
+        if (n > bestNorm) {
+          bestNorm = n;
+          best = core::FrfPick{o, static_cast<Eigen::Index>(i)};
+        }
+      }
+    }
+    picks_.push_back(best);
     const QSignalBlocker b1(responseBox_), b2(referenceBox_);
-    responseBox_->setCurrentIndex(1);
-    referenceBox_->setCurrentIndex(1);
-    filter_.response = frfs_->responses[0];
-    filter_.reference = frfs_->references[0];
+    responseBox_->setCurrentIndex(1 + static_cast<int>(best.response));
+    referenceBox_->setCurrentIndex(1 + static_cast<int>(best.reference));
+    filter_.response = frfs_->responses[static_cast<std::size_t>(best.response)];
+    filter_.reference = frfs_->references[static_cast<std::size_t>(best.reference)];
   }
   redraw(false);
 }
@@ -478,6 +489,21 @@ void FrfPlot::autoscale() {
   if (view_ == View::Nyquist) equalAspect(main_);
   syncing_ = false;
   if (view_ == View::Coherence || view_ == View::Bode) {
+    InteractivePlot* c = view_ == View::Coherence ? main_ : coherence_;
+    c->setAxisScale(QwtPlot::yLeft, 0.0, 1.05);
+    c->replot();
+  }
+}
+
+void FrfPlot::setFrequencyRange(double lowHz, double highHz) {
+  if (view_ == View::Nyquist || !(highHz > lowHz)) return;
+  syncing_ = true;
+  for (InteractivePlot* plot : {main_, secondary_, coherence_}) {
+    plot->setAxisScale(QwtPlot::xBottom, lowHz, highHz);
+    plot->autoscaleY();
+  }
+  syncing_ = false;
+  if (view_ == View::Coherence || (view_ == View::Bode && !coherence_->isHidden())) {
     InteractivePlot* c = view_ == View::Coherence ? main_ : coherence_;
     c->setAxisScale(QwtPlot::yLeft, 0.0, 1.05);
     c->replot();

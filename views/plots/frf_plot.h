@@ -70,6 +70,8 @@ class FrfPlot : public QWidget {
   void setCursorFrequency(double frequencyHz);
   QString readoutText() const;
   void autoscale();
+  // Frequency range of every stacked plot (y refit to it); not in Nyquist.
+  void setFrequencyRange(double lowHz, double highHz);
 
  protected:
   void changeEvent(QEvent* event) override;
