@@ -5,16 +5,20 @@
 
 #include <QCoreApplication>
 #include <QVariant>
+#include <algorithm>
 #include <functional>
 #include <initializer_list>
 #include <memory>
+#include <vector>
 
 #include "core/geometry/mesh_placement.h"
+#include "core/io/project_store.h"
 #include "views/campaign/campaign_session.h"
 #include "views/campaign/hammer_station_page.h"
 #include "views/common/page_registry.h"
 #include "views/editors/mesh_editor_page.h"
 #include "views/gap/model_test_view.h"
+#include "views/modal/identification_page.h"
 #include "views/panels/project_overview.h"
 #include "views/plots/frf_plot.h"
 #include "views/rigs/rig_test_page.h"
@@ -87,6 +91,45 @@ QWidget* createScene(const PageContext& ctx) {
   return scene;
 }
 
+// --- FRF page: a stored set, the modes identified from it for the cursor ---------
+
+// Natural frequencies of the latest modal result identified from FRF set `id`.
+std::vector<double> modeFrequenciesOf(core::io::ProjectStore* store, qint64 frfSetId) {
+  std::vector<double> out;
+  auto results = store->modalResults();
+  if (!results) return out;
+  qint64 latest = 0;
+  for (const auto& r : *results) {
+    if (r.frfSetId && *r.frfSetId == frfSetId) latest = std::max<qint64>(latest, r.id);
+  }
+  if (latest == 0) return out;
+  auto table = store->modalResult(latest);
+  if (!table) return out;
+  for (const auto& m : table->modes) out.push_back(m.frequencyHz);
+  return out;
+}
+
+QWidget* createFrfPage(const PageContext& ctx) {
+  core::io::ProjectStore* store = ctx.model->store();
+  if (!store) return nullptr;
+  auto frf = store->frfSet(ctx.item.id);
+  if (!frf) {
+    if (ctx.log)
+      ctx.log(QCoreApplication::translate("Pages", "Could not read the FRF set: %1")
+                  .arg(QString::fromStdString(frf.error().describe())));
+    return nullptr;
+  }
+  auto* plot = new views::FrfPlot(ctx.parent);
+  plot->setFrfs(std::make_shared<const core::FrfMatrix>(std::move(frf).value()));
+  plot->setModeFrequencies(modeFrequenciesOf(store, ctx.item.id));
+  views::ProjectModel* model = ctx.model;
+  const qint64 id = ctx.item.id;
+  QObject::connect(model, &views::ProjectModel::modalResultsChanged, plot, [plot, model, id] {
+    if (model->store()) plot->setModeFrequencies(modeFrequenciesOf(model->store(), id));
+  });
+  return plot;
+}
+
 }  // namespace
 
 void registerBuiltinPages(views::PageRegistry& registry) {
@@ -114,22 +157,11 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                         }});
 
   registry.add(PageSpec{QStringLiteral("frf-plot"), QT_TRANSLATE_NOOP("Pages", "FRF"),
-                        QT_TRANSLATE_NOOP("Pages", "Magnitude, phase and coherence of a stored FRF set"), QString(),
-                        PageMenu::None, [](const ProjectItem& item) { return item.kind == RecordKind::FrfSet; },
-                        [](const PageContext& ctx) -> QWidget* {
-                          core::io::ProjectStore* store = ctx.model->store();
-                          if (!store) return nullptr;
-                          auto frf = store->frfSet(ctx.item.id);
-                          if (!frf) {
-                            if (ctx.log)
-                              ctx.log(QCoreApplication::translate("Pages", "Could not read the FRF set: %1")
-                                          .arg(QString::fromStdString(frf.error().describe())));
-                            return nullptr;
-                          }
-                          auto* plot = new views::FrfPlot(ctx.parent);
-                          plot->setFrfs(std::make_shared<const core::FrfMatrix>(std::move(frf).value()));
-                          return plot;
-                        },
+                        QT_TRANSLATE_NOOP("Pages",
+                                          "The FRFs of a stored set: Bode, real and imaginary, Nyquist, "
+                                          "coherence, sum and CMIF, with a cursor"),
+                        QString(), PageMenu::None,
+                        [](const ProjectItem& item) { return item.kind == RecordKind::FrfSet; }, createFrfPage,
                         /*singleton=*/false, /*openAtStart=*/false, nullptr});
 
   registry.add(PageSpec{
@@ -218,6 +250,16 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                         PageMenu::Pages, [](const ProjectItem& item) { return item.kind == RecordKind::TyreTest; },
                         rigPage(views::RigTestPage::Rig::Tyre, "tyreTesterTab"),
                         /*singleton=*/true, /*openAtStart=*/false, showStoredTest});
+  registry.add(PageSpec{QStringLiteral("identification"), QT_TRANSLATE_NOOP("Pages", "Identification"),
+                        QT_TRANSLATE_NOOP("Pages", "Identify modes on a stabilization diagram"), QString(),
+                        PageMenu::Pages, [](const ProjectItem& item) { return item.kind == RecordKind::FrfSet; },
+                        [](const PageContext& ctx) -> QWidget* {
+                          if (!ctx.model->store()) return nullptr;
+                          auto* page = new views::IdentificationPage(ctx);
+                          page->setObjectName(QStringLiteral("identificationTab"));
+                          return page;
+                        },
+                        /*singleton=*/false, /*openAtStart=*/false, nullptr});
 }
 
 }  // namespace app

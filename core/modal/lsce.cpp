@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/common/text.h"
+#include "core/modal/mode_merging.h"
 #include "core/modal/stabilization.h"
 
 namespace mozzi::core::modal {
@@ -196,6 +197,7 @@ Result<StabilizationDiagram> lsceStabilization(const FrfMatrix& frf, const LsceO
   diag.bandLowHz = opt.bandLowHz;
   diag.bandHighHz = opt.bandHighHz;
   diag.samplingTime = irf->dt;
+  diag.resolutionHz = frequencyResolutionHz(frf.frequencyHz, opt.bandLowHz, opt.bandHighHz);
   std::vector<StabilizationPole> previous;
   MatrixPolynomialRoots roots;
   Matrix theta, alpha;

@@ -13,6 +13,7 @@
 
 #include "core/io/output_file.h"
 #include "core/modal/lsfd.h"
+#include "core/modal/mode_merging.h"
 #include "core/modal/shape_tools.h"
 #include "core/modal/stabilization.h"
 
@@ -244,6 +245,7 @@ Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const Plsc
   diag.bandLowHz = opt.bandLowHz;
   diag.bandHighHz = opt.bandHighHz;
   diag.samplingTime = dt;
+  diag.resolutionHz = frequencyResolutionHz(frf.frequencyHz, opt.bandLowHz, opt.bandHighHz);
 
   Matrix g = Matrix::Zero(nb, nb);  // running sum_{j<=m} sum_o w_oj^T w_oj (lower triangle)
   std::size_t nextOrder = 0;
@@ -371,10 +373,12 @@ Result<std::vector<SelectedPole>> selectPoles(const StabilizationDiagram& diagra
     s.clusterSize = static_cast<int>(c.members.size());
     s.frequencySpreadHz = stdev(fs);  // over the upper half used for the estimate
     s.zetaSpread = stdev(zs);
+    s.shape = c.members.back()->shape;
     out.push_back(std::move(s));
   }
   std::sort(out.begin(), out.end(),
             [](const SelectedPole& a, const SelectedPole& b) { return std::abs(a.pole) < std::abs(b.pole); });
+  mergeSameModes(out, opt, diagram.resolutionHz);
   if (out.empty()) {
     return makeError(ErrorCode::NotFound,
                      "no stable mode in band " + hz(diagram.bandLowHz) + " .. " + hz(diagram.bandHighHz) +

@@ -84,6 +84,7 @@ struct StabilizationDiagram {
   std::vector<StabilizationPole> poles;  // physical candidates of every order (band, 0 < zeta <= maxZeta)
   double bandLowHz = 0.0, bandHighHz = 0.0;
   double samplingTime = 0.0;  // dt of the z-domain model [s]
+  double resolutionHz = 0.0;  // line spacing of the fitted FRFs in the band (mode_merging.h)
 };
 
 struct SelectedPole {
@@ -92,6 +93,7 @@ struct SelectedPole {
   int clusterSize = 0;           // stable poles in the cluster
   double frequencySpreadHz = 0;  // standard deviation of the cluster's frequencies
   double zetaSpread = 0;         // standard deviation of the cluster's damping ratios
+  ComplexVector shape;           // shape of the cluster's highest-order pole (same-mode check)
 };
 
 // Stabilization diagram of the FRFs in the band. Errors: fewer lines than the
@@ -99,7 +101,8 @@ struct SelectedPole {
 // orders than minClusterSize), invalid FRFs, singular normal equations.
 Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const PlscfOptions& options);
 
-// Clusters the stable ('s') poles; NotFound when no cluster qualifies
+// Clusters the stable ('s') poles, keeps one pole per physical mode
+// (mode_merging.h: closer than the resolution or the same shape); NotFound when no cluster qualifies
 // ("no stable mode in band"), never an invented mode.
 Result<std::vector<SelectedPole>> selectPoles(const StabilizationDiagram& diagram, const PlscfOptions& options);
 

@@ -2,7 +2,10 @@
 // an FRF set of a project (docs/cli/identify.md). pLSCF or LSCE + LSFD +
 // refinement by variable projection (standard errors) through
 // core::modal::identifyModes, or single-mode peak picking / circle fit over
-// the band.
+// the band. With --store the modes become a modal result of the project, the
+// same table the workbench's identification page saves (core::modal::modalTableOf).
+// A set measured by a campaign with an exponential window has the window's
+// decay removed from the identified damping (devices/campaign/frf_set_window.h).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -17,10 +20,11 @@
 #include "core/io/project_store.h"
 #include "core/io/uff/uff.h"
 #include "core/modal/identification.h"
+#include "core/modal/pole_selection.h"
 #include "core/modal/sdof.h"
 #include "core/modal/shape_tools.h"
 #include "core/signal/window.h"
-#include "devices/campaign/campaign_definition.h"
+#include "devices/campaign/frf_set_window.h"
 
 namespace mozzi::cli {
 namespace {
@@ -31,7 +35,7 @@ namespace uff = core::io::uff;
 constexpr const char* kUsage =
     "Usage: mozzi-cli identify FRF.uff --band LO:HI [--method plscf|lsce|circle|peak] [--max-order N]\n"
     "                          [--stabilization OUT.csv] [--modes OUT.uff] [--json]\n"
-    "       mozzi-cli identify PROJECT.mozzi --frf-set ID --band LO:HI [same options]\n";
+    "       mozzi-cli identify PROJECT.mozzi --frf-set ID --band LO:HI [--store] [same options]\n";
 
 // Refinement on the lines carrying the modes when the band holds more lines
 // than this (core/modal/refine.h; docs/cli/identify.md).
@@ -47,32 +51,31 @@ int fail(std::ostream& err, const core::Error& e) {
   return kExitFailure;
 }
 
-// FRF set `text` of a project (read-only). When a campaign measured it with
-// an exponential window, *tauS is its time constant (the identified damping
-// is corrected for it), else 0.
-core::Result<core::FrfMatrix> projectFrf(const std::string& path, const std::string& text, double* tauS) {
+// FRF set `text` of a project; *info receives its record (specimen, name),
+// *tauS the time constant of the exponential window it was measured with (0: none).
+core::Result<core::FrfMatrix> projectFrf(const core::io::ProjectStore& store, const std::string& text,
+                                         core::io::FrfSetInfo* info, double* tauS) {
   char* end = nullptr;
   const long long id = std::strtoll(text.c_str(), &end, 10);
   if (text.empty() || *end != '\0' || id <= 0)
     return core::makeError(core::ErrorCode::InvalidArgument,
                            "--frf-set takes a positive FRF set id (got '" + text + "')", "--frf-set");
-  auto store = core::io::ProjectStore::open(path, core::io::ProjectStore::OpenMode::ReadOnly);
-  if (!store) return store.error();
-  auto frf = store->frfSet(id);
-  if (!frf) return frf.error();
-  *tauS = 0.0;
-  auto sets = store->frfSets();
+  auto sets = store.frfSets();
   if (!sets) return sets.error();
+  bool found = false;
   for (const auto& s : *sets) {
-    if (s.id != id || !s.campaignId) continue;
-    auto c = store->campaign(*s.campaignId);
-    if (!c) return c.error();
-    if (c->settingsJson.empty() || c->settingsJson == "{}") break;
-    auto def = devices::campaign::parseDefinition(c->settingsJson);
-    if (!def) return def.error();
-    *tauS = def->windows.exponentialTauS;
+    if (s.id == id) {
+      *info = s;
+      found = true;
+    }
   }
-  return frf;
+  if (!found)
+    return core::makeError(core::ErrorCode::NotFound,
+                           "the project has no FRF set " + text + " (mozzi-cli project info lists them)", "--frf-set");
+  auto tau = devices::campaign::frfSetExponentialTauS(store, id);
+  if (!tau) return tau.error();
+  *tauS = *tau;
+  return store.frfSet(id);
 }
 
 struct Row {
@@ -85,7 +88,7 @@ struct Row {
 // model order bounds the pLSCF/LSCE solve size.
 const OptionSpec kSpec{
     {"--method", "--stabilization", "--modes", "--frf-set"},
-    {"--json"},
+    {"--json", "--store"},
     {{"--band", "band in Hz, LO < HI", {{"LO", closed(0, 1e6, "Hz")}, {"HI", aboveTo(0, 1e6, "Hz")}}, ':'},
      {"--max-order", wholeNumber(8, 400), "largest model order"}},
     {"--stabilization", "--modes"}};
@@ -105,6 +108,12 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     err << "mozzi-cli identify: option --band needs LO < HI (got '" << *parsed->value("--band") << "')\n";
     return kExitFailure;
   }
+  const std::string& input = parsed->positional()[0];
+  const bool isProject = input.size() > 6 && input.compare(input.size() - 6, 6, ".mozzi") == 0;
+  if (isProject && !parsed->value("--frf-set"))
+    return usage(err, "a project needs --frf-set ID (mozzi-cli project info lists the FRF sets)");
+  if (parsed->flag("--store") && !parsed->value("--frf-set"))
+    return usage(err, "--store keeps the modes in a project: give PROJECT.mozzi --frf-set ID");
   const std::string method = parsed->value("--method").value_or("plscf");
   if (method != "plscf" && method != "lsce" && method != "circle" && method != "peak") {
     return usage(err, "unknown --method '" + method + "' (available: plscf, lsce, circle, peak)");
@@ -118,13 +127,18 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     return rc;
   }
 
-  const std::string& input = parsed->positional()[0];
-  if (!parsed->value("--frf-set") && input.size() > 6 && input.compare(input.size() - 6, 6, ".mozzi") == 0)
-    return usage(err, "a project needs --frf-set ID (mozzi-cli project info lists the FRF sets)");
+  std::optional<core::io::ProjectStore> store;
+  core::io::FrfSetInfo setInfo;
   double tauS = 0.0;  // exponential window of the measurement, removed from the damping
   core::Result<core::FrfMatrix> frf = core::makeError(core::ErrorCode::NotFound, "no FRFs");
   if (auto set = parsed->value("--frf-set")) {
-    frf = projectFrf(input, *set, &tauS);
+    // Read-only unless the modes are to be stored.
+    auto opened =
+        core::io::ProjectStore::open(input, parsed->flag("--store") ? core::io::ProjectStore::OpenMode::ReadWrite
+                                                                    : core::io::ProjectStore::OpenMode::ReadOnly);
+    if (!opened) return fail(err, opened.error());
+    store.emplace(std::move(opened).value());
+    frf = projectFrf(*store, *set, &setInfo, &tauS);
   } else {
     frf = uff::readFrfMatrix(input);  // streamed: memory is the FRF matrix
   }
@@ -209,8 +223,31 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     if (auto w = uff::writeFile(*modesPath, outFile); !w) return fail(err, w.error());
   }
 
+  std::optional<std::int64_t> storedId;
+  if (parsed->flag("--store")) {
+    // The table the identification page saves: f, zeta and the shapes of reference 0.
+    auto table = md::modalTableOf(model);
+    if (!table) return fail(err, table.error());
+    // The printed numbers: the window's decay removed as from the rows above.
+    if (auto c = md::removeExponentialWindow(*table, tauS); !c) return fail(err, c.error());
+    core::io::ModalResultInfo info;
+    info.specimenId = setInfo.specimenId;
+    info.frfSetId = setInfo.id;
+    info.method = md::storedMethodName(method);
+    auto existing = store->modalResults();
+    if (!existing) return fail(err, existing.error());
+    info.name = md::uniqueModalResultName(*existing, info.specimenId, md::defaultModalResultName(method, lo, hi));
+    info.bandLowHz = lo;
+    info.bandHighHz = hi;
+    auto id = store->addModalResult(info, *table);
+    if (!id) return fail(err, id.error());
+    storedId = *id;
+  }
+
   if (parsed->flag("--json")) {
     nlohmann::json j;
+    if (storedId) j["modal_result_id"] = *storedId;
+    if (parsed->value("--frf-set")) j["frf_set_id"] = setInfo.id;
     j["method"] = method;
     j["band_hz"] = {lo, hi};
     j["normalisation"] =
@@ -236,14 +273,16 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
                   2 * row.zeta, fs, zs, row.mpc);
     out << buf;
   }
+  if (storedId) out << "stored as modal result " << *storedId << "\n";
   return kExitOk;
 }
 
-const CommandRegistrar kRegistrar(
-    {"identify",
-     "FRF.uff|PROJECT.mozzi [--frf-set ID] --band LO:HI [--method plscf|lsce|circle|peak] [--max-order N] "
-     "[--stabilization OUT.csv] [--modes OUT.uff] [--json]",
-     "Modal identification: frequencies, damping (zeta, eta), standard errors, MPC", identifyCommand, &kSpec});
+const CommandRegistrar kRegistrar({"identify",
+                                   "FRF.uff|PROJECT.mozzi [--frf-set ID [--store]] --band LO:HI "
+                                   "[--method plscf|lsce|circle|peak] [--max-order N] "
+                                   "[--stabilization OUT.csv] [--modes OUT.uff] [--json]",
+                                   "Modal identification: frequencies, damping (zeta, eta), standard errors, MPC",
+                                   identifyCommand, &kSpec});
 
 }  // namespace
 }  // namespace mozzi::cli

@@ -471,7 +471,8 @@ void MainWindowTest::treeOpensItemsInTheirPages() {
   });
   const QRect rect = tree->visualItemRect(tree->currentItem());
   emit tree->customContextMenuRequested(rect.center());
-  QCOMPARE(qApp->property("treeMenuTexts").toStringList(), QStringList{QStringLiteral("Open in FRF")});
+  QCOMPARE(qApp->property("treeMenuTexts").toStringList(),
+           (QStringList{QStringLiteral("Open in FRF"), QStringLiteral("Open in Identification")}));
   // Closing the project closes the tabs of its records.
   window_->model()->close();
   QCOMPARE(window_->workArea()->count(), tabs);

@@ -1,0 +1,164 @@
+#include "views/modal/identification_backend.h"
+
+#include <cmath>
+
+#include "core/common/frf_display.h"
+#include "core/modal/lsce.h"
+#include "core/modal/lsfd.h"
+#include "core/modal/pole_selection.h"
+#include "core/modal/sdof.h"
+#include "core/modal/shape_tools.h"
+#include "views/common/job_runner.h"
+
+namespace mozzi {
+namespace views {
+namespace identification {
+
+namespace md = core::modal;
+
+const char* methodKey(Method m) {
+  switch (m) {
+    case Method::Plscf: return "plscf";
+    case Method::Lsce: return "lsce";
+    case Method::Peak: return "peak";
+    case Method::CircleFit: return "circle";
+  }
+  return "plscf";
+}
+
+std::string storedMethodName(Method m) {
+  return md::storedMethodName(methodKey(m));
+}
+
+md::PlscfOptions estimatorOptions(const Options& o) {
+  md::LsceOptions opt;
+  opt.bandLowHz = o.bandLowHz;
+  opt.bandHighHz = o.bandHighHz;
+  opt.maxOrder = o.maxOrder;
+  return opt;
+}
+
+namespace {
+
+core::Result<void> cancelledIf(JobProgress& p) {
+  if (p.cancelled()) return core::makeError(core::ErrorCode::Cancelled, "cancelled by the user", "identification");
+  return {};
+}
+
+std::shared_ptr<const core::Vector> backdrop(const core::FrfMatrix& frf, Backdrop kind) {
+  core::Vector mag;
+  if (kind == Backdrop::Cmif) {
+    auto sv = md::cmif(frf);
+    if (sv) mag = sv->col(0);
+  }
+  if (mag.size() == 0) {
+    auto sum = core::frfSum(frf, core::pickFrfs(frf, {}));
+    if (!sum) return nullptr;
+    mag = sum->cwiseAbs();
+  }
+  core::Vector db(mag.size());
+  for (Eigen::Index k = 0; k < mag.size(); ++k) db[k] = 20.0 * std::log10(std::max(mag[k], 1e-300));
+  return std::make_shared<const core::Vector>(std::move(db));
+}
+
+}  // namespace
+
+core::Result<Outcome> identify(const core::FrfMatrix& frf, const Options& options, JobProgress& progress) {
+  Outcome out;
+  out.options = options;
+  out.backdropDb = backdrop(frf, options.backdrop);
+  if (options.method == Method::Peak || options.method == Method::CircleFit) {
+    progress.report(0.2, "single-mode fit");
+    auto est = options.method == Method::Peak ? md::peakPicking(frf, 0, options.bandLowHz, options.bandHighHz)
+                                              : md::circleFit(frf, 0, options.bandLowHz, options.bandHighHz);
+    if (!est) return est.error();
+    // As the CLI: one mode, residues of reference 0.
+    out.model.responses = frf.responses;
+    out.model.references = {frf.references[0]};
+    md::Mode mode;
+    mode.pole = md::poleFromFrequencyDamping(est->frequencyHz, est->zeta);
+    mode.residue = est->residue;
+    out.model.modes.push_back(mode);
+    md::SelectedPole s;
+    s.pole = mode.pole;
+    out.automatic.push_back(s);
+    out.refined = true;  // nothing to refine: the CLI's numbers as they are
+    return out;
+  }
+  // The CLI's calls (app/cli/commands/identify.cpp): estimator with its
+  // defaults, automatic selection, LSFD, refinement over the band.
+  md::LsceOptions opt;
+  static_cast<md::PlscfOptions&>(opt) = estimatorOptions(options);
+  progress.report(0.05, "stabilization diagram");
+  if (auto c = cancelledIf(progress); !c) return c.error();
+  const bool lsce = options.method == Method::Lsce;
+  auto diagram = lsce ? md::lsceStabilization(frf, opt) : md::plscfStabilization(frf, opt);
+  if (!diagram) return diagram.error();
+  if (auto c = cancelledIf(progress); !c) return c.error();
+  progress.report(0.5, "automatic selection and LSFD");
+  auto res = md::modalModelFromDiagram(frf, *diagram, opt);
+  out.diagram = std::make_shared<const md::StabilizationDiagram>(std::move(diagram).value());
+  if (!res) return res.error();
+  out.automatic = res->selected;
+  if (auto c = cancelledIf(progress); !c) return c.error();
+  if (!options.refine) {
+    out.model = res->model;
+    progress.report(1.0, "done");
+    return out;
+  }
+  progress.report(0.6, "refinement");
+  auto refined = refine(frf, res->model, options.bandLowHz, options.bandHighHz, progress);
+  if (!refined) return refined.error();
+  out.model = refined->model;
+  out.refined = true;
+  out.frequencyStdHz = refined->frequencyStdHz;
+  out.zetaStd = refined->zetaStd;
+  progress.report(1.0, "done");
+  return out;
+}
+
+core::Result<Fit> fitSelection(const core::FrfMatrix& frf, const std::vector<core::Complex>& poles, double lo,
+                               double hi) {
+  md::LsfdOptions lo2;
+  lo2.bandLowHz = lo;
+  lo2.bandHighHz = hi;
+  auto model = md::lsfd(frf, poles, lo2);
+  if (!model) return model.error();
+  Fit fit;
+  // The band's lines.
+  Eigen::Index a = 0, b = frf.lineCount();
+  while (a < b && frf.frequencyHz[a] < lo) ++a;
+  while (b > a && frf.frequencyHz[b - 1] > hi) --b;
+  fit.measured.frequencyHz = frf.frequencyHz.segment(a, b - a);
+  fit.measured.responses = frf.responses;
+  fit.measured.references = frf.references;
+  fit.measured.type = frf.type;
+  for (const auto& h : frf.h) fit.measured.h.push_back(h.middleRows(a, b - a));
+  auto synth = md::synthesizeFrf(*model, fit.measured.frequencyHz, frf.type);
+  if (!synth) return synth.error();
+  fit.synthesis = std::move(synth).value();
+  auto residual = md::residualPerFrf(fit.measured, fit.synthesis, lo, hi);
+  if (!residual) return residual.error();
+  fit.residual = std::move(residual).value();
+  double num = 0.0, den = 0.0;
+  for (std::size_t i = 0; i < fit.measured.h.size(); ++i) {
+    num += (fit.measured.h[i] - fit.synthesis.h[i]).squaredNorm();
+    den += fit.measured.h[i].squaredNorm();
+  }
+  fit.relativeError = den > 0.0 ? std::sqrt(num / den) : 0.0;
+  fit.model = std::move(model).value();
+  return fit;
+}
+
+core::Result<md::RefineResult> refine(const core::FrfMatrix& frf, const md::ModalModel& model, double lo, double hi,
+                                      JobProgress& progress) {
+  if (auto c = cancelledIf(progress); !c) return c.error();
+  md::RefineOptions ro;
+  ro.bandLowHz = lo;
+  ro.bandHighHz = hi;
+  return md::refineModalModel(frf, model, ro);
+}
+
+}  // namespace identification
+}  // namespace views
+}  // namespace mozzi

@@ -1,0 +1,240 @@
+#include "views/plots/interactive_plot.h"
+
+#include <qwt_picker_machine.h>
+#include <qwt_plot_canvas.h>
+#include <qwt_plot_curve.h>
+#include <qwt_plot_grid.h>
+#include <qwt_plot_magnifier.h>
+#include <qwt_plot_marker.h>
+#include <qwt_plot_panner.h>
+#include <qwt_plot_picker.h>
+#include <qwt_scale_engine.h>
+#include <qwt_scale_widget.h>
+#include <QKeyEvent>
+#include <cmath>
+#include <limits>
+
+#include "core/common/plot_math.h"
+#include "views/plots/plot_export.h"
+
+namespace mozzi {
+namespace views {
+
+namespace {
+
+std::vector<const QwtPlotCurve*> visibleCurves(const QwtPlot* plot) {
+  std::vector<const QwtPlotCurve*> out;
+  for (const QwtPlotItem* item : plot->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+    if (item->isVisible() && static_cast<const QwtPlotCurve*>(item)->dataSize() > 0)
+      out.push_back(static_cast<const QwtPlotCurve*>(item));
+  }
+  return out;
+}
+
+}  // namespace
+
+InteractivePlot::InteractivePlot(QWidget* parent) : QwtPlot(parent) {
+  setCanvasBackground(Qt::white);
+  auto* grid = new QwtPlotGrid;
+  grid->setMajorPen(QColor(0, 0, 0, 40), 0.0, Qt::DotLine);
+  grid->attach(this);
+  cursorMarker_ = new QwtPlotMarker;
+  cursorMarker_->setLineStyle(QwtPlotMarker::VLine);
+  cursorMarker_->setLinePen(QColor(200, 30, 30), 1.0, Qt::DashLine);
+  cursorMarker_->setZ(100);
+  cursorMarker_->setItemAttribute(QwtPlotItem::AutoScale, false);
+  cursorMarker_->hide();
+  cursorMarker_->attach(this);
+
+  magnifier_ = new QwtPlotMagnifier(canvas());
+  magnifier_->setMouseButton(Qt::NoButton);  // wheel and keys only
+  // Qwt divides by the factor on a forward turn: 1.25 makes forward zoom in.
+  magnifier_->setWheelFactor(1.25);
+  panner_ = new QwtPlotPanner(canvas());
+  panner_->setMouseButton(Qt::MiddleButton);
+  // Shift + left drag pans too (touchpads have no middle button).
+  auto* shiftPanner = new QwtPlotPanner(canvas());
+  shiftPanner->setMouseButton(Qt::LeftButton, Qt::ShiftModifier);
+  picker_ =
+      new QwtPlotPicker(QwtPlot::xBottom, QwtPlot::yLeft, QwtPicker::NoRubberBand, QwtPicker::AlwaysOff, canvas());
+  picker_->setStateMachine(new QwtPickerClickPointMachine);
+  connect(picker_, QOverload<const QPointF&>::of(&QwtPlotPicker::selected), this, [this](const QPointF& p) {
+    const QPoint pixel(static_cast<int>(std::lround(transform(QwtPlot::xBottom, p.x()))),
+                       static_cast<int>(std::lround(transform(QwtPlot::yLeft, p.y()))));
+    emit clicked(p, pixel);
+    if (cursorOnClick_) setCursor(p.x());
+  });
+  canvas()->setFocusPolicy(Qt::StrongFocus);
+  canvas()->installEventFilter(this);
+  connect(axisWidget(QwtPlot::xBottom), &QwtScaleWidget::scaleDivChanged, this, &InteractivePlot::emitRange);
+  installPlotExportAction(this);
+}
+
+void InteractivePlot::setLogX(bool on) {
+  if (on == logX_) return;
+  logX_ = on;
+  if (on) {
+    setAxisScaleEngine(QwtPlot::xBottom, new QwtLogScaleEngine);
+  } else {
+    setAxisScaleEngine(QwtPlot::xBottom, new QwtLinearScaleEngine);
+  }
+  autoscale();
+}
+
+void InteractivePlot::setLogY(bool on) {
+  if (on == logY_) return;
+  logY_ = on;
+  if (on) {
+    setAxisScaleEngine(QwtPlot::yLeft, new QwtLogScaleEngine);
+  } else {
+    setAxisScaleEngine(QwtPlot::yLeft, new QwtLinearScaleEngine);
+  }
+  autoscaleY();
+}
+
+void InteractivePlot::autoscale() {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const QwtPlotCurve* c : visibleCurves(this)) {
+    const QRectF r = c->boundingRect();
+    if (r.width() < 0) continue;
+    double l = r.left();
+    if (logX_ && !(l > 0.0)) {
+      // First positive x (a 0 Hz line cannot sit on a log axis).
+      for (size_t i = 0; i < c->dataSize(); ++i) {
+        if (c->sample(i).x() > 0.0) {
+          l = c->sample(i).x();
+          break;
+        }
+      }
+    }
+    lo = std::min(lo, l);
+    hi = std::max(hi, r.right());
+  }
+  if (lo < hi) {
+    if (logX_ && lo > 0.0) {
+      setAxisScale(QwtPlot::xBottom, lo, hi);
+    } else {
+      setAxisScale(QwtPlot::xBottom, lo, hi);
+    }
+  }
+  autoscaleY();
+}
+
+void InteractivePlot::autoscaleY() {
+  const QwtInterval x = axisInterval(QwtPlot::xBottom);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const QwtPlotCurve* c : visibleCurves(this)) {
+    if (c->yAxis() != QwtPlot::yLeft) continue;
+    core::Vector xs(static_cast<Eigen::Index>(c->dataSize())), ys(xs.size());
+    for (size_t i = 0; i < c->dataSize(); ++i) {
+      const QPointF p = c->sample(i);
+      xs[static_cast<Eigen::Index>(i)] = p.x();
+      ys[static_cast<Eigen::Index>(i)] = p.y();
+    }
+    // Nyquist-like curves (x not a frequency axis) use all their points.
+    const core::AxisRange r = core::dataRange(xs, ys, x.minValue(), x.maxValue(), logY_, 0.0);
+    if (r.upper < r.lower) continue;
+    if ((logY_ && r.lower == 1.0 && r.upper == 10.0) || (!logY_ && r.lower == 0.0 && r.upper == 1.0)) {
+      // dataRange's empty-selection answer: count only if the curve has points there.
+      bool any = false;
+      for (Eigen::Index k = 0; k < xs.size() && !any; ++k) any = xs[k] >= x.minValue() && xs[k] <= x.maxValue();
+      if (!any) continue;
+    }
+    lo = std::min(lo, r.lower);
+    hi = std::max(hi, r.upper);
+  }
+  if (lo <= hi) {
+    const core::AxisRange padded =
+        logY_ ? core::AxisRange{lo / 1.5, hi * 1.5}
+              : core::AxisRange{lo - 0.05 * std::max(hi - lo, 1e-300), hi + 0.05 * std::max(hi - lo, 1e-300)};
+    setAxisScale(QwtPlot::yLeft, padded.lower, padded.upper);
+  } else {
+    setAxisAutoScale(QwtPlot::yLeft, true);
+  }
+  replot();
+}
+
+void InteractivePlot::setCursor(std::optional<double> x) {
+  cursor_ = x;
+  if (x) {
+    cursorMarker_->setXValue(*x);
+    cursorMarker_->show();
+  } else {
+    cursorMarker_->hide();
+  }
+  replot();
+  if (x) emit cursorMoved(*x);
+}
+
+void InteractivePlot::stepCursor(int lines) {
+  const auto curves = visibleCurves(this);
+  if (curves.empty()) return;
+  const QwtPlotCurve* c = curves.front();
+  const QwtInterval xr = axisInterval(QwtPlot::xBottom);
+  const double at = cursor_ ? *cursor_ : 0.5 * (xr.minValue() + xr.maxValue());
+  // Nearest sample, then `lines` further (the curve's x is its frequency axis).
+  size_t best = 0;
+  for (size_t i = 0; i < c->dataSize(); ++i) {
+    if (std::abs(c->sample(i).x() - at) < std::abs(c->sample(best).x() - at)) best = i;
+  }
+  const long target = std::clamp<long>(static_cast<long>(best) + lines, 0, static_cast<long>(c->dataSize()) - 1);
+  setCursor(c->sample(static_cast<size_t>(target)).x());
+}
+
+void InteractivePlot::zoomX(double factor) {
+  const QwtInterval x = axisInterval(QwtPlot::xBottom);
+  if (logX_ && x.minValue() > 0.0) {
+    const double a = std::log10(x.minValue()), b = std::log10(x.maxValue()), m = 0.5 * (a + b),
+                 h = 0.5 * (b - a) * factor;
+    setAxisScale(QwtPlot::xBottom, std::pow(10.0, m - h), std::pow(10.0, m + h));
+  } else {
+    const double m = 0.5 * (x.minValue() + x.maxValue()), h = 0.5 * x.width() * factor;
+    setAxisScale(QwtPlot::xBottom, m - h, m + h);
+  }
+  replot();
+}
+
+void InteractivePlot::panX(double fraction) {
+  const QwtInterval x = axisInterval(QwtPlot::xBottom);
+  if (logX_ && x.minValue() > 0.0) {
+    const double d = fraction * (std::log10(x.maxValue()) - std::log10(x.minValue()));
+    setAxisScale(QwtPlot::xBottom, x.minValue() * std::pow(10.0, d), x.maxValue() * std::pow(10.0, d));
+  } else {
+    const double d = fraction * x.width();
+    setAxisScale(QwtPlot::xBottom, x.minValue() + d, x.maxValue() + d);
+  }
+  replot();
+}
+
+bool InteractivePlot::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == canvas() && event->type() == QEvent::KeyPress) {
+    auto* key = static_cast<QKeyEvent*>(event);
+    const bool shift = key->modifiers() & Qt::ShiftModifier, ctrl = key->modifiers() & Qt::ControlModifier;
+    switch (key->key()) {
+      case Qt::Key_Left:
+      case Qt::Key_Right: {
+        const int dir = key->key() == Qt::Key_Left ? -1 : 1;
+        if (ctrl) {
+          zoomX(dir < 0 ? 1.25 : 0.8);
+        } else if (shift) {
+          panX(0.1 * dir);
+        } else {
+          stepCursor(dir);
+        }
+        return true;
+      }
+      case Qt::Key_Home:
+      case Qt::Key_A: autoscale(); return true;
+      default: break;
+    }
+  }
+  return QwtPlot::eventFilter(watched, event);
+}
+
+void InteractivePlot::emitRange() {
+  const QwtInterval x = axisInterval(QwtPlot::xBottom);
+  emit xRangeChanged(x.minValue(), x.maxValue());
+}
+
+}  // namespace views
+}  // namespace mozzi
