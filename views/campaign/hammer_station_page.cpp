@@ -26,12 +26,14 @@
 #include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <initializer_list>
 
 #include "devices/campaign/campaign_store.h"
 #include "devices/common/driver.h"
 #include "views/campaign/campaign_session.h"
 #include "views/campaign/campaign_wizard.h"
 #include "views/plots/frf_plot.h"
+#include "views/plots/interactive_plot.h"
 #include "views/plots/plot_export.h"
 #include "views/plots/vector_series.h"
 
@@ -219,7 +221,7 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   frf_->phasePlot()->hide();  // magnitude and coherence: what decides whether a point is good
   // The page's normal font for the FRF's axis titles too (FrfPlot sets
   // their text later; Qwt keeps the font).
-  for (QwtPlot* plot : {frf_->magnitudePlot(), frf_->coherencePlot()})
+  for (QwtPlot* plot : std::initializer_list<QwtPlot*>{frf_->magnitudePlot(), frf_->coherencePlot()})
     for (int axis : {QwtPlot::yLeft, QwtPlot::xBottom}) setAxisText(plot, axis, plot->axisTitle(axis).text());
   frf_->setMinimumHeight(220);
   leftLayout->addWidget(traces_, 2);
