@@ -2053,7 +2053,7 @@
 <context>
     <name>mozzi::views::HammerStationPage</name>
     <message>
-        <location filename="../views/campaign/hammer_station_page.cpp" line="+49"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+51"/>
         <source>Idle: press A to arm</source>
         <translation type="unfinished"></translation>
     </message>

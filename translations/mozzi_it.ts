@@ -49,62 +49,62 @@
     <message>
         <location line="+26"/>
         <source>Mesh Editor</source>
-        <translation type="unfinished"></translation>
+        <translation>Editor della mesh</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Edit a specimen&apos;s measurement mesh: nodes, lines, faces, DOFs</source>
-        <translation type="unfinished"></translation>
+        <translation>Modifica la mesh di misura di un provino: nodi, linee, facce, GDL</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>Mode Animation</source>
-        <translation type="unfinished"></translation>
+        <translation>Animazione dei modi</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Animate identified or imported modes on their mesh</source>
-        <translation type="unfinished"></translation>
+        <translation>Anima i modi identificati o importati sulla loro mesh</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Hammer Station</source>
-        <translation type="unfinished"></translation>
+        <translation>Stazione martello</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Run an impact campaign point by point: arm, hit, accept or reject</source>
-        <translation type="unfinished"></translation>
+        <translation>Esegue una campagna d&apos;impatto punto per punto: armare, colpire, accettare o scartare</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>Stiffness Rig</source>
-        <translation type="unfinished"></translation>
+        <translation>Banco di rigidezza</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Static and dynamic stiffness tests on the Motostiffmeter</source>
-        <translation type="unfinished"></translation>
+        <translation>Prove di rigidezza statica e dinamica sul Motostiffmeter</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Tyre Tester</source>
-        <translation type="unfinished"></translation>
+        <translation>Banco prova pneumatici</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Relaxation and steady-state tests on the Mototiremeter</source>
-        <translation type="unfinished"></translation>
+        <translation>Prove di rilassamento e stazionarie sul Mototiremeter</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Identification</source>
-        <translation type="unfinished"></translation>
+        <translation>Identificazione</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Identify modes on a stabilization diagram</source>
-        <translation type="unfinished"></translation>
+        <translation>Identifica i modi su un diagramma di stabilizzazione</translation>
     </message>
     <message>
         <location line="-136"/>
@@ -114,7 +114,7 @@
     <message>
         <location line="+42"/>
         <source>The FRFs of a stored set: Bode, real and imaginary, Nyquist, coherence, sum and CMIF, with a cursor</source>
-        <translation type="unfinished"></translation>
+        <translation>Le FRF di un insieme memorizzato: Bode, parte reale e immaginaria, Nyquist, coerenza, somma e CMIF, con un cursore</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -607,417 +607,417 @@
     <message>
         <location line="+3"/>
         <source>Hammer point</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto di battuta</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>DOF label of the mesh the hammer strikes, e.g. 12:+Y (-Y: struck the other way); empty = the specimen&apos;s driving point (the thesis&apos;s hammer point)</source>
-        <translation type="unfinished"></translation>
+        <translation>etichetta del GDL della mesh colpito dal martello, ad es. 12:+Y (-Y: colpito nel verso opposto); vuoto = il punto di eccitazione del provino (il punto di battuta della tesi)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Accelerometer DOFs</source>
-        <translation type="unfinished"></translation>
+        <translation>GDL degli accelerometri</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>comma-separated DOF labels of the mesh for acc 1..7 in order; empty = the first DOFs of the mesh; inputs without a DOF read noise only</source>
-        <translation type="unfinished"></translation>
+        <translation>etichette dei GDL della mesh per acc 1..7 in ordine, separate da virgole; vuoto = i primi GDL della mesh; gli ingressi senza GDL leggono solo rumore</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Constraint</source>
-        <translation type="unfinished"></translation>
+        <translation>Vincolo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>how the specimen is held during the test (thesis §1.4)</source>
-        <translation type="unfinished"></translation>
+        <translation>come è vincolato il provino durante la prova (tesi §1.4)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Clamped nodes</source>
-        <translation type="unfinished"></translation>
+        <translation>Nodi incastrati</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>node labels held fixed, separated by spaces (clamped only)</source>
-        <translation type="unfinished"></translation>
+        <translation>etichette dei nodi tenuti fissi, separate da spazi (solo con incastro)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Constraint description</source>
-        <translation type="unfinished"></translation>
+        <translation>Descrizione del vincolo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>in words, for the report: what is clamped and how</source>
-        <translation type="unfinished"></translation>
+        <translation>a parole, per il rapporto: cosa è incastrato e come</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Excitation</source>
-        <translation type="unfinished"></translation>
+        <translation>Eccitazione</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>roving hammer: one row of the FRF matrix; roving accelerometer: one column (thesis eq. 21)</source>
-        <translation type="unfinished"></translation>
+        <translation>martello mobile: una riga della matrice delle FRF; accelerometro mobile: una colonna (tesi, eq. 21)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Fixed point</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto fisso</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>the fixed hammer (roving accelerometer) or reference accelerometer DOF, e.g. 3:+Y</source>
-        <translation type="unfinished"></translation>
+        <translation>il GDL del martello fisso (accelerometro mobile) o dell&apos;accelerometro di riferimento, ad es. 3:+Y</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Sample rate</source>
-        <translation type="unfinished"></translation>
+        <translation>Frequenza di campionamento</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>scans per second on every channel</source>
-        <translation type="unfinished"></translation>
+        <translation>scansioni al secondo su ogni canale</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Record length</source>
-        <translation type="unfinished"></translation>
+        <translation>Durata della registrazione</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>long enough for the response to die out</source>
-        <translation type="unfinished"></translation>
+        <translation>abbastanza lunga perché la risposta si estingua</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Pre-trigger</source>
-        <translation type="unfinished"></translation>
+        <translation>Pre-trigger</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>fraction of the record kept before the trigger (common practice 10%)</source>
-        <translation type="unfinished"></translation>
+        <translation>frazione della registrazione conservata prima del trigger (prassi comune 10%)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Trigger level</source>
-        <translation type="unfinished"></translation>
+        <translation>Livello di trigger</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>force that starts a hit (rising slope on the hammer channel)</source>
-        <translation type="unfinished"></translation>
+        <translation>forza che avvia un colpo (fronte di salita sul canale del martello)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>FRF band</source>
-        <translation type="unfinished"></translation>
+        <translation>Banda delle FRF</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>FRF lines stored up to here; 0 = sample rate / 2.56</source>
-        <translation type="unfinished"></translation>
+        <translation>righe delle FRF memorizzate fino a qui; 0 = frequenza di campionamento / 2,56</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Estimator</source>
-        <translation type="unfinished"></translation>
+        <translation>Stimatore</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Reject double hits</source>
-        <translation type="unfinished"></translation>
+        <translation>Scarta i doppi colpi</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a second impact after the main pulse</source>
-        <translation type="unfinished"></translation>
+        <translation>un secondo impatto dopo l&apos;impulso principale</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Reject overloads</source>
-        <translation type="unfinished"></translation>
+        <translation>Scarta i sovraccarichi</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a channel at the converter&apos;s full scale</source>
-        <translation type="unfinished"></translation>
+        <translation>un canale al fondo scala del convertitore</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Minimum peak force</source>
-        <translation type="unfinished"></translation>
+        <translation>Forza di picco minima</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>force too low: a hit below this is rejected (0 = only the noise check)</source>
-        <translation type="unfinished"></translation>
+        <translation>forza troppo bassa: un colpo al di sotto di questo valore viene scartato (0 = solo il controllo del rumore)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Minimum force SNR</source>
-        <translation type="unfinished"></translation>
+        <translation>SNR minimo della forza</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>peak force over the pre-trigger noise</source>
-        <translation type="unfinished"></translation>
+        <translation>forza di picco rispetto al rumore di pre-trigger</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Minimum coherence</source>
-        <translation type="unfinished"></translation>
+        <translation>Coerenza minima</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>poor coherence: mean coherence of the point&apos;s average, from the second hit (0 = off)</source>
-        <translation type="unfinished"></translation>
+        <translation>coerenza scarsa: coerenza media della media del punto, dal secondo colpo (0 = disattivato)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Channel name</source>
-        <translation type="unfinished"></translation>
+        <translation>Nome del canale</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>shown on the traces and in the report</source>
-        <translation type="unfinished"></translation>
+        <translation>mostrato sulle tracce e nel rapporto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Transducer model</source>
-        <translation type="unfinished"></translation>
+        <translation>Modello del trasduttore</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>e.g. PCB 086C03 (hammer), PCB M352C65 (accelerometer)</source>
-        <translation type="unfinished"></translation>
+        <translation>ad es. PCB 086C03 (martello), PCB M352C65 (accelerometro)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Serial number</source>
-        <translation type="unfinished"></translation>
+        <translation>Numero di serie</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>of the transducer, for the calibration record</source>
-        <translation type="unfinished"></translation>
+        <translation>del trasduttore, per il registro di taratura</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Sensitivity</source>
-        <translation type="unfinished"></translation>
+        <translation>Sensibilità</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>from the calibration sheet: mV per N (hammer) or per m/s^2 (accelerometer)</source>
-        <translation type="unfinished"></translation>
+        <translation>dal certificato di taratura: mV per N (martello) o per m/s^2 (accelerometro)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>IEPE supply</source>
-        <translation type="unfinished"></translation>
+        <translation>Alimentazione IEPE</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>constant-current supply on for this input</source>
-        <translation type="unfinished"></translation>
+        <translation>alimentazione a corrente costante attiva per questo ingresso</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Calibration date</source>
-        <translation type="unfinished"></translation>
+        <translation>Data di taratura</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>ISO 8601 date of the last calibration</source>
-        <translation type="unfinished"></translation>
+        <translation>data ISO 8601 dell&apos;ultima taratura</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Measured DOF</source>
-        <translation type="unfinished"></translation>
+        <translation>GDL misurato</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>where it measures, e.g. 7:+Y (ignored on the roving channel)</source>
-        <translation type="unfinished"></translation>
+        <translation>dove misura, ad es. 7:+Y (ignorato sul canale mobile)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Hits per point</source>
-        <translation type="unfinished"></translation>
+        <translation>Colpi per punto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>accepted hits averaged at each point (thesis §1.6: five)</source>
-        <translation type="unfinished"></translation>
+        <translation>colpi accettati mediati in ogni punto (tesi §1.6: cinque)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>H1 (noise on the response), H2 (noise on the force) or Hv</source>
-        <translation type="unfinished"></translation>
+        <translation>H1 (rumore sulla risposta), H2 (rumore sulla forza) o Hv</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>harmonic yaw for the relaxation length (§1.9), a side-slip or camber sweep, or one held steady-state set-point (sweep.slip_deg, sweep.camber_deg; appendix 2)</source>
-        <translation type="unfinished"></translation>
+        <translation>imbardata armonica per la lunghezza di rilassamento (§1.9), una scansione di deriva o di campanatura, oppure un singolo set-point stazionario mantenuto (sweep.slip_deg, sweep.camber_deg; appendice 2)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>the machine reaches 55 deg (appendix 2; §1.8 prints 54); 45 deg by default (§1.8)</source>
-        <translation type="unfinished"></translation>
+        <translation>la macchina raggiunge 55 gradi (appendice 2; il §1.8 riporta 54); 45 gradi per impostazione predefinita (§1.8)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>also the held camber of a steady-state set-point</source>
-        <translation type="unfinished"></translation>
+        <translation>anche la campanatura mantenuta in un set-point stazionario</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>also the held side-slip of a steady-state set-point</source>
-        <translation type="unfinished"></translation>
+        <translation>anche la deriva mantenuta in un set-point stazionario</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>F of the ramp 0 -&gt; +F -&gt; -F -&gt; 0 (the thesis uses 300 N, fork B 500 N; §1.2)</source>
-        <translation type="unfinished"></translation>
+        <translation>F della rampa 0 -&gt; +F -&gt; -F -&gt; 0 (la tesi usa 300 N, forcella B 500 N; §1.2)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Ramp duration</source>
-        <translation type="unfinished"></translation>
+        <translation>Durata della rampa</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>time of the whole ramp; slow, so the specimen&apos;s inertia plays no part (§1.2)</source>
-        <translation type="unfinished"></translation>
+        <translation>durata dell&apos;intera rampa; lenta, così l&apos;inerzia del provino non ha alcun ruolo (§1.2)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Frequencies</source>
-        <translation type="unfinished"></translation>
+        <translation>Frequenze</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>sine frequencies in the actuator&apos;s band of 1 to 45 Hz, separated by commas (§1.3)</source>
-        <translation type="unfinished"></translation>
+        <translation>frequenze delle sinusoidi nella banda dell&apos;attuatore da 1 a 45 Hz, separate da virgole (§1.3)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Force amplitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Ampiezza della forza</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>sine set-point; the actuator&apos;s force falls with frequency (§1.1)</source>
-        <translation type="unfinished"></translation>
+        <translation>set-point sinusoidale; la forza dell&apos;attuatore diminuisce con la frequenza (§1.1)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Settling cycles</source>
-        <translation type="unfinished"></translation>
+        <translation>Cicli di assestamento</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>cycles discarded after the soft start (at least 1 s)</source>
-        <translation type="unfinished"></translation>
+        <translation>cicli scartati dopo l&apos;avvio graduale (almeno 1 s)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Recorded cycles</source>
-        <translation type="unfinished"></translation>
+        <translation>Cicli registrati</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>whole cycles fitted with a sine per channel (at least 1 s)</source>
-        <translation type="unfinished"></translation>
+        <translation>cicli interi su cui si stima una sinusoide per canale (almeno 1 s)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>speed of the rotating disk (the thesis runs the yaw test at 5 km/h, §1.9)</source>
-        <translation type="unfinished"></translation>
+        <translation>velocità del disco rotante (la tesi esegue la prova d&apos;imbardata a 5 km/h, §1.9)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>harmonic yaw frequencies, separated by commas (§5.1: 0.42 to 2.10 Hz)</source>
-        <translation type="unfinished"></translation>
+        <translation>frequenze dell&apos;imbardata armonica, separate da virgole (§5.1: da 0.42 a 2.10 Hz)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>amplitude of the side-slip oscillation (§1.9: 1.5 deg)</source>
-        <translation type="unfinished"></translation>
+        <translation>ampiezza dell&apos;oscillazione di deriva (§1.9: 1,5 gradi)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>yaw cycles recorded at each frequency (§5.1: about 10)</source>
-        <translation type="unfinished"></translation>
+        <translation>cicli d&apos;imbardata registrati a ogni frequenza (§5.1: circa 10)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>cycles dropped at the start of each frequency (the lag&apos;s transient)</source>
-        <translation type="unfinished"></translation>
+        <translation>cicli scartati all&apos;inizio di ogni frequenza (il transitorio del ritardo)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>speed of the rotating disk (appendix 2)</source>
-        <translation type="unfinished"></translation>
+        <translation>velocità del disco rotante (appendice 2)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Side-slip set-points</source>
-        <translation type="unfinished"></translation>
+        <translation>Set-point di deriva</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>the side-slip sweep at zero camber, separated by commas (machine limit +/-10 deg)</source>
-        <translation type="unfinished"></translation>
+        <translation>la scansione di deriva a campanatura nulla, valori separati da virgole (limite della macchina +/-10 gradi)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Camber set-points</source>
-        <translation type="unfinished"></translation>
+        <translation>Set-point di campanatura</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>the camber sweep at zero side-slip, separated by commas (machine limit +/-55 deg)</source>
-        <translation type="unfinished"></translation>
+        <translation>la scansione di campanatura a deriva nulla, valori separati da virgole (limite della macchina +/-55 gradi)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Settling time</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo di assestamento</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>wait after each set-point before averaging (appendix 2 holds 10 s)</source>
-        <translation type="unfinished"></translation>
+        <translation>attesa dopo ogni set-point prima di mediare (l&apos;appendice 2 attende 10 s)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Averaging time</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo di media</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>forces and moments averaged per set-point</source>
-        <translation type="unfinished"></translation>
+        <translation>forze e momenti mediati per ogni set-point</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Magic Formula fit</source>
-        <translation type="unfinished"></translation>
+        <translation>Stima della Magic Formula</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>fit the Magic Formula to F_y and M_z at the end</source>
-        <translation type="unfinished"></translation>
+        <translation>stima la Magic Formula su F_y e M_z alla fine</translation>
     </message>
 </context>
 <context>
@@ -1025,212 +1025,212 @@
     <message>
         <location filename="../views/rigs/rig_test_page.cpp" line="+140"/>
         <source>lateral stiffness k_lat</source>
-        <translation type="unfinished"></translation>
+        <translation>rigidezza laterale k_lat</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>twist arm a_tw</source>
-        <translation type="unfinished"></translation>
+        <translation>braccio di torsione a_tw</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>twist stiffness k_tw</source>
-        <translation type="unfinished"></translation>
+        <translation>rigidezza di torsione k_tw</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>twist axis inclination from the plate&apos;s v axis</source>
-        <translation type="unfinished"></translation>
+        <translation>inclinazione dell&apos;asse di torsione rispetto all&apos;asse v della piastra</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>twist axis foot from the load point, u</source>
-        <translation type="unfinished"></translation>
+        <translation>piede dell&apos;asse di torsione rispetto al punto di carico, u</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>twist axis foot from the load point, v</source>
-        <translation type="unfinished"></translation>
+        <translation>piede dell&apos;asse di torsione rispetto al punto di carico, v</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>peak force measured</source>
-        <translation type="unfinished"></translation>
+        <translation>forza di picco misurata</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>lateral stiffness, positive load</source>
-        <translation type="unfinished"></translation>
+        <translation>rigidezza laterale, carico positivo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>lateral stiffness, negative load</source>
-        <translation type="unfinished"></translation>
+        <translation>rigidezza laterale, carico negativo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>rms residual of the laser plane</source>
-        <translation type="unfinished"></translation>
+        <translation>residuo rms del piano dei laser</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>bending stiffness</source>
-        <translation type="unfinished"></translation>
+        <translation>rigidezza flessionale</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>torsion stiffness</source>
-        <translation type="unfinished"></translation>
+        <translation>rigidezza torsionale</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>bending arm</source>
-        <translation type="unfinished"></translation>
+        <translation>braccio flessionale</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>torsion arm</source>
-        <translation type="unfinished"></translation>
+        <translation>braccio torsionale</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>frequency</source>
-        <translation type="unfinished"></translation>
+        <translation>frequenza</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>force amplitude</source>
-        <translation type="unfinished"></translation>
+        <translation>ampiezza della forza</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>frequencies with a twist axis</source>
-        <translation type="unfinished"></translation>
+        <translation>frequenze con un asse di torsione</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>lag of F_y behind the yaw angle</source>
-        <translation type="unfinished"></translation>
+        <translation>ritardo di F_y rispetto all&apos;angolo d&apos;imbardata</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>yaw amplitude</source>
-        <translation type="unfinished"></translation>
+        <translation>ampiezza d&apos;imbardata</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>relaxation length</source>
-        <translation type="unfinished"></translation>
+        <translation>lunghezza di rilassamento</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>scatter of the relaxation length in the band</source>
-        <translation type="unfinished"></translation>
+        <translation>dispersione della lunghezza di rilassamento nella banda</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>frequencies in the band</source>
-        <translation type="unfinished"></translation>
+        <translation>frequenze nella banda</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>disk speed</source>
-        <translation type="unfinished"></translation>
+        <translation>velocità del disco</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>contact half-length a (Table 17)</source>
-        <translation type="unfinished"></translation>
+        <translation>semilunghezza di contatto a (Tabella 17)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>side-slip set-point</source>
-        <translation type="unfinished"></translation>
+        <translation>set-point di deriva</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>camber set-point</source>
-        <translation type="unfinished"></translation>
+        <translation>set-point di campanatura</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>side-slip angle measured</source>
-        <translation type="unfinished"></translation>
+        <translation>angolo di deriva misurato</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>camber angle measured</source>
-        <translation type="unfinished"></translation>
+        <translation>angolo di campanatura misurato</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>lateral force F_y</source>
-        <translation type="unfinished"></translation>
+        <translation>forza laterale F_y</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>yaw torque M_z</source>
-        <translation type="unfinished"></translation>
+        <translation>momento d&apos;imbardata M_z</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>moment about the spin axis M_y</source>
-        <translation type="unfinished"></translation>
+        <translation>momento attorno all&apos;asse di rotazione M_y</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>cornering stiffness dF_y/dalpha</source>
-        <translation type="unfinished"></translation>
+        <translation>rigidezza di deriva dF_y/dalpha</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>self-aligning torque stiffness dM_z/dalpha</source>
-        <translation type="unfinished"></translation>
+        <translation>rigidezza del momento di autoallineamento dM_z/dalpha</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>cornering stiffness / F_z</source>
-        <translation type="unfinished"></translation>
+        <translation>rigidezza di deriva / F_z</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>camber stiffness dF_y/dgamma</source>
-        <translation type="unfinished"></translation>
+        <translation>rigidezza di campanatura dF_y/dgamma</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>twisting torque stiffness dM_z/dgamma</source>
-        <translation type="unfinished"></translation>
+        <translation>rigidezza del momento torcente dM_z/dgamma</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Magic Formula F_y rms residual</source>
-        <translation type="unfinished"></translation>
+        <translation>residuo rms della Magic Formula su F_y</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Magic Formula M_z rms residual</source>
-        <translation type="unfinished"></translation>
+        <translation>residuo rms della Magic Formula su M_z</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>vertical load F_z</source>
-        <translation type="unfinished"></translation>
+        <translation>carico verticale F_z</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>laser %1 amplitude</source>
-        <translation type="unfinished"></translation>
+        <translation>ampiezza del laser %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>laser %1 phase from the force</source>
-        <translation type="unfinished"></translation>
+        <translation>fase del laser %1 rispetto alla forza</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Magic Formula %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Magic Formula %1</translation>
     </message>
 </context>
 <context>
@@ -1599,167 +1599,167 @@
     <message>
         <location filename="../views/campaign/campaign_wizard.cpp" line="+178"/>
         <source>New specimen: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nuovo provino: %1</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1 hammer campaign</source>
-        <translation type="unfinished"></translation>
+        <translation>Campagna con martello %1</translation>
     </message>
     <message>
         <location line="+47"/>
         <source>roving: the point being measured</source>
-        <translation type="unfinished"></translation>
+        <translation>mobile: il punto in misura</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>AI%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>AI%1: %2</translation>
     </message>
     <message>
         <location line="+66"/>
         <source>The campaign cannot be made: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile creare la campagna: %1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>No project is open.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nessun progetto aperto.</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>virtual specimen %1</source>
-        <translation type="unfinished"></translation>
+        <translation>provino virtuale %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Cannot add the specimen: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile aggiungere il provino: %1</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>made with the new-campaign wizard</source>
-        <translation type="unfinished"></translation>
+        <translation>creata con la procedura guidata di nuova campagna</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Cannot store the campaign: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile memorizzare la campagna: %1</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>New Hammer Campaign</source>
-        <translation type="unfinished"></translation>
+        <translation>Nuova campagna con martello</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Specimen and station</source>
-        <translation type="unfinished"></translation>
+        <translation>Provino e stazione</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Measurement mesh</source>
-        <translation type="unfinished"></translation>
+        <translation>Mesh di misura</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Constraint</source>
-        <translation type="unfinished"></translation>
+        <translation>Vincolo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Excitation</source>
-        <translation type="unfinished"></translation>
+        <translation>Eccitazione</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Transducers</source>
-        <translation type="unfinished"></translation>
+        <translation>Trasduttori</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Acquisition and rejection rules</source>
-        <translation type="unfinished"></translation>
+        <translation>Acquisizione e regole di scarto</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The specimen to test, its model in the simulated station, and the station. The campaign starts from the set-up of the thesis for that specimen; every later page can change it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Il provino da provare, il suo modello nella stazione simulata e la stazione. La campagna parte dalla configurazione della tesi per quel provino; ogni pagina successiva può modificarla.</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>The template mesh the points come from. Untick the points you will not measure; they are measured in the order shown.</source>
-        <translation type="unfinished"></translation>
+        <translation>La mesh template da cui provengono i punti. Deseleziona i punti che non misurerai; vengono misurati nell&apos;ordine mostrato.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>How the specimen is held during the test.</source>
-        <translation type="unfinished"></translation>
+        <translation>Come è vincolato il provino durante la prova.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Roving hammer or roving accelerometer, the fixed point, and how many accepted hits each point averages.</source>
-        <translation type="unfinished"></translation>
+        <translation>Martello mobile o accelerometro mobile, il punto fisso e quanti colpi accettati vengono mediati in ogni punto.</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>The transducer on each input: model, serial, sensitivity from its calibration sheet, and where it measures.</source>
-        <translation type="unfinished"></translation>
+        <translation>Il trasduttore su ogni ingresso: modello, numero di serie, sensibilità dal suo certificato di taratura e dove misura.</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>How each hit is recorded and which hits are rejected automatically; below, the station&apos;s own parameters.</source>
-        <translation type="unfinished"></translation>
+        <translation>Come viene registrato ogni colpo e quali colpi vengono scartati automaticamente; sotto, i parametri propri della stazione.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Simulated hammer station (sim-hammer)</source>
-        <translation type="unfinished"></translation>
+        <translation>Stazione martello simulata (sim-hammer)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>MCC USB-1608FS-Plus (real DAQ)</source>
-        <translation type="unfinished"></translation>
+        <translation>MCC USB-1608FS-Plus (DAQ reale)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Station:</source>
-        <translation type="unfinished"></translation>
+        <translation>Stazione:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Virtual specimen:</source>
-        <translation type="unfinished"></translation>
+        <translation>Provino virtuale:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Project specimen:</source>
-        <translation type="unfinished"></translation>
+        <translation>Provino del progetto:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Campaign name:</source>
-        <translation type="unfinished"></translation>
+        <translation>Nome della campagna:</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The station driver&apos;s parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>I parametri del driver della stazione</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Station parameters (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Parametri della stazione (%1)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Station parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Parametri della stazione</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Plug the device in to see and set its parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Collega il dispositivo per vederne e impostarne i parametri</translation>
     </message>
 </context>
 <context>
@@ -1772,103 +1772,103 @@
     <message>
         <location line="-295"/>
         <source>All responses</source>
-        <translation type="unfinished"></translation>
+        <translation>Tutte le risposte</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>All references</source>
-        <translation type="unfinished"></translation>
+        <translation>Tutti i riferimenti</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>All points</source>
-        <translation type="unfinished"></translation>
+        <translation>Tutti i punti</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Response %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Risposta %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Reference %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Riferimento %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Point %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto %1</translation>
     </message>
     <message>
         <location line="+77"/>
         <source>sum</source>
-        <translation type="unfinished"></translation>
+        <translation>somma</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>CMIF %1</source>
-        <translation type="unfinished"></translation>
+        <translation>CMIF %1</translation>
     </message>
     <message>
         <location line="+98"/>
         <source>No FRF matches the choice.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nessuna FRF corrisponde alla scelta.</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>No FRF set.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nessun insieme di FRF.</translation>
     </message>
     <message numerus="yes">
         <location line="+4"/>
         <source>%n FRF(s) shown (%1). Click a plot for a cursor; arrows step it, Shift+arrows pan, Ctrl+arrows or the wheel zoom, Home autoscales.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n FRF mostrata (%1). Fai clic su un grafico per avere un cursore; le frecce lo spostano, Shift+frecce sposta la vista, Ctrl+frecce o la rotella fanno zoom, Home adatta automaticamente la scala.</numerusform>
+            <numerusform>%n FRF mostrate (%1). Fai clic su un grafico per avere un cursore; le frecce lo spostano, Shift+frecce sposta la vista, Ctrl+frecce o la rotella fanno zoom, Home adatta automaticamente la scala.</numerusform>
         </translation>
     </message>
     <message>
         <location line="+8"/>
         <source>f = %1 Hz</source>
-        <translation type="unfinished"></translation>
+        <translation>f = %1 Hz</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1: |H| %2 (%3 dB), phase %4 deg, Re %5, Im %6</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: |H| %2 (%3 dB), fase %4 gradi, Re %5, Im %6</translation>
     </message>
     <message numerus="yes">
         <location line="+8"/>
         <source>and %n more</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>e %n altra</numerusform>
+            <numerusform>e altre %n</numerusform>
         </translation>
     </message>
     <message>
         <location line="+3"/>
         <source>nearest mode %1: %2 Hz (%3 Hz away)</source>
-        <translation type="unfinished"></translation>
+        <translation>modo più vicino %1: %2 Hz (a %3 Hz di distanza)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>no identified mode</source>
-        <translation type="unfinished"></translation>
+        <translation>nessun modo identificato</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>m/N</source>
-        <translation type="unfinished"></translation>
+        <translation>m/N</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>(m/s)/N</source>
-        <translation type="unfinished"></translation>
+        <translation>(m/s)/N</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>(m/s^2)/N</source>
-        <translation type="unfinished"></translation>
+        <translation>(m/s^2)/N</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -1888,74 +1888,74 @@
     <message>
         <location line="+9"/>
         <source>|H| [dB]</source>
-        <translation type="unfinished"></translation>
+        <translation>|H| [dB]</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>|H| [dB re 1 %1]</source>
-        <translation type="unfinished"></translation>
+        <translation>|H| [dB rif. 1 %1]</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>|H|</source>
-        <translation type="unfinished"></translation>
+        <translation>|H|</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>|H| [%1]</source>
-        <translation type="unfinished"></translation>
+        <translation>|H| [%1]</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 [%2]</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 [%2]</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>View</source>
-        <translation type="unfinished"></translation>
+        <translation>Vista</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Show</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostra</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Bode</source>
-        <translation type="unfinished"></translation>
+        <translation>Bode</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Magnitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Modulo</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Phase</source>
-        <translation type="unfinished"></translation>
+        <translation>Fase</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Real and imaginary</source>
-        <translation type="unfinished"></translation>
+        <translation>Parte reale e immaginaria</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Phase, unwrapped [deg]</source>
-        <translation type="unfinished"></translation>
+        <translation>Fase continua [gradi]</translation>
     </message>
     <message>
         <location line="+6"/>
         <location line="+3"/>
         <source>Re H</source>
-        <translation type="unfinished"></translation>
+        <translation>Re H</translation>
     </message>
     <message>
         <location line="-1"/>
         <location line="+5"/>
         <source>Im H</source>
-        <translation type="unfinished"></translation>
+        <translation>Im H</translation>
     </message>
     <message>
         <location line="-13"/>
@@ -1972,77 +1972,77 @@
     <message>
         <location line="-31"/>
         <source>Nyquist</source>
-        <translation type="unfinished"></translation>
+        <translation>Nyquist</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>dB</source>
-        <translation type="unfinished"></translation>
+        <translation>dB</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Linear</source>
-        <translation type="unfinished"></translation>
+        <translation>Lineare</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Logarithmic</source>
-        <translation type="unfinished"></translation>
+        <translation>Logaritmico</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Magnitude axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Asse del modulo</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Log frequency</source>
-        <translation type="unfinished"></translation>
+        <translation>Frequenza logaritmica</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Sum</source>
-        <translation type="unfinished"></translation>
+        <translation>Somma</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Complex sum of the FRFs shown</source>
-        <translation type="unfinished"></translation>
+        <translation>Somma complessa delle FRF mostrate</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>CMIF</source>
-        <translation type="unfinished"></translation>
+        <translation>CMIF</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Complex mode indicator function of the FRFs shown (singular values per line)</source>
-        <translation type="unfinished"></translation>
+        <translation>Funzione indicatrice dei modi complessi delle FRF mostrate (valori singolari per riga)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Autoscale</source>
-        <translation type="unfinished"></translation>
+        <translation>Scala automatica</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Fit the axes to the curves (Home)</source>
-        <translation type="unfinished"></translation>
+        <translation>Adatta gli assi alle curve (Home)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Response DOF</source>
-        <translation type="unfinished"></translation>
+        <translation>GDL di risposta</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Reference DOF</source>
-        <translation type="unfinished"></translation>
+        <translation>GDL di riferimento</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Mesh point: FRFs whose response or reference is at this node</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto della mesh: le FRF con risposta o riferimento in questo nodo</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2053,428 +2053,428 @@
 <context>
     <name>mozzi::views::HammerStationPage</name>
     <message>
-        <location filename="../views/campaign/hammer_station_page.cpp" line="+49"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+51"/>
         <source>Idle: press A to arm</source>
-        <translation type="unfinished"></translation>
+        <translation>Inattivo: premi A per armare</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Armed: hit the point</source>
-        <translation type="unfinished"></translation>
+        <translation>Armato: colpisci il punto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Recording the hit</source>
-        <translation type="unfinished"></translation>
+        <translation>Registrazione del colpo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Verdict: Space accepts, Backspace rejects</source>
-        <translation type="unfinished"></translation>
+        <translation>Verdetto: Space accetta, Backspace scarta</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Point done</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto completato</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Waiting for the device</source>
-        <translation type="unfinished"></translation>
+        <translation>In attesa del dispositivo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Campaign finished</source>
-        <translation type="unfinished"></translation>
+        <translation>Campagna terminata</translation>
     </message>
     <message>
         <location line="+69"/>
         <source>New Campaign...</source>
-        <translation type="unfinished"></translation>
+        <translation>Nuova campagna...</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Start</source>
-        <translation type="unfinished"></translation>
+        <translation>Avvia</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Arresta</translation>
     </message>
     <message>
         <location line="+141"/>
         <source>Arm</source>
-        <translation type="unfinished"></translation>
+        <translation>Arma</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Disarm</source>
-        <translation type="unfinished"></translation>
+        <translation>Disarma</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Accept</source>
-        <translation type="unfinished"></translation>
+        <translation>Accetta</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Reject</source>
-        <translation type="unfinished"></translation>
+        <translation>Scarta</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Redo Point</source>
-        <translation type="unfinished"></translation>
+        <translation>Ripeti punto</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Skip Point</source>
-        <translation type="unfinished"></translation>
+        <translation>Salta punto</translation>
     </message>
     <message>
         <location line="+112"/>
         <location line="+359"/>
         <source>%1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2)</translation>
     </message>
     <message>
         <location line="-337"/>
         <source>Choose a campaign first, or make one with New Campaign (Ctrl+Shift+N).</source>
-        <translation type="unfinished"></translation>
+        <translation>Scegli prima una campagna, oppure creane una con Nuova campagna (Ctrl+Shift+N).</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Cannot open the campaign: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile aprire la campagna: %1</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Cannot start the campaign: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile avviare la campagna: %1</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>Force [%1]</source>
-        <translation type="unfinished"></translation>
+        <translation>Forza [%1]</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Campaign started on %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Campagna avviata su %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Campaign stopped; every decided hit is in the project</source>
-        <translation type="unfinished"></translation>
+        <translation>Campagna arrestata; ogni colpo già deciso è nel progetto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>Arrestata</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Open or create a project first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Apri o crea prima un progetto.</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>New campaign %1 created</source>
-        <translation type="unfinished"></translation>
+        <translation>Nuova campagna %1 creata</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>Type why the point is skipped in the reason box, then press Enter.</source>
-        <translation type="unfinished"></translation>
+        <translation>Scrivi nella casella del motivo perché il punto viene saltato, poi premi Enter.</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Point %1 skipped: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto %1 saltato: %2</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Point %1 to be measured again</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto %1 da misurare di nuovo</translation>
     </message>
     <message>
         <location line="+35"/>
         <source>Hammer station: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Stazione martello: %1</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>TRIGGERED</source>
-        <translation type="unfinished"></translation>
+        <translation>TRIGGER SCATTATO</translation>
     </message>
     <message>
         <location line="+0"/>
         <location line="+42"/>
         <source>ARMED</source>
-        <translation type="unfinished"></translation>
+        <translation>ARMATO</translation>
     </message>
     <message>
         <location line="-42"/>
         <source>TRIGGER</source>
-        <translation type="unfinished"></translation>
+        <translation>TRIGGER</translation>
     </message>
     <message>
         <location line="+12"/>
         <location line="+192"/>
         <source>Time since arming [s]</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo dall&apos;armamento [s]</translation>
     </message>
     <message>
         <location line="-174"/>
         <source>Time in the hit&apos;s record [s]</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo nella registrazione del colpo [s]</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>Hit point %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Colpisci il punto %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The device went away; the campaign goes on when it is back.</source>
-        <translation type="unfinished"></translation>
+        <translation>Il dispositivo si è scollegato; la campagna riprende quando torna disponibile.</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Point %1 (%2), hit attempt %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto %1 (%2), tentativo di colpo %3</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>mean coherence %1</source>
-        <translation type="unfinished"></translation>
+        <translation>coerenza media %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>GOOD HIT — Space accepts</source>
-        <translation type="unfinished"></translation>
+        <translation>COLPO VALIDO — Space accetta</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>REJECT: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>DA SCARTARE: %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Backspace rejects, Space keeps it anyway. %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Backspace lo scarta, Space lo tiene comunque. %1</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>ACCEPTED</source>
-        <translation type="unfinished"></translation>
+        <translation>ACCETTATO</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Hit %1 stored at point %2 (%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Colpo %1 memorizzato nel punto %2 (%3)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Point %1: hit %2 accepted</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto %1: colpo %2 accettato</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>REJECTED</source>
-        <translation type="unfinished"></translation>
+        <translation>SCARTATO</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Point %1: hit %2 rejected (%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto %1: colpo %2 scartato (%3)</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>|H| [dB]</source>
-        <translation type="unfinished"></translation>
+        <translation>|H| [dB]</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Coh.</source>
-        <translation type="unfinished"></translation>
+        <translation>Coer.</translation>
     </message>
     <message numerus="yes">
         <location line="+1"/>
         <source>Point %1 (%2): running FRF of %n accepted hit(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Punto %1 (%2): FRF progressiva di %n colpo accettato</numerusform>
+            <numerusform>Punto %1 (%2): FRF progressiva di %n colpi accettati</numerusform>
         </translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Station: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Stazione: %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 of %2 points</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 di %2 punti</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1: %2 done, %3 skipped; %4 hits accepted, %5 rejected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 completati, %3 saltati; %4 colpi accettati, %5 scartati</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>skipped: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>saltato: %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>done</source>
-        <translation type="unfinished"></translation>
+        <translation>completato</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>measuring now</source>
-        <translation type="unfinished"></translation>
+        <translation>in misura</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>started</source>
-        <translation type="unfinished"></translation>
+        <translation>iniziato</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>to do</source>
-        <translation type="unfinished"></translation>
+        <translation>da fare</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 / %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2</translation>
     </message>
     <message numerus="yes">
         <location line="+13"/>
         <source>%n attempt(s) at this point</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n tentativo in questo punto</numerusform>
+            <numerusform>%n tentativi in questo punto</numerusform>
         </translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Point %1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto %1 (%2)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>CAMPAIGN COMPLETE</source>
-        <translation type="unfinished"></translation>
+        <translation>CAMPAGNA COMPLETATA</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 points measured, %2 skipped; FRF set %3 stored with its hits</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 punti misurati, %2 saltati; insieme di FRF %3 memorizzato con i suoi colpi</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Campaign finished: FRF set %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Campagna terminata: insieme di FRF %1</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>Arm again after each decision</source>
-        <translation type="unfinished"></translation>
+        <translation>Arma di nuovo dopo ogni decisione</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Applies when the campaign starts</source>
-        <translation type="unfinished"></translation>
+        <translation>Si applica all&apos;avvio della campagna</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Response:</source>
-        <translation type="unfinished"></translation>
+        <translation>Risposta:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Reason for Skip or Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>Motivo per Salta o Ripeti</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Type the reason, then S skips the current point or R measures the selected point again</source>
-        <translation type="unfinished"></translation>
+        <translation>Scrivi il motivo, poi S salta il punto corrente o R misura di nuovo il punto selezionato</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Point</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>DOF</source>
-        <translation type="unfinished"></translation>
+        <translation>GDL</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Hits</source>
-        <translation type="unfinished"></translation>
+        <translation>Colpi</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Status</source>
-        <translation type="unfinished"></translation>
+        <translation>Stato</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Force</source>
-        <translation type="unfinished"></translation>
+        <translation>Forza</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Response</source>
-        <translation type="unfinished"></translation>
+        <translation>Risposta</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>EU</source>
-        <translation type="unfinished"></translation>
+        <translation>EU</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Response [%1]</source>
-        <translation type="unfinished"></translation>
+        <translation>Risposta [%1]</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Force [N]</source>
-        <translation type="unfinished"></translation>
+        <translation>Forza [N]</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Not started: choose a campaign, press F5</source>
-        <translation type="unfinished"></translation>
+        <translation>Non avviata: scegli una campagna, premi F5</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Station: not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>Stazione: non collegata</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>The running FRF and coherence of the point appear after its first accepted hit.</source>
-        <translation type="unfinished"></translation>
+        <translation>La FRF progressiva e la coerenza del punto compaiono dopo il suo primo colpo accettato.</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>No point yet</source>
-        <translation type="unfinished"></translation>
+        <translation>Ancora nessun punto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>The verdict of each hit appears here.</source>
-        <translation type="unfinished"></translation>
+        <translation>Il verdetto di ogni colpo compare qui.</translation>
     </message>
 </context>
 <context>
@@ -2482,364 +2482,364 @@
     <message>
         <location filename="../views/modal/identification_page.cpp" line="+232"/>
         <source>Cannot list the FRF sets: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile elencare gli insiemi di FRF: %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1 (id %2, %3 x %4 FRFs)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (id %2, %3 x %4 FRF)</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>Cannot read FRF set %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile leggere l&apos;insieme di FRF %1: %2</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>FRF set %1 holds no FRF to identify</source>
-        <translation type="unfinished"></translation>
+        <translation>L&apos;insieme di FRF %1 non contiene FRF da identificare</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Cannot read the windows of FRF set %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile leggere le finestre dell&apos;insieme di FRF %1: %2</translation>
     </message>
     <message>
         <location line="+32"/>
         <location line="+285"/>
         <source>H %1 / %2</source>
-        <translation type="unfinished"></translation>
+        <translation>H %1 / %2</translation>
     </message>
     <message>
         <location line="-269"/>
         <source>FRF set %1: %2 responses x %3 references, %4 lines, %5 to %6 Hz. Choose a band and run.</source>
-        <translation type="unfinished"></translation>
+        <translation>Insieme di FRF %1: %2 risposte x %3 riferimenti, %4 righe, da %5 a %6 Hz. Scegli una banda ed esegui.</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Measured with an exponential window (tau = %1 s): its damping is removed from the modes.</source>
-        <translation type="unfinished"></translation>
+        <translation>Misurato con una finestra esponenziale (tau = %1 s): il suo smorzamento viene tolto dai modi.</translation>
     </message>
     <message>
         <location line="+46"/>
         <source>Identifying %1 .. %2 Hz ...</source>
-        <translation type="unfinished"></translation>
+        <translation>Identificazione %1 .. %2 Hz ...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Identification</source>
-        <translation type="unfinished"></translation>
+        <translation>Identificazione</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Identifying: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Identificazione: %1</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Identification cancelled.</source>
-        <translation type="unfinished"></translation>
+        <translation>Identificazione annullata.</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Identification failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Identificazione non riuscita: %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>CMIF 1 [dB]</source>
-        <translation type="unfinished"></translation>
+        <translation>CMIF 1 [dB]</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>|sum of FRFs| [dB]</source>
-        <translation type="unfinished"></translation>
+        <translation>|somma delle FRF| [dB]</translation>
     </message>
     <message numerus="yes">
         <location line="+21"/>
         <source>%n mode(s) selected automatically in %1 .. %2 Hz; click a pole to add or remove it.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n modo selezionato automaticamente in %1 .. %2 Hz; fai clic su un polo per aggiungerlo o toglierlo.</numerusform>
+            <numerusform>%n modi selezionati automaticamente in %1 .. %2 Hz; fai clic su un polo per aggiungerlo o toglierlo.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <location line="+6"/>
         <source>Identification of FRF set %1: %n mode(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Identificazione dell&apos;insieme di FRF %1: %n modo</numerusform>
+            <numerusform>Identificazione dell&apos;insieme di FRF %1: %n modi</numerusform>
         </translation>
     </message>
     <message>
         <location line="+75"/>
         <source>The chosen poles cannot be fitted: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile stimare i poli scelti: %1</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Warning: %1. Remove one of the two.</source>
-        <translation type="unfinished"></translation>
+        <translation>Attenzione: %1. Togli uno dei due.</translation>
     </message>
     <message>
         <location line="+20"/>
         <source>Cannot remove the exponential window&apos;s damping: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile togliere lo smorzamento della finestra esponenziale: %1</translation>
     </message>
     <message>
         <location line="+38"/>
         <source>measured</source>
-        <translation type="unfinished">misura</translation>
+        <translation>misura</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>synthesised</source>
-        <translation type="unfinished"></translation>
+        <translation>sintesi</translation>
     </message>
     <message>
         <location line="+35"/>
         <location line="+7"/>
         <source>%1 Hz</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Hz</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Nothing to save: run the identification and choose at least one pole.</source>
-        <translation type="unfinished"></translation>
+        <translation>Niente da salvare: esegui l&apos;identificazione e scegli almeno un polo.</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>Refining the selection before saving ...</source>
-        <translation type="unfinished"></translation>
+        <translation>Affinamento della selezione prima del salvataggio ...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Refine and save</source>
-        <translation type="unfinished"></translation>
+        <translation>Affina e salva</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Refinement failed, nothing saved: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Affinamento non riuscito, niente salvato: %1</translation>
     </message>
     <message>
         <location line="+15"/>
         <location line="+14"/>
         <source>Cannot store the modes: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile memorizzare i modi: %1</translation>
     </message>
     <message numerus="yes">
         <location line="+5"/>
         <source>Saved %n mode(s) as modal result %1.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Salvato %n modo come risultato modale %1.</numerusform>
+            <numerusform>Salvati %n modi come risultato modale %1.</numerusform>
         </translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Modal result %1 saved from FRF set %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Risultato modale %1 salvato dall&apos;insieme di FRF %2</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>FRF set</source>
-        <translation type="unfinished"></translation>
+        <translation>Insieme di FRF</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Band</source>
-        <translation type="unfinished">Banda</translation>
+        <translation>Banda</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Lowest frequency of the band</source>
-        <translation type="unfinished"></translation>
+        <translation>Frequenza minima della banda</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Highest frequency of the band</source>
-        <translation type="unfinished"></translation>
+        <translation>Frequenza massima della banda</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Method</source>
-        <translation type="unfinished">Metodo</translation>
+        <translation>Metodo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>pLSCF (PolyMAX)</source>
-        <translation type="unfinished"></translation>
+        <translation>pLSCF (PolyMAX)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>LSCE</source>
-        <translation type="unfinished"></translation>
+        <translation>LSCE</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Peak picking</source>
-        <translation type="unfinished"></translation>
+        <translation>Peak picking</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Circle fit</source>
-        <translation type="unfinished"></translation>
+        <translation>Circle fit</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Max order</source>
-        <translation type="unfinished"></translation>
+        <translation>Ordine max</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Over</source>
-        <translation type="unfinished"></translation>
+        <translation>Sfondo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Sum</source>
-        <translation type="unfinished"></translation>
+        <translation>Somma</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>CMIF</source>
-        <translation type="unfinished"></translation>
+        <translation>CMIF</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>What the stabilization diagram is drawn over</source>
-        <translation type="unfinished"></translation>
+        <translation>La curva su cui è disegnato il diagramma di stabilizzazione</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Refine</source>
-        <translation type="unfinished"></translation>
+        <translation>Affina</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Refine frequencies, damping and residues together after the automatic selection (standard errors; as mozzi-cli identify)</source>
-        <translation type="unfinished"></translation>
+        <translation>Affina insieme frequenze, smorzamenti e residui dopo la selezione automatica (errori standard; come mozzi-cli identify)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Esegui</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cancel</source>
-        <translation type="unfinished">Annulla</translation>
+        <translation>Annulla</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Automatic selection</source>
-        <translation type="unfinished"></translation>
+        <translation>Selezione automatica</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Back to the poles the automatic selection chose</source>
-        <translation type="unfinished"></translation>
+        <translation>Torna ai poli scelti dalla selezione automatica</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Name of the modal result</source>
-        <translation type="unfinished"></translation>
+        <translation>Nome del risultato modale</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Save modes</source>
-        <translation type="unfinished"></translation>
+        <translation>Salva modi</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Refine the chosen poles and store them as a modal result of the project</source>
-        <translation type="unfinished"></translation>
+        <translation>Affina i poli scelti e li memorizza come risultato modale del progetto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Mode</source>
-        <translation type="unfinished"></translation>
+        <translation>Modo</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>f [Hz]</source>
-        <translation type="unfinished"></translation>
+        <translation>f [Hz]</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>std f [Hz]</source>
-        <translation type="unfinished"></translation>
+        <translation>std f [Hz]</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>zeta</source>
-        <translation type="unfinished"></translation>
+        <translation>zeta</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>std zeta</source>
-        <translation type="unfinished"></translation>
+        <translation>std zeta</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>eta</source>
-        <translation type="unfinished"></translation>
+        <translation>eta</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>MPC</source>
-        <translation type="unfinished"></translation>
+        <translation>MPC</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>MPD [deg]</source>
-        <translation type="unfinished"></translation>
+        <translation>MPD [gradi]</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Complexity</source>
-        <translation type="unfinished"></translation>
+        <translation>Complessità</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>FRF</source>
-        <translation type="unfinished">FRF</translation>
+        <translation>FRF</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Residual [%]</source>
-        <translation type="unfinished"></translation>
+        <translation>Residuo [%]</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Synthesis</source>
-        <translation type="unfinished"></translation>
+        <translation>Sintesi</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>MAC</source>
-        <translation type="unfinished"></translation>
+        <translation>MAC</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>AutoMAC of the chosen modes</source>
-        <translation type="unfinished"></translation>
+        <translation>AutoMAC dei modi scelti</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>MAC: chosen modes (rows) against the automatic selection (columns)</source>
-        <translation type="unfinished"></translation>
+        <translation>MAC: modi scelti (righe) contro la selezione automatica (colonne)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Frequency [Hz]</source>
-        <translation type="unfinished">Frequenza [Hz]</translation>
+        <translation>Frequenza [Hz]</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>|H| [dB]</source>
-        <translation type="unfinished"></translation>
+        <translation>|H| [dB]</translation>
     </message>
 </context>
 <context>
@@ -2868,174 +2868,174 @@
     <message>
         <location filename="../views/editors/mesh_editor.cpp" line="+47"/>
         <source>cartesian</source>
-        <translation type="unfinished"></translation>
+        <translation>cartesiano</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>cylindrical</source>
-        <translation type="unfinished"></translation>
+        <translation>cilindrico</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>spherical</source>
-        <translation type="unfinished"></translation>
+        <translation>sferico</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>Cannot apply the edit: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile applicare la modifica: %1</translation>
     </message>
     <message>
         <location line="+49"/>
         <source>Coordinates in the node&apos;s definition system; in a cylindrical system r [mm], theta [deg], z [mm], in a spherical one r [mm], theta [deg], phi [deg]</source>
-        <translation type="unfinished"></translation>
+        <translation>Coordinate nel sistema di definizione del nodo; in un sistema cilindrico r [mm], theta [gradi], z [mm], in uno sferico r [mm], theta [gradi], phi [gradi]</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Node</source>
-        <translation type="unfinished"></translation>
+        <translation>Nodo</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>X [mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>X [mm]</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Y [mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Y [mm]</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Z [mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Z [mm]</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Def. CS</source>
-        <translation type="unfinished"></translation>
+        <translation>SC def.</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Disp. CS</source>
-        <translation type="unfinished"></translation>
+        <translation>SC vis.</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Measured DOFs</source>
-        <translation type="unfinished"></translation>
+        <translation>GDL misurati</translation>
     </message>
     <message>
         <location line="+3"/>
         <location line="+2"/>
         <source>Node A</source>
-        <translation type="unfinished"></translation>
+        <translation>Nodo A</translation>
     </message>
     <message>
         <location line="-2"/>
         <location line="+2"/>
         <source>Node B</source>
-        <translation type="unfinished"></translation>
+        <translation>Nodo B</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Node C</source>
-        <translation type="unfinished"></translation>
+        <translation>Nodo C</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Node D</source>
-        <translation type="unfinished"></translation>
+        <translation>Nodo D</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>CS</source>
-        <translation type="unfinished"></translation>
+        <translation>SC</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Name</source>
-        <translation type="unfinished">Nome</translation>
+        <translation>Nome</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Type</source>
-        <translation type="unfinished"></translation>
+        <translation>Tipo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Origin X [mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Origine X [mm]</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Origin Y [mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Origine Y [mm]</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Origin Z [mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Origine Z [mm]</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Axes x | y | z</source>
-        <translation type="unfinished"></translation>
+        <translation>Assi x | y | z</translation>
     </message>
     <message>
         <location line="+151"/>
         <source>Import a mesh</source>
-        <translation type="unfinished"></translation>
+        <translation>Importa una mesh</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Meshes (*.uff *.unv *.csv);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Mesh (*.uff *.unv *.csv);;Tutti i file (*)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Export the mesh</source>
-        <translation type="unfinished"></translation>
+        <translation>Esporta la mesh</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Universal file (*.uff);;Mesh CSV (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>File Universal (*.uff);;CSV della mesh (*.csv)</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>Undo %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Annulla %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Redo %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Ripeti %1</translation>
     </message>
     <message>
         <location line="+20"/>
         <source>Select one node to renumber.</source>
-        <translation type="unfinished"></translation>
+        <translation>Seleziona un nodo da rinumerare.</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Renumber node</source>
-        <translation type="unfinished"></translation>
+        <translation>Rinumera nodo</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>New number of node %1:</source>
-        <translation type="unfinished"></translation>
+        <translation>Nuovo numero del nodo %1:</translation>
     </message>
     <message>
         <location line="+119"/>
         <source>Cannot place the mesh: %1</source>
-        <translation type="unfinished">Impossibile posizionare la mesh: %1</translation>
+        <translation>Impossibile posizionare la mesh: %1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 nodes, %2 lines, %3 faces, %4 coordinate systems, %5 measurement DOFs, %6 slave rules</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nodi, %2 linee, %3 facce, %4 sistemi di coordinate, %5 GDL di misura, %6 regole di dipendenza</translation>
     </message>
     <message>
         <location line="+30"/>
@@ -3044,271 +3044,275 @@
 %1
 
 The data stays in the project but can no longer be drawn on this mesh. Go ahead?</source>
-        <translation type="unfinished"></translation>
+        <translation>Questa modifica elimina nodi a cui fanno riferimento dati misurati:
+
+%1
+
+I dati restano nel progetto ma non possono più essere disegnati su questa mesh. Procedere?</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Measured data on these nodes</source>
-        <translation type="unfinished"></translation>
+        <translation>Dati misurati su questi nodi</translation>
     </message>
     <message>
         <location line="+5"/>
         <location line="+6"/>
         <source>Cannot edit the mesh: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile modificare la mesh: %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Edit cancelled: measured data refers to these nodes.</source>
-        <translation type="unfinished"></translation>
+        <translation>Modifica annullata: dati misurati fanno riferimento a questi nodi.</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>Select one coordinate system to delete.</source>
-        <translation type="unfinished"></translation>
+        <translation>Seleziona un sistema di coordinate da eliminare.</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Select the nodes to delete.</source>
-        <translation type="unfinished"></translation>
+        <translation>Seleziona i nodi da eliminare.</translation>
     </message>
     <message>
         <location line="+31"/>
         <source>Select two or more nodes: lines join them in the order selected.</source>
-        <translation type="unfinished"></translation>
+        <translation>Seleziona due o più nodi: le linee li uniscono nell&apos;ordine di selezione.</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>Select three or four nodes, counter-clockwise, for a face.</source>
-        <translation type="unfinished"></translation>
+        <translation>Seleziona tre o quattro nodi, in senso antiorario, per una faccia.</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Cannot set the DOFs: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile impostare i GDL: %1</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Cannot read the rule: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile leggere la regola: %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Select a rule to remove.</source>
-        <translation type="unfinished"></translation>
+        <translation>Seleziona una regola da rimuovere.</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>System</source>
-        <translation type="unfinished"></translation>
+        <translation>Sistema</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Cannot build the template: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile costruire il template: %1</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>No template named %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nessun template di nome %1.</translation>
     </message>
     <message>
         <location line="+10"/>
         <location line="+7"/>
         <location line="+10"/>
         <source>Cannot import %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile importare %1: %2</translation>
     </message>
     <message>
         <location line="-5"/>
         <source>%1 holds no nodes (datasets 15 or 2411).</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non contiene nodi (dataset 15 o 2411).</translation>
     </message>
     <message>
         <location line="+17"/>
         <location line="+10"/>
         <source>Cannot export: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile esportare: %1</translation>
     </message>
     <message>
         <location line="-7"/>
         <source>Mesh written to %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mesh scritta in %1.</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Mesh written to %1 (datasets 164, 2420, 2411, 82).</source>
-        <translation type="unfinished"></translation>
+        <translation>Mesh scritta in %1 (dataset 164, 2420, 2411, 82).</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Faces, measurement DOFs and slave rules have no dataset there; export to CSV to keep them.</source>
-        <translation type="unfinished"></translation>
+        <translation>Facce, GDL di misura e regole di dipendenza non hanno un dataset in quel formato; esporta in CSV per conservarli.</translation>
     </message>
     <message>
         <location line="+94"/>
         <source>Start from template</source>
-        <translation type="unfinished"></translation>
+        <translation>Parti da un template</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Replace the mesh by a template of the component (undoable)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sostituisce la mesh con un template del componente (annullabile)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Import…</source>
-        <translation type="unfinished"></translation>
+        <translation>Importa…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Read a mesh from a universal file (15/2411, 18/2420, 82) or a mesh CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>Legge una mesh da un file Universal (15/2411, 18/2420, 82) o da un CSV della mesh</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Export…</source>
-        <translation type="unfinished"></translation>
+        <translation>Esporta…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Write the mesh as a universal file or a mesh CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>Scrive la mesh come file Universal o come CSV della mesh</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>Annulla</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>Ripeti</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Add node</source>
-        <translation type="unfinished"></translation>
+        <translation>Aggiungi nodo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Delete</source>
-        <translation type="unfinished"></translation>
+        <translation>Elimina</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Delete the selected nodes (with their lines, faces and DOFs), lines, faces or coordinate system (Del)</source>
-        <translation type="unfinished"></translation>
+        <translation>Elimina i nodi selezionati (con le loro linee, facce e GDL), le linee, le facce o il sistema di coordinate (Del)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Renumber…</source>
-        <translation type="unfinished"></translation>
+        <translation>Rinumera…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Renumber all</source>
-        <translation type="unfinished"></translation>
+        <translation>Rinumera tutti</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Number the nodes 1, 2, 3, … in table order</source>
-        <translation type="unfinished"></translation>
+        <translation>Numera i nodi 1, 2, 3, … nell&apos;ordine della tabella</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Snap to grid</source>
-        <translation type="unfinished"></translation>
+        <translation>Aggancia alla griglia</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Round the selected nodes&apos; coordinates (all nodes when none is selected) to the grid</source>
-        <translation type="unfinished"></translation>
+        <translation>Arrotonda alla griglia le coordinate dei nodi selezionati (di tutti i nodi se nessuno è selezionato)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Grid spacing</source>
-        <translation type="unfinished"></translation>
+        <translation>Passo della griglia</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Add lines</source>
-        <translation type="unfinished"></translation>
+        <translation>Aggiungi linee</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Join the selected nodes by trace lines in the order they were picked</source>
-        <translation type="unfinished"></translation>
+        <translation>Unisce i nodi selezionati con linee di traccia nell&apos;ordine in cui sono stati scelti</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Add face</source>
-        <translation type="unfinished"></translation>
+        <translation>Aggiungi faccia</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Add CS</source>
-        <translation type="unfinished"></translation>
+        <translation>Aggiungi SC</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Add a cartesian coordinate system at the origin</source>
-        <translation type="unfinished"></translation>
+        <translation>Aggiunge un sistema di coordinate cartesiano nell&apos;origine</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Labels</source>
-        <translation type="unfinished"></translation>
+        <translation>Etichette</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Fit view</source>
-        <translation type="unfinished"></translation>
+        <translation>Adatta vista</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Show the whole mesh</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostra l&apos;intera mesh</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Nodes</source>
-        <translation type="unfinished"></translation>
+        <translation>Nodi</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Lines</source>
-        <translation type="unfinished"></translation>
+        <translation>Linee</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Faces</source>
-        <translation type="unfinished"></translation>
+        <translation>Facce</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Coordinate systems</source>
-        <translation type="unfinished"></translation>
+        <translation>Sistemi di coordinate</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Slaved DOFs</source>
-        <translation type="unfinished"></translation>
+        <translation>GDL dipendenti</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>e.g. 5:+Z = 0.5 4:+Z + 0.5 6:+Z</source>
-        <translation type="unfinished"></translation>
+        <translation>ad es. 5:+Z = 0.5 4:+Z + 0.5 6:+Z</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Set rule</source>
-        <translation type="unfinished"></translation>
+        <translation>Imposta regola</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Remove rule</source>
-        <translation type="unfinished"></translation>
+        <translation>Rimuovi regola</translation>
     </message>
 </context>
 <context>
@@ -3316,27 +3320,27 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     <message>
         <location filename="../views/editors/mesh_editor_page.cpp" line="+37"/>
         <source>hits of campaign &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>colpi della campagna &apos;%1&apos;</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>FRF set %1 &apos;%2&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>insieme di FRF %1 &apos;%2&apos;</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>modal result %1 &apos;%2&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>risultato modale %1 &apos;%2&apos;</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>Cannot read the mesh: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile leggere la mesh: %1</translation>
     </message>
     <message>
         <location line="+20"/>
         <source>Cannot save the mesh: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile salvare la mesh: %1</translation>
     </message>
 </context>
 <context>
@@ -3344,22 +3348,22 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     <message>
         <location filename="../views/scene/mode_animation_page.cpp" line="+35"/>
         <source>The project has no modal results to animate.</source>
-        <translation type="unfinished"></translation>
+        <translation>Il progetto non ha risultati modali da animare.</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Cannot read the mesh: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile leggere la mesh: %1</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>%1, mode %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, modo %2</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>FRF set %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Insieme di FRF %1</translation>
     </message>
 </context>
 <context>
@@ -3367,218 +3371,218 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     <message>
         <location filename="../views/scene/mode_animation_view.cpp" line="+187"/>
         <source>Export a frame</source>
-        <translation type="unfinished"></translation>
+        <translation>Esporta un fotogramma</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>PNG image (*.png)</source>
-        <translation type="unfinished"></translation>
+        <translation>Immagine PNG (*.png)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Export the animation</source>
-        <translation type="unfinished"></translation>
+        <translation>Esporta l&apos;animazione</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Animated GIF (*.gif);;PNG sequence (*.png)</source>
-        <translation type="unfinished"></translation>
+        <translation>GIF animata (*.gif);;Sequenza PNG (*.png)</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>Cannot place the mesh: %1</source>
-        <translation type="unfinished">Impossibile posizionare la mesh: %1</translation>
+        <translation>Impossibile posizionare la mesh: %1</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>(none)</source>
-        <translation type="unfinished"></translation>
+        <translation>(nessuna)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 (%2 Hz)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2 Hz)</translation>
     </message>
     <message>
         <location line="+24"/>
         <location line="+5"/>
         <location line="+5"/>
         <source>Cannot show %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile mostrare %1: %2</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Cannot show %1: the mesh and the shape differ in node count</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile mostrare %1: la mesh e la forma hanno un numero di nodi diverso</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>|u|</source>
-        <translation type="unfinished"></translation>
+        <translation>|u|</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>No shape %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nessuna forma %1.</translation>
     </message>
     <message>
         <location line="+53"/>
         <source>No MAC: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nessun MAC: %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Open an FRF set to see operating deflection shapes.</source>
-        <translation type="unfinished"></translation>
+        <translation>Apri un insieme di FRF per vedere le forme operative di deflessione (ODS).</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>No ODS: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nessuna ODS: %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>ODS at %1 Hz (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>ODS a %1 Hz (%2)</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>MAC %1 (%2 shared DOFs)</source>
-        <translation type="unfinished"></translation>
+        <translation>MAC %1 (%2 GDL in comune)</translation>
     </message>
     <message>
         <location line="+99"/>
         <location line="+33"/>
         <source>Cannot write %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile scrivere %1.</translation>
     </message>
     <message>
         <location line="-30"/>
         <source>Frame written to %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Fotogramma scritto in %1.</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Choose a shape to export.</source>
-        <translation type="unfinished"></translation>
+        <translation>Scegli una forma da esportare.</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The frame rate must be 1 to 100 frames per second.</source>
-        <translation type="unfinished"></translation>
+        <translation>La frequenza dei fotogrammi deve essere da 1 a 100 fotogrammi al secondo.</translation>
     </message>
     <message>
         <location line="+29"/>
         <source>Cannot write %1: %2</source>
-        <translation type="unfinished">Impossibile scrivere %1: %2</translation>
+        <translation>Impossibile scrivere %1: %2</translation>
     </message>
     <message numerus="yes">
         <location line="+4"/>
         <source>%n frame(s) written.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n fotogramma scritto.</numerusform>
+            <numerusform>%n fotogrammi scritti.</numerusform>
         </translation>
     </message>
     <message>
         <location line="+8"/>
         <source>: %1 Hz</source>
-        <translation type="unfinished"></translation>
+        <translation>: %1 Hz</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>, zeta %1 %</source>
-        <translation type="unfinished"></translation>
+        <translation>, zeta %1 %</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 measured, %2 slaved, %3 interpolated, %4 still nodes</source>
-        <translation type="unfinished"></translation>
+        <translation>nodi: %1 misurati, %2 dipendenti, %3 interpolati, %4 fermi</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Choose a mode to animate.</source>
-        <translation type="unfinished"></translation>
+        <translation>Scegli un modo da animare.</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>Shape</source>
-        <translation type="unfinished"></translation>
+        <translation>Forma</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Beside it</source>
-        <translation type="unfinished"></translation>
+        <translation>Accanto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>ODS at</source>
-        <translation type="unfinished"></translation>
+        <translation>ODS a</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Show</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostra</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Operating deflection shape of the FRF set at the line nearest this frequency</source>
-        <translation type="unfinished"></translation>
+        <translation>Forma operativa di deflessione dell&apos;insieme di FRF alla riga più vicina a questa frequenza</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Amplitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Ampiezza</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>0.1x to 10x the automatic amplitude (largest displacement 10 % of the mesh)</source>
-        <translation type="unfinished"></translation>
+        <translation>da 0,1x a 10x l&apos;ampiezza automatica (spostamento massimo pari al 10 % della mesh)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cycles/s</source>
-        <translation type="unfinished"></translation>
+        <translation>Cicli/s</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Colour by displacement</source>
-        <translation type="unfinished"></translation>
+        <translation>Colori per spostamento</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Undeformed overlay</source>
-        <translation type="unfinished"></translation>
+        <translation>Sovrapponi l&apos;indeformata</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Arrows at measured nodes</source>
-        <translation type="unfinished"></translation>
+        <translation>Frecce sui nodi misurati</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Pause (Space)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pausa (Space)</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Play (Space)</source>
-        <translation type="unfinished"></translation>
+        <translation>Riproduci (Space)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Export frame…</source>
-        <translation type="unfinished"></translation>
+        <translation>Esporta fotogramma…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Export animation…</source>
-        <translation type="unfinished"></translation>
+        <translation>Esporta animazione…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>One cycle as an animated GIF or numbered PNG files (25 frames/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Un ciclo come GIF animata o file PNG numerati (25 fotogrammi/s)</translation>
     </message>
 </context>
 <context>
@@ -3663,7 +3667,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     <message>
         <location line="-281"/>
         <source>Verdict: %1 (%2 and %3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Verdetto: %1 (%2 e %3)</translation>
     </message>
     <message>
         <location line="+40"/>
@@ -3734,7 +3738,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     <message>
         <location line="+39"/>
         <source>model + %1 + %2</source>
-        <translation type="unfinished"></translation>
+        <translation>modello + %1 + %2</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -4159,62 +4163,62 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     <message>
         <location line="+7"/>
         <source>running</source>
-        <translation type="unfinished"></translation>
+        <translation>in corso</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>complete</source>
-        <translation type="unfinished"></translation>
+        <translation>completata</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>interrupted</source>
-        <translation type="unfinished"></translation>
+        <translation>interrotta</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>failed</source>
-        <translation type="unfinished"></translation>
+        <translation>non riuscita</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Specimen</source>
-        <translation type="unfinished">Provino</translation>
+        <translation>Provino</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Status</source>
-        <translation type="unfinished"></translation>
+        <translation>Stato</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Note</source>
-        <translation type="unfinished"></translation>
+        <translation>Nota</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Recorded (UTC)</source>
-        <translation type="unfinished"></translation>
+        <translation>Registrata (UTC)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Steps recorded</source>
-        <translation type="unfinished"></translation>
+        <translation>Passi registrati</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Results</source>
-        <translation type="unfinished"></translation>
+        <translation>Risultati</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Rig tests</source>
-        <translation type="unfinished"></translation>
+        <translation>Prove al banco</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Tyre tests</source>
-        <translation type="unfinished"></translation>
+        <translation>Prove pneumatici</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4227,386 +4231,386 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     <message>
         <location filename="../views/rigs/rig_test_page.cpp" line="+190"/>
         <source>Stiffness rig (simulated Motostiffmeter)</source>
-        <translation type="unfinished"></translation>
+        <translation>Banco di rigidezza (Motostiffmeter simulato)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Tyre tester (simulated Mototiremeter)</source>
-        <translation type="unfinished"></translation>
+        <translation>Banco prova pneumatici (Mototiremeter simulato)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Specimen</source>
-        <translation type="unfinished">Provino</translation>
+        <translation>Provino</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Tyre</source>
-        <translation type="unfinished">Pneumatico</translation>
+        <translation>Pneumatico</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Test</source>
-        <translation type="unfinished">Prova</translation>
+        <translation>Prova</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Simulated rig</source>
-        <translation type="unfinished"></translation>
+        <translation>Banco simulato</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Test settings</source>
-        <translation type="unfinished"></translation>
+        <translation>Impostazioni della prova</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Result stored in the project</source>
-        <translation type="unfinished"></translation>
+        <translation>Risultato memorizzato nel progetto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Run (F5)</source>
-        <translation type="unfinished"></translation>
+        <translation>Esegui (F5)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Check the settings against the machine&apos;s limits and run the test</source>
-        <translation type="unfinished"></translation>
+        <translation>Verifica le impostazioni rispetto ai limiti della macchina ed esegue la prova</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Stop (Esc)</source>
-        <translation type="unfinished"></translation>
+        <translation>Arresta (Esc)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Stop the test: the finished steps stay in the project</source>
-        <translation type="unfinished"></translation>
+        <translation>Arresta la prova: i passi completati restano nel progetto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Passo</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Quantity</source>
-        <translation type="unfinished"></translation>
+        <translation>Grandezza</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Value</source>
-        <translation type="unfinished">Valore</translation>
+        <translation>Valore</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Std. uncertainty</source>
-        <translation type="unfinished"></translation>
+        <translation>Incertezza tipo</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Unit</source>
-        <translation type="unfinished"></translation>
+        <translation>Unità</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Ready. Pick a test and press Run.</source>
-        <translation type="unfinished"></translation>
+        <translation>Pronto. Scegli una prova e premi Esegui.</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>Static ramp</source>
-        <translation type="unfinished"></translation>
+        <translation>Rampa statica</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>A slow force ramp: k_lat, the twist axis, a_tw and k_tw</source>
-        <translation type="unfinished"></translation>
+        <translation>Una rampa di forza lenta: k_lat, l&apos;asse di torsione, a_tw e k_tw</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Sine sweep</source>
-        <translation type="unfinished"></translation>
+        <translation>Scansione sinusoidale</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>A sine per frequency: the dynamic twist axis and stiffness</source>
-        <translation type="unfinished"></translation>
+        <translation>Una sinusoide per frequenza: asse di torsione e rigidezza dinamici</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Harmonic yaw</source>
-        <translation type="unfinished"></translation>
+        <translation>Imbardata armonica</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Yaw oscillations at a list of frequencies: the relaxation length</source>
-        <translation type="unfinished"></translation>
+        <translation>Oscillazioni d&apos;imbardata a una serie di frequenze: la lunghezza di rilassamento</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Steady-state sweeps</source>
-        <translation type="unfinished"></translation>
+        <translation>Scansioni stazionarie</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Side-slip and camber sweeps: the characteristics and the Magic Formula</source>
-        <translation type="unfinished"></translation>
+        <translation>Scansioni di deriva e di campanatura: le caratteristiche e la Magic Formula</translation>
     </message>
     <message numerus="yes">
         <location line="+46"/>
         <source>Plate (u, v) [mm]: %n laser(s) at %1; load point at (%2, %3); the other end locked.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Piastra (u, v) [mm]: %n laser in %1; punto di carico in (%2, %3); l&apos;altra estremità bloccata.</numerusform>
+            <numerusform>Piastra (u, v) [mm]: %n laser in %1; punto di carico in (%2, %3); l&apos;altra estremità bloccata.</numerusform>
         </translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Load F_z %1 N; contact half-length a %2 mm (Table 17); working limits side-slip ±%3°, camber ±%4° (machine ±%5°, ±%6°, disk up to %7 km/h).</source>
-        <translation type="unfinished"></translation>
+        <translation>Carico F_z %1 N; semilunghezza di contatto a %2 mm (Tabella 17); limiti di lavoro deriva ±%3°, campanatura ±%4° (macchina ±%5°, ±%6°, disco fino a %7 km/h).</translation>
     </message>
     <message>
         <location line="+87"/>
         <source>Time [s]</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo [s]</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Load cell and load-point displacement</source>
-        <translation type="unfinished"></translation>
+        <translation>Cella di carico e spostamento del punto di carico</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+6"/>
         <source>Force [N]</source>
-        <translation type="unfinished"></translation>
+        <translation>Forza [N]</translation>
     </message>
     <message>
         <location line="-5"/>
         <source>Displacement [mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Spostamento [mm]</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>load cell [N]</source>
-        <translation type="unfinished"></translation>
+        <translation>cella di carico [N]</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>load-point displacement [mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>spostamento del punto di carico [mm]</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Force vs load-point displacement</source>
-        <translation type="unfinished"></translation>
+        <translation>Forza in funzione dello spostamento del punto di carico</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Load-point displacement [mm]</source>
-        <translation type="unfinished"></translation>
+        <translation>Spostamento del punto di carico [mm]</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+20"/>
         <source>current frequency</source>
-        <translation type="unfinished"></translation>
+        <translation>frequenza corrente</translation>
     </message>
     <message>
         <location line="-20"/>
         <source>measured</source>
-        <translation type="unfinished">misura</translation>
+        <translation>misura</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>F = k_lat x (stored k_lat)</source>
-        <translation type="unfinished"></translation>
+        <translation>F = k_lat x (k_lat memorizzata)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Lateral force and aligning moment</source>
-        <translation type="unfinished"></translation>
+        <translation>Forza laterale e momento di autoallineamento</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+2"/>
         <location line="+2"/>
         <source>F_y [N]</source>
-        <translation type="unfinished"></translation>
+        <translation>F_y [N]</translation>
     </message>
     <message>
         <location line="-3"/>
         <location line="+2"/>
         <source>M_z [N m]</source>
-        <translation type="unfinished"></translation>
+        <translation>M_z [N m]</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Steady-state characteristic</source>
-        <translation type="unfinished"></translation>
+        <translation>Caratteristica stazionaria</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Side-slip, camber [deg]</source>
-        <translation type="unfinished"></translation>
+        <translation>Deriva, campanatura [gradi]</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>F_y vs side-slip</source>
-        <translation type="unfinished"></translation>
+        <translation>F_y in funzione della deriva</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>F_y vs camber</source>
-        <translation type="unfinished"></translation>
+        <translation>F_y in funzione della campanatura</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>cornering stiffness (stored)</source>
-        <translation type="unfinished"></translation>
+        <translation>rigidezza di deriva (memorizzata)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>camber stiffness (stored)</source>
-        <translation type="unfinished"></translation>
+        <translation>rigidezza di campanatura (memorizzata)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Lateral force vs yaw angle</source>
-        <translation type="unfinished"></translation>
+        <translation>Forza laterale in funzione dell&apos;angolo d&apos;imbardata</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Yaw angle [deg]</source>
-        <translation type="unfinished"></translation>
+        <translation>Angolo d&apos;imbardata [gradi]</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>Open or create a project first: the test is stored in it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Apri o crea prima un progetto: la prova viene memorizzata lì.</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The project is open read-only (%1): the test could not be stored.</source>
-        <translation type="unfinished"></translation>
+        <translation>Il progetto è aperto in sola lettura (%1): impossibile memorizzare la prova.</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Correct the settings marked in the form first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Correggi prima le impostazioni segnalate nel modulo.</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Not started: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Non avviata: %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Rig test not started: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Prova al banco non avviata: %1</translation>
     </message>
     <message>
         <location line="+71"/>
         <source>Running: %1 on %2</source>
-        <translation type="unfinished"></translation>
+        <translation>In corso: %1 su %2</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Rig test started: %1 on %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Prova al banco avviata: %1 su %2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 on %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 su %2</translation>
     </message>
     <message>
         <location line="+35"/>
         <source>Complete: stored as &apos;%1&apos;.</source>
-        <translation type="unfinished"></translation>
+        <translation>Completata: memorizzata come &apos;%1&apos;.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Interrupted: stored as &apos;%1&apos; with the finished steps (%2).</source>
-        <translation type="unfinished"></translation>
+        <translation>Interrotta: memorizzata come &apos;%1&apos; con i passi completati (%2).</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+3"/>
         <source>Failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Non riuscita: %1</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Stopping: the sequence keeps the finished steps...</source>
-        <translation type="unfinished"></translation>
+        <translation>Arresto in corso: la sequenza conserva i passi completati...</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Rig test: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Prova al banco: %1</translation>
     </message>
     <message>
         <location line="+86"/>
         <source>%1 at %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 a %2 s</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>load point %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>punto di carico %1 mm</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Step %1 (%2) committed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Passo %1 (%2) salvato.</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Step %1 (%2) kept without a result: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Passo %1 (%2) conservato senza risultato: %3</translation>
     </message>
     <message>
         <location line="+51"/>
         <source>Cannot read the rig test: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile leggere la prova al banco: %1</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Cannot read the tyre test: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile leggere la prova dello pneumatico: %1</translation>
     </message>
     <message>
         <location line="+26"/>
         <source>whole test</source>
-        <translation type="unfinished"></translation>
+        <translation>intera prova</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>running</source>
-        <translation type="unfinished"></translation>
+        <translation>in corso</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>complete</source>
-        <translation type="unfinished"></translation>
+        <translation>completata</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>interrupted</source>
-        <translation type="unfinished"></translation>
+        <translation>interrotta</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>failed</source>
-        <translation type="unfinished"></translation>
+        <translation>non riuscita</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&apos;%1&apos; (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; (%2)</translation>
     </message>
 </context>
 <context>
@@ -4614,7 +4618,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     <message>
         <location filename="../views/scene/scene_view.cpp" line="+546"/>
         <source>|u|</source>
-        <translation type="unfinished"></translation>
+        <translation>|u|</translation>
     </message>
 </context>
 <context>
@@ -4622,52 +4626,52 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     <message>
         <location filename="../views/plots/stabilization_plot.cpp" line="+169"/>
         <source>Frequency [Hz]</source>
-        <translation type="unfinished">Frequenza [Hz]</translation>
+        <translation>Frequenza [Hz]</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Model order</source>
-        <translation type="unfinished"></translation>
+        <translation>Ordine del modello</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>[dB]</source>
-        <translation type="unfinished"></translation>
+        <translation>[dB]</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>new</source>
-        <translation type="unfinished"></translation>
+        <translation>nuovo</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>frequency stable</source>
-        <translation type="unfinished"></translation>
+        <translation>stabile in frequenza</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>frequency and damping stable</source>
-        <translation type="unfinished"></translation>
+        <translation>stabile in frequenza e smorzamento</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>frequency and vector stable</source>
-        <translation type="unfinished"></translation>
+        <translation>stabile in frequenza e vettore</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>stable</source>
-        <translation type="unfinished"></translation>
+        <translation>stabile</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>selected</source>
-        <translation type="unfinished"></translation>
+        <translation>selezionato</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>backdrop</source>
-        <translation type="unfinished"></translation>
+        <translation>sfondo</translation>
     </message>
 </context>
 </TS>
