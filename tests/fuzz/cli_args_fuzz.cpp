@@ -33,8 +33,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (!parsed->value(option.name)) continue;
       const auto values = parsed->numbers(option.name);
       for (std::size_t k = 0; k < values.size(); ++k) {
-        const NumberRange& range =
-            option.fields.empty() ? option.range : option.fields[k % option.fields.size()].range;
+        const NumberRange& range = option.fields.empty() ? option.range : option.fields[k % option.fields.size()].range;
         if (!range.contains(values[k])) std::abort();  // accepted outside its range
       }
     }

@@ -204,8 +204,7 @@ int convert(const std::string& in, const std::string& outPath, uff::Encoding58 e
   }
   if (written == 0) {
     // Nothing to convert: no output file rather than an empty one.
-    err << "mozzi-cli uff convert: " << in << " holds no dataset Mozzi can convert; " << outPath
-        << " not written\n";
+    err << "mozzi-cli uff convert: " << in << " holds no dataset Mozzi can convert; " << outPath << " not written\n";
     return kExitFailure;
   }
   if (auto r = output->commit(); !r) {
