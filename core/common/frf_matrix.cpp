@@ -5,6 +5,26 @@
 
 namespace mozzi::core {
 
+FrfMatrix FrfMatrix::transposed() const {
+  FrfMatrix t;
+  t.frequencyHz = frequencyHz;
+  t.responses = references;
+  t.references = responses;
+  t.type = type;
+  const Eigen::Index nf = lineCount(), no = responseCount(), ni = referenceCount();
+  t.h.assign(static_cast<std::size_t>(no), ComplexMatrix(nf, ni));
+  if (!coherence.empty()) t.coherence.assign(static_cast<std::size_t>(no), Matrix(nf, ni));
+  for (Eigen::Index i = 0; i < ni && static_cast<std::size_t>(i) < h.size(); ++i) {
+    const auto iu = static_cast<std::size_t>(i);
+    for (Eigen::Index o = 0; o < no && o < h[iu].cols(); ++o) {
+      t.h[static_cast<std::size_t>(o)].col(i) = h[iu].col(o);
+      if (!coherence.empty() && iu < coherence.size())
+        t.coherence[static_cast<std::size_t>(o)].col(i) = coherence[iu].col(o);
+    }
+  }
+  return t;
+}
+
 Result<void> FrfMatrix::validate() const {
   const std::string where = "FRF matrix";
   if (frequencyHz.size() == 0) return makeError(ErrorCode::InvalidArgument, "no frequency lines", where);

@@ -33,6 +33,12 @@ struct FrfMatrix {
   // Same FRFs expressed as another type (multiplying by (i omega)^n); a line at
   // 0 Hz is an error when the conversion divides by omega.
   Result<FrfMatrix> convertedTo(FrfType target) const;
+
+  // The same values with responses and references exchanged, H'_{i,o} = H_{o,i}
+  // (coherence too): what a reciprocal structure (Maxwell-Betti) gives when
+  // excitation and measurement swap places, and in any case a matrix with the
+  // same poles.
+  FrfMatrix transposed() const;
 };
 
 }  // namespace mozzi::core

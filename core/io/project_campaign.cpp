@@ -20,24 +20,25 @@ std::string campaignWhere(const std::string& path, std::int64_t campaignId) {
 Result<StoredCampaign> ProjectStore::campaign(std::int64_t campaignId) const {
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = campaignWhere(path_, campaignId);
-  sql::Statement stmt(
-      db_,
-      "SELECT id, specimen_id, rig_setup_id, name, kind, notes, started_utc, settings_json FROM campaign"
-      " WHERE id = ?1");
+  sql::Statement stmt(db_, (std::string("SELECT ") + sql::kCampaignColumns + " FROM campaign WHERE id = ?1").c_str());
   if (!stmt.ok()) return sqliteError(db_, "cannot read the campaign", where);
   stmt.bind(1, campaignId);
   const int rc = stmt.step();
   if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, "no such campaign", where);
   if (rc != SQLITE_ROW) return sqliteError(db_, "cannot read the campaign", where);
+  return sql::campaignFromRow(stmt.get());
+}
+
+StoredCampaign sql::campaignFromRow(sqlite3_stmt* row) {
   StoredCampaign c;
-  c.id = sqlite3_column_int64(stmt.get(), 0);
-  c.specimenId = sqlite3_column_int64(stmt.get(), 1);
-  if (sqlite3_column_type(stmt.get(), 2) != SQLITE_NULL) c.rigSetupId = sqlite3_column_int64(stmt.get(), 2);
-  c.name = sql::columnText(stmt.get(), 3);
-  c.kind = sql::columnText(stmt.get(), 4);
-  c.notes = sql::columnText(stmt.get(), 5);
-  c.startedUtc = sql::columnText(stmt.get(), 6);
-  c.settingsJson = sql::columnText(stmt.get(), 7);
+  c.id = sqlite3_column_int64(row, 0);
+  c.specimenId = sqlite3_column_int64(row, 1);
+  if (sqlite3_column_type(row, 2) != SQLITE_NULL) c.rigSetupId = sqlite3_column_int64(row, 2);
+  c.name = columnText(row, 3);
+  c.kind = columnText(row, 4);
+  c.notes = columnText(row, 5);
+  c.startedUtc = columnText(row, 6);
+  c.settingsJson = columnText(row, 7);
   return c;
 }
 

@@ -558,22 +558,12 @@ Result<std::vector<StoredCampaign>> ProjectStore::campaigns(std::int64_t specime
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   sql::Statement stmt(
       db_,
-      "SELECT id, specimen_id, rig_setup_id, name, kind, notes, started_utc, settings_json FROM campaign"
-      " WHERE specimen_id = ?1 ORDER BY id");
+      (std::string("SELECT ") + sql::kCampaignColumns + " FROM campaign WHERE specimen_id = ?1 ORDER BY id").c_str());
   stmt.bind(1, specimenId);
   std::vector<StoredCampaign> out;
   int rc;
   while ((rc = stmt.step()) == SQLITE_ROW) {
-    StoredCampaign c;
-    c.id = sqlite3_column_int64(stmt.get(), 0);
-    c.specimenId = sqlite3_column_int64(stmt.get(), 1);
-    if (sqlite3_column_type(stmt.get(), 2) != SQLITE_NULL) c.rigSetupId = sqlite3_column_int64(stmt.get(), 2);
-    c.name = sql::columnText(stmt.get(), 3);
-    c.kind = sql::columnText(stmt.get(), 4);
-    c.notes = sql::columnText(stmt.get(), 5);
-    c.startedUtc = sql::columnText(stmt.get(), 6);
-    c.settingsJson = sql::columnText(stmt.get(), 7);
-    out.push_back(std::move(c));
+    out.push_back(sql::campaignFromRow(stmt.get()));
   }
   if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read campaigns", path_);
   return out;

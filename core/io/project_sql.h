@@ -37,6 +37,11 @@ std::string columnText(sqlite3_stmt* stmt, int column);
 Result<Dof> columnDof(sqlite3_stmt* stmt, int nodeColumn, int directionColumn, const std::string& where);
 std::optional<Dof> columnOptionalDof(sqlite3_stmt* stmt, int nodeColumn, int directionColumn);
 
+// A campaign row: every query selects these columns in this order.
+inline constexpr const char* kCampaignColumns =
+    "id, specimen_id, rig_setup_id, name, kind, notes, started_utc, settings_json";
+StoredCampaign campaignFromRow(sqlite3_stmt* row);
+
 // Inserts a campaign's schedule inside the caller's transaction (checks
 // positions 0..n-1 and distinct DOFs); project_campaign.cpp.
 Result<void> insertCampaignPoints(sqlite3* db, std::int64_t campaignId, const std::vector<StoredCampaignPoint>& points,

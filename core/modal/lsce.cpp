@@ -114,9 +114,8 @@ Eigen::Index autoWindow(const Matrix& h, Eigen::Index first, Eigen::Index minimu
   return std::min(n - first, std::max(end - first, minimum));
 }
 
-}  // namespace
-
-Result<StabilizationDiagram> lsceStabilization(const FrfMatrix& frf, const LsceOptions& opt) {
+// The estimator on the FRFs as given (stabilizationOnFewerReferences picks the orientation).
+Result<StabilizationDiagram> lsceStabilizationAsGiven(const FrfMatrix& frf, const LsceOptions& opt) {
   const std::string where = "LSCE";
   if (auto ok = frf.validate(); !ok) return ok.error();
   auto orderList = stabilizationOrders(opt, where);
@@ -248,6 +247,13 @@ Result<StabilizationDiagram> lsceStabilization(const FrfMatrix& frf, const LsceO
     appendOrderPoles(p, alpha, ni, *zr, irf->dt, shape, opt, previous, diag);
   }
   return diag;
+}
+
+}  // namespace
+
+Result<StabilizationDiagram> lsceStabilization(const FrfMatrix& frf, const LsceOptions& opt) {
+  return stabilizationOnFewerReferences(
+      frf, [&](const FrfMatrix& oriented) { return lsceStabilizationAsGiven(oriented, opt); });
 }
 
 Result<PlscfResult> identifyLsce(const FrfMatrix& frf, const LsceOptions& options) {

@@ -46,6 +46,7 @@ struct LsceOptions : PlscfOptions {
 // Stabilization diagram of LSCE over the orders of `options`; the poles kept
 // are those in the band. Errors: FRFs not on a baseband grid, too few samples
 // for the highest order, order range too small, singular normal equations.
+// More references than responses: fitted transposed, as plscfStabilization.
 Result<StabilizationDiagram> lsceStabilization(const FrfMatrix& frf, const LsceOptions& options);
 
 // Diagram, automatic selection, LSFD over the band (lower and upper residuals).

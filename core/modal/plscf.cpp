@@ -151,6 +151,13 @@ ComplexMatrix lagSums(const Series& series, const Vector& f, double dt, long fft
 
 }  // namespace
 
+int plscfOrderLimit(const FrfMatrix& frf, double bandLowHz, double bandHighHz) {
+  Eigen::Index nf = 0;
+  for (Eigen::Index k = 0; k < frf.lineCount(); ++k)
+    if (frf.frequencyHz[k] >= bandLowHz && frf.frequencyHz[k] <= bandHighHz) ++nf;
+  return static_cast<int>(nf / 2 - 1);
+}
+
 char poleStatusSymbol(PoleStatus status) {
   switch (status) {
     case PoleStatus::New: return 'o';
@@ -162,7 +169,10 @@ char poleStatusSymbol(PoleStatus status) {
   return '?';
 }
 
-Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const PlscfOptions& opt) {
+namespace {
+
+// The estimator on the FRFs as given (stabilizationOnFewerReferences picks the orientation).
+Result<StabilizationDiagram> plscfStabilizationAsGiven(const FrfMatrix& frf, const PlscfOptions& opt) {
   const std::string where = "pLSCF";
   if (auto ok = frf.validate(); !ok) return ok.error();
   auto orderList = stabilizationOrders(opt, where);
@@ -302,6 +312,13 @@ Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const Plsc
     appendOrderPoles(m, alpha, ni, *zr, dt, shape, opt, previous, diag);
   }
   return diag;
+}
+
+}  // namespace
+
+Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const PlscfOptions& opt) {
+  return stabilizationOnFewerReferences(
+      frf, [&](const FrfMatrix& oriented) { return plscfStabilizationAsGiven(oriented, opt); });
 }
 
 Result<std::vector<SelectedPole>> selectPoles(const StabilizationDiagram& diagram, const PlscfOptions& opt) {

@@ -96,9 +96,17 @@ struct SelectedPole {
   ComplexVector shape;           // shape of the cluster's highest-order pole (same-mode check)
 };
 
+// The highest order the band's lines support (a fit of order n needs
+// 2 (n + 1) lines, bandLowHz <= f <= bandHighHz): what a default order is
+// capped at, so a narrow band of a short record still gets a diagram.
+int plscfOrderLimit(const FrfMatrix& frf, double bandLowHz, double bandHighHz);
+
 // Stabilization diagram of the FRFs in the band. Errors: fewer lines than the
 // highest order needs, an order range too small to judge stability (fewer
 // orders than minClusterSize), invalid FRFs, singular normal equations.
+// With more references than responses it fits the transposed FRFs
+// (stabilizationOnFewerReferences in stabilization.h); participation and shape
+// still refer to this FRF's references and responses.
 Result<StabilizationDiagram> plscfStabilization(const FrfMatrix& frf, const PlscfOptions& options);
 
 // Clusters the stable ('s') poles, keeps one pole per physical mode

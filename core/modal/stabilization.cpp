@@ -224,4 +224,15 @@ Result<std::vector<int>> stabilizationOrders(const PlscfOptions& opt, const std:
   return orders;
 }
 
+Result<StabilizationDiagram> stabilizationOnFewerReferences(const FrfMatrix& frf,
+                                                            const StabilizationEstimator& estimate) {
+  if (frf.referenceCount() <= frf.responseCount()) return estimate(frf);
+  // Errors name the DOFs in the caller's orientation.
+  if (auto ok = frf.validate(); !ok) return ok.error();
+  auto diagram = estimate(frf.transposed());
+  if (!diagram) return diagram;
+  for (auto& p : diagram->poles) std::swap(p.participation, p.shape);
+  return diagram;
+}
+
 }  // namespace mozzi::core::modal

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/common/eigen_types.h"
+#include "core/common/frf_matrix.h"
 #include "core/common/result.h"
 #include "core/modal/plscf.h"
 
@@ -49,6 +50,20 @@ using PoleShapeFunction = std::function<ComplexVector(Complex z, const ComplexVe
 void appendOrderPoles(int order, const Matrix& alpha, Eigen::Index ni, const ComplexVector& z, double dt,
                       const PoleShapeFunction& shape, const PlscfOptions& options,
                       std::vector<StabilizationPole>& previous, StabilizationDiagram& diagram);
+
+// Poles belong to the structure, not to the orientation of its FRF matrix.
+// With more references than responses (a roving hammer over a mesh, a few
+// fixed accelerometers) the denominator A(z) would be ni x ni while the data's
+// rank is bounded by the responses: the reduced normal equations become
+// singular and the cost grows with ni^3. The estimators therefore fit the
+// transposed matrix (FrfMatrix::transposed) when ni > no; this gives the
+// diagram of `estimate` on the orientation with fewer references, its
+// participation and shape vectors exchanged back so that they refer to this
+// FRF's references and responses (thesis §1.6: poles and residues of a
+// reciprocal matrix, H^T = sum_r l_r psi_r^T / (i omega - lambda_r) + ...).
+using StabilizationEstimator = std::function<Result<StabilizationDiagram>(const FrfMatrix&)>;
+Result<StabilizationDiagram> stabilizationOnFewerReferences(const FrfMatrix& frf,
+                                                            const StabilizationEstimator& estimate);
 
 // Checks band and order range shared by both estimators; fills the order list.
 Result<std::vector<int>> stabilizationOrders(const PlscfOptions& options, const std::string& where);

@@ -5,6 +5,8 @@
 // equal those of A but are computed with errors ~ eps ||B|| instead of
 // eps ||A||, which matters for stiff fork joints (k up to 1e12 N m/rad).
 
+#include <cmath>
+
 #include "core/common/eigen_types.h"
 
 namespace mozzi::core::stability {
@@ -27,7 +29,9 @@ Eigen::Matrix<double, MatrixType::RowsAtCompileTime, 1> balanceInPlace(MatrixTyp
         c += std::abs(A(j, i));
         r += std::abs(A(i, j));
       }
-      if (c == 0.0 || r == 0.0) continue;
+      // A row or column whose norm overflows (entries near 1e308) cannot be
+      // balanced: dividing inf by the radix never ends the loop below.
+      if (c == 0.0 || r == 0.0 || !std::isfinite(c + r)) continue;
       double g = r / radix, f = 1.0;
       const double s = c + r;
       while (c < g) {

@@ -29,7 +29,9 @@ Result<ComplexVector> eigenvaluesOnly(const StabilitySystem& s, double v) {
   balanceInPlace(*A);
   if (auto f = requireFinite(*A, v); !f) return f.error();
   Eigen::EigenSolver<Matrix> es(*A, false);
-  if (es.info() != Eigen::Success) return makeError(ErrorCode::NumericalFailure, "eigenvalue iteration failed", "v");
+  if (es.info() != Eigen::Success || !es.eigenvalues().allFinite()) {
+    return makeError(ErrorCode::NumericalFailure, "eigenvalue iteration failed", "v = " + std::to_string(v));
+  }
   return ComplexVector(es.eigenvalues());
 }
 
@@ -141,7 +143,9 @@ Result<SpeedPoint> solveAtSpeed(const StabilitySystem& s, double v) {
   const Vector scale = balanceInPlace(*A);
   if (auto f = requireFinite(*A, v); !f) return f.error();
   Eigen::EigenSolver<Matrix> es(*A, true);
-  if (es.info() != Eigen::Success) {
+  // Entries near the overflow limit pass the checks above, yet the iteration
+  // can end with infinite or NaN eigenvalues: an error, never a wrong root.
+  if (es.info() != Eigen::Success || !es.eigenvalues().allFinite() || !es.eigenvectors().allFinite()) {
     return makeError(ErrorCode::NumericalFailure, "eigenvalue iteration failed", "v = " + std::to_string(v));
   }
   SpeedPoint p;

@@ -121,8 +121,21 @@ std::optional<HitVerdictEvent> CampaignEngine::pendingVerdict() const {
 
 bool CampaignEngine::waitFor(const std::function<bool(EngineState)>& predicate,
                              std::chrono::milliseconds timeout) const {
+  // The predicate runs unlocked: it may ask the engine (progress(),
+  // pendingVerdict(), ...), which takes the same mutex. A change while it runs
+  // is seen at the next look, at most kLook later.
+  constexpr auto kLook = std::chrono::milliseconds(20);
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
   std::unique_lock<std::mutex> l(mutex_);
-  return cv_.wait_for(l, timeout, [&] { return predicate(state_); });
+  for (;;) {
+    const EngineState now = state_;
+    l.unlock();
+    if (predicate(now)) return true;
+    l.lock();
+    const auto t = std::chrono::steady_clock::now();
+    if (t >= deadline) return false;
+    cv_.wait_until(l, std::min(deadline, t + kLook));
+  }
 }
 
 bool CampaignEngine::waitUntilFinished(std::chrono::milliseconds timeout) const {

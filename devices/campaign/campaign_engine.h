@@ -186,6 +186,7 @@ class CampaignEngine {
   const CampaignDefinition& definition() const { return loaded_.definition; }
 
   // Blocks until `predicate(state)` holds or the timeout; true when it held.
+  // The predicate is called without the engine's lock: it may call the engine.
   bool waitFor(const std::function<bool(EngineState)>& predicate, std::chrono::milliseconds timeout) const;
   bool waitUntilFinished(std::chrono::milliseconds timeout) const;
 

@@ -97,8 +97,6 @@ core::Result<CampaignDefinition> virtualSpecimenCampaign(const std::string& key,
   d.acquisition.sampleRateHz = o.sampleRateHz;
   d.acquisition.recordSeconds = o.recordSeconds;
   d.acquisition.preTriggerFraction = 0.1;
-  d.acquisition.triggerLevel = 0.05 * o.peakForceN;  // far above the 0.05 N force noise
-  d.rules.minPeakForceN = 0.25 * o.peakForceN;
   d.rules.minCoherence = o.minCoherence;
 
   // Fixed accelerometers: for each mode in turn the DOF where it moves most
@@ -136,8 +134,25 @@ core::Result<CampaignDefinition> virtualSpecimenCampaign(const std::string& key,
   }
 
   // Ranges as after a test hit: twice the largest peak over every hammer point.
-  const double hitPeak = 1.1 * o.peakForceN;                 // the hand varies +/-10%
   const double pulse = sim::hammerPulseWidthS(0.16, 1.6e6);  // plastic tip, the station's default
+  auto largestPeak = [&](double force) {
+    double peak = 0.0;
+    for (Eigen::Index row : rows)
+      for (Eigen::Index j = 0; j < n; ++j)
+        peak = std::max(peak, peakAccelerationBound(spec->shapes, spec->frequencyHz, spec->zeta, row, j, force, pulse));
+    return peak;
+  };
+  // A light specimen (a bicycle fork) would clip the accelerometers even on
+  // the DAQ's widest range at the nominal force: the technician hits softer,
+  // until twice the largest peak fits that range.
+  double widestVolts = 0.0;
+  for (const auto& r : mcc::ranges()) widestVolts = std::max(widestVolts, r.maxVolts);
+  double peakForce = o.peakForceN;
+  const double nominalVolts = largestPeak(1.1 * peakForce) * kAccelerometerMvPerMs2 / 1000.0;
+  if (2.0 * nominalVolts > widestVolts) peakForce *= widestVolts / (2.0 * nominalVolts);
+  const double hitPeak = 1.1 * peakForce;         // the hand varies +/-10%
+  d.acquisition.triggerLevel = 0.05 * peakForce;  // far above the 0.05 N force noise
+  d.rules.minPeakForceN = 0.25 * peakForce;
   ChannelAssignment hammer;
   hammer.input = 0;
   hammer.name = "hammer";
@@ -167,7 +182,7 @@ core::Result<CampaignDefinition> virtualSpecimenCampaign(const std::string& key,
     d.channels.push_back(a);
   }
   d.deviceParameters["specimen"] = key;
-  d.deviceParameters["hammer.peak_force"] = o.peakForceN;
+  d.deviceParameters["hammer.peak_force"] = peakForce;
   // One hit per session: the quiet time before it, max(0.25 s, 15% of the
   // interval), holds the 10% pre-trigger; 0.4 s after the record is spare.
   d.deviceParameters["hammer.interval_s"] = o.recordSeconds + 0.4;

@@ -23,7 +23,7 @@ struct VirtualCampaignOptions {
   double sampleRateHz = 4096.0;
   double recordSeconds = 2.0;
   int accelerometers = 3;     // fixed response channels (1..7)
-  double peakForceN = 200.0;  // the simulated hand's nominal hit
+  double peakForceN = 200.0;  // the simulated hand's nominal hit (less where the accelerometers would clip)
   double minCoherence = 0.0;  // poor-coherence rule (0 = off)
   // The simulated hand: a hit rebounds (double hit) or is struck 30 times
   // too hard (overload) with these probabilities; the rules reject them.

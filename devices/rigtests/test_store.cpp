@@ -71,4 +71,24 @@ Eigen::MatrixXf recordOf(const core::Matrix& values, Eigen::Index rows, const st
   return out;
 }
 
+namespace {
+void appendNote(std::string& note, const std::string& text) {
+  note += (note.empty() ? "" : "; ") + text;
+}
+}  // namespace
+
+void collectStoreError(const core::Result<void>& written, std::string& storeErrors) {
+  if (!written) appendNote(storeErrors, written.error().describe());
+}
+
+void reportStoreErrors(const std::string& storeErrors, Outcome& out) {
+  if (storeErrors.empty()) return;
+  appendNote(out.note, "not stored: " + storeErrors);
+  if (out.status == TestStatus::Complete) out.status = TestStatus::Failed;
+}
+
+void reportFinalWrite(const core::Result<void>& finalWrite, Outcome& out) {
+  if (!finalWrite) appendNote(out.note, "status not stored: " + finalWrite.error().describe());
+}
+
 }  // namespace mozzi::devices::rigtests::detail

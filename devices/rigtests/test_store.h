@@ -28,6 +28,15 @@ std::vector<core::io::StoredRigTest::Result> rigResults(const std::vector<Quanti
 std::vector<core::io::StoredTyreTest::Parameter> tyreParameters(const std::vector<Quantity>& q,
                                                                 std::optional<int> step);
 
+// A store failure during a test does not stop it (the rig is mid-load): the
+// errors are collected step by step ...
+void collectStoreError(const core::Result<void>& written, std::string& storeErrors);
+// ... and said at the end: in the note, and a complete test becomes failed
+// since its data are not all in the project; a failed write of the final
+// status is added to the note.
+void reportStoreErrors(const std::string& storeErrors, Outcome& out);
+void reportFinalWrite(const core::Result<void>& finalWrite, Outcome& out);
+
 // Samples of the listed columns as float, SI units, for the record blob.
 Eigen::MatrixXf recordOf(const core::Matrix& values, Eigen::Index rows, const std::vector<int>& columns);
 

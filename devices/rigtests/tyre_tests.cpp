@@ -164,17 +164,14 @@ void storeStep(const StoreTarget& target, const Stored& stored, int step, double
   auto r =
       target.store->commitTyreTestStep(*stored.testId, step, fs, record, points, detail::tyreParameters(results, step),
                                        cutShortNote(step + 1, stored.labels));
-  if (!r) storeErrors += (storeErrors.empty() ? "" : "; ") + r.error().describe();
+  detail::collectStoreError(r, storeErrors);
 }
 
 void storeEnd(const StoreTarget& target, const Stored& stored, Outcome& out, std::string& storeErrors) {
-  if (!storeErrors.empty()) {
-    out.note += std::string(out.note.empty() ? "" : "; ") + "not stored: " + storeErrors;
-    if (out.status == TestStatus::Complete) out.status = TestStatus::Failed;
-  }
+  detail::reportStoreErrors(storeErrors, out);
   if (!target.store || !stored.testId) return;
   auto r = target.store->finishTyreTest(*stored.testId, out.status, out.note, detail::tyreParameters(out.results, {}));
-  if (!r) out.note += std::string(out.note.empty() ? "" : "; ") + "status not stored: " + r.error().describe();
+  detail::reportFinalWrite(r, out);
 }
 
 Quantity q(const std::string& key, const std::string& label, double v, const char* unit, double u = 0.0) {

@@ -28,6 +28,8 @@
 #include <QVBoxLayout>
 #include <initializer_list>
 
+#include "core/geometry/mesh_placement.h"
+#include "core/geometry/mode_shape.h"
 #include "devices/campaign/campaign_store.h"
 #include "devices/common/driver.h"
 #include "views/campaign/campaign_session.h"
@@ -36,6 +38,7 @@
 #include "views/plots/interactive_plot.h"
 #include "views/plots/plot_export.h"
 #include "views/plots/vector_series.h"
+#include "views/scene/scene_view.h"
 
 namespace mozzi {
 namespace views {
@@ -44,7 +47,8 @@ namespace cp = devices::campaign;
 
 namespace {
 
-constexpr int kRefreshMs = 40;  // 25 Hz traces
+constexpr int kRefreshMs = 40;                   // 25 Hz traces
+constexpr int kSpecimenRole = Qt::UserRole + 1;  // campaign list: the campaign's specimen
 
 QString stateName(cp::EngineState state) {
   switch (state) {
@@ -218,7 +222,7 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   installPlotExportAction(traces_);
   frf_ = new FrfPlot(left);
   frf_->setObjectName(QStringLiteral("hammerFrf"));
-  frf_->phasePlot()->hide();  // magnitude and coherence: what decides whether a point is good
+  frf_->setView(FrfPlot::View::Magnitude);  // magnitude and coherence: what decides whether a point is good
   // The page's normal font for the FRF's axis titles too (FrfPlot sets
   // their text later; Qwt keeps the font).
   for (QwtPlot* plot : std::initializer_list<QwtPlot*>{frf_->magnitudePlot(), frf_->coherencePlot()})
@@ -262,9 +266,22 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   points_->setTextElideMode(Qt::ElideRight);
   points_->setFocusPolicy(Qt::NoFocus);
   points_->setMinimumHeight(140);
+  // The mesh above the table: the point to hit next is marked on it, the
+  // arrow giving the hammer's direction.
+  scene_ = new SceneView(right);
+  scene_->setObjectName(QStringLiteral("hammerScene"));
+  scene_->setMinimumHeight(170);
+  scene_->setLabelsVisible(true);
+  auto* meshAndPoints = new QSplitter(Qt::Vertical, right);
+  meshAndPoints->setObjectName(QStringLiteral("hammerMeshSplit"));
+  meshAndPoints->addWidget(scene_);
+  meshAndPoints->addWidget(points_);
+  meshAndPoints->setStretchFactor(0, 3);
+  meshAndPoints->setStretchFactor(1, 2);
+  meshAndPoints->setChildrenCollapsible(false);
   rightLayout->addWidget(progressLabel_);
   rightLayout->addWidget(progress_);
-  rightLayout->addWidget(points_, 3);
+  rightLayout->addWidget(meshAndPoints, 3);
 
   auto* buttons = new QGridLayout;
   buttons->addWidget(
@@ -334,11 +351,21 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
     updateActions();
   });
   connect(ctx_.model, &ProjectModel::projectChanged, this, [this] {
+    sceneMesh_.reset();  // another project: its specimen ids name other meshes
     reloadCampaigns();
     updateActions();
   });
   connect(ctx_.model, &ProjectModel::campaignsChanged, this, [this] { reloadCampaigns(); });
-  connect(campaigns_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] { updateActions(); });
+  connect(ctx_.model, &ProjectModel::meshChanged, this, [this](qint64 specimenId) {
+    if (specimenId == sceneSpecimen_ || specimenId == 0) {
+      sceneMesh_.reset();
+      showSpecimenMesh();
+    }
+  });
+  connect(campaigns_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
+    updateActions();
+    showSpecimenMesh();
+  });
   connect(points_, &QTableWidget::itemSelectionChanged, this, [this] { updateActions(); });
   connect(responseChannel_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
     shownGeneration_ = 0;
@@ -395,6 +422,7 @@ void HammerStationPage::reloadCampaigns() {
         for (const auto& c : *list) {
           campaigns_->addItem(tr("%1 (%2)").arg(QString::fromStdString(c.name), QString::fromStdString(specimen.name)),
                               QVariant::fromValue<qlonglong>(c.id));
+          campaigns_->setItemData(campaigns_->count() - 1, QVariant::fromValue<qlonglong>(specimen.id), kSpecimenRole);
         }
       }
     }
@@ -402,6 +430,55 @@ void HammerStationPage::reloadCampaigns() {
   const int index = campaigns_->findData(QVariant::fromValue<qlonglong>(keep));
   if (index >= 0) campaigns_->setCurrentIndex(index);
   updateActions();
+  showSpecimenMesh();
+}
+
+void HammerStationPage::showSpecimenMesh() {
+  const qint64 specimen = campaigns_->currentData(kSpecimenRole).toLongLong();
+  core::io::ProjectStore* store = ctx_.model->store();
+  if (specimen == sceneSpecimen_ && sceneMesh_) return;
+  sceneSpecimen_ = specimen;
+  sceneMesh_.reset();
+  std::optional<core::io::StoredMesh> mesh;
+  if (store && specimen != 0) {
+    auto stored = store->mesh(specimen);
+    if (stored) mesh = std::move(*stored);
+  }
+  if (!mesh) {
+    scene_->clearMesh();  // a specimen without a mesh: the table alone shows the points
+    return;
+  }
+  auto positions = core::geometry::globalNodePositions(*mesh);
+  if (!positions || positions->empty()) {
+    scene_->clearMesh();
+    return;
+  }
+  scene_->showMesh(*mesh, *positions);
+  sceneMesh_ = std::move(mesh);
+  updateHitMarker();
+}
+
+void HammerStationPage::updateHitMarker() {
+  if (!sceneMesh_ || !current_ || !lastProgress_ || *current_ < 0 ||
+      *current_ >= static_cast<int>(lastProgress_->points.size())) {
+    scene_->setHitMarker(std::nullopt);
+    return;
+  }
+  const core::Dof dof = lastProgress_->points[static_cast<std::size_t>(*current_)].dof;
+  // The DOF's direction in global axes: the shape of a unit value at that DOF
+  // alone (core/geometry/mode_shape.h resolves the node's displacement system).
+  core::Vector3 strike = core::Vector3::Zero();
+  core::io::MeshDocument document;
+  document.mesh = *sceneMesh_;
+  core::geometry::FieldOptions alone;
+  alone.interpolate = false;
+  auto field = core::geometry::shapeField(document, {dof}, core::ComplexVector::Ones(1), alone);
+  if (field) {
+    for (std::size_t i = 0; i < sceneMesh_->nodes.size(); ++i)
+      if (sceneMesh_->nodes[i].label == dof.node)
+        strike = field->u.row(static_cast<Eigen::Index>(i)).real().transpose();
+  }
+  scene_->setHitMarker(dof.node, strike);
 }
 
 void HammerStationPage::showCampaign(qint64 campaignId) {
@@ -674,6 +751,7 @@ void HammerStationPage::onProgress(const cp::EngineProgress& p) {
   const bool pointChanged = p.current != current_;
   lastProgress_ = p;
   current_ = p.current;
+  if (pointChanged) updateHitMarker();
   state_ = p.state;
   station_->setText(tr("Station: %1").arg(QString::fromStdString(p.device)));
   const auto& s = p.schedule;

@@ -10,9 +10,9 @@
 // - Arm (A), Disarm (Esc), Accept (Space), Reject (Backspace), Redo (R),
 //   Skip with a reason (S), Start (F5), Stop (Shift+F5), New campaign
 //   (Ctrl+Shift+N): every action has its key on its button;
-// - progress over the mesh: the points in roving order with their hits and
-//   status, the point being measured highlighted (the 3-D view does not mark
-//   points yet, so the table is where the next point is shown);
+// - progress over the mesh: the specimen's mesh with the point to hit next
+//   marked (the arrow is the hammer's direction), and the points in roving
+//   order with their hits and status, the point being measured highlighted;
 // - the running FRF and coherence of the current point.
 
 #include <QPointer>
@@ -21,6 +21,7 @@
 #include <QWidget>
 #include <optional>
 
+#include "core/io/project_records.h"
 #include "devices/campaign/campaign_engine.h"
 #include "views/common/page_registry.h"
 
@@ -44,6 +45,7 @@ namespace views {
 class CampaignSession;
 class CampaignWizard;
 class FrfPlot;
+class SceneView;
 
 class HammerStationPage : public QWidget {
   Q_OBJECT
@@ -75,6 +77,7 @@ class HammerStationPage : public QWidget {
   FrfPlot* frfPlot() const { return frf_; }
   QwtPlot* tracePlot() const { return traces_; }
   QLineEdit* skipReasonEdit() const { return skipReason_; }
+  SceneView* scene() const { return scene_; }
 
  protected:
   void changeEvent(QEvent* event) override;
@@ -97,6 +100,8 @@ class HammerStationPage : public QWidget {
   void onProgress(const devices::campaign::EngineProgress& progress);
   void onFinished(const devices::campaign::FinishedEvent& finished);
   void doSkip();
+  void showSpecimenMesh();  // of the selected campaign
+  void updateHitMarker();   // on the current point
   void doRedo();
 
   PageContext ctx_;
@@ -123,6 +128,9 @@ class HammerStationPage : public QWidget {
   QProgressBar* progress_ = nullptr;
   QLabel* progressLabel_ = nullptr;
   QTableWidget* points_ = nullptr;
+  SceneView* scene_ = nullptr;
+  qint64 sceneSpecimen_ = 0;
+  std::optional<core::io::StoredMesh> sceneMesh_;
   QLineEdit* skipReason_ = nullptr;
   QListWidget* log_ = nullptr;
   QTimer* refresh_ = nullptr;

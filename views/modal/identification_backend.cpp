@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/common/frf_display.h"
+#include "core/modal/identification.h"
 #include "core/modal/lsce.h"
 #include "core/modal/lsfd.h"
 #include "core/modal/pole_selection.h"
@@ -119,34 +120,29 @@ core::Result<Outcome> identify(const core::FrfMatrix& frf, const Options& option
 
 core::Result<Fit> fitSelection(const core::FrfMatrix& frf, const std::vector<core::Complex>& poles, double lo,
                                double hi) {
-  md::LsfdOptions lo2;
-  lo2.bandLowHz = lo;
-  lo2.bandHighHz = hi;
-  auto model = md::lsfd(frf, poles, lo2);
-  if (!model) return model.error();
+  // core's one-QR fit (identification.h): LSFD and synthesis together, about
+  // ten times cheaper than an LSFD followed by a synthesis of the model.
+  md::LsfdOptions band;
+  band.bandLowHz = lo;
+  band.bandHighHz = hi;
+  auto selection = md::fitSelectedPoles(frf, poles, band);
+  if (!selection) return selection.error();
   Fit fit;
-  // The band's lines.
-  Eigen::Index a = 0, b = frf.lineCount();
-  while (a < b && frf.frequencyHz[a] < lo) ++a;
-  while (b > a && frf.frequencyHz[b - 1] > hi) --b;
-  fit.measured.frequencyHz = frf.frequencyHz.segment(a, b - a);
+  fit.synthesis = std::move(selection->synthesis);
+  // The measured FRFs on the synthesis's lines (the band's).
+  const Eigen::Index n = fit.synthesis.lineCount();
+  Eigen::Index a = 0;
+  while (n > 0 && a < frf.lineCount() && frf.frequencyHz[a] < fit.synthesis.frequencyHz[0]) ++a;
+  fit.measured.frequencyHz = frf.frequencyHz.segment(a, n);
   fit.measured.responses = frf.responses;
   fit.measured.references = frf.references;
   fit.measured.type = frf.type;
-  for (const auto& h : frf.h) fit.measured.h.push_back(h.middleRows(a, b - a));
-  auto synth = md::synthesizeFrf(*model, fit.measured.frequencyHz, frf.type);
-  if (!synth) return synth.error();
-  fit.synthesis = std::move(synth).value();
+  for (const auto& h : frf.h) fit.measured.h.push_back(h.middleRows(a, n));
   auto residual = md::residualPerFrf(fit.measured, fit.synthesis, lo, hi);
   if (!residual) return residual.error();
   fit.residual = std::move(residual).value();
-  double num = 0.0, den = 0.0;
-  for (std::size_t i = 0; i < fit.measured.h.size(); ++i) {
-    num += (fit.measured.h[i] - fit.synthesis.h[i]).squaredNorm();
-    den += fit.measured.h[i].squaredNorm();
-  }
-  fit.relativeError = den > 0.0 ? std::sqrt(num / den) : 0.0;
-  fit.model = std::move(model).value();
+  fit.relativeError = selection->relativeError;
+  fit.model = std::move(selection->model);
   return fit;
 }
 

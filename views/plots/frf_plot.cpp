@@ -383,7 +383,9 @@ void FrfPlot::redraw(bool keepX) {
   for (InteractivePlot* plot : {main_, secondary_, coherence_}) plot->detachItems(QwtPlotItem::Rtti_PlotCurve, true);
   const bool hasCoherence = frfs_ && !frfs_->coherence.empty();
   secondary_->setVisible(view_ == View::Bode || view_ == View::RealImaginary);
-  coherence_->setVisible(view_ == View::Bode && hasCoherence);
+  // Magnitude and coherence together: what a technician judges a point by.
+  const bool coherenceBelow = view_ == View::Bode || view_ == View::Magnitude;
+  coherence_->setVisible(coherenceBelow && hasCoherence);
   scaleBox_->setEnabled(view_ == View::Bode || view_ == View::Magnitude);
   unwrapBox_->setEnabled(view_ == View::Bode || view_ == View::Phase);
   cmifBox_->setEnabled(view_ == View::Bode || view_ == View::Magnitude);
@@ -422,7 +424,7 @@ void FrfPlot::redraw(bool keepX) {
       if (view_ == View::RealImaginary)
         addCurve(secondary_, title, frequency_, share(core::frfViewValues(h, core::FrfView::Imaginary)), colour, w,
                  antialias);
-      if (view_ == View::Bode && gamma) addCurve(coherence_, title, frequency_, share(*gamma), colour, w, antialias);
+      if (coherenceBelow && gamma) addCurve(coherence_, title, frequency_, share(*gamma), colour, w, antialias);
     };
     for (std::size_t c = 0; c < picks_.size(); ++c) {
       const auto& p = picks_[c];
@@ -460,7 +462,7 @@ void FrfPlot::redraw(bool keepX) {
     for (InteractivePlot* plot : {main_, secondary_, coherence_}) plot->autoscale();
     syncing_ = false;
   }
-  if (view_ == View::Coherence || (view_ == View::Bode && hasCoherence)) {
+  if (view_ == View::Coherence || (coherenceBelow && hasCoherence)) {
     InteractivePlot* c = view_ == View::Coherence ? main_ : coherence_;
     c->setAxisScale(QwtPlot::yLeft, 0.0, 1.05);
     c->replot();
@@ -488,7 +490,7 @@ void FrfPlot::autoscale() {
   for (InteractivePlot* plot : {main_, secondary_, coherence_}) plot->autoscale();
   if (view_ == View::Nyquist) equalAspect(main_);
   syncing_ = false;
-  if (view_ == View::Coherence || view_ == View::Bode) {
+  if (view_ == View::Coherence || view_ == View::Bode || view_ == View::Magnitude) {
     InteractivePlot* c = view_ == View::Coherence ? main_ : coherence_;
     c->setAxisScale(QwtPlot::yLeft, 0.0, 1.05);
     c->replot();

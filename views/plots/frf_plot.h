@@ -57,8 +57,8 @@ class FrfPlot : public QWidget {
   const std::vector<core::FrfPick>& shownPicks() const { return picks_; }
 
   // Plots: main (magnitude, phase, real part, Nyquist or coherence by view),
-  // secondary (phase in Bode, imaginary part), coherence (Bode, when the set
-  // has coherence). Hidden plots hold no curves.
+  // secondary (phase in Bode, imaginary part), coherence (Bode and magnitude,
+  // when the set has coherence). Hidden plots hold no curves.
   InteractivePlot* mainPlot() const { return main_; }
   InteractivePlot* secondaryPlot() const { return secondary_; }
   InteractivePlot* coherencePlot() const { return coherence_; }

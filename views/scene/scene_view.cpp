@@ -31,6 +31,7 @@
 #include <QSurfaceFormat>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <cmath>
 #include <unordered_map>
 
 namespace mozzi {
@@ -72,6 +73,15 @@ struct SceneView::Pipeline {
   vtkNew<vtkPolyDataMapper> arrowMapper;
   vtkNew<vtkActor> arrowActor;
   vtkNew<vtkPointPicker> picker;
+  // hit marker: a large node and an arrow ending at it
+  vtkNew<vtkPolyData> hitNode;
+  vtkNew<vtkPolyDataMapper> hitNodeMapper;
+  vtkNew<vtkActor> hitNodeActor;
+  vtkNew<vtkPolyData> hitArrowInput;
+  vtkNew<vtkDoubleArray> hitArrowVector;
+  vtkNew<vtkGlyph3D> hitGlyph;
+  vtkNew<vtkPolyDataMapper> hitArrowMapper;
+  vtkNew<vtkActor> hitArrowActor;
 };
 
 void SceneView::prepareSurfaceFormat() {
@@ -197,6 +207,31 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), pipeline_(new Pipeline)
   p.arrowActor->VisibilityOff();
   p.renderer->AddActor(p.arrowActor);
 
+  // The hit marker in green: apart from the selection's amber and the nodes' red.
+  p.hitNodeMapper->SetInputData(p.hitNode);
+  p.hitNodeActor->SetMapper(p.hitNodeMapper);
+  p.hitNodeActor->GetProperty()->SetColor(0.10, 0.62, 0.25);
+  p.hitNodeActor->GetProperty()->SetPointSize(18.0);
+  p.hitNodeActor->GetProperty()->RenderPointsAsSpheresOn();
+  p.hitNodeActor->PickableOff();
+  p.hitNodeActor->VisibilityOff();
+  p.renderer->AddActor(p.hitNodeActor);
+  p.hitArrowVector->SetNumberOfComponents(3);
+  p.hitArrowVector->SetName("strike");
+  p.hitArrowInput->GetPointData()->SetVectors(p.hitArrowVector);
+  p.hitGlyph->SetSourceConnection(p.arrow->GetOutputPort());
+  p.hitGlyph->SetInputData(p.hitArrowInput);
+  p.hitGlyph->SetVectorModeToUseVector();
+  p.hitGlyph->SetScaleModeToScaleByVector();
+  p.hitGlyph->OrientOn();
+  p.hitArrowMapper->SetInputConnection(p.hitGlyph->GetOutputPort());
+  p.hitArrowMapper->ScalarVisibilityOff();
+  p.hitArrowActor->SetMapper(p.hitArrowMapper);
+  p.hitArrowActor->GetProperty()->SetColor(0.10, 0.62, 0.25);
+  p.hitArrowActor->PickableOff();
+  p.hitArrowActor->VisibilityOff();
+  p.renderer->AddActor(p.hitArrowActor);
+
   p.picker->PickFromListOn();
   p.picker->AddPickList(p.nodeActor);
   p.picker->SetTolerance(0.01);
@@ -218,6 +253,9 @@ vtkRenderer* SceneView::renderer() const {
 void SceneView::showMesh(const core::io::StoredMesh& mesh, const std::vector<core::Vector3>& globalPositions,
                          bool resetCamera) {
   Pipeline& p = *pipeline_;
+  hitMarker_.reset();  // its node may be gone
+  p.hitNodeActor->VisibilityOff();
+  p.hitArrowActor->VisibilityOff();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> vertices;
@@ -316,6 +354,47 @@ void SceneView::setSelectedNodes(const std::vector<int>& labels) {
   p.selection->SetPoints(p.mesh->GetPoints());
   p.selection->SetVerts(verts);
   p.selection->Modified();
+  render();
+}
+
+void SceneView::setHitMarker(std::optional<int> label, const core::Vector3& strike) {
+  Pipeline& p = *pipeline_;
+  hitMarker_.reset();
+  p.hitNodeActor->VisibilityOff();
+  p.hitArrowActor->VisibilityOff();
+  vtkPoints* points = p.mesh->GetPoints();
+  const auto it = label ? std::find(labels_.begin(), labels_.end(), *label) : labels_.end();
+  if (it != labels_.end() && points) {
+    hitMarker_ = label;
+    double at[3];
+    points->GetPoint(static_cast<vtkIdType>(it - labels_.begin()), at);
+    vtkNew<vtkPoints> node;
+    node->InsertNextPoint(at);
+    vtkNew<vtkCellArray> vert;
+    const vtkIdType zero = 0;
+    vert->InsertNextCell(1, &zero);
+    p.hitNode->Initialize();
+    p.hitNode->SetPoints(node);
+    p.hitNode->SetVerts(vert);
+    p.hitNodeActor->VisibilityOn();
+    // The arrow: a sixth of the mesh's size, so it reads at any scale; its tip on the node.
+    double b[6];
+    p.mesh->GetBounds(b);
+    const double size =
+        std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+    const double norm = strike.norm();
+    if (norm > 0.0 && size > 0.0) {
+      const core::Vector3 v = strike / norm * (size / 6.0);
+      vtkNew<vtkPoints> tail;
+      tail->InsertNextPoint(at[0] - v.x(), at[1] - v.y(), at[2] - v.z());
+      p.hitArrowVector->SetNumberOfTuples(1);
+      p.hitArrowVector->SetTuple3(0, v.x(), v.y(), v.z());
+      p.hitArrowInput->SetPoints(tail);
+      p.hitArrowVector->Modified();
+      p.hitArrowInput->Modified();
+      p.hitArrowActor->VisibilityOn();
+    }
+  }
   render();
 }
 

@@ -47,7 +47,7 @@ class SceneView : public QWidget {
   // Draws a mesh: nodes as dots at their global positions (one per mesh node,
   // same order), lines as segments and faces as polygons between node labels.
   // Segments and faces naming a node the mesh lacks are skipped and counted.
-  // Replaces any mesh shown and clears the shape. `resetCamera` false keeps
+  // Replaces any mesh shown and clears the shape and the hit marker. `resetCamera` false keeps
   // the view (the editor redraws after each edit).
   void showMesh(const core::io::StoredMesh& mesh, const std::vector<core::Vector3>& globalPositions,
                 bool resetCamera = true);
@@ -63,6 +63,12 @@ class SceneView : public QWidget {
   void setSelectedNodes(const std::vector<int>& labels);
   const std::vector<int>& selectedNodes() const { return selected_; }
   void setLabelsVisible(bool visible);
+  // The hit marker: the node to strike next drawn large, with an arrow that
+  // ends at it along `strike` (global axes; the hammer's direction of travel,
+  // its length ignored; zero: the node alone). nullopt removes the marker.
+  // A label the mesh lacks removes it too.
+  void setHitMarker(std::optional<int> label, const core::Vector3& strike = core::Vector3::Zero());
+  std::optional<int> hitMarkerNode() const { return hitMarker_; }
   // The node drawn nearest `widgetPos` (widget pixels), if one is within a few pixels.
   std::optional<int> nodeAt(const QPoint& widgetPos) const;
 
@@ -117,6 +123,7 @@ class SceneView : public QWidget {
   int skippedLines_ = 0;
   std::vector<int> labels_;  // node label per mesh point
   std::vector<int> selected_;
+  std::optional<int> hitMarker_;
   // Shape state: base points and the two parts of the shape, split once.
   core::geometry::NodePoints base_, re_, im_;
   core::geometry::NodeDisplacements shape_;

@@ -3,6 +3,7 @@
 // their progress (docs/cli/campaign.md).
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -260,7 +261,8 @@ int runCampaign(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     for (std::size_t start = 0; start < h.qualityReasons.size();) {
       auto end = h.qualityReasons.find("; ", start);
       std::string r = h.qualityReasons.substr(start, end == std::string::npos ? std::string::npos : end - start);
-      ++byReason[r.substr(0, r.find(':'))];
+      // The kind: the words before the details (the channel, whose DOF text has a ':' too).
+      ++byReason[r.substr(0, std::min(r.find(':'), r.find(" on channel")))];
       if (end == std::string::npos) break;
       start = end + 2;
     }

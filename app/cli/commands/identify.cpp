@@ -6,6 +6,7 @@
 // same table the workbench's identification page saves (core::modal::modalTableOf).
 // A set measured by a campaign with an exponential window has the window's
 // decay removed from the identified damping (devices/campaign/frf_set_window.h).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -119,7 +120,11 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     return usage(err, "unknown --method '" + method + "' (available: plscf, lsce, circle, peak)");
   }
   int maxOrder = 60;
-  if (auto mo = parsed->number("--max-order"); mo && mo->has_value()) maxOrder = static_cast<int>(**mo);
+  bool orderGiven = false;
+  if (auto mo = parsed->number("--max-order"); mo && mo->has_value()) {
+    maxOrder = static_cast<int>(**mo);
+    orderGiven = true;
+  }
   if (parsed->value("--stabilization") && method != "plscf" && method != "lsce") {
     return usage(err, "--stabilization needs --method plscf or lsce");
   }
@@ -155,7 +160,12 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     opt.method = method == "lsce" ? md::IdentificationMethod::Lsce : md::IdentificationMethod::Plscf;
     opt.estimator.bandLowHz = lo;
     opt.estimator.bandHighHz = hi;
-    opt.estimator.maxOrder = maxOrder;
+    // The default order is capped at what the band's lines support (a narrow
+    // band of a short record); an order the user gave is kept, and refused
+    // with the line count when too high.
+    opt.estimator.maxOrder = orderGiven || opt.method != md::IdentificationMethod::Plscf
+                                 ? maxOrder
+                                 : std::min(maxOrder, std::max(8, md::plscfOrderLimit(*frf, lo, hi)));
     opt.refineMaxLines = kRefineMaxLines;
     auto res = md::identifyModes(*frf, opt);
     if (auto csv = parsed->value("--stabilization")) {

@@ -61,7 +61,7 @@ TEST_F(CampaignCli, RunsACampaignAndReportsItAsTheProjectHoldsIt) {
   EXPECT_EQ(static_cast<int>(loaded.hits.size()), j["hits"]["accepted"].get<int>() + j["hits"]["rejected"].get<int>());
   int rejectedByReason = 0;
   for (const auto& [reason, n] : j["hits"]["rejected_by_reason"].items()) {
-    EXPECT_TRUE(reason == "double hit" || reason.rfind("overload", 0) == 0) << reason;
+    EXPECT_TRUE(reason == "double hit" || reason == "overload") << reason;  // kinds, not details
     rejectedByReason += n.get<int>();
   }
   EXPECT_GE(rejectedByReason, j["hits"]["rejected"].get<int>());  // a hit may fail two rules
@@ -125,10 +125,10 @@ TEST_F(CampaignCli, ResumesTheUnfinishedCampaignAndNewStartsAnother) {
   EXPECT_NE(json::parse(n.out)["campaign_id"], j["campaign_id"]);
 }
 
-// Disabled (session 4 note on issue 15): since the spatial specimens and the
-// ADC-code noise, pLSCF reports singular reduced normal equations on a
-// campaign's FRF set (182 FRFs of fork A without wheel); to be fixed first.
-TEST_F(CampaignCli, DISABLED_IdentifyTheCampaignsFrfSetFromTheProjectAndExportIt) {
+// A roving-hammer set has many references (the points) and three responses:
+// the estimator fits it transposed (core/modal/stabilization.h); as given,
+// its reduced normal equations were singular.
+TEST_F(CampaignCli, IdentifyTheCampaignsFrfSetFromTheProjectAndExportIt) {
   const auto p = project("id.mozzi");
   auto r =
       run({"campaign", "run", p, "--specimen", "fork-a-without-wheel", "--rig", "sim-hammer", "--hits", "5", "--json"});

@@ -39,6 +39,7 @@
 #include "views/common/project_model.h"
 #include "views/panels/parameter_form.h"
 #include "views/plots/frf_plot.h"
+#include "views/scene/scene_view.h"
 
 namespace cp = mozzi::devices::campaign;
 using mozzi::views::HammerStationPage;
@@ -242,6 +243,9 @@ void HammerStationPageTest::wholeCampaignFromTheKeyboard() {
              qPrintable(page.stateText()));
     if (page.engineState() == cp::EngineState::Finished) break;
     QTRY_VERIFY(page.currentPoint().has_value());
+    // The point to hit next is marked on the specimen's mesh in the 3-D view.
+    QTRY_COMPARE(page.scene()->hitMarkerNode().value_or(-1),
+                 definition->points[static_cast<std::size_t>(*page.currentPoint())].node);
     // Redo: once point 1 is done, the technician selects it and presses R;
     // the engine sets its hits aside and measures it again at once.
     if (!redone && *page.currentPoint() == 1) {
@@ -398,5 +402,10 @@ void HammerStationPageTest::wholeCampaignFromTheKeyboard() {
   page.stopCampaign();
 }
 
-QTEST_MAIN(HammerStationPageTest)
+int main(int argc, char** argv) {
+  mozzi::views::SceneView::prepareSurfaceFormat();  // the page holds a 3-D view (VTK)
+  QApplication app(argc, argv);
+  HammerStationPageTest test;
+  return QTest::qExec(&test, argc, argv);
+}
 #include "hammer_station_page_test.moc"
