@@ -319,6 +319,17 @@ void CampaignWizard::accept() {
     }
     specimenId = *added;
   }
+  // A specimen without a mesh gets the campaign's template: the points are its
+  // nodes, and the hammer station marks them on it. A mesh of its own is kept.
+  if (const auto* t = core::geometry::findMeshTemplate(d->meshTemplate)) {
+    auto existing = store->mesh(specimenId);
+    if (!existing || existing->nodes.empty()) {
+      if (auto set = model_->setMesh(specimenId, t->mesh); !set) {
+        showProblem(tr("Cannot store the mesh: %1").arg(QString::fromStdString(set.error().describe())));
+        return;
+      }
+    }
+  }
   auto id = cp::createCampaign(*store, specimenId, name_->text().trimmed().toStdString(), *d,
                                tr("made with the new-campaign wizard").toStdString());
   if (!id) {

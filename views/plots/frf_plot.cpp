@@ -135,7 +135,7 @@ FrfPlot::FrfPlot(QWidget* parent) : QWidget(parent) {
   // Small minimum sizes: three stacked plots and the readout fit a 1280x800
   // window (and half that in logical pixels at scale 2).
   for (InteractivePlot* plot : {main_, secondary_, coherence_}) plot->setMinimumSize(200, 90);
-  coherence_->setMinimumHeight(150);               // it carries the frequency axis under its canvas
+  coherence_->setMinimumHeight(110);               // it carries the frequency axis under its canvas
   coherence_->setAxisMaxMajor(QwtPlot::yLeft, 3);  // 0, 0.5, 1: readable in a short plot
   layout->addWidget(main_, 3);
   layout->addWidget(secondary_, 2);

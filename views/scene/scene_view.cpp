@@ -78,6 +78,7 @@ struct SceneView::Pipeline {
   vtkNew<vtkPolyDataMapper> hitNodeMapper;
   vtkNew<vtkActor> hitNodeActor;
   vtkNew<vtkPolyData> hitArrowInput;
+  vtkNew<vtkArrowSource> hitArrow;
   vtkNew<vtkDoubleArray> hitArrowVector;
   vtkNew<vtkGlyph3D> hitGlyph;
   vtkNew<vtkPolyDataMapper> hitArrowMapper;
@@ -219,7 +220,13 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), pipeline_(new Pipeline)
   p.hitArrowVector->SetNumberOfComponents(3);
   p.hitArrowVector->SetName("strike");
   p.hitArrowInput->GetPointData()->SetVectors(p.hitArrowVector);
-  p.hitGlyph->SetSourceConnection(p.arrow->GetOutputPort());
+  // Thicker than the shape arrows: one arrow, read at a glance from the rig.
+  p.hitArrow->SetTipResolution(16);
+  p.hitArrow->SetShaftResolution(12);
+  p.hitArrow->SetShaftRadius(0.05);
+  p.hitArrow->SetTipRadius(0.14);
+  p.hitArrow->SetTipLength(0.3);
+  p.hitGlyph->SetSourceConnection(p.hitArrow->GetOutputPort());
   p.hitGlyph->SetInputData(p.hitArrowInput);
   p.hitGlyph->SetVectorModeToUseVector();
   p.hitGlyph->SetScaleModeToScaleByVector();
@@ -377,14 +384,14 @@ void SceneView::setHitMarker(std::optional<int> label, const core::Vector3& stri
     p.hitNode->SetPoints(node);
     p.hitNode->SetVerts(vert);
     p.hitNodeActor->VisibilityOn();
-    // The arrow: a sixth of the mesh's size, so it reads at any scale; its tip on the node.
+    // The arrow: a quarter of the mesh's size, so it reads at any scale; its tip on the node.
     double b[6];
     p.mesh->GetBounds(b);
     const double size =
         std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
     const double norm = strike.norm();
     if (norm > 0.0 && size > 0.0) {
-      const core::Vector3 v = strike / norm * (size / 6.0);
+      const core::Vector3 v = strike / norm * (size / 4.0);
       vtkNew<vtkPoints> tail;
       tail->InsertNextPoint(at[0] - v.x(), at[1] - v.y(), at[2] - v.z());
       p.hitArrowVector->SetNumberOfTuples(1);
