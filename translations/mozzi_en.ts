@@ -1023,7 +1023,7 @@
 <context>
     <name>RigResults</name>
     <message>
-        <location filename="../views/rigs/rig_test_page.cpp" line="+140"/>
+        <location filename="../views/rigs/rig_test_page.cpp" line="+141"/>
         <source>lateral stiffness k_lat</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1637,6 +1637,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+11"/>
+        <source>Cannot store the mesh: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+6"/>
         <source>made with the new-campaign wizard</source>
         <translation type="unfinished"></translation>
@@ -1765,12 +1770,12 @@
 <context>
     <name>mozzi::views::FrfPlot</name>
     <message>
-        <location filename="../views/plots/frf_plot.cpp" line="+640"/>
+        <location filename="../views/plots/frf_plot.cpp" line="+642"/>
         <source>Unwrap phase</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-295"/>
+        <location line="-297"/>
         <source>All responses</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1800,7 +1805,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+79"/>
         <source>sum</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2053,7 +2058,7 @@
 <context>
     <name>mozzi::views::HammerStationPage</name>
     <message>
-        <location filename="../views/campaign/hammer_station_page.cpp" line="+51"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+55"/>
         <source>Idle: press A to arm</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2103,7 +2108,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+141"/>
+        <location line="+154"/>
         <source>Arm</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2133,13 +2138,13 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+112"/>
-        <location line="+359"/>
+        <location line="+122"/>
+        <location line="+410"/>
         <source>%1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-337"/>
+        <location line="-338"/>
         <source>Choose a campaign first, or make one with New Campaign (Ctrl+Shift+N).</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2221,12 +2226,12 @@
     </message>
     <message>
         <location line="+12"/>
-        <location line="+192"/>
+        <location line="+193"/>
         <source>Time since arming [s]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-174"/>
+        <location line="-175"/>
         <source>Time in the hit&apos;s record [s]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2309,7 +2314,7 @@
         </translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Station: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3584,7 +3589,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+237"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+244"/>
         <source>Export Diagnosis Report</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4367,7 +4372,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+92"/>
         <source>Time [s]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4409,12 +4414,12 @@ Schema version %2, created %3 by Mozzi %4</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+20"/>
+        <location line="+22"/>
         <source>current frequency</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-20"/>
+        <location line="-22"/>
         <source>measured</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4469,6 +4474,16 @@ Schema version %2, created %3 by Mozzi %4</source>
     <message>
         <location line="+1"/>
         <source>camber stiffness (stored)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Magic Formula vs side-slip</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Magic Formula vs camber</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4568,7 +4583,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+53"/>
         <source>Cannot read the rig test: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4578,7 +4593,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+42"/>
         <source>whole test</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4611,7 +4626,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::SceneView</name>
     <message>
-        <location filename="../views/scene/scene_view.cpp" line="+546"/>
+        <location filename="../views/scene/scene_view.cpp" line="+632"/>
         <source>|u|</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1023,7 +1023,7 @@
 <context>
     <name>RigResults</name>
     <message>
-        <location filename="../views/rigs/rig_test_page.cpp" line="+140"/>
+        <location filename="../views/rigs/rig_test_page.cpp" line="+141"/>
         <source>lateral stiffness k_lat</source>
         <translation>rigidezza laterale k_lat</translation>
     </message>
@@ -1637,6 +1637,11 @@
         <translation>Impossibile aggiungere il provino: %1</translation>
     </message>
     <message>
+        <location line="+11"/>
+        <source>Cannot store the mesh: %1</source>
+        <translation>Impossibile salvare la mesh: %1</translation>
+    </message>
+    <message>
         <location line="+6"/>
         <source>made with the new-campaign wizard</source>
         <translation>creata con la procedura guidata di nuova campagna</translation>
@@ -1765,12 +1770,12 @@
 <context>
     <name>mozzi::views::FrfPlot</name>
     <message>
-        <location filename="../views/plots/frf_plot.cpp" line="+640"/>
+        <location filename="../views/plots/frf_plot.cpp" line="+642"/>
         <source>Unwrap phase</source>
         <translation>Fase continua</translation>
     </message>
     <message>
-        <location line="-295"/>
+        <location line="-297"/>
         <source>All responses</source>
         <translation>Tutte le risposte</translation>
     </message>
@@ -1800,7 +1805,7 @@
         <translation>Punto %1</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+79"/>
         <source>sum</source>
         <translation>somma</translation>
     </message>
@@ -2053,7 +2058,7 @@
 <context>
     <name>mozzi::views::HammerStationPage</name>
     <message>
-        <location filename="../views/campaign/hammer_station_page.cpp" line="+51"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+55"/>
         <source>Idle: press A to arm</source>
         <translation>Inattivo: premi A per armare</translation>
     </message>
@@ -2103,7 +2108,7 @@
         <translation>Arresta</translation>
     </message>
     <message>
-        <location line="+141"/>
+        <location line="+154"/>
         <source>Arm</source>
         <translation>Arma</translation>
     </message>
@@ -2133,13 +2138,13 @@
         <translation>Salta punto</translation>
     </message>
     <message>
-        <location line="+112"/>
-        <location line="+359"/>
+        <location line="+122"/>
+        <location line="+410"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="-337"/>
+        <location line="-338"/>
         <source>Choose a campaign first, or make one with New Campaign (Ctrl+Shift+N).</source>
         <translation>Scegli prima una campagna, oppure creane una con Nuova campagna (Ctrl+Shift+N).</translation>
     </message>
@@ -2221,12 +2226,12 @@
     </message>
     <message>
         <location line="+12"/>
-        <location line="+192"/>
+        <location line="+193"/>
         <source>Time since arming [s]</source>
         <translation>Tempo dall&apos;armamento [s]</translation>
     </message>
     <message>
-        <location line="-174"/>
+        <location line="-175"/>
         <source>Time in the hit&apos;s record [s]</source>
         <translation>Tempo nella registrazione del colpo [s]</translation>
     </message>
@@ -2309,7 +2314,7 @@
         </translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>Station: %1</source>
         <translation>Stazione: %1</translation>
     </message>
@@ -3588,7 +3593,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+237"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+244"/>
         <source>Export Diagnosis Report</source>
         <translation>Esporta rapporto di diagnosi</translation>
     </message>
@@ -4372,7 +4377,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Carico F_z %1 N; semilunghezza di contatto a %2 mm (Tabella 17); limiti di lavoro deriva ±%3°, campanatura ±%4° (macchina ±%5°, ±%6°, disco fino a %7 km/h).</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+92"/>
         <source>Time [s]</source>
         <translation>Tempo [s]</translation>
     </message>
@@ -4414,12 +4419,12 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+20"/>
+        <location line="+22"/>
         <source>current frequency</source>
         <translation>frequenza corrente</translation>
     </message>
     <message>
-        <location line="-20"/>
+        <location line="-22"/>
         <source>measured</source>
         <translation>misura</translation>
     </message>
@@ -4475,6 +4480,16 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <location line="+1"/>
         <source>camber stiffness (stored)</source>
         <translation>rigidezza di campanatura (memorizzata)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Magic Formula vs side-slip</source>
+        <translation>Magic Formula in funzione della deriva</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Magic Formula vs camber</source>
+        <translation>Magic Formula in funzione della campanatura</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4573,7 +4588,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Passo %1 (%2) conservato senza risultato: %3</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+53"/>
         <source>Cannot read the rig test: %1</source>
         <translation>Impossibile leggere la prova al banco: %1</translation>
     </message>
@@ -4583,7 +4598,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Impossibile leggere la prova dello pneumatico: %1</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+42"/>
         <source>whole test</source>
         <translation>intera prova</translation>
     </message>
@@ -4616,7 +4631,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::SceneView</name>
     <message>
-        <location filename="../views/scene/scene_view.cpp" line="+546"/>
+        <location filename="../views/scene/scene_view.cpp" line="+632"/>
         <source>|u|</source>
         <translation>|u|</translation>
     </message>

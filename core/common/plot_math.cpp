@@ -152,6 +152,7 @@ AxisRange dataRange(const VectorRef& x, const VectorRef& y, double xLo, double x
   for (Eigen::Index k = 0; k < n; ++k) {
     if (x[k] < xLo || x[k] > xHi || !std::isfinite(y[k])) continue;
     if (logarithmicY && !(y[k] > 0.0)) continue;
+    if (y[k] <= kMagnitudeFloorDb) continue;
     lo = std::min(lo, y[k]);
     hi = std::max(hi, y[k]);
   }

@@ -65,7 +65,10 @@ Eigen::Index nearestSample(const VectorRef& x, double value);
 
 // Range of the finite y whose x lies in [xLo, xHi] (on a logarithmic axis only
 // y > 0 count), padded by `margin` of the span on either side (a factor on a
-// logarithmic axis); what autoscale shows. Empty selection: {0, 1}, or {1, 10}.
+// logarithmic axis); what autoscale shows. y at kMagnitudeFloorDb or below
+// marks a zero magnitude, not data, and does not count either (a 0 Hz line of
+// zeros would otherwise stretch a dB axis down to -400). Empty selection:
+// {0, 1}, or {1, 10}.
 AxisRange dataRange(const VectorRef& x, const VectorRef& y, double xLo, double xHi, bool logarithmicY,
                     double margin = 0.05);
 

@@ -29,6 +29,7 @@
 #include <variant>
 
 #include "core/io/project_store.h"
+#include "core/tire/magic_formula.h"
 #include "devices/rigtests/rig_sequence.h"
 #include "devices/rigtests/sequence_parameters.h"
 #include "devices/rigtests/stiffness_tests.h"
@@ -548,6 +549,10 @@ void RigTestPage::resetPlots() {
     fitLine2_ = addCurve(resultPlot_, QColor(120, 120, 120));
     fitLine_->setPen(QPen(Qt::black, 1.5, Qt::DashLine));
     fitLine2_->setPen(QPen(QColor(120, 120, 120), 1.5, Qt::DashLine));
+    mfSlip_ = addCurve(resultPlot_, QColor(148, 103, 189));
+    mfCamber_ = addCurve(resultPlot_, QColor(140, 86, 75));
+    mfSlip_->setPen(QPen(QColor(148, 103, 189), 2.0));
+    mfCamber_->setPen(QPen(QColor(140, 86, 75), 2.0));
     timeLeft_->setPen(QPen(QColor(31, 119, 180), 3.0));  // wide: an in-phase trace on the right axis covers it
   }
   const bool steady = id == QLatin1String("steady-state");
@@ -557,12 +562,13 @@ void RigTestPage::resetPlots() {
     const QColor colour = c->pen().color();
     c->setSymbol(steady ? new QwtSymbol(QwtSymbol::Ellipse, QBrush(colour), QPen(colour), QSize(7, 7)) : nullptr);
   }
-  for (QwtPlotCurve* c : {timeLeft_, timeRight_, xyLive_, xySecond_, fitLine_, fitLine2_})
+  for (QwtPlotCurve* c : {timeLeft_, timeRight_, xyLive_, xySecond_, fitLine_, fitLine2_, mfSlip_, mfCamber_})
     c->setSamples(QVector<QPointF>());
   // Which curves this test draws (and lists in the legend).
   const bool second = !stiff && steady;
   const bool fit = stiff ? id == QLatin1String("static") : steady;
-  const std::pair<QwtPlotCurve*, bool> used[] = {{xySecond_, second}, {fitLine_, fit}, {fitLine2_, second}};
+  const std::pair<QwtPlotCurve*, bool> used[] = {
+      {xySecond_, second}, {fitLine_, fit}, {fitLine2_, second}, {mfSlip_, second}, {mfCamber_, second}};
   for (const auto& [c, on] : used) {
     c->setVisible(on);
     c->setItemAttribute(QwtPlotItem::Legend, on);
@@ -597,6 +603,8 @@ void RigTestPage::resetPlots() {
       xySecond_->setTitle(tr("F_y vs camber"));
       fitLine_->setTitle(tr("cornering stiffness (stored)"));
       fitLine2_->setTitle(tr("camber stiffness (stored)"));
+      mfSlip_->setTitle(tr("Magic Formula vs side-slip"));
+      mfCamber_->setTitle(tr("Magic Formula vs camber"));
     } else {
       resultPlot_->setTitle(tr("Lateral force vs yaw angle"));
       resultPlot_->setAxisTitle(QwtPlot::xBottom, tr("Yaw angle [deg]"));
@@ -917,6 +925,8 @@ void RigTestPage::showStoredTest(qint64 id) {
     std::string unit;
   };
   std::vector<Row> rows;
+  std::vector<core::io::StoredTyreTest::Point> storedPoints;
+  double tyreLoadN = 0.0, tyrePressurePa = 0.0;
   std::string parametersJson, name, note;
   core::io::TestStatus status = core::io::TestStatus::Complete;
   if (rig_ == Rig::Stiffness) {
@@ -937,6 +947,9 @@ void RigTestPage::showStoredTest(qint64 id) {
       return;
     }
     for (const auto& r : t->parameters) rows.push_back({r.step, r.name, r.value, r.uncertainty, r.unit});
+    storedPoints = t->points;
+    tyreLoadN = t->verticalLoadN;
+    tyrePressurePa = t->inflationPressurePa;
     parametersJson = t->parametersJson;
     name = t->name;
     status = t->status;
@@ -945,6 +958,41 @@ void RigTestPage::showStoredTest(qint64 id) {
   // Step labels from the plan the sequence stored ("steps": [{"label": ...}]).
   std::vector<QString> labels;
   const auto plan = nlohmann::json::parse(parametersJson, nullptr, false);
+  // A test opened from the project tree: its kind's plots, its stored points.
+  if (!isRunning() && plan.is_object() && plan.contains("test") && plan["test"].is_string()) {
+    const QString kind = qs(plan["test"].get<std::string>());
+    if (kind != testId()) selectTest(kind);
+  }
+  if (!isRunning() && rig_ == Rig::Tyre && testId() == QLatin1String("steady-state") && xyData_.isEmpty() &&
+      xySecondData_.isEmpty()) {
+    // Each point to its sweep by the plan's step of the same set-point (the
+    // point at zero slip and zero camber is in both sweeps, once each); a
+    // plan without steps: the slip sweep runs at zero camber.
+    struct PlanStep {
+      double slip, camber;
+      bool slipSweep, used;
+    };
+    std::vector<PlanStep> planSteps;
+    if (plan.is_object() && plan.contains("steps") && plan["steps"].is_array())
+      for (const auto& st : plan["steps"])
+        if (st.is_object() && st.value("slip_rad", nlohmann::json()).is_number() &&
+            st.value("camber_rad", nlohmann::json()).is_number() && st.value("label", nlohmann::json()).is_string())
+          planSteps.push_back({st["slip_rad"].get<double>(), st["camber_rad"].get<double>(),
+                               st["label"].get<std::string>().rfind("slip", 0) == 0, false});
+    for (const auto& p : storedPoints) {
+      bool slipSweep = p.camberRad == 0.0;
+      for (auto& st : planSteps)
+        if (!st.used && std::abs(st.slip - p.slipAngleRad) <= 1e-12 && std::abs(st.camber - p.camberRad) <= 1e-12) {
+          st.used = true;
+          slipSweep = st.slipSweep;
+          break;
+        }
+      if (slipSweep)
+        xyData_.append(QPointF(p.slipAngleRad * 180.0 / kPi, p.lateralForceN));
+      else
+        xySecondData_.append(QPointF(p.camberRad * 180.0 / kPi, p.lateralForceN));
+    }
+  }
   if (plan.is_object() && plan.contains("steps") && plan["steps"].is_array())
     for (const auto& st : plan["steps"])
       labels.push_back(st.is_object() && st.contains("label") && st["label"].is_string()
@@ -1029,6 +1077,40 @@ void RigTestPage::showStoredTest(qint64 id) {
     const rt::SteadyStateSettings defaults;
     if (const Row* c = find("cornering_stiffness")) line(fitLine_, xyData_, c->value, defaults.slipWindowDeg);
     if (const Row* c = find("camber_stiffness")) line(fitLine2_, xySecondData_, c->value, defaults.camberWindowDeg);
+    // The stored Magic Formula over each sweep: the fitted coefficients, the
+    // held ones at the values the fit started from (its defaults), at the
+    // test's load and pressure (core/tire/magic_formula.h).
+    mfSlip_->setSamples(QVector<QPointF>());
+    mfCamber_->setSamples(QVector<QPointF>());
+    core::tire::MfLateralCoefficients mf = core::tire::mfLateralDefaults();
+    bool fitted = false;
+    const auto& names = core::tire::mfLateralNames();
+    for (std::size_t i = 0; i < names.size(); ++i)
+      if (const Row* r = find(("mf_" + names[i]).c_str())) {
+        mf[i] = r->value;
+        fitted = true;
+      }
+    if (fitted && tyreLoadN > 0.0 && tyrePressurePa > 0.0) {
+      const core::tire::MfConstants constants{tyreLoadN, tyrePressurePa, 0.3};  // R0 enters M_z only
+      auto curve = [&](QwtPlotCurve* c, const QVector<QPointF>& data, bool slip) {
+        if (data.size() < 2) return;
+        double lo = data.first().x(), hi = lo;
+        for (const auto& p : data) {
+          lo = std::min(lo, p.x());
+          hi = std::max(hi, p.x());
+        }
+        QVector<QPointF> samples;
+        constexpr int kSamples = 200;
+        for (int k = 0; k <= kSamples; ++k) {
+          const double deg = lo + (hi - lo) * k / kSamples, rad = deg * kPi / 180.0;
+          samples.append(QPointF(deg, core::tire::mfLateralForce(mf, constants, slip ? rad : 0.0, slip ? 0.0 : rad,
+                                                                 tyreLoadN, tyrePressurePa)));
+        }
+        c->setSamples(samples);
+      };
+      curve(mfSlip_, xyData_, true);
+      curve(mfCamber_, xySecondData_, false);
+    }
   }
   lastTestId_ = id;
   replot();

@@ -159,6 +159,8 @@ class RigTestPage : public QWidget {
   QwtPlotCurve* xySecond_ = nullptr;
   QwtPlotCurve* fitLine_ = nullptr;
   QwtPlotCurve* fitLine2_ = nullptr;
+  QwtPlotCurve* mfSlip_ = nullptr;    // the stored Magic Formula over the side-slip sweep
+  QwtPlotCurve* mfCamber_ = nullptr;  // ... and over the camber sweep
   QVector<QPointF> timeLeftData_, timeRightData_, xyData_, xySecondData_;
   double timeWindowS_ = 0.0;  // 0: keep the whole step
   int liveStep_ = -1;

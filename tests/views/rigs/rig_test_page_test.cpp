@@ -215,6 +215,80 @@ class RigTestPageTest : public QObject {
     saveShot(page, QStringLiteral("tyre_tester_steady_state"));
   }
 
+  // The Magic Formula fitted by the test, drawn over the points it was fitted
+  // to; the same test opened again from the project tree (a new page, an item
+  // context) shows the stored points and the same curve. The curve must pass
+  // every measured point within four times the fit's stored rms residual or
+  // 1% of the largest force (the sweep's noise; the curve is sampled at 201
+  // angles and read between samples linearly).
+  void magicFormulaCurveOverTheSteadyStatePoints() {
+    qint64 testId = 0;
+    QVector<QPointF> slipPoints, camberPoints, slipCurve;
+    {
+      RigTestPage page(RigTestPage::Rig::Tyre, context());
+      page.resize(1280, 800);
+      page.show();
+      QVERIFY(page.selectTest(QStringLiteral("steady-state")));
+      QVERIFY(page.testForm()
+                  ->setValues({{"steady.slip", std::string("-6, -5, -4, -3, -2, -1, 0, 1, 2, 3, 4, 5, 6")},
+                               {"steady.camber", std::string("-20, -10, 0, 10, 20")},
+                               {"steady.settle", 0.5},
+                               {"steady.hold", 0.5},
+                               {"steady.magic_formula", true}})
+                  .ok());
+      QVERIFY(page.rigForm()->setValues({{"sim.seed", std::int64_t{11}}, {"sim.realtime", false}}).ok());
+      QSignalSpy finished(&page, &RigTestPage::finished);
+      QTest::mouseClick(page.runButton(), Qt::LeftButton);
+      QVERIFY2(finished.wait(120000), qPrintable(page.statusText()));
+      QVERIFY2(finished.first().first().toBool(), qPrintable(page.statusText()));
+      testId = *page.lastTestId();
+      auto stored = model_.store()->tyreTest(testId);
+      QVERIFY(stored.ok());
+      double rms = -1.0;
+      for (const auto& p : stored->parameters)
+        if (!p.step && p.name == "mf_lateral_rms") rms = p.value;
+      QVERIFY2(rms >= 0.0, "the test stored a Magic Formula fit");
+      auto* curve = curveTitled(page.resultPlot(), QStringLiteral("Magic Formula vs side-slip"));
+      auto* points = curveTitled(page.resultPlot(), QStringLiteral("F_y vs side-slip"));
+      QVERIFY(curve && points);
+      QCOMPARE(curve->dataSize(), size_t{201});
+      QCOMPARE(points->dataSize(), size_t{13});
+      double peak = 0.0;
+      for (size_t i = 0; i < points->dataSize(); ++i) peak = std::max(peak, std::abs(points->sample(i).y()));
+      for (size_t i = 0; i < points->dataSize(); ++i) {
+        const QPointF p = points->sample(i);
+        double y = std::nan("");
+        for (size_t k = 0; k + 1 < curve->dataSize(); ++k) {
+          const QPointF a = curve->sample(k), b = curve->sample(k + 1);
+          if (p.x() >= a.x() && p.x() <= b.x()) y = a.y() + (b.y() - a.y()) * (p.x() - a.x()) / (b.x() - a.x());
+        }
+        QVERIFY2(std::abs(y - p.y()) <= std::max(4.0 * rms, 0.01 * peak),
+                 qPrintable(QStringLiteral("at %1 deg: curve %2 N, measured %3 N (rms %4 N)")
+                                .arg(p.x())
+                                .arg(y)
+                                .arg(p.y())
+                                .arg(rms)));
+        slipPoints.append(p);
+      }
+      QVERIFY(curveTitled(page.resultPlot(), QStringLiteral("Magic Formula vs camber"))->dataSize() == 201);
+      for (size_t k = 0; k < curve->dataSize(); ++k) slipCurve.append(curve->sample(k));
+      saveShot(page, QStringLiteral("tyre_tester_magic_formula"));
+    }
+    PageContext ctx = context();
+    ctx.item.kind = RecordKind::TyreTest;
+    ctx.item.id = testId;
+    RigTestPage reopened(RigTestPage::Rig::Tyre, ctx);
+    reopened.resize(1280, 800);
+    reopened.show();
+    auto* points = curveTitled(reopened.resultPlot(), QStringLiteral("F_y vs side-slip"));
+    auto* curve = curveTitled(reopened.resultPlot(), QStringLiteral("Magic Formula vs side-slip"));
+    QVERIFY(points && curve);
+    QCOMPARE(points->dataSize(), size_t(slipPoints.size()));
+    QCOMPARE(curve->dataSize(), size_t(slipCurve.size()));
+    for (size_t k = 0; k < curve->dataSize(); ++k) QCOMPARE(curve->sample(k), slipCurve[static_cast<int>(k)]);
+    saveShot(reopened, QStringLiteral("tyre_tester_magic_formula_reopened"));
+  }
+
   void sineSweepStoresEachFrequency() {
     RigTestPage page(RigTestPage::Rig::Stiffness, context());
     page.resize(1280, 800);
