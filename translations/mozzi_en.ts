@@ -4,7 +4,7 @@
 <context>
     <name>Pages</name>
     <message>
-        <location filename="../app/gui/builtin_pages.cpp" line="+61"/>
+        <location filename="../app/gui/builtin_pages.cpp" line="+63"/>
         <source>Cannot show the mesh: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -22,7 +22,17 @@
         </translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+64"/>
+        <source>FRFs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hits (time)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Overview</source>
         <translation type="unfinished"></translation>
     </message>
@@ -107,12 +117,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-136"/>
+        <location line="-147"/>
         <source>Could not read the FRF set: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+53"/>
         <source>The FRFs of a stored set: Bode, real and imaginary, Nyquist, coherence, sum and CMIF, with a cursor</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2483,6 +2493,99 @@
     </message>
 </context>
 <context>
+    <name>mozzi::views::HitTimeView</name>
+    <message>
+        <location filename="../views/plots/hit_time_view.cpp" line="+101"/>
+        <source>hit %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>hit %1 at %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Cannot read the hit: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>Response [%1]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>accepted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>rejected: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>force window %1 ms (taper %2 ms)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>exponential window tau %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rectangular windows</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hit %1 at %2, %3 samples at %4 Hz, %5; %6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Hit:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Response:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time in the hit&apos;s record [s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Force [N]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>force</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>response</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>force window (x peak force)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>response window (x peak response)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>mozzi::views::IdentificationPage</name>
     <message>
         <location filename="../views/modal/identification_page.cpp" line="+232"/>
@@ -4593,7 +4696,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+64"/>
         <source>whole test</source>
         <translation type="unfinished"></translation>
     </message>

@@ -4,7 +4,7 @@
 <context>
     <name>Pages</name>
     <message>
-        <location filename="../app/gui/builtin_pages.cpp" line="+61"/>
+        <location filename="../app/gui/builtin_pages.cpp" line="+63"/>
         <source>Cannot show the mesh: %1</source>
         <translation>Impossibile mostrare la mesh: %1</translation>
     </message>
@@ -22,7 +22,17 @@
         </translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+64"/>
+        <source>FRFs</source>
+        <translation>FRF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hits (time)</source>
+        <translation>Colpi (tempo)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Overview</source>
         <translation>Panoramica</translation>
     </message>
@@ -107,12 +117,12 @@
         <translation>Identifica i modi su un diagramma di stabilizzazione</translation>
     </message>
     <message>
-        <location line="-136"/>
+        <location line="-147"/>
         <source>Could not read the FRF set: %1</source>
         <translation>Impossibile leggere l&apos;insieme di FRF: %1</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+53"/>
         <source>The FRFs of a stored set: Bode, real and imaginary, Nyquist, coherence, sum and CMIF, with a cursor</source>
         <translation>Le FRF di un insieme memorizzato: Bode, parte reale e immaginaria, Nyquist, coerenza, somma e CMIF, con un cursore</translation>
     </message>
@@ -2483,6 +2493,99 @@
     </message>
 </context>
 <context>
+    <name>mozzi::views::HitTimeView</name>
+    <message>
+        <location filename="../views/plots/hit_time_view.cpp" line="+101"/>
+        <source>hit %1</source>
+        <translation>colpo %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>hit %1 at %2</source>
+        <translation>colpo %1 in %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Cannot read the hit: %1</source>
+        <translation>Impossibile leggere il colpo: %1</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>Response [%1]</source>
+        <translation>Risposta [%1]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>accepted</source>
+        <translation>accettato</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>rejected: %1</source>
+        <translation>scartato: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>force window %1 ms (taper %2 ms)</source>
+        <translation>finestra di forza %1 ms (raccordo %2 ms)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>exponential window tau %1 s</source>
+        <translation>finestra esponenziale tau %1 s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rectangular windows</source>
+        <translation>finestre rettangolari</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hit %1 at %2, %3 samples at %4 Hz, %5; %6</source>
+        <translation>Colpo %1 in %2, %3 campioni a %4 Hz, %5; %6</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Hit:</source>
+        <translation>Colpo:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Response:</source>
+        <translation>Risposta:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time in the hit&apos;s record [s]</source>
+        <translation>Tempo nella registrazione del colpo [s]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Force [N]</source>
+        <translation>Forza [N]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>force</source>
+        <translation>forza</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>response</source>
+        <translation>risposta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>force window (x peak force)</source>
+        <translation>finestra di forza (x forza di picco)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>response window (x peak response)</source>
+        <translation>finestra della risposta (x risposta di picco)</translation>
+    </message>
+</context>
+<context>
     <name>mozzi::views::IdentificationPage</name>
     <message>
         <location filename="../views/modal/identification_page.cpp" line="+232"/>
@@ -4598,7 +4701,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Impossibile leggere la prova dello pneumatico: %1</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+64"/>
         <source>whole test</source>
         <translation>intera prova</translation>
     </message>

@@ -4,6 +4,7 @@
 #include "app/gui/builtin_pages.h"
 
 #include <QCoreApplication>
+#include <QTabWidget>
 #include <QVariant>
 #include <algorithm>
 #include <functional>
@@ -21,6 +22,7 @@
 #include "views/modal/identification_page.h"
 #include "views/panels/project_overview.h"
 #include "views/plots/frf_plot.h"
+#include "views/plots/hit_time_view.h"
 #include "views/rigs/rig_test_page.h"
 #include "views/scene/mode_animation_page.h"
 #include "views/scene/scene_view.h"
@@ -127,7 +129,18 @@ QWidget* createFrfPage(const PageContext& ctx) {
   QObject::connect(model, &views::ProjectModel::modalResultsChanged, plot, [plot, model, id] {
     if (model->store()) plot->setModeFrequencies(modeFrequenciesOf(model->store(), id));
   });
-  return plot;
+  // A campaign's set: its stored hits in the time domain beside the FRFs.
+  auto* hits = new views::HitTimeView;
+  if (!hits->setFrfSet(*store, ctx.item.id)) {
+    delete hits;
+    return plot;
+  }
+  auto* tabs = new QTabWidget(ctx.parent);
+  tabs->setObjectName(QStringLiteral("frfPageTabs"));
+  tabs->setDocumentMode(true);
+  tabs->addTab(plot, QCoreApplication::translate("Pages", "FRFs"));
+  tabs->addTab(hits, QCoreApplication::translate("Pages", "Hits (time)"));
+  return tabs;
 }
 
 }  // namespace

@@ -251,7 +251,7 @@ class IdentificationPageTest : public QObject {
     QVERIFY2(page.warningText().contains(QStringLiteral("one mode")), qPrintable(page.warningText()));
     qInfo("pole click -> table and synthesis: %.1f ms CPU, %.1f ms wall", page.lastSelectionUpdateCpuMs(),
           page.lastSelectionUpdateMs());
-    QVERIFY(page.lastSelectionUpdateCpuMs() <= 1000.0);  // issue 18: 50 ms, see timeBudgetsOn100x20000
+    QVERIFY(page.lastSelectionUpdateCpuMs() <= 100.0);  // issue 18: 50 ms, see timeBudgetsOn100x20000
     page.findChild<QTabWidget*>()->setCurrentIndex(1);
     screenshot(&page, QStringLiteral("identification_beam_warning"));
     // Clicking it again removes it; clicking mode 4's pole removes mode 4.
@@ -469,12 +469,15 @@ class IdentificationPageTest : public QObject {
         "100 x 20000: pole click -> table and synthesis %.1f ms CPU (%.1f wall) removing, %.1f ms CPU (%.1f wall) "
         "adding",
         removeMs, removeWall, page.lastSelectionUpdateCpuMs(), page.lastSelectionUpdateMs());
-    // Issue 18 asks for 50 ms; this machine measures about 400 ms of GUI-thread
-    // CPU (LSFD of 100 FRFs over 18,000 lines, synthesis, residuals, MAC) - NOT
-    // met, docs/performance/workbench-plots.md. Checked here: the click stays
-    // under a second, so the page answers.
-    QVERIFY(removeMs <= 1000.0);
-    QVERIFY(page.lastSelectionUpdateCpuMs() <= 1000.0);
+    // Issue 18 asks for 50 ms. With core's one-QR fit (fitSelectedPoles) this
+    // machine measures 41 ms removing and 52 ms adding, in GUI-thread CPU,
+    // while another build ran (docs/performance/workbench-plots.md); before it,
+    // 322 to 520 ms. Asserted at twice the budget: the CPU time of a shared
+    // 2-core machine varies by that much, a return of the LSFD-then-synthesis
+    // path (eight times the cost) would not pass.
+    QVERIFY2(removeMs <= 100.0, qPrintable(QStringLiteral("%1 ms").arg(removeMs)));
+    QVERIFY2(page.lastSelectionUpdateCpuMs() <= 100.0,
+             qPrintable(QStringLiteral("%1 ms").arg(page.lastSelectionUpdateCpuMs())));
   }
 
  private:
