@@ -96,8 +96,13 @@ void mergeSameModes(std::vector<SelectedPole>& selected, const PlscfOptions& opt
 }
 
 std::string describeSameMode(const SameModePair& p, const std::vector<ModeCandidate>& cand, const SameModeCriteria& c) {
-  const std::string a = formatNumber(cand[p.first].frequencyHz, 6) + " Hz";
-  const std::string b = formatNumber(cand[p.second].frequencyHz, 6) + " Hz";
+  // Six significant digits, more when two poles would read the same.
+  int digits = 6;
+  while (digits < 12 &&
+         formatNumber(cand[p.first].frequencyHz, digits) == formatNumber(cand[p.second].frequencyHz, digits))
+    ++digits;
+  const std::string a = formatNumber(cand[p.first].frequencyHz, digits) + " Hz";
+  const std::string b = formatNumber(cand[p.second].frequencyHz, digits) + " Hz";
   const std::string apart = a + " and " + b + " are " + formatNumber(p.separationHz, 3) + " Hz apart";
   if (p.reason == SameModeReason::WithinResolution) {
     return apart + ", closer than the frequency resolution (" + formatNumber(c.resolutionHz, 4) +

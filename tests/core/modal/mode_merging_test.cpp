@@ -52,6 +52,11 @@ TEST(ModeMerging, PairsCloserThanTheResolutionOrWithTheSameShapeAreOneMode) {
   const std::string why = describeSameMode(SameModePair{0, 1, ab.separationHz, ab.mac, ab.reason}, {a, b}, c);
   EXPECT_NE(why.find("958.42 Hz and 958.58 Hz"), std::string::npos) << why;
   EXPECT_NE(why.find("resolution (1 Hz)"), std::string::npos) << why;
+  // Two poles equal to six digits are told apart with more.
+  const ModeCandidate e{958.4201, a.shape}, f{958.4203, a.shape};
+  const SameModePair ef = compareModes(e, f, c);
+  const std::string close = describeSameMode(SameModePair{0, 1, ef.separationHz, ef.mac, ef.reason}, {e, f}, c);
+  EXPECT_NE(close.find("958.4201 Hz and 958.4203 Hz"), std::string::npos) << close;
 }
 
 TEST(ModeMerging, KeepsTheBestSupportedPoleOfEachGroup) {
