@@ -4,7 +4,7 @@
 <context>
     <name>Pages</name>
     <message>
-        <location filename="../app/gui/builtin_pages.cpp" line="+63"/>
+        <location filename="../app/gui/builtin_pages.cpp" line="+64"/>
         <source>Cannot show the mesh: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -57,7 +57,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+25"/>
+        <source>Stability</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Eigenvalues of a bicycle model against speed, its modes named and its critical speeds marked</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Mesh Editor</source>
         <translation type="unfinished"></translation>
     </message>
@@ -117,7 +127,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="-160"/>
         <source>Could not read the FRF set: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4731,6 +4741,100 @@ Schema version %2, created %3 by Mozzi %4</source>
     <message>
         <location filename="../views/scene/scene_view.cpp" line="+632"/>
         <source>|u|</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>mozzi::views::StabilityPage</name>
+    <message>
+        <location filename="../views/stability/stability_page.cpp" line="+131"/>
+        <source>Computing the eigenvalues against speed...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Stability against speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Cannot compute: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>%1 %2 at %3 m/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 %2 m/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>No real part crosses zero in this speed range.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Critical speeds: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Model:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Benchmark bicycle (Meijaard et al. 2007)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Benchmark bicycle, steel fork in bending (thesis §6.5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Benchmark bicycle, steel fork in torsion (thesis §6.4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Speeds from, to, step:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Compute</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Real part of the eigenvalues</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+3"/>
+        <source>Speed [m/s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source>Re λ [1/s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Imaginary part (oscillating modes)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Im λ [rad/s]</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

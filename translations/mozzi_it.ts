@@ -4,7 +4,7 @@
 <context>
     <name>Pages</name>
     <message>
-        <location filename="../app/gui/builtin_pages.cpp" line="+63"/>
+        <location filename="../app/gui/builtin_pages.cpp" line="+64"/>
         <source>Cannot show the mesh: %1</source>
         <translation>Impossibile mostrare la mesh: %1</translation>
     </message>
@@ -57,7 +57,17 @@
         <translation>FRF</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+25"/>
+        <source>Stability</source>
+        <translation>Stabilità</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Eigenvalues of a bicycle model against speed, its modes named and its critical speeds marked</source>
+        <translation>Autovalori di un modello di bicicletta in funzione della velocità, con i modi nominati e le velocità critiche segnate</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Mesh Editor</source>
         <translation>Editor della mesh</translation>
     </message>
@@ -117,7 +127,7 @@
         <translation>Identifica i modi su un diagramma di stabilizzazione</translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="-160"/>
         <source>Could not read the FRF set: %1</source>
         <translation>Impossibile leggere l&apos;insieme di FRF: %1</translation>
     </message>
@@ -4737,6 +4747,100 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <location filename="../views/scene/scene_view.cpp" line="+632"/>
         <source>|u|</source>
         <translation>|u|</translation>
+    </message>
+</context>
+<context>
+    <name>mozzi::views::StabilityPage</name>
+    <message>
+        <location filename="../views/stability/stability_page.cpp" line="+131"/>
+        <source>Computing the eigenvalues against speed...</source>
+        <translation>Calcolo degli autovalori in funzione della velocità...</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Stability against speed</source>
+        <translation>Stabilità in funzione della velocità</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Cannot compute: %1</source>
+        <translation>Impossibile calcolare: %1</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>%1 %2 at %3 m/s</source>
+        <translation>%1 %2 a %3 m/s</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 %2 m/s</source>
+        <translation>%1 %2 m/s</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>No real part crosses zero in this speed range.</source>
+        <translation>Nessuna parte reale attraversa lo zero in questo intervallo di velocità.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Critical speeds: %1</source>
+        <translation>Velocità critiche: %1</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Model:</source>
+        <translation>Modello:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Benchmark bicycle (Meijaard et al. 2007)</source>
+        <translation>Bicicletta di riferimento (Meijaard et al. 2007)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Benchmark bicycle, steel fork in bending (thesis §6.5)</source>
+        <translation>Bicicletta di riferimento, forcella d&apos;acciaio flessibile (tesi §6.5)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Benchmark bicycle, steel fork in torsion (thesis §6.4)</source>
+        <translation>Bicicletta di riferimento, forcella d&apos;acciaio torsionale (tesi §6.4)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Speeds from, to, step:</source>
+        <translation>Velocità da, a, passo:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Compute</source>
+        <translation>Calcola</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Real part of the eigenvalues</source>
+        <translation>Parte reale degli autovalori</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+3"/>
+        <source>Speed [m/s]</source>
+        <translation>Velocità [m/s]</translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source>Re λ [1/s]</source>
+        <translation>Re λ [1/s]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Imaginary part (oscillating modes)</source>
+        <translation>Parte immaginaria (modi oscillanti)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Im λ [rad/s]</source>
+        <translation>Im λ [rad/s]</translation>
     </message>
 </context>
 <context>

@@ -26,6 +26,7 @@
 #include "views/rigs/rig_test_page.h"
 #include "views/scene/mode_animation_page.h"
 #include "views/scene/scene_view.h"
+#include "views/stability/stability_page.h"
 
 namespace mozzi {
 namespace app {
@@ -193,6 +194,19 @@ void registerBuiltinPages(views::PageRegistry& registry) {
         return view;
       },
       /*singleton=*/true, /*openAtStart=*/false, nullptr});
+
+  registry.add(PageSpec{QStringLiteral("stability"), QT_TRANSLATE_NOOP("Pages", "Stability"),
+                        QT_TRANSLATE_NOOP("Pages",
+                                          "Eigenvalues of a bicycle model against speed, its modes named and "
+                                          "its critical speeds marked"),
+                        QString(), PageMenu::Tools, nullptr,
+                        [](const PageContext& ctx) -> QWidget* {
+                          auto* page = new views::StabilityPage(ctx.parent, ctx.jobs);
+                          page->setObjectName(QStringLiteral("stabilityTab"));
+                          page->run();  // the benchmark bicycle, 0 to 10 m/s: worth a look at once
+                          return page;
+                        },
+                        /*singleton=*/true, /*openAtStart=*/false, nullptr});
 
   // Mesh editor (views/editors): one tab per specimen.
   registry.add(PageSpec{QStringLiteral("mesh-editor"), QT_TRANSLATE_NOOP("Pages", "Mesh Editor"),

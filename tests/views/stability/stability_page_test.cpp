@@ -1,0 +1,83 @@
+// The stability page on the benchmark bicycle of Meijaard et al. (2007): the
+// weave and capsize speeds it marks must be the published ones (Proc. R. Soc.
+// A 463, Table 2 / §6: v_w = 4.292 382 m/s, v_c = 6.024 262 m/s) to 1e-4 m/s,
+// and the plots must hold the named modes; screenshots for the user guide.
+#include "views/stability/stability_page.h"
+
+#include <qwt_plot.h>
+#include <qwt_plot_curve.h>
+#include <qwt_plot_item.h>
+#include <qwt_plot_marker.h>
+#include <QDir>
+#include <QSignalSpy>
+#include <QtTest>
+
+#include "views/common/job_runner.h"
+
+using mozzi::views::StabilityPage;
+
+class StabilityPageTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void benchmarkBicycleCriticalSpeeds() {
+    mozzi::views::JobRunner jobs;
+    StabilityPage page(nullptr, &jobs);
+    page.resize(1280, 800);
+    page.show();
+    page.setModel(StabilityPage::Model::Benchmark);
+    page.setSpeedRange(0.0, 10.0, 0.05);
+    QSignalSpy finished(&page, &StabilityPage::finished);
+    page.run();
+    QVERIFY(finished.wait(60000));
+    QVERIFY2(finished.first().first().toBool(), qPrintable(page.summaryText()));
+    QVERIFY(page.sweep().has_value());
+    const auto weave = page.sweep()->criticalSpeed("weave");
+    const auto capsize = page.sweep()->criticalSpeed("capsize");
+    QVERIFY(weave && capsize);
+    QVERIFY2(std::abs(*weave - 4.292382) < 1e-4, qPrintable(QString::number(*weave, 'f', 6)));
+    QVERIFY2(std::abs(*capsize - 6.024262) < 1e-4, qPrintable(QString::number(*capsize, 'f', 6)));
+    QVERIFY2(page.summaryText().contains(QStringLiteral("weave stabilises at 4.2924 m/s")),
+             qPrintable(page.summaryText()));
+    QVERIFY2(page.summaryText().contains(QStringLiteral("capsize destabilises at 6.0243 m/s")),
+             qPrintable(page.summaryText()));
+    QStringList names;
+    for (QwtPlotItem* item : page.realPlot()->itemList(QwtPlotItem::Rtti_PlotCurve)) names << item->title().text();
+    for (const char* mode : {"weave", "capsize", "castering"}) QVERIFY2(names.contains(QLatin1String(mode)), mode);
+    int verticals = 0;
+    for (QwtPlotItem* item : page.realPlot()->itemList(QwtPlotItem::Rtti_PlotMarker))
+      verticals += static_cast<QwtPlotMarker*>(item)->lineStyle() == QwtPlotMarker::VLine;
+    QCOMPARE(verticals, 2);
+    shot(page, QStringLiteral("stability_benchmark"));
+  }
+
+  void compliantForkAddsItsMode() {
+    StabilityPage page(nullptr, nullptr);  // no job runner: computed at once
+    page.resize(1280, 800);
+    page.show();
+    page.setModel(StabilityPage::Model::ForkBending);
+    page.setSpeedRange(0.0, 10.0, 0.1);
+    page.run();
+    QVERIFY(page.sweep().has_value());
+    QStringList names;
+    for (QwtPlotItem* item : page.imaginaryPlot()->itemList(QwtPlotItem::Rtti_PlotCurve)) names << item->title().text();
+    QVERIFY2(names.contains(QStringLiteral("fork bending")), qPrintable(names.join(QStringLiteral(", "))));
+    shot(page, QStringLiteral("stability_fork_bending"));
+    // A bad range is said, not computed.
+    page.setSpeedRange(5.0, 1.0, 0.1);
+    page.run();
+    QVERIFY(!page.sweep().has_value());
+    QVERIFY2(page.summaryText().contains(QStringLiteral("B must not be below A")), qPrintable(page.summaryText()));
+  }
+
+ private:
+  void shot(QWidget& w, const QString& name) {
+    const QDir dir(qEnvironmentVariable("MOZZI_SCREENSHOT_DIR", QDir::tempPath()));
+    QDir().mkpath(dir.path());
+    const QString scale = qEnvironmentVariable("QT_SCALE_FACTOR");
+    const QString file = scale.isEmpty() || scale == QLatin1String("1") ? name : name + QStringLiteral("_x") + scale;
+    QVERIFY(w.grab().save(dir.filePath(file + QStringLiteral(".png"))));
+  }
+};
+
+QTEST_MAIN(StabilityPageTest)
+#include "stability_page_test.moc"
