@@ -3,7 +3,6 @@
 #include <qwt_legend.h>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
-#include <qwt_plot_grid.h>
 #include <QComboBox>
 #include <QEvent>
 #include <QHBoxLayout>
@@ -15,7 +14,7 @@
 #include "core/common/dof.h"
 #include "core/signal/window.h"
 #include "devices/campaign/campaign_store.h"
-#include "views/plots/plot_export.h"
+#include "views/plots/interactive_plot.h"
 
 namespace mozzi {
 namespace views {
@@ -50,19 +49,14 @@ HitTimeView::HitTimeView(QWidget* parent) : QWidget(parent) {
   status_ = new QLabel(this);
   status_->setObjectName(QStringLiteral("hitTimeStatus"));
   status_->setWordWrap(true);
-  plot_ = new QwtPlot(this);
+  plot_ = new InteractivePlot(this);  // the workbench's plot: grid, cursor, zoom, pan, export
   plot_->setObjectName(QStringLiteral("hitTimePlot"));
-  plot_->setCanvasBackground(Qt::white);
   plot_->enableAxis(QwtPlot::yRight, true);
-  auto* grid = new QwtPlotGrid;
-  grid->setMajorPen(QColor(0, 0, 0, 40), 0.0, Qt::DotLine);
-  grid->attach(plot_);
   force_ = makeCurve(plot_, QColor(29, 53, 87), 1.2, Qt::SolidLine, QwtPlot::yLeft);
   response_ = makeCurve(plot_, QColor(230, 57, 70), 1.0, Qt::SolidLine, QwtPlot::yRight);
   forceWindow_ = makeCurve(plot_, QColor(29, 53, 87), 1.5, Qt::DashLine, QwtPlot::yLeft);
   responseWindow_ = makeCurve(plot_, QColor(230, 57, 70), 1.5, Qt::DashLine, QwtPlot::yRight);
   plot_->insertLegend(new QwtLegend, QwtPlot::TopLegend);
-  installPlotExportAction(plot_);
 
   auto* bar = new QHBoxLayout;
   bar->addWidget(hitLabel_);
@@ -200,10 +194,8 @@ void HitTimeView::redraw() {
                        .arg(n)
                        .arg(fs, 0, 'g', 6)
                        .arg(verdict, windows));
-  plot_->setAxisAutoScale(QwtPlot::xBottom);
-  plot_->setAxisAutoScale(QwtPlot::yLeft);
   plot_->setAxisAutoScale(QwtPlot::yRight);
-  plot_->replot();
+  static_cast<InteractivePlot*>(plot_)->autoscale();  // x and the force axis; the response axis by Qwt
 }
 
 void HitTimeView::changeEvent(QEvent* event) {

@@ -57,7 +57,7 @@ class HitTimeView : public QWidget {
   QLabel* hitLabel_ = nullptr;
   QLabel* responseLabel_ = nullptr;
   QLabel* status_ = nullptr;
-  QwtPlot* plot_ = nullptr;
+  QwtPlot* plot_ = nullptr;  // an InteractivePlot
   QwtPlotCurve* force_ = nullptr;
   QwtPlotCurve* response_ = nullptr;
   QwtPlotCurve* forceWindow_ = nullptr;

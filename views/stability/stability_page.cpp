@@ -3,7 +3,6 @@
 #include <qwt_legend.h>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
-#include <qwt_plot_grid.h>
 #include <qwt_plot_marker.h>
 #include <qwt_symbol.h>
 #include <qwt_text.h>
@@ -21,7 +20,7 @@
 #include "core/stability/benchmark_bicycle.h"
 #include "core/stability/compliant_fork_bicycle.h"
 #include "views/common/job_runner.h"
-#include "views/plots/plot_export.h"
+#include "views/plots/interactive_plot.h"
 
 namespace mozzi {
 namespace views {
@@ -50,14 +49,10 @@ core::Result<st::StabilitySweep> sweepOf(StabilityPage::Model model, const std::
   return st::sweepSpeeds(st::bicycleSystem(*m), speeds);
 }
 
-QwtPlot* makePlot(QWidget* parent, const char* objectName) {
-  auto* plot = new QwtPlot(parent);
+// The workbench's plot (grid, cursor, zoom, pan, export).
+InteractivePlot* makePlot(QWidget* parent, const char* objectName) {
+  auto* plot = new InteractivePlot(parent);
   plot->setObjectName(QString::fromLatin1(objectName));
-  plot->setCanvasBackground(Qt::white);
-  auto* grid = new QwtPlotGrid;
-  grid->setMajorPen(QColor(0, 0, 0, 40), 0.0, Qt::DotLine);
-  grid->attach(plot);
-  installPlotExportAction(plot);
   return plot;
 }
 
@@ -141,10 +136,12 @@ void StabilityPage::run() {
 
 void StabilityPage::present(core::Result<st::StabilitySweep> result) {
   runButton_->setEnabled(true);
-  for (QwtPlot* plot : {real_, imaginary_}) {
-    plot->detachItems(QwtPlotItem::Rtti_PlotCurve, true);
-    plot->detachItems(QwtPlotItem::Rtti_PlotMarker, true);
+  for (QwtPlot* plot : {real_, imaginary_}) plot->detachItems(QwtPlotItem::Rtti_PlotCurve, true);
+  for (QwtPlotMarker* m : markers_) {  // ours only: the plots' cursors stay
+    m->detach();
+    delete m;
   }
+  markers_.clear();
   if (!result) {
     sweep_.reset();
     summary_->setText(tr("Cannot compute: %1").arg(QString::fromStdString(result.error().describe())));
@@ -183,6 +180,7 @@ void StabilityPage::present(core::Result<st::StabilitySweep> result) {
   zero->setYValue(0.0);
   zero->setLinePen(QColor(0, 0, 0), 1.0);
   zero->attach(real_);
+  markers_.push_back(zero);
   QStringList lines;
   for (const auto& e : sweep_->events) {
     if (e.kind != "stabilises" && e.kind != "destabilises") continue;
@@ -205,6 +203,7 @@ void StabilityPage::present(core::Result<st::StabilitySweep> result) {
         m->setLabelAlignment(Qt::AlignRight | (lines.size() % 2 ? Qt::AlignTop : Qt::AlignBottom));
       }
       m->attach(plot);
+      markers_.push_back(m);
     }
   }
   // Re from -15 1/s up: the question is the sign near zero; castering and

@@ -19,6 +19,7 @@ class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
 class QwtPlot;
+class QwtPlotMarker;
 
 namespace mozzi {
 namespace views {
@@ -64,6 +65,7 @@ class StabilityPage : public QWidget {
   QLabel* summary_ = nullptr;
   QwtPlot* real_ = nullptr;
   QwtPlot* imaginary_ = nullptr;
+  std::vector<QwtPlotMarker*> markers_;  // the zero line and the critical speeds
 };
 
 }  // namespace views
