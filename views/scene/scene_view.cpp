@@ -29,6 +29,7 @@
 #include <QEvent>
 #include <QMouseEvent>
 #include <QSurfaceFormat>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -402,7 +403,16 @@ void SceneView::setHitMarker(std::optional<int> label, const core::Vector3& stri
       p.hitArrowActor->VisibilityOn();
     }
   }
-  render();
+  // In an event of its own: the marker moves when a point is done, in the
+  // same slot as the page's table, log and FRF updates; rendering there too
+  // would lengthen that one GUI-thread stall (software OpenGL under load).
+  if (!renderPending_) {
+    renderPending_ = true;
+    QTimer::singleShot(0, this, [this] {
+      renderPending_ = false;
+      render();
+    });
+  }
 }
 
 void SceneView::setLabelsVisible(bool visible) {

@@ -124,6 +124,7 @@ class SceneView : public QWidget {
   std::vector<int> labels_;  // node label per mesh point
   std::vector<int> selected_;
   std::optional<int> hitMarker_;
+  bool renderPending_ = false;  // a deferred render of the hit marker is queued
   // Shape state: base points and the two parts of the shape, split once.
   core::geometry::NodePoints base_, re_, im_;
   core::geometry::NodeDisplacements shape_;
