@@ -145,14 +145,15 @@ Eigen::Index nearestSample(const VectorRef& x, double value) {
   return value - x[k - 1] <= x[k] - value ? k - 1 : k;
 }
 
-AxisRange dataRange(const VectorRef& x, const VectorRef& y, double xLo, double xHi, bool logarithmicY, double margin) {
+AxisRange dataRange(const VectorRef& x, const VectorRef& y, double xLo, double xHi, bool logarithmicY, double margin,
+                    double floor) {
   if (xLo > xHi) std::swap(xLo, xHi);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   const Eigen::Index n = std::min(x.size(), y.size());
   for (Eigen::Index k = 0; k < n; ++k) {
     if (x[k] < xLo || x[k] > xHi || !std::isfinite(y[k])) continue;
     if (logarithmicY && !(y[k] > 0.0)) continue;
-    if (y[k] <= kMagnitudeFloorDb) continue;
+    if (y[k] <= floor) continue;
     lo = std::min(lo, y[k]);
     hi = std::max(hi, y[k]);
   }

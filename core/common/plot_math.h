@@ -5,6 +5,8 @@
 
 #include <vector>
 
+#include <limits>
+
 #include "core/common/eigen_types.h"
 
 namespace mozzi::core {
@@ -65,11 +67,11 @@ Eigen::Index nearestSample(const VectorRef& x, double value);
 
 // Range of the finite y whose x lies in [xLo, xHi] (on a logarithmic axis only
 // y > 0 count), padded by `margin` of the span on either side (a factor on a
-// logarithmic axis); what autoscale shows. y at kMagnitudeFloorDb or below
-// marks a zero magnitude, not data, and does not count either (a 0 Hz line of
-// zeros would otherwise stretch a dB axis down to -400). Empty selection:
-// {0, 1}, or {1, 10}.
+// logarithmic axis); what autoscale shows. y at `floor` or below does not
+// count either: a magnitude in dB passes kMagnitudeFloorDb, the value of a
+// zero magnitude, which would stretch the axis down to -400 (a 0 Hz line).
+// Empty selection: {0, 1}, or {1, 10}.
 AxisRange dataRange(const VectorRef& x, const VectorRef& y, double xLo, double xHi, bool logarithmicY,
-                    double margin = 0.05);
+                    double margin = 0.05, double floor = -std::numeric_limits<double>::infinity());
 
 }  // namespace mozzi::core

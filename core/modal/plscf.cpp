@@ -185,7 +185,7 @@ Result<StabilizationDiagram> plscfStabilizationAsGiven(const FrfMatrix& frf, con
   while (k1 < nfAll && frf.frequencyHz[k1] <= opt.bandHighHz) ++k1;
   const Eigen::Index nf = k1 - k0;
   const int n = orders.back();
-  if (nf < 2 * (n + 1)) {
+  if (n > plscfOrderLimit(frf, opt.bandLowHz, opt.bandHighHz)) {
     return makeError(ErrorCode::InvalidArgument,
                      "band " + hz(opt.bandLowHz) + " .. " + hz(opt.bandHighHz) + " holds " + std::to_string(nf) +
                          " lines; order " + std::to_string(n) + " needs at least " + std::to_string(2 * (n + 1)),

@@ -135,20 +135,22 @@ core::Result<CampaignDefinition> virtualSpecimenCampaign(const std::string& key,
 
   // Ranges as after a test hit: twice the largest peak over every hammer point.
   const double pulse = sim::hammerPulseWidthS(0.16, 1.6e6);  // plastic tip, the station's default
-  auto largestPeak = [&](double force) {
-    double peak = 0.0;
-    for (Eigen::Index row : rows)
-      for (Eigen::Index j = 0; j < n; ++j)
-        peak = std::max(peak, peakAccelerationBound(spec->shapes, spec->frequencyHz, spec->zeta, row, j, force, pulse));
-    return peak;
-  };
+  // Each accelerometer's largest peak over every hammer point for a 1 N hit
+  // (the bound is linear in the force).
+  std::vector<double> peakPerNewton(rows.size(), 0.0);
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    for (Eigen::Index j = 0; j < n; ++j)
+      peakPerNewton[k] = std::max(
+          peakPerNewton[k], peakAccelerationBound(spec->shapes, spec->frequencyHz, spec->zeta, rows[k], j, 1.0, pulse));
+  const double largestPerNewton =
+      peakPerNewton.empty() ? 0.0 : *std::max_element(peakPerNewton.begin(), peakPerNewton.end());
   // A light specimen (a bicycle fork) would clip the accelerometers even on
   // the DAQ's widest range at the nominal force: the technician hits softer,
   // until twice the largest peak fits that range.
   double widestVolts = 0.0;
   for (const auto& r : mcc::ranges()) widestVolts = std::max(widestVolts, r.maxVolts);
   double peakForce = o.peakForceN;
-  const double nominalVolts = largestPeak(1.1 * peakForce) * kAccelerometerMvPerMs2 / 1000.0;
+  const double nominalVolts = largestPerNewton * 1.1 * peakForce * kAccelerometerMvPerMs2 / 1000.0;
   if (2.0 * nominalVolts > widestVolts) peakForce *= widestVolts / (2.0 * nominalVolts);
   const double hitPeak = 1.1 * peakForce;         // the hand varies +/-10%
   d.acquisition.triggerLevel = 0.05 * peakForce;  // far above the 0.05 N force noise
@@ -163,10 +165,7 @@ core::Result<CampaignDefinition> virtualSpecimenCampaign(const std::string& key,
   hammer.roving = true;
   d.channels.push_back(hammer);
   for (std::size_t k = 0; k < rows.size(); ++k) {
-    double peak = 0.0;
-    for (Eigen::Index j = 0; j < n; ++j)
-      peak = std::max(peak,
-                      peakAccelerationBound(spec->shapes, spec->frequencyHz, spec->zeta, rows[k], j, hitPeak, pulse));
+    const double peak = peakPerNewton[k] * hitPeak;
     ChannelAssignment a;
     a.input = static_cast<int>(k) + 1;
     a.dof = spec->dofs[static_cast<std::size_t>(rows[k])];

@@ -34,6 +34,7 @@
 #include "devices/common/driver.h"
 #include "views/campaign/campaign_session.h"
 #include "views/campaign/campaign_wizard.h"
+#include "views/common/dof_text.h"
 #include "views/plots/frf_plot.h"
 #include "views/plots/interactive_plot.h"
 #include "views/plots/plot_export.h"
@@ -72,10 +73,6 @@ void setAxisText(QwtPlot* plot, int axis, const QString& text) {
   f.setBold(false);
   title.setFont(f);
   plot->setAxisTitle(axis, title);
-}
-
-QString dofText(const core::Dof& dof) {
-  return QString::fromStdString(core::formatDof(dof));
 }
 
 std::shared_ptr<const core::Vector> column(const std::vector<std::shared_ptr<const core::Matrix>>& blocks,
@@ -454,29 +451,28 @@ void HammerStationPage::showSpecimenMesh() {
     return;
   }
   scene_->showMesh(*mesh, *positions);
-  sceneMesh_ = std::move(mesh);
+  sceneMesh_.emplace();
+  sceneMesh_->mesh = std::move(*mesh);
   updateHitMarker();
 }
 
 void HammerStationPage::updateHitMarker() {
-  if (!sceneMesh_ || !current_ || !lastProgress_ || *current_ < 0 ||
-      *current_ >= static_cast<int>(lastProgress_->points.size())) {
+  const std::optional<int> current = lastProgress_ ? lastProgress_->current : std::nullopt;
+  if (!sceneMesh_ || !current || *current < 0 || *current >= static_cast<int>(lastProgress_->points.size())) {
     scene_->setHitMarker(std::nullopt);
     return;
   }
-  const core::Dof dof = lastProgress_->points[static_cast<std::size_t>(*current_)].dof;
+  const core::Dof dof = lastProgress_->points[static_cast<std::size_t>(*current)].dof;
   // The DOF's direction in global axes: the shape of a unit value at that DOF
   // alone (core/geometry/mode_shape.h resolves the node's displacement system).
   core::Vector3 strike = core::Vector3::Zero();
-  core::io::MeshDocument document;
-  document.mesh = *sceneMesh_;
   core::geometry::FieldOptions alone;
   alone.interpolate = false;
-  auto field = core::geometry::shapeField(document, {dof}, core::ComplexVector::Ones(1), alone);
+  auto field = core::geometry::shapeField(*sceneMesh_, {dof}, core::ComplexVector::Ones(1), alone);
   if (field) {
-    for (std::size_t i = 0; i < sceneMesh_->nodes.size(); ++i)
-      if (sceneMesh_->nodes[i].label == dof.node)
-        strike = field->u.row(static_cast<Eigen::Index>(i)).real().transpose();
+    const auto& nodes = sceneMesh_->mesh.nodes;
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      if (nodes[i].label == dof.node) strike = field->u.row(static_cast<Eigen::Index>(i)).real().transpose();
   }
   scene_->setHitMarker(dof.node, strike);
 }

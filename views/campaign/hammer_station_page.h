@@ -21,7 +21,7 @@
 #include <QWidget>
 #include <optional>
 
-#include "core/io/project_records.h"
+#include "core/io/mesh_document.h"
 #include "devices/campaign/campaign_engine.h"
 #include "views/common/page_registry.h"
 
@@ -130,7 +130,7 @@ class HammerStationPage : public QWidget {
   QTableWidget* points_ = nullptr;
   SceneView* scene_ = nullptr;
   qint64 sceneSpecimen_ = 0;
-  std::optional<core::io::StoredMesh> sceneMesh_;
+  std::optional<core::io::MeshDocument> sceneMesh_;  // shown, for the DOF directions
   QLineEdit* skipReason_ = nullptr;
   QListWidget* log_ = nullptr;
   QTimer* refresh_ = nullptr;

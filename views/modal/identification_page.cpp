@@ -26,6 +26,7 @@
 #include "core/modal/mode_merging.h"
 #include "core/modal/shape_tools.h"
 #include "devices/campaign/frf_set_window.h"
+#include "views/common/dof_text.h"
 #include "views/common/job_runner.h"
 #include "views/common/project_model.h"
 #include "views/plots/decimating_curve.h"
@@ -40,10 +41,6 @@ namespace md = core::modal;
 using identification::Method;
 
 namespace {
-
-QString dofText(const core::Dof& d) {
-  return QString::fromStdString(core::formatDof(d));
-}
 
 // CPU time of the calling thread [ms].
 double threadCpuMs() {

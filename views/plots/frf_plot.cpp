@@ -14,9 +14,11 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/common/plot_math.h"
 #include "core/modal/shape_tools.h"
+#include "views/common/dof_text.h"
 #include "views/plots/decimating_curve.h"
 #include "views/plots/interactive_plot.h"
 
@@ -43,28 +45,6 @@ DecimatingCurve* addCurve(QwtPlot* plot, const QString& title, std::shared_ptr<c
   curve->setVectors(std::move(x), std::move(y));
   curve->attach(plot);
   return curve;
-}
-
-QString dofText(const core::Dof& d) {
-  return QString::fromStdString(core::formatDof(d));
-}
-
-// Stacked plots share their x axis: their left axes get the width of the
-// widest, so the canvases, the ticks and the cursor line up.
-void alignLeftAxes(const std::vector<QwtPlot*>& plots) {
-  double extent = 0.0;
-  for (QwtPlot* p : plots) {
-    QwtScaleWidget* w = p->axisWidget(QwtPlot::yLeft);
-    w->scaleDraw()->setMinimumExtent(0.0);
-    if (!p->isHidden()) extent = std::max(extent, w->scaleDraw()->extent(w->font()));
-  }
-  for (QwtPlot* p : plots) {
-    QwtScaleWidget* w = p->axisWidget(QwtPlot::yLeft);
-    if (w->scaleDraw()->minimumExtent() == extent) continue;
-    w->scaleDraw()->setMinimumExtent(extent);
-    w->updateGeometry();
-    p->updateLayout();
-  }
 }
 
 // Nyquist: one unit per pixel on both axes, so a mode's circle is a circle;
@@ -384,12 +364,12 @@ void FrfPlot::redraw(bool keepX) {
   const bool hasCoherence = frfs_ && !frfs_->coherence.empty();
   secondary_->setVisible(view_ == View::Bode || view_ == View::RealImaginary);
   // Magnitude and coherence together: what a technician judges a point by.
-  const bool coherenceBelow = view_ == View::Bode || view_ == View::Magnitude;
+  const bool coherenceBelow = stacksCoherence();
   coherence_->setVisible(coherenceBelow && hasCoherence);
-  scaleBox_->setEnabled(view_ == View::Bode || view_ == View::Magnitude);
+  scaleBox_->setEnabled(stacksCoherence());
   unwrapBox_->setEnabled(view_ == View::Bode || view_ == View::Phase);
-  cmifBox_->setEnabled(view_ == View::Bode || view_ == View::Magnitude);
-  const bool magnitudeView = view_ == View::Bode || view_ == View::Magnitude;
+  cmifBox_->setEnabled(stacksCoherence());
+  const bool magnitudeView = stacksCoherence();
   const core::FrfView magnitude = magnitudeScale_ == MagnitudeScale::Decibel  ? core::FrfView::MagnitudeDb
                                   : magnitudeScale_ == MagnitudeScale::Linear ? core::FrfView::MagnitudeLinear
                                                                               : core::FrfView::MagnitudeLog;
@@ -404,6 +384,9 @@ void FrfPlot::redraw(bool keepX) {
     case View::Coherence: mainView = core::FrfView::Coherence; break;
   }
   main_->setLogY(magnitudeView && magnitudeScale_ == MagnitudeScale::Logarithmic);
+  main_->setYFloor(magnitudeView && magnitudeScale_ == MagnitudeScale::Decibel
+                       ? core::kMagnitudeFloorDb
+                       : -std::numeric_limits<double>::infinity());
   const bool logX = logFrequency_ && view_ != View::Nyquist;
   for (InteractivePlot* plot : {main_, secondary_, coherence_}) plot->setLogX(logX);
 
@@ -490,7 +473,7 @@ void FrfPlot::autoscale() {
   for (InteractivePlot* plot : {main_, secondary_, coherence_}) plot->autoscale();
   if (view_ == View::Nyquist) equalAspect(main_);
   syncing_ = false;
-  if (view_ == View::Coherence || view_ == View::Bode || view_ == View::Magnitude) {
+  if (view_ == View::Coherence || stacksCoherence()) {
     InteractivePlot* c = view_ == View::Coherence ? main_ : coherence_;
     c->setAxisScale(QwtPlot::yLeft, 0.0, 1.05);
     c->replot();
@@ -505,7 +488,7 @@ void FrfPlot::setFrequencyRange(double lowHz, double highHz) {
     plot->autoscaleY();
   }
   syncing_ = false;
-  if (view_ == View::Coherence || (view_ == View::Bode && !coherence_->isHidden())) {
+  if (view_ == View::Coherence || (stacksCoherence() && !coherence_->isHidden())) {
     InteractivePlot* c = view_ == View::Coherence ? main_ : coherence_;
     c->setAxisScale(QwtPlot::yLeft, 0.0, 1.05);
     c->replot();
@@ -668,9 +651,9 @@ void FrfPlot::retranslate() {
   coherence_->setAxisTitle(QwtPlot::yLeft, tr("Coherence"));
   // Stacked plots share one frequency axis, drawn under the lowest: the
   // height goes to the curves (three plots in a 1280x800 window).
-  const bool coherenceBelow = view_ == View::Bode && !coherence_->isHidden();
+  const bool coherenceBelow = stacksCoherence() && !coherence_->isHidden();
   const bool secondaryBelow = (view_ == View::Bode || view_ == View::RealImaginary) && !secondary_->isHidden();
-  main_->enableAxis(QwtPlot::xBottom, !secondaryBelow);
+  main_->enableAxis(QwtPlot::xBottom, !secondaryBelow && !coherenceBelow);
   secondary_->enableAxis(QwtPlot::xBottom, !coherenceBelow);
 }
 

@@ -79,6 +79,8 @@ class FrfPlot : public QWidget {
 
  private:
   void retranslate();
+  // Views with the magnitude on top and the coherence under it (Bode, Magnitude).
+  bool stacksCoherence() const { return view_ == View::Bode || view_ == View::Magnitude; }
   void rebuildChoices();
   void applyChoices();
   void redraw(bool keepX);

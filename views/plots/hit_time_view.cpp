@@ -10,10 +10,12 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 #include "core/common/dof.h"
 #include "core/signal/window.h"
 #include "devices/campaign/campaign_store.h"
+#include "views/common/dof_text.h"
 #include "views/plots/interactive_plot.h"
 
 namespace mozzi {
@@ -22,10 +24,6 @@ namespace views {
 namespace cp = devices::campaign;
 
 namespace {
-
-QString dofText(const core::Dof& d) {
-  return QString::fromStdString(core::formatDof(d));
-}
 
 QwtPlotCurve* makeCurve(QwtPlot* plot, const QColor& colour, double width, Qt::PenStyle style, int yAxis) {
   auto* c = new QwtPlotCurve;
@@ -75,28 +73,29 @@ HitTimeView::HitTimeView(QWidget* parent) : QWidget(parent) {
 }
 
 core::Result<void> HitTimeView::setFrfSet(const core::io::ProjectStore& store, std::int64_t frfSetId) {
+  const std::string where = "FRF set " + std::to_string(frfSetId);
   auto ids = store.frfSetHits(frfSetId);
   if (!ids) return ids.error();
-  if (ids->empty()) {
-    return core::makeError(core::ErrorCode::NotFound, "the FRF set has no stored hits",
-                           "FRF set " + std::to_string(frfSetId));
-  }
-  auto first = store.hit(ids->front());
-  if (!first) return first.error();
-  auto campaign = cp::loadCampaign(store, first->campaignId);
+  if (ids->empty()) return core::makeError(core::ErrorCode::NotFound, "the FRF set has no stored hits", where);
+  auto sets = store.frfSets();
+  if (!sets) return sets.error();
+  const auto set = std::find_if(sets->begin(), sets->end(), [&](const auto& s) { return s.id == frfSetId; });
+  if (set == sets->end() || !set->campaignId)
+    return core::makeError(core::ErrorCode::NotFound, "the FRF set belongs to no campaign", where);
+  auto campaign = cp::loadCampaign(store, *set->campaignId);
   if (!campaign) return campaign.error();
   store_ = &store;
   hitIds_ = std::move(ids).value();
   definition_ = campaign->definition;
+  std::unordered_map<std::int64_t, const core::io::HitInfo*> info;
+  for (const auto& h : campaign->hits) info[h.id] = &h;
   const QSignalBlocker block(hitBox_);
   hitBox_->clear();
-  auto infos = store.hits(first->campaignId);
   for (const std::int64_t id : hitIds_) {
-    QString text = tr("hit %1").arg(id);
-    if (infos)
-      for (const auto& h : *infos)
-        if (h.id == id) text = tr("hit %1 at %2").arg(h.sequence).arg(dofText(h.point));
-    hitBox_->addItem(text, QVariant::fromValue<qlonglong>(id));
+    const auto it = info.find(id);
+    hitBox_->addItem(it == info.end() ? tr("hit %1").arg(id)
+                                      : tr("hit %1 at %2").arg(it->second->sequence).arg(dofText(it->second->point)),
+                     QVariant::fromValue<qlonglong>(id));
   }
   showHit(0);
   return {};

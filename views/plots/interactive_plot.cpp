@@ -132,7 +132,7 @@ void InteractivePlot::autoscaleY() {
       ys[static_cast<Eigen::Index>(i)] = p.y();
     }
     // Nyquist-like curves (x not a frequency axis) use all their points.
-    const core::AxisRange r = core::dataRange(xs, ys, x.minValue(), x.maxValue(), logY_, 0.0);
+    const core::AxisRange r = core::dataRange(xs, ys, x.minValue(), x.maxValue(), logY_, 0.0, yFloor_);
     if (r.upper < r.lower) continue;
     if ((logY_ && r.lower == 1.0 && r.upper == 10.0) || (!logY_ && r.lower == 0.0 && r.upper == 1.0)) {
       // dataRange's empty-selection answer: count only if the curve has points there.
@@ -234,6 +234,22 @@ bool InteractivePlot::eventFilter(QObject* watched, QEvent* event) {
 void InteractivePlot::emitRange() {
   const QwtInterval x = axisInterval(QwtPlot::xBottom);
   emit xRangeChanged(x.minValue(), x.maxValue());
+}
+
+void alignLeftAxes(const std::vector<QwtPlot*>& plots) {
+  double extent = 0.0;
+  for (QwtPlot* p : plots) {
+    QwtScaleWidget* w = p->axisWidget(QwtPlot::yLeft);
+    w->scaleDraw()->setMinimumExtent(0.0);
+    if (!p->isHidden()) extent = std::max(extent, w->scaleDraw()->extent(w->font()));
+  }
+  for (QwtPlot* p : plots) {
+    QwtScaleWidget* w = p->axisWidget(QwtPlot::yLeft);
+    if (w->scaleDraw()->minimumExtent() == extent) continue;
+    w->scaleDraw()->setMinimumExtent(extent);
+    w->updateGeometry();
+    p->updateLayout();
+  }
 }
 
 }  // namespace views

@@ -7,8 +7,11 @@
 
 #include <qwt_plot.h>
 
+#include <vector>
+
 #include <QPoint>
 #include <QPointF>
+#include <limits>
 #include <optional>
 
 class QwtPlotMarker;
@@ -26,6 +29,9 @@ class InteractivePlot : public QwtPlot {
 
   void setLogX(bool on);
   void setLogY(bool on);
+  // Values at or below `floor` are left out of the y autoscale (a dB axis
+  // passes core::kMagnitudeFloorDb, the value of a zero magnitude).
+  void setYFloor(double floor) { yFloor_ = floor; }
   bool logX() const { return logX_; }
   bool logY() const { return logY_; }
 
@@ -63,12 +69,17 @@ class InteractivePlot : public QwtPlot {
   void emitRange();
 
   bool logX_ = false, logY_ = false, keepX_ = false, cursorOnClick_ = true;
+  double yFloor_ = -std::numeric_limits<double>::infinity();
   std::optional<double> cursor_;
   QwtPlotMarker* cursorMarker_ = nullptr;
   QwtPlotMagnifier* magnifier_ = nullptr;
   QwtPlotPanner* panner_ = nullptr;
   QwtPlotPicker* picker_ = nullptr;
 };
+
+// Stacked plots sharing a frequency or speed axis: their left axes take the
+// widest one's width so the canvases line up (hidden plots do not count).
+void alignLeftAxes(const std::vector<QwtPlot*>& plots);
 
 }  // namespace views
 }  // namespace mozzi

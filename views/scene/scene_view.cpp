@@ -261,9 +261,7 @@ vtkRenderer* SceneView::renderer() const {
 void SceneView::showMesh(const core::io::StoredMesh& mesh, const std::vector<core::Vector3>& globalPositions,
                          bool resetCamera) {
   Pipeline& p = *pipeline_;
-  hitMarker_.reset();  // its node may be gone
-  p.hitNodeActor->VisibilityOff();
-  p.hitArrowActor->VisibilityOff();
+  hideHitMarker();  // its node may be gone
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> vertices;
@@ -365,31 +363,31 @@ void SceneView::setSelectedNodes(const std::vector<int>& labels) {
   render();
 }
 
+void SceneView::hideHitMarker() {
+  hitMarker_.reset();
+  pipeline_->hitNodeActor->VisibilityOff();
+  pipeline_->hitArrowActor->VisibilityOff();
+}
+
 void SceneView::setHitMarker(std::optional<int> label, const core::Vector3& strike) {
   Pipeline& p = *pipeline_;
-  hitMarker_.reset();
-  p.hitNodeActor->VisibilityOff();
-  p.hitArrowActor->VisibilityOff();
+  hideHitMarker();
   vtkPoints* points = p.mesh->GetPoints();
   const auto it = label ? std::find(labels_.begin(), labels_.end(), *label) : labels_.end();
   if (it != labels_.end() && points) {
     hitMarker_ = label;
     double at[3];
     points->GetPoint(static_cast<vtkIdType>(it - labels_.begin()), at);
-    vtkNew<vtkPoints> node;
-    node->InsertNextPoint(at);
+    // One vertex on the mesh's own points, as the selection draws them.
     vtkNew<vtkCellArray> vert;
-    const vtkIdType zero = 0;
-    vert->InsertNextCell(1, &zero);
+    const vtkIdType row = static_cast<vtkIdType>(it - labels_.begin());
+    vert->InsertNextCell(1, &row);
     p.hitNode->Initialize();
-    p.hitNode->SetPoints(node);
+    p.hitNode->SetPoints(points);
     p.hitNode->SetVerts(vert);
     p.hitNodeActor->VisibilityOn();
     // The arrow: a quarter of the mesh's size, so it reads at any scale; its tip on the node.
-    double b[6];
-    p.mesh->GetBounds(b);
-    const double size =
-        std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+    const double size = p.mesh->GetLength();  // the bounding box's diagonal
     const double norm = strike.norm();
     if (norm > 0.0 && size > 0.0) {
       const core::Vector3 v = strike / norm * (size / 4.0);

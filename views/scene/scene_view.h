@@ -107,6 +107,7 @@ class SceneView : public QWidget {
  private:
   void updateColourRange();
   void retranslate();
+  void hideHitMarker();
   // Meshes above this many nodes are drawn for speed (thin lines, plain dots,
   // no dots on the deformed shape, opaque overlay): see applyStyle().
   static constexpr int kLargeMeshNodes = 5000;

@@ -154,7 +154,7 @@ TEST(PlotMath, NearestSampleAndDataRange) {
   // A magnitude in dB with a zero line (its floor): the axis spans the data.
   ComplexVector h(4);
   h << Complex(0.0, 0.0), Complex(0.1, 0.0), Complex(1.0, 0.0), Complex(10.0, 0.0);
-  const AxisRange db = dataRange(x, magnitudeDb(h), 0, 10, false, 0.0);
+  const AxisRange db = dataRange(x, magnitudeDb(h), 0, 10, false, 0.0, kMagnitudeFloorDb);
   EXPECT_DOUBLE_EQ(db.lower, -20.0);
   EXPECT_DOUBLE_EQ(db.upper, 20.0);
 }
