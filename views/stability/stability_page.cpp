@@ -216,6 +216,7 @@ void StabilityPage::present(core::Result<st::StabilitySweep> result) {
   imaginary_->setAxisScale(QwtPlot::xBottom, sweep_->points.front().v, sweep_->points.back().v);
   summary_->setText(lines.isEmpty() ? tr("No real part crosses zero in this speed range.")
                                     : tr("Critical speeds: %1").arg(lines.join(QStringLiteral("; "))));
+  alignLeftAxes({real_, imaginary_});  // one speed axis: the canvases line up
   real_->replot();
   imaginary_->replot();
   emit finished(true);
