@@ -126,13 +126,52 @@ Result<IdentificationResult> reselectModes(const FrfMatrix& frf, StabilizationDi
 
 Result<SelectionFit> fitSelectedPoles(const FrfMatrix& frf, const std::vector<Complex>& poles,
                                       const LsfdOptions& band) {
-  const std::string where = "pole selection fit";
+  auto fitter = SelectionFitter::create(frf, band);
+  if (!fitter) return fitter.error();
+  auto fit = fitter->fit(poles);
+  if (!fit) return fit.error();
+  SelectionFit out;
+  out.model = std::move(fit->model);
+  out.relativeError = fit->relativeError;
+  out.synthesis.frequencyHz = frf.frequencyHz.segment(fitter->firstLine(), fitter->lineCount());
+  out.synthesis.responses = frf.responses;
+  out.synthesis.references = frf.references;
+  out.synthesis.type = frf.type;
+  fitter->synthesis(out.synthesis.h);
+  return out;
+}
+
+namespace {
+// Mode counts whose workspaces a SelectionFitter keeps: a click adds or
+// removes one mode, so the counts alternate; each holds 2 nf x (2 nm + 4)
+// doubles of basis (4 MB for 18,000 lines and five modes) and up to 4 MB of
+// block workspace.
+constexpr std::size_t kKeptWorkspaces = 3;
+}  // namespace
+
+Result<SelectionFitter> SelectionFitter::create(const FrfMatrix& frf, const LsfdOptions& band) {
   if (auto ok = frf.validate(); !ok) return ok.error();
-  if (poles.empty()) return makeError(ErrorCode::InvalidArgument, "no poles selected", where);
+  SelectionFitter f;
+  f.frf_ = &frf;
+  f.band_ = band;
   Eigen::Index k0 = 0;
   while (k0 < frf.lineCount() && (frf.frequencyHz[k0] < band.bandLowHz || frf.frequencyHz[k0] == 0.0)) ++k0;
   Eigen::Index k = k0;
   while (k < frf.lineCount() && frf.frequencyHz[k] <= band.bandHighHz) ++k;
+  f.first_ = k0;
+  f.count_ = k - k0;
+  const Eigen::Index no = frf.responseCount(), ni = frf.referenceCount();
+  f.norm2_.resize(no, ni);
+  for (Eigen::Index i = 0; i < ni; ++i)
+    for (Eigen::Index o = 0; o < no; ++o)
+      f.norm2_(o, i) = frf.h[static_cast<std::size_t>(i)].col(o).segment(k0, f.count_).squaredNorm();
+  return f;
+}
+
+Result<PoleSetFit> SelectionFitter::fit(const std::vector<Complex>& poles) {
+  const std::string where = "pole selection fit";
+  lastValid_ = false;
+  if (poles.empty()) return makeError(ErrorCode::InvalidArgument, "no poles selected", where);
   const int nm = static_cast<int>(poles.size());
   Vector theta(2 * nm);
   for (int r = 0; r < nm; ++r) {
@@ -144,21 +183,54 @@ Result<SelectionFit> fitSelectedPoles(const FrfMatrix& frf, const std::vector<Co
     theta[2 * r] = poleFrequencyHz(l);
     theta[2 * r + 1] = poleZeta(l);
   }
-  auto vp = ModalVarpro::create(frf, {LineSegment{k0, k - k0}}, nm, band.lowerResidual, band.upperResidual, false);
-  if (!vp) return makeError(vp.error().code, vp.error().message, where + ", band");
-  if (!vp->evaluate(theta, false)) {
+  // The workspace of this mode count, moved to the back (created when new).
+  auto it =
+      std::find_if(workspaces_.begin(), workspaces_.end(), [nm](const ModalVarpro& v) { return v.modeCount() == nm; });
+  if (it != workspaces_.end()) {
+    std::rotate(it, it + 1, workspaces_.end());
+  } else {
+    auto vp =
+        ModalVarpro::create(*frf_, {LineSegment{first_, count_}}, nm, band_.lowerResidual, band_.upperResidual, false);
+    if (!vp) return makeError(vp.error().code, vp.error().message, where + ", band");
+    if (workspaces_.size() >= kKeptWorkspaces) workspaces_.erase(workspaces_.begin());
+    workspaces_.push_back(std::move(vp).value());
+  }
+  ModalVarpro& vp = workspaces_.back();
+  if (!vp.evaluate(theta, false)) {
     return makeError(ErrorCode::NumericalFailure, "basis is rank deficient: duplicate poles or too narrow a band",
                      where);
   }
-  SelectionFit out;
-  out.model = modalModelFromLinear(*vp, frf, poles);
-  out.relativeError = std::sqrt(vp->explicitSsr() / vp->dataNorm2());
-  out.synthesis.frequencyHz = frf.frequencyHz.segment(k0, k - k0);
-  out.synthesis.responses = frf.responses;
-  out.synthesis.references = frf.references;
-  out.synthesis.type = frf.type;
-  vp->modelValues(out.synthesis.h);
+  // |H - H_model|^2 per FRF from the explicit residual: Q Z subtracted from
+  // the data, not ||Z||^2 from ||Y||^2 (that loses most digits, or all, on
+  // an almost exact fit).
+  Vector ssr;
+  vp.explicitSsrPerFrf(ssr);
+  PoleSetFit out;
+  out.model = modalModelFromLinear(vp, *frf_, poles);
+  const Eigen::Index no = norm2_.rows(), ni = norm2_.cols();
+  out.residual.resize(no, ni);
+  for (Eigen::Index i = 0; i < ni; ++i) {
+    for (Eigen::Index o = 0; o < no; ++o) {
+      const double den = norm2_(o, i);
+      out.residual(o, i) = den > 0.0 ? std::sqrt(ssr[i * no + o] / den) : 0.0;
+    }
+  }
+  out.relativeError = std::sqrt(ssr.sum() / vp.dataNorm2());
+  lastValid_ = true;
   return out;
+}
+
+bool SelectionFitter::synthesis(Eigen::Index response, Eigen::Index reference, ComplexVector& out) const {
+  if (!lastValid_ || response < 0 || response >= norm2_.rows() || reference < 0 || reference >= norm2_.cols())
+    return false;
+  workspaces_.back().modelValues(response, reference, out);
+  return true;
+}
+
+bool SelectionFitter::synthesis(std::vector<ComplexMatrix>& out) const {
+  if (!lastValid_) return false;
+  workspaces_.back().modelValues(out);
+  return true;
 }
 
 }  // namespace mozzi::core::modal

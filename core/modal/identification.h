@@ -6,7 +6,8 @@
 //   standard errors), with progress and cancel.
 // After a click in the stabilization diagram, without re-running the diagram:
 // fitSelectedPoles (LSFD residues and the synthesised FRFs for a pole set,
-// the preview: 34 ms on the ModeLAB beam) and reselectModes (the same result
+// the preview: 34 ms on the ModeLAB beam; SelectionFitter, the same fit for
+// repeated clicks on one band, synthesising only the FRFs shown) and reselectModes (the same result
 // as identifyModes for a selection of diagram poles, refinement and standard
 // errors included). Figures: docs/performance/commands.md.
 
@@ -21,6 +22,7 @@
 #include "core/modal/modal_model.h"
 #include "core/modal/plscf.h"
 #include "core/modal/refine.h"
+#include "core/modal/varpro.h"
 
 namespace mozzi::core::modal {
 
@@ -85,8 +87,58 @@ struct SelectionFit {
 };
 
 // LSFD and synthesis for a pole set the user chose (a pole clicked in the
-// stabilization diagram added or removed): one QR of the basis and two
-// products over the band's data. Errors: as lsfd().
+// stabilization diagram added or removed): one QR of the basis and three
+// products over the band's data (Q^T Y, the residual, the synthesis of every
+// FRF). Errors: as lsfd(). A page that plots one FRF uses SelectionFitter.
 Result<SelectionFit> fitSelectedPoles(const FrfMatrix& frf, const std::vector<Complex>& poles, const LsfdOptions& band);
+
+// What a pole click needs (the identification page), without the synthesis
+// of every FRF.
+struct PoleSetFit {
+  ModalModel model;  // LSFD residues and residual terms for the chosen poles, in the order given
+  // Relative residual per FRF (no x ni): sqrt(sum |H - H_model|^2 / sum |H|^2)
+  // over the band's lines; 0 for an FRF that is zero there.
+  Matrix residual;
+  double relativeError = 0.0;  // the same over every FRF (fitSelectedPoles' relativeError)
+};
+
+// The fit behind pole clicks on one band of one FRF set: fitSelectedPoles'
+// numbers, with what does not depend on the poles done once (the band's
+// lines, sum |H|^2 per FRF) and the workspaces of the last few mode counts
+// kept, so that a click allocates nothing of the data's size. A fit is one
+// QR of the basis and two products over the band's data (Q^T Y; the residual
+// R = Y - Q Z per block of lines); the model's FRFs are computed only for the
+// FRFs asked for afterwards. On 100 FRFs x 18,000 lines that is about half
+// of fitSelectedPoles' work (docs/performance/workbench-plots.md).
+class SelectionFitter {
+ public:
+  // `frf` must outlive the fitter (nothing is copied). Errors: frf.validate()'s.
+  static Result<SelectionFitter> create(const FrfMatrix& frf, const LsfdOptions& band);
+
+  // Errors: as fitSelectedPoles (no pole, a pole not admissible, too few
+  // lines in the band, rank-deficient basis).
+  Result<PoleSetFit> fit(const std::vector<Complex>& poles);
+
+  // The last successful fit's model on the band's lines (Phi X = Q Z, as
+  // fitSelectedPoles' synthesis): one FRF, or every FRF (one nf x no matrix
+  // per reference). False (and `out` untouched) when there is no such fit.
+  bool synthesis(Eigen::Index response, Eigen::Index reference, ComplexVector& out) const;
+  bool synthesis(std::vector<ComplexMatrix>& out) const;
+
+  // The band's lines: frf.frequencyHz[firstLine() .. firstLine() + lineCount()).
+  Eigen::Index firstLine() const { return first_; }
+  Eigen::Index lineCount() const { return count_; }
+
+ private:
+  SelectionFitter() = default;
+  const FrfMatrix* frf_ = nullptr;
+  LsfdOptions band_;
+  Eigen::Index first_ = 0, count_ = 0;
+  Matrix norm2_;  // sum |H|^2 over the band's lines, per FRF (no x ni)
+  // Evaluators by mode count, the last used (the last fit's when
+  // lastValid_) at the back; at most kKeptWorkspaces.
+  std::vector<ModalVarpro> workspaces_;
+  bool lastValid_ = false;
+};
 
 }  // namespace mozzi::core::modal

@@ -55,6 +55,7 @@ Result<ModalVarpro> ModalVarpro::create(const FrfMatrix& frf, std::vector<LineSe
                      where + ", band");
   }
   const int n = frfTypeOrder(frf.type);
+  v.modeTerms_.resize(static_cast<std::size_t>(modes));
   v.omega_.resize(v.nf_);
   v.fn_.resize(v.nf_);
   v.fl_.resize(v.nf_);
@@ -82,7 +83,11 @@ Result<ModalVarpro> ModalVarpro::create(const FrfMatrix& frf, std::vector<LineSe
   v.gram_.resize(v.p_, v.p_);
   v.llt_ = Eigen::LLT<Matrix>(v.p_);
   v.hWork_.resize(v.p_ + nd);
-  v.rWork_.resize(rows);
+  // Blocks of at most about 4 MB of model values (Q Z, rows x no): few
+  // matrix products (each sets up its own packing), none of the data's size.
+  const Eigen::Index blockRows = std::min<Eigen::Index>(
+      rows, std::max<Eigen::Index>(256, (Eigen::Index{1} << 19) / std::max<Eigen::Index>(1, v.no_)));
+  v.blockWork_.resize(blockRows, v.no_);
   v.w_.resize(v.p_ + nd, v.m_);
   v.x_.resize(v.p_, v.m_);
   v.colNorm_.resize(v.p_);
@@ -111,14 +116,21 @@ bool ModalVarpro::fillBasis(const Eigen::Ref<const Vector>& theta, bool withDeri
     if (!(f > 0.0) || !(z > 0.0) || !(z < 1.0) || !std::isfinite(f)) return false;
   }
   const Complex i1(0.0, 1.0);
+  // Per mode, once (the same expressions as per line: the same numbers).
+  modeTerms_.resize(static_cast<std::size_t>(nm_));
+  for (int r = 0; r < nm_; ++r) {
+    const double f = theta[2 * r], z = theta[2 * r + 1];
+    const double wn = kTwoPi * f, s = std::sqrt(1.0 - z * z);
+    modeTerms_[static_cast<std::size_t>(r)] = {wn, s, z * wn, wn * s};  // lambda = -sigma + i wd
+  }
   for (Eigen::Index k = 0; k < nf_; ++k) {
     const double w = omega_[k];
     const Complex fn = fn_[k];
     const Eigen::Index row = 2 * k;
     for (int r = 0; r < nm_; ++r) {
-      const double f = theta[2 * r], z = theta[2 * r + 1];
-      const double wn = kTwoPi * f, s = std::sqrt(1.0 - z * z);
-      const double sigma = z * wn, wd = wn * s;  // lambda = -sigma + i wd
+      const double z = theta[2 * r + 1];
+      const auto& m = modeTerms_[static_cast<std::size_t>(r)];
+      const double wn = m.wn, s = m.s, sigma = m.sigma, wd = m.wd;
       // a = 1/(i w - lambda) = 1/(sigma + i (w - wd)), b = 1/(sigma + i (w + wd))
       const double d1 = w - wd, d2 = w + wd;
       const double n1 = 1.0 / (sigma * sigma + d1 * d1), n2 = 1.0 / (sigma * sigma + d2 * d2);
@@ -284,22 +296,40 @@ void ModalVarpro::modelValues(std::vector<ComplexMatrix>& out) const {
   }
 }
 
+void ModalVarpro::modelValues(Eigen::Index response, Eigen::Index reference, ComplexVector& out) const {
+  out.resize(nf_);
+  // Phi x_c = Q z_c
+  Eigen::Map<Vector>(reinterpret_cast<double*>(out.data()), 2 * nf_).noalias() =
+      a_.leftCols(p_) * w_.topRows(p_).col(reference * no_ + response);
+}
+
 double ModalVarpro::explicitSsr() {
-  double ssr = 0.0;
+  Vector perFrf;
+  explicitSsrPerFrf(perFrf);
+  return perFrf.sum();
+}
+
+void ModalVarpro::explicitSsrPerFrf(Vector& out) {
+  out.setZero(m_);
   const auto q = a_.leftCols(p_);
   const auto z = w_.topRows(p_);
+  const Eigen::Index block = blockWork_.rows();
   for (std::size_t s = 0; s < segments_.size(); ++s) {
-    const auto qRows = q.middleRows(segmentRow_[s], 2 * segments_[s].count);
+    const Eigen::Index rows = 2 * segments_[s].count;
     for (Eigen::Index i = 0; i < ni_; ++i) {
-      // column by column to keep the temporary small
       const auto y = ySegment(s, i);
-      for (Eigen::Index o = 0; o < no_; ++o) {
-        rWork_.head(y.rows()).noalias() = qRows * z.col(i * no_ + o);
-        ssr += (y.col(o) - rWork_.head(y.rows())).squaredNorm();
+      const auto zi = z.middleCols(i * no_, no_);
+      for (Eigen::Index r0 = 0; r0 < rows; r0 += block) {
+        // R = Y - Q Z on rows r0 .. r0 + b of the segment (the product
+        // subtracted in place), then |R|^2 per column.
+        const Eigen::Index b = std::min(block, rows - r0);
+        auto work = blockWork_.topRows(b);
+        work = y.middleRows(r0, b);
+        work.noalias() -= q.middleRows(segmentRow_[s] + r0, b) * zi;
+        out.segment(i * no_, no_) += work.colwise().squaredNorm().transpose();
       }
     }
   }
-  return ssr;
 }
 
 void ModalVarpro::denseResidual(const Eigen::Ref<const Vector>& theta, Vector& r, Matrix* jGp, Matrix* jK) {

@@ -82,6 +82,10 @@ class ModalVarpro {
   // SSR computed from the explicit residual (one more pass over the data;
   // exact where ssr() loses digits to the subtraction, i.e. almost noise-free data).
   double explicitSsr();
+  // The same per FRF: out[i no + o] = ||Y_c - Phi X_c||^2, c = i no + o (m
+  // values; resized). One pass over the data in blocks of lines (up to about
+  // 4 MB of model values Q Z, one matrix product per block).
+  void explicitSsrPerFrf(Vector& out);
   // Linear parameters X (p x m): rows 2r, 2r+1 = Re, Im of mode r's residue,
   // then Re, Im of the upper residual, then of the lower residual; column
   // i no + o = FRF (response o, reference i).
@@ -89,6 +93,9 @@ class ModalVarpro {
   // The model's FRFs Phi X on the lines, one nf x no matrix per reference
   // (resized as needed; no other allocation).
   void modelValues(std::vector<ComplexMatrix>& out) const;
+  // The model of one FRF (response o, reference i) on the lines, Q z_c with
+  // c = i no + o: a column of modelValues() without the others (resized).
+  void modelValues(Eigen::Index response, Eigen::Index reference, ComplexVector& out) const;
   // With derivatives: J^T r (2 nm), J_GP^T J_GP and J_K^T J_K (2 nm x 2 nm).
   const Vector& gradient() const { return grad_; }
   const Matrix& gaussNewton() const { return jtjGp_; }
@@ -126,12 +133,17 @@ class ModalVarpro {
   ComplexVector fn_, fl_;  // (i w)^n and (i w)^(n-2) per line
   Matrix a_;               // 2 nf x (p + 4 nm): [Phi, E] filled, then [Q, E]
 
+  struct ModeTerms {
+    double wn, s, sigma, wd;  // 2 pi f, sqrt(1 - zeta^2), zeta wn, wn s (lambda = -sigma + i wd)
+  };
+  std::vector<ModeTerms> modeTerms_;  // per mode, of the theta being filled in
+
   Matrix r_;                         // p x p: Phi = Q R
   Matrix rTmp_, gram_;               // p x p
   Eigen::LLT<Matrix> llt_;           // of the Gram matrix (CholeskyQR2)
   Eigen::HouseholderQR<Matrix> qr_;  // fallback for nearly dependent columns, sized when first needed
   Vector hWork_;                     // Householder workspace
-  Vector rWork_;                     // 2 nf: one model column (explicitSsr)
+  Matrix blockWork_;                 // rows of a block x no: model values of a block of lines (explicitSsr)
   Matrix w_;                         // (p + 4 nm) x m: [Z; F]
   Matrix x_;                         // p x m
   Matrix qtE_;                       // p x 4 nm

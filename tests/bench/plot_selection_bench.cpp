@@ -4,7 +4,9 @@
 //  - one frame of the overlay: min/max decimation of 100 curves into 1,280
 //    (and 2,560, QT_SCALE_FACTOR=2) pixel columns; budget 33 ms per frame;
 //  - a pole click: LSFD for the chosen poles, synthesis on the band and the
-//    residual per FRF (the page's fitSelection); budget 50 ms;
+//    residual per FRF: LSFD then synthesis (before session 5), core's one-QR
+//    fitSelectedPoles (session 5), SelectionFitter with the synthesis of the
+//    FRF shown only (session 6, the page's); budget 50 ms;
 //  - the stabilization backdrop: |sum| and the CMIF of the set.
 #include <benchmark/benchmark.h>
 
@@ -13,6 +15,7 @@
 
 #include "core/common/frf_display.h"
 #include "core/common/plot_math.h"
+#include "core/modal/identification.h"
 #include "core/modal/lsfd.h"
 #include "core/modal/modal_model.h"
 #include "core/modal/pole_selection.h"
@@ -97,6 +100,62 @@ void BM_PoleClickRefit(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_PoleClickRefit)->Unit(benchmark::kMillisecond);
+
+// The pole click as the page did it until session 6: core's one-QR fit with
+// the synthesis of every FRF (fitSelectedPoles), the measured FRFs copied
+// onto the band, residualPerFrf over both. Clicks alternate four and five modes.
+void BM_PoleClickFitSelectedPoles(benchmark::State& state) {
+  const FrfMatrix& f = set100x20000();
+  std::vector<Complex> five, four;
+  for (double fn : kModesHz) five.push_back(modal::poleFromFrequencyDamping(fn, 0.01));
+  four = five;
+  four.erase(four.begin() + 2);
+  modal::LsfdOptions o;
+  o.bandLowHz = 50.0;
+  o.bandHighHz = 950.0;
+  bool odd = false;
+  for (auto _ : state) {
+    odd = !odd;
+    auto fit = modal::fitSelectedPoles(f, odd ? four : five, o);
+    const Eigen::Index n = fit->synthesis.lineCount();
+    Eigen::Index a = 0;
+    while (a < f.lineCount() && f.frequencyHz[a] < fit->synthesis.frequencyHz[0]) ++a;
+    FrfMatrix measured;
+    measured.frequencyHz = f.frequencyHz.segment(a, n);
+    measured.responses = f.responses;
+    measured.references = f.references;
+    measured.type = f.type;
+    for (const auto& h : f.h) measured.h.push_back(h.middleRows(a, n));
+    auto residual = modal::residualPerFrf(measured, fit->synthesis, o.bandLowHz, o.bandHighHz);
+    benchmark::DoNotOptimize(residual);
+  }
+}
+BENCHMARK(BM_PoleClickFitSelectedPoles)->Unit(benchmark::kMillisecond);
+
+// The pole click as the page does it (session 6): SelectionFitter made once
+// for the band, then per click the fit (LSFD, residual per FRF) and the
+// synthesis of the one FRF shown. Clicks alternate four and five modes.
+void BM_PoleClickSelectionFitter(benchmark::State& state) {
+  const FrfMatrix& f = set100x20000();
+  std::vector<Complex> five, four;
+  for (double fn : kModesHz) five.push_back(modal::poleFromFrequencyDamping(fn, 0.01));
+  four = five;
+  four.erase(four.begin() + 2);
+  modal::LsfdOptions o;
+  o.bandLowHz = 50.0;
+  o.bandHighHz = 950.0;
+  auto fitter = modal::SelectionFitter::create(f, o);
+  ComplexVector shown;
+  bool odd = false;
+  for (auto _ : state) {
+    odd = !odd;
+    auto fit = fitter->fit(odd ? four : five);
+    fitter->synthesis(7, 0, shown);
+    benchmark::DoNotOptimize(fit);
+    benchmark::DoNotOptimize(shown.data());
+  }
+}
+BENCHMARK(BM_PoleClickSelectionFitter)->Unit(benchmark::kMillisecond);
 
 void BM_StabilizationBackdrop(benchmark::State& state) {
   const FrfMatrix& f = set100x20000();

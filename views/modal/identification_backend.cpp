@@ -118,32 +118,40 @@ core::Result<Outcome> identify(const core::FrfMatrix& frf, const Options& option
   return out;
 }
 
-core::Result<Fit> fitSelection(const core::FrfMatrix& frf, const std::vector<core::Complex>& poles, double lo,
-                               double hi) {
-  // core's one-QR fit (identification.h): LSFD and synthesis together, about
-  // ten times cheaper than an LSFD followed by a synthesis of the model.
+SelectionFitter::SelectionFitter(std::shared_ptr<const core::FrfMatrix> frf, md::SelectionFitter fitter)
+    : frf_(std::move(frf)), fitter_(std::move(fitter)) {
+  lines_ = std::make_shared<const core::Vector>(frf_->frequencyHz.segment(fitter_.firstLine(), fitter_.lineCount()));
+}
+
+core::Result<SelectionFitter> SelectionFitter::create(std::shared_ptr<const core::FrfMatrix> frf, double lo,
+                                                      double hi) {
+  if (!frf) return core::makeError(core::ErrorCode::InvalidArgument, "no FRF set", "pole selection fit");
   md::LsfdOptions band;
   band.bandLowHz = lo;
   band.bandHighHz = hi;
-  auto selection = md::fitSelectedPoles(frf, poles, band);
+  auto fitter = md::SelectionFitter::create(*frf, band);  // *frf stays where it is: the pointer moves
+  if (!fitter) return fitter.error();
+  return SelectionFitter(std::move(frf), std::move(fitter).value());
+}
+
+core::Result<Fit> SelectionFitter::fit(const std::vector<core::Complex>& poles) {
+  // core's one-QR fit (identification.h): LSFD and the residual per FRF in
+  // two products over the band's data; no synthesis of the FRFs not shown.
+  auto selection = fitter_.fit(poles);
   if (!selection) return selection.error();
   Fit fit;
-  fit.synthesis = std::move(selection->synthesis);
-  // The measured FRFs on the synthesis's lines (the band's).
-  const Eigen::Index n = fit.synthesis.lineCount();
-  Eigen::Index a = 0;
-  while (n > 0 && a < frf.lineCount() && frf.frequencyHz[a] < fit.synthesis.frequencyHz[0]) ++a;
-  fit.measured.frequencyHz = frf.frequencyHz.segment(a, n);
-  fit.measured.responses = frf.responses;
-  fit.measured.references = frf.references;
-  fit.measured.type = frf.type;
-  for (const auto& h : frf.h) fit.measured.h.push_back(h.middleRows(a, n));
-  auto residual = md::residualPerFrf(fit.measured, fit.synthesis, lo, hi);
-  if (!residual) return residual.error();
-  fit.residual = std::move(residual).value();
-  fit.relativeError = selection->relativeError;
   fit.model = std::move(selection->model);
+  fit.residual = std::move(selection->residual);
+  fit.relativeError = selection->relativeError;
   return fit;
+}
+
+core::ComplexVectorRef SelectionFitter::measured(Eigen::Index response, Eigen::Index reference) const {
+  return frf_->h[static_cast<std::size_t>(reference)].col(response).segment(fitter_.firstLine(), fitter_.lineCount());
+}
+
+bool SelectionFitter::synthesis(Eigen::Index response, Eigen::Index reference, core::ComplexVector& out) const {
+  return fitter_.synthesis(response, reference, out);
 }
 
 core::Result<md::RefineResult> refine(const core::FrfMatrix& frf, const md::ModalModel& model, double lo, double hi,

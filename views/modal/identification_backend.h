@@ -2,11 +2,11 @@
 // The one place the workbench calls core/modal's identification (issue 18):
 // the run behind the identification page (diagram, automatic selection, LSFD,
 // refinement with standard errors - the calls `mozzi-cli identify` makes, so
-// the numbers are the CLI's), the cheap re-fit behind a pole click, and the
-// refinement of a hand-made selection. When core/modal exposes one pipeline
+// the numbers are the CLI's), the cheap re-fit behind a pole click
+// (SelectionFitter), and the refinement of a hand-made selection. When core/modal exposes one pipeline
 // function (issue 19: identifyModes, fitSelectedPoles), only this file changes.
 // No widget here; the functions run on a worker (identify, refine) or the GUI
-// thread (fitSelection: milliseconds).
+// thread (SelectionFitter: milliseconds).
 
 #include <memory>
 #include <string>
@@ -15,6 +15,7 @@
 #include "core/common/eigen_types.h"
 #include "core/common/frf_matrix.h"
 #include "core/common/result.h"
+#include "core/modal/identification.h"
 #include "core/modal/modal_model.h"
 #include "core/modal/plscf.h"
 #include "core/modal/refine.h"
@@ -60,15 +61,33 @@ core::Result<Outcome> identify(const core::FrfMatrix& frf, const Options& option
 
 struct Fit {
   core::modal::ModalModel model;  // LSFD residues and residual terms for the poles
-  core::FrfMatrix measured;       // the FRFs on the band's lines
-  core::FrfMatrix synthesis;      // the model on the same lines
-  core::Matrix residual;          // relative residual per FRF (no x ni)
+  core::Matrix residual;          // relative residual per FRF (no x ni); empty: no fit over the data
   double relativeError = 0.0;     // over all FRFs
 };
 
-// LSFD and synthesis for a chosen pole set, over the band (GUI thread).
-core::Result<Fit> fitSelection(const core::FrfMatrix& frf, const std::vector<core::Complex>& poles, double bandLowHz,
-                               double bandHighHz);
+// The fit behind pole clicks over a run's band (GUI thread: about 20 ms on
+// 100 FRFs x 18,000 lines, docs/performance/workbench-plots.md): LSFD for the
+// chosen poles and the residual of every FRF; the synthesis only of the FRF
+// shown. What does not depend on the poles is done once per band.
+class SelectionFitter {
+ public:
+  // Keeps `frf` (shared). Errors: an FRF set core refuses.
+  static core::Result<SelectionFitter> create(std::shared_ptr<const core::FrfMatrix> frf, double bandLowHz,
+                                              double bandHighHz);
+  core::Result<Fit> fit(const std::vector<core::Complex>& poles);
+  // The band's lines [Hz] (one vector for every fit: the plots share it).
+  const std::shared_ptr<const core::Vector>& frequencyHz() const { return lines_; }
+  // FRF (response, reference) measured on the band's lines (a view into the set).
+  core::ComplexVectorRef measured(Eigen::Index response, Eigen::Index reference) const;
+  // The last successful fit's model of FRF (response, reference) on the band's lines; false: no fit.
+  bool synthesis(Eigen::Index response, Eigen::Index reference, core::ComplexVector& out) const;
+
+ private:
+  SelectionFitter(std::shared_ptr<const core::FrfMatrix> frf, core::modal::SelectionFitter fitter);
+  std::shared_ptr<const core::FrfMatrix> frf_;
+  core::modal::SelectionFitter fitter_;
+  std::shared_ptr<const core::Vector> lines_;
+};
 
 // Refinement of a model (worker thread), as the CLI refines the automatic selection.
 core::Result<core::modal::RefineResult> refine(const core::FrfMatrix& frf, const core::modal::ModalModel& model,

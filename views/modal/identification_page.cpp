@@ -42,6 +42,10 @@ using identification::Method;
 
 namespace {
 
+// Tabs of the right-hand side.
+constexpr int kSynthesisTab = 0;
+constexpr int kMacTab = 1;
+
 // CPU time of the calling thread [ms].
 double threadCpuMs() {
   timespec t{};
@@ -193,8 +197,8 @@ IdentificationPage::IdentificationPage(const PageContext& ctx) : QWidget(ctx.par
   macLayout->addWidget(autoMac_, 1);
   macLayout->addWidget(macLabel_);
   macLayout->addWidget(mac_, 1);
-  tabs_->addTab(synthPane, QString());
-  tabs_->addTab(macPane, QString());
+  tabs_->insertTab(kSynthesisTab, synthPane, QString());
+  tabs_->insertTab(kMacTab, macPane, QString());
   split->addWidget(left);
   split->addWidget(tabs_);
   split->setStretchFactor(0, 3);
@@ -210,6 +214,7 @@ IdentificationPage::IdentificationPage(const PageContext& ctx) : QWidget(ctx.par
     if (i >= 0) setFrfSet(setBox_->itemData(i).toLongLong());
   });
   connect(synthesisFrfBox_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] { showSynthesis(); });
+  connect(tabs_, &QTabWidget::currentChanged, this, [this] { showTabs(); });
   connect(model_, &ProjectModel::frfSetsChanged, this, &IdentificationPage::reloadSets);
   connect(model_, &ProjectModel::projectChanged, this, &IdentificationPage::reloadSets);
   retranslate();
@@ -270,6 +275,7 @@ bool IdentificationPage::setFrfSet(qint64 id) {
   const bool same = id == frfSetId_;
   frfSetId_ = id;
   frf_ = std::make_shared<const core::FrfMatrix>(std::move(frf).value());
+  fitter_.reset();  // over the set it replaces
   {
     const QSignalBlocker block(setBox_);
     const int i = setBox_->findData(QVariant::fromValue<qlonglong>(id));
@@ -390,6 +396,7 @@ void IdentificationPage::onFinished(core::Result<identification::Outcome> result
   }
   progress_->setValue(1000);
   outcome_ = std::move(result).value();
+  fitter_.reset();  // the band may have changed
   auto frequency = std::make_shared<const core::Vector>(frf_->frequencyHz);
   diagram_->setDiagram(
       outcome_->diagram, frequency, outcome_->backdropDb,
@@ -490,13 +497,24 @@ void IdentificationPage::updateSelection() {
       fit.model = outcome_->model;
       fit_ = fit;
     } else {
-      auto fit =
-          identification::fitSelection(*frf_, chosenPoles(), outcome_->options.bandLowHz, outcome_->options.bandHighHz);
-      if (fit) {
-        fit_ = std::move(fit).value();
-      } else {
-        setStatus(tr("The chosen poles cannot be fitted: %1").arg(QString::fromStdString(fit.error().describe())),
-                  true);
+      if (!fitter_) {
+        auto fitter =
+            identification::SelectionFitter::create(frf_, outcome_->options.bandLowHz, outcome_->options.bandHighHz);
+        if (fitter) {
+          fitter_ = std::move(fitter).value();
+        } else {
+          setStatus(tr("The chosen poles cannot be fitted: %1").arg(QString::fromStdString(fitter.error().describe())),
+                    true);
+        }
+      }
+      if (fitter_) {
+        auto fit = fitter_->fit(chosenPoles());
+        if (fit) {
+          fit_ = std::move(fit).value();
+        } else {
+          setStatus(tr("The chosen poles cannot be fitted: %1").arg(QString::fromStdString(fit.error().describe())),
+                    true);
+        }
       }
     }
   }
@@ -506,8 +524,8 @@ void IdentificationPage::updateSelection() {
   warning_->setText(lines.join(QLatin1Char('\n')));
   warning_->setVisible(!lines.isEmpty());
   showTable();
-  showSynthesis();
-  showMac();
+  synthesisStale_ = macStale_ = true;
+  showTabs();
   emit selectionChanged();
 }
 
@@ -544,39 +562,45 @@ void IdentificationPage::showTable() {
   }
 }
 
+void IdentificationPage::showTabs() {
+  if (tabs_->currentIndex() == kSynthesisTab && synthesisStale_) showSynthesis();
+  if (tabs_->currentIndex() == kMacTab && macStale_) showMac();
+}
+
 void IdentificationPage::showSynthesis() {
+  synthesisStale_ = false;
   synthesis_->detachItems(QwtPlotItem::Rtti_PlotCurve, true);
   residuals_->setRowCount(0);
-  if (!frf_ || !fit_ || fit_->measured.lineCount() == 0) {
+  // A fit over the data (not the single-mode methods' estimate) has a residual.
+  core::ComplexVector synthesised;
+  const int pick = std::max(0, synthesisFrfBox_->currentIndex());
+  const Eigen::Index no = frf_ ? frf_->responseCount() : 1;
+  const Eigen::Index o = pick % no, i = frf_ ? std::min<Eigen::Index>(pick / no, frf_->referenceCount() - 1) : 0;
+  if (!frf_ || !fit_ || fit_->residual.size() == 0 || !fitter_ || !fitter_->synthesis(o, i, synthesised)) {
     synthesis_->replot();
     return;
   }
-  const int pick = std::max(0, synthesisFrfBox_->currentIndex());
-  const Eigen::Index no = frf_->responseCount();
-  const Eigen::Index o = pick % no, i = std::min<Eigen::Index>(pick / no, frf_->referenceCount() - 1);
-  auto x = std::make_shared<const core::Vector>(fit_->measured.frequencyHz);
-  auto db = [](const core::ComplexVector& h) {
+  // Only the FRF shown is synthesised, on the band's lines.
+  const auto& x = fitter_->frequencyHz();
+  auto db = [](const core::ComplexVectorRef& h) {
     core::Vector v(h.size());
     for (Eigen::Index k = 0; k < h.size(); ++k) v[k] = 20.0 * std::log10(std::max(std::abs(h[k]), 1e-300));
     return std::make_shared<const core::Vector>(std::move(v));
   };
   auto* measured = new DecimatingCurve(tr("measured"));
   measured->setPen(QColor(31, 119, 180), 1.5);
-  measured->setVectors(x, db(fit_->measured.h[static_cast<std::size_t>(i)].col(o)));
+  measured->setVectors(x, db(fitter_->measured(o, i)));
   measured->attach(synthesis_);
   auto* synth = new DecimatingCurve(tr("synthesised"));
   synth->setPen(QColor(214, 39, 40), 1.5, Qt::DashLine);
-  synth->setVectors(x, db(fit_->synthesis.h[static_cast<std::size_t>(i)].col(o)));
+  synth->setVectors(x, db(synthesised));
   synth->attach(synthesis_);
   synthesis_->autoscale();
-  // Residual per FRF, worst first.
+  // Residual per FRF, worst first; each FRF named as in the FRF box.
   std::vector<std::pair<double, QString>> items;
   for (Eigen::Index ii = 0; ii < fit_->residual.cols(); ++ii) {
-    for (Eigen::Index oo = 0; oo < fit_->residual.rows(); ++oo) {
-      items.push_back({fit_->residual(oo, ii), tr("H %1 / %2")
-                                                   .arg(dofText(frf_->responses[static_cast<std::size_t>(oo)]),
-                                                        dofText(frf_->references[static_cast<std::size_t>(ii)]))});
-    }
+    for (Eigen::Index oo = 0; oo < fit_->residual.rows(); ++oo)
+      items.push_back({fit_->residual(oo, ii), synthesisFrfBox_->itemText(static_cast<int>(ii * no + oo))});
   }
   std::sort(items.begin(), items.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
   residuals_->setRowCount(static_cast<int>(items.size()));
@@ -589,6 +613,7 @@ void IdentificationPage::showSynthesis() {
 }
 
 void IdentificationPage::showMac() {
+  macStale_ = false;
   const md::ModalModel* m =
       fit_ ? (selectionIsAutomatic_ && outcome_ && outcome_->refined ? &outcome_->model : &fit_->model) : nullptr;
   if (!m || m->modes.empty()) {

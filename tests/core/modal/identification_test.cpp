@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/modal/pole_selection.h"
 #include "core/modal/synthetic_system.h"
 
 namespace mozzi::core::modal {
@@ -116,6 +117,78 @@ TEST(Identification, ReselectionFitMatchesLsfdAndSynthesis) {
   EXPECT_NEAR(fit->relativeError, *err, 1e-9);
   EXPECT_GT(fit->relativeError, 0.05);  // a mode is missing: the fit is visibly worse
   EXPECT_FALSE(fitSelectedPoles(frf, {}, band).ok());
+}
+
+// The page's pole-click fit: SelectionFitter gives fitSelectedPoles' model
+// and relative error, the residual per FRF of residualPerFrf() on its
+// synthesis, and one FRF's synthesis; clicks that alternate the mode count
+// reuse workspaces and give bit for bit what a fresh fitter gives.
+TEST(Identification, SelectionFitterMatchesFitSelectedPoles) {
+  const FrfMatrix frf = accelerances(sixModeSystem(), {2, 4}, 0.0, 400.0, 0.1, 0.01, 7);
+  auto res = identifyModes(frf, options());
+  ASSERT_TRUE(res.ok()) << res.error().describe();
+  std::vector<Complex> all;
+  for (const auto& s : res->selected) all.push_back(s.pole);
+  std::vector<Complex> fewer = all;
+  fewer.erase(fewer.begin() + 3);
+  LsfdOptions band;
+  band.bandLowHz = 20.0;
+  band.bandHighHz = 380.0;
+  auto fitter = SelectionFitter::create(frf, band);
+  ASSERT_TRUE(fitter.ok()) << fitter.error().describe();
+  EXPECT_EQ(fitter->lineCount(), 3601);
+  EXPECT_NEAR(frf.frequencyHz[fitter->firstLine()], 20.0, 1e-9);
+  ComplexVector one;
+  EXPECT_FALSE(fitter->synthesis(0, 0, one));  // no fit yet
+  const std::vector<std::vector<Complex>> clicks = {all, fewer, all, fewer, all};
+  for (std::size_t n = 0; n < clicks.size(); ++n) {
+    const auto& poles = clicks[n];
+    auto fit = fitter->fit(poles);
+    ASSERT_TRUE(fit.ok()) << fit.error().describe();
+    auto fresh = SelectionFitter::create(frf, band)->fit(poles);
+    ASSERT_TRUE(fresh.ok());
+    auto reference = fitSelectedPoles(frf, poles, band);
+    ASSERT_TRUE(reference.ok());
+    ASSERT_EQ(fit->model.modes.size(), poles.size());
+    for (std::size_t r = 0; r < poles.size(); ++r) {
+      EXPECT_EQ(fit->model.modes[r].residue, fresh->model.modes[r].residue) << "click " << n << ", mode " << r;
+      EXPECT_EQ(fit->model.modes[r].residue, reference->model.modes[r].residue);
+    }
+    EXPECT_EQ(fit->model.lowerResidual, fresh->model.lowerResidual);
+    EXPECT_EQ(fit->model.upperResidual, fresh->model.upperResidual);
+    EXPECT_EQ(fit->residual, fresh->residual);
+    EXPECT_EQ(fit->relativeError, fresh->relativeError);
+    EXPECT_EQ(fit->relativeError, reference->relativeError);
+    // Residual per FRF: residualPerFrf of the measured FRFs and the full synthesis.
+    FrfMatrix measured = reference->synthesis;
+    for (std::size_t i = 0; i < frf.h.size(); ++i)
+      measured.h[i] = frf.h[i].middleRows(fitter->firstLine(), fitter->lineCount());
+    auto perFrf = residualPerFrf(measured, reference->synthesis, band.bandLowHz, band.bandHighHz);
+    ASSERT_TRUE(perFrf.ok());
+    ASSERT_EQ(fit->residual.rows(), frf.responseCount());
+    ASSERT_EQ(fit->residual.cols(), 2);
+    EXPECT_LT((fit->residual - *perFrf).cwiseAbs().maxCoeff(), 1e-12 * perFrf->maxCoeff()) << "click " << n;
+    EXPECT_GT(perFrf->minCoeff(), 0.0);
+    for (Eigen::Index i = 0; i < 2; ++i) {
+      for (Eigen::Index o = 0; o < frf.responseCount(); ++o) {
+        ASSERT_TRUE(fitter->synthesis(o, i, one));
+        const ComplexVector& col = reference->synthesis.h[static_cast<std::size_t>(i)].col(o);
+        EXPECT_LE((one - col).cwiseAbs().maxCoeff(), 1e-13 * col.cwiseAbs().maxCoeff());
+      }
+    }
+  }
+  // A click that cannot be fitted leaves no synthesis behind.
+  EXPECT_FALSE(fitter->fit({}).ok());
+  EXPECT_FALSE(fitter->synthesis(0, 0, one));
+  EXPECT_FALSE(fitter->fit({Complex(1.0, 10.0)}).ok());
+  ASSERT_TRUE(fitter->fit(all).ok());
+  EXPECT_FALSE(fitter->synthesis(frf.responseCount(), 0, one));  // no such FRF
+  LsfdOptions empty;
+  empty.bandLowHz = 500.0;
+  empty.bandHighHz = 600.0;
+  auto outside = SelectionFitter::create(frf, empty);
+  ASSERT_TRUE(outside.ok());
+  EXPECT_FALSE(outside->fit(all).ok());  // no line in the band
 }
 
 // Re-selection in the diagram of a previous run (the workbench's click then

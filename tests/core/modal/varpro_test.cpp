@@ -145,6 +145,61 @@ TEST(Varpro, NormalEquationsWithoutTheJacobianMatchDense) {
   EXPECT_GT((hgp - hk).cwiseAbs().maxCoeff(), 1e-6 * hgp.cwiseAbs().maxCoeff());
 }
 
+// The residual per FRF (blocks of lines, the product subtracted in place)
+// equals |R_c|^2 of the dense residual, and sums to explicitSsr(); one FRF's
+// model values are that FRF's column of modelValues(). Two references, so
+// that the column index i no + o is exercised; a segment split, so that
+// blocks do not cross segments.
+TEST(Varpro, ResidualPerFrfAndOneFrfsModelMatchDense) {
+  const FrfMatrix frf = data();
+  ModalVarpro vp = makeVarpro(frf);
+  const Vector theta = probe();
+  Vector r;
+  vp.denseResidual(theta, r, nullptr, nullptr);
+  ASSERT_TRUE(r.allFinite());
+  ASSERT_TRUE(vp.evaluate(theta, false));
+  Vector perFrf;
+  vp.explicitSsrPerFrf(perFrf);
+  ASSERT_EQ(perFrf.size(), vp.frfCount());
+  const Eigen::Index rows = 2 * vp.lineCount();
+  for (Eigen::Index c = 0; c < vp.frfCount(); ++c) {
+    const double expected = r.segment(c * rows, rows).squaredNorm();
+    EXPECT_NEAR(perFrf[c], expected, 1e-12 * expected) << "FRF " << c;
+  }
+  EXPECT_NEAR(vp.explicitSsr(), perFrf.sum(), 1e-14 * perFrf.sum());
+  std::vector<ComplexMatrix> all;
+  vp.modelValues(all);
+  ASSERT_EQ(all.size(), 2u);
+  for (Eigen::Index i = 0; i < 2; ++i) {
+    for (Eigen::Index o = 0; o < frf.responseCount(); o += 3) {
+      ComplexVector one;
+      vp.modelValues(o, i, one);
+      const ComplexVector& col = all[static_cast<std::size_t>(i)].col(o);
+      EXPECT_LE((one - col).cwiseAbs().maxCoeff(), 1e-13 * col.cwiseAbs().maxCoeff()) << o << ", " << i;
+    }
+  }
+
+  auto split = ModalVarpro::create(frf, {LineSegment{10, 200}, LineSegment{300, 250}}, 6, true, true, false);
+  ASSERT_TRUE(split.ok());
+  ASSERT_TRUE(split->evaluate(theta, false));
+  Vector splitPerFrf;
+  split->explicitSsrPerFrf(splitPerFrf);
+  std::vector<ComplexMatrix> model;
+  split->modelValues(model);
+  for (Eigen::Index i = 0; i < 2; ++i) {
+    for (Eigen::Index o = 0; o < frf.responseCount(); ++o) {
+      double expected = 0.0;
+      Eigen::Index k = 0;
+      for (const LineSegment& seg : split->segments()) {
+        for (Eigen::Index q = 0; q < seg.count; ++q, ++k)
+          expected += std::norm(frf.h[static_cast<std::size_t>(i)](seg.first + q, o) -
+                                model[static_cast<std::size_t>(i)](k, o));
+      }
+      EXPECT_NEAR(splitPerFrf[i * frf.responseCount() + o], expected, 1e-10 * expected) << o << ", " << i;
+    }
+  }
+}
+
 // Segments: the projected residual on two pieces of the band equals the one
 // of a FrfMatrix cut to those lines.
 TEST(Varpro, SegmentsEqualTheLinesTheyName) {

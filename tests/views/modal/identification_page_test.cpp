@@ -4,8 +4,8 @@
 // the synthesis at once and a second pole of one mode raises the same-mode
 // warning; the saved modal result equals `mozzi-cli identify --store` on the
 // same set. A synthetic set of 100 FRFs x 20,000 lines checks the time
-// budgets: diagram drawn within 0.5 s of the result (met); a pole click in
-// 50 ms (issue 18) is NOT met - measured and printed, checked under 1 s.
+// budgets: diagram drawn within 0.5 s of the result; a pole click in 50 ms
+// (issue 18: the median of ten clicks, in GUI-thread CPU time).
 // Screenshots at the window size (1280x800) for the user guide.
 #include "views/modal/identification_page.h"
 
@@ -203,9 +203,13 @@ class IdentificationPageTest : public QObject {
       QVERIFY(rows[r].mpc > 0.9);  // a beam's modes are real
     }
     QVERIFY(page.warningText().isEmpty());
+    QVERIFY(page.residualTable()->rowCount() == 9);
+    // The MAC tab is brought up to date when it is shown.
+    auto* tabs = page.findChild<QTabWidget*>();
+    tabs->setCurrentIndex(1);
     QVERIFY(page.autoMacPlot()->matrix().rows() == 4);
     for (int r = 0; r < 4; ++r) QCOMPARE(page.autoMacPlot()->matrix()(r, r), 1.0);
-    QVERIFY(page.residualTable()->rowCount() == 9);
+    tabs->setCurrentIndex(0);
 
     // The same numbers as the CLI on the same set (same calls, so equal to
     // the printed digits: JSON carries 17 significant digits).
@@ -457,27 +461,46 @@ class IdentificationPageTest : public QObject {
           page.lastDiagramDrawMs());
     QCOMPARE(page.tableRows().size(), size_t(5));
     QVERIFY(page.lastDiagramDrawCpuMs() <= 500.0);
-    // Remove and re-add a mode by clicking its pole.
+    // Remove and re-add a mode by clicking its pole, five times each.
     auto* diagram = page.diagramPlot();
     const int p = diagram->selection()[2];
-    clickPole(diagram, p);
-    QCOMPARE(page.tableRows().size(), size_t(4));
-    const double removeMs = page.lastSelectionUpdateCpuMs(), removeWall = page.lastSelectionUpdateMs();
-    clickPole(diagram, p);
-    QCOMPARE(page.tableRows().size(), size_t(5));
+    std::vector<double> removeCpu, addCpu, wall;
+    for (int k = 0; k < 5; ++k) {
+      clickPole(diagram, p);
+      QCOMPARE(page.tableRows().size(), size_t(4));
+      removeCpu.push_back(page.lastSelectionUpdateCpuMs());
+      wall.push_back(page.lastSelectionUpdateMs());
+      clickPole(diagram, p);
+      QCOMPARE(page.tableRows().size(), size_t(5));
+      addCpu.push_back(page.lastSelectionUpdateCpuMs());
+      wall.push_back(page.lastSelectionUpdateMs());
+    }
+    std::vector<double> all = removeCpu;
+    all.insert(all.end(), addCpu.begin(), addCpu.end());
+    auto median = [](std::vector<double> v) {
+      std::sort(v.begin(), v.end());
+      return 0.5 * (v[(v.size() - 1) / 2] + v[v.size() / 2]);
+    };
+    auto max = [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); };
     qInfo(
-        "100 x 20000: pole click -> table and synthesis %.1f ms CPU (%.1f wall) removing, %.1f ms CPU (%.1f wall) "
-        "adding",
-        removeMs, removeWall, page.lastSelectionUpdateCpuMs(), page.lastSelectionUpdateMs());
-    // Issue 18 asks for 50 ms. With core's one-QR fit (fitSelectedPoles) this
-    // machine measures 41 to 67 ms removing and 52 to 77 ms adding, in
-    // GUI-thread CPU (docs/performance/workbench-plots.md); before it, 322 to
-    // 520 ms. Asserted at twice the budget: the CPU time of a shared
-    // 2-core machine varies by that much, a return of the LSFD-then-synthesis
-    // path (eight times the cost) would not pass.
-    QVERIFY2(removeMs <= 100.0, qPrintable(QStringLiteral("%1 ms").arg(removeMs)));
-    QVERIFY2(page.lastSelectionUpdateCpuMs() <= 100.0,
-             qPrintable(QStringLiteral("%1 ms").arg(page.lastSelectionUpdateCpuMs())));
+        "100 x 20000: pole click -> table and synthesis, ms CPU median (max): removing %.1f (%.1f), adding %.1f "
+        "(%.1f), all ten %.1f (%.1f); wall median %.1f (max %.1f)",
+        median(removeCpu), max(removeCpu), median(addCpu), max(addCpu), median(all), max(all), median(wall), max(wall));
+    QString each;
+    for (std::size_t k = 0; k < removeCpu.size(); ++k)
+      each += QStringLiteral(" -%1 +%2").arg(removeCpu[k], 0, 'f', 1).arg(addCpu[k], 0, 'f', 1);
+    qInfo("100 x 20000: each click, ms CPU:%s", qPrintable(each));
+    // Issue 18: 50 ms, asserted on the median of the ten clicks. With the
+    // page's SelectionFitter (fit once per band, residual per FRF in blocks,
+    // only the FRF shown synthesised, the hidden tab left for later) this
+    // machine measures medians of 25 to 33 ms and single clicks up to 39 ms
+    // in GUI-thread CPU with another build running
+    // (docs/performance/workbench-plots.md): half to two thirds of the
+    // budget, so the median holds on a shared 2-core machine; before, 41 to
+    // 77 ms. A single click may be slowed by what else the machine runs: it
+    // is held to twice the budget.
+    QVERIFY2(median(all) <= 50.0, qPrintable(QStringLiteral("median %1 ms").arg(median(all))));
+    QVERIFY2(max(all) <= 100.0, qPrintable(QStringLiteral("%1 ms").arg(max(all))));
   }
 
  private:
