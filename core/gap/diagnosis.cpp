@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <set>
 #include <sstream>
+#include <thread>
 
+#include "core/common/parallel.h"
 #include "core/common/text.h"
 #include "core/gap/engine/bootstrap.h"
 #include "core/gap/engine/checks.h"
@@ -38,6 +41,7 @@ using engine::Model;
 using engine::Scaled;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
 // Auto null method: full refits while samples x (candidates + 1) x residuals
 // stays below this; a refit costs ~5 us per residual entry on the small test
 // problems (engine_bootstrap_test), more for FRF synthesis, so 1e6 keeps the
@@ -65,15 +69,8 @@ constexpr double kObviousMargin = 36.0;
 // An LR difference below 2 (one AIC unit) does not separate two candidates;
 // only then does AICc order them (Burnham and Anderson 2002, §2.6).
 constexpr double kAiccTieBand = 2.0;
-
-std::string label(const Candidate& c) {
-  std::string s = c.effect;
-  if (!c.location.empty()) {
-    s += " at ";
-    for (std::size_t i = 0; i < c.location.size(); ++i) s += (i ? "-" : "") + c.location[i];
-  }
-  return s;
-}
+// Grid minima tried per candidate beside its two deterministic starts.
+constexpr int kGridStarts = 2;
 
 std::string sizes(const RankedEffect& e) {
   std::string s;
@@ -127,8 +124,35 @@ std::string separating(const GapMetrics& a, const GapMetrics& b, const std::stri
 
 }  // namespace
 
-Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& options) {
+namespace {
+
+// Scaled coordinates of fitted values (calibration, then an effect's sizes).
+Eigen::VectorXd scaledPoint(const std::vector<Scaled>& theta, const std::vector<double>& thetaX,
+                            const std::vector<Scaled>& phi, const std::vector<double>& phiX) {
+  Eigen::VectorXd u(static_cast<Eigen::Index>(theta.size() + phi.size()));
+  for (std::size_t i = 0; i < theta.size(); ++i) u[static_cast<Eigen::Index>(i)] = theta[i].toU(thetaX[i]);
+  for (std::size_t j = 0; j < phi.size(); ++j) u[static_cast<Eigen::Index>(theta.size() + j)] = phi[j].toU(phiX[j]);
+  return u;
+}
+
+// An effect was found that makes a better reference for the noise estimate
+// than the nominal model: attributed, in part or ambiguously, so it holds on
+// held-out data (an `unexplained` best effect may fit noise or worse).
+bool wantsSecondNoisePass(const Diagnosis& d) {
+  const bool found = d.verdict == Verdict::Effect || d.verdict == Verdict::Partial || d.verdict == Verdict::Ambiguous;
+  return found && !d.ranking.empty() && d.ranking[0].fitted && d.ranking[0].likelihoodRatio > d.threshold;
+}
+
+// Steps 1 to 9 of GAP.md with the problem's noise model as it stands. With
+// `warm` (a diagnosis of the same data under another noise model) every fit
+// starts from its optimum there instead of searching again: the optima move
+// little when only the weights change, and the search was most of the time.
+Result<Diagnosis> diagnoseOnce(const GapProblem& problem, const DiagnosisOptions& options, const Diagnosis* warm,
+                               bool firstOfTwo) {
   const std::string where = "gap diagnosis";
+  // A first pass that a second will replace checks the leader alone on
+  // held-out data (the rest when no second pass follows, at the end).
+  const int reportTop = firstOfTwo ? std::min(1, options.reportTop) : options.reportTop;
   const int n = problem.residualCount();
   if (n <= 0) return makeError(ErrorCode::InvalidArgument, "the problem has no residuals", where);
   if (!(options.alpha > 0.0 && options.alpha < 0.5)) {
@@ -184,7 +208,11 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
   Model base(problem, theta, -1, {});
   std::vector<Eigen::VectorXd> starts{Eigen::VectorXd::Zero(base.parameterCount())};
   auto rng = engine::seededRng(options.seed, 0, 0);
-  for (int i = 1; i < options.multistarts; ++i) starts.push_back(engine::randomStart(base, rng));
+  if (warm) {
+    starts.push_back(scaledPoint(theta, warm->calibrated, {}, {}));
+  } else {
+    for (int i = 1; i < options.multistarts; ++i) starts.push_back(engine::randomStart(base, rng));
+  }
   FitOptions calibration;
   calibration.startIterations = kStartIterations;  // every start 20 iterations, the best polished
   const FitResult fit0 = engine::fitModel(base, starts, calibration);
@@ -273,24 +301,58 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
   std::vector<FitResult> fits(candidateCount);
   std::vector<char> needsRestarts(candidateCount, 0);
   std::vector<double> firstLr(candidateCount, -1.0);
-  for (std::size_t c = 0; c < candidateCount; ++c) {
-    if (!keepGoing(0.7 + 0.1 * c / candidateCount, "candidate fits")) return cancelled();
+  // The candidates' fits are independent: one task each, spread over the
+  // cores (each writes its own slots; the results do not depend on the order).
+  const auto mainThread = std::this_thread::get_id();
+  std::atomic<bool> stopped{false};
+  std::atomic<std::size_t> finished{0};
+  auto progressOnMain = [&](double fraction, const char* step) {
+    if (std::this_thread::get_id() == mainThread && !keepGoing(fraction, step)) stopped = true;
+  };
+  parallelFor(candidateCount, [&](std::size_t c) {
+    if (stopped) return;
+    progressOnMain(0.7 + 0.1 * static_cast<double>(finished++) / static_cast<double>(candidateCount), "candidate fits");
     const auto& sc = screen.candidates[c];
-    if (!sc.identifiable) continue;
+    if (!sc.identifiable) return;
     Model model(problem, theta, sc.index, sc.phi);
     const int q = static_cast<int>(sc.phi.size());
     Eigen::VectorXd s0 = Eigen::VectorXd::Zero(p + q), seed;
     s0.head(p) = u0;
     const double linearLr = screen.linearRatio(static_cast<int>(c), rAug0, &seed);
+    const RankedEffect* before = nullptr;
+    if (warm) {
+      for (const auto& e : warm->ranking)
+        if (e.candidateIndex == sc.index && e.fitted) before = &e;
+    }
+    if (before) {
+      fits[c] = engine::fitModel(model, {scaledPoint(theta, before->theta, sc.phi, before->parameters)}, {});
+      if (fits[c].ok) firstLr[c] = 2.0 * (fit0.nll - fits[c].nll);
+      return;
+    }
     Eigen::VectorXd s1 = s0;
     s1.tail(q) = seed;
     const FitResult a = engine::fitModel(model, {s0}, {}), b = engine::fitModel(model, {s1}, {});
     fits[c] = a.ok && (!b.ok || a.nll <= b.nll) ? a : b;
-    if (!fits[c].ok) continue;
+    // The local minima of a grid along each size that lie below the fit so
+    // far: a resonance moved past a few lines (a spring at 1.8 times its
+    // stiffness) leaves a minimum at nominal that neither start above leaves.
+    bool gridBetter = false;
+    Eigen::VectorXd work;
+    const double reached = fits[c].ok ? engine::dataCost(model, fits[c].u, work) : kInf;
+    if (const auto grid = engine::gridStarts(model, p, q, s0, kGridStarts, reached); !grid.empty()) {
+      FitOptions staged;
+      staged.startIterations = kStartIterations;
+      const FitResult g = engine::fitModel(model, grid, staged);
+      gridBetter = g.ok && (!fits[c].ok || g.nll < fits[c].nll - 1e-6 * (1.0 + std::abs(fits[c].nll)));
+      if (gridBetter) fits[c] = g;
+    }
+    if (!fits[c].ok) return;
     firstLr[c] = 2.0 * (fit0.nll - fits[c].nll);
     const bool sameOptimum = a.ok && b.ok && std::abs(a.nll - b.nll) <= 1e-6 * (1.0 + std::abs(a.nll));
-    needsRestarts[c] = !(sameOptimum && std::abs(firstLr[c] - linearLr) <= kLinearAgreement * linearLr + 1.0);
-  }
+    needsRestarts[c] =
+        gridBetter || !(sameOptimum && std::abs(firstLr[c] - linearLr) <= kLinearAgreement * linearLr + 1.0);
+  });
+  if (stopped) return cancelled();
   // 4b. Random restarts (multistarts - 2 seeded draws of phi in its box, 20
   // iterations each, the best polished) for the leading candidates that are
   // not locally linear: they decide the verdict, and restarts cost most of the
@@ -301,11 +363,17 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
   }
   std::stable_sort(byLr.begin(), byLr.end(), [&](std::size_t a, std::size_t b) { return firstLr[a] > firstLr[b]; });
   if (byLr.size() > static_cast<std::size_t>(kRestartedCandidates)) byLr.resize(kRestartedCandidates);
+  // Restarts only where they could change the verdict: candidates within
+  // a factor kRestartShare of the leader's likelihood ratio.
+  std::vector<std::size_t> restarted;
   for (std::size_t c : byLr) {
-    // Restarts only where they could change the verdict: candidates within
-    // a factor kRestartShare of the leader's likelihood ratio.
-    if (!needsRestarts[c] || options.multistarts <= 2 || firstLr[c] < kRestartShare * firstLr[byLr.front()]) continue;
-    if (!keepGoing(0.8, "candidate restarts")) return cancelled();
+    if (needsRestarts[c] && options.multistarts > 2 && firstLr[c] >= kRestartShare * firstLr[byLr.front()]) {
+      restarted.push_back(c);
+    }
+  }
+  if (!restarted.empty() && !keepGoing(0.8, "candidate restarts")) return cancelled();
+  parallelFor(restarted.size(), [&](std::size_t r) {
+    const std::size_t c = restarted[r];
     const auto& sc = screen.candidates[c];
     Model model(problem, theta, sc.index, sc.phi);
     std::vector<Eigen::VectorXd> randomStarts;
@@ -319,10 +387,19 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
     fr.startIterations = kStartIterations;
     const FitResult more = engine::fitModel(model, randomStarts, fr);
     if (more.ok && more.nll < fits[c].nll) fits[c] = more;
-  }
+  });
   // 4c. Covariance at each optimum (a restart there converges at once).
+  if (!keepGoing(0.82, "standard errors")) return cancelled();
+  std::vector<FitResult> polishedFits(candidateCount);
+  parallelFor(candidateCount, [&](std::size_t c) {
+    const auto& sc = screen.candidates[c];
+    if (!sc.identifiable || !fits[c].ok) return;
+    Model model(problem, theta, sc.index, sc.phi);
+    FitOptions fc;
+    fc.covariance = true;
+    polishedFits[c] = engine::fitModel(model, {fits[c].u}, fc);
+  });
   for (std::size_t c = 0; c < candidateCount; ++c) {
-    if (!keepGoing(0.82 + 0.03 * c / candidateCount, "standard errors")) return cancelled();
     const auto& sc = screen.candidates[c];
     RankedEffect e;
     e.candidateIndex = sc.index;
@@ -346,9 +423,7 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
     Model model(problem, theta, sc.index, sc.phi);
     const int q = static_cast<int>(sc.phi.size());
     FitResult fit = fits[c];
-    FitOptions fc;
-    fc.covariance = true;
-    const FitResult polished = engine::fitModel(model, {fit.u}, fc);
+    const FitResult& polished = polishedFits[c];
     if (polished.ok && polished.nll <= fit.nll + 1e-9 * (1.0 + fit.nll)) fit = polished;
     e.fitted = true;
     e.theta = model.thetaX(fit.u);
@@ -410,17 +485,25 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
   const std::size_t fittedCount = d.ranking.size();
   for (auto& e : unfitted) d.ranking.push_back(std::move(e));
 
-  // Steps 7 and 9: held-out checks, gap after and shrink for the top few.
-  for (std::size_t i = 0; i < fittedCount && static_cast<int>(i) < options.reportTop; ++i) {
-    if (!keepGoing(0.85 + 0.07 * i / std::max(1, options.reportTop), "held-out checks")) return cancelled();
-    RankedEffect& e = d.ranking[i];
-    auto held = engine::heldOutImprovement(problem, theta, u0, alt[i]);
-    if (!held) return held.error();
-    e.heldOutImprovement = *held;
-    e.gapAfter = problem.metrics(e.theta.data(), e.candidateIndex, e.parameters.data());
-    applyHolmFlags(e.gapAfter, options.alpha);
-    e.shrinkPct = d.gapBefore.overall != 0.0 ? 100.0 * (1.0 - e.gapAfter.overall / d.gapBefore.overall) : 0.0;
-  }
+  // Steps 7 and 9: held-out checks, gap after and shrink for the top few
+  // (those of the first `count` ranks not yet checked).
+  auto checkHeldOut = [&](std::size_t count) -> Result<void> {
+    std::vector<std::size_t> todo;
+    for (std::size_t i = 0; i < std::min(fittedCount, count); ++i)
+      if (std::isnan(d.ranking[i].heldOutImprovement)) todo.push_back(i);
+    for (std::size_t i : todo) {
+      RankedEffect& e = d.ranking[i];
+      auto held = engine::heldOutImprovement(problem, theta, u0, alt[i]);  // its folds on every core
+      if (!held) return held.error();
+      e.heldOutImprovement = *held;
+      e.gapAfter = problem.metrics(e.theta.data(), e.candidateIndex, e.parameters.data());
+      applyHolmFlags(e.gapAfter, options.alpha);
+      e.shrinkPct = d.gapBefore.overall != 0.0 ? 100.0 * (1.0 - e.gapAfter.overall / d.gapBefore.overall) : 0.0;
+    }
+    return {};
+  };
+  if (!keepGoing(0.85, "held-out checks")) return cancelled();
+  if (auto checked = checkHeldOut(static_cast<std::size_t>(std::max(0, reportTop))); !checked) return checked.error();
 
   // Step 4, end: profile-likelihood interval of the top effect's sizes.
   if (fittedCount > 0 && d.ranking[0].identifiable && !d.ranking[0].stdErrors.empty()) {
@@ -476,7 +559,23 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
       if (!d.ranking[i].identifiable) continue;
       singles.push_back({alt[i].candidate, alt[i].phi, alt[i].u, fit0.nll - 0.5 * d.ranking[i].likelihoodRatio});
     }
-    auto pairs = engine::fitPairs(problem, theta, singles, options.pairLeaders,
+    std::vector<engine::PairStart> pairStarts;
+    if (warm && warm->pairFitted && warm->pair.effects.size() == 2) {
+      const auto& w = warm->pair;
+      engine::PairStart ps{w.effects[0].candidateIndex, w.effects[1].candidateIndex, {}};
+      std::vector<Scaled> phi;
+      std::vector<double> phiX;
+      for (const auto& e : w.effects) {
+        for (const auto& sc : screen.candidates)
+          if (sc.index == e.candidateIndex) phi.insert(phi.end(), sc.phi.begin(), sc.phi.end());
+        phiX.insert(phiX.end(), e.parameters.begin(), e.parameters.end());
+      }
+      if (phi.size() == phiX.size()) {
+        ps.u = scaledPoint(theta, w.theta, phi, phiX);
+        pairStarts.push_back(std::move(ps));
+      }
+    }
+    auto pairs = engine::fitPairs(problem, theta, singles, options.pairLeaders, pairStarts,
                                   [&](double f) { return keepGoing(0.96 + 0.03 * f, "pair fits"); });
     if (!pairs) return pairs.error();
     d.pairFitted = true;
@@ -507,7 +606,7 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
         e.aicc = aicc(fit.nll, freeCount(theta) + freeCount(alt[m].phi), n);
         e.chiSquare = fit.chiSquare;
         e.fitPValue = fitP(fit.chiSquare, freeCount(alt[m].phi));
-        if (m < static_cast<std::size_t>(options.reportTop)) {
+        if (m < static_cast<std::size_t>(reportTop)) {
           e.gapAfter = problem.metrics(e.theta.data(), e.candidateIndex, e.parameters.data());
           applyHolmFlags(e.gapAfter, options.alpha);
           e.shrinkPct = d.gapBefore.overall != 0.0 ? 100.0 * (1.0 - e.gapAfter.overall / d.gapBefore.overall) : 0.0;
@@ -661,10 +760,12 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
       d.verdict = Verdict::NotIdentifiable;
       d.verdictSet = {0};
       ex << "Its size cannot be pinned down: " << best.note << '.';
-    } else if (heldOutFails) {
+    } else if (heldOutFails && !pairHolds) {
       d.verdict = Verdict::Unexplained;
       ex << "It does not improve the held-out data, so it is not attributed.";
     } else if (best.fitPValue < options.fitAlpha && pairHolds) {
+      // (Also when the best alone fails the held-out check: what a second
+      // effect leaves in one band can make the first alone worse there.)
       const EffectPair& ep = d.pair;
       d.verdict = ep.fitPValue >= options.fitAlpha ? Verdict::Effect : Verdict::Partial;
       d.verdictSet = ep.rankingIndex;
@@ -709,8 +810,60 @@ Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& op
     }
   }
   d.explanation = ex.str();
+  if (firstOfTwo && !wantsSecondNoisePass(d)) {
+    if (auto checked = checkHeldOut(static_cast<std::size_t>(std::max(0, options.reportTop))); !checked) {
+      return checked.error();
+    }
+  }
   if (!keepGoing(1.0, "done")) return cancelled();
   return d;
+}
+
+}  // namespace
+
+Result<Diagnosis> diagnose(const GapProblem& problem, const DiagnosisOptions& options) {
+  // Step 0 again, for a noise model estimated from the data: its first
+  // estimate, against the nominal model, reads as noise whatever model error
+  // its estimator cannot tell from scatter (a resonance the effect moved), so
+  // a second effect can hide inside it. With an effect found, the noise is
+  // estimated again from the residual against that fit (the pair's when a
+  // pair holds) and the diagnosis runs once more on it.
+  const bool twoPasses = problem.noiseModel().source == "estimated";
+  DiagnosisOptions first = options;
+  if (twoPasses && options.progress) {
+    first.progress = [&](double f, const std::string& step) { return options.progress(0.5 * f, step); };
+  }
+  auto d = diagnoseOnce(problem, first, nullptr, twoPasses);
+  if (!d || !twoPasses) return d;
+  if (!wantsSecondNoisePass(*d)) return d;
+  const bool pairHolds = d->verdictSet.size() == 2 && d->pairFitted && d->pair.effects.size() == 2 &&
+                         d->verdictSet == d->pair.rankingIndex;
+  std::unique_ptr<GapProblem> again;
+  std::string reference;
+  if (pairHolds) {
+    std::vector<double> phi = d->pair.effects[0].parameters;
+    phi.insert(phi.end(), d->pair.effects[1].parameters.begin(), d->pair.effects[1].parameters.end());
+    again = problem.withNoiseReference(
+        d->pair.theta.data(), {d->pair.effects[0].candidateIndex, d->pair.effects[1].candidateIndex}, phi.data());
+    reference = label(d->pair.effects[0].candidate) + " and " + label(d->pair.effects[1].candidate);
+  } else {
+    const RankedEffect& best = d->ranking[0];
+    again = problem.withNoiseReference(best.theta.data(), {best.candidateIndex}, best.parameters.data());
+    reference = label(best.candidate);
+  }
+  if (!again) return d;
+  DiagnosisOptions second = options;
+  if (options.progress) {
+    second.progress = [&](double f, const std::string& step) { return options.progress(0.5 + 0.5 * f, step); };
+  }
+  auto d2 = diagnoseOnce(*again, second, &*d, false);
+  if (!d2) return d2;
+  d2->explanation = "The noise was estimated twice: first from the residual against the nominal model (verdict " +
+                    std::string(verdictName(d->verdict)) + ", best " + label(d->ranking[0].candidate) +
+                    "), then from the residual against the fit of " + reference +
+                    ", which leaves less model error to be read as noise; this diagnosis uses the second. " +
+                    d2->explanation;
+  return d2;
 }
 
 }  // namespace mozzi::core::gap

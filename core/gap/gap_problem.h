@@ -37,6 +37,13 @@ struct Candidate {
   std::vector<Parameter> parameters;  // the effect's size(s)
 };
 
+// "mass_loading at 5+X", "element_stiffness at 4+X-5+X", "exponential_window".
+inline std::string label(const Candidate& c) {
+  std::string s = c.effect;
+  for (std::size_t i = 0; i < c.location.size(); ++i) s += (i ? "-" : " at ") + c.location[i];
+  return s;
+}
+
 // A labelled gap figure for "where" tables and before/after comparisons.
 struct GapEntry {
   std::string kind;   // "band", "dof", "mode", "condition", "overall", "prediction" (downstream figures, never flagged)
@@ -128,6 +135,20 @@ class GapProblem {
 
   // The noise model behind the whitened residuals.
   virtual NoiseModel noiseModel() const { return {}; }
+
+  // A noise model estimated from the data sees, besides the noise, whatever
+  // of the model error its estimator cannot tell from noise (a resonance the
+  // nominal model puts elsewhere reads as scatter). The same problem with that
+  // noise estimated again from the residual against the model with the
+  // candidates `combo` applied at (theta, phi), nearer the data; null when the
+  // noise is not estimated from the data (the default).
+  virtual std::unique_ptr<GapProblem> withNoiseReference(const double* theta, const std::vector<int>& combo,
+                                                         const double* phi) const {
+    (void)theta;
+    (void)combo;
+    (void)phi;
+    return nullptr;
+  }
 
   // Two (or more) effects at once (GAP.md step 4, "pairs"): the residuals,
   // metrics and overlay with the candidates in `combo` all applied, their

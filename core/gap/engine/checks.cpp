@@ -1,10 +1,12 @@
 #include "core/gap/engine/checks.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <set>
 
+#include "core/common/parallel.h"
 #include "core/gap/engine/bootstrap.h"
 
 namespace mozzi::core::gap::engine {
@@ -75,27 +77,39 @@ Result<double> heldOutImprovement(const GapProblem& problem, const std::vector<S
     return std::numeric_limits<double>::quiet_NaN();
   }
   const auto p = static_cast<Eigen::Index>(theta.size());
-  Model fullBase(problem, theta, -1, {}), fullEffect(problem, theta, effect.candidate, effect.phi);
-  Eigen::VectorXd r0(problem.residualCount()), r1(problem.residualCount());
-  double ss0 = 0.0, ss1 = 0.0;
-  for (int f : distinct) {
+  // The folds are refitted independently, on every core; their sums are
+  // added in fold order, so the result does not depend on the threads.
+  const std::vector<int> foldIds(distinct.begin(), distinct.end());
+  std::vector<std::array<double, 2>> sums(foldIds.size(), {0.0, 0.0});
+  std::vector<char> failed(foldIds.size(), 0);
+  parallelFor(foldIds.size(), [&](std::size_t i) {
+    const int f = foldIds[i];
     std::vector<int> in;
     for (std::size_t j = 0; j < folds.size(); ++j) {
       if (folds[j] != f) in.push_back(static_cast<int>(j));
     }
     Model base(problem, theta, -1, {}, in), eff(problem, theta, effect.candidate, effect.phi, in);
+    Model fullBase(problem, theta, -1, {}), fullEffect(problem, theta, effect.candidate, effect.phi);
+    Eigen::VectorXd r0(problem.residualCount()), r1(problem.residualCount());
     const FitResult fb = fitModel(base, {uBaseline}, warmFit());
     const FitResult fe =
         fitModel(eff, {effect.u, withPhi(uBaseline, Eigen::VectorXd::Zero(effect.u.size() - p))}, warmFit());
     if (!fb.ok || !fe.ok || !fullBase.residuals(fb.u.data(), r0.data()) ||
         !fullEffect.residuals(fe.u.data(), r1.data())) {
-      return makeError(ErrorCode::NumericalFailure, "a fold could not be refitted", where);
+      failed[i] = 1;
+      return;
     }
     for (std::size_t j = 0; j < folds.size(); ++j) {
       if (folds[j] != f) continue;
-      ss0 += r0[static_cast<Eigen::Index>(j)] * r0[static_cast<Eigen::Index>(j)];
-      ss1 += r1[static_cast<Eigen::Index>(j)] * r1[static_cast<Eigen::Index>(j)];
+      sums[i][0] += r0[static_cast<Eigen::Index>(j)] * r0[static_cast<Eigen::Index>(j)];
+      sums[i][1] += r1[static_cast<Eigen::Index>(j)] * r1[static_cast<Eigen::Index>(j)];
     }
+  });
+  double ss0 = 0.0, ss1 = 0.0;
+  for (std::size_t i = 0; i < foldIds.size(); ++i) {
+    if (failed[i]) return makeError(ErrorCode::NumericalFailure, "a fold could not be refitted", where);
+    ss0 += sums[i][0];
+    ss1 += sums[i][1];
   }
   return ss0 > 0.0 ? 1.0 - ss1 / ss0 : 0.0;
 }

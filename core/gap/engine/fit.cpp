@@ -313,6 +313,48 @@ Eigen::VectorXd clipToBox(const Model& model, Eigen::VectorXd u) {
   return u;
 }
 
+double dataCost(const Model& model, const Eigen::VectorXd& u, Eigen::VectorXd& r) {
+  r.resize(model.residualCount());
+  if (!model.residuals(u.data(), r.data())) return std::numeric_limits<double>::infinity();
+  return r.squaredNorm();
+}
+
+std::vector<Eigen::VectorXd> gridStarts(const Model& model, Eigen::Index first, Eigen::Index count,
+                                        const Eigen::VectorXd& u, int maxStarts, double below) {
+  Eigen::VectorXd r;
+  std::vector<std::pair<double, Eigen::VectorXd>> minima;
+  for (Eigen::Index j = first; j < first + count; ++j) {
+    const Scaled& s = model.parameter(static_cast<int>(j));
+    if (s.fixed) continue;
+    // The line from the lower bound through u to the upper bound, in order.
+    std::vector<double> values;
+    for (double t = 1.0; t >= 1.0 / 64.0; t /= 2.0)
+      if (std::isfinite(s.uLower) && s.uLower < u[j]) values.push_back(u[j] + t * (s.uLower - u[j]));
+    values.push_back(u[j]);
+    for (double t = 1.0 / 64.0; t <= 1.0; t *= 2.0)
+      if (std::isfinite(s.uUpper) && s.uUpper > u[j]) values.push_back(u[j] + t * (s.uUpper - u[j]));
+    std::vector<double> cost(values.size());
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      Eigen::VectorXd trial = u;
+      trial[j] = values[k];
+      cost[k] = dataCost(model, trial, r);
+    }
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      if (values[k] == u[j] || !std::isfinite(cost[k]) || !(cost[k] < below)) continue;
+      const bool belowLeft = k == 0 || cost[k] < cost[k - 1];
+      const bool belowRight = k + 1 == values.size() || cost[k] < cost[k + 1];
+      if (!belowLeft || !belowRight) continue;
+      Eigen::VectorXd start = u;
+      start[j] = values[k];
+      minima.emplace_back(cost[k], std::move(start));
+    }
+  }
+  std::sort(minima.begin(), minima.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Eigen::VectorXd> out;
+  for (std::size_t k = 0; k < minima.size() && static_cast<int>(k) < maxStarts; ++k) out.push_back(minima[k].second);
+  return out;
+}
+
 Eigen::VectorXd randomStart(const Model& model, std::mt19937_64& rng) {
   Eigen::VectorXd u(model.parameterCount());
   std::uniform_real_distribution<double> uniform(0.0, 1.0);

@@ -5,6 +5,7 @@
 // derivatives, multistarts and tolerances are relative to the bounds.
 
 #include <Eigen/Dense>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -99,5 +100,22 @@ FitResult fitModel(const Model& model, const std::vector<Eigen::VectorXd>& start
 // Uniform draw in the box (normal with sd 1 in u on an unbounded side).
 Eigen::VectorXd randomStart(const Model& model, std::mt19937_64& rng);
 Eigen::VectorXd clipToBox(const Model& model, Eigen::VectorXd u);
+
+// Starts from a grid along parameters [first, first + count) of u: each free
+// one in turn at u + t (bound - u), t = 1/64 ... 1 towards either bound, the
+// rest where u has them; every local minimum of the data cost along the grid
+// is a start, the `maxStarts` lowest returned. An effect size that moves a
+// resonance past a few lines has a local minimum at nominal that a local fit
+// never leaves (a clamp spring at half its stiffness); beside another effect
+// fitted alone, which has absorbed part of it, the right basin need not even
+// be lower than nominal, so minima count, not only points below u; `below`
+// keeps only minima whose data cost is lower than it.
+std::vector<Eigen::VectorXd> gridStarts(const Model& model, Eigen::Index first, Eigen::Index count,
+                                        const Eigen::VectorXd& u, int maxStarts,
+                                        double below = std::numeric_limits<double>::infinity());
+
+// Sum of squared data residuals of `model` at u (prior rows aside); +inf
+// where the model cannot be evaluated. `r` is the work buffer.
+double dataCost(const Model& model, const Eigen::VectorXd& u, Eigen::VectorXd& r);
 
 }  // namespace mozzi::core::gap::engine

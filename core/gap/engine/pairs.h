@@ -59,12 +59,21 @@ struct PairFit {
   bool ok = false;
 };
 
+// A pair already fitted (under another noise model) and its optimum u.
+struct PairStart {
+  int a = -1, b = -1;
+  Eigen::VectorXd u;
+};
+
 // Fits every combinable pair (leader, other) with the leaders the first
-// `leaders` entries of `singles` (best first) and the others all of them; two
-// starts each (the leader's optimum with the other absent, and with the
-// other's own single optimum). Results sorted by NLL, best first.
+// `leaders` entries of `singles` (best first) and the others all of them;
+// starts: the leader's optimum with the other absent, and with the other's
+// own single optimum, and the local minima of a grid along the other's sizes
+// (pairs.cpp, gridStarts). With `known` pairs only those are fitted, each
+// from its own optimum. Results sorted by NLL, best first.
 Result<std::vector<PairFit>> fitPairs(const GapProblem& problem, const std::vector<Scaled>& theta,
                                       const std::vector<SingleFit>& singles, int leaders,
+                                      const std::vector<PairStart>& known,
                                       const std::function<bool(double)>& keepGoing);
 
 }  // namespace mozzi::core::gap::engine

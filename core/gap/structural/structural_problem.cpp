@@ -536,6 +536,7 @@ struct FrfNoise {
   // simulated data set refits the level only (frf_noise.h, rescaleFrfNoise).
   std::vector<FrfNoiseFit> fits;
   std::shared_ptr<const std::vector<ComplexMatrix>> reference;
+  std::string referenceName = "the nominal model";  // what `reference` is, for the report
   // Coherence: the relative H1 error per line (per reference, nf x no); the
   // sigma follows from it and the FRF read, on simulated data too.
   std::vector<Matrix> coherenceRelative;
@@ -668,18 +669,57 @@ class FrfProblem final : public GapProblem {
     if (!predict(theta, comboOf(candidate), phi, h)) h = data_.h;
     std::normal_distribution<double> nd(0.0, 1.0);
     const Eigen::Index nf = data_.lineCount(), no = data_.responseCount();
+    const double tiny = tinySigma();
     for (std::size_t i = 0; i < h.size(); ++i)
       for (Eigen::Index o = 0; o < no; ++o)
         for (Eigen::Index k = 0; k < nf; ++k) {
-          const double s = noise_.sigma[i](k, o);
+          const double s = simulationSigma(i, k, o, std::norm(h[i](k, o)), tiny);
           const double re = nd(rng), im = nd(rng);
           sim.h[i](k, o) = h[i](k, o) + Complex(s * re, s * im);
         }
     FrfNoise noise = noise_;
-    // Estimated: its level refitted from the simulated lines; coherence: the
-    // sigma re-derived from the simulated reading (the same relative errors).
+    // Estimated: its level refitted from the simulated lines, against the
+    // simulated truth (the best reference there is, as for the measurement
+    // after withNoiseReference); coherence: the sigma re-derived from the
+    // simulated reading (the same relative errors).
+    if (noise.source == NoiseSource::Estimated) {
+      noise.reference = std::make_shared<const std::vector<ComplexMatrix>>(h);
+    }
     if (noise.source == NoiseSource::Estimated || noise.source == NoiseSource::Coherence) noise.sigma.clear();
     return std::make_unique<FrfProblem>(core_, std::move(sim), resp_, refs_, std::move(noise), options_);
+  }
+
+  // Sigma of the noise drawn around a simulated truth of magnitude^2 `mag2`:
+  // the part of the noise model that is relative follows the simulated FRF,
+  // not the measured one, exactly as the simulated problem whitens it. (With
+  // the measured |H| a peak the effect moved would put large noise where the
+  // baseline has none and whiten it with a small sigma: a null chi-square
+  // many times its degrees of freedom, and no residual read as beyond noise.)
+  double simulationSigma(std::size_t i, Eigen::Index k, Eigen::Index o, double mag2, double tiny) const {
+    const auto ii = static_cast<Eigen::Index>(i);
+    if (noise_.source == NoiseSource::Estimated && !noise_.fits.empty()) {
+      const FrfNoiseFit& fit = noise_.fits[static_cast<std::size_t>(ii * data_.responseCount() + o)];
+      return std::max(fit.ok ? fit.sigma(k, mag2) : kFallbackRelative * std::sqrt(mag2), tiny);
+    }
+    if (noise_.source == NoiseSource::Coherence && i < noise_.coherenceRelative.size()) {
+      return std::max(noise_.coherenceRelative[i](k, o) * std::sqrt(mag2), tiny);
+    }
+    return noise_.sigma[i](k, o);
+  }
+
+  std::unique_ptr<GapProblem> withNoiseReference(const double* theta, const std::vector<int>& combo,
+                                                 const double* phi) const override {
+    if (noise_.source != NoiseSource::Estimated) return nullptr;
+    auto ref = std::make_shared<std::vector<ComplexMatrix>>();
+    if (!predict(theta, combo, phi, *ref)) return nullptr;
+    FrfNoise noise;
+    noise.source = NoiseSource::Estimated;
+    noise.reference = std::move(ref);
+    noise.referenceName = "the calibrated model with";
+    const auto all = candidates();
+    for (std::size_t c = 0; c < combo.size(); ++c)
+      noise.referenceName += (c ? " and " : " ") + label(all[static_cast<std::size_t>(combo[c])]);
+    return std::make_unique<FrfProblem>(core_, data_, resp_, refs_, std::move(noise), options_);
   }
 
   GapMetrics metrics(const double* theta, int candidate, const double* phi) const override {
@@ -774,7 +814,7 @@ class FrfProblem final : public GapProblem {
   void estimateNoise() {
     const Eigen::Index nf = data_.lineCount(), no = data_.responseCount(), ni = data_.referenceCount();
     const bool rescale = noise_.fits.size() == static_cast<std::size_t>(ni * no);
-    if (!rescale && kNoiseFromNominalResidual) {
+    if (!rescale && !noise_.reference && kNoiseFromNominalResidual) {
       std::vector<double> nominal;
       for (const auto& p : core_->model.parameters) nominal.push_back(p.nominal);
       auto ref = std::make_shared<std::vector<ComplexMatrix>>();
@@ -837,7 +877,7 @@ class FrfProblem final : public GapProblem {
     std::ostringstream d;
     d << "Estimated from the data (no coherence given): per FRF a relative part and an additive floor, fitted "
          "robustly to the scatter of third differences of neighbouring lines"
-      << (noise_.reference ? " of the residual against the nominal model" : "")
+      << (noise_.reference ? " of the residual against " + noise_.referenceName : std::string())
       << ", with a level of its own for a band where the data show one; its level is refitted on every simulated "
          "data set of the bootstrap.";
     if (fallbacks > 0) {
