@@ -4,7 +4,7 @@
 <context>
     <name>Pages</name>
     <message>
-        <location filename="../app/gui/builtin_pages.cpp" line="+64"/>
+        <location filename="../app/gui/builtin_pages.cpp" line="+65"/>
         <source>Cannot show the mesh: %1</source>
         <translation>Impossibile mostrare la mesh: %1</translation>
     </message>
@@ -127,7 +127,17 @@
         <translation>Identifica i modi su un diagramma di stabilizzazione</translation>
     </message>
     <message>
-        <location line="-160"/>
+        <location line="+12"/>
+        <source>Twist Axes</source>
+        <translation>Assi di torsione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The static and dynamic twist axes of stored stiffness-rig tests over the component&apos;s silhouette</source>
+        <translation>Gli assi di torsione statico e dinamico delle prove al banco di rigidezza salvate, sulla sagoma del componente</translation>
+    </message>
+    <message>
+        <location line="-173"/>
         <source>Could not read the FRF set: %1</source>
         <translation>Impossibile leggere l&apos;insieme di FRF: %1</translation>
     </message>
@@ -1254,6 +1264,44 @@
     </message>
 </context>
 <context>
+    <name>TwistAxesPoints</name>
+    <message>
+        <location filename="../views/scene/twist_axes_page.cpp" line="+67"/>
+        <source>steering head</source>
+        <translation>cannotto di sterzo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>swing-arm pivot</source>
+        <translation>perno del forcellone</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>wheel hub</source>
+        <translation>mozzo della ruota</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>wheel contact point</source>
+        <translation>punto di contatto della ruota</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>wheel axle</source>
+        <translation>perno della ruota</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dropouts</source>
+        <translation>forcellini</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>steerer tube</source>
+        <translation>cannotto della forcella</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <location filename="../app/gui/main.cpp" line="+18"/>
@@ -1790,12 +1838,12 @@
 <context>
     <name>mozzi::views::FrfPlot</name>
     <message>
-        <location filename="../views/plots/frf_plot.cpp" line="+642"/>
+        <location filename="../views/plots/frf_plot.cpp" line="+625"/>
         <source>Unwrap phase</source>
         <translation>Fase continua</translation>
     </message>
     <message>
-        <location line="-297"/>
+        <location line="-300"/>
         <source>All responses</source>
         <translation>Tutte le risposte</translation>
     </message>
@@ -1825,7 +1873,7 @@
         <translation>Punto %1</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+82"/>
         <source>sum</source>
         <translation>somma</translation>
     </message>
@@ -2078,7 +2126,7 @@
 <context>
     <name>mozzi::views::HammerStationPage</name>
     <message>
-        <location filename="../views/campaign/hammer_station_page.cpp" line="+55"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+56"/>
         <source>Idle: press A to arm</source>
         <translation>Inattivo: premi A per armare</translation>
     </message>
@@ -2113,7 +2161,7 @@
         <translation>Campagna terminata</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+65"/>
         <source>New Campaign...</source>
         <translation>Nuova campagna...</translation>
     </message>
@@ -2159,7 +2207,7 @@
     </message>
     <message>
         <location line="+122"/>
-        <location line="+410"/>
+        <location line="+409"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -2505,12 +2553,12 @@
 <context>
     <name>mozzi::views::HitTimeView</name>
     <message>
-        <location filename="../views/plots/hit_time_view.cpp" line="+101"/>
+        <location filename="../views/plots/hit_time_view.cpp" line="+96"/>
         <source>hit %1</source>
         <translation>colpo %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>hit %1 at %2</source>
         <translation>colpo %1 in %2</translation>
     </message>
@@ -2555,7 +2603,7 @@
         <translation>Colpo %1 in %2, %3 campioni a %4 Hz, %5; %6</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+19"/>
         <source>Hit:</source>
         <translation>Colpo:</translation>
     </message>
@@ -2598,7 +2646,7 @@
 <context>
     <name>mozzi::views::IdentificationPage</name>
     <message>
-        <location filename="../views/modal/identification_page.cpp" line="+232"/>
+        <location filename="../views/modal/identification_page.cpp" line="+234"/>
         <source>Cannot list the FRF sets: %1</source>
         <translation>Impossibile elencare gli insiemi di FRF: %1</translation>
     </message>
@@ -2623,13 +2671,12 @@
         <translation>Impossibile leggere le finestre dell&apos;insieme di FRF %1: %2</translation>
     </message>
     <message>
-        <location line="+32"/>
-        <location line="+285"/>
+        <location line="+33"/>
         <source>H %1 / %2</source>
         <translation>H %1 / %2</translation>
     </message>
     <message>
-        <location line="-269"/>
+        <location line="+16"/>
         <source>FRF set %1: %2 responses x %3 references, %4 lines, %5 to %6 Hz. Choose a band and run.</source>
         <translation>Insieme di FRF %1: %2 risposte x %3 riferimenti, %4 righe, da %5 a %6 Hz. Scegli una banda ed esegui.</translation>
     </message>
@@ -2664,7 +2711,7 @@
         <translation>Identificazione non riuscita: %1</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>CMIF 1 [dB]</source>
         <translation>CMIF 1 [dB]</translation>
     </message>
@@ -2690,12 +2737,13 @@
         </translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+76"/>
+        <location line="+9"/>
         <source>The chosen poles cannot be fitted: %1</source>
         <translation>Impossibile stimare i poli scelti: %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Warning: %1. Remove one of the two.</source>
         <translation>Attenzione: %1. Togli uno dei due.</translation>
     </message>
@@ -2705,7 +2753,7 @@
         <translation>Impossibile togliere lo smorzamento della finestra esponenziale: %1</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+47"/>
         <source>measured</source>
         <translation>misura</translation>
     </message>
@@ -2715,7 +2763,7 @@
         <translation>sintesi</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+33"/>
         <location line="+7"/>
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
@@ -4744,7 +4792,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::SceneView</name>
     <message>
-        <location filename="../views/scene/scene_view.cpp" line="+632"/>
+        <location filename="../views/scene/scene_view.cpp" line="+640"/>
         <source>|u|</source>
         <translation>|u|</translation>
     </message>
@@ -4752,7 +4800,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::StabilityPage</name>
     <message>
-        <location filename="../views/stability/stability_page.cpp" line="+131"/>
+        <location filename="../views/stability/stability_page.cpp" line="+126"/>
         <source>Computing the eigenvalues against speed...</source>
         <translation>Calcolo degli autovalori in funzione della velocità...</translation>
     </message>
@@ -4762,12 +4810,12 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Stabilità in funzione della velocità</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>Cannot compute: %1</source>
         <translation>Impossibile calcolare: %1</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>%1 %2 at %3 m/s</source>
         <translation>%1 %2 a %3 m/s</translation>
     </message>
@@ -4777,7 +4825,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>%1 %2 m/s</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>No real part crosses zero in this speed range.</source>
         <translation>Nessuna parte reale attraversa lo zero in questo intervallo di velocità.</translation>
     </message>
@@ -4787,7 +4835,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Velocità critiche: %1</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>Model:</source>
         <translation>Modello:</translation>
     </message>
@@ -4894,6 +4942,237 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <location line="+1"/>
         <source>backdrop</source>
         <translation>sfondo</translation>
+    </message>
+</context>
+<context>
+    <name>mozzi::views::TwistAxesPage</name>
+    <message>
+        <location filename="../views/scene/twist_axes_page.cpp" line="+215"/>
+        <source>Specimen</source>
+        <translation>Provino</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Static test</source>
+        <translation>Prova statica</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Dynamic test</source>
+        <translation>Prova dinamica</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frequency</source>
+        <translation>Frequenza</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Quantity</source>
+        <translation>Grandezza</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Static</source>
+        <translation>Statica</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+392"/>
+        <source>Dynamic</source>
+        <translation>Dinamica</translation>
+    </message>
+    <message>
+        <location line="-391"/>
+        <source>u [m] (plate plane)</source>
+        <translation>u [m] (piano della piastra)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>v [m]</source>
+        <translation>v [m]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The static ramp test whose twist axis is drawn (black)</source>
+        <translation>La prova a rampa statica il cui asse di torsione è disegnato (nero)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The sine sweep whose dynamic twist axis is drawn (red) at the slider&apos;s frequency</source>
+        <translation>La scansione sinusoidale il cui asse di torsione dinamico è disegnato (rosso) alla frequenza del cursore</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Excitation frequency of the sine sweep: moves the dynamic twist axis</source>
+        <translation>Frequenza di eccitazione della scansione sinusoidale: sposta l&apos;asse di torsione dinamico</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <location line="+1"/>
+        <source>(none)</source>
+        <translation>(nessuna)</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>Cannot read the rig test: %1</source>
+        <translation>Impossibile leggere la prova al banco: %1</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>Cannot read &apos;%1&apos;: %2</source>
+        <translation>Impossibile leggere &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>No dynamic axis to trace: %1</source>
+        <translation>Nessun asse dinamico da tracciare: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>the test does not name a virtual specimen, so no outline is known</source>
+        <translation>la prova non indica un provino virtuale, quindi nessuna sagoma è nota</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>No stiffness-rig test to show: run one on the Stiffness Rig page.</source>
+        <translation>Nessuna prova al banco di rigidezza da mostrare: eseguirne una nella pagina Banco di rigidezza.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No project is open.</source>
+        <translation>Nessun progetto aperto.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&apos;%1&apos; is %2: %3</source>
+        <translation>&apos;%1&apos; è %2: %3</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>%1 (constrained)</source>
+        <translation>%1 (vincolato)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>centre of gravity (estimated)</source>
+        <translation>baricentro (stimato)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Outline: %1, approximate (not to scale of a drawing): %2</source>
+        <translation>Sagoma: %1, approssimata (non in scala da un disegno): %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No outline drawn: %1</source>
+        <translation>Nessuna sagoma disegnata: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>L%1</source>
+        <translation>L%1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>load point (%1)</source>
+        <translation>punto di carico (%1)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>load point</source>
+        <translation>punto di carico</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location line="+99"/>
+        <source>a_tw</source>
+        <translation>a_tw</translation>
+    </message>
+    <message>
+        <location line="-76"/>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>static twist axis</source>
+        <translation>asse di torsione statico</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bending axis (set-up)</source>
+        <translation>asse flessionale (allestimento)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>torsion axis (set-up)</source>
+        <translation>asse torsionale (allestimento)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>dynamic twist axis, %1 Hz</source>
+        <translation>asse di torsione dinamico, %1 Hz</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>k_lat</source>
+        <translation>k_lat</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>lateral stiffness at the load point, F / x_lat (eq. 29)</source>
+        <translation>rigidezza laterale nel punto di carico, F / x_lat (eq. 29)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>k_tw</source>
+        <translation>k_tw</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>twist stiffness about the axis, k_lat a_tw² (eq. 30)</source>
+        <translation>rigidezza di torsione attorno all&apos;asse, k_lat a_tw² (eq. 30)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>twist arm: distance of the load point from the axis</source>
+        <translation>braccio di torsione: distanza del punto di carico dall&apos;asse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>β</source>
+        <translation>β</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>inclination of the axis from the plate&apos;s v axis towards u</source>
+        <translation>inclinazione dell&apos;asse dall&apos;asse v della piastra verso u</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>foot u</source>
+        <translation>piede u</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>u of the axis&apos;s point nearest the load point</source>
+        <translation>u del punto dell&apos;asse più vicino al punto di carico</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>foot v</source>
+        <translation>piede v</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>v of the axis&apos;s point nearest the load point</source>
+        <translation>v del punto dell&apos;asse più vicino al punto di carico</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Dynamic, %1 Hz</source>
+        <translation>Dinamica, %1 Hz</translation>
     </message>
 </context>
 </TS>

@@ -26,6 +26,7 @@
 #include "views/rigs/rig_test_page.h"
 #include "views/scene/mode_animation_page.h"
 #include "views/scene/scene_view.h"
+#include "views/scene/twist_axes_page.h"
 #include "views/stability/stability_page.h"
 
 namespace mozzi {
@@ -287,6 +288,27 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                           return page;
                         },
                         /*singleton=*/false, /*openAtStart=*/false, nullptr});
+  // Twist axes over the component (issue 22, views/scene): the stored static
+  // and dynamic stiffness tests of a specimen drawn over its silhouette. A
+  // rig test's second page (the Stiffness Rig page is its default).
+  registry.add(PageSpec{QStringLiteral("twist-axes"), QT_TRANSLATE_NOOP("Pages", "Twist Axes"),
+                        QT_TRANSLATE_NOOP("Pages",
+                                          "The static and dynamic twist axes of stored stiffness-rig tests over "
+                                          "the component's silhouette"),
+                        QString(), PageMenu::Pages,
+                        [](const ProjectItem& item) { return item.kind == RecordKind::RigTest; },
+                        [](const PageContext& ctx) -> QWidget* {
+                          auto* page = new views::TwistAxesPage(ctx);
+                          page->setObjectName(QStringLiteral("twistAxesTab"));
+                          const auto log = ctx.log;
+                          if (log) QObject::connect(page, &views::TwistAxesPage::message, page, log);
+                          return page;
+                        },
+                        /*singleton=*/true, /*openAtStart=*/false,
+                        [](QWidget* page, const PageContext& ctx) {
+                          if (ctx.item.kind == RecordKind::RigTest)
+                            static_cast<views::TwistAxesPage*>(page)->showRigTest(ctx.item.id);
+                        }});
 }
 
 }  // namespace app

@@ -49,6 +49,21 @@ double roundStep(double x) {
 
 }  // namespace
 
+bool equalAspectRanges(AxisRange& x, AxisRange& y, double widthPx, double heightPx) {
+  if (!(x.upper >= x.lower) || !(y.upper >= y.lower) || !std::isfinite(x.upper - x.lower) ||
+      !std::isfinite(y.upper - y.lower))
+    return false;
+  if (!(widthPx > 0.0) || !(heightPx > 0.0) || !std::isfinite(widthPx) || !std::isfinite(heightPx)) return false;
+  double w = x.upper - x.lower, h = y.upper - y.lower;
+  if (w == 0.0 && h == 0.0) w = h = 1.0;
+  // Units per pixel: the larger of the two needs, applied to both axes.
+  const double perPixel = std::max(w / widthPx, h / heightPx);
+  const double cx = 0.5 * (x.lower + x.upper), cy = 0.5 * (y.lower + y.upper);
+  x = AxisRange{cx - 0.5 * perPixel * widthPx, cx + 0.5 * perPixel * widthPx};
+  y = AxisRange{cy - 0.5 * perPixel * heightPx, cy + 0.5 * perPixel * heightPx};
+  return true;
+}
+
 AxisRange roundedRange(double lo, double hi, bool logarithmic) {
   if (!std::isfinite(lo) || !std::isfinite(hi)) return {0.0, 1.0};
   if (lo > hi) std::swap(lo, hi);

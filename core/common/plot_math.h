@@ -30,6 +30,12 @@ struct AxisRange {
 // A degenerate or non-finite input gives a unit-wide range around the value.
 AxisRange roundedRange(double lo, double hi, bool logarithmic);
 
+// Equal aspect (a drawing of a plane: one metre as long across as up): the
+// smallest ranges containing x and y, centred on them, whose spans are in the
+// ratio widthPx : heightPx of the drawing area. False (ranges untouched) when
+// a range is empty or reversed, or a size is not positive.
+bool equalAspectRanges(AxisRange& x, AxisRange& y, double widthPx, double heightPx);
+
 // --- Display decimation ---------------------------------------------------------
 // A curve of 20,000 lines drawn into 1,000 pixel columns puts 20 samples in
 // each column; only the lowest and highest of them are visible. The decimated

@@ -22,9 +22,10 @@ namespace views {
 
 namespace {
 
-std::vector<const QwtPlotCurve*> visibleCurves(const QwtPlot* plot) {
+std::vector<const QwtPlotCurve*> visibleCurves(const QwtPlot* plot, bool autoscaledOnly = false) {
   std::vector<const QwtPlotCurve*> out;
   for (const QwtPlotItem* item : plot->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+    if (autoscaledOnly && !item->testItemAttribute(QwtPlotItem::AutoScale)) continue;
     if (item->isVisible() && static_cast<const QwtPlotCurve*>(item)->dataSize() > 0)
       out.push_back(static_cast<const QwtPlotCurve*>(item));
   }
@@ -92,9 +93,38 @@ void InteractivePlot::setLogY(bool on) {
   autoscaleY();
 }
 
+void InteractivePlot::setEqualAspect(bool on) {
+  if (on == equalAspect_) return;
+  equalAspect_ = on;
+  autoscale();
+}
+
 void InteractivePlot::autoscale() {
+  if (equalAspect_) {
+    // Both axes from every sample, padded 5%, then the shorter one grown.
+    double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+    for (const QwtPlotCurve* c : visibleCurves(this, true)) {
+      const QRectF r = c->boundingRect();  // top() is the lower y
+      if (r.width() < 0 || r.height() < 0) continue;
+      x0 = std::min(x0, r.left());
+      x1 = std::max(x1, r.right());
+      y0 = std::min(y0, r.top());
+      y1 = std::max(y1, r.bottom());
+    }
+    if (!(x0 <= x1 && y0 <= y1)) {
+      replot();
+      return;
+    }
+    const double pad = 0.05 * std::max(x1 - x0, y1 - y0);
+    core::AxisRange x{x0 - pad, x1 + pad}, y{y0 - pad, y1 + pad};
+    core::equalAspectRanges(x, y, std::max(1, canvas()->width()), std::max(1, canvas()->height()));
+    setAxisScale(QwtPlot::xBottom, x.lower, x.upper);
+    setAxisScale(QwtPlot::yLeft, y.lower, y.upper);
+    replot();
+    return;
+  }
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (const QwtPlotCurve* c : visibleCurves(this)) {
+  for (const QwtPlotCurve* c : visibleCurves(this, true)) {
     const QRectF r = c->boundingRect();
     if (r.width() < 0) continue;
     double l = r.left();
@@ -123,7 +153,7 @@ void InteractivePlot::autoscale() {
 void InteractivePlot::autoscaleY() {
   const QwtInterval x = axisInterval(QwtPlot::xBottom);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (const QwtPlotCurve* c : visibleCurves(this)) {
+  for (const QwtPlotCurve* c : visibleCurves(this, true)) {
     if (c->yAxis() != QwtPlot::yLeft) continue;
     core::Vector xs(static_cast<Eigen::Index>(c->dataSize())), ys(xs.size());
     for (size_t i = 0; i < c->dataSize(); ++i) {
@@ -207,6 +237,7 @@ void InteractivePlot::panX(double fraction) {
 }
 
 bool InteractivePlot::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == canvas() && event->type() == QEvent::Resize && equalAspect_) autoscale();
   if (watched == canvas() && event->type() == QEvent::KeyPress) {
     auto* key = static_cast<QKeyEvent*>(event);
     const bool shift = key->modifiers() & Qt::ShiftModifier, ctrl = key->modifiers() & Qt::ControlModifier;

@@ -42,6 +42,12 @@ class InteractivePlot : public QwtPlot {
   void autoscaleY();
   // Keeps the x range when the data is replaced (a new selection): y is refit.
   void setKeepX(bool keep) { keepX_ = keep; }
+  // Equal aspect (a drawing of a plane, both axes in the same unit): autoscale
+  // grows the shorter range so a unit is as long across as up on the canvas,
+  // and refits when the canvas is resized. Curves whose AutoScale attribute is
+  // off (lines clipped to the view) never widen the autoscale.
+  void setEqualAspect(bool on);
+  bool equalAspect() const { return equalAspect_; }
   // Whether a left click places the cursor (default) or only emits clicked().
   void setCursorOnClick(bool on) { cursorOnClick_ = on; }
 
@@ -68,7 +74,7 @@ class InteractivePlot : public QwtPlot {
  private:
   void emitRange();
 
-  bool logX_ = false, logY_ = false, keepX_ = false, cursorOnClick_ = true;
+  bool logX_ = false, logY_ = false, keepX_ = false, cursorOnClick_ = true, equalAspect_ = false;
   double yFloor_ = -std::numeric_limits<double>::infinity();
   std::optional<double> cursor_;
   QwtPlotMarker* cursorMarker_ = nullptr;

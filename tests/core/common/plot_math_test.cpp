@@ -170,5 +170,24 @@ TEST(PlotMath, HeatColourEndsAndDarkness) {
   EXPECT_TRUE(heatColourIsDark(1.0));
 }
 
+// A 2 x 1 region on a square drawing grows to 2 x 2 about its centre; a
+// unit square on 200 x 100 pixels becomes 2 x 1.
+TEST(PlotMath, EqualAspectGrowsTheShortSide) {
+  AxisRange x{0.0, 2.0}, y{0.0, 1.0};
+  ASSERT_TRUE(equalAspectRanges(x, y, 100, 100));
+  EXPECT_NEAR(x.lower, 0.0, 1e-15);
+  EXPECT_NEAR(x.upper, 2.0, 1e-15);
+  EXPECT_NEAR(y.lower, -0.5, 1e-15);
+  EXPECT_NEAR(y.upper, 1.5, 1e-15);
+  AxisRange u{0.0, 1.0}, v{0.0, 1.0};
+  ASSERT_TRUE(equalAspectRanges(u, v, 200, 100));
+  EXPECT_NEAR(u.upper - u.lower, 2.0, 1e-15);
+  EXPECT_NEAR(u.lower, -0.5, 1e-15);
+  EXPECT_NEAR(v.upper - v.lower, 1.0, 1e-15);
+  AxisRange bad{1.0, 0.0};
+  EXPECT_FALSE(equalAspectRanges(bad, v, 100, 100));
+  EXPECT_FALSE(equalAspectRanges(u, v, 0, 100));
+}
+
 }  // namespace
 }  // namespace mozzi::core

@@ -1,0 +1,717 @@
+#include "views/scene/twist_axes_page.h"
+
+#include <qwt_plot_curve.h>
+#include <qwt_plot_marker.h>
+#include <qwt_scale_widget.h>
+#include <qwt_symbol.h>
+#include <qwt_text.h>
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QEvent>
+#include <QFile>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QSlider>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+
+#include "core/io/project_store.h"
+#include "core/stiffness/silhouettes.h"
+#include "core/stiffness/twist_geometry.h"
+#include "devices/rigtests/stiffness_results.h"
+#include "views/plots/interactive_plot.h"
+
+// The silhouettes' resource lives in this static library (views/CMakeLists.txt);
+// Q_INIT_RESOURCE must be called outside any namespace.
+static void initSilhouetteResource() {
+  Q_INIT_RESOURCE(silhouettes);
+}
+
+namespace mozzi {
+namespace views {
+
+namespace st = core::stiffness;
+namespace rt = devices::rigtests;
+
+// What the selection shows (read once per selection).
+struct TwistAxesData {
+  std::optional<rt::StiffnessTestView> statics, dynamics;
+  std::optional<st::PlacedSilhouette> silhouette;
+  QString silhouetteError;
+  std::optional<st::AxisPath> path;
+  // Geometry of the set-up (of the static test, else of the dynamic one).
+  const rt::StiffnessTestView* geometry() const { return statics ? &*statics : (dynamics ? &*dynamics : nullptr); }
+};
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+const QColor kStaticColour(20, 20, 20);
+const QColor kDynamicColour(200, 30, 30);
+const QColor kPathColour(230, 120, 0);
+const QColor kModalColour(40, 90, 170);
+const QColor kSilhouetteColour(120, 120, 120);
+
+QString qs(const std::string& s) {
+  return QString::fromStdString(s);
+}
+
+// The silhouettes' named points in words of the user's language.
+QString pointName(const std::string& name) {
+  static const char* const kNames[] = {QT_TRANSLATE_NOOP("TwistAxesPoints", "steering head"),
+                                       QT_TRANSLATE_NOOP("TwistAxesPoints", "swing-arm pivot"),
+                                       QT_TRANSLATE_NOOP("TwistAxesPoints", "wheel hub"),
+                                       QT_TRANSLATE_NOOP("TwistAxesPoints", "wheel contact point"),
+                                       QT_TRANSLATE_NOOP("TwistAxesPoints", "wheel axle"),
+                                       QT_TRANSLATE_NOOP("TwistAxesPoints", "dropouts"),
+                                       QT_TRANSLATE_NOOP("TwistAxesPoints", "steerer tube")};
+  for (const char* n : kNames)
+    if (name == n) return QCoreApplication::translate("TwistAxesPoints", n);
+  return qs(name);
+}
+
+// The shipped catalogue, parsed once (resources/silhouettes/silhouettes.json).
+const core::Result<st::SilhouetteCatalogue>& silhouettes() {
+  static const core::Result<st::SilhouetteCatalogue> catalogue = [] {
+    initSilhouetteResource();
+    QFile file(QStringLiteral(":/silhouettes/silhouettes.json"));
+    if (!file.open(QIODevice::ReadOnly))
+      return core::Result<st::SilhouetteCatalogue>(
+          core::makeError(core::ErrorCode::NotFound, "the silhouettes resource is missing", "silhouettes.json"));
+    return st::parseSilhouettes(file.readAll().toStdString());
+  }();
+  return catalogue;
+}
+
+QwtPlotCurve* addCurve(QwtPlot* plot, const QColor& colour, double width, Qt::PenStyle style, bool autoscaled,
+                       double z) {
+  auto* c = new QwtPlotCurve;
+  c->setPen(QPen(colour, width, style));
+  c->setRenderHint(QwtPlotItem::RenderAntialiased, true);
+  c->setItemAttribute(QwtPlotItem::AutoScale, autoscaled);
+  c->setZ(z);
+  c->attach(plot);
+  return c;
+}
+
+QVector<QPointF> points(const std::vector<core::Vector2>& v, bool closed = false) {
+  QVector<QPointF> out;
+  for (const auto& p : v) out.append(QPointF(p(0), p(1)));
+  if (closed && !v.empty()) out.append(QPointF(v.front()(0), v.front()(1)));
+  return out;
+}
+
+// "value ± sigma unit" in display units (kN/m, kN m/rad, mm, deg).
+QString withSigma(const rt::StoredQuantity* q) {
+  if (!q) return QStringLiteral("-");
+  double scale = 1.0;
+  QString unit = qs(q->unit);
+  if (q->unit == "N/m") {
+    scale = 1e-3;
+    unit = QStringLiteral("kN/m");
+  } else if (q->unit == "N m/rad") {
+    scale = 1e-3;
+    unit = QStringLiteral("kN m/rad");
+  } else if (q->unit == "m") {
+    scale = 1e3;
+    unit = QStringLiteral("mm");
+  } else if (q->unit == "rad") {
+    scale = 180.0 / kPi;
+    unit = QStringLiteral("°");
+  }
+  const QString value = QString::number(q->value * scale, 'f', q->unit == "rad" ? 2 : 1);
+  if (q->uncertainty > 0)
+    return QStringLiteral("%1 ± %2 %3").arg(value, QString::number(q->uncertainty * scale, 'g', 2), unit);
+  return QStringLiteral("%1 %2").arg(value, unit);
+}
+
+}  // namespace
+
+TwistAxesPage::TwistAxesPage(const PageContext& ctx)
+    : QWidget(ctx.parent), model_(ctx.model), data_(std::make_unique<TwistAxesData>()) {
+  buildUi();
+  retranslate();
+  reload();
+  connect(model_, &ProjectModel::rigTestsChanged, this, &TwistAxesPage::reload);
+  connect(model_, &ProjectModel::projectChanged, this, &TwistAxesPage::reload);
+  if (ctx.item.kind == RecordKind::RigTest) showRigTest(ctx.item.id);
+}
+
+TwistAxesPage::~TwistAxesPage() = default;
+
+void TwistAxesPage::buildUi() {
+  auto* left = new QWidget;
+  auto* leftLayout = new QVBoxLayout(left);
+  auto* form = new QFormLayout;
+  specimen_ = new QComboBox;
+  specimen_->setObjectName(QStringLiteral("specimen"));
+  static_ = new QComboBox;
+  static_->setObjectName(QStringLiteral("staticTest"));
+  dynamic_ = new QComboBox;
+  dynamic_->setObjectName(QStringLiteral("dynamicTest"));
+  for (QComboBox* box : {specimen_, static_, dynamic_}) {
+    box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    box->setMinimumContentsLength(18);
+  }
+  specimenLabel_ = new QLabel;
+  staticLabel_ = new QLabel;
+  dynamicLabel_ = new QLabel;
+  form->addRow(specimenLabel_, specimen_);
+  form->addRow(staticLabel_, static_);
+  form->addRow(dynamicLabel_, dynamic_);
+  leftLayout->addLayout(form);
+
+  auto* freq = new QHBoxLayout;
+  frequencyLabel_ = new QLabel;
+  slider_ = new QSlider(Qt::Horizontal);
+  slider_->setObjectName(QStringLiteral("frequency"));
+  slider_->setTickPosition(QSlider::TicksBelow);
+  slider_->setPageStep(1);
+  slider_->setEnabled(false);
+  frequencyValue_ = new QLabel;
+  frequencyValue_->setObjectName(QStringLiteral("frequencyValue"));
+  frequencyValue_->setMinimumWidth(frequencyValue_->fontMetrics().horizontalAdvance(QStringLiteral("000.0 Hz")));
+  freq->addWidget(frequencyLabel_);
+  freq->addWidget(slider_, 1);
+  freq->addWidget(frequencyValue_);
+  leftLayout->addLayout(freq);
+
+  table_ = new QTableWidget(0, 3);
+  table_->setObjectName(QStringLiteral("results"));
+  table_->verticalHeader()->hide();
+  table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  table_->setSelectionMode(QAbstractItemView::NoSelection);
+  table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+  table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+  table_->horizontalHeader()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
+  leftLayout->addWidget(table_);
+
+  silhouetteNote_ = new QLabel;
+  silhouetteNote_->setObjectName(QStringLiteral("silhouetteNote"));
+  silhouetteNote_->setWordWrap(true);
+  QFont small = silhouetteNote_->font();
+  small.setPointSizeF(small.pointSizeF() * 0.9);
+  silhouetteNote_->setFont(small);
+  leftLayout->addWidget(silhouetteNote_);
+  status_ = new QLabel;
+  status_->setObjectName(QStringLiteral("status"));
+  status_->setWordWrap(true);
+  status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  leftLayout->addWidget(status_);
+  leftLayout->addStretch(1);
+
+  plot_ = new InteractivePlot;
+  plot_->setObjectName(QStringLiteral("twistPlot"));
+  plot_->setCursorOnClick(false);
+  plot_->setMinimumSize(320, 280);
+
+  // Items that persist over selections.
+  lasers_ = addCurve(plot_, QColor(220, 0, 0), 1.0, Qt::SolidLine, true, 30);
+  lasers_->setStyle(QwtPlotCurve::NoCurve);
+  lasers_->setSymbol(
+      new QwtSymbol(QwtSymbol::Ellipse, QBrush(QColor(220, 0, 0)), QPen(QColor(220, 0, 0)), QSize(7, 7)));
+  extent_ = addCurve(plot_, Qt::transparent, 0.0, Qt::NoPen, true, 0);
+  extent_->setStyle(QwtPlotCurve::NoCurve);
+  staticAxis_ = addCurve(plot_, kStaticColour, 2.5, Qt::SolidLine, false, 20);
+  staticArm_ = addCurve(plot_, kStaticColour, 1.0, Qt::DotLine, true, 19);
+  bendAxis_ = addCurve(plot_, kModalColour, 1.5, Qt::DashLine, false, 15);
+  torsAxis_ = addCurve(plot_, kModalColour, 1.5, Qt::DotLine, false, 15);
+  path_ = addCurve(plot_, kPathColour, 1.5, Qt::SolidLine, true, 25);
+  path_->setSymbol(new QwtSymbol(QwtSymbol::Ellipse, QBrush(Qt::white), QPen(kPathColour, 1.5), QSize(7, 7)));
+  dynamicAxis_ = addCurve(plot_, kDynamicColour, 2.0, Qt::SolidLine, false, 22);
+  dynamicFoot_ = new QwtPlotMarker;
+  dynamicFoot_->setSymbol(new QwtSymbol(QwtSymbol::Ellipse, QBrush(kDynamicColour), QPen(kDynamicColour), QSize(9, 9)));
+  dynamicFoot_->setItemAttribute(QwtPlotItem::AutoScale, false);
+  dynamicFoot_->setZ(26);
+  dynamicFoot_->attach(plot_);
+  dynamicFoot_->hide();
+  staticAxisLabel_ = label(QString(), kStaticColour);
+  dynamicAxisLabel_ = label(QString(), kDynamicColour);
+  bendLabel_ = label(QString(), kModalColour);
+  torsLabel_ = label(QString(), kModalColour);
+  plot_->setEqualAspect(true);
+
+  auto* split = new QSplitter(Qt::Horizontal);
+  split->addWidget(left);
+  split->addWidget(plot_);
+  split->setStretchFactor(0, 0);
+  split->setStretchFactor(1, 1);
+  split->setSizes({400, 880});
+  auto* layout = new QHBoxLayout(this);
+  layout->addWidget(split);
+
+  connect(specimen_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
+    if (filling_) return;
+    fillTests();
+    loadTests();
+  });
+  for (QComboBox* box : {static_, dynamic_})
+    connect(box, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
+      if (!filling_) loadTests();
+    });
+  connect(slider_, &QSlider::valueChanged, this, &TwistAxesPage::drawFrequency);
+  // The axes are lines across the view: re-clipped whenever the view moves.
+  auto queueClip = [this] {
+    if (clipQueued_) return;
+    clipQueued_ = true;
+    QTimer::singleShot(0, this, [this] {
+      clipQueued_ = false;
+      clipAxes();
+    });
+  };
+  connect(plot_->axisWidget(QwtPlot::xBottom), &QwtScaleWidget::scaleDivChanged, this, queueClip);
+  connect(plot_->axisWidget(QwtPlot::yLeft), &QwtScaleWidget::scaleDivChanged, this, queueClip);
+}
+
+QwtPlotMarker* TwistAxesPage::label(const QString& text, const QColor& colour) {
+  auto* m = new QwtPlotMarker;
+  QwtText t(text);
+  t.setColor(colour);
+  QColor back(Qt::white);
+  back.setAlpha(200);
+  t.setBackgroundBrush(back);
+  m->setLabel(t);
+  m->setLabelAlignment(Qt::AlignRight | Qt::AlignTop);
+  m->setItemAttribute(QwtPlotItem::AutoScale, false);
+  m->setZ(40);
+  m->attach(plot_);
+  return m;
+}
+
+void TwistAxesPage::retranslate() {
+  specimenLabel_->setText(tr("Specimen"));
+  staticLabel_->setText(tr("Static test"));
+  dynamicLabel_->setText(tr("Dynamic test"));
+  frequencyLabel_->setText(tr("Frequency"));
+  table_->setHorizontalHeaderLabels({tr("Quantity"), tr("Static"), tr("Dynamic")});
+  plot_->setAxisTitle(QwtPlot::xBottom, tr("u [m] (plate plane)"));
+  plot_->setAxisTitle(QwtPlot::yLeft, tr("v [m]"));
+  static_->setToolTip(tr("The static ramp test whose twist axis is drawn (black)"));
+  dynamic_->setToolTip(tr("The sine sweep whose dynamic twist axis is drawn (red) at the slider's frequency"));
+  slider_->setToolTip(tr("Excitation frequency of the sine sweep: moves the dynamic twist axis"));
+  if (data_ && (data_->statics || data_->dynamics)) {
+    const int keep = slider_->value();
+    drawStatic();
+    slider_->setValue(keep);
+    drawFrequency();
+  }
+}
+
+void TwistAxesPage::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) {
+    retranslate();
+    reload();
+  }
+  QWidget::changeEvent(event);
+}
+
+void TwistAxesPage::reload() {
+  fillSpecimens();
+  fillTests();
+  loadTests();
+}
+
+void TwistAxesPage::fillSpecimens() {
+  const qint64 keep = specimen_->currentData().toLongLong();
+  filling_ = true;
+  specimen_->clear();
+  core::io::ProjectStore* store = model_->store();
+  if (store) {
+    auto tests = store->rigTests();
+    if (tests) {
+      QList<qint64> seen;
+      for (const auto& t : *tests) {
+        if (seen.contains(t.specimenId)) continue;
+        seen.append(t.specimenId);
+        specimen_->addItem(qs(t.specimenName), QVariant::fromValue<qlonglong>(t.specimenId));
+      }
+    }
+  }
+  const int at = specimen_->findData(QVariant::fromValue<qlonglong>(keep));
+  if (at >= 0) specimen_->setCurrentIndex(at);
+  filling_ = false;
+}
+
+void TwistAxesPage::fillTests() {
+  const qint64 keepStatic = static_->currentData().toLongLong(), keepDynamic = dynamic_->currentData().toLongLong();
+  const qint64 specimen = specimen_->currentData().toLongLong();
+  filling_ = true;
+  static_->clear();
+  dynamic_->clear();
+  static_->addItem(tr("(none)"), QVariant::fromValue<qlonglong>(0));
+  dynamic_->addItem(tr("(none)"), QVariant::fromValue<qlonglong>(0));
+  core::io::ProjectStore* store = model_->store();
+  if (store && specimen != 0) {
+    auto tests = store->rigTests();
+    if (tests) {
+      for (const auto& t : *tests) {
+        if (t.specimenId != specimen) continue;
+        QComboBox* box = t.kind == "dynamic" ? dynamic_ : static_;
+        box->addItem(qs(t.name), QVariant::fromValue<qlonglong>(t.id));
+      }
+    }
+  }
+  // The kept test, else the latest of each kind.
+  for (auto [box, keep] : {std::pair<QComboBox*, qint64>{static_, keepStatic}, {dynamic_, keepDynamic}}) {
+    const int at = box->findData(QVariant::fromValue<qlonglong>(keep));
+    box->setCurrentIndex(keep != 0 && at >= 0 ? at : box->count() - 1);
+  }
+  filling_ = false;
+}
+
+bool TwistAxesPage::selectTests(std::optional<qint64> staticTest, std::optional<qint64> dynamicTest) {
+  core::io::ProjectStore* store = model_->store();
+  if (!store) return false;
+  const qint64 any = staticTest ? *staticTest : (dynamicTest ? *dynamicTest : 0);
+  auto test = store->rigTest(any);
+  if (!test) return false;
+  filling_ = true;
+  const int s = specimen_->findData(QVariant::fromValue<qlonglong>(test->specimenId));
+  if (s < 0) {
+    filling_ = false;
+    return false;
+  }
+  specimen_->setCurrentIndex(s);
+  filling_ = false;
+  fillTests();
+  filling_ = true;
+  const int a = static_->findData(QVariant::fromValue<qlonglong>(staticTest.value_or(0)));
+  const int b = dynamic_->findData(QVariant::fromValue<qlonglong>(dynamicTest.value_or(0)));
+  if (a >= 0) static_->setCurrentIndex(a);
+  if (b >= 0) dynamic_->setCurrentIndex(b);
+  filling_ = false;
+  loadTests();
+  return a >= 0 && b >= 0;
+}
+
+void TwistAxesPage::showRigTest(qint64 testId) {
+  core::io::ProjectStore* store = model_->store();
+  if (!store) return;
+  auto test = store->rigTest(testId);
+  if (!test) {
+    setStatus(tr("Cannot read the rig test: %1").arg(qs(test.error().describe())), true);
+    return;
+  }
+  fillSpecimens();
+  const int s = specimen_->findData(QVariant::fromValue<qlonglong>(test->specimenId));
+  if (s < 0) return;
+  filling_ = true;
+  specimen_->setCurrentIndex(s);
+  filling_ = false;
+  fillTests();  // the latest of each kind
+  QComboBox* box = test->kind == core::io::StoredRigTest::Kind::Dynamic ? dynamic_ : static_;
+  filling_ = true;
+  box->setCurrentIndex(box->findData(QVariant::fromValue<qlonglong>(testId)));
+  filling_ = false;
+  loadTests();
+}
+
+void TwistAxesPage::loadTests() {
+  *data_ = TwistAxesData{};
+  core::io::ProjectStore* store = model_->store();
+  QStringList problems;
+  auto read = [&](QComboBox* box, std::optional<rt::StiffnessTestView>& into) {
+    const qint64 id = box->currentData().toLongLong();
+    if (!store || id == 0) return;
+    auto view = rt::readStiffnessTest(*store, id);
+    if (view)
+      into = std::move(view).value();
+    else
+      problems << tr("Cannot read '%1': %2").arg(box->currentText(), qs(view.error().describe()));
+  };
+  read(static_, data_->statics);
+  read(dynamic_, data_->dynamics);
+  if (data_->dynamics) {
+    auto path = st::dynamicAxisPath(data_->dynamics->dynamicAxes(), data_->dynamics->loadPoint);
+    if (path)
+      data_->path = std::move(path).value();
+    else
+      problems << tr("No dynamic axis to trace: %1").arg(qs(path.error().describe()));
+  }
+  if (const auto* g = data_->geometry()) {
+    const auto& catalogue = silhouettes();
+    std::string key = g->specimenKey;
+    if (key.empty() && data_->dynamics) key = data_->dynamics->specimenKey;
+    if (!catalogue) {
+      data_->silhouetteError = qs(catalogue.error().describe());
+    } else if (key.empty()) {
+      data_->silhouetteError = tr("the test does not name a virtual specimen, so no outline is known");
+    } else {
+      auto placed = st::placeSilhouette(*catalogue, key, g->loadPoint);
+      if (placed)
+        data_->silhouette = std::move(placed).value();
+      else
+        data_->silhouetteError = qs(placed.error().describe());
+    }
+  }
+  slider_->blockSignals(true);
+  const int n = data_->path ? static_cast<int>(data_->path->points.size()) : 0;
+  slider_->setRange(0, std::max(0, n - 1));
+  slider_->setValue(0);
+  slider_->setEnabled(n > 1);
+  slider_->blockSignals(false);
+  drawStatic();
+  drawFrequency();
+  if (!problems.isEmpty()) {
+    setStatus(problems.join(QStringLiteral("\n")), true);
+  } else if (!data_->statics && !data_->dynamics) {
+    setStatus(store ? tr("No stiffness-rig test to show: run one on the Stiffness Rig page.")
+                    : tr("No project is open."));
+  } else {
+    QStringList notes;
+    for (const auto* v : {data_->statics ? &*data_->statics : nullptr, data_->dynamics ? &*data_->dynamics : nullptr})
+      if (v && v->status != core::io::TestStatus::Complete)
+        notes << tr("'%1' is %2: %3").arg(qs(v->name), qs(core::io::testStatusName(v->status)), qs(v->statusNote));
+    setStatus(notes.join(QStringLiteral("\n")), !notes.isEmpty());
+  }
+}
+
+void TwistAxesPage::drawStatic() {
+  for (auto* c : silhouette_) delete c;
+  silhouette_.clear();
+  for (auto* m : markers_) delete m;
+  markers_.clear();
+  markerAlign_.clear();
+  lasers_->setSamples(QVector<QPointF>());
+  staticArm_->setSamples(QVector<QPointF>());
+  extent_->setSamples(QVector<QPointF>());
+  std::vector<core::Vector2> extent;  // points the view must hold that no curve draws
+  const TwistAxesData& d = *data_;
+  const rt::StiffnessTestView* g = d.geometry();
+  auto pointMarker = [&](const core::Vector2& at, QwtSymbol::Style style, const QColor& pen, const QBrush& brush,
+                         int size, const QString& text, Qt::Alignment align) {
+    auto* m = new QwtPlotMarker;
+    m->setValue(at(0), at(1));
+    m->setSymbol(new QwtSymbol(style, brush, QPen(pen, 1.5), QSize(size, size)));
+    if (!text.isEmpty()) {
+      QwtText t(text);
+      t.setColor(pen);
+      QColor back(Qt::white);
+      back.setAlpha(200);
+      t.setBackgroundBrush(back);
+      m->setLabel(t);
+      m->setLabelAlignment(align);
+    }
+    m->setZ(35);
+    m->setItemAttribute(QwtPlotItem::AutoScale, false);
+    m->attach(plot_);
+    markers_.push_back(m);
+    markerAlign_.push_back(align & Qt::AlignVertical_Mask);
+  };
+  if (d.silhouette) {
+    for (const auto& poly : d.silhouette->polygons) {
+      auto* c = addCurve(plot_, kSilhouetteColour, 1.5, Qt::SolidLine, true, 10);
+      c->setSamples(points(poly, true));
+      silhouette_.push_back(c);
+    }
+    pointMarker(d.silhouette->constrainedEnd, QwtSymbol::Rect, QColor(60, 60, 60),
+                QBrush(QColor(60, 60, 60), Qt::BDiagPattern), 14,
+                tr("%1 (constrained)").arg(pointName(d.silhouette->constrainedEndName)), Qt::AlignLeft | Qt::AlignTop);
+    extent.push_back(d.silhouette->constrainedEnd);
+    if (d.silhouette->centreOfGravity) extent.push_back(*d.silhouette->centreOfGravity);
+    if (d.silhouette->centreOfGravity)
+      pointMarker(*d.silhouette->centreOfGravity, QwtSymbol::Ellipse, QColor(0, 150, 0), QBrush(Qt::NoBrush), 13,
+                  tr("centre of gravity (estimated)"), Qt::AlignRight | Qt::AlignBottom);
+    silhouetteNote_->setText(tr("Outline: %1, approximate (not to scale of a drawing): %2")
+                                 .arg(qs(d.silhouette->name), qs(d.silhouette->source)));
+  } else {
+    silhouetteNote_->setText(d.silhouetteError.isEmpty() ? QString()
+                                                         : tr("No outline drawn: %1").arg(d.silhouetteError));
+  }
+  if (g) {
+    lasers_->setSamples(points(g->laserPoints));
+    for (std::size_t i = 0; i < g->laserPoints.size(); ++i) {
+      auto* m = new QwtPlotMarker;
+      m->setValue(g->laserPoints[i](0), g->laserPoints[i](1));
+      QwtText t(tr("L%1").arg(i + 1));
+      t.setColor(QColor(200, 0, 0));
+      m->setLabel(t);
+      m->setLabelAlignment(Qt::AlignRight | Qt::AlignBottom);
+      m->setItemAttribute(QwtPlotItem::AutoScale, false);
+      m->setZ(34);
+      m->attach(plot_);
+      markers_.push_back(m);
+      markerAlign_.push_back(Qt::AlignBottom);
+    }
+    const QString load =
+        d.silhouette ? tr("load point (%1)").arg(pointName(d.silhouette->loadPointName)) : tr("load point");
+    pointMarker(g->loadPoint, QwtSymbol::Ellipse, Qt::black, QBrush(Qt::black), 12, load,
+                Qt::AlignRight | Qt::AlignBottom);
+    extent.push_back(g->loadPoint);
+  }
+  extent_->setSamples(points(extent));
+  if (d.statics && d.statics->axis) {
+    const core::Vector2 foot = st::footOf(*d.statics->axis, d.statics->loadPoint);
+    staticArm_->setSamples(points({d.statics->loadPoint, foot}));
+    auto* m = new QwtPlotMarker;
+    const core::Vector2 mid = d.statics->loadPoint + 0.3 * (foot - d.statics->loadPoint);
+    m->setValue(mid(0), mid(1));
+    QwtText t(tr("a_tw"));
+    t.setColor(kStaticColour);
+    m->setLabel(t);
+    m->setItemAttribute(QwtPlotItem::AutoScale, false);
+    m->setZ(34);
+    m->attach(plot_);
+    markers_.push_back(m);
+    markerAlign_.push_back(Qt::AlignTop);
+  }
+  staticAxisLabel_->setLabel(QwtText());
+  // Every item is in: fit the view (equal aspect), then the axes across it.
+  plot_->autoscale();
+  fillTable();
+  clipAxes();
+}
+
+void TwistAxesPage::drawFrequency() {
+  const TwistAxesData& d = *data_;
+  if (d.path && !d.path->points.empty()) {
+    QVector<QPointF> feet;
+    for (const auto& p : d.path->points) feet.append(QPointF(p.foot(0), p.foot(1)));
+    path_->setSamples(feet);
+    const auto& at = d.path->points[static_cast<std::size_t>(std::clamp(slider_->value(), 0, slider_->maximum()))];
+    frequencyValue_->setText(tr("%1 Hz").arg(at.frequencyHz, 0, 'g', 4));
+    dynamicFoot_->setValue(at.foot(0), at.foot(1));
+    dynamicFoot_->show();
+  } else {
+    path_->setSamples(QVector<QPointF>());
+    frequencyValue_->setText(QStringLiteral("-"));
+    dynamicFoot_->hide();
+  }
+  fillTable();
+  clipAxes();
+}
+
+std::optional<double> TwistAxesPage::shownFrequencyHz() const {
+  if (!data_->path || data_->path->points.empty()) return std::nullopt;
+  return data_->path->points[static_cast<std::size_t>(std::clamp(slider_->value(), 0, slider_->maximum()))].frequencyHz;
+}
+
+void TwistAxesPage::clipAxes() {
+  const TwistAxesData& d = *data_;
+  const QwtInterval x = plot_->axisInterval(QwtPlot::xBottom), y = plot_->axisInterval(QwtPlot::yLeft);
+  st::PlaneBox view;
+  view.include(core::Vector2(x.minValue(), y.minValue()));
+  view.include(core::Vector2(x.maxValue(), y.maxValue()));
+  // A line across the view, labelled near its upper end.
+  const double centreU = 0.5 * (x.minValue() + x.maxValue());
+  // Point labels on the side towards the view's centre, so none leaves it.
+  for (std::size_t i = 0; i < markers_.size(); ++i)
+    markers_[i]->setLabelAlignment((markers_[i]->xValue() < centreU ? Qt::AlignRight : Qt::AlignLeft) |
+                                   markerAlign_[i]);
+  // `along`: where the label sits, as a fraction of the segment from its upper
+  // end (the four lines' labels apart from each other).
+  auto draw = [&](QwtPlotCurve* curve, QwtPlotMarker* tag, const std::optional<st::PlateAxis>& axis,
+                  const QString& text, double along) {
+    curve->setSamples(QVector<QPointF>());
+    tag->setLabel(QwtText());
+    if (!axis) return;
+    auto seg = st::clipAxis(*axis, view);
+    if (!seg) return;
+    curve->setSamples(points({seg->from, seg->to}));
+    const core::Vector2 top = seg->to(1) >= seg->from(1) ? seg->to : seg->from;
+    const core::Vector2 other = seg->to(1) >= seg->from(1) ? seg->from : seg->to;
+    const core::Vector2 at = top + along * (other - top);
+    tag->setValue(at(0), at(1));
+    QwtText t(text);
+    t.setColor(curve->pen().color());
+    QColor back(Qt::white);
+    back.setAlpha(200);
+    t.setBackgroundBrush(back);
+    t.setFont(plot_->font());
+    tag->setLabel(t);
+    // The label on the side of the line away from the view's centre.
+    tag->setLabelAlignment(at(0) > centreU ? Qt::AlignLeft | Qt::AlignVCenter : Qt::AlignRight | Qt::AlignVCenter);
+  };
+  const rt::StiffnessTestView* g = d.geometry();
+  draw(staticAxis_, staticAxisLabel_, d.statics ? d.statics->axis : std::nullopt, tr("static twist axis"), 0.90);
+  draw(bendAxis_, bendLabel_, g ? g->bendAxis : std::nullopt, tr("bending axis (set-up)"), 0.08);
+  draw(torsAxis_, torsLabel_, g ? g->torsAxis : std::nullopt, tr("torsion axis (set-up)"), 0.75);
+  std::optional<st::PlateAxis> dyn;
+  QString dynText;
+  if (d.path && !d.path->points.empty()) {
+    const auto& at = d.path->points[static_cast<std::size_t>(std::clamp(slider_->value(), 0, slider_->maximum()))];
+    dyn = at.axis;
+    dynText = tr("dynamic twist axis, %1 Hz").arg(at.frequencyHz, 0, 'g', 4);
+  }
+  draw(dynamicAxis_, dynamicAxisLabel_, dyn, dynText, 0.22);
+  plot_->replot();
+}
+
+void TwistAxesPage::fillTable() {
+  const TwistAxesData& d = *data_;
+  struct Row {
+    const char* key;
+    QString label, tip;
+  };
+  const Row rows[] = {{"k_lat", tr("k_lat"), tr("lateral stiffness at the load point, F / x_lat (eq. 29)")},
+                      {"k_tw", tr("k_tw"), tr("twist stiffness about the axis, k_lat a_tw² (eq. 30)")},
+                      {"a_tw", tr("a_tw"), tr("twist arm: distance of the load point from the axis")},
+                      {"axis_inclination", tr("β"), tr("inclination of the axis from the plate's v axis towards u")},
+                      {"axis_point_u", tr("foot u"), tr("u of the axis's point nearest the load point")},
+                      {"axis_point_v", tr("foot v"), tr("v of the axis's point nearest the load point")}};
+  const rt::StiffnessTestView::Step* step = nullptr;
+  if (d.dynamics && d.path && !d.path->points.empty()) {
+    const double f = *shownFrequencyHz();
+    for (const auto& s : d.dynamics->steps)
+      if (s.frequencyHz == f) step = &s;
+  }
+  table_->setRowCount(static_cast<int>(std::size(rows)));
+  for (int r = 0; r < static_cast<int>(std::size(rows)); ++r) {
+    const auto& row = rows[r];
+    const rt::StoredQuantity* s = d.statics ? d.statics->result(row.key) : nullptr;
+    const rt::StoredQuantity* dy = nullptr;
+    if (step) {
+      const auto it = step->results.find(row.key);
+      if (it != step->results.end()) dy = &it->second;
+    }
+    const QString items[] = {row.label, withSigma(s), withSigma(dy)};
+    for (int c = 0; c < 3; ++c) {
+      auto* item = new QTableWidgetItem(items[c]);
+      if (c > 0) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+      item->setData(Qt::UserRole, QString::fromLatin1(row.key));
+      item->setToolTip(c == 0 ? row.tip : items[c]);
+      table_->setItem(r, c, item);
+    }
+  }
+  table_->setHorizontalHeaderItem(
+      2, new QTableWidgetItem(shownFrequencyHz() ? tr("Dynamic, %1 Hz").arg(*shownFrequencyHz(), 0, 'g', 4)
+                                                 : tr("Dynamic")));
+  table_->resizeColumnsToContents();
+  table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+  // As tall as its rows: the page's free height goes to the plot's side panel stretch.
+  int h = table_->horizontalHeader()->height() + 2 * table_->frameWidth();
+  for (int r = 0; r < table_->rowCount(); ++r) h += table_->rowHeight(r);
+  table_->setFixedHeight(h);
+}
+
+QString TwistAxesPage::silhouetteText() const {
+  return data_->silhouette ? qs(data_->silhouette->name + ": " + data_->silhouette->source) : QString();
+}
+
+QString TwistAxesPage::statusText() const {
+  return status_->text();
+}
+
+QStringList TwistAxesPage::plotLabels() const {
+  QStringList out;
+  for (const QwtPlotItem* item : plot_->itemList(QwtPlotItem::Rtti_PlotMarker)) {
+    const auto* m = static_cast<const QwtPlotMarker*>(item);
+    if (m->isVisible() && !m->label().isEmpty()) out << m->label().text();
+  }
+  return out;
+}
+
+void TwistAxesPage::setStatus(const QString& text, bool error) {
+  status_->setText(text);
+  status_->setStyleSheet(error ? QStringLiteral("color: #b00000;") : QString());
+  if (error && !text.isEmpty()) emit message(text);
+}
+
+}  // namespace views
+}  // namespace mozzi
