@@ -12,7 +12,6 @@
 #include <memory>
 #include <vector>
 
-#include "core/geometry/mesh_placement.h"
 #include "core/io/project_store.h"
 #include "views/campaign/campaign_session.h"
 #include "views/campaign/hammer_station_page.h"
@@ -53,29 +52,9 @@ bool isKind(const ProjectItem& item, std::initializer_list<RecordKind> kinds) {
 void showSpecimenMesh(views::SceneView* scene, views::ProjectModel* model, qint64 specimenId,
                       const std::function<void(const QString&)>& log) {
   scene->setProperty("mozziSpecimen", QVariant::fromValue<qlonglong>(specimenId));
-  core::io::ProjectStore* store = model->store();
-  if (!store || specimenId == 0) {
-    scene->clearMesh();
-    return;
-  }
-  auto mesh = store->mesh(specimenId);
-  if (!mesh) {
-    scene->clearMesh();
-    if (log)
-      log(QCoreApplication::translate("Pages", "Cannot show the mesh: %1")
-              .arg(QString::fromStdString(mesh.error().describe())));
-    return;
-  }
-  auto positions = core::geometry::globalNodePositions(*mesh);
-  if (!positions) {
-    scene->clearMesh();
-    if (log)
-      log(QCoreApplication::translate("Pages", "Cannot place the mesh: %1")
-              .arg(QString::fromStdString(positions.error().describe())));
-    return;
-  }
-  scene->showMesh(*mesh, *positions);
-  if (scene->skippedLineCount() > 0 && log) {
+  const views::ShownMesh shown = views::showStoredMesh(*scene, model->store(), specimenId);
+  if (!shown.problem.isEmpty() && log) log(shown.problem);
+  if (shown.mesh && scene->skippedLineCount() > 0 && log) {
     log(QCoreApplication::translate("Pages",
                                     "%n trace line segment(s) name nodes the mesh does not have and are not drawn",
                                     nullptr, scene->skippedLineCount()));

@@ -28,7 +28,6 @@
 #include <QVBoxLayout>
 #include <initializer_list>
 
-#include "core/geometry/mesh_placement.h"
 #include "core/geometry/mode_shape.h"
 #include "devices/campaign/campaign_store.h"
 #include "devices/common/driver.h"
@@ -68,7 +67,8 @@ QString stateName(cp::EngineState state) {
 // too big for the traces at 1280x800).
 void setAxisText(QwtPlot* plot, int axis, const QString& text) {
   QwtText title(text);
-  title.setRenderFlags(Qt::AlignCenter | Qt::TextWordWrap);  // a long title wraps on a short plot
+  // On one line: wrapped at a word break, a unit splits ("Response [m/" over "s^2]").
+  title.setRenderFlags(Qt::AlignCenter);
   QFont f = plot->font();
   f.setBold(false);
   title.setFont(f);
@@ -432,27 +432,14 @@ void HammerStationPage::reloadCampaigns() {
 
 void HammerStationPage::showSpecimenMesh() {
   const qint64 specimen = campaigns_->currentData(kSpecimenRole).toLongLong();
-  core::io::ProjectStore* store = ctx_.model->store();
   if (specimen == sceneSpecimen_ && sceneMesh_) return;
   sceneSpecimen_ = specimen;
   sceneMesh_.reset();
-  std::optional<core::io::StoredMesh> mesh;
-  if (store && specimen != 0) {
-    auto stored = store->mesh(specimen);
-    if (stored) mesh = std::move(*stored);
-  }
-  if (!mesh) {
-    scene_->clearMesh();  // a specimen without a mesh: the table alone shows the points
-    return;
-  }
-  auto positions = core::geometry::globalNodePositions(*mesh);
-  if (!positions || positions->empty()) {
-    scene_->clearMesh();
-    return;
-  }
-  scene_->showMesh(*mesh, *positions);
+  // A specimen without a mesh clears the view: the table alone shows the points.
+  views::ShownMesh shown = views::showStoredMesh(*scene_, ctx_.model->store(), specimen);
+  if (!shown.mesh) return;
   sceneMesh_.emplace();
-  sceneMesh_->mesh = std::move(*mesh);
+  sceneMesh_->mesh = std::move(*shown.mesh);
   updateHitMarker();
 }
 
@@ -842,7 +829,9 @@ void HammerStationPage::retranslate() {
   {
     const int r = responseChannel_->currentIndex();
     const QString unit = r >= 0 && r < responseUnits_.size() ? responseUnits_[r] : tr("EU");
-    setAxisText(traces_, QwtPlot::yRight, tr("Response [%1]").arg(unit));
+    // The unit alone: the legend names the response, and "Response [m/s^2]"
+    // is longer than the traces are high at 1280x800.
+    setAxisText(traces_, QwtPlot::yRight, tr("[%1]", "right axis of the hit traces: the response's unit").arg(unit));
   }
   if (traces_->axisTitle(QwtPlot::yLeft).isEmpty()) setAxisText(traces_, QwtPlot::yLeft, tr("Force [N]"));
   if (traces_->axisTitle(QwtPlot::xBottom).isEmpty())

@@ -91,7 +91,13 @@ void ParameterForm::setSpecs(std::vector<devices::ParameterSpec> specs) {
     palette.setColor(QPalette::WindowText, QColor(200, 30, 45));
     field.problem->setPalette(palette);
     field.problem->hide();
-    cellLayout->addWidget(field.editor, 0, Qt::AlignLeft);
+    // Text grows with the form (names, serials, DOF lists read whole); numbers
+    // and choices keep the one width.
+    if (spec.type == devices::ParameterType::Text) {
+      cellLayout->addWidget(field.editor);
+    } else {
+      cellLayout->addWidget(field.editor, 0, Qt::AlignLeft);
+    }
     cellLayout->addWidget(field.problem);
     field.label = new QLabel(this);
     field.label->setBuddy(field.editor);

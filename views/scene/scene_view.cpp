@@ -35,6 +35,9 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "core/geometry/mesh_placement.h"
+#include "core/io/project_store.h"
+
 namespace mozzi {
 namespace views {
 
@@ -638,6 +641,32 @@ void SceneView::changeEvent(QEvent* event) {
 
 void SceneView::retranslate() {
   pipeline_->legend->SetTitle(tr("|u|").toUtf8().constData());
+}
+
+ShownMesh showStoredMesh(SceneView& scene, core::io::ProjectStore* store, qint64 specimenId) {
+  ShownMesh shown;
+  if (!store || specimenId == 0) {
+    scene.clearMesh();
+    return shown;
+  }
+  auto mesh = store->mesh(specimenId);
+  if (!mesh) {
+    scene.clearMesh();
+    shown.problem = SceneView::tr("Cannot show the mesh: %1").arg(QString::fromStdString(mesh.error().describe()));
+    return shown;
+  }
+  auto positions = core::geometry::globalNodePositions(*mesh);
+  if (!positions || positions->empty()) {
+    scene.clearMesh();
+    if (!positions) {
+      shown.problem =
+          SceneView::tr("Cannot place the mesh: %1").arg(QString::fromStdString(positions.error().describe()));
+    }
+    return shown;
+  }
+  scene.showMesh(*mesh, *positions);
+  shown.mesh = std::move(*mesh);
+  return shown;
 }
 
 }  // namespace views

@@ -23,6 +23,9 @@
 #include "core/io/project_records.h"
 
 class QVTKOpenGLNativeWidget;
+namespace mozzi::core::io {
+class ProjectStore;
+}
 class vtkRenderer;
 class vtkPoints;
 
@@ -140,6 +143,16 @@ class SceneView : public QWidget {
   QPoint pressPos_;
   bool pressed_ = false;
 };
+
+// The stored mesh of a specimen shown in `scene`: read from the project,
+// placed in global axes and drawn; the scene is cleared when the specimen has
+// no mesh or it cannot be read or placed (`problem` then says why, translated;
+// empty for a specimen without a mesh or no project).
+struct ShownMesh {
+  std::optional<core::io::StoredMesh> mesh;
+  QString problem;
+};
+ShownMesh showStoredMesh(SceneView& scene, core::io::ProjectStore* store, qint64 specimenId);
 
 }  // namespace views
 }  // namespace mozzi
