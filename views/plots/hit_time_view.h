@@ -46,6 +46,8 @@ class HitTimeView : public QWidget {
   void retranslate();
   void redraw();
 
+  // The store the set was read from. The view lives on an item page, which
+  // PageTabs closes when the project changes, so it never outlives the store.
   const core::io::ProjectStore* store_ = nullptr;
   std::vector<std::int64_t> hitIds_;
   devices::campaign::CampaignDefinition definition_;
