@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -325,7 +326,12 @@ Result<Diagnosis> diagnoseOnce(const GapProblem& problem, const DiagnosisOptions
         if (e.candidateIndex == sc.index && e.fitted) before = &e;
     }
     if (before) {
-      fits[c] = engine::fitModel(model, {scaledPoint(theta, before->theta, sc.phi, before->parameters)}, {});
+      // From the first pass's optimum, with its covariance at once (step 4c
+      // then has nothing to polish).
+      FitOptions withCovariance;
+      withCovariance.covariance = true;
+      fits[c] =
+          engine::fitModel(model, {scaledPoint(theta, before->theta, sc.phi, before->parameters)}, withCovariance);
       if (fits[c].ok) firstLr[c] = 2.0 * (fit0.nll - fits[c].nll);
       return;
     }
@@ -394,6 +400,10 @@ Result<Diagnosis> diagnoseOnce(const GapProblem& problem, const DiagnosisOptions
   parallelFor(candidateCount, [&](std::size_t c) {
     const auto& sc = screen.candidates[c];
     if (!sc.identifiable || !fits[c].ok) return;
+    if (warm && !needsRestarts[c] && (!fits[c].stdErrors.empty() || fits[c].rankDeficient)) {
+      polishedFits[c] = fits[c];  // fitted with its covariance from the first pass's optimum
+      return;
+    }
     Model model(problem, theta, sc.index, sc.phi);
     FitOptions fc;
     fc.covariance = true;
@@ -487,13 +497,19 @@ Result<Diagnosis> diagnoseOnce(const GapProblem& problem, const DiagnosisOptions
 
   // Steps 7 and 9: held-out checks, gap after and shrink for the top few
   // (those of the first `count` ranks not yet checked).
+  std::optional<engine::HeldOutBaseline> heldBaseline;  // the baseline's fold fits, once
   auto checkHeldOut = [&](std::size_t count) -> Result<void> {
     std::vector<std::size_t> todo;
     for (std::size_t i = 0; i < std::min(fittedCount, count); ++i)
       if (std::isnan(d.ranking[i].heldOutImprovement)) todo.push_back(i);
     for (std::size_t i : todo) {
       RankedEffect& e = d.ranking[i];
-      auto held = engine::heldOutImprovement(problem, theta, u0, alt[i]);  // its folds on every core
+      if (!heldBaseline) {
+        auto b = engine::heldOutBaseline(problem, theta, u0);
+        if (!b) return b.error();
+        heldBaseline = std::move(b).value();
+      }
+      auto held = engine::heldOutImprovement(problem, theta, u0, alt[i], *heldBaseline);
       if (!held) return held.error();
       e.heldOutImprovement = *held;
       e.gapAfter = problem.metrics(e.theta.data(), e.candidateIndex, e.parameters.data());
@@ -670,7 +686,14 @@ Result<Diagnosis> diagnoseOnce(const GapProblem& problem, const DiagnosisOptions
       }
       ep.chiSquare = bp.chiSquare;
       ep.fitPValue = fitP(bp.chiSquare, freeCount(bp.phi));
-      auto held = engine::heldOutImprovement(combo, theta, u0, {0, bp.phi, u});
+      // The combination's baseline is the problem's own (ComboProblem's
+      // candidate -1): the fold fits already made serve.
+      if (!heldBaseline) {
+        auto b = engine::heldOutBaseline(problem, theta, u0);
+        if (!b) return b.error();
+        heldBaseline = std::move(b).value();
+      }
+      auto held = engine::heldOutImprovement(combo, theta, u0, {0, bp.phi, u}, *heldBaseline);
       if (!held) return held.error();
       ep.heldOutImprovement = *held;
       for (std::size_t m : {ia, ib}) {

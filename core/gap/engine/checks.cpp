@@ -1,8 +1,8 @@
 #include "core/gap/engine/checks.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <set>
 
@@ -68,19 +68,15 @@ Result<double> flipProbability(const GapProblem& problem, const std::vector<Scal
   return std::max(static_cast<double>(flips[0]) / total[0], static_cast<double>(flips[1]) / total[1]);
 }
 
-Result<double> heldOutImprovement(const GapProblem& problem, const std::vector<Scaled>& theta,
-                                  const Eigen::VectorXd& uBaseline, const FittedAlternative& effect) {
-  const std::string where = "held-out check";
+namespace {
+
+// Per fold f (in `foldIds` order), the squared whitened residual on f of
+// `full` at the fit of `model` restricted to the other folds, from `starts`.
+Result<std::vector<double>> foldSums(const GapProblem& problem, const std::vector<int>& foldIds,
+                                     const std::function<Model(const std::vector<int>&)>& restricted, const Model& full,
+                                     const std::vector<Eigen::VectorXd>& starts) {
   const std::vector<int> folds = problem.folds();
-  const std::set<int> distinct(folds.begin(), folds.end());
-  if (distinct.size() < 2 || static_cast<int>(folds.size()) != problem.residualCount()) {
-    return std::numeric_limits<double>::quiet_NaN();
-  }
-  const auto p = static_cast<Eigen::Index>(theta.size());
-  // The folds are refitted independently, on every core; their sums are
-  // added in fold order, so the result does not depend on the threads.
-  const std::vector<int> foldIds(distinct.begin(), distinct.end());
-  std::vector<std::array<double, 2>> sums(foldIds.size(), {0.0, 0.0});
+  std::vector<double> sums(foldIds.size(), 0.0);
   std::vector<char> failed(foldIds.size(), 0);
   parallelFor(foldIds.size(), [&](std::size_t i) {
     const int f = foldIds[i];
@@ -88,28 +84,55 @@ Result<double> heldOutImprovement(const GapProblem& problem, const std::vector<S
     for (std::size_t j = 0; j < folds.size(); ++j) {
       if (folds[j] != f) in.push_back(static_cast<int>(j));
     }
-    Model base(problem, theta, -1, {}, in), eff(problem, theta, effect.candidate, effect.phi, in);
-    Model fullBase(problem, theta, -1, {}), fullEffect(problem, theta, effect.candidate, effect.phi);
-    Eigen::VectorXd r0(problem.residualCount()), r1(problem.residualCount());
-    const FitResult fb = fitModel(base, {uBaseline}, warmFit());
-    const FitResult fe =
-        fitModel(eff, {effect.u, withPhi(uBaseline, Eigen::VectorXd::Zero(effect.u.size() - p))}, warmFit());
-    if (!fb.ok || !fe.ok || !fullBase.residuals(fb.u.data(), r0.data()) ||
-        !fullEffect.residuals(fe.u.data(), r1.data())) {
+    const Model model = restricted(in);
+    Eigen::VectorXd r(problem.residualCount());
+    const FitResult fit = fitModel(model, starts, warmFit());
+    if (!fit.ok || !full.residuals(fit.u.data(), r.data())) {
       failed[i] = 1;
       return;
     }
     for (std::size_t j = 0; j < folds.size(); ++j) {
-      if (folds[j] != f) continue;
-      sums[i][0] += r0[static_cast<Eigen::Index>(j)] * r0[static_cast<Eigen::Index>(j)];
-      sums[i][1] += r1[static_cast<Eigen::Index>(j)] * r1[static_cast<Eigen::Index>(j)];
+      if (folds[j] == f) sums[i] += r[static_cast<Eigen::Index>(j)] * r[static_cast<Eigen::Index>(j)];
     }
   });
+  for (char bad : failed)
+    if (bad) return makeError(ErrorCode::NumericalFailure, "a fold could not be refitted", "held-out check");
+  return sums;
+}
+
+}  // namespace
+
+Result<HeldOutBaseline> heldOutBaseline(const GapProblem& problem, const std::vector<Scaled>& theta,
+                                        const Eigen::VectorXd& uBaseline) {
+  HeldOutBaseline out;
+  const std::vector<int> folds = problem.folds();
+  const std::set<int> distinct(folds.begin(), folds.end());
+  if (distinct.size() < 2 || static_cast<int>(folds.size()) != problem.residualCount()) return out;
+  const std::vector<int> foldIds(distinct.begin(), distinct.end());
+  const Model full(problem, theta, -1, {});
+  auto sums = foldSums(problem, foldIds, [&](const std::vector<int>& in) { return Model(problem, theta, -1, {}, in); },
+                       full, {uBaseline});
+  if (!sums) return sums.error();
+  out.foldIds = foldIds;
+  out.sumOfSquares = std::move(sums).value();
+  return out;
+}
+
+Result<double> heldOutImprovement(const GapProblem& problem, const std::vector<Scaled>& theta,
+                                  const Eigen::VectorXd& uBaseline, const FittedAlternative& effect,
+                                  const HeldOutBaseline& baseline) {
+  if (baseline.foldIds.empty()) return std::numeric_limits<double>::quiet_NaN();
+  const auto p = static_cast<Eigen::Index>(theta.size());
+  const Model full(problem, theta, effect.candidate, effect.phi);
+  auto sums =
+      foldSums(problem, baseline.foldIds,
+               [&](const std::vector<int>& in) { return Model(problem, theta, effect.candidate, effect.phi, in); },
+               full, {effect.u, withPhi(uBaseline, Eigen::VectorXd::Zero(effect.u.size() - p))});
+  if (!sums) return sums.error();
   double ss0 = 0.0, ss1 = 0.0;
-  for (std::size_t i = 0; i < foldIds.size(); ++i) {
-    if (failed[i]) return makeError(ErrorCode::NumericalFailure, "a fold could not be refitted", where);
-    ss0 += sums[i][0];
-    ss1 += sums[i][1];
+  for (std::size_t i = 0; i < baseline.foldIds.size(); ++i) {
+    ss0 += baseline.sumOfSquares[i];
+    ss1 += (*sums)[i];
   }
   return ss0 > 0.0 ? 1.0 - ss1 / ss0 : 0.0;
 }

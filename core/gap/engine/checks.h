@@ -31,11 +31,21 @@ Result<double> flipProbability(const GapProblem& problem, const std::vector<Scal
                                const FittedAlternative& b, double observedMargin, int samples, unsigned long long seed,
                                const std::function<bool()>& keepGoing);
 
-// 1 - sum_f SS_effect(f) / sum_f SS_baseline(f), where SS(f) is the squared
-// whitened residual on fold f after fitting on all the other folds; NaN when
-// the problem has a single fold.
+// The baseline's part of the held-out check: per fold f, SS_baseline(f), the
+// squared whitened residual on f after fitting on all the other folds. The
+// same for every effect, so computed once per problem (folds on every core).
+struct HeldOutBaseline {
+  std::vector<int> foldIds;  // empty: a single fold, no check
+  std::vector<double> sumOfSquares;
+};
+Result<HeldOutBaseline> heldOutBaseline(const GapProblem& problem, const std::vector<Scaled>& theta,
+                                        const Eigen::VectorXd& uBaseline);
+
+// 1 - sum_f SS_effect(f) / sum_f SS_baseline(f), SS_effect(f) as above with
+// the effect; NaN when the problem has a single fold.
 Result<double> heldOutImprovement(const GapProblem& problem, const std::vector<Scaled>& theta,
-                                  const Eigen::VectorXd& uBaseline, const FittedAlternative& effect);
+                                  const Eigen::VectorXd& uBaseline, const FittedAlternative& effect,
+                                  const HeldOutBaseline& baseline);
 
 // Profile-likelihood interval of effect parameter j (Venzon and Moolgavkar
 // 1988): the values x with 2 (min NLL given phi_j = x  -  NLL at the optimum)
