@@ -4,7 +4,7 @@ namespace mozzi::core::report {
 namespace {
 
 void writeTable(std::string& html, const Table& table) {
-  html += "<table border=\"1\" cellspacing=\"0\" cellpadding=\"3\">";
+  html += "<table width=\"100%\" border=\"1\" cellspacing=\"0\" cellpadding=\"3\">";
   if (!table.caption.empty()) html += "<caption>" + escapeHtml(table.caption) + "</caption>";
   html += "<tr>";
   for (std::size_t c = 0; c < table.headers.size(); ++c) {
