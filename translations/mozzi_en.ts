@@ -1051,6 +1051,19 @@
     </message>
 </context>
 <context>
+    <name>ReportWriter</name>
+    <message>
+        <location filename="../views/report/report_writer.cpp" line="+54"/>
+        <source>the %1 view does not render in a project report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Cannot create the folder %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>RigResults</name>
     <message>
         <location filename="../views/rigs/rig_test_page.cpp" line="+141"/>
@@ -3750,7 +3763,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+244"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+246"/>
         <source>Export Diagnosis Report</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3821,24 +3834,22 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location line="+9"/>
-        <location line="+182"/>
-        <location line="+102"/>
+        <location line="+244"/>
         <source>Verdict: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-281"/>
+        <location line="-241"/>
         <source>Verdict: %1 (%2 and %3)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+40"/>
-        <location line="+147"/>
         <source>Item</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="+0"/>
         <source>z</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3898,7 +3909,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+35"/>
         <source>model + %1 + %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3909,56 +3920,32 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location line="+38"/>
-        <location line="+115"/>
+        <location line="+79"/>
         <source>model + best effect</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-105"/>
-        <location line="+1"/>
+        <location line="-69"/>
         <source>Model vs test</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+79"/>
+        <location line="+46"/>
         <source>Model</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-79"/>
-        <location line="+81"/>
+        <location line="+2"/>
         <source>Test</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-75"/>
-        <source>Gap before</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Kind</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Gap</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <location line="+79"/>
+        <location line="+17"/>
         <source>Ranked effects</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-54"/>
-        <source>Measured and model, before and after</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="-45"/>
         <source>Nothing to export: run the diagnosis first.</source>
         <translation type="unfinished"></translation>
     </message>

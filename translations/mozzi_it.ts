@@ -1051,6 +1051,19 @@
     </message>
 </context>
 <context>
+    <name>ReportWriter</name>
+    <message>
+        <location filename="../views/report/report_writer.cpp" line="+54"/>
+        <source>the %1 view does not render in a project report</source>
+        <translation>la vista %1 non si disegna in un rapporto di progetto</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Cannot create the folder %1</source>
+        <translation>Impossibile creare la cartella %1</translation>
+    </message>
+</context>
+<context>
     <name>RigResults</name>
     <message>
         <location filename="../views/rigs/rig_test_page.cpp" line="+141"/>
@@ -3754,7 +3767,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+244"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+246"/>
         <source>Export Diagnosis Report</source>
         <translation>Esporta rapporto di diagnosi</translation>
     </message>
@@ -3825,24 +3838,22 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location line="+9"/>
-        <location line="+182"/>
-        <location line="+102"/>
+        <location line="+244"/>
         <source>Verdict: %1</source>
         <translation>Verdetto: %1</translation>
     </message>
     <message>
-        <location line="-281"/>
+        <location line="-241"/>
         <source>Verdict: %1 (%2 and %3)</source>
         <translation>Verdetto: %1 (%2 e %3)</translation>
     </message>
     <message>
         <location line="+40"/>
-        <location line="+147"/>
         <source>Item</source>
         <translation>Elemento</translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="+0"/>
         <source>z</source>
         <translation>z</translation>
     </message>
@@ -3902,7 +3913,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>(non identificabile)</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+35"/>
         <source>model + %1 + %2</source>
         <translation>modello + %1 + %2</translation>
     </message>
@@ -3913,56 +3924,32 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location line="+38"/>
-        <location line="+115"/>
+        <location line="+79"/>
         <source>model + best effect</source>
         <translation>modello + effetto migliore</translation>
     </message>
     <message>
-        <location line="-105"/>
-        <location line="+1"/>
+        <location line="-69"/>
         <source>Model vs test</source>
         <translation>Modello contro prova</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+79"/>
+        <location line="+46"/>
         <source>Model</source>
         <translation>Modello</translation>
     </message>
     <message>
-        <location line="-79"/>
-        <location line="+81"/>
+        <location line="+2"/>
         <source>Test</source>
         <translation>Prova</translation>
     </message>
     <message>
-        <location line="-75"/>
-        <source>Gap before</source>
-        <translation>Scarto iniziale</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Kind</source>
-        <translation>Tipo</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Gap</source>
-        <translation>Scarto</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <location line="+79"/>
+        <location line="+17"/>
         <source>Ranked effects</source>
         <translation>Effetti in classifica</translation>
     </message>
     <message>
-        <location line="-54"/>
-        <source>Measured and model, before and after</source>
-        <translation>Misura e modello, prima e dopo</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="-45"/>
         <source>Nothing to export: run the diagnosis first.</source>
         <translation>Niente da esportare: esegui prima la diagnosi.</translation>
     </message>
