@@ -1335,7 +1335,7 @@
 <context>
     <name>mozzi::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+285"/>
+        <location filename="../app/gui/main_window.cpp" line="+295"/>
         <source>&amp;File</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1382,6 +1382,11 @@
     <message>
         <location line="+1"/>
         <source>Work Area as &amp;Image...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Report (PDF)...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1470,7 +1475,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>Mozzi</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1485,7 +1490,27 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+159"/>
+        <location line="+51"/>
+        <source>Cannot write the report: the renderer mozzi-report is not installed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Report written: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The report was not written: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Writing the report %1...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+122"/>
         <source>Could not read the project.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1495,8 +1520,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-276"/>
-        <location line="+325"/>
+        <location line="-324"/>
+        <location line="+373"/>
         <source>Open Project</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1516,8 +1541,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-336"/>
-        <location line="+342"/>
+        <location line="-384"/>
+        <location line="+390"/>
         <source>New Project</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1547,8 +1572,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-345"/>
-        <location line="+351"/>
+        <location line="-393"/>
+        <location line="+399"/>
         <source>Save Project As</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1600,7 +1625,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-391"/>
+        <location line="-439"/>
         <source>Import Universal File</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1610,7 +1635,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+304"/>
+        <location line="+352"/>
         <source>Mozzi projects (*.mozzi)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1620,7 +1645,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-360"/>
+        <location line="-408"/>
         <source>A job stopped before its end; see its page</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1635,17 +1660,27 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+8"/>
+        <source>Export Report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>PDF documents (*.pdf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+21"/>
         <source>Create Demo Project</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+205"/>
+        <location line="+208"/>
         <source>Open in %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+178"/>
+        <location line="+215"/>
         <source>Check Project Integrity</source>
         <translation type="unfinished"></translation>
     </message>
