@@ -19,6 +19,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri mesa-utils fonts-dejavu-core
   clang libclang-rt-14-dev clang-format
+  # the report test reads the PDF back (pdftotext, pdfinfo, pdftoppm)
+  poppler-utils
   python3 python3-numpy python3-scipy
 )
 

@@ -1051,6 +1051,19 @@
     </message>
 </context>
 <context>
+    <name>ReportWriter</name>
+    <message>
+        <location filename="../views/report/report_writer.cpp" line="+54"/>
+        <source>the %1 view does not render in a project report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Cannot create the folder %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>RigResults</name>
     <message>
         <location filename="../views/rigs/rig_test_page.cpp" line="+141"/>
@@ -1322,7 +1335,7 @@
 <context>
     <name>mozzi::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+285"/>
+        <location filename="../app/gui/main_window.cpp" line="+295"/>
         <source>&amp;File</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1369,6 +1382,11 @@
     <message>
         <location line="+1"/>
         <source>Work Area as &amp;Image...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Report (PDF)...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1457,7 +1475,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>Mozzi</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1472,7 +1490,27 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+159"/>
+        <location line="+51"/>
+        <source>Cannot write the report: the renderer mozzi-report is not installed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Report written: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The report was not written: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Writing the report %1...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+122"/>
         <source>Could not read the project.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1482,8 +1520,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-276"/>
-        <location line="+325"/>
+        <location line="-324"/>
+        <location line="+373"/>
         <source>Open Project</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1503,8 +1541,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-336"/>
-        <location line="+342"/>
+        <location line="-384"/>
+        <location line="+390"/>
         <source>New Project</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1534,8 +1572,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-345"/>
-        <location line="+351"/>
+        <location line="-393"/>
+        <location line="+399"/>
         <source>Save Project As</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1587,7 +1625,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-391"/>
+        <location line="-439"/>
         <source>Import Universal File</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1597,7 +1635,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+304"/>
+        <location line="+352"/>
         <source>Mozzi projects (*.mozzi)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1607,7 +1645,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-360"/>
+        <location line="-408"/>
         <source>A job stopped before its end; see its page</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1622,17 +1660,27 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+8"/>
+        <source>Export Report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>PDF documents (*.pdf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+21"/>
         <source>Create Demo Project</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+205"/>
+        <location line="+208"/>
         <source>Open in %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+178"/>
+        <location line="+215"/>
         <source>Check Project Integrity</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3750,7 +3798,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+244"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+246"/>
         <source>Export Diagnosis Report</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3821,24 +3869,22 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location line="+9"/>
-        <location line="+182"/>
-        <location line="+102"/>
+        <location line="+244"/>
         <source>Verdict: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-281"/>
+        <location line="-241"/>
         <source>Verdict: %1 (%2 and %3)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+40"/>
-        <location line="+147"/>
         <source>Item</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="+0"/>
         <source>z</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3898,7 +3944,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+35"/>
         <source>model + %1 + %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3909,56 +3955,32 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location line="+38"/>
-        <location line="+115"/>
+        <location line="+79"/>
         <source>model + best effect</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-105"/>
-        <location line="+1"/>
+        <location line="-69"/>
         <source>Model vs test</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+79"/>
+        <location line="+46"/>
         <source>Model</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-79"/>
-        <location line="+81"/>
+        <location line="+2"/>
         <source>Test</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-75"/>
-        <source>Gap before</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Kind</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Gap</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <location line="+79"/>
+        <location line="+17"/>
         <source>Ranked effects</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-54"/>
-        <source>Measured and model, before and after</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="-45"/>
         <source>Nothing to export: run the diagnosis first.</source>
         <translation type="unfinished"></translation>
     </message>

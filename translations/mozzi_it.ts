@@ -1051,6 +1051,19 @@
     </message>
 </context>
 <context>
+    <name>ReportWriter</name>
+    <message>
+        <location filename="../views/report/report_writer.cpp" line="+54"/>
+        <source>the %1 view does not render in a project report</source>
+        <translation>la vista %1 non si disegna in un rapporto di progetto</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Cannot create the folder %1</source>
+        <translation>Impossibile creare la cartella %1</translation>
+    </message>
+</context>
+<context>
     <name>RigResults</name>
     <message>
         <location filename="../views/rigs/rig_test_page.cpp" line="+141"/>
@@ -1322,7 +1335,7 @@
 <context>
     <name>mozzi::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+285"/>
+        <location filename="../app/gui/main_window.cpp" line="+295"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -1370,6 +1383,11 @@
         <location line="+1"/>
         <source>Work Area as &amp;Image...</source>
         <translation>Area di lavoro come &amp;immagine...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Report (PDF)...</source>
+        <translation>&amp;Rapporto (PDF)...</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1457,7 +1475,7 @@
         <translation>Valore</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>Mozzi</source>
         <translation>Mozzi</translation>
     </message>
@@ -1472,7 +1490,27 @@
         <translation> [sola lettura]</translation>
     </message>
     <message>
-        <location line="+159"/>
+        <location line="+51"/>
+        <source>Cannot write the report: the renderer mozzi-report is not installed.</source>
+        <translation>Impossibile scrivere il rapporto: il programma mozzi-report non è installato.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Report written: %1</source>
+        <translation>Rapporto scritto: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The report was not written: %1</source>
+        <translation>Il rapporto non è stato scritto: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Writing the report %1...</source>
+        <translation>Scrittura del rapporto %1...</translation>
+    </message>
+    <message>
+        <location line="+122"/>
         <source>Could not read the project.</source>
         <translation>Impossibile leggere il progetto.</translation>
     </message>
@@ -1482,8 +1520,8 @@
         <translation>Dove: %1</translation>
     </message>
     <message>
-        <location line="-276"/>
-        <location line="+325"/>
+        <location line="-324"/>
+        <location line="+373"/>
         <source>Open Project</source>
         <translation>Apri progetto</translation>
     </message>
@@ -1503,8 +1541,8 @@
         <translation>Sola lettura: %1</translation>
     </message>
     <message>
-        <location line="-336"/>
-        <location line="+342"/>
+        <location line="-384"/>
+        <location line="+390"/>
         <source>New Project</source>
         <translation>Nuovo progetto</translation>
     </message>
@@ -1534,8 +1572,8 @@
         <translation>Creato il progetto dimostrativo %1</translation>
     </message>
     <message>
-        <location line="-345"/>
-        <location line="+351"/>
+        <location line="-393"/>
+        <location line="+399"/>
         <source>Save Project As</source>
         <translation>Salva progetto come</translation>
     </message>
@@ -1587,7 +1625,7 @@
         <translation>Importato %1: %2 nodi, %3 linee, %4 FRF, %5 modi</translation>
     </message>
     <message>
-        <location line="-391"/>
+        <location line="-439"/>
         <source>Import Universal File</source>
         <translation>Importa file Universal</translation>
     </message>
@@ -1597,7 +1635,7 @@
         <translation>File Universal (*.uff *.unv);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location line="+304"/>
+        <location line="+352"/>
         <source>Mozzi projects (*.mozzi)</source>
         <translation>Progetti Mozzi (*.mozzi)</translation>
     </message>
@@ -1607,7 +1645,7 @@
         <translation>Progetti Mozzi (*.mozzi);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location line="-360"/>
+        <location line="-408"/>
         <source>A job stopped before its end; see its page</source>
         <translation>Un&apos;attività si è interrotta prima della fine; vedi la sua pagina</translation>
     </message>
@@ -1622,17 +1660,27 @@
         <translation>Immagini PNG (*.png);;Immagini JPEG (*.jpg)</translation>
     </message>
     <message>
+        <location line="+8"/>
+        <source>Export Report</source>
+        <translation>Esporta rapporto</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>PDF documents (*.pdf)</source>
+        <translation>Documenti PDF (*.pdf)</translation>
+    </message>
+    <message>
         <location line="+21"/>
         <source>Create Demo Project</source>
         <translation>Crea progetto dimostrativo</translation>
     </message>
     <message>
-        <location line="+205"/>
+        <location line="+208"/>
         <source>Open in %1</source>
         <translation>Apri in %1</translation>
     </message>
     <message>
-        <location line="+178"/>
+        <location line="+215"/>
         <source>Check Project Integrity</source>
         <translation>Verifica integrità del progetto</translation>
     </message>
@@ -3754,7 +3802,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+244"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+246"/>
         <source>Export Diagnosis Report</source>
         <translation>Esporta rapporto di diagnosi</translation>
     </message>
@@ -3825,24 +3873,22 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location line="+9"/>
-        <location line="+182"/>
-        <location line="+102"/>
+        <location line="+244"/>
         <source>Verdict: %1</source>
         <translation>Verdetto: %1</translation>
     </message>
     <message>
-        <location line="-281"/>
+        <location line="-241"/>
         <source>Verdict: %1 (%2 and %3)</source>
         <translation>Verdetto: %1 (%2 e %3)</translation>
     </message>
     <message>
         <location line="+40"/>
-        <location line="+147"/>
         <source>Item</source>
         <translation>Elemento</translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="+0"/>
         <source>z</source>
         <translation>z</translation>
     </message>
@@ -3902,7 +3948,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>(non identificabile)</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+35"/>
         <source>model + %1 + %2</source>
         <translation>modello + %1 + %2</translation>
     </message>
@@ -3913,56 +3959,32 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location line="+38"/>
-        <location line="+115"/>
+        <location line="+79"/>
         <source>model + best effect</source>
         <translation>modello + effetto migliore</translation>
     </message>
     <message>
-        <location line="-105"/>
-        <location line="+1"/>
+        <location line="-69"/>
         <source>Model vs test</source>
         <translation>Modello contro prova</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+79"/>
+        <location line="+46"/>
         <source>Model</source>
         <translation>Modello</translation>
     </message>
     <message>
-        <location line="-79"/>
-        <location line="+81"/>
+        <location line="+2"/>
         <source>Test</source>
         <translation>Prova</translation>
     </message>
     <message>
-        <location line="-75"/>
-        <source>Gap before</source>
-        <translation>Scarto iniziale</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Kind</source>
-        <translation>Tipo</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Gap</source>
-        <translation>Scarto</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <location line="+79"/>
+        <location line="+17"/>
         <source>Ranked effects</source>
         <translation>Effetti in classifica</translation>
     </message>
     <message>
-        <location line="-54"/>
-        <source>Measured and model, before and after</source>
-        <translation>Misura e modello, prima e dopo</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="-45"/>
         <source>Nothing to export: run the diagnosis first.</source>
         <translation>Niente da esportare: esegui prima la diagnosi.</translation>
     </message>

@@ -16,6 +16,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPlainTextEdit>
+#include <QProcess>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -151,6 +152,14 @@ void MainWindow::createActions() {
                                                       tr("PNG images (*.png);;JPEG images (*.jpg)"));
     if (!path.isEmpty()) exportWorkAreaImage(path);
   });
+  exportReportAction_ = new QAction(this);
+  connect(exportReportAction_, &QAction::triggered, this, [this] {
+    const QString suggested =
+        QDir(projectFolder()).filePath(QFileInfo(model_->path()).completeBaseName() + QStringLiteral("-report.pdf"));
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export Report"), suggested, tr("PDF documents (*.pdf)"));
+    if (!path.isEmpty()) exportReport(path);
+  });
   quitAction_ = new QAction(this);
   quitAction_->setShortcut(QKeySequence::Quit);
   quitAction_->setMenuRole(QAction::QuitRole);
@@ -214,6 +223,7 @@ void MainWindow::createMenus() {
   importMenu_->addAction(importUffAction_);
   exportMenu_ = fileMenu_->addMenu(QString());
   exportMenu_->addAction(exportImageAction_);
+  exportMenu_->addAction(exportReportAction_);
   fileMenu_->addSeparator();
   fileMenu_->addAction(quitAction_);
 
@@ -292,6 +302,7 @@ void MainWindow::retranslateUi() {
   importMenu_->setTitle(tr("&Import"));
   exportMenu_->setTitle(tr("&Export"));
   exportImageAction_->setText(tr("Work Area as &Image..."));
+  exportReportAction_->setText(tr("&Report (PDF)..."));
   importUffAction_->setText(tr("&Universal File (UFF)..."));
   quitAction_->setText(tr("&Quit"));
   viewMenu_->setTitle(tr("&View"));
@@ -346,6 +357,7 @@ void MainWindow::onProjectChanged() {
   saveAsAction_->setEnabled(open);
   importUffAction_->setEnabled(open && !model_->isReadOnly());
   closeProjectAction_->setEnabled(open);
+  exportReportAction_->setEnabled(open);
   integrityAction_->setEnabled(open);
   if (!open) {
     setWindowTitle(tr("Mozzi"));
@@ -391,6 +403,43 @@ QWidget* MainWindow::openItem(const views::ProjectItem& item) {
 
 bool MainWindow::selectItem(const views::ProjectItem& item) {
   return projectTree_->selectItem(item);
+}
+
+bool MainWindow::exportReport(const QString& pdfPath) {
+  if (!model_->isOpen()) return false;
+  // The renderer beside this program (as beside mozzi-cli), else where the
+  // build put it.
+  QString renderer = QDir(QCoreApplication::applicationDirPath()).filePath(QStringLiteral("mozzi-report"));
+#ifdef MOZZI_REPORT_RENDERER
+  if (!QFileInfo(renderer).isExecutable()) renderer = QStringLiteral(MOZZI_REPORT_RENDERER);
+#endif
+  if (!QFileInfo(renderer).isExecutable()) {
+    const QString message = tr("Cannot write the report: the renderer mozzi-report is not installed.");
+    log(message);
+    emit reportExported(false, message);
+    return false;
+  }
+  auto* process = new QProcess(this);
+  process->setProgram(renderer);
+  // PROJECT PDF HTMLDIR SECTIONS SPECIMEN (app/report/report_main.cpp): every section.
+  process->setArguments({model_->path(), pdfPath, QStringLiteral("-"), QStringLiteral("-"), QStringLiteral("-")});
+  QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+  environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+  process->setProcessEnvironment(environment);
+  connect(process, QOverload<int, QProcess::ExitStatus>::of(&QProcess::finished), this,
+          [this, process, pdfPath](int code, QProcess::ExitStatus status) {
+            const bool ok = status == QProcess::NormalExit && code == 0;
+            const QString detail = QString::fromUtf8(process->readAllStandardError()).trimmed();
+            const QString message =
+                ok ? tr("Report written: %1").arg(pdfPath) : tr("The report was not written: %1").arg(detail);
+            log(message);
+            statusBar()->showMessage(message, 5000);
+            process->deleteLater();
+            emit reportExported(ok, message);
+          });
+  log(tr("Writing the report %1...").arg(pdfPath));
+  process->start();
+  return true;
 }
 
 void MainWindow::log(const QString& line) {

@@ -48,6 +48,11 @@ class MainWindow : public QMainWindow {
   bool createDemoProject(const QString& path);
   bool saveProjectAs(const QString& path);
   bool exportWorkAreaImage(const QString& path);
+  // Writes the open project's report as PDF (File > Export > Report): runs
+  // the renderer mozzi-report, the program behind `mozzi-cli report`, in the
+  // background. False when no project is open or the renderer cannot start;
+  // reportExported() says how it ended.
+  bool exportReport(const QString& pdfPath);
   // Imports a UFF file into the selected specimen (a new specimen named after
   // the file when the project has none), then shows what it brought.
   bool importUff(const QString& path);
@@ -76,6 +81,11 @@ class MainWindow : public QMainWindow {
   void log(const QString& line);
 
   static QStringList availableLanguages();  // codes with an embedded .qm
+
+ signals:
+  // A report started by exportReport() is written (ok) or failed; `message`
+  // is the line written to the log.
+  void reportExported(bool ok, const QString& message);
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -127,6 +137,7 @@ class MainWindow : public QMainWindow {
   QAction* saveAsAction_ = nullptr;
   QAction* closeProjectAction_ = nullptr;
   QAction* exportImageAction_ = nullptr;
+  QAction* exportReportAction_ = nullptr;
   QAction* importUffAction_ = nullptr;
   QAction* quitAction_ = nullptr;
   QAction* clearRecentAction_ = nullptr;

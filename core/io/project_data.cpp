@@ -1585,4 +1585,23 @@ Result<StoredAnalysis> ProjectStore::analysis(std::int64_t analysisId) const {
   return a;
 }
 
+// Every stored analysis with its findings, in id order.
+Result<std::vector<StoredAnalysis>> ProjectStore::analyses() const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
+  std::vector<std::int64_t> ids;
+  {
+    sql::Statement stmt(db_, "SELECT id FROM analysis ORDER BY id");
+    int rc;
+    while ((rc = stmt.step()) == SQLITE_ROW) ids.push_back(sqlite3_column_int64(stmt.get(), 0));
+    if (rc != SQLITE_DONE) return sqliteError(db_, "cannot list the analyses", path_);
+  }
+  std::vector<StoredAnalysis> out;
+  for (const auto id : ids) {
+    auto a = analysis(id);
+    if (!a) return a.error();
+    out.push_back(std::move(*a));
+  }
+  return out;
+}
+
 }  // namespace mozzi::core::io

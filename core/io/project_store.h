@@ -202,6 +202,7 @@ class ProjectStore {
   Result<std::int64_t> addModel(const StoredModel& model);
   Result<std::int64_t> addAnalysis(const StoredAnalysis& analysis);
   Result<StoredAnalysis> analysis(std::int64_t analysisId) const;
+  Result<std::vector<StoredAnalysis>> analyses() const;  // every analysis, in id order
 
   // Reads every stored record back (hits, rig-test records, FRF sets, modal
   // results, meshes, rig tests, tyre tests), verifying its checksum, and runs

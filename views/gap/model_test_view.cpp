@@ -45,6 +45,8 @@
 #include "core/common/text.h"
 #include "core/gap/diagnosis_json.h"
 #include "core/gap/problem_loader.h"
+#include "core/report/gap_report.h"
+#include "core/report/report_html.h"
 #include "views/common/job_runner.h"
 #include "views/plots/plot_export.h"
 
@@ -65,9 +67,9 @@ QString joined(const std::vector<std::string>& items) {
 }
 
 // The verdict names two effects fitted together (issue 16).
+// Two effects at once: the verdict names both (core/report/gap_report.h).
 bool twoEffects(const core::gap::Diagnosis& d) {
-  return d.verdictSet.size() == 2 && d.verdict != core::gap::Verdict::Ambiguous && d.pairFitted &&
-         d.pair.effects.size() == 2;
+  return core::report::bestEffect(d).pair != nullptr;
 }
 
 QColor verdictColour(core::gap::Verdict verdict) {
@@ -521,12 +523,8 @@ void ModelTestView::computeOverlays() {
   if (!diagnosis_ || !diagnosed_) return;
   const auto& d = *diagnosis_;
   before_ = diagnosed_->overlay(d.calibrated.data(), -1, nullptr);
-  // "After" is the first effect of the verdict set, else the top-ranked one.
-  const core::gap::RankedEffect* best = nullptr;
-  if (!d.verdictSet.empty())
-    best = &d.ranking[static_cast<size_t>(d.verdictSet.front())];
-  else if (!d.ranking.empty())
-    best = &d.ranking.front();
+  // "After": the verdict's pair, else its first effect, else the top-ranked one.
+  const core::gap::RankedEffect* best = core::report::bestEffect(d).single;
   if (twoEffects(d) && d.pair.theta.size() == d.calibrated.size()) {
     std::vector<double> phi;
     for (const auto& e : d.pair.effects) phi.insert(phi.end(), e.parameters.begin(), e.parameters.end());
@@ -582,47 +580,14 @@ bool ModelTestView::showOverlay(int index) {
 
 QString ModelTestView::htmlReport() const {
   if (!diagnosis_) return {};
-  const auto& d = *diagnosis_;
-  QString html;
-  html += QStringLiteral("<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>%1</title></head><body>")
-              .arg(tr("Model vs test").toHtmlEscaped());
-  html += QStringLiteral("<h1>%1</h1>").arg(tr("Model vs test").toHtmlEscaped());
-  html += QStringLiteral("<p>%1: %2<br>%3: %4</p>")
-              .arg(tr("Model").toHtmlEscaped(), modelPath_->text().toHtmlEscaped(), tr("Test").toHtmlEscaped(),
-                   testPath_->text().toHtmlEscaped());
-  html += QStringLiteral("<h2>%1</h2><p>%2</p>")
-              .arg(tr("Verdict: %1").arg(QString::fromLatin1(core::gap::verdictName(d.verdict))).toHtmlEscaped(),
-                   QString::fromStdString(d.explanation).toHtmlEscaped());
-  html += QStringLiteral("<h2>%1</h2><p>%2 = %3</p>")
-              .arg(tr("Gap before").toHtmlEscaped(), QString::fromStdString(d.gapBefore.residualName).toHtmlEscaped(),
-                   number(d.gapBefore.overall));
-  html += QStringLiteral(
-              "<table border=\"1\" cellspacing=\"0\" "
-              "cellpadding=\"3\"><tr><th>%1</th><th>%2</th><th>%3</th><th>z</th></tr>")
-              .arg(tr("Kind").toHtmlEscaped(), tr("Item").toHtmlEscaped(), tr("Gap").toHtmlEscaped());
-  for (const auto& entry : d.where) {
-    html += QStringLiteral("<tr><td>%1</td><td>%2</td><td>%3</td><td>%4</td></tr>")
-                .arg(QString::fromStdString(entry.kind).toHtmlEscaped(),
-                     QString::fromStdString(entry.label).toHtmlEscaped(), number(entry.value), number(entry.z, 3));
-  }
-  html += QStringLiteral("</table>");
-  html += QStringLiteral("<h2>%1</h2><table border=\"1\" cellspacing=\"0\" cellpadding=\"3\"><tr>")
-              .arg(tr("Ranked effects").toHtmlEscaped());
-  for (int c = 0; c < ranking_->columnCount(); ++c) {
-    html += QStringLiteral("<th>%1</th>").arg(ranking_->horizontalHeaderItem(c)->text().toHtmlEscaped());
-  }
-  html += QStringLiteral("</tr>");
-  for (int r = 0; r < ranking_->rowCount(); ++r) {
-    html += QStringLiteral("<tr>");
-    for (int c = 0; c < ranking_->columnCount(); ++c) {
-      const QTableWidgetItem* item = ranking_->item(r, c);
-      html += QStringLiteral("<td>%1</td>").arg(item ? item->text().toHtmlEscaped() : QString());
-    }
-    html += QStringLiteral("</tr>");
-  }
-  html += QStringLiteral("</table>");
-  if (!before_.empty()) {
-    // The overlay currently shown, rendered into the report as an inline PNG.
+  // The content comes from core (the same section as the project report); the
+  // page only renders the figure: the overlay shown, as an inline PNG.
+  core::report::Report report;
+  report.title = tr("Model vs test").toStdString();
+  report.sections.push_back(core::report::gapDiagnosisSection(*diagnosis_, modelPath_->text().toStdString(),
+                                                              testPath_->text().toStdString()));
+  const auto figure = [this](const core::report::Figure& f) -> std::string {
+    if (f.view != "gap-overlay" || before_.empty()) return {};
     QPixmap pixmap(900, 450);
     pixmap.fill(Qt::white);
     QwtPlotRenderer renderer;
@@ -631,12 +596,9 @@ QString ModelTestView::htmlReport() const {
     QBuffer buffer(&png);
     buffer.open(QIODevice::WriteOnly);
     pixmap.save(&buffer, "PNG");
-    html += QStringLiteral("<h2>%1</h2><img alt=\"%2\" src=\"data:image/png;base64,%3\">")
-                .arg(tr("Measured and model, before and after").toHtmlEscaped(),
-                     overlayChoice_->currentText().toHtmlEscaped(), QString::fromLatin1(png.toBase64()));
-  }
-  html += QStringLiteral("</body></html>");
-  return html;
+    return "data:image/png;base64," + png.toBase64().toStdString();
+  };
+  return QString::fromStdString(core::report::toHtml(report, figure, 900));
 }
 
 bool ModelTestView::exportReport(const QString& path, QString* error) const {

@@ -16,6 +16,7 @@
 #include "core/gap/diagnosis.h"
 #include "core/gap/diagnosis_json.h"
 #include "core/gap/problem_loader.h"
+#include "core/report/gap_report.h"
 
 namespace mozzi::cli {
 namespace {
@@ -65,12 +66,7 @@ std::string detailText(const gap::GapEntry& e, const char* name, int digits = 4)
   return "-";
 }
 
-std::string locationText(const gap::Candidate& c) {
-  if (c.location.empty()) return "(global)";
-  std::string s;
-  for (const auto& l : c.location) s += (s.empty() ? "" : " - ") + l;
-  return s;
-}
+using core::report::locationText;
 
 void printMetrics(std::ostream& out, const gap::GapMetrics& m) {
   char buf[256];
@@ -278,20 +274,21 @@ int gapCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   printRanking(out, *diagnosis);
   printPair(out, *diagnosis);
   out << "\nVerdict: " << gap::verdictName(diagnosis->verdict);
-  const bool two = diagnosis->verdictSet.size() == 2 && diagnosis->pairFitted && diagnosis->pair.effects.size() == 2 &&
-                   diagnosis->verdict != gap::Verdict::Ambiguous;
-  if (two) {
-    const auto& p = diagnosis->pair;
+  // The effect(s) the verdict puts forward: one rule for the CLI, the
+  // workbench and the report (core/report/gap_report.h).
+  const auto best = core::report::bestEffect(*diagnosis);
+  if (best.pair) {
+    const auto& p = *best.pair;
     out << " - " << p.effects[0].candidate.effect << " at " << locationText(p.effects[0].candidate) << " and "
         << p.effects[1].candidate.effect << " at " << locationText(p.effects[1].candidate) << ", gap "
         << core::formatNumber(diagnosis->gapBefore.overall, 3) << " -> " << core::formatNumber(p.gapAfterOne.overall, 3)
         << " -> " << core::formatNumber(p.gapAfterBoth.overall, 3) << " (shrink "
         << core::formatNumber(p.shrinkBothPct, 3) << "%)";
-  } else if (!diagnosis->verdictSet.empty()) {
-    const auto& best = diagnosis->ranking[static_cast<std::size_t>(diagnosis->verdictSet.front())];
-    out << " - " << best.candidate.effect << " at " << locationText(best.candidate) << ", gap "
-        << core::formatNumber(diagnosis->gapBefore.overall, 3) << " -> " << core::formatNumber(best.gapAfter.overall, 3)
-        << " (shrink " << core::formatNumber(best.shrinkPct, 3) << "%)";
+  } else if (best.single && best.inVerdict) {
+    out << " - " << best.single->candidate.effect << " at " << locationText(best.single->candidate) << ", gap "
+        << core::formatNumber(diagnosis->gapBefore.overall, 3) << " -> "
+        << core::formatNumber(best.single->gapAfter.overall, 3) << " (shrink "
+        << core::formatNumber(best.single->shrinkPct, 3) << "%)";
   }
   out << "\n" << diagnosis->explanation << "\n";
   return kExitOk;

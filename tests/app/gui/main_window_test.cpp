@@ -63,6 +63,7 @@ class MainWindowTest : public QObject {
   void everyMenuPageOfTheTableHasAnActionThatOpensIt();
   void treeOpensItemsInTheirPages();
   void runningJobsShowInTheStatusBar();
+  void reportExportWritesThePdfAndRefusesTheProject();
   void screenshot();
 
  private:
@@ -504,6 +505,31 @@ void MainWindowTest::runningJobsShowInTheStatusBar() {
   release = true;
   QTRY_VERIFY(done);
   QVERIFY(!status->isVisible());
+}
+
+// File > Export > Report (PDF): the same renderer as mozzi-cli report, in the
+// background; the project itself is refused as the output and left intact.
+void MainWindowTest::reportExportWritesThePdfAndRefusesTheProject() {
+  const QString project = file(QStringLiteral("menus.mozzi"));
+  QVERIFY(window_->openProject(project));
+  QSignalSpy spy(window_.get(), &MainWindow::reportExported);
+  const QString pdf = file(QStringLiteral("menus-report.pdf"));
+  QVERIFY(window_->exportReport(pdf));
+  QVERIFY(spy.wait(120000));
+  QVERIFY2(spy.at(0).at(0).toBool(), qPrintable(spy.at(0).at(1).toString()));
+  QFile written(pdf);
+  QVERIFY(written.open(QIODevice::ReadOnly));
+  QCOMPARE(written.read(5), QByteArray("%PDF-"));
+  QVERIFY(written.size() > 10000);
+
+  const qint64 size = QFileInfo(project).size();
+  spy.clear();
+  QVERIFY(window_->exportReport(QDir(dir_.path()).filePath(QStringLiteral("./menus.mozzi"))));
+  QVERIFY(spy.wait(120000));
+  QVERIFY(!spy.at(0).at(0).toBool());
+  QVERIFY2(spy.at(0).at(1).toString().contains(QStringLiteral("menus.mozzi")), qPrintable(spy.at(0).at(1).toString()));
+  QCOMPARE(QFileInfo(project).size(), size);
+  QVERIFY(window_->openProject(project));
 }
 
 void MainWindowTest::screenshot() {
