@@ -3,18 +3,8 @@
 <TS version="2.1" language="en_US" sourcelanguage="en_US">
 <context>
     <name>Pages</name>
-    <message>
-        <location filename="../app/gui/builtin_pages.cpp" line="+65"/>
-        <source>Cannot show the mesh: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Cannot place the mesh: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
     <message numerus="yes">
-        <location line="+6"/>
+        <location filename="../app/gui/builtin_pages.cpp" line="+58"/>
         <source>%n trace line segment(s) name nodes the mesh does not have and are not drawn</source>
         <translation type="unfinished">
             <numerusform>%n trace line segment names nodes the mesh does not have and is not drawn</numerusform>
@@ -2174,7 +2164,7 @@
 <context>
     <name>mozzi::views::HammerStationPage</name>
     <message>
-        <location filename="../views/campaign/hammer_station_page.cpp" line="+56"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+55"/>
         <source>Idle: press A to arm</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2209,7 +2199,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+66"/>
         <source>New Campaign...</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2255,7 +2245,7 @@
     </message>
     <message>
         <location line="+122"/>
-        <location line="+409"/>
+        <location line="+396"/>
         <source>%1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2342,12 +2332,12 @@
     </message>
     <message>
         <location line="+12"/>
-        <location line="+193"/>
+        <location line="+195"/>
         <source>Time since arming [s]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-175"/>
+        <location line="-177"/>
         <source>Time in the hit&apos;s record [s]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2563,8 +2553,9 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Response [%1]</source>
+        <location line="+3"/>
+        <source>[%1]</source>
+        <comment>right axis of the hit traces: the response&apos;s unit</comment>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4108,7 +4099,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ParameterForm</name>
     <message>
-        <location filename="../views/panels/parameter_form.cpp" line="+246"/>
+        <location filename="../views/panels/parameter_form.cpp" line="+252"/>
         <source>%1 %2 is outside %3 to %4 %2; %5 is used</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4809,8 +4800,18 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::SceneView</name>
     <message>
-        <location filename="../views/scene/scene_view.cpp" line="+640"/>
+        <location filename="../views/scene/scene_view.cpp" line="+643"/>
         <source>|u|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Cannot show the mesh: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cannot place the mesh: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -3,18 +3,8 @@
 <TS version="2.1" language="it_IT" sourcelanguage="en_US">
 <context>
     <name>Pages</name>
-    <message>
-        <location filename="../app/gui/builtin_pages.cpp" line="+65"/>
-        <source>Cannot show the mesh: %1</source>
-        <translation>Impossibile mostrare la mesh: %1</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Cannot place the mesh: %1</source>
-        <translation>Impossibile posizionare la mesh: %1</translation>
-    </message>
     <message numerus="yes">
-        <location line="+6"/>
+        <location filename="../app/gui/builtin_pages.cpp" line="+58"/>
         <source>%n trace line segment(s) name nodes the mesh does not have and are not drawn</source>
         <translation>
             <numerusform>%n segmento di linea di traccia cita nodi assenti dalla mesh e non viene disegnato</numerusform>
@@ -2174,7 +2164,7 @@
 <context>
     <name>mozzi::views::HammerStationPage</name>
     <message>
-        <location filename="../views/campaign/hammer_station_page.cpp" line="+56"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+55"/>
         <source>Idle: press A to arm</source>
         <translation>Inattivo: premi A per armare</translation>
     </message>
@@ -2209,7 +2199,7 @@
         <translation>Campagna terminata</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+66"/>
         <source>New Campaign...</source>
         <translation>Nuova campagna...</translation>
     </message>
@@ -2255,7 +2245,7 @@
     </message>
     <message>
         <location line="+122"/>
-        <location line="+409"/>
+        <location line="+396"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -2342,12 +2332,12 @@
     </message>
     <message>
         <location line="+12"/>
-        <location line="+193"/>
+        <location line="+195"/>
         <source>Time since arming [s]</source>
         <translation>Tempo dall&apos;armamento [s]</translation>
     </message>
     <message>
-        <location line="-175"/>
+        <location line="-177"/>
         <source>Time in the hit&apos;s record [s]</source>
         <translation>Tempo nella registrazione del colpo [s]</translation>
     </message>
@@ -2563,9 +2553,10 @@
         <translation>EU</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Response [%1]</source>
-        <translation>Risposta [%1]</translation>
+        <location line="+3"/>
+        <source>[%1]</source>
+        <comment>right axis of the hit traces: the response&apos;s unit</comment>
+        <translation>[%1]</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4112,7 +4103,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ParameterForm</name>
     <message>
-        <location filename="../views/panels/parameter_form.cpp" line="+246"/>
+        <location filename="../views/panels/parameter_form.cpp" line="+252"/>
         <source>%1 %2 is outside %3 to %4 %2; %5 is used</source>
         <translation>%1 %2 è fuori dall&apos;intervallo da %3 a %4 %2; si usa %5</translation>
     </message>
@@ -4814,9 +4805,19 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::SceneView</name>
     <message>
-        <location filename="../views/scene/scene_view.cpp" line="+640"/>
+        <location filename="../views/scene/scene_view.cpp" line="+643"/>
         <source>|u|</source>
         <translation>|u|</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Cannot show the mesh: %1</source>
+        <translation>Impossibile mostrare la mesh: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cannot place the mesh: %1</source>
+        <translation>Impossibile posizionare la mesh: %1</translation>
     </message>
 </context>
 <context>
