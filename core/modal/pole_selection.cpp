@@ -194,4 +194,17 @@ Result<void> removeExponentialWindow(io::ModalTable& table, double tauS) {
   return {};
 }
 
+Result<std::int64_t> storeModalResult(io::ProjectStore& store, const ModalModel& model, io::ModalResultInfo info,
+                                      const std::string& methodKey, double tauS) {
+  auto table = modalTableOf(model);
+  if (!table) return table.error();
+  if (auto c = removeExponentialWindow(*table, tauS); !c) return c.error();
+  auto existing = store.modalResults();
+  if (!existing) return existing.error();
+  info.method = storedMethodName(methodKey);
+  info.name = uniqueModalResultName(*existing, info.specimenId,
+                                    defaultModalResultName(methodKey, info.bandLowHz, info.bandHighHz));
+  return store.addModalResult(info, *table);
+}
+
 }  // namespace mozzi::core::modal

@@ -14,6 +14,7 @@
 #include "core/common/frf_matrix.h"
 #include "core/common/result.h"
 #include "core/io/project_records.h"
+#include "core/io/project_store.h"
 #include "core/modal/modal_model.h"
 #include "core/modal/mode_merging.h"
 #include "core/modal/plscf.h"
@@ -89,5 +90,13 @@ Result<io::ModalTable> modalTableOf(const ModalModel& model);
 // changes nothing. Errors: those of the correction, naming the mode.
 Result<void> removeExponentialWindow(std::vector<ModalTableRow>& rows, double tauS);
 Result<void> removeExponentialWindow(io::ModalTable& table, double tauS);
+
+// Keeps `model` as a modal result of the project, as `mozzi-cli identify
+// --store` and the demo project do: modalTableOf, the exponential window's
+// decay removed (tauS), the method's stored name, and the default name of
+// method and band made unique for the specimen. `info` gives the specimen, the
+// FRF set and the band. Returns the new result's id.
+Result<std::int64_t> storeModalResult(io::ProjectStore& store, const ModalModel& model, io::ModalResultInfo info,
+                                      const std::string& methodKey, double tauS);
 
 }  // namespace mozzi::core::modal

@@ -8,6 +8,8 @@
 #include <memory>
 #include <sstream>
 
+#include "core/common/ceres_logging.h"
+
 namespace mozzi::core::tire {
 namespace {
 
@@ -246,6 +248,7 @@ Result<MfFit<N>> solve(ceres::Problem& problem, std::array<double, N>& x, const 
   const double s2 = rss / (n - nFree);
   ceres::Covariance::Options copt;
   copt.algorithm_type = ceres::DENSE_SVD;
+  quietCeresLogging();  // a singular covariance is reported below, not by glog
   ceres::Covariance cov(copt);
   std::vector<std::pair<const double*, const double*>> blocks = {{x.data(), x.data()}};
   if (!cov.Compute(blocks, &problem))

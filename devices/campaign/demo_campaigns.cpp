@@ -1,11 +1,16 @@
 #include "devices/campaign/demo_campaigns.h"
 
+#include <algorithm>
 #include <chrono>
 #include <mutex>
 #include <optional>
 
+#include "core/modal/identification.h"
+#include "core/modal/pole_selection.h"
 #include "devices/campaign/campaign_engine.h"
+#include "devices/campaign/frf_set_window.h"
 #include "devices/campaign/virtual_campaign.h"
+#include "devices/sim/specimen_catalogue.h"
 
 namespace mozzi::devices::campaign {
 
@@ -90,6 +95,53 @@ core::Result<void> addDemoCampaigns(core::io::ProjectStore& store) {
       auto e = errors.first();
       return core::makeError(e ? e->code : core::ErrorCode::Cancelled,
                              e ? e->message : std::string("did not finish within 10 minutes"), where);
+    }
+  }
+  return {};
+}
+
+core::Result<void> identifyDemoCampaigns(core::io::ProjectStore& store) {
+  namespace md = core::modal;
+  auto summary = store.summary();
+  if (!summary) return summary.error();
+  auto sets = store.frfSets();
+  if (!sets) return sets.error();
+  for (const DemoCampaign& demo : demoCampaigns()) {
+    const std::string where = "demo identification on " + demo.specimenKey;
+    std::optional<std::int64_t> specimen;
+    for (const auto& s : summary->specimens)
+      if (s.name == demo.specimenName) specimen = s.id;
+    const sim::SpecimenEntry* entry = nullptr;
+    for (const auto& e : sim::specimenCatalogue())
+      if (e.key == demo.specimenKey) entry = &e;
+    if (!specimen || !entry || entry->modes.empty()) {
+      return core::makeError(core::ErrorCode::NotFound, "no specimen with catalogued modes", where);
+    }
+    double lo = 1e300, hi = 0.0;
+    for (const auto& m : entry->modes) lo = std::min(lo, m.frequencyHz), hi = std::max(hi, m.frequencyHz);
+    lo *= 0.8;
+    hi *= 1.15;
+    for (const auto& set : *sets) {
+      if (set.specimenId != *specimen || !set.campaignId) continue;
+      auto frf = store.frfSet(set.id);
+      if (!frf) return frf.error();
+      auto tauS = frfSetExponentialTauS(store, set.id);
+      if (!tauS) return tauS.error();
+      // As `mozzi-cli identify` by default: pLSCF to order 60, capped at what
+      // the band's lines support.
+      md::IdentificationOptions opt;
+      opt.estimator.bandLowHz = lo;
+      opt.estimator.bandHighHz = hi;
+      opt.estimator.maxOrder = std::min(60, std::max(8, md::plscfOrderLimit(*frf, lo, hi)));
+      auto identified = md::identifyModes(*frf, opt);
+      if (!identified) return identified.error();
+      core::io::ModalResultInfo info;
+      info.specimenId = set.specimenId;
+      info.frfSetId = set.id;
+      info.bandLowHz = lo;
+      info.bandHighHz = hi;
+      auto stored = md::storeModalResult(store, identified->model(), info, "plscf", *tauS);
+      if (!stored) return stored.error();
     }
   }
   return {};

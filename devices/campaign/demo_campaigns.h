@@ -28,4 +28,11 @@ const std::vector<DemoCampaign>& demoCampaigns();
 // (which must hold it). Errors name the campaign.
 core::Result<void> addDemoCampaigns(core::io::ProjectStore& store);
 
+// Identifies the modes of every demo campaign's FRF set as an engineer would
+// at the identification page's defaults (pLSCF, automatic selection; the band
+// from 0.8 times the specimen's lowest to 1.15 times its highest catalogued
+// mode) and keeps them as a modal result of the project, so the Mode
+// Animation page and the report have modes to show.
+core::Result<void> identifyDemoCampaigns(core::io::ProjectStore& store);
+
 }  // namespace mozzi::devices::campaign

@@ -120,8 +120,13 @@ core::Result<void> addHammerCampaigns(DemoContext& demo) {
   return campaign::addDemoCampaigns(demo.store);
 }
 
+// Step 4: the modes of those campaigns' FRF sets, identified and kept.
+core::Result<void> addIdentifiedModes(DemoContext& demo) {
+  return campaign::identifyDemoCampaigns(demo.store);
+}
+
 // The demo, in order; append a step to extend it.
-const DemoStep kDemoSteps[] = {addSpecimensWithMeshes, addRigAndTyreTests, addHammerCampaigns};
+const DemoStep kDemoSteps[] = {addSpecimensWithMeshes, addRigAndTyreTests, addHammerCampaigns, addIdentifiedModes};
 
 }  // namespace
 

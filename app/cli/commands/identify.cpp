@@ -235,21 +235,12 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
 
   std::optional<std::int64_t> storedId;
   if (parsed->flag("--store")) {
-    // The table the identification page saves: f, zeta and the shapes of reference 0.
-    auto table = md::modalTableOf(model);
-    if (!table) return fail(err, table.error());
-    // The printed numbers: the window's decay removed as from the rows above.
-    if (auto c = md::removeExponentialWindow(*table, tauS); !c) return fail(err, c.error());
     core::io::ModalResultInfo info;
     info.specimenId = setInfo.specimenId;
     info.frfSetId = setInfo.id;
-    info.method = md::storedMethodName(method);
-    auto existing = store->modalResults();
-    if (!existing) return fail(err, existing.error());
-    info.name = md::uniqueModalResultName(*existing, info.specimenId, md::defaultModalResultName(method, lo, hi));
     info.bandLowHz = lo;
     info.bandHighHz = hi;
-    auto id = store->addModalResult(info, *table);
+    auto id = md::storeModalResult(*store, model, info, method, tauS);  // the printed numbers' table
     if (!id) return fail(err, id.error());
     storedId = *id;
   }

@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 
+#include "core/common/ceres_logging.h"
 #include "core/common/text.h"
 
 namespace mozzi::core::gap::engine {
@@ -288,6 +289,7 @@ void covarianceAt(const Model& model, FitResult& fit) {
   co.min_reciprocal_condition_number = kRankTolerance * kRankTolerance;
   co.null_space_rank = 0;
   co.num_threads = 1;
+  quietCeresLogging();  // a singular covariance is reported below, not by glog
   ceres::Covariance covariance(co);
   std::vector<std::pair<const double*, const double*>> pairs;
   for (int i : free) pairs.emplace_back(&b.u[static_cast<std::size_t>(i)], &b.u[static_cast<std::size_t>(i)]);

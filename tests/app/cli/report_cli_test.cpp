@@ -186,21 +186,34 @@ TEST_F(ReportCliTest, DemoReportAsPdfAndHtml) {
   // The content model's cells hold the stored values exactly, per step too.
   auto report = core::report::buildProjectReport(*store, {});
   ASSERT_TRUE(report.ok());
+  // One table per stored modal result (the demo's identified campaigns and
+  // the one added here), each holding its result's values exactly.
   const auto* modal = report->section("modal");
   ASSERT_NE(modal, nullptr);
-  const core::report::Table* modes = nullptr;
+  std::vector<const core::report::Table*> tables;
   for (const auto& b : modal->blocks)
-    if (auto* t = std::get_if<core::report::Table>(&b)) modes = t;
-  ASSERT_NE(modes, nullptr);
-  ASSERT_EQ(modes->rows.size(), kModes.size());
+    if (auto* t = std::get_if<core::report::Table>(&b)) tables.push_back(t);
   auto stored = store->modalResults();
-  ASSERT_TRUE(stored.ok() && stored->size() == 1);
-  auto storedModes = store->modalResult(stored->front().id);
-  ASSERT_TRUE(storedModes.ok());
-  for (size_t i = 0; i < kModes.size(); ++i) {
-    EXPECT_EQ(*modes->rows[i][1].value, storedModes->modes[i].frequencyHz);
-    EXPECT_EQ(*modes->rows[i][2].value, 100 * storedModes->modes[i].dampingRatio);
+  ASSERT_TRUE(stored.ok());
+  ASSERT_EQ(tables.size(), stored->size());
+  bool added = false;
+  for (std::size_t r = 0; r < stored->size(); ++r) {
+    const auto& info = (*stored)[r];
+    EXPECT_EQ(tables[r]->caption, "Modes of " + info.name);
+    auto storedModes = store->modalResult(info.id);
+    ASSERT_TRUE(storedModes.ok());
+    ASSERT_EQ(tables[r]->rows.size(), storedModes->modes.size());
+    for (std::size_t i = 0; i < storedModes->modes.size(); ++i) {
+      EXPECT_EQ(*tables[r]->rows[i][1].value, storedModes->modes[i].frequencyHz);
+      EXPECT_EQ(*tables[r]->rows[i][2].value, 100 * storedModes->modes[i].dampingRatio);
+    }
+    if (info.name == "report test modes") {
+      added = true;
+      ASSERT_EQ(storedModes->modes.size(), kModes.size());
+      for (std::size_t i = 0; i < kModes.size(); ++i) EXPECT_EQ(storedModes->modes[i].frequencyHz, kModes[i].first);
+    }
   }
+  EXPECT_TRUE(added);
   int stepCells = 0;
   for (const auto& t : *tests) {
     auto test = store->rigTest(t.id);

@@ -8,11 +8,13 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "core/geometry/mesh_templates.h"
 #include "core/io/project_store.h"
+#include "devices/campaign/demo_campaigns.h"
 #include "devices/sim/specimen_catalogue.h"
 #include "devices/sim/specimen_models.h"
 
@@ -83,6 +85,40 @@ TEST(VirtualSpecimens, TheDemoProjectStoresEveryMeshQuickly) {
       const auto* tn = t->node(n.label);
       ASSERT_NE(tn, nullptr) << v.name << " node " << n.label;
       EXPECT_TRUE(n.position.isApprox(tn->position, 1e-12)) << v.name << " node " << n.label;
+    }
+  }
+
+  // The demo campaigns' modes, identified and kept (one modal result per
+  // campaign): every catalogued mode of the specimen found within 1% in
+  // frequency (the campaigns' noise and 2048 Hz sampling; the validation
+  // test devices_campaign_identify finds them within 0.02%), each with a
+  // positive damping once the exponential window's decay is removed.
+  auto results = store->modalResults();
+  ASSERT_TRUE(results.ok());
+  ASSERT_EQ(results->size(), 2u);
+  for (const auto& info : *results) {
+    ASSERT_TRUE(info.frfSetId.has_value());
+    std::string specimenName;
+    for (const auto& s : summary->specimens)
+      if (s.id == info.specimenId) specimenName = s.name;
+    std::string key;  // the catalogue entry the demo campaign ran the specimen as
+    for (const auto& c : campaign::demoCampaigns())
+      if (c.specimenName == specimenName) key = c.specimenKey;
+    const SpecimenEntry* entry = nullptr;
+    for (const auto& e : specimenCatalogue())
+      if (e.key == key) entry = &e;
+    ASSERT_NE(entry, nullptr) << specimenName;
+    auto modes = store->modalResult(info.id);
+    ASSERT_TRUE(modes.ok());
+    for (const auto& truth : entry->modes) {
+      const core::io::StoredMode* nearest = nullptr;
+      for (const auto& m : modes->modes)
+        if (!nearest ||
+            std::abs(m.frequencyHz - truth.frequencyHz) < std::abs(nearest->frequencyHz - truth.frequencyHz))
+          nearest = &m;
+      ASSERT_NE(nearest, nullptr) << specimenName;
+      EXPECT_NEAR(nearest->frequencyHz, truth.frequencyHz, 0.01 * truth.frequencyHz) << specimenName;
+      EXPECT_GT(nearest->dampingRatio, 0.0) << specimenName;
     }
   }
   std::filesystem::remove(path);
