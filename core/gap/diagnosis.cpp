@@ -326,12 +326,7 @@ Result<Diagnosis> diagnoseOnce(const GapProblem& problem, const DiagnosisOptions
         if (e.candidateIndex == sc.index && e.fitted) before = &e;
     }
     if (before) {
-      // From the first pass's optimum, with its covariance at once (step 4c
-      // then has nothing to polish).
-      FitOptions withCovariance;
-      withCovariance.covariance = true;
-      fits[c] =
-          engine::fitModel(model, {scaledPoint(theta, before->theta, sc.phi, before->parameters)}, withCovariance);
+      fits[c] = engine::fitModel(model, {scaledPoint(theta, before->theta, sc.phi, before->parameters)}, {});
       if (fits[c].ok) firstLr[c] = 2.0 * (fit0.nll - fits[c].nll);
       return;
     }
@@ -400,10 +395,6 @@ Result<Diagnosis> diagnoseOnce(const GapProblem& problem, const DiagnosisOptions
   parallelFor(candidateCount, [&](std::size_t c) {
     const auto& sc = screen.candidates[c];
     if (!sc.identifiable || !fits[c].ok) return;
-    if (warm && !needsRestarts[c] && (!fits[c].stdErrors.empty() || fits[c].rankDeficient)) {
-      polishedFits[c] = fits[c];  // fitted with its covariance from the first pass's optimum
-      return;
-    }
     Model model(problem, theta, sc.index, sc.phi);
     FitOptions fc;
     fc.covariance = true;
