@@ -490,10 +490,10 @@ Result<Diagnosis> diagnoseOnce(const GapProblem& problem, const DiagnosisOptions
   // (those of the first `count` ranks not yet checked).
   std::optional<engine::HeldOutBaseline> heldBaseline;  // the baseline's fold fits, once
   auto checkHeldOut = [&](std::size_t count) -> Result<void> {
-    std::vector<std::size_t> todo;
+    std::vector<std::size_t> unchecked;
     for (std::size_t i = 0; i < std::min(fittedCount, count); ++i)
-      if (std::isnan(d.ranking[i].heldOutImprovement)) todo.push_back(i);
-    for (std::size_t i : todo) {
+      if (std::isnan(d.ranking[i].heldOutImprovement)) unchecked.push_back(i);
+    for (std::size_t i : unchecked) {
       RankedEffect& e = d.ranking[i];
       if (!heldBaseline) {
         auto b = engine::heldOutBaseline(problem, theta, u0);

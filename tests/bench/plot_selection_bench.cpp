@@ -12,6 +12,8 @@
 
 #include <cmath>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "core/common/frf_display.h"
 #include "core/common/plot_math.h"
@@ -101,18 +103,29 @@ void BM_PoleClickRefit(benchmark::State& state) {
 }
 BENCHMARK(BM_PoleClickRefit)->Unit(benchmark::kMillisecond);
 
+// The poles a click alternates between: all five modes, and four (the third
+// removed), in the band of the page's run.
+std::pair<std::vector<Complex>, std::vector<Complex>> clickedPoles() {
+  std::vector<Complex> five, four;
+  for (double fn : kModesHz) five.push_back(modal::poleFromFrequencyDamping(fn, 0.01));
+  four = five;
+  four.erase(four.begin() + 2);
+  return {five, four};
+}
+modal::LsfdOptions clickBand() {
+  modal::LsfdOptions o;
+  o.bandLowHz = 50.0;
+  o.bandHighHz = 950.0;
+  return o;
+}
+
 // The pole click as the page did it until session 6: core's one-QR fit with
 // the synthesis of every FRF (fitSelectedPoles), the measured FRFs copied
 // onto the band, residualPerFrf over both. Clicks alternate four and five modes.
 void BM_PoleClickFitSelectedPoles(benchmark::State& state) {
   const FrfMatrix& f = set100x20000();
-  std::vector<Complex> five, four;
-  for (double fn : kModesHz) five.push_back(modal::poleFromFrequencyDamping(fn, 0.01));
-  four = five;
-  four.erase(four.begin() + 2);
-  modal::LsfdOptions o;
-  o.bandLowHz = 50.0;
-  o.bandHighHz = 950.0;
+  const auto [five, four] = clickedPoles();
+  const modal::LsfdOptions o = clickBand();
   bool odd = false;
   for (auto _ : state) {
     odd = !odd;
@@ -137,13 +150,8 @@ BENCHMARK(BM_PoleClickFitSelectedPoles)->Unit(benchmark::kMillisecond);
 // synthesis of the one FRF shown. Clicks alternate four and five modes.
 void BM_PoleClickSelectionFitter(benchmark::State& state) {
   const FrfMatrix& f = set100x20000();
-  std::vector<Complex> five, four;
-  for (double fn : kModesHz) five.push_back(modal::poleFromFrequencyDamping(fn, 0.01));
-  four = five;
-  four.erase(four.begin() + 2);
-  modal::LsfdOptions o;
-  o.bandLowHz = 50.0;
-  o.bandHighHz = 950.0;
+  const auto [five, four] = clickedPoles();
+  const modal::LsfdOptions o = clickBand();
   auto fitter = modal::SelectionFitter::create(f, o);
   ComplexVector shown;
   bool odd = false;
