@@ -32,6 +32,7 @@
 #include "views/common/job_runner.h"
 #include "views/common/project_model.h"
 #include "views/panels/parameter_form.h"
+#include "views/panels/parameter_texts.h"
 #include "views/plots/interactive_plot.h"
 
 using mozzi::views::JobRunner;
@@ -241,6 +242,18 @@ class LumpedForkPageTest : public QObject {
     QVERIFY(id > 0);
     const auto json = nlohmann::json::parse(storedModelJson(id, "lumped"));
     QCOMPARE(json["bending"]["bend_arm_hW_m"].get<double>(), h);
+  }
+
+  // The forms' labels and help are listed for translation (parameter_texts.cpp).
+  void formTextsAreTranslatable() {
+    QSet<QString> listed;
+    for (const char* t : mozzi::views::parameterTexts()) listed.insert(QString::fromUtf8(t));
+    QStringList missing;
+    for (const auto& list : {rt::lumpedForkParameterSpecs(), rt::bicycleForkParameterSpecs()})
+      for (const auto& s : list)
+        for (const auto& t : {s.label, s.help})
+          if (!listed.contains(QString::fromStdString(t))) missing << QString::fromStdString(t);
+    QVERIFY2(missing.isEmpty(), qPrintable(missing.join(QLatin1Char('\n'))));
   }
 
  private:
