@@ -263,7 +263,7 @@ void LumpedForkPage::retranslate() {
   tabs_->setTabText(1, tr("Bicycle fork (§6.4, §6.5)"));
   ladder_->setAxisTitle(QwtPlot::xBottom, tr("Frequency [Hz]"));
   curves_->setAxisTitle(QwtPlot::xBottom, tr("Bending arm h_W from the blade tips [m]"));
-  curves_->setAxisTitle(QwtPlot::yLeft, tr("Bending stiffness [Nm/rad]"));
+  curves_->setAxisTitle(QwtPlot::yLeft, tr("k_β(h_W) [Nm/rad]"));
 }
 
 void LumpedForkPage::changeEvent(QEvent* event) {
