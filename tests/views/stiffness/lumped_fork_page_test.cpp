@@ -34,6 +34,7 @@
 #include "views/panels/parameter_form.h"
 #include "views/panels/parameter_texts.h"
 #include "views/plots/interactive_plot.h"
+#include "views/stiffness/page_fixture.h"
 
 using mozzi::views::JobRunner;
 using mozzi::views::LumpedForkPage;
@@ -43,16 +44,6 @@ using mozzi::views::RecordKind;
 namespace rt = mozzi::devices::rigtests;
 
 namespace {
-
-void saveShot(QWidget& page, const QString& name) {
-  const QString shots = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR");
-  if (shots.isEmpty()) return;
-  QTest::qWait(200);
-  QDir().mkpath(shots);
-  const bool hiDpi = qApp->devicePixelRatio() > 1.0;
-  page.grab().save(shots + QStringLiteral("/") + name + (hiDpi ? QStringLiteral("@2x") : QString()) +
-                   QStringLiteral(".png"));
-}
 
 QString runCli(const QStringList& args) {
   QProcess p;
@@ -110,17 +101,14 @@ class LumpedForkPageTest : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    QVERIFY(dir_.isValid());
-    auto created = model_.createDemo(dir_.filePath(QStringLiteral("demo.mozzi")));
-    QVERIFY2(created.ok(), created.ok() ? "" : created.error().describe().c_str());
+    const QString problem = stiffness_pages::openDemo(model_, dir_);
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
   }
 
   void fitsTable12AsTheCliDoes() {
     PageContext ctx{&model_, &jobs_, {RecordKind::None, 0, 0}, nullptr, {}};
     LumpedForkPage page(ctx);
-    page.resize(1280, 800);
-    page.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&page));
+    QVERIFY(stiffness_pages::showAt1280x800(page));
     QVERIFY(waitComputed(page));
     QCOMPARE(page.statusText(), QStringLiteral("Computed."));
     compareWithCli(page);
@@ -166,7 +154,7 @@ class LumpedForkPageTest : public QObject {
     for (std::size_t i = 0; i < stored->modes.size(); ++i)
       QCOMPARE(rungs[0]->sample(i).x(), stored->modes[i].frequencyHz);
     for (int m = 0; m < 3; ++m) QCOMPARE(rungs[1 + m]->sample(0).x(), cell(t, 4, m));
-    saveShot(page, QStringLiteral("lumped_fork"));
+    stiffness_pages::saveShot(page, QStringLiteral("lumped_fork"));
 
     // The identified lateral mode (22.30 Hz, the demo's simulated fork A)
     // taken into the form: models 2 and 3 tuned to it, the CLI agreeing.
@@ -194,9 +182,7 @@ class LumpedForkPageTest : public QObject {
   void bicycleForkAsTheCliDoes() {
     PageContext ctx{&model_, &jobs_, {RecordKind::None, 0, 0}, nullptr, {}};
     LumpedForkPage page(ctx);
-    page.resize(1280, 800);
-    page.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&page));
+    QVERIFY(stiffness_pages::showAt1280x800(page));
     QVERIFY(waitComputed(page));
     page.findChild<QTabWidget*>(QStringLiteral("lumpedForkTabs"))->setCurrentIndex(1);
     // The bicycle tab keeps its results for a bicycle fork of the project.
@@ -237,7 +223,7 @@ class LumpedForkPageTest : public QObject {
       if (curves[0]->sample(i).x() > h && after == 0) after = d;
     }
     QVERIFY2(before * after < 0, "the curves cross at h_W");
-    saveShot(page, QStringLiteral("lumped_fork_bicycle"));
+    stiffness_pages::saveShot(page, QStringLiteral("lumped_fork_bicycle"));
     const qint64 id = page.keepBicycleFork();
     QVERIFY(id > 0);
     const auto json = nlohmann::json::parse(storedModelJson(id, "lumped"));

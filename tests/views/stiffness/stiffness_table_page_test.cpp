@@ -26,6 +26,7 @@
 #include "core/io/project_store.h"
 #include "views/common/job_runner.h"
 #include "views/common/project_model.h"
+#include "views/stiffness/page_fixture.h"
 
 using mozzi::views::JobRunner;
 using mozzi::views::PageContext;
@@ -36,16 +37,6 @@ using mozzi::views::StiffnessTablePage;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-void saveShot(QWidget& page, const QString& name) {
-  const QString shots = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR");
-  if (shots.isEmpty()) return;
-  QTest::qWait(200);
-  QDir().mkpath(shots);
-  const bool hiDpi = qApp->devicePixelRatio() > 1.0;
-  page.grab().save(shots + QStringLiteral("/") + name + (hiDpi ? QStringLiteral("@2x") : QString()) +
-                   QStringLiteral(".png"));
-}
 
 // Row order of the page (thesis Tables 7, 9, 10, 13).
 const char* const kKeys[] = {"k_lat", "a_tw", "k_tw", "a_bend", "k_bend", "a_tors", "k_tors", "axis_inclination"};
@@ -78,17 +69,14 @@ class StiffnessTablePageTest : public QObject {
   Q_OBJECT
  private slots:
   void initTestCase() {
-    QVERIFY(dir_.isValid());
-    auto created = model_.createDemo(dir_.filePath(QStringLiteral("demo.mozzi")));
-    QVERIFY2(created.ok(), created.ok() ? "" : created.error().describe().c_str());
+    const QString problem = stiffness_pages::openDemo(model_, dir_);
+    QVERIFY2(problem.isEmpty(), qPrintable(problem));
   }
 
   void showsTheStoredResultsBesideTheThesis() {
     PageContext ctx{&model_, &jobs_, {RecordKind::None, 0, 0}, nullptr, {}};
     StiffnessTablePage page(ctx);
-    page.resize(1280, 800);
-    page.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&page));
+    QVERIFY(stiffness_pages::showAt1280x800(page));
     auto* table = page.table();
     QCOMPARE(table->rowCount(), 8);
 
@@ -167,7 +155,7 @@ class StiffnessTablePageTest : public QObject {
         QVERIFY(std::abs(printedThesis - thesis.at(kKeys[r])) <= 1e-9 * thesis.at(kKeys[r]));
       }
     }
-    saveShot(page, QStringLiteral("stiffness_tables"));
+    stiffness_pages::saveShot(page, QStringLiteral("stiffness_tables"));
 
     // CSV: a header naming each test, one line per quantity with the same numbers.
     const QStringList lines = page.csv().split(QLatin1Char('\n'), Qt::SkipEmptyParts);
