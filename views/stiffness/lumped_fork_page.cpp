@@ -564,7 +564,12 @@ QString LumpedForkPage::statusText() const {
   return status_;
 }
 
-qint64 LumpedForkPage::keep(const QString& name, const std::string& parametersJson) {
+// A model of kind "lumped" with the inputs and the results, and an analysis
+// of kind `analysisKind` ("lumped-fork", "bicycle-fork") naming it and the
+// measured modes, whose result_json the project report shows with the
+// stiffness results (core/report/project_report.cpp).
+qint64 LumpedForkPage::keep(const QString& name, const std::string& analysisKind, const std::string& json,
+                            qint64 modalResultId) {
   const qint64 specimen = specimen_->currentData().toLongLong();
   if (!model_->store() || specimen == 0) {
     status_ = tr("No specimen to keep the model for.");
@@ -575,9 +580,25 @@ qint64 LumpedForkPage::keep(const QString& name, const std::string& parametersJs
   m.specimenId = specimen;
   m.name = name.toStdString();
   m.kind = "lumped";
-  m.parametersJson = parametersJson;
+  m.parametersJson = json;
   m.source = "Mozzi Lumped Fork page (core::stiffness::fork_models; thesis §4.2, §6.4, §6.5)";
   auto id = model_->addModel(m);
+  if (id) {
+    core::io::StoredAnalysis a;
+    a.specimenId = specimen;
+    a.modelId = *id;
+    if (modalResultId > 0) a.modalResultId = modalResultId;
+    a.kind = analysisKind;
+    a.name = m.name;
+    a.resultJson = json;
+    auto kept = model_->addAnalysis(a);
+    if (!kept) {
+      status_ = tr("Could not keep the model: %1").arg(qs(kept.error().describe()));
+      statusLabel_->setText(status_);
+      emit message(status_);
+      return 0;
+    }
+  }
   status_ = id ? tr("Kept as model %1 of %2.").arg(*id).arg(specimen_->currentText())
                : tr("Could not keep the model: %1").arg(qs(id.error().describe()));
   statusLabel_->setText(status_);
@@ -592,7 +613,7 @@ qint64 LumpedForkPage::keepLumpedModels() {
                    {"models", rt::lumpedModelsJson(*outcome_->lumped)}};
   const qint64 result = modal_->currentData().toLongLong();
   if (result > 0) j["measured_modal_result_id"] = result;
-  return keep(tr("Lumped fork models 1 to 3"), j.dump());
+  return keep(tr("Lumped fork models 1 to 3"), "lumped-fork", j.dump(), result);
 }
 
 qint64 LumpedForkPage::keepBicycleFork() {
@@ -615,7 +636,7 @@ qint64 LumpedForkPage::keepBicycleFork() {
                      {"stiffness_Nm_per_rad", b.stiffness},
                      {"inertia_with_wheel_kgm2", b.inertiaWithWheel},
                      {"damping_Nms_per_rad", b.damping}}}};
-  return keep(tr("Bicycle fork stiffness and damping"), j.dump());
+  return keep(tr("Bicycle fork stiffness and damping"), "bicycle-fork", j.dump(), 0);
 }
 
 }  // namespace views

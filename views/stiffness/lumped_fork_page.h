@@ -16,7 +16,9 @@
 //
 // The computation runs on the window's JobRunner; "Keep in project" stores the
 // result as a project model of kind "lumped" (the JSON keys of
-// `mozzi-cli fork ... --json`).
+// `mozzi-cli fork ... --json`) and an analysis of kind "lumped-fork" or
+// "bicycle-fork" naming it, which the project report shows with the stiffness
+// results.
 
 #include <QString>
 #include <QWidget>
@@ -52,7 +54,9 @@ class LumpedForkPage : public QWidget {
   // result into the motorcycle form.
   bool useMeasuredMode(int index);
   // Stores the motorcycle models (or the bicycle fork's results) as a model of
-  // kind "lumped" for the chosen specimen; its id, or 0 (the reason in statusText()).
+  // kind "lumped" for the chosen specimen, with an analysis naming it (and the
+  // modal result whose modes are shown); the model's id, or 0 (the reason in
+  // statusText()).
   qint64 keepLumpedModels();
   qint64 keepBicycleFork();
   // Re-reads the project's specimens and modal results.
@@ -86,7 +90,7 @@ class LumpedForkPage : public QWidget {
   void presentModels();
   void presentModes();
   void presentBicycle();
-  qint64 keep(const QString& name, const std::string& parametersJson);
+  qint64 keep(const QString& name, const std::string& analysisKind, const std::string& json, qint64 modalResultId);
 
   ProjectModel* model_ = nullptr;
   JobRunner* jobs_ = nullptr;

@@ -28,6 +28,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/project_store.h"
+#include "core/report/project_report.h"
 #include "devices/rigtests/fork_model_inputs.h"
 #include "views/common/job_runner.h"
 #include "views/common/project_model.h"
@@ -177,6 +178,29 @@ class LumpedForkPageTest : public QObject {
     QCOMPARE(json["models"]["model2"]["stiffness_Nm_per_rad"].get<double>(), cell(t, 0, 1));
     QCOMPARE(json["models"]["model3"]["inertia_kgm2"].get<double>(), cell(t, 2, 2));
     QCOMPARE(json["inputs"]["measured_frequency_Hz"].get<double>(), taken.measuredFrequencyHz);
+    // ... with an analysis naming it and the modal result, which the project
+    // report (as mozzi-cli report builds it) shows with the stiffness results.
+    auto analyses = model_.store()->analyses();
+    QVERIFY(analyses.ok());
+    QVERIFY(!analyses->empty());
+    const auto& kept = analyses->back();
+    QCOMPARE(kept.kind, std::string("lumped-fork"));
+    QCOMPARE(kept.modelId.value_or(0), id);
+    QCOMPARE(kept.modalResultId.value_or(0), page.modalResultBox()->currentData().toLongLong());
+    auto report = mozzi::core::report::buildProjectReport(*model_.store(), {{"stiffness", "gap"}, "", ""});
+    QVERIFY(report.ok());
+    const auto* stiffness = report->section("stiffness");
+    QVERIFY(stiffness);
+    const mozzi::core::report::Table* lumped = nullptr;
+    for (const auto& b : stiffness->blocks)
+      if (const auto* tb = std::get_if<mozzi::core::report::Table>(&b))
+        if (tb->caption == "Lumped fork models (thesis §4.2, Table 12)") lumped = tb;
+    QVERIFY(lumped);
+    QCOMPARE(lumped->rows.size(), std::size_t{3});
+    for (int m = 0; m < 3; ++m)
+      for (int r = 0; r < 7; ++r) QCOMPARE(*lumped->rows[m][r + 1].value, cell(t, r, m));
+    // ... and not among the gap diagnoses.
+    QVERIFY(report->section("gap") == nullptr);
   }
 
   void bicycleForkAsTheCliDoes() {
