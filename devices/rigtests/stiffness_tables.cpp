@@ -23,7 +23,10 @@ std::string constraintOf(const sim::SpecimenEntry& e) {
 
 // The thesis's printed values of a catalogue entry, by row key (SI).
 std::map<std::string, double> thesisValues(const sim::StaticProperties& p) {
-  std::map<std::string, double> t{{"k_lat", p.lateralStiffness}, {"a_tw", p.twistArm}, {"k_tw", p.twistStiffness}};
+  std::map<std::string, double> t{{"k_lat", p.lateralStiffness}, {"k_tw", p.twistStiffness}};
+  // Table 5 (frame C) prints the stiffnesses but no arm: the catalogue derives
+  // its a_tw = sqrt(k_tw / k_lat) for the rig model; that is not the thesis's.
+  if (p.bendArm > 0 || p.torsArm > 0) t["a_tw"] = p.twistArm;
   if (p.bendStiffness > 0) t["k_bend"] = p.bendStiffness;
   if (p.torsStiffness > 0) t["k_tors"] = p.torsStiffness;
   if (p.bendArm > 0) t["a_bend"] = p.bendArm;
