@@ -306,9 +306,14 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                           page->setObjectName(QStringLiteral("stiffnessTablesTab"));
                           const auto log = ctx.log;
                           if (log) QObject::connect(page, &views::StiffnessTablePage::message, page, log);
+                          if (ctx.item.kind == RecordKind::RigTest) page->showRigTest(ctx.item.id);
                           return page;
                         },
-                        /*singleton=*/true, /*openAtStart=*/false, nullptr});
+                        /*singleton=*/true, /*openAtStart=*/false,
+                        [](QWidget* page, const PageContext& ctx) {
+                          if (ctx.item.kind == RecordKind::RigTest)
+                            static_cast<views::StiffnessTablePage*>(page)->showRigTest(ctx.item.id);
+                        }});
   registry.add(PageSpec{QStringLiteral("lumped-fork"), QT_TRANSLATE_NOOP("Pages", "Lumped Fork"),
                         QT_TRANSLATE_NOOP("Pages",
                                           "Lumped fork models 1 to 3 against the measured modes, and the "

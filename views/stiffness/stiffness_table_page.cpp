@@ -273,6 +273,16 @@ void StiffnessTablePage::fill() {
   export_->setEnabled(!columns_.empty());
 }
 
+bool StiffnessTablePage::showRigTest(qint64 testId) {
+  for (int c = 0; c < table_->columnCount(); ++c) {
+    if (testOfColumn(c) != testId) continue;
+    table_->selectColumn(c);
+    table_->scrollToItem(table_->item(0, c));
+    return true;
+  }
+  return false;
+}
+
 QString StiffnessTablePage::statusText() const {
   return status_->text();
 }

@@ -36,6 +36,9 @@ class StiffnessTablePage : public QWidget {
 
   // Re-reads the project's static rig tests.
   void reload();
+  // Selects rig test `testId`'s measured column (false when it is not shown:
+  // a sine sweep, another project).
+  bool showRigTest(qint64 testId);
   // Shows or hides the thesis's columns.
   void setThesisShown(bool shown);
 

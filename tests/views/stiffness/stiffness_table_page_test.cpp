@@ -157,6 +157,13 @@ class StiffnessTablePageTest : public QObject {
     }
     stiffness_pages::saveShot(page, QStringLiteral("stiffness_tables"));
 
+    // Opened on a rig test: its measured column selected; a sweep has none.
+    QVERIFY(page.showRigTest(statics[1]));
+    QCOMPARE(table->selectionModel()->selectedColumns().size(), 1);
+    QCOMPARE(page.testOfColumn(table->selectionModel()->selectedColumns().first().column()), statics[1]);
+    for (const auto& t : *tests)
+      if (t.kind == "dynamic") QVERIFY(!page.showRigTest(t.id));
+
     // CSV: a header naming each test, one line per quantity with the same numbers.
     const QStringList lines = page.csv().split(QLatin1Char('\n'), Qt::SkipEmptyParts);
     QCOMPARE(lines.size(), 9);
