@@ -1,9 +1,11 @@
 #include "views/rigs/rig_test_page.h"
 
+#include <qwt_interval_symbol.h>
 #include <qwt_legend.h>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
 #include <qwt_plot_grid.h>
+#include <qwt_plot_intervalcurve.h>
 #include <qwt_symbol.h>
 #include <QComboBox>
 #include <QCoreApplication>
@@ -32,6 +34,7 @@
 #include "core/tire/magic_formula.h"
 #include "devices/rigtests/rig_sequence.h"
 #include "devices/rigtests/sequence_parameters.h"
+#include "devices/rigtests/stiffness_results.h"
 #include "devices/rigtests/stiffness_tests.h"
 #include "devices/rigtests/tyre_tests.h"
 #include "devices/rigtests/virtual_rigs.h"
@@ -313,9 +316,13 @@ void RigTestPage::buildUi() {
   livePlot_->enableAxis(QwtPlot::yRight, true);
   resultPlot_ = makePlot(this);
   resultPlot_->setObjectName(QStringLiteral("resultPlot"));
+  axisPlot_ = makePlot(this);
+  axisPlot_->setObjectName(QStringLiteral("axisPlot"));
+  axisPlot_->enableAxis(QwtPlot::yRight, true);
   auto* plots = new QSplitter(Qt::Horizontal);
   plots->addWidget(livePlot_);
   plots->addWidget(resultPlot_);
+  plots->addWidget(axisPlot_);
 
   resultsBox_ = new QGroupBox;
   auto* resultsLayout = new QVBoxLayout(resultsBox_);
@@ -554,7 +561,34 @@ void RigTestPage::resetPlots() {
     mfSlip_->setPen(QPen(QColor(148, 103, 189), 2.0));
     mfCamber_->setPen(QPen(QColor(140, 86, 75), 2.0));
     timeLeft_->setPen(QPen(QColor(31, 119, 180), 3.0));  // wide: an in-phase trace on the right axis covers it
+    sineFit_ = addCurve(resultPlot_, Qt::black);
+    sineFit_->setPen(QPen(Qt::black, 1.5, Qt::DashLine));
+    const QColor incColour(31, 119, 180), armColour(214, 39, 40);
+    inclination_ = addCurve(axisPlot_, incColour);
+    inclination_->setSymbol(new QwtSymbol(QwtSymbol::Ellipse, QBrush(incColour), QPen(incColour), QSize(7, 7)));
+    arm_ = addCurve(axisPlot_, armColour, QwtPlot::yRight);
+    arm_->setSymbol(new QwtSymbol(QwtSymbol::Rect, QBrush(armColour), QPen(armColour), QSize(7, 7)));
+    auto bars = [this](const QColor& colour, int yAxis) {
+      auto* c = new QwtPlotIntervalCurve();
+      c->setStyle(QwtPlotIntervalCurve::NoCurve);
+      auto* symbol = new QwtIntervalSymbol(QwtIntervalSymbol::Bar);
+      symbol->setWidth(8);
+      symbol->setPen(QPen(colour, 1.2));
+      c->setSymbol(symbol);
+      c->setYAxis(yAxis);
+      c->setItemAttribute(QwtPlotItem::Legend, false);
+      c->attach(axisPlot_);
+      return c;
+    };
+    inclinationBars_ = bars(incColour, QwtPlot::yLeft);
+    armBars_ = bars(armColour, QwtPlot::yRight);
   }
+  clearAxisPlot();
+  const bool sine = stiff && id == QLatin1String("dynamic");
+  axisPlot_->setVisible(sine);
+  sineFit_->setSamples(QVector<QPointF>());
+  sineFit_->setVisible(sine);
+  sineFit_->setItemAttribute(QwtPlotItem::Legend, sine);
   const bool steady = id == QLatin1String("steady-state");
   for (QwtPlotCurve* c : {xyLive_, xySecond_}) {
     // Steady state: one point per set-point; otherwise a line through the scans.
@@ -588,6 +622,13 @@ void RigTestPage::resetPlots() {
     resultPlot_->setAxisTitle(QwtPlot::yLeft, tr("Force [N]"));
     xyLive_->setTitle(id == QLatin1String("dynamic") ? tr("current frequency") : tr("measured"));
     fitLine_->setTitle(tr("F = k_lat x (stored k_lat)"));
+    sineFit_->setTitle(tr("sine fit, last frequency"));
+    axisPlot_->setTitle(tr("Dynamic twist axis against frequency"));
+    axisPlot_->setAxisTitle(QwtPlot::xBottom, tr("Frequency [Hz]"));
+    axisPlot_->setAxisTitle(QwtPlot::yLeft, tr("Inclination [deg]"));
+    axisPlot_->setAxisTitle(QwtPlot::yRight, tr("Twist arm a_tw [mm]"));
+    inclination_->setTitle(tr("inclination ± 1σ"));
+    arm_->setTitle(tr("a_tw ± 1σ"));
   } else {
     timeWindowS_ = kTyreTimeWindowS;
     livePlot_->setTitle(tr("Lateral force and aligning moment"));
@@ -656,6 +697,9 @@ void RigTestPage::start() {
   if (!tyre) {
     auto setup = rt::simulatedStiffnessSetup(key, seed, realtime);
     if (!setup) return refuse(setup.error());
+    laserPoints_.clear();
+    for (const auto& p : setup->laserPoints) laserPoints_.emplace_back(p.x(), p.y());
+    loadPoint_ = {setup->loadPoint.x(), setup->loadPoint.y()};
     if (id == QLatin1String("static")) {
       auto st = rt::staticSettingsFrom(testForm_->values());
       if (!st) return refuse(st.error());
@@ -818,6 +862,7 @@ void RigTestPage::onLive(const rt::LiveReadout& r) {
       timeLeftData_.clear();
       timeRightData_.clear();
       xyData_.clear();
+      if (sineFit_) sineFit_->setSamples(QVector<QPointF>());  // the fit of the frequency before
     }
     liveStep_ = r.step;
   }
@@ -880,6 +925,7 @@ void RigTestPage::onStep(const rt::StepReport& s) {
   logView_->appendPlainText(
       s.ok ? tr("Step %1 (%2) committed.").arg(s.step).arg(qs(s.label))
            : tr("Step %1 (%2) kept without a result: %3").arg(s.step).arg(qs(s.label), qs(s.note)));
+  if (rig_ == Rig::Stiffness && testId() == QLatin1String("dynamic") && s.ok) addAxisPoint(s.results);
   if (rig_ != Rig::Tyre || testId() != QLatin1String("steady-state")) return;
   const auto* slip = rt::findQuantity(s.results, "slip");
   const auto* camber = rt::findQuantity(s.results, "camber");
@@ -894,6 +940,57 @@ void RigTestPage::onStep(const rt::StepReport& s) {
   dirty_ = true;
 }
 
+void RigTestPage::clearAxisPlot() {
+  inclinationData_.clear();
+  armData_.clear();
+  inclinationSigma_.clear();
+  armSigma_.clear();
+  if (!inclination_) return;
+  inclination_->setSamples(QVector<QPointF>());
+  arm_->setSamples(QVector<QPointF>());
+  inclinationBars_->setSamples(QVector<QwtIntervalSample>());
+  armBars_->setSamples(QVector<QwtIntervalSample>());
+}
+
+void RigTestPage::addAxisPoint(const std::vector<rt::Quantity>& results) {
+  const auto* f = rt::findQuantity(results, "frequency");
+  const auto* beta = rt::findQuantity(results, "axis_inclination");
+  const auto* arm = rt::findQuantity(results, "a_tw");
+  if (!f) return;
+  // As stored (rad, m), shown in degrees and millimetres.
+  if (beta) {
+    inclinationData_.append(QPointF(f->value, beta->value * 180.0 / kPi));
+    inclinationSigma_.append(QPointF(f->value, beta->uncertainty * 180.0 / kPi));
+  }
+  if (arm) {
+    armData_.append(QPointF(f->value, arm->value * 1e3));
+    armSigma_.append(QPointF(f->value, arm->uncertainty * 1e3));
+  }
+  auto bars = [](const QVector<QPointF>& data, const QVector<QPointF>& sigma) {
+    QVector<QwtIntervalSample> out;
+    for (int i = 0; i < data.size() && i < sigma.size(); ++i)
+      out.append(QwtIntervalSample(data[i].x(), data[i].y() - sigma[i].y(), data[i].y() + sigma[i].y()));
+    return out;
+  };
+  inclination_->setSamples(inclinationData_);
+  arm_->setSamples(armData_);
+  inclinationBars_->setSamples(bars(inclinationData_, inclinationSigma_));
+  armBars_->setSamples(bars(armData_, armSigma_));
+  // The loop the sine fits of this frequency describe, over the measured one.
+  const auto* force = rt::findQuantity(results, "force_amplitude");
+  const auto phasors = rt::laserPhasorsOf(results, laserPoints_.size());
+  if (force && phasors) {
+    std::vector<core::Vector2> lasers;
+    for (const auto& [u, v] : laserPoints_) lasers.emplace_back(u, v);
+    auto loop = rt::fittedSineLoop(lasers, core::Vector2(loadPoint_.first, loadPoint_.second), force->value, *phasors);
+    QVector<QPointF> samples;
+    if (loop)
+      for (const auto& p : *loop) samples.append(QPointF(p.x() * 1e3, p.y()));
+    sineFit_->setSamples(samples);
+  }
+  dirty_ = true;
+}
+
 void RigTestPage::replot() {
   timeLeft_->setSamples(timeLeftData_);
   timeRight_->setSamples(timeRightData_);
@@ -901,6 +998,7 @@ void RigTestPage::replot() {
   xySecond_->setSamples(xySecondData_);
   livePlot_->replot();
   resultPlot_->replot();
+  axisPlot_->replot();
   dirty_ = false;
   if (isRunning()) {
     ++redraws_;
@@ -1054,6 +1152,26 @@ void RigTestPage::showStoredTest(qint64 id) {
   };
   fitLine_->setSamples(QVector<QPointF>());
   fitLine2_->setSamples(QVector<QPointF>());
+  if (rig_ == Rig::Stiffness && testId() == QLatin1String("dynamic")) {
+    // The dynamic twist axis of every stored frequency, and the sine-fit
+    // loop of the last one, from what the project holds.
+    clearAxisPlot();
+    sineFit_->setSamples(QVector<QPointF>());
+    auto view = rt::readStiffnessTest(*store, id);
+    if (view) {
+      laserPoints_.clear();
+      for (const auto& p : view->laserPoints) laserPoints_.emplace_back(p.x(), p.y());
+      loadPoint_ = {view->loadPoint.x(), view->loadPoint.y()};
+      for (const auto& st : view->steps) {
+        std::vector<rt::Quantity> results;
+        for (const auto& [key, q] : st.results)
+          results.push_back(rt::Quantity{key, "", q.value, q.unit, q.uncertainty});
+        addAxisPoint(results);
+      }
+    } else {
+      setStatus(tr("Cannot read the rig test's twist axes: %1").arg(qs(view.error().describe())), true);
+    }
+  }
   if (rig_ == Rig::Stiffness) {
     if (const Row* k = find("k_lat"); k && !xyData_.isEmpty() && testId() == QLatin1String("static")) {
       double lo = xyData_.first().x(), hi = lo;

@@ -15,6 +15,7 @@
 
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
+#include <qwt_plot_intervalcurve.h>
 #include <qwt_plot_item.h>
 #include <QApplication>
 #include <QComboBox>
@@ -29,10 +30,13 @@
 #include <cmath>
 
 #include "core/io/project_store.h"
+#include "core/stiffness/plate_motion.h"
 #include "devices/rigtests/sequence_parameters.h"
+#include "devices/rigtests/stiffness_results.h"
 #include "devices/rigtests/tyre_tests.h"
 #include "devices/sim/sim_drivers.h"
 #include "devices/sim/specimen_catalogue.h"
+#include "devices/sim/specimen_models.h"
 #include "views/common/job_runner.h"
 #include "views/common/project_model.h"
 #include "views/common/project_tree.h"
@@ -316,6 +320,97 @@ class RigTestPageTest : public QObject {
     // The last frequency's force-displacement loop and its 2 s of traces.
     QVERIFY(curveTitled(page.resultPlot(), QStringLiteral("current frequency"))->dataSize() > 100);
     saveShot(page, QStringLiteral("stiffness_rig_sine"));
+  }
+
+  // The dynamic twist axis against frequency: points added as each frequency
+  // is committed, then equal to what the project holds (the stored step
+  // results, read back through devices/rigtests/stiffness_results.h), with
+  // their one-sigma bars; the inclination follows the virtual specimen's
+  // plate model (the in-phase plane of its receptances at the four lasers,
+  // devices/sim/specimen_models.h) within 0.5 deg below the 22.3 Hz lateral
+  // mode (the sequence test's tolerance); the sine-fit loop spans the fitted
+  // force amplitude. A page opened on the stored test draws the same points.
+  void sineSweepDrawsTheTwistAxisAgainstFrequency() {
+    RigTestPage page(RigTestPage::Rig::Stiffness, context());
+    page.resize(1280, 800);
+    page.show();
+    QVERIFY(page.selectSpecimen(QStringLiteral("fork-a-with-wheel")));
+    QVERIFY(page.selectTest(QStringLiteral("dynamic")));
+    QVERIFY(page.axisPlot()->isVisible());
+    QVERIFY(page.testForm()->setValues({{"dynamic.frequencies", std::string("1, 10, 15")}}).ok());
+    QVERIFY(page.rigForm()->setValues({{"sim.seed", std::int64_t{8}}, {"sim.realtime", false}}).ok());
+    const QString incTitle = QStringLiteral("inclination ± 1σ"), armTitle = QStringLiteral("a_tw ± 1σ");
+    // While it runs: after each committed step the plot has that many points.
+    QList<int> seen;
+    connect(&model_, &ProjectModel::rigTestsChanged, &page, [&] {
+      if (page.isRunning()) seen << static_cast<int>(curveTitled(page.axisPlot(), incTitle)->dataSize());
+    });
+    QSignalSpy finished(&page, &RigTestPage::finished);
+    QTest::mouseClick(page.runButton(), Qt::LeftButton);
+    QVERIFY(finished.wait(120000));
+    QVERIFY2(finished.first().first().toBool(), qPrintable(page.statusText()));
+    disconnect(&model_, &ProjectModel::rigTestsChanged, &page, nullptr);
+    QVERIFY2(!seen.isEmpty() && seen.first() >= 1 && seen.first() < 3,
+             qPrintable(QStringLiteral("points seen while running: %1").arg(seen.size())));
+
+    auto view = rt::readStiffnessTest(*model_.store(), *page.lastTestId());
+    QVERIFY2(view.ok(), view.ok() ? "" : view.error().describe().c_str());
+    QCOMPARE(view->steps.size(), size_t{3});
+    const auto spec = mozzi::devices::sim::staticSpecimen("fork-a-with-wheel").value();
+    auto checkPoints = [&](RigTestPage& p) {
+      auto* inc = curveTitled(p.axisPlot(), incTitle);
+      auto* arm = curveTitled(p.axisPlot(), armTitle);
+      QVERIFY(inc && arm);
+      QCOMPARE(inc->dataSize(), size_t{3});
+      QCOMPARE(arm->dataSize(), size_t{3});
+      for (size_t k = 0; k < 3; ++k) {
+        const auto& st = view->steps[k];
+        const auto& beta = st.results.at("axis_inclination");
+        const auto& atw = st.results.at("a_tw");
+        QCOMPARE(inc->sample(k).x(), st.frequencyHz);
+        QCOMPARE(inc->sample(k).y(), beta.value * 180.0 / M_PI);
+        QCOMPARE(arm->sample(k).y(), atw.value * 1e3);
+        QVERIFY(beta.uncertainty > 0.0);
+      }
+    };
+    checkPoints(page);
+    // The bars: value ± sigma of the stored inclination.
+    QwtPlotIntervalCurve* bars = nullptr;
+    for (auto* item : page.axisPlot()->itemList(QwtPlotItem::Rtti_PlotIntervalCurve))
+      if (item->yAxis() == QwtPlot::yLeft) bars = static_cast<QwtPlotIntervalCurve*>(item);
+    QVERIFY(bars);
+    QCOMPARE(bars->dataSize(), size_t{3});
+    for (size_t k = 0; k < 3; ++k) {
+      const auto& beta = view->steps[k].results.at("axis_inclination");
+      QVERIFY(std::abs(bars->sample(k).interval.width() - 2 * beta.uncertainty * 180.0 / M_PI) < 1e-9);
+    }
+    // Against the plate model: the in-phase plane of the receptances' real parts.
+    for (const auto& st : view->steps) {
+      std::vector<double> w;
+      for (const auto& p : spec.laserPoints) w.push_back(std::real(spec.receptance(p, st.frequencyHz)));
+      auto expected = mozzi::core::stiffness::staticTwistAxis(spec.laserPoints, w, spec.loadPoint);
+      QVERIFY(expected.ok());
+      const double got = st.results.at("axis_inclination").value * 180.0 / M_PI;
+      const double want = expected->axis.beta * 180.0 / M_PI;
+      qInfo("%.0f Hz: inclination %.2f deg (plate model %.2f)", st.frequencyHz, got, want);
+      QVERIFY2(std::abs(got - want) < 0.5, qPrintable(QString::number(got - want)));
+    }
+    // The last frequency's sine-fit loop: closed, its force spans +-|F| fitted.
+    auto* loop = curveTitled(page.resultPlot(), QStringLiteral("sine fit, last frequency"));
+    QVERIFY(loop && loop->dataSize() > 100);
+    const double fAmp = view->steps.back().results.at("force_amplitude").value;
+    QVERIFY(std::abs(loop->boundingRect().bottom() / fAmp - 1.0) < 1e-3);
+    QVERIFY(std::abs(loop->boundingRect().top() / fAmp + 1.0) < 1e-3);
+    saveShot(page, QStringLiteral("stiffness_rig_sine_axis"));
+
+    // Reopened from the project: the same points.
+    PageContext ctx = context();
+    ctx.item = {RecordKind::RigTest, *page.lastTestId(), view->specimenId};
+    RigTestPage reopened(RigTestPage::Rig::Stiffness, ctx);
+    reopened.resize(1280, 800);
+    reopened.show();
+    checkPoints(reopened);
+    QVERIFY(reopened.axisPlot()->isVisible());
   }
 
   void setPointsBeyondTheLimitsAreRefusedBeforeAnythingMoves() {
