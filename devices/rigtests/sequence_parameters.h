@@ -25,6 +25,25 @@ core::Result<StaticTestSettings> staticSettingsFrom(const ParameterMap& values);
 std::vector<ParameterSpec> dynamicTestParameters(double amplitudeN = 300.0);
 core::Result<DynamicTestSettings> dynamicSettingsFrom(const ParameterMap& values);
 
+// The stiffness rig's set-up as a form (thesis §1.2, Fig. 3): the plate's
+// size, the plate coordinates (u, v) of the four lasers, of the load point and
+// of the constrained end, in mm as the technician measures them on the rig.
+// Defaults from `base` (the simulated rig's layout for the specimen) and
+// `constrainedEnd` (where the specimen is locked, e.g. from its silhouette).
+// Keys: setup.plate_width, setup.plate_height, setup.laser<n>_u,
+// setup.laser<n>_v (n = 1..lasers), setup.load_u, setup.load_v,
+// setup.constrained_u, setup.constrained_v.
+std::vector<ParameterSpec> stiffnessSetupParameters(const StiffnessRigSetup& base,
+                                                    const std::optional<core::Vector2>& constrainedEnd);
+// `base` with the form's geometry: laser and load points, the plate outline
+// (the width x height rectangle centred on the load point), the
+// constrained end; for the simulated rig (base.daqParameters names a
+// "specimen") the same points go to the device (lasers.points, load.point),
+// so it measures where the set-up says. The geometry is not checked here
+// (checkPlateGeometry in stiffness_tests.h, which the tests run before
+// anything moves): a form shows what was entered, then says what is wrong.
+core::Result<StiffnessRigSetup> stiffnessSetupFrom(const StiffnessRigSetup& base, const ParameterMap& values);
+
 // Tyre tester.
 std::vector<ParameterSpec> relaxationTestParameters();
 core::Result<RelaxationSettings> relaxationSettingsFrom(const ParameterMap& values);

@@ -77,6 +77,10 @@ core::Result<StiffnessTestView> readStiffnessTest(const core::io::ProjectStore& 
     if (!q) return core::makeError(core::ErrorCode::Corrupt, "a laser point is not [u, v]", where);
     v.laserPoints.push_back(*q);
   }
+  if (geometry.contains("plate_outline_m") && geometry["plate_outline_m"].is_array())
+    for (const auto& p : geometry["plate_outline_m"])
+      if (const auto q = vec2(p)) v.plateOutline.push_back(*q);
+  v.constrainedEnd = vec2(geometry.value("constrained_end_m", nlohmann::json()));
   v.bendAxis = axisOf(geometry, "bending_axis");
   v.torsAxis = axisOf(geometry, "torsion_axis");
   const auto params = nlohmann::json::parse(setup->parametersJson, nullptr, false);

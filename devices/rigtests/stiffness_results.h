@@ -42,6 +42,9 @@ struct StiffnessTestView {
   core::Vector2 loadPoint = core::Vector2::Zero();
   std::vector<core::Vector2> laserPoints;
   std::optional<core::stiffness::PlateAxis> bendAxis, torsAxis;
+  // The plate's outline and the constrained end when the set-up gave them.
+  std::vector<core::Vector2> plateOutline;
+  std::optional<core::Vector2> constrainedEnd;
   // Whole-test results by key ("k_lat", "a_tw", "k_tw", "axis_inclination", ...).
   std::map<std::string, StoredQuantity> results;
   // Static test: the twist axis (point, beta, betaSigma, offsetSigma).

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "core/signal/hit_synthesis.h"
+#include "core/tire/tire_csv.h"
 #include "devices/mcc_usb1608fsplus/usb1608fsplus_protocol.h"
 #include "devices/sim/sim_device.h"
 #include "devices/sim/specimen_models.h"
@@ -332,8 +333,29 @@ class StiffnessModel final : public SignalModel {
     sineHz_ = parameterReal(config.parameters, "sine.frequency", 10.0);
     sineAmp_ = actuatorSineAmplitude(parameterReal(config.parameters, "sine.amplitude_1hz", 1000.0), sineHz_);
     forceNoise_ = parameterReal(config.parameters, "noise.force_rms", 0.5);
+    // Where the set-up puts the lasers and the load point (plate
+    // coordinates [m]); empty: the specimen's own layout.
+    lasers_ = specimen_.laserPoints;
+    load_ = specimen_.loadPoint;
+    const std::string lasers = parameterText(config.parameters, "lasers.points", "");
+    if (!lasers.empty()) {
+      auto t = core::tire::parseNumberTuples(lasers, 2, "lasers.points");
+      if (!t) return t.error();
+      if (t->size() != specimen_.laserPoints.size())
+        return core::makeError(core::ErrorCode::InvalidArgument,
+                               "give " + std::to_string(specimen_.laserPoints.size()) + " points u:v, one per laser",
+                               "lasers.points");
+      for (std::size_t i = 0; i < t->size(); ++i) lasers_[i] = core::Vector2((*t)[i][0], (*t)[i][1]);
+    }
+    const std::string load = parameterText(config.parameters, "load.point", "");
+    if (!load.empty()) {
+      auto t = core::tire::parseNumberTuples(load, 2, "load.point");
+      if (!t) return t.error();
+      if (t->size() != 1) return core::makeError(core::ErrorCode::InvalidArgument, "give one point u:v", "load.point");
+      load_ = core::Vector2(t->front()[0], t->front()[1]);
+    }
     receptance_.clear();
-    for (const auto& p : specimen_.laserPoints) receptance_.push_back(specimen_.receptance(p, sineHz_));
+    for (const auto& p : lasers_) receptance_.push_back(specimen_.receptance(p, load_, sineHz_));
     rng_.seed(static_cast<std::uint64_t>(parameterInteger(config.parameters, "sim.seed", 1)) + 99u);
     return {};
   }
@@ -371,14 +393,14 @@ class StiffnessModel final : public SignalModel {
           // torsion oscillators, thesis §1.3, §1.7), scaled by the soft start.
           // Each laser quantises to its 4 um resolution and saturates at the
           // ends of its 20 mm range.
-          const auto& p = specimen_.laserPoints[static_cast<std::size_t>(in - 1)];
+          const auto& p = lasers_[static_cast<std::size_t>(in - 1)];
           double w = 0.0;
           if (sine_) {
             const std::complex<double> h = receptance_[static_cast<std::size_t>(in - 1)];
             w = sineAmp_ * envelope(t) * std::abs(h) *
                 std::sin(2.0 * 3.14159265358979323846 * sineHz_ * t + std::arg(h));
           } else {
-            w = specimen_.displacementAt(p, f);
+            w = specimen_.displacementAt(p, load_, f);
           }
           v = std::clamp(kLaserResolutionM * std::round(w / kLaserResolutionM), -kLaserRangeM / 2, kLaserRangeM / 2);
         }
@@ -389,6 +411,8 @@ class StiffnessModel final : public SignalModel {
 
  private:
   StaticSpecimen specimen_;
+  std::vector<core::Vector2> lasers_;  // plate points of lasers 1.. [m]
+  core::Vector2 load_ = core::Vector2::Zero();
   std::vector<std::complex<double>> receptance_;  // per laser at the sine frequency [m/N]
   double fs_ = 0.0, maxForce_ = 0.0, period_ = 20.0, sineHz_ = 10.0, sineAmp_ = 0.0, forceNoise_ = 0.0;
   bool sine_ = false;
@@ -448,6 +472,24 @@ Capabilities stiffnessCapabilities() {
                     {},
                     1000.0,
                     "falls logarithmically with frequency to 20% at 45 Hz"},
+      ParameterSpec{"lasers.points",
+                    "Laser positions",
+                    ParameterType::Text,
+                    "m",
+                    std::nullopt,
+                    std::nullopt,
+                    {},
+                    std::string(),
+                    "plate points u:v of lasers 1 to 4, separated by commas; empty = the specimen's plate layout"},
+      ParameterSpec{"load.point",
+                    "Load point",
+                    ParameterType::Text,
+                    "m",
+                    std::nullopt,
+                    std::nullopt,
+                    {},
+                    std::string(),
+                    "plate point u:v where the actuator loads; empty = the specimen's load point"},
       ParameterSpec{"noise.force_rms",
                     "Load-cell noise",
                     ParameterType::Real,
