@@ -184,6 +184,47 @@ core::Result<StiffnessRigSetup> stiffnessSetupFrom(const StiffnessRigSetup& base
   return s;
 }
 
+ParameterSpec actuatorParameter(const std::vector<std::string>& choices) {
+  return ParameterSpec{"setup.actuator",
+                       "Actuator set-point",
+                       ParameterType::Choice,
+                       "",
+                       std::nullopt,
+                       std::nullopt,
+                       choices,
+                       choices.empty() ? std::string(kActuatorRigDrive) : choices.front(),
+                       "sim-stiffness: the rig's own drive; sim-funcgen / usbtmc-funcgen: a function generator gives "
+                       "the actuator controller its set-point (§1.1)"};
+}
+
+core::Result<std::unique_ptr<Device>> actuatorFor(const std::string& choice, StiffnessRigSetup& setup) {
+  if (choice == kActuatorRigDrive) return std::unique_ptr<Device>();
+  if (choice == kActuatorSimGenerator) {
+    auto d = sim::makeFunctionGeneratorSimDriver();
+    auto dev = d->create(DeviceDescriptor{d->name(), "", 0, 0, "", "sim:0"});
+    if (!dev) return dev.error();
+    setup.daqParameters["actuator.source"] = std::string(kActuatorSimGenerator);
+    return std::move(dev).value();
+  }
+  if (choice == kActuatorUsbtmcGenerator) {
+    Driver* d = builtinDrivers().find(kActuatorUsbtmcGenerator);
+    if (!d)
+      return core::makeError(core::ErrorCode::NotFound, "the usbtmc-funcgen driver is not built in", "setup.actuator");
+    auto found = d->scan();
+    if (!found) return found.error();
+    if (found->empty())
+      return core::makeError(core::ErrorCode::NotFound,
+                             "no USBTMC function generator found (docs/hardware.md: permissions, cable)",
+                             "setup.actuator");
+    return d->create(found->front());
+  }
+  return core::makeError(core::ErrorCode::InvalidArgument,
+                         "'" + choice +
+                             "' is not an actuator set-point source (sim-stiffness, sim-funcgen, "
+                             "usbtmc-funcgen)",
+                         "setup.actuator");
+}
+
 std::vector<ParameterSpec> relaxationTestParameters() {
   const RelaxationSettings d;
   return {real("relaxation.speed", "Disk speed", "km/h", 0.5, kMachineMaxSpeedKmh, d.speedKmh,

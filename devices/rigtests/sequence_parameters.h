@@ -9,10 +9,12 @@
 // form of each value (the error names the key); the sequences' check*Settings
 // then check the values against the machine's limits.
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/common/result.h"
+#include "devices/common/driver.h"
 #include "devices/common/parameters.h"
 #include "devices/rigtests/stiffness_tests.h"
 #include "devices/rigtests/tyre_tests.h"
@@ -43,6 +45,22 @@ std::vector<ParameterSpec> stiffnessSetupParameters(const StiffnessRigSetup& bas
 // (checkPlateGeometry in stiffness_tests.h, which the tests run before
 // anything moves): a form shows what was entered, then says what is wrong.
 core::Result<StiffnessRigSetup> stiffnessSetupFrom(const StiffnessRigSetup& base, const ParameterMap& values);
+
+// Where the actuator's set-point comes from (thesis §1.1; docs/hardware.md):
+// "sim-stiffness", the simulated rig's own drive; "sim-funcgen", the
+// simulated function generator, which the simulated rig then follows;
+// "usbtmc-funcgen", the first USBTMC function generator found. A Choice
+// parameter "setup.actuator" of these (`choices`, the first the default).
+inline constexpr const char* kActuatorRigDrive = "sim-stiffness";
+inline constexpr const char* kActuatorSimGenerator = "sim-funcgen";
+inline constexpr const char* kActuatorUsbtmcGenerator = "usbtmc-funcgen";
+ParameterSpec actuatorParameter(const std::vector<std::string>& choices);
+// The actuator device for a choice: null for the rig's own drive; the
+// simulated generator with the set-up's simulated rig told to follow it
+// (daqParameters["actuator.source"]); the first device usbtmc-funcgen finds.
+// The sequence opens, configures, starts and closes it. Errors: an unknown
+// choice, no USBTMC generator found (naming "setup.actuator").
+core::Result<std::unique_ptr<Device>> actuatorFor(const std::string& choice, StiffnessRigSetup& setup);
 
 // Tyre tester.
 std::vector<ParameterSpec> relaxationTestParameters();

@@ -21,6 +21,7 @@
 #include <QScrollArea>
 #include <QShortcut>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -42,7 +43,9 @@
 #include "devices/sim/specimen_catalogue.h"
 #include "views/common/job_runner.h"
 #include "views/panels/parameter_form.h"
+#include "views/plots/interactive_plot.h"
 #include "views/plots/plot_export.h"
+#include "views/scene/plate_sketch.h"
 
 namespace mozzi {
 namespace views {
@@ -233,6 +236,7 @@ RigTestPage::RigTestPage(Rig rig, const PageContext& ctx)
   buildUi();
   fillSpecimens();
   fillTests();
+  rebuildSetupForm();
   rebuildTestForm();
   resetPlots();
   retranslate();
@@ -355,8 +359,59 @@ void RigTestPage::buildUi() {
   auto* rightLayout = new QVBoxLayout(right);
   rightLayout->setContentsMargins(0, 0, 0, 0);
   rightLayout->addWidget(readout_);
+  plotTabs_ = new QTabWidget;
+  plotTabs_->setObjectName(QStringLiteral("plotTabs"));
+  plotTabs_->setDocumentMode(true);
+  plotTabs_->addTab(plots, QString());
+  if (rig_ == Rig::Stiffness) {
+    // The set-up view: the plate, the lasers, the load point and the
+    // constrained end over the specimen's silhouette, as the form says.
+    // The form beside the picture, so the run controls on the left stay in view.
+    setupFormBox_ = new QGroupBox;
+    auto* setupLayout = new QVBoxLayout(setupFormBox_);
+    setupForm_ = new ParameterForm;
+    setupForm_->setObjectName(QStringLiteral("setupForm"));
+    setupLayout->addWidget(setupForm_);
+    setupLayout->addStretch(1);
+    auto* formScroll = new QScrollArea;
+    formScroll->setWidget(setupFormBox_);
+    formScroll->setWidgetResizable(true);
+    formScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    setupScroll_ = formScroll;
+    auto* view = new QWidget;
+    auto* viewRow = new QHBoxLayout(view);
+    viewRow->setContentsMargins(0, 0, 0, 0);
+    viewRow->addWidget(formScroll);
+    auto* viewLayout = new QVBoxLayout;
+    viewRow->addLayout(viewLayout, 1);
+    setupPlot_ = new InteractivePlot;
+    setupPlot_->setObjectName(QStringLiteral("setupPlot"));
+    setupPlot_->setCanvasBackground(Qt::white);
+    setupPlot_->setCursorOnClick(false);
+    setupPlot_->setMinimumSize(280, 220);
+    installPlotExportAction(setupPlot_);
+    setupExtent_ = new QwtPlotCurve;
+    setupExtent_->setStyle(QwtPlotCurve::NoCurve);
+    setupExtent_->setItemAttribute(QwtPlotItem::Legend, false);
+    setupExtent_->attach(setupPlot_);
+    sketch_ = std::make_unique<PlateSketch>(setupPlot_);
+    setupPlot_->setEqualAspect(true);
+    geometry_ = new QLabel;
+    geometry_->setObjectName(QStringLiteral("geometry"));
+    geometry_->setWordWrap(true);
+    geometry_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    setupNote_ = new QLabel;
+    setupNote_->setObjectName(QStringLiteral("setupNote"));
+    setupNote_->setWordWrap(true);
+    viewLayout->addWidget(setupPlot_, 1);
+    viewLayout->addWidget(geometry_);
+    viewLayout->addWidget(setupNote_);
+    plotTabs_->addTab(view, QString());
+  } else {
+    plotTabs_->tabBar()->hide();
+  }
   auto* vertical = new QSplitter(Qt::Vertical);
-  vertical->addWidget(plots);
+  vertical->addWidget(plotTabs_);
   vertical->addWidget(bottom);
   vertical->setStretchFactor(0, 3);
   vertical->setStretchFactor(1, 2);
@@ -378,7 +433,11 @@ void RigTestPage::buildUi() {
   stopKey->setContext(Qt::WidgetWithChildrenShortcut);
   connect(stopKey, &QShortcut::activated, this, &RigTestPage::stop);
   connect(rigForm_, &ParameterForm::valuesChanged, this, [this] { showSetup(); });
-  connect(specimen_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] { rebuildTestForm(); });
+  if (setupForm_) connect(setupForm_, &ParameterForm::valuesChanged, this, [this] { drawSetup(); });
+  connect(specimen_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
+    rebuildSetupForm();
+    rebuildTestForm();
+  });
   connect(test_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
     rebuildTestForm();
     if (!isRunning()) resetPlots();
@@ -393,6 +452,15 @@ void RigTestPage::retranslate() {
   testLabel_->setText(tr("Test"));
   rigBox_->setTitle(tr("Simulated rig"));
   testBoxGroup_->setTitle(tr("Test settings"));
+  if (setupFormBox_) setupFormBox_->setTitle(tr("Set-up: plate, lasers, load point (mm)"));
+  plotTabs_->setTabText(0, tr("Measurement"));
+  if (setupPlot_) {
+    plotTabs_->setTabText(1, tr("Set-up view"));
+    setupPlot_->setTitle(tr("Set-up over the specimen"));
+    setupPlot_->setAxisTitle(QwtPlot::xBottom, tr("u [m] (plate plane)"));
+    setupPlot_->setAxisTitle(QwtPlot::yLeft, tr("v [m]"));
+    drawSetup();
+  }
   resultsBox_->setTitle(tr("Result stored in the project"));
   run_->setText(tr("Run (F5)"));
   run_->setToolTip(tr("Check the settings against the machine's limits and run the test"));
@@ -478,6 +546,8 @@ void RigTestPage::showSetup() {
       setupInfo_->setText(qs(setup.error().describe()));
       return;
     }
+    if (setupForm_ && !setupForm_->specs().empty())
+      if (auto edited = rt::stiffnessSetupFrom(*setup, geometryValues())) setup = std::move(edited);
     QStringList points;
     for (const auto& p : setup->laserPoints) points << QStringLiteral("(%1, %2)").arg(mm(p.x()), mm(p.y()));
     setupInfo_->setText(
@@ -500,6 +570,111 @@ void RigTestPage::showSetup() {
                             .arg(rt::kMachineMaxCamberDeg)
                             .arg(rt::kMachineMaxSpeedKmh));
   }
+}
+
+void RigTestPage::rebuildSetupForm() {
+  if (!setupForm_) return;
+  const std::string key = specimenKey().toStdString();
+  auto base = rt::simulatedStiffnessSetup(key, 1, false);
+  if (!base) {
+    setupForm_->setSpecs({});
+    drawSetup();
+    return;
+  }
+  // The constrained end where the specimen's silhouette has it.
+  std::optional<core::Vector2> locked;
+  if (const auto& catalogue = silhouetteCatalogue())
+    if (auto placed = core::stiffness::placeSilhouette(*catalogue, key, base->loadPoint))
+      locked = placed->constrainedEnd;
+  {
+    const QSignalBlocker block(setupForm_);
+    // The geometry, then where the actuator's set-point comes from (the
+    // simulated rig's own drive or the simulated function generator).
+    auto specs = rt::stiffnessSetupParameters(*base, locked);
+    specs.push_back(rt::actuatorParameter({rt::kActuatorRigDrive, rt::kActuatorSimGenerator}));
+    setupForm_->setSpecs(specs);
+  }
+  // As wide as the form's widest row (labels and spin boxes), whatever the font.
+  setupFormBox_->layout()->activate();
+  const QFontMetrics fm(setupForm_->font());
+  const int rowWidth = fm.horizontalAdvance(QCoreApplication::translate("Parameters", "Constrained end u")) +
+                       fm.horizontalAdvance(QStringLiteral("-2000.00 mm")) + fm.height() * 6;
+  setupScroll_->setMinimumWidth(std::max(setupFormBox_->sizeHint().width(), rowWidth) + 24);
+  drawSetup();
+}
+
+devices::ParameterMap RigTestPage::geometryValues() const {
+  auto values = setupForm_->values();
+  values.erase("setup.actuator");
+  return values;
+}
+
+QwtPlot* RigTestPage::setupPlot() const {
+  return setupPlot_;
+}
+
+QString RigTestPage::geometryText() const {
+  return geometry_ ? geometry_->text() : QString();
+}
+
+void RigTestPage::drawSetup() {
+  if (!setupPlot_) return;
+  const std::string key = specimenKey().toStdString();
+  for (const auto& spec : setupForm_->specs())
+    if (QWidget* e = setupForm_->editor(spec.key)) e->setStyleSheet(QString());
+  auto base = rt::simulatedStiffnessSetup(key, 1, false);
+  std::optional<core::stiffness::PlacedSilhouette> placed;
+  QString note;
+  if (base) {
+    // The specimen stays where it is: its silhouette placed at the specimen's own load point.
+    if (const auto& catalogue = silhouetteCatalogue()) {
+      auto p = core::stiffness::placeSilhouette(*catalogue, key, base->loadPoint);
+      if (p)
+        placed = std::move(p).value();
+      else
+        note = tr("No outline drawn: %1").arg(qs(p.error().describe()));
+    } else {
+      note = tr("No outline drawn: %1").arg(qs(catalogue.error().describe()));
+    }
+  }
+  PlateSketchInput input;
+  input.silhouette = placed ? &*placed : nullptr;
+  QString problem;
+  if (base && !setupForm_->specs().empty()) {
+    auto setup = rt::stiffnessSetupFrom(*base, geometryValues());
+    if (setup) {
+      input.laserPoints = setup->laserPoints;
+      input.loadPoint = setup->loadPoint;
+      input.plateOutline = setup->plateOutline;
+      input.constrainedEnd = setup->constrainedEnd;
+      if (auto ok = rt::checkPlateGeometry(*setup); !ok) {
+        // Name the field in the form's words and mark it.
+        QString field = qs(ok.error().where);
+        for (const auto& spec : setupForm_->specs())
+          if (spec.key == ok.error().where) {
+            field = QCoreApplication::translate("Parameters", spec.label.c_str());
+            if (QWidget* e = setupForm_->editor(spec.key))
+              e->setStyleSheet(QStringLiteral("background-color: #ffd6d6;"));
+          }
+        problem = tr("Set-up not valid, field '%1': %2").arg(field, qs(ok.error().message));
+      }
+    } else {
+      problem = tr("Set-up not valid: %1").arg(qs(setup.error().describe()));
+    }
+  } else if (!base) {
+    problem = qs(base.error().describe());
+  }
+  sketch_->draw(input);
+  QVector<QPointF> extent;
+  for (const auto& p : sketch_->extent()) extent.append(QPointF(p.x(), p.y()));
+  setupExtent_->setSamples(extent);
+  setupPlot_->autoscale();
+  setupPlot_->replot();
+  geometry_->setText(problem);
+  geometry_->setStyleSheet(problem.isEmpty() ? QString() : QStringLiteral("color: #b00020; font-weight: bold;"));
+  setupNote_->setText(placed ? tr("Outline: %1, approximate (not to scale of a drawing).").arg(qs(placed->name))
+                             : note);
+  showSetup();
 }
 
 void RigTestPage::rebuildTestForm() {
@@ -537,6 +712,7 @@ void RigTestPage::setRunning(bool running) {
   test_->setEnabled(!running);
   rigForm_->setEnabled(!running);
   testForm_->setEnabled(!running);
+  if (setupForm_) setupForm_->setEnabled(!running);
 }
 
 void RigTestPage::resetPlots() {
@@ -697,6 +873,22 @@ void RigTestPage::start() {
   if (!tyre) {
     auto setup = rt::simulatedStiffnessSetup(key, seed, realtime);
     if (!setup) return refuse(setup.error());
+    std::shared_ptr<devices::Device> actuator;
+    if (!setupForm_->specs().empty()) {
+      setup = rt::stiffnessSetupFrom(*setup, geometryValues());
+      if (!setup) return refuse(setup.error());
+      auto device = rt::actuatorFor(
+          devices::parameterText(setupForm_->values(), "setup.actuator", rt::kActuatorRigDrive), *setup);
+      if (!device) return refuse(device.error());
+      actuator = std::shared_ptr<devices::Device>(std::move(device).value());
+      if (auto ok = rt::checkPlateGeometry(*setup); !ok) {
+        drawSetup();  // marks the field
+        plotTabs_->setCurrentIndex(1);
+        setStatus(tr("Not started: %1").arg(geometry_->text()), true);
+        if (log_) log_(tr("Rig test not started: %1").arg(geometry_->text()));
+        return;
+      }
+    }
     laserPoints_.clear();
     for (const auto& p : setup->laserPoints) laserPoints_.emplace_back(p.x(), p.y());
     loadPoint_ = {setup->loadPoint.x(), setup->loadPoint.y()};
@@ -704,9 +896,9 @@ void RigTestPage::start() {
       auto st = rt::staticSettingsFrom(testForm_->values());
       if (!st) return refuse(st.error());
       if (auto ok = rt::checkStaticSettings(*setup, *st); !ok) return refuse(ok.error());
-      run = [setup = *setup, st = *st](devices::Device& d, const rt::StoreTarget& t, const rt::Callbacks& cb,
-                                       const rt::CancelFlag* c) -> core::Result<rt::Outcome> {
-        auto o = rt::runStaticStiffnessTest(d, nullptr, setup, st, t, cb, c);
+      run = [setup = *setup, st = *st, actuator](devices::Device& d, const rt::StoreTarget& t, const rt::Callbacks& cb,
+                                                 const rt::CancelFlag* c) -> core::Result<rt::Outcome> {
+        auto o = rt::runStaticStiffnessTest(d, actuator.get(), setup, st, t, cb, c);
         if (!o) return o.error();
         return rt::Outcome(*o);
       };
@@ -714,9 +906,9 @@ void RigTestPage::start() {
       auto st = rt::dynamicSettingsFrom(testForm_->values());
       if (!st) return refuse(st.error());
       if (auto ok = rt::checkDynamicSettings(*setup, *st); !ok) return refuse(ok.error());
-      run = [setup = *setup, st = *st](devices::Device& d, const rt::StoreTarget& t, const rt::Callbacks& cb,
-                                       const rt::CancelFlag* c) -> core::Result<rt::Outcome> {
-        auto o = rt::runDynamicStiffnessTest(d, nullptr, setup, st, t, cb, c);
+      run = [setup = *setup, st = *st, actuator](devices::Device& d, const rt::StoreTarget& t, const rt::Callbacks& cb,
+                                                 const rt::CancelFlag* c) -> core::Result<rt::Outcome> {
+        auto o = rt::runDynamicStiffnessTest(d, actuator.get(), setup, st, t, cb, c);
         if (!o) return o.error();
         return rt::Outcome(*o);
       };
@@ -756,6 +948,7 @@ void RigTestPage::start() {
   firstRedrawMs_ = lastRedrawMs_ = -1;
   clock_.start();
   resetPlots();
+  plotTabs_->setCurrentIndex(0);
   results_->setRowCount(0);
   headline_->clear();
   progress_->setValue(0);

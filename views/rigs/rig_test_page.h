@@ -26,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "devices/common/parameters.h"
 #include "views/common/page_registry.h"
 
 class QComboBox;
@@ -33,6 +34,7 @@ class QLabel;
 class QPlainTextEdit;
 class QProgressBar;
 class QPushButton;
+class QTabWidget;
 class QTableWidget;
 class QTimer;
 class QwtPlot;
@@ -49,7 +51,9 @@ struct Quantity;
 
 namespace views {
 
+class InteractivePlot;
 class ParameterForm;
+class PlateSketch;
 struct RigHandOver;
 
 class RigTestPage : public QWidget {
@@ -67,6 +71,17 @@ class RigTestPage : public QWidget {
   QComboBox* testBox() const { return test_; }
   ParameterForm* rigForm() const { return rigForm_; }
   ParameterForm* testForm() const { return testForm_; }
+  // Stiffness rig: the set-up form (plate, lasers, load point, constrained
+  // end; devices/rigtests stiffnessSetupParameters), its picture over the
+  // specimen's silhouette (the drawing the Twist Axes page uses) and the
+  // result of the geometry check ("" when the set-up is fine). Null for the
+  // tyre tester.
+  ParameterForm* setupForm() const { return setupForm_; }
+  QwtPlot* setupPlot() const;
+  PlateSketch* setupSketch() const { return sketch_.get(); }
+  QString geometryText() const;
+  // The tabs over the plots: the measurement's plots, and the set-up view.
+  QTabWidget* plotTabs() const { return plotTabs_; }
   QPushButton* runButton() const { return run_; }
   QPushButton* stopButton() const { return stop_; }
   QTableWidget* resultsTable() const { return results_; }
@@ -119,6 +134,10 @@ class RigTestPage : public QWidget {
   void fillTests();
   void rebuildTestForm();
   void showSetup();
+  void rebuildSetupForm();
+  void drawSetup();
+  // The set-up form's geometry values (without the actuator choice).
+  devices::ParameterMap geometryValues() const;
   void drain();
   void onLive(const devices::rigtests::LiveReadout& r);
   void onStep(const devices::rigtests::StepReport& s);
@@ -149,6 +168,15 @@ class RigTestPage : public QWidget {
   QComboBox* test_ = nullptr;
   ParameterForm* rigForm_ = nullptr;
   ParameterForm* testForm_ = nullptr;
+  ParameterForm* setupForm_ = nullptr;
+  QGroupBox* setupFormBox_ = nullptr;
+  QWidget* setupScroll_ = nullptr;  // the form's scroll area, as wide as the form
+  QTabWidget* plotTabs_ = nullptr;
+  InteractivePlot* setupPlot_ = nullptr;
+  QwtPlotCurve* setupExtent_ = nullptr;  // draws nothing: the points the set-up view must hold
+  std::unique_ptr<PlateSketch> sketch_;
+  QLabel* geometry_ = nullptr;
+  QLabel* setupNote_ = nullptr;
   QPushButton* run_ = nullptr;
   QPushButton* stop_ = nullptr;
   QProgressBar* progress_ = nullptr;

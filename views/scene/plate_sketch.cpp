@@ -166,9 +166,8 @@ void PlateSketch::draw(const PlateSketchInput& in) {
     markerAlign_.push_back(Qt::AlignBottom);
   }
   if (in.loadPoint) {
-    const QString load = in.silhouette
-                             ? text("load point (%1)").arg(silhouettePointName(in.silhouette->loadPointName))
-                             : text("load point");
+    const QString load = in.silhouette ? text("load point (%1)").arg(silhouettePointName(in.silhouette->loadPointName))
+                                       : text("load point");
     pointMarker(*in.loadPoint, QwtSymbol::Ellipse, Qt::black, QBrush(Qt::black), 12, load,
                 Qt::AlignRight | Qt::AlignBottom);
     extent_.push_back(*in.loadPoint);
