@@ -784,7 +784,8 @@ void RigTestPage::resetPlots() {
     c->setItemAttribute(QwtPlotItem::Legend, on);
   }
   // A measured line under a stored fit is drawn wide and light, so both show where they agree.
-  xyLive_->setPen(QPen(fit && !steady ? QColor(120, 170, 220) : QColor(31, 119, 180), fit && !steady ? 5.0 : 1.5));
+  const bool under = (fit && !steady) || sine;  // a stored line or a sine-fit loop drawn over it
+  xyLive_->setPen(QPen(under ? QColor(120, 170, 220) : QColor(31, 119, 180), under ? 5.0 : 1.5));
   livePlot_->setAxisTitle(QwtPlot::xBottom, tr("Time [s]"));
   if (stiff) {
     timeWindowS_ = id == QLatin1String("dynamic") ? kSineTimeWindowS : 0.0;
