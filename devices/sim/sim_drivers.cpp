@@ -10,6 +10,7 @@
 
 #include "core/signal/hit_synthesis.h"
 #include "core/tire/tire_csv.h"
+#include "devices/funcgen/funcgen_driver.h"
 #include "devices/mcc_usb1608fsplus/usb1608fsplus_protocol.h"
 #include "devices/sim/sim_device.h"
 #include "devices/sim/specimen_models.h"
@@ -595,38 +596,7 @@ class FunctionGeneratorSim final : public Device {
                     OutputSpec{"CH1 voltage", "V", -kGeneratorMaxPeakV, kGeneratorMaxPeakV},
                     OutputSpec{"CH2 voltage", "V", -kGeneratorMaxPeakV, kGeneratorMaxPeakV}};
     caps.triggers = {TriggerKind::Immediate};
-    auto real = [](const char* key, const char* label, const char* unit, double lo, double hi, double value,
-                   const char* help) {
-      return ParameterSpec{key, label, ParameterType::Real, unit, lo, hi, {}, value, help};
-    };
-    caps.parameters = {
-        ParameterSpec{"mode",
-                      "Actuator mode",
-                      ParameterType::Choice,
-                      "",
-                      std::nullopt,
-                      std::nullopt,
-                      {"static-ramp", "sine"},
-                      std::string("static-ramp"),
-                      "slow triangular ramp or sine excitation (§1.1)"},
-        real("static.max_force", "Ramp peak force", "N", 1.0, 5000.0, 1000.0,
-             "the actuator applies up to 5000 N statically (§1.1)"),
-        real("static.period_s", "Ramp period", "s", 1.0, 3600.0, 20.0,
-             "one triangle -F -> +F -> -F; the generator's RAMP at 50% symmetry"),
-        real("sine.frequency", "Sine frequency", "Hz", 1.0, 45.0, 10.0, "dynamic excitation from 1 to 45 Hz (§1.1)"),
-        real("sine.amplitude", "Sine force amplitude", "N", 1.0, 5000.0, 1000.0,
-             "set-point amplitude; the actuator's achievable amplitude falls with frequency (§1.1)"),
-        real("actuator.newtons_per_volt", "Set-point scale", "N/V", 1.0, 1e5, 500.0,
-             "input scale of the actuator controller: 500 N/V maps +/-10 V onto +/-5000 N"),
-        ParameterSpec{"channel",
-                      "Generator channel",
-                      ParameterType::Integer,
-                      "",
-                      1.0,
-                      2.0,
-                      {},
-                      std::int64_t{1},
-                      "output wired to the actuator controller's set-point input"}};
+    caps.parameters = funcgen::setPointParameters(2);  // usbtmc-funcgen's, for a two-channel generator
     return caps;
   }
   core::Result<AcquisitionConfig> configure(const AcquisitionConfig& requested) override {
