@@ -99,13 +99,7 @@ core::Result<DynamicTestSettings> dynamicSettingsFrom(const ParameterMap& values
   return s;
 }
 
-namespace {
-
-std::string laserKey(std::size_t i, const char* axis) {
-  return "setup.laser" + std::to_string(i + 1) + "_" + axis;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 std::vector<ParameterSpec> stiffnessSetupParameters(const StiffnessRigSetup& base,
                                                     const std::optional<core::Vector2>& constrainedEnd) {
@@ -137,9 +131,9 @@ std::vector<ParameterSpec> stiffnessSetupParameters(const StiffnessRigSetup& bas
   static const char* const kLaserU[] = {"Laser 1 u", "Laser 2 u", "Laser 3 u", "Laser 4 u"};
   static const char* const kLaserV[] = {"Laser 1 v", "Laser 2 v", "Laser 3 v", "Laser 4 v"};
   for (std::size_t i = 0; i < base.laserPoints.size() && i < 4; ++i) {
-    out.push_back(coordinate(laserKey(i, "u"), kLaserU[i], base.laserPoints[i].x(),
+    out.push_back(coordinate(laserFieldKey(i, "u"), kLaserU[i], base.laserPoints[i].x(),
                              "where the laser's spot is on the plate, u = x (§1.2)"));
-    out.push_back(coordinate(laserKey(i, "v"), kLaserV[i], base.laserPoints[i].y(),
+    out.push_back(coordinate(laserFieldKey(i, "v"), kLaserV[i], base.laserPoints[i].y(),
                              "where the laser's spot is on the plate, v = z (§1.2)"));
   }
   out.push_back(coordinate("setup.load_u", "Load point u", base.loadPoint.x(),
@@ -162,7 +156,7 @@ core::Result<StiffnessRigSetup> stiffnessSetupFrom(const StiffnessRigSetup& base
     return core::Vector2(parameterReal(*v, u, 0.0) * 1e-3, parameterReal(*v, w, 0.0) * 1e-3);
   };
   for (std::size_t i = 0; i < s.laserPoints.size() && i < 4; ++i)
-    s.laserPoints[i] = point(laserKey(i, "u"), laserKey(i, "v"));
+    s.laserPoints[i] = point(laserFieldKey(i, "u"), laserFieldKey(i, "v"));
   s.loadPoint = point("setup.load_u", "setup.load_v");
   s.constrainedEnd = point("setup.constrained_u", "setup.constrained_v");
   const core::Vector2 c = s.loadPoint;

@@ -33,10 +33,6 @@ std::string number(double v) {
 
 constexpr double kMinSpacingM = 0.005;  // lasers closer than this, or this near one line, are refused
 
-std::string laserKey(std::size_t i, const char* axis) {
-  return "setup.laser" + std::to_string(i + 1) + "_" + axis;
-}
-
 std::string mm(double m) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.0f", m * 1e3);
@@ -273,6 +269,10 @@ std::string overloadedNames(const detail::SessionData& data) {
 
 }  // namespace
 
+std::string laserFieldKey(std::size_t index, const char* axis) {
+  return "setup.laser" + std::to_string(index + 1) + "_" + axis;
+}
+
 core::Result<void> checkPlateGeometry(const StiffnessRigSetup& setup) {
   const auto& l = setup.laserPoints;
   auto at = [](const core::Vector2& p) { return "(" + mm(p.x()) + ", " + mm(p.y()) + ") mm"; };
@@ -281,7 +281,7 @@ core::Result<void> checkPlateGeometry(const StiffnessRigSetup& setup) {
       if ((l[i] - l[j]).norm() < kMinSpacingM)
         return geometryError("laser " + std::to_string(i + 1) + " at " + at(l[i]) + " is less than 5 mm from laser " +
                                  std::to_string(j + 1) + ": each laser needs its own spot",
-                             laserKey(i, "u"));
+                             laserFieldKey(i, "u"));
   if (l.size() >= 3) {
     // Distance of each laser from the line through the others (their
     // principal direction); all within 5 mm: the lasers lie on one line.
@@ -309,7 +309,7 @@ core::Result<void> checkPlateGeometry(const StiffnessRigSetup& setup) {
                                " mm off the line through the others): the twist axis needs the plate's "
                                "plane; move laser " +
                                std::to_string(worstLaser + 1) + " off the line",
-                           laserKey(worstLaser, "u"));
+                           laserFieldKey(worstLaser, "u"));
   }
   if (setup.plateOutline.size() >= 3) {
     core::Vector2 lo = setup.plateOutline.front(), hi = lo;
@@ -325,7 +325,7 @@ core::Result<void> checkPlateGeometry(const StiffnessRigSetup& setup) {
       if (!on(l[i]))
         return geometryError("laser " + std::to_string(i + 1) + " at " + at(l[i]) + " is off the " +
                                  mm(hi.x() - lo.x()) + " x " + mm(hi.y() - lo.y()) + " mm plate",
-                             laserKey(i, "u"));
+                             laserFieldKey(i, "u"));
     if (setup.constrainedEnd && on(*setup.constrainedEnd))
       return geometryError("the constrained end at " + at(*setup.constrainedEnd) +
                                " is on the plate: the plate is at the loaded end, the other end is locked",

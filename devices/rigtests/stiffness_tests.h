@@ -108,6 +108,9 @@ struct DynamicOutcome : Outcome {
 // load point. The error's `where` is the key of the
 // field to correct (setup.laser3_u, setup.constrained_u, ...).
 core::Result<void> checkPlateGeometry(const StiffnessRigSetup& setup);
+// The set-up form's key of laser `index`'s (0-based) coordinate `axis` ("u"
+// or "v"): "setup.laser1_u"; the geometry check names its fields so.
+std::string laserFieldKey(std::size_t index, const char* axis);
 
 // Checks the settings against the actuator and the set-up (peak force within
 // 5000 N and the load cell's range, frequencies within 1..45 Hz and below a

@@ -30,7 +30,7 @@ QString qs(const std::string& s) {
 }
 
 // The labels were first written for the Twist Axes page; they keep its
-// translation context.
+// translation context (QT_TRANSLATE_NOOP at each call, so lupdate finds them).
 QString text(const char* source) {
   return QCoreApplication::translate("TwistAxesPage", source);
 }
@@ -134,7 +134,8 @@ void PlateSketch::draw(const PlateSketchInput& in) {
     if (in.silhouette->centreOfGravity) {
       extent_.push_back(*in.silhouette->centreOfGravity);
       pointMarker(*in.silhouette->centreOfGravity, QwtSymbol::Ellipse, QColor(0, 150, 0), QBrush(Qt::NoBrush), 13,
-                  text("centre of gravity (estimated)"), Qt::AlignRight | Qt::AlignBottom);
+                  text(QT_TRANSLATE_NOOP("TwistAxesPage", "centre of gravity (estimated)")),
+                  Qt::AlignRight | Qt::AlignBottom);
     }
   }
   const std::optional<core::Vector2> locked =
@@ -144,7 +145,7 @@ void PlateSketch::draw(const PlateSketchInput& in) {
     const QString name = in.silhouette ? silhouettePointName(in.silhouette->constrainedEndName)
                                        : QCoreApplication::translate("PlateSketch", "specimen's end");
     pointMarker(*locked, QwtSymbol::Rect, QColor(60, 60, 60), QBrush(QColor(60, 60, 60), Qt::BDiagPattern), 14,
-                text("%1 (constrained)").arg(name), Qt::AlignLeft | Qt::AlignTop);
+                text(QT_TRANSLATE_NOOP("TwistAxesPage", "%1 (constrained)")).arg(name), Qt::AlignLeft | Qt::AlignTop);
     extent_.push_back(*locked);
   }
   if (!in.plateOutline.empty()) {
@@ -155,7 +156,7 @@ void PlateSketch::draw(const PlateSketchInput& in) {
   for (std::size_t i = 0; i < in.laserPoints.size(); ++i) {
     auto* m = new QwtPlotMarker;
     m->setValue(in.laserPoints[i](0), in.laserPoints[i](1));
-    QwtText t(text("L%1").arg(i + 1));
+    QwtText t(text(QT_TRANSLATE_NOOP("TwistAxesPage", "L%1")).arg(i + 1));
     t.setColor(QColor(200, 0, 0));
     m->setLabel(t);
     m->setLabelAlignment(Qt::AlignRight | Qt::AlignBottom);
@@ -166,8 +167,9 @@ void PlateSketch::draw(const PlateSketchInput& in) {
     markerAlign_.push_back(Qt::AlignBottom);
   }
   if (in.loadPoint) {
-    const QString load = in.silhouette ? text("load point (%1)").arg(silhouettePointName(in.silhouette->loadPointName))
-                                       : text("load point");
+    const QString load = in.silhouette ? text(QT_TRANSLATE_NOOP("TwistAxesPage", "load point (%1)"))
+                                             .arg(silhouettePointName(in.silhouette->loadPointName))
+                                       : text(QT_TRANSLATE_NOOP("TwistAxesPage", "load point"));
     pointMarker(*in.loadPoint, QwtSymbol::Ellipse, Qt::black, QBrush(Qt::black), 12, load,
                 Qt::AlignRight | Qt::AlignBottom);
     extent_.push_back(*in.loadPoint);
