@@ -14,6 +14,7 @@ DriverRegistry& builtinDrivers() {
     (void)r.add(sim::makeHammerStationDriver());
     (void)r.add(sim::makeStiffnessRigDriver());
     (void)r.add(sim::makeTyreTesterDriver());
+    (void)r.add(sim::makeFunctionGeneratorSimDriver());
     (void)r.add(sim::makeReplayDriver());
     (void)r.add(funcgen::makeFunctionGeneratorDriver());
     return r;

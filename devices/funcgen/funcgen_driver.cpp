@@ -9,19 +9,8 @@
 
 namespace mozzi::devices::funcgen {
 
-namespace {
-
-constexpr const char* kDriverName = "usbtmc-funcgen";
-constexpr unsigned kProbeTimeoutMs = 1000;  // a generator answers SOUR1:FUNC? in milliseconds
-
-Capabilities deviceCapabilities(const GeneratorCapabilities& g) {
-  Capabilities caps;
-  caps.model = g.model;
-  caps.outputs = {OutputSpec{"actuator force set-point", "N", -5000.0, 5000.0}};
-  for (int c = 1; c <= g.channels; ++c)
-    caps.outputs.push_back(OutputSpec{"CH" + std::to_string(c) + " voltage", "V", -g.maxPeakV, g.maxPeakV});
-  caps.triggers = {TriggerKind::Immediate};
-  caps.parameters = {
+std::vector<ParameterSpec> setPointParameters(int channels) {
+  return {
       ParameterSpec{"mode",
                     "Actuator mode",
                     ParameterType::Choice,
@@ -81,11 +70,26 @@ Capabilities deviceCapabilities(const GeneratorCapabilities& g) {
                     ParameterType::Integer,
                     "",
                     1.0,
-                    static_cast<double>(g.channels),
+                    static_cast<double>(channels),
                     {},
                     std::int64_t{1},
                     "output wired to the actuator controller's set-point input"},
   };
+}
+
+namespace {
+
+constexpr const char* kDriverName = "usbtmc-funcgen";
+constexpr unsigned kProbeTimeoutMs = 1000;  // a generator answers SOUR1:FUNC? in milliseconds
+
+Capabilities deviceCapabilities(const GeneratorCapabilities& g) {
+  Capabilities caps;
+  caps.model = g.model;
+  caps.outputs = {OutputSpec{"actuator force set-point", "N", -5000.0, 5000.0}};
+  for (int c = 1; c <= g.channels; ++c)
+    caps.outputs.push_back(OutputSpec{"CH" + std::to_string(c) + " voltage", "V", -g.maxPeakV, g.maxPeakV});
+  caps.triggers = {TriggerKind::Immediate};
+  caps.parameters = setPointParameters(g.channels);
   return caps;
 }
 

@@ -16,11 +16,16 @@
 // close, so the actuator only moves between start() and stop().
 
 #include <memory>
+#include <vector>
 
 #include "devices/common/driver.h"
 
 namespace mozzi::devices::funcgen {
 
 std::unique_ptr<Driver> makeFunctionGeneratorDriver();
+
+// The rig parameters above as the generator declares them, for `channels`
+// outputs; the simulated generator (devices/sim "sim-funcgen") declares the same.
+std::vector<ParameterSpec> setPointParameters(int channels);
 
 }  // namespace mozzi::devices::funcgen

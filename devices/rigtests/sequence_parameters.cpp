@@ -1,6 +1,8 @@
 #include "devices/rigtests/sequence_parameters.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 
 #include "core/tire/tire_csv.h"
@@ -95,6 +97,126 @@ core::Result<DynamicTestSettings> dynamicSettingsFrom(const ParameterMap& values
   s.settleCycles = parameterReal(*v, "dynamic.settle_cycles", s.settleCycles);
   s.recordCycles = parameterReal(*v, "dynamic.record_cycles", s.recordCycles);
   return s;
+}
+
+namespace {}  // namespace
+
+std::vector<ParameterSpec> stiffnessSetupParameters(const StiffnessRigSetup& base,
+                                                    const std::optional<core::Vector2>& constrainedEnd) {
+  // Plate size: the outline the set-up has, else the lasers' spread with a
+  // 10 mm margin on every side (the simulated rig's 200 x 150 mm layout,
+  // docs/devices.md, on a 220 x 170 mm plate).
+  double width = 200.0, height = 150.0;
+  const auto& around = base.plateOutline.size() >= 3 ? base.plateOutline : base.laserPoints;
+  if (!around.empty()) {
+    core::Vector2 lo = around.front(), hi = lo;
+    for (const auto& p : around) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    // centred on the load point: wide enough for the farthest spot
+    const double margin = base.plateOutline.size() >= 3 ? 0.0 : 0.010;
+    width = 2e3 * (std::max(std::abs(hi.x() - base.loadPoint.x()), std::abs(lo.x() - base.loadPoint.x())) + margin);
+    height = 2e3 * (std::max(std::abs(hi.y() - base.loadPoint.y()), std::abs(lo.y() - base.loadPoint.y())) + margin);
+  }
+  auto coordinate = [](std::string key, std::string label, double valueM, const char* help) {
+    return ParameterSpec{
+        std::move(key), std::move(label), ParameterType::Real, "mm", -2000.0, 2000.0, {}, valueM * 1e3, help};
+  };
+  std::vector<ParameterSpec> out{
+      real("setup.plate_width", "Plate width (u)", "mm", 20.0, 2000.0, width,
+           "the reference plate along u, centred on the load point where it is fixed to the specimen (§1.2)"),
+      real("setup.plate_height", "Plate height (v)", "mm", 20.0, 2000.0, height,
+           "the reference plate along v, centred on the load point where it is fixed to the specimen (§1.2)")};
+  static const char* const kLaserU[] = {"Laser 1 u", "Laser 2 u", "Laser 3 u", "Laser 4 u"};
+  static const char* const kLaserV[] = {"Laser 1 v", "Laser 2 v", "Laser 3 v", "Laser 4 v"};
+  for (std::size_t i = 0; i < base.laserPoints.size() && i < 4; ++i) {
+    out.push_back(coordinate(laserFieldKey(i, "u"), kLaserU[i], base.laserPoints[i].x(),
+                             "where the laser's spot is on the plate, u = x (§1.2)"));
+    out.push_back(coordinate(laserFieldKey(i, "v"), kLaserV[i], base.laserPoints[i].y(),
+                             "where the laser's spot is on the plate, v = z (§1.2)"));
+  }
+  out.push_back(coordinate("setup.load_u", "Load point u", base.loadPoint.x(),
+                           "where the actuator loads the specimen through the load cell (§1.1)"));
+  out.push_back(coordinate("setup.load_v", "Load point v", base.loadPoint.y(),
+                           "where the actuator loads the specimen through the load cell (§1.1)"));
+  const core::Vector2 locked = constrainedEnd.value_or(base.constrainedEnd.value_or(core::Vector2(0.0, 0.6)));
+  out.push_back(coordinate("setup.constrained_u", "Constrained end u", locked.x(),
+                           "where the specimen is locked to the rig's frame (§1.2)"));
+  out.push_back(coordinate("setup.constrained_v", "Constrained end v", locked.y(),
+                           "where the specimen is locked to the rig's frame (§1.2)"));
+  return out;
+}
+
+core::Result<StiffnessRigSetup> stiffnessSetupFrom(const StiffnessRigSetup& base, const ParameterMap& values) {
+  auto v = applied(stiffnessSetupParameters(base, std::nullopt), values);
+  if (!v) return v.error();
+  StiffnessRigSetup s = base;
+  auto point = [&](const std::string& u, const std::string& w) {
+    return core::Vector2(parameterReal(*v, u, 0.0) * 1e-3, parameterReal(*v, w, 0.0) * 1e-3);
+  };
+  for (std::size_t i = 0; i < s.laserPoints.size() && i < 4; ++i)
+    s.laserPoints[i] = point(laserFieldKey(i, "u"), laserFieldKey(i, "v"));
+  s.loadPoint = point("setup.load_u", "setup.load_v");
+  s.constrainedEnd = point("setup.constrained_u", "setup.constrained_v");
+  const core::Vector2 c = s.loadPoint;
+  const double hw = 0.5e-3 * parameterReal(*v, "setup.plate_width", 200.0);
+  const double hh = 0.5e-3 * parameterReal(*v, "setup.plate_height", 150.0);
+  s.plateOutline = {c + core::Vector2(-hw, -hh), c + core::Vector2(hw, -hh), c + core::Vector2(hw, hh),
+                    c + core::Vector2(-hw, hh)};
+  if (s.daqParameters.count("specimen")) {
+    std::string lasers;
+    char buf[64];
+    for (const auto& p : s.laserPoints) {
+      std::snprintf(buf, sizeof buf, "%.9g:%.9g", p.x(), p.y());
+      lasers += (lasers.empty() ? "" : ",") + std::string(buf);
+    }
+    s.daqParameters["lasers.points"] = lasers;
+    std::snprintf(buf, sizeof buf, "%.9g:%.9g", s.loadPoint.x(), s.loadPoint.y());
+    s.daqParameters["load.point"] = std::string(buf);
+  }
+  return s;
+}
+
+ParameterSpec actuatorParameter(const std::vector<std::string>& choices) {
+  return ParameterSpec{"setup.actuator",
+                       "Actuator set-point",
+                       ParameterType::Choice,
+                       "",
+                       std::nullopt,
+                       std::nullopt,
+                       choices,
+                       choices.empty() ? std::string(kActuatorRigDrive) : choices.front(),
+                       "sim-stiffness: the rig's own drive; sim-funcgen / usbtmc-funcgen: a function generator gives "
+                       "the actuator controller its set-point (§1.1)"};
+}
+
+core::Result<std::unique_ptr<Device>> actuatorFor(const std::string& choice, StiffnessRigSetup& setup) {
+  if (choice == kActuatorRigDrive) return std::unique_ptr<Device>();
+  if (choice == kActuatorSimGenerator) {
+    auto d = sim::makeFunctionGeneratorSimDriver();
+    auto dev = d->create(DeviceDescriptor{d->name(), "", 0, 0, "", "sim:0"});
+    if (!dev) return dev.error();
+    setup.daqParameters["actuator.source"] = std::string(kActuatorSimGenerator);
+    return std::move(dev).value();
+  }
+  if (choice == kActuatorUsbtmcGenerator) {
+    Driver* d = builtinDrivers().find(kActuatorUsbtmcGenerator);
+    if (!d)
+      return core::makeError(core::ErrorCode::NotFound, "the usbtmc-funcgen driver is not built in", "setup.actuator");
+    auto found = d->scan();
+    if (!found) return found.error();
+    if (found->empty())
+      return core::makeError(core::ErrorCode::NotFound,
+                             "no USBTMC function generator found (docs/hardware.md: permissions, cable)",
+                             "setup.actuator");
+    return d->create(found->front());
+  }
+  return core::makeError(core::ErrorCode::InvalidArgument,
+                         "'" + choice +
+                             "' is not an actuator set-point source (sim-stiffness, sim-funcgen, "
+                             "usbtmc-funcgen)",
+                         "setup.actuator");
 }
 
 std::vector<ParameterSpec> relaxationTestParameters() {

@@ -1,5 +1,6 @@
 #include "devices/rigtests/stiffness_results.h"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <nlohmann/json.hpp>
@@ -76,6 +77,10 @@ core::Result<StiffnessTestView> readStiffnessTest(const core::io::ProjectStore& 
     if (!q) return core::makeError(core::ErrorCode::Corrupt, "a laser point is not [u, v]", where);
     v.laserPoints.push_back(*q);
   }
+  if (geometry.contains("plate_outline_m") && geometry["plate_outline_m"].is_array())
+    for (const auto& p : geometry["plate_outline_m"])
+      if (const auto q = vec2(p)) v.plateOutline.push_back(*q);
+  v.constrainedEnd = vec2(geometry.value("constrained_end_m", nlohmann::json()));
   v.bendAxis = axisOf(geometry, "bending_axis");
   v.torsAxis = axisOf(geometry, "torsion_axis");
   const auto params = nlohmann::json::parse(setup->parametersJson, nullptr, false);
@@ -113,6 +118,50 @@ core::Result<StiffnessTestView> readStiffnessTest(const core::io::ProjectStore& 
     v.steps.push_back(std::move(s));
   }
   return v;
+}
+
+std::optional<core::ComplexVector> laserPhasorsOf(const std::vector<Quantity>& results, std::size_t lasers) {
+  core::ComplexVector y(static_cast<Eigen::Index>(lasers));
+  for (std::size_t i = 0; i < lasers; ++i) {
+    const std::string key = "laser_" + std::to_string(i + 1);
+    const Quantity* a = findQuantity(results, key + "_amplitude");
+    const Quantity* ph = findQuantity(results, key + "_phase");
+    if (!a || !ph) return std::nullopt;
+    y(static_cast<Eigen::Index>(i)) = std::polar(a->value, ph->value);
+  }
+  return y;
+}
+
+core::Result<std::vector<core::Vector2>> fittedSineLoop(const std::vector<core::Vector2>& laserPoints,
+                                                        const core::Vector2& loadPoint, double forceAmplitude,
+                                                        const core::ComplexVector& laserPhasors, int samples) {
+  constexpr const char* kWhere = "fitted sine loop";
+  if (static_cast<Eigen::Index>(laserPoints.size()) != laserPhasors.size())
+    return core::makeError(
+        core::ErrorCode::InvalidArgument,
+        std::to_string(laserPoints.size()) + " laser points but " + std::to_string(laserPhasors.size()) + " phasors",
+        kWhere);
+  if (!(forceAmplitude > 0.0))
+    return core::makeError(core::ErrorCode::InvalidArgument, "the force amplitude is not > 0", kWhere);
+  std::vector<double> re, im;
+  for (Eigen::Index i = 0; i < laserPhasors.size(); ++i) {
+    re.push_back(laserPhasors(i).real());
+    im.push_back(laserPhasors(i).imag());
+  }
+  auto pr = core::stiffness::fitPlane(laserPoints, re);
+  if (!pr) return pr.error();
+  auto pi = core::stiffness::fitPlane(laserPoints, im);
+  if (!pi) return pi.error();
+  const std::complex<double> x(pr->evaluate(loadPoint), pi->evaluate(loadPoint));
+  constexpr double kTwoPi = 6.283185307179586;
+  const int n = std::max(samples, 4);
+  std::vector<core::Vector2> loop;
+  loop.reserve(static_cast<std::size_t>(n) + 1);
+  for (int k = 0; k <= n; ++k) {
+    const double theta = kTwoPi * k / n;
+    loop.emplace_back((x * std::polar(1.0, theta)).real(), forceAmplitude * std::cos(theta));
+  }
+  return loop;
 }
 
 }  // namespace mozzi::devices::rigtests

@@ -18,6 +18,7 @@
 #include "core/io/project_store.h"
 #include "core/stiffness/plate_motion.h"
 #include "core/stiffness/twist_geometry.h"
+#include "devices/rigtests/rig_sequence.h"
 
 namespace mozzi::devices::rigtests {
 
@@ -41,6 +42,9 @@ struct StiffnessTestView {
   core::Vector2 loadPoint = core::Vector2::Zero();
   std::vector<core::Vector2> laserPoints;
   std::optional<core::stiffness::PlateAxis> bendAxis, torsAxis;
+  // The plate's outline and the constrained end when the set-up gave them.
+  std::vector<core::Vector2> plateOutline;
+  std::optional<core::Vector2> constrainedEnd;
   // Whole-test results by key ("k_lat", "a_tw", "k_tw", "axis_inclination", ...).
   std::map<std::string, StoredQuantity> results;
   // Static test: the twist axis (point, beta, betaSigma, offsetSigma).
@@ -65,5 +69,22 @@ struct StiffnessTestView {
 // Reads rig test `testId` (static or dynamic) and its set-up. Errors: no such
 // test, a set-up without the plate geometry the sequences write.
 core::Result<StiffnessTestView> readStiffnessTest(const core::io::ProjectStore& store, std::int64_t testId);
+
+// The laser phasors relative to the force [m] of one frequency's results
+// (laser_<n>_amplitude, laser_<n>_phase, n = 1..lasers, as the dynamic test
+// reports and stores them); nullopt when a laser's fit is missing.
+std::optional<core::ComplexVector> laserPhasorsOf(const std::vector<Quantity>& results, std::size_t lasers);
+
+// The force-displacement loop that one frequency's sine fits describe, to draw
+// over the measured loop (thesis §1.3): over one cycle theta in [0, 2 pi],
+// F = |F| cos(theta) and x = Re(X e^{i theta}) at the load point, with
+// X = w0 + gu u + i (...) the planes fitted to the real and to the imaginary
+// parts of the laser phasors (core/stiffness/plate_motion.h fitPlane)
+// evaluated at the load point. Points are (x [m], F [N]), `samples` + 1 of
+// them (closed). Errors: sizes differ, fewer than 3 lasers, a plane that
+// cannot be fitted (collinear lasers), a force amplitude not > 0.
+core::Result<std::vector<core::Vector2>> fittedSineLoop(const std::vector<core::Vector2>& laserPoints,
+                                                        const core::Vector2& loadPoint, double forceAmplitude,
+                                                        const core::ComplexVector& laserPhasors, int samples = 120);
 
 }  // namespace mozzi::devices::rigtests

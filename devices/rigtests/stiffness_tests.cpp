@@ -1,8 +1,10 @@
 #include "devices/rigtests/stiffness_tests.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <sstream>
 
@@ -29,6 +31,18 @@ std::string number(double v) {
   return s.str();
 }
 
+constexpr double kMinSpacingM = 0.005;  // lasers closer than this, or this near one line, are refused
+
+std::string mm(double m) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.0f", m * 1e3);
+  return buf;
+}
+
+core::Error geometryError(const std::string& what, const std::string& key) {
+  return core::makeError(core::ErrorCode::InvalidArgument, what, key);
+}
+
 core::Result<void> checkSetup(const StiffnessRigSetup& setup) {
   if (setup.lasers.size() < 3) return refuse("the set-up has " + number(setup.lasers.size()) + " lasers; at least 3");
   if (setup.laserPoints.size() != setup.lasers.size())
@@ -37,7 +51,7 @@ core::Result<void> checkSetup(const StiffnessRigSetup& setup) {
   if (!(setup.sampleRateHz > 0)) return refuse("sample rate " + number(setup.sampleRateHz) + " Hz: must be > 0");
   if (setup.bendAxis.has_value() != setup.torsAxis.has_value())
     return refuse("give both the bending and the torsion axis, or neither");
-  return {};
+  return checkPlateGeometry(setup);
 }
 
 std::string hz(double f) {
@@ -144,6 +158,11 @@ core::Result<Stored> storeStart(const StoreTarget& target, const StiffnessRigSet
   auto axisJson = [](const core::stiffness::PlateAxis& a) {
     return nlohmann::json{{"point_m", {a.point.x(), a.point.y()}}, {"direction", {a.direction.x(), a.direction.y()}}};
   };
+  if (!setup.plateOutline.empty()) {
+    geometry["plate_outline_m"] = nlohmann::json::array();
+    for (const auto& p : setup.plateOutline) geometry["plate_outline_m"].push_back({p.x(), p.y()});
+  }
+  if (setup.constrainedEnd) geometry["constrained_end_m"] = {setup.constrainedEnd->x(), setup.constrainedEnd->y()};
   if (setup.bendAxis) geometry["bending_axis"] = axisJson(*setup.bendAxis);
   if (setup.torsAxis) geometry["torsion_axis"] = axisJson(*setup.torsAxis);
   geometry["record_columns"] = nlohmann::json::array();
@@ -249,6 +268,74 @@ std::string overloadedNames(const detail::SessionData& data) {
 }
 
 }  // namespace
+
+std::string laserFieldKey(std::size_t index, const char* axis) {
+  return "setup.laser" + std::to_string(index + 1) + "_" + axis;
+}
+
+core::Result<void> checkPlateGeometry(const StiffnessRigSetup& setup) {
+  const auto& l = setup.laserPoints;
+  auto at = [](const core::Vector2& p) { return "(" + mm(p.x()) + ", " + mm(p.y()) + ") mm"; };
+  for (std::size_t i = 0; i < l.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if ((l[i] - l[j]).norm() < kMinSpacingM)
+        return geometryError("laser " + std::to_string(i + 1) + " at " + at(l[i]) + " is less than 5 mm from laser " +
+                                 std::to_string(j + 1) + ": each laser needs its own spot",
+                             laserFieldKey(i, "u"));
+  if (l.size() >= 3) {
+    // Distance of each laser from the line through the others (their
+    // principal direction); all within 5 mm: the lasers lie on one line.
+    double worst = 0.0;
+    std::size_t worstLaser = l.size() - 1;
+    for (std::size_t k = 0; k < l.size(); ++k) {
+      core::Vector2 c = core::Vector2::Zero();
+      for (std::size_t i = 0; i < l.size(); ++i)
+        if (i != k) c += l[i];
+      c /= static_cast<double>(l.size() - 1);
+      Eigen::Matrix2d s = Eigen::Matrix2d::Zero();
+      for (std::size_t i = 0; i < l.size(); ++i)
+        if (i != k) s += (l[i] - c) * (l[i] - c).transpose();
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(s);
+      const core::Vector2 along = eig.eigenvectors().col(1);
+      const core::Vector2 d = l[k] - c;
+      const double off = std::abs(d.x() * along.y() - d.y() * along.x());
+      if (off > worst) {
+        worst = off;
+        worstLaser = k;
+      }
+    }
+    if (worst < kMinSpacingM)
+      return geometryError("the lasers lie on one line (laser " + std::to_string(worstLaser + 1) + " is " + mm(worst) +
+                               " mm off the line through the others): the twist axis needs the plate's "
+                               "plane; move laser " +
+                               std::to_string(worstLaser + 1) + " off the line",
+                           laserFieldKey(worstLaser, "u"));
+  }
+  if (setup.plateOutline.size() >= 3) {
+    core::Vector2 lo = setup.plateOutline.front(), hi = lo;
+    for (const auto& p : setup.plateOutline) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    const double eps = 1e-9;
+    auto on = [&](const core::Vector2& p) {
+      return p.x() >= lo.x() - eps && p.x() <= hi.x() + eps && p.y() >= lo.y() - eps && p.y() <= hi.y() + eps;
+    };
+    for (std::size_t i = 0; i < l.size(); ++i)
+      if (!on(l[i]))
+        return geometryError("laser " + std::to_string(i + 1) + " at " + at(l[i]) + " is off the " +
+                                 mm(hi.x() - lo.x()) + " x " + mm(hi.y() - lo.y()) + " mm plate",
+                             laserFieldKey(i, "u"));
+    if (setup.constrainedEnd && on(*setup.constrainedEnd))
+      return geometryError("the constrained end at " + at(*setup.constrainedEnd) +
+                               " is on the plate: the plate is at the loaded end, the other end is locked",
+                           "setup.constrained_u");
+  }
+  if (setup.constrainedEnd && (*setup.constrainedEnd - setup.loadPoint).norm() < kMinSpacingM)
+    return geometryError("the constrained end is at the load point: the load acts at the free end",
+                         "setup.constrained_u");
+  return {};
+}
 
 core::Result<void> checkStaticSettings(const StiffnessRigSetup& setup, const StaticTestSettings& s) {
   if (auto r = checkSetup(setup); !r) return r;

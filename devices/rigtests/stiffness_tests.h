@@ -66,6 +66,11 @@ struct StiffnessRigSetup {
   // for the decomposition; both or neither.
   std::optional<core::stiffness::PlateAxis> bendAxis;
   std::optional<core::stiffness::PlateAxis> torsAxis;
+  // The reference plate's outline and the constrained (locked) end of the
+  // specimen, plate coordinates [m]; for the set-up's picture and check, and
+  // stored with the geometry. Empty / none when not given.
+  std::vector<core::Vector2> plateOutline;
+  std::optional<core::Vector2> constrainedEnd;
 };
 
 struct StaticTestSettings {
@@ -96,10 +101,22 @@ struct DynamicOutcome : Outcome {
   std::vector<DynamicStep> sweep;  // per frequency that ran
 };
 
+// The checks before a run: every laser at least 5 mm from the others and on
+// the plate, the lasers not on one line (the twist axis needs the plate's
+// plane: the laser farthest from the line through the others less than 5 mm
+// off it is refused), the constrained end off the plate and away from the
+// load point. The error's `where` is the key of the
+// field to correct (setup.laser3_u, setup.constrained_u, ...).
+core::Result<void> checkPlateGeometry(const StiffnessRigSetup& setup);
+// The set-up form's key of laser `index`'s (0-based) coordinate `axis` ("u"
+// or "v"): "setup.laser1_u"; the geometry check names its fields so.
+std::string laserFieldKey(std::size_t index, const char* axis);
+
 // Checks the settings against the actuator and the set-up (peak force within
 // 5000 N and the load cell's range, frequencies within 1..45 Hz and below a
 // twentieth of the sample rate, at least three lasers, as many points as
-// lasers). The error names the setting, its value and the limit.
+// lasers, the plate geometry of checkPlateGeometry). The error names the
+// setting, its value and the limit.
 core::Result<void> checkStaticSettings(const StiffnessRigSetup& setup, const StaticTestSettings& settings);
 core::Result<void> checkDynamicSettings(const StiffnessRigSetup& setup, const DynamicTestSettings& settings);
 

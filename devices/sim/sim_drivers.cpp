@@ -9,6 +9,8 @@
 #include <thread>
 
 #include "core/signal/hit_synthesis.h"
+#include "core/tire/tire_csv.h"
+#include "devices/funcgen/funcgen_driver.h"
 #include "devices/mcc_usb1608fsplus/usb1608fsplus_protocol.h"
 #include "devices/sim/sim_device.h"
 #include "devices/sim/specimen_models.h"
@@ -314,6 +316,23 @@ Capabilities hammerCapabilities() {
 
 // ---------------------------------------------------------------- stiffness rig
 
+// The set-point line from the simulated function generator to the simulated
+// rig (one simulated bench per process): what the generator was set to, and
+// whether its output is on.
+struct SimulatedSetPoint {
+  std::mutex mutex;
+  bool programmed = false;
+  bool sine = false;
+  double frequencyHz = 0.0, amplitudeN = 0.0, maxForceN = 0.0, periodS = 20.0;
+  std::atomic<bool> on{false};
+  FunctionGeneratorSimCounters counters;
+};
+
+SimulatedSetPoint& setPointLine() {
+  static SimulatedSetPoint line;
+  return line;
+}
+
 constexpr double kLoadCellFullScaleN = 200.0 * 9.80665;  // +/-200 kg (§1.1)
 constexpr double kLaserRangeM = 0.020;                   // 20 mm (§1.1)
 constexpr double kLaserResolutionM = 4e-6;               // 4 um (§1.1)
@@ -331,9 +350,45 @@ class StiffnessModel final : public SignalModel {
     period_ = parameterReal(config.parameters, "static.period_s", 20.0);
     sineHz_ = parameterReal(config.parameters, "sine.frequency", 10.0);
     sineAmp_ = actuatorSineAmplitude(parameterReal(config.parameters, "sine.amplitude_1hz", 1000.0), sineHz_);
+    fromGenerator_ = parameterText(config.parameters, "actuator.source", "internal") == "sim-funcgen";
+    if (fromGenerator_) {
+      // The actuator follows the simulated function generator's set-point.
+      auto& line = setPointLine();
+      std::lock_guard<std::mutex> lock(line.mutex);
+      if (!line.programmed)
+        return core::makeError(core::ErrorCode::InvalidArgument,
+                               "the simulated function generator has not been set: configure it first",
+                               "actuator.source");
+      sine_ = line.sine;
+      sineHz_ = line.frequencyHz;
+      sineAmp_ = actuatorSineAmplitude(line.amplitudeN, sineHz_);
+      maxForce_ = line.maxForceN;
+      period_ = line.periodS;
+    }
     forceNoise_ = parameterReal(config.parameters, "noise.force_rms", 0.5);
+    // Where the set-up puts the lasers and the load point (plate
+    // coordinates [m]); empty: the specimen's own layout.
+    lasers_ = specimen_.laserPoints;
+    load_ = specimen_.loadPoint;
+    const std::string lasers = parameterText(config.parameters, "lasers.points", "");
+    if (!lasers.empty()) {
+      auto t = core::tire::parseNumberTuples(lasers, 2, "lasers.points");
+      if (!t) return t.error();
+      if (t->size() != specimen_.laserPoints.size())
+        return core::makeError(core::ErrorCode::InvalidArgument,
+                               "give " + std::to_string(specimen_.laserPoints.size()) + " points u:v, one per laser",
+                               "lasers.points");
+      for (std::size_t i = 0; i < t->size(); ++i) lasers_[i] = core::Vector2((*t)[i][0], (*t)[i][1]);
+    }
+    const std::string load = parameterText(config.parameters, "load.point", "");
+    if (!load.empty()) {
+      auto t = core::tire::parseNumberTuples(load, 2, "load.point");
+      if (!t) return t.error();
+      if (t->size() != 1) return core::makeError(core::ErrorCode::InvalidArgument, "give one point u:v", "load.point");
+      load_ = core::Vector2(t->front()[0], t->front()[1]);
+    }
     receptance_.clear();
-    for (const auto& p : specimen_.laserPoints) receptance_.push_back(specimen_.receptance(p, sineHz_));
+    for (const auto& p : lasers_) receptance_.push_back(specimen_.receptance(p, load_, sineHz_));
     rng_.seed(static_cast<std::uint64_t>(parameterInteger(config.parameters, "sim.seed", 1)) + 99u);
     return {};
   }
@@ -347,7 +402,12 @@ class StiffnessModel final : public SignalModel {
   // Actuator force at time t: triangle 0 -> +F -> -F -> 0 over one period, or
   // the sine of the set frequency and its amplitude.
   double force(double t) const {
+    if (fromGenerator_ && !setPointLine().on.load()) return 0.0;  // the generator's output is off
     if (sine_) return sineAmp_ * envelope(t) * std::sin(2.0 * 3.14159265358979323846 * sineHz_ * t);
+    if (fromGenerator_) {  // the generator's RAMP at 50% symmetry: -F -> +F -> -F
+      const double x = std::fmod(t / period_, 1.0);
+      return x < 0.5 ? maxForce_ * (4.0 * x - 1.0) : maxForce_ * (3.0 - 4.0 * x);
+    }
     const double x = std::fmod(t / period_, 1.0);
     if (x < 0.25) return maxForce_ * 4.0 * x;
     if (x < 0.75) return maxForce_ * (2.0 - 4.0 * x);
@@ -371,14 +431,14 @@ class StiffnessModel final : public SignalModel {
           // torsion oscillators, thesis §1.3, §1.7), scaled by the soft start.
           // Each laser quantises to its 4 um resolution and saturates at the
           // ends of its 20 mm range.
-          const auto& p = specimen_.laserPoints[static_cast<std::size_t>(in - 1)];
+          const auto& p = lasers_[static_cast<std::size_t>(in - 1)];
           double w = 0.0;
           if (sine_) {
             const std::complex<double> h = receptance_[static_cast<std::size_t>(in - 1)];
             w = sineAmp_ * envelope(t) * std::abs(h) *
                 std::sin(2.0 * 3.14159265358979323846 * sineHz_ * t + std::arg(h));
           } else {
-            w = specimen_.displacementAt(p, f);
+            w = specimen_.displacementAt(p, load_, f);
           }
           v = std::clamp(kLaserResolutionM * std::round(w / kLaserResolutionM), -kLaserRangeM / 2, kLaserRangeM / 2);
         }
@@ -389,9 +449,12 @@ class StiffnessModel final : public SignalModel {
 
  private:
   StaticSpecimen specimen_;
+  std::vector<core::Vector2> lasers_;  // plate points of lasers 1.. [m]
+  core::Vector2 load_ = core::Vector2::Zero();
   std::vector<std::complex<double>> receptance_;  // per laser at the sine frequency [m/N]
   double fs_ = 0.0, maxForce_ = 0.0, period_ = 20.0, sineHz_ = 10.0, sineAmp_ = 0.0, forceNoise_ = 0.0;
   bool sine_ = false;
+  bool fromGenerator_ = false;
   std::mt19937_64 rng_;
 };
 
@@ -448,6 +511,34 @@ Capabilities stiffnessCapabilities() {
                     {},
                     1000.0,
                     "falls logarithmically with frequency to 20% at 45 Hz"},
+      ParameterSpec{"actuator.source",
+                    "Actuator set-point from",
+                    ParameterType::Choice,
+                    "",
+                    std::nullopt,
+                    std::nullopt,
+                    {"internal", "sim-funcgen"},
+                    std::string("internal"),
+                    "internal: the rig's own drive (mode, static.*, sine.*); sim-funcgen: the simulated function "
+                    "generator (§1.1)"},
+      ParameterSpec{"lasers.points",
+                    "Laser positions",
+                    ParameterType::Text,
+                    "m",
+                    std::nullopt,
+                    std::nullopt,
+                    {},
+                    std::string(),
+                    "plate points u:v of lasers 1 to 4, separated by commas; empty = the specimen's plate layout"},
+      ParameterSpec{"load.point",
+                    "Load point",
+                    ParameterType::Text,
+                    "m",
+                    std::nullopt,
+                    std::nullopt,
+                    {},
+                    std::string(),
+                    "plate point u:v where the actuator loads; empty = the specimen's load point"},
       ParameterSpec{"noise.force_rms",
                     "Load-cell noise",
                     ParameterType::Real,
@@ -476,6 +567,138 @@ std::unique_ptr<Driver> makeStiffnessRigDriver() {
       "sim-stiffness", "Simulated Motostiffmeter: actuator, load cell, four lasers (thesis §1.1)",
       "Simulated Motostiffmeter", &stiffnessCapabilities,
       +[]() -> std::unique_ptr<SignalModel> { return std::make_unique<StiffnessModel>(); });
+}
+
+namespace {
+
+// 33522B into high impedance (docs/hardware.md): 2 mVpp..20 Vpp, 10 V peak.
+constexpr double kGeneratorMinVpp = 0.002, kGeneratorMaxVpp = 20.0, kGeneratorMaxPeakV = 10.0;
+
+class FunctionGeneratorSim final : public Device {
+ public:
+  explicit FunctionGeneratorSim(DeviceDescriptor d) : d_(std::move(d)) {}
+  ~FunctionGeneratorSim() override { close(); }
+  const DeviceDescriptor& descriptor() const override { return d_; }
+  core::Result<void> open() override {
+    setPointLine().on.store(false);  // the output is off on open, as the real driver's
+    state_ = DeviceState::Open;
+    return {};
+  }
+  void close() override {
+    if (state_ == DeviceState::Running) stop();
+    if (state_ != DeviceState::Closed) setPointLine().on.store(false);
+    state_ = DeviceState::Closed;
+  }
+  Capabilities capabilities() const override {
+    Capabilities caps;
+    caps.model = "Simulated function generator (33522B-like)";
+    caps.outputs = {OutputSpec{"actuator force set-point", "N", -5000.0, 5000.0},
+                    OutputSpec{"CH1 voltage", "V", -kGeneratorMaxPeakV, kGeneratorMaxPeakV},
+                    OutputSpec{"CH2 voltage", "V", -kGeneratorMaxPeakV, kGeneratorMaxPeakV}};
+    caps.triggers = {TriggerKind::Immediate};
+    caps.parameters = funcgen::setPointParameters(2);  // usbtmc-funcgen's, for a two-channel generator
+    return caps;
+  }
+  core::Result<AcquisitionConfig> configure(const AcquisitionConfig& requested) override {
+    if (state_ == DeviceState::Closed)
+      return core::makeError(core::ErrorCode::InvalidArgument, "the device is not open", d_.label());
+    if (state_ == DeviceState::Running)
+      return core::makeError(core::ErrorCode::InvalidArgument, "stop the output before configuring", d_.label());
+    if (!requested.channels.empty())
+      return core::makeError(core::ErrorCode::InvalidArgument, "a function generator has no inputs", d_.label());
+    auto applied = applyParameters(capabilities().parameters, requested.parameters);
+    if (!applied) return applied.error();
+    const bool sine = parameterText(*applied, "mode", "static-ramp") == "sine";
+    const double k = parameterReal(*applied, "actuator.newtons_per_volt", 500.0);
+    const double forceN =
+        sine ? parameterReal(*applied, "sine.amplitude", 1000.0) : parameterReal(*applied, "static.max_force", 1000.0);
+    const double vpp = 2.0 * forceN / k;
+    const char* key = sine ? "sine.amplitude" : "static.max_force";
+    // Refused before anything is set, naming the parameter and the limit.
+    if (vpp > kGeneratorMaxVpp || vpp / 2.0 > kGeneratorMaxPeakV)
+      return core::makeError(core::ErrorCode::InvalidArgument,
+                             std::to_string(forceN) + " N at " + std::to_string(k) + " N/V is " + std::to_string(vpp) +
+                                 " Vpp: the generator gives at most 20 Vpp (10 V peak) into high impedance",
+                             key);
+    if (vpp < kGeneratorMinVpp)
+      return core::makeError(core::ErrorCode::InvalidArgument,
+                             std::to_string(vpp) + " Vpp is below the generator's 2 mVpp", key);
+    auto& line = setPointLine();
+    {
+      std::lock_guard<std::mutex> lock(line.mutex);
+      line.programmed = true;
+      line.sine = sine;
+      line.frequencyHz = parameterReal(*applied, "sine.frequency", 10.0);
+      line.amplitudeN = parameterReal(*applied, "sine.amplitude", 1000.0);
+      line.maxForceN = parameterReal(*applied, "static.max_force", 1000.0);
+      line.periodS = parameterReal(*applied, "static.period_s", 20.0);
+      ++line.counters.configured;
+      line.counters.lastMode = sine ? "sine" : "static-ramp";
+      line.counters.lastFrequencyHz = sine ? line.frequencyHz : 1.0 / line.periodS;
+      line.counters.lastAmplitudeN = forceN;
+      line.counters.lastAmplitudeVpp = vpp;
+    }
+    AcquisitionConfig out = requested;
+    out.parameters = *applied;
+    state_ = DeviceState::Configured;
+    return out;
+  }
+  core::Result<void> start(StreamSink sink) override {
+    if (state_ != DeviceState::Configured)
+      return core::makeError(core::ErrorCode::InvalidArgument, "configure the generator first", d_.label());
+    sink_ = std::move(sink);
+    auto& line = setPointLine();
+    {
+      std::lock_guard<std::mutex> lock(line.mutex);
+      ++line.counters.started;
+    }
+    line.on.store(true);
+    state_ = DeviceState::Running;
+    sink_(StreamEvent(StreamHeader{}));
+    return {};
+  }
+  void stop() override {
+    if (state_ != DeviceState::Running) return;
+    setPointLine().on.store(false);
+    state_ = DeviceState::Configured;
+    sink_(StreamEvent(StreamEnd{EndReason::Stopped, 0, "output off"}));
+  }
+  DeviceState state() const override { return state_; }
+
+ private:
+  DeviceDescriptor d_;
+  DeviceState state_ = DeviceState::Closed;
+  StreamSink sink_;
+};
+
+class FunctionGeneratorSimDriver final : public Driver {
+ public:
+  std::string name() const override { return "sim-funcgen"; }
+  std::string description() const override {
+    return "Simulated function generator giving the simulated Motostiffmeter its set-point (thesis §1.1)";
+  }
+  bool simulated() const override { return true; }
+  core::Result<std::vector<DeviceDescriptor>> scan() override {
+    return std::vector<DeviceDescriptor>{
+        DeviceDescriptor{name(), "Simulated function generator (33522B-like)", 0, 0, "", "sim:0"}};
+  }
+  core::Result<std::unique_ptr<Device>> create(const DeviceDescriptor& descriptor) override {
+    DeviceDescriptor d = descriptor;
+    if (d.model.empty()) d.model = "Simulated function generator (33522B-like)";
+    return std::unique_ptr<Device>(std::make_unique<FunctionGeneratorSim>(d));
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Driver> makeFunctionGeneratorSimDriver() {
+  return std::make_unique<FunctionGeneratorSimDriver>();
+}
+
+FunctionGeneratorSimCounters functionGeneratorSimCounters() {
+  auto& line = setPointLine();
+  std::lock_guard<std::mutex> lock(line.mutex);
+  return line.counters;
 }
 
 }  // namespace mozzi::devices::sim

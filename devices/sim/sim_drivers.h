@@ -54,6 +54,31 @@ std::unique_ptr<Driver> makeHammerStationDriver();
 // torsion modes (StaticSpecimen::receptance), a ramp quasi-statically.
 std::unique_ptr<Driver> makeStiffnessRigDriver();
 
+// Simulated function generator "sim-funcgen" giving the simulated
+// Motostiffmeter its actuator set-point, as usbtmc-funcgen gives the real
+// one (docs/hardware.md): the same parameters (mode static-ramp | sine,
+// static.max_force, static.period_s, sine.frequency, sine.amplitude,
+// actuator.newtons_per_volt, channel) and the limits of a 33522B into high
+// impedance (2 channels, 2 mVpp to 20 Vpp, 10 V peak, sine up to 30 MHz),
+// checked by configure() before anything is set; no inputs. configure()
+// programs the set-point, start() switches the output on, stop() and close()
+// off. A sim-stiffness device configured with actuator.source =
+// "sim-funcgen" takes its force from it (the ramp is the generator's
+// triangle -F -> +F -> -F, the sine the set amplitude falling with frequency
+// as the actuator's does, actuatorSineAmplitude) and refuses to configure
+// when the generator has not been set; one simulated bench per process.
+// counters(): configurations applied and outputs switched on.
+struct FunctionGeneratorSimCounters {
+  int configured = 0;
+  int started = 0;
+  std::string lastMode;
+  double lastFrequencyHz = 0.0;
+  double lastAmplitudeN = 0.0;  // sine amplitude or ramp peak set [N]
+  double lastAmplitudeVpp = 0.0;
+};
+std::unique_ptr<Driver> makeFunctionGeneratorSimDriver();
+FunctionGeneratorSimCounters functionGeneratorSimCounters();
+
 // Mototiremeter (thesis §1.8, §1.9): rotating disk up to 50 km/h, yaw
 // (+/-10 deg, +/-6 by default) and camber (+/-55 deg, appendix 2; §1.8 prints
 // 54; +/-45 by default) servos, load cells for F_y, M_z and M_y, a rate gyro on

@@ -208,6 +208,25 @@ std::complex<double> StaticSpecimen::receptance(const core::Vector2& p, double f
   return w;
 }
 
+double StaticSpecimen::displacementAt(const core::Vector2& p, const core::Vector2& q, double forceN) const {
+  // displacementAt(q, 1) k_lat = signedArm(q) / a_tw: 1 at the load point.
+  return displacementAt(p, forceN) * displacementAt(q, 1.0) * lateralStiffness;
+}
+
+std::complex<double> StaticSpecimen::receptance(const core::Vector2& p, const core::Vector2& q,
+                                                double frequencyHz) const {
+  if (modes.empty()) return displacementAt(p, q, 1.0);
+  std::complex<double> w = 0.0;
+  for (const auto& m : modes) {
+    auto armOf = [&](const core::Vector2& x) {
+      return (x.x() - m.point.x()) * m.direction.y() - (x.y() - m.point.y()) * m.direction.x();
+    };
+    const double r = frequencyHz / m.frequencyHz;
+    w += m.rotationPerN * (armOf(q) / m.arm) * armOf(p) / std::complex<double>(1.0 - r * r, 2.0 * m.zeta * r);
+  }
+  return w;
+}
+
 namespace {
 
 core::Vector2 directionAt(double beta) {  // from the v axis towards u

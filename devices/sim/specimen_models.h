@@ -148,6 +148,13 @@ struct StaticSpecimen {
   //   sum_r theta_r signedArm_r(p) / (1 - (f/f_r)^2 + 2 i zeta_r f/f_r);
   // at f = 0 it is displacementAt(p, 1).
   std::complex<double> receptance(const core::Vector2& p, double frequencyHz) const;
+  // The same with the force at plate point q instead of the load point (a
+  // set-up that loads elsewhere): each mode's rotation per newton scaled by
+  // signedArm_r(q) / arm_r, i.e. theta_r = F signedArm_r(q) / k_r (eq. 23), so
+  // w(p)/F(q) = w(q)/F(p) (reciprocity); at q = loadPoint it is receptance(p, f).
+  std::complex<double> receptance(const core::Vector2& p, const core::Vector2& q, double frequencyHz) const;
+  // Static: F signedArm(q) signedArm(p) / k_tw with k_tw = k_lat a_tw^2 (eq. 29-32).
+  double displacementAt(const core::Vector2& p, const core::Vector2& q, double forceN) const;
 };
 
 // The static model of a catalogue specimen with static data: k_lat and a_tw

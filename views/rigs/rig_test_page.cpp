@@ -1,9 +1,11 @@
 #include "views/rigs/rig_test_page.h"
 
+#include <qwt_interval_symbol.h>
 #include <qwt_legend.h>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
 #include <qwt_plot_grid.h>
+#include <qwt_plot_intervalcurve.h>
 #include <qwt_symbol.h>
 #include <QComboBox>
 #include <QCoreApplication>
@@ -19,6 +21,7 @@
 #include <QScrollArea>
 #include <QShortcut>
 #include <QSplitter>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -32,6 +35,7 @@
 #include "core/tire/magic_formula.h"
 #include "devices/rigtests/rig_sequence.h"
 #include "devices/rigtests/sequence_parameters.h"
+#include "devices/rigtests/stiffness_results.h"
 #include "devices/rigtests/stiffness_tests.h"
 #include "devices/rigtests/tyre_tests.h"
 #include "devices/rigtests/virtual_rigs.h"
@@ -39,7 +43,9 @@
 #include "devices/sim/specimen_catalogue.h"
 #include "views/common/job_runner.h"
 #include "views/panels/parameter_form.h"
+#include "views/plots/interactive_plot.h"
 #include "views/plots/plot_export.h"
+#include "views/scene/plate_sketch.h"
 
 namespace mozzi {
 namespace views {
@@ -230,6 +236,7 @@ RigTestPage::RigTestPage(Rig rig, const PageContext& ctx)
   buildUi();
   fillSpecimens();
   fillTests();
+  rebuildSetupForm();
   rebuildTestForm();
   resetPlots();
   retranslate();
@@ -313,9 +320,13 @@ void RigTestPage::buildUi() {
   livePlot_->enableAxis(QwtPlot::yRight, true);
   resultPlot_ = makePlot(this);
   resultPlot_->setObjectName(QStringLiteral("resultPlot"));
+  axisPlot_ = makePlot(this);
+  axisPlot_->setObjectName(QStringLiteral("axisPlot"));
+  axisPlot_->enableAxis(QwtPlot::yRight, true);
   auto* plots = new QSplitter(Qt::Horizontal);
   plots->addWidget(livePlot_);
   plots->addWidget(resultPlot_);
+  plots->addWidget(axisPlot_);
 
   resultsBox_ = new QGroupBox;
   auto* resultsLayout = new QVBoxLayout(resultsBox_);
@@ -348,8 +359,59 @@ void RigTestPage::buildUi() {
   auto* rightLayout = new QVBoxLayout(right);
   rightLayout->setContentsMargins(0, 0, 0, 0);
   rightLayout->addWidget(readout_);
+  plotTabs_ = new QTabWidget;
+  plotTabs_->setObjectName(QStringLiteral("plotTabs"));
+  plotTabs_->setDocumentMode(true);
+  plotTabs_->addTab(plots, QString());
+  if (rig_ == Rig::Stiffness) {
+    // The set-up view: the plate, the lasers, the load point and the
+    // constrained end over the specimen's silhouette, as the form says.
+    // The form beside the picture, so the run controls on the left stay in view.
+    setupFormBox_ = new QGroupBox;
+    auto* setupLayout = new QVBoxLayout(setupFormBox_);
+    setupForm_ = new ParameterForm;
+    setupForm_->setObjectName(QStringLiteral("setupForm"));
+    setupLayout->addWidget(setupForm_);
+    setupLayout->addStretch(1);
+    auto* formScroll = new QScrollArea;
+    formScroll->setWidget(setupFormBox_);
+    formScroll->setWidgetResizable(true);
+    formScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    setupScroll_ = formScroll;
+    auto* view = new QWidget;
+    auto* viewRow = new QHBoxLayout(view);
+    viewRow->setContentsMargins(0, 0, 0, 0);
+    viewRow->addWidget(formScroll);
+    auto* viewLayout = new QVBoxLayout;
+    viewRow->addLayout(viewLayout, 1);
+    setupPlot_ = new InteractivePlot;
+    setupPlot_->setObjectName(QStringLiteral("setupPlot"));
+    setupPlot_->setCanvasBackground(Qt::white);
+    setupPlot_->setCursorOnClick(false);
+    setupPlot_->setMinimumSize(280, 220);
+    installPlotExportAction(setupPlot_);
+    setupExtent_ = new QwtPlotCurve;
+    setupExtent_->setStyle(QwtPlotCurve::NoCurve);
+    setupExtent_->setItemAttribute(QwtPlotItem::Legend, false);
+    setupExtent_->attach(setupPlot_);
+    sketch_ = std::make_unique<PlateSketch>(setupPlot_);
+    setupPlot_->setEqualAspect(true);
+    geometry_ = new QLabel;
+    geometry_->setObjectName(QStringLiteral("geometry"));
+    geometry_->setWordWrap(true);
+    geometry_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    setupNote_ = new QLabel;
+    setupNote_->setObjectName(QStringLiteral("setupNote"));
+    setupNote_->setWordWrap(true);
+    viewLayout->addWidget(setupPlot_, 1);
+    viewLayout->addWidget(geometry_);
+    viewLayout->addWidget(setupNote_);
+    plotTabs_->addTab(view, QString());
+  } else {
+    plotTabs_->tabBar()->hide();
+  }
   auto* vertical = new QSplitter(Qt::Vertical);
-  vertical->addWidget(plots);
+  vertical->addWidget(plotTabs_);
   vertical->addWidget(bottom);
   vertical->setStretchFactor(0, 3);
   vertical->setStretchFactor(1, 2);
@@ -371,7 +433,11 @@ void RigTestPage::buildUi() {
   stopKey->setContext(Qt::WidgetWithChildrenShortcut);
   connect(stopKey, &QShortcut::activated, this, &RigTestPage::stop);
   connect(rigForm_, &ParameterForm::valuesChanged, this, [this] { showSetup(); });
-  connect(specimen_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] { rebuildTestForm(); });
+  if (setupForm_) connect(setupForm_, &ParameterForm::valuesChanged, this, [this] { drawSetup(); });
+  connect(specimen_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
+    rebuildSetupForm();
+    rebuildTestForm();
+  });
   connect(test_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
     rebuildTestForm();
     if (!isRunning()) resetPlots();
@@ -386,6 +452,15 @@ void RigTestPage::retranslate() {
   testLabel_->setText(tr("Test"));
   rigBox_->setTitle(tr("Simulated rig"));
   testBoxGroup_->setTitle(tr("Test settings"));
+  if (setupFormBox_) setupFormBox_->setTitle(tr("Set-up: plate, lasers, load point (mm)"));
+  plotTabs_->setTabText(0, tr("Measurement"));
+  if (setupPlot_) {
+    plotTabs_->setTabText(1, tr("Set-up view"));
+    setupPlot_->setTitle(tr("Set-up over the specimen"));
+    setupPlot_->setAxisTitle(QwtPlot::xBottom, tr("u [m] (plate plane)"));
+    setupPlot_->setAxisTitle(QwtPlot::yLeft, tr("v [m]"));
+    drawSetup();
+  }
   resultsBox_->setTitle(tr("Result stored in the project"));
   run_->setText(tr("Run (F5)"));
   run_->setToolTip(tr("Check the settings against the machine's limits and run the test"));
@@ -471,6 +546,8 @@ void RigTestPage::showSetup() {
       setupInfo_->setText(qs(setup.error().describe()));
       return;
     }
+    if (setupForm_ && !setupForm_->specs().empty())
+      if (auto edited = rt::stiffnessSetupFrom(*setup, geometryValues())) setup = std::move(edited);
     QStringList points;
     for (const auto& p : setup->laserPoints) points << QStringLiteral("(%1, %2)").arg(mm(p.x()), mm(p.y()));
     setupInfo_->setText(
@@ -493,6 +570,111 @@ void RigTestPage::showSetup() {
                             .arg(rt::kMachineMaxCamberDeg)
                             .arg(rt::kMachineMaxSpeedKmh));
   }
+}
+
+void RigTestPage::rebuildSetupForm() {
+  if (!setupForm_) return;
+  const std::string key = specimenKey().toStdString();
+  auto base = rt::simulatedStiffnessSetup(key, 1, false);
+  if (!base) {
+    setupForm_->setSpecs({});
+    drawSetup();
+    return;
+  }
+  // The constrained end where the specimen's silhouette has it.
+  std::optional<core::Vector2> locked;
+  if (const auto& catalogue = silhouetteCatalogue())
+    if (auto placed = core::stiffness::placeSilhouette(*catalogue, key, base->loadPoint))
+      locked = placed->constrainedEnd;
+  {
+    const QSignalBlocker block(setupForm_);
+    // The geometry, then where the actuator's set-point comes from (the
+    // simulated rig's own drive or the simulated function generator).
+    auto specs = rt::stiffnessSetupParameters(*base, locked);
+    specs.push_back(rt::actuatorParameter({rt::kActuatorRigDrive, rt::kActuatorSimGenerator}));
+    setupForm_->setSpecs(specs);
+  }
+  // As wide as the form's widest row (labels and spin boxes), whatever the font.
+  setupFormBox_->layout()->activate();
+  const QFontMetrics fm(setupForm_->font());
+  const int rowWidth = fm.horizontalAdvance(QCoreApplication::translate("Parameters", "Constrained end u")) +
+                       fm.horizontalAdvance(QStringLiteral("-2000.00 mm")) + fm.height() * 6;
+  setupScroll_->setMinimumWidth(std::max(setupFormBox_->sizeHint().width(), rowWidth) + 24);
+  drawSetup();
+}
+
+devices::ParameterMap RigTestPage::geometryValues() const {
+  auto values = setupForm_->values();
+  values.erase("setup.actuator");
+  return values;
+}
+
+QwtPlot* RigTestPage::setupPlot() const {
+  return setupPlot_;
+}
+
+QString RigTestPage::geometryText() const {
+  return geometry_ ? geometry_->text() : QString();
+}
+
+void RigTestPage::drawSetup() {
+  if (!setupPlot_) return;
+  const std::string key = specimenKey().toStdString();
+  for (const auto& spec : setupForm_->specs())
+    if (QWidget* e = setupForm_->editor(spec.key)) e->setStyleSheet(QString());
+  auto base = rt::simulatedStiffnessSetup(key, 1, false);
+  std::optional<core::stiffness::PlacedSilhouette> placed;
+  QString note;
+  if (base) {
+    // The specimen stays where it is: its silhouette placed at the specimen's own load point.
+    if (const auto& catalogue = silhouetteCatalogue()) {
+      auto p = core::stiffness::placeSilhouette(*catalogue, key, base->loadPoint);
+      if (p)
+        placed = std::move(p).value();
+      else
+        note = tr("No outline drawn: %1").arg(qs(p.error().describe()));
+    } else {
+      note = tr("No outline drawn: %1").arg(qs(catalogue.error().describe()));
+    }
+  }
+  PlateSketchInput input;
+  input.silhouette = placed ? &*placed : nullptr;
+  QString problem;
+  if (base && !setupForm_->specs().empty()) {
+    auto setup = rt::stiffnessSetupFrom(*base, geometryValues());
+    if (setup) {
+      input.laserPoints = setup->laserPoints;
+      input.loadPoint = setup->loadPoint;
+      input.plateOutline = setup->plateOutline;
+      input.constrainedEnd = setup->constrainedEnd;
+      if (auto ok = rt::checkPlateGeometry(*setup); !ok) {
+        // Name the field in the form's words and mark it.
+        QString field = qs(ok.error().where);
+        for (const auto& spec : setupForm_->specs())
+          if (spec.key == ok.error().where) {
+            field = QCoreApplication::translate("Parameters", spec.label.c_str());
+            if (QWidget* e = setupForm_->editor(spec.key))
+              e->setStyleSheet(QStringLiteral("background-color: #ffd6d6;"));
+          }
+        problem = tr("Set-up not valid, field '%1': %2").arg(field, qs(ok.error().message));
+      }
+    } else {
+      problem = tr("Set-up not valid: %1").arg(qs(setup.error().describe()));
+    }
+  } else if (!base) {
+    problem = qs(base.error().describe());
+  }
+  sketch_->draw(input);
+  QVector<QPointF> extent;
+  for (const auto& p : sketch_->extent()) extent.append(QPointF(p.x(), p.y()));
+  setupExtent_->setSamples(extent);
+  setupPlot_->autoscale();
+  setupPlot_->replot();
+  geometry_->setText(problem);
+  geometry_->setStyleSheet(problem.isEmpty() ? QString() : QStringLiteral("color: #b00020; font-weight: bold;"));
+  setupNote_->setText(placed ? tr("Outline: %1, approximate (not to scale of a drawing).").arg(qs(placed->name))
+                             : note);
+  showSetup();
 }
 
 void RigTestPage::rebuildTestForm() {
@@ -530,6 +712,7 @@ void RigTestPage::setRunning(bool running) {
   test_->setEnabled(!running);
   rigForm_->setEnabled(!running);
   testForm_->setEnabled(!running);
+  if (setupForm_) setupForm_->setEnabled(!running);
 }
 
 void RigTestPage::resetPlots() {
@@ -554,7 +737,34 @@ void RigTestPage::resetPlots() {
     mfSlip_->setPen(QPen(QColor(148, 103, 189), 2.0));
     mfCamber_->setPen(QPen(QColor(140, 86, 75), 2.0));
     timeLeft_->setPen(QPen(QColor(31, 119, 180), 3.0));  // wide: an in-phase trace on the right axis covers it
+    sineFit_ = addCurve(resultPlot_, Qt::black);
+    sineFit_->setPen(QPen(Qt::black, 1.5, Qt::DashLine));
+    const QColor incColour(31, 119, 180), armColour(214, 39, 40);
+    inclination_ = addCurve(axisPlot_, incColour);
+    inclination_->setSymbol(new QwtSymbol(QwtSymbol::Ellipse, QBrush(incColour), QPen(incColour), QSize(7, 7)));
+    arm_ = addCurve(axisPlot_, armColour, QwtPlot::yRight);
+    arm_->setSymbol(new QwtSymbol(QwtSymbol::Rect, QBrush(armColour), QPen(armColour), QSize(7, 7)));
+    auto bars = [this](const QColor& colour, int yAxis) {
+      auto* c = new QwtPlotIntervalCurve();
+      c->setStyle(QwtPlotIntervalCurve::NoCurve);
+      auto* symbol = new QwtIntervalSymbol(QwtIntervalSymbol::Bar);
+      symbol->setWidth(8);
+      symbol->setPen(QPen(colour, 1.2));
+      c->setSymbol(symbol);
+      c->setYAxis(yAxis);
+      c->setItemAttribute(QwtPlotItem::Legend, false);
+      c->attach(axisPlot_);
+      return c;
+    };
+    inclinationBars_ = bars(incColour, QwtPlot::yLeft);
+    armBars_ = bars(armColour, QwtPlot::yRight);
   }
+  clearAxisPlot();
+  const bool sine = stiff && id == QLatin1String("dynamic");
+  axisPlot_->setVisible(sine);
+  sineFit_->setSamples(QVector<QPointF>());
+  sineFit_->setVisible(sine);
+  sineFit_->setItemAttribute(QwtPlotItem::Legend, sine);
   const bool steady = id == QLatin1String("steady-state");
   for (QwtPlotCurve* c : {xyLive_, xySecond_}) {
     // Steady state: one point per set-point; otherwise a line through the scans.
@@ -574,7 +784,8 @@ void RigTestPage::resetPlots() {
     c->setItemAttribute(QwtPlotItem::Legend, on);
   }
   // A measured line under a stored fit is drawn wide and light, so both show where they agree.
-  xyLive_->setPen(QPen(fit && !steady ? QColor(120, 170, 220) : QColor(31, 119, 180), fit && !steady ? 5.0 : 1.5));
+  const bool under = (fit && !steady) || sine;  // a stored line or a sine-fit loop drawn over it
+  xyLive_->setPen(QPen(under ? QColor(120, 170, 220) : QColor(31, 119, 180), under ? 5.0 : 1.5));
   livePlot_->setAxisTitle(QwtPlot::xBottom, tr("Time [s]"));
   if (stiff) {
     timeWindowS_ = id == QLatin1String("dynamic") ? kSineTimeWindowS : 0.0;
@@ -588,6 +799,13 @@ void RigTestPage::resetPlots() {
     resultPlot_->setAxisTitle(QwtPlot::yLeft, tr("Force [N]"));
     xyLive_->setTitle(id == QLatin1String("dynamic") ? tr("current frequency") : tr("measured"));
     fitLine_->setTitle(tr("F = k_lat x (stored k_lat)"));
+    sineFit_->setTitle(tr("sine fit, last frequency"));
+    axisPlot_->setTitle(tr("Dynamic twist axis against frequency"));
+    axisPlot_->setAxisTitle(QwtPlot::xBottom, tr("Frequency [Hz]"));
+    axisPlot_->setAxisTitle(QwtPlot::yLeft, tr("Inclination [deg]"));
+    axisPlot_->setAxisTitle(QwtPlot::yRight, tr("Twist arm a_tw [mm]"));
+    inclination_->setTitle(tr("inclination ± 1σ"));
+    arm_->setTitle(tr("a_tw ± 1σ"));
   } else {
     timeWindowS_ = kTyreTimeWindowS;
     livePlot_->setTitle(tr("Lateral force and aligning moment"));
@@ -656,13 +874,32 @@ void RigTestPage::start() {
   if (!tyre) {
     auto setup = rt::simulatedStiffnessSetup(key, seed, realtime);
     if (!setup) return refuse(setup.error());
+    std::shared_ptr<devices::Device> actuator;
+    if (!setupForm_->specs().empty()) {
+      setup = rt::stiffnessSetupFrom(*setup, geometryValues());
+      if (!setup) return refuse(setup.error());
+      auto device = rt::actuatorFor(
+          devices::parameterText(setupForm_->values(), "setup.actuator", rt::kActuatorRigDrive), *setup);
+      if (!device) return refuse(device.error());
+      actuator = std::shared_ptr<devices::Device>(std::move(device).value());
+      if (auto ok = rt::checkPlateGeometry(*setup); !ok) {
+        drawSetup();  // marks the field
+        plotTabs_->setCurrentIndex(1);
+        setStatus(tr("Not started: %1").arg(geometry_->text()), true);
+        if (log_) log_(tr("Rig test not started: %1").arg(geometry_->text()));
+        return;
+      }
+    }
+    laserPoints_.clear();
+    for (const auto& p : setup->laserPoints) laserPoints_.emplace_back(p.x(), p.y());
+    loadPoint_ = {setup->loadPoint.x(), setup->loadPoint.y()};
     if (id == QLatin1String("static")) {
       auto st = rt::staticSettingsFrom(testForm_->values());
       if (!st) return refuse(st.error());
       if (auto ok = rt::checkStaticSettings(*setup, *st); !ok) return refuse(ok.error());
-      run = [setup = *setup, st = *st](devices::Device& d, const rt::StoreTarget& t, const rt::Callbacks& cb,
-                                       const rt::CancelFlag* c) -> core::Result<rt::Outcome> {
-        auto o = rt::runStaticStiffnessTest(d, nullptr, setup, st, t, cb, c);
+      run = [setup = *setup, st = *st, actuator](devices::Device& d, const rt::StoreTarget& t, const rt::Callbacks& cb,
+                                                 const rt::CancelFlag* c) -> core::Result<rt::Outcome> {
+        auto o = rt::runStaticStiffnessTest(d, actuator.get(), setup, st, t, cb, c);
         if (!o) return o.error();
         return rt::Outcome(*o);
       };
@@ -670,9 +907,9 @@ void RigTestPage::start() {
       auto st = rt::dynamicSettingsFrom(testForm_->values());
       if (!st) return refuse(st.error());
       if (auto ok = rt::checkDynamicSettings(*setup, *st); !ok) return refuse(ok.error());
-      run = [setup = *setup, st = *st](devices::Device& d, const rt::StoreTarget& t, const rt::Callbacks& cb,
-                                       const rt::CancelFlag* c) -> core::Result<rt::Outcome> {
-        auto o = rt::runDynamicStiffnessTest(d, nullptr, setup, st, t, cb, c);
+      run = [setup = *setup, st = *st, actuator](devices::Device& d, const rt::StoreTarget& t, const rt::Callbacks& cb,
+                                                 const rt::CancelFlag* c) -> core::Result<rt::Outcome> {
+        auto o = rt::runDynamicStiffnessTest(d, actuator.get(), setup, st, t, cb, c);
         if (!o) return o.error();
         return rt::Outcome(*o);
       };
@@ -712,6 +949,7 @@ void RigTestPage::start() {
   firstRedrawMs_ = lastRedrawMs_ = -1;
   clock_.start();
   resetPlots();
+  plotTabs_->setCurrentIndex(0);
   results_->setRowCount(0);
   headline_->clear();
   progress_->setValue(0);
@@ -818,6 +1056,7 @@ void RigTestPage::onLive(const rt::LiveReadout& r) {
       timeLeftData_.clear();
       timeRightData_.clear();
       xyData_.clear();
+      if (sineFit_) sineFit_->setSamples(QVector<QPointF>());  // the fit of the frequency before
     }
     liveStep_ = r.step;
   }
@@ -880,6 +1119,7 @@ void RigTestPage::onStep(const rt::StepReport& s) {
   logView_->appendPlainText(
       s.ok ? tr("Step %1 (%2) committed.").arg(s.step).arg(qs(s.label))
            : tr("Step %1 (%2) kept without a result: %3").arg(s.step).arg(qs(s.label), qs(s.note)));
+  if (rig_ == Rig::Stiffness && testId() == QLatin1String("dynamic") && s.ok) addAxisPoint(s.results);
   if (rig_ != Rig::Tyre || testId() != QLatin1String("steady-state")) return;
   const auto* slip = rt::findQuantity(s.results, "slip");
   const auto* camber = rt::findQuantity(s.results, "camber");
@@ -894,6 +1134,57 @@ void RigTestPage::onStep(const rt::StepReport& s) {
   dirty_ = true;
 }
 
+void RigTestPage::clearAxisPlot() {
+  inclinationData_.clear();
+  armData_.clear();
+  inclinationSigma_.clear();
+  armSigma_.clear();
+  if (!inclination_) return;
+  inclination_->setSamples(QVector<QPointF>());
+  arm_->setSamples(QVector<QPointF>());
+  inclinationBars_->setSamples(QVector<QwtIntervalSample>());
+  armBars_->setSamples(QVector<QwtIntervalSample>());
+}
+
+void RigTestPage::addAxisPoint(const std::vector<rt::Quantity>& results) {
+  const auto* f = rt::findQuantity(results, "frequency");
+  const auto* beta = rt::findQuantity(results, "axis_inclination");
+  const auto* arm = rt::findQuantity(results, "a_tw");
+  if (!f) return;
+  // As stored (rad, m), shown in degrees and millimetres.
+  if (beta) {
+    inclinationData_.append(QPointF(f->value, beta->value * 180.0 / kPi));
+    inclinationSigma_.append(QPointF(f->value, beta->uncertainty * 180.0 / kPi));
+  }
+  if (arm) {
+    armData_.append(QPointF(f->value, arm->value * 1e3));
+    armSigma_.append(QPointF(f->value, arm->uncertainty * 1e3));
+  }
+  auto bars = [](const QVector<QPointF>& data, const QVector<QPointF>& sigma) {
+    QVector<QwtIntervalSample> out;
+    for (int i = 0; i < data.size() && i < sigma.size(); ++i)
+      out.append(QwtIntervalSample(data[i].x(), data[i].y() - sigma[i].y(), data[i].y() + sigma[i].y()));
+    return out;
+  };
+  inclination_->setSamples(inclinationData_);
+  arm_->setSamples(armData_);
+  inclinationBars_->setSamples(bars(inclinationData_, inclinationSigma_));
+  armBars_->setSamples(bars(armData_, armSigma_));
+  // The loop the sine fits of this frequency describe, over the measured one.
+  const auto* force = rt::findQuantity(results, "force_amplitude");
+  const auto phasors = rt::laserPhasorsOf(results, laserPoints_.size());
+  if (force && phasors) {
+    std::vector<core::Vector2> lasers;
+    for (const auto& [u, v] : laserPoints_) lasers.emplace_back(u, v);
+    auto loop = rt::fittedSineLoop(lasers, core::Vector2(loadPoint_.first, loadPoint_.second), force->value, *phasors);
+    QVector<QPointF> samples;
+    if (loop)
+      for (const auto& p : *loop) samples.append(QPointF(p.x() * 1e3, p.y()));
+    sineFit_->setSamples(samples);
+  }
+  dirty_ = true;
+}
+
 void RigTestPage::replot() {
   timeLeft_->setSamples(timeLeftData_);
   timeRight_->setSamples(timeRightData_);
@@ -901,6 +1192,7 @@ void RigTestPage::replot() {
   xySecond_->setSamples(xySecondData_);
   livePlot_->replot();
   resultPlot_->replot();
+  axisPlot_->replot();
   dirty_ = false;
   if (isRunning()) {
     ++redraws_;
@@ -1054,6 +1346,26 @@ void RigTestPage::showStoredTest(qint64 id) {
   };
   fitLine_->setSamples(QVector<QPointF>());
   fitLine2_->setSamples(QVector<QPointF>());
+  if (rig_ == Rig::Stiffness && testId() == QLatin1String("dynamic")) {
+    // The dynamic twist axis of every stored frequency, and the sine-fit
+    // loop of the last one, from what the project holds.
+    clearAxisPlot();
+    sineFit_->setSamples(QVector<QPointF>());
+    auto view = rt::readStiffnessTest(*store, id);
+    if (view) {
+      laserPoints_.clear();
+      for (const auto& p : view->laserPoints) laserPoints_.emplace_back(p.x(), p.y());
+      loadPoint_ = {view->loadPoint.x(), view->loadPoint.y()};
+      for (const auto& st : view->steps) {
+        std::vector<rt::Quantity> results;
+        for (const auto& [key, q] : st.results)
+          results.push_back(rt::Quantity{key, "", q.value, q.unit, q.uncertainty});
+        addAxisPoint(results);
+      }
+    } else {
+      setStatus(tr("Cannot read the rig test's twist axes: %1").arg(qs(view.error().describe())), true);
+    }
+  }
   if (rig_ == Rig::Stiffness) {
     if (const Row* k = find("k_lat"); k && !xyData_.isEmpty() && testId() == QLatin1String("static")) {
       double lo = xyData_.first().x(), hi = lo;

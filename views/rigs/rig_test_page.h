@@ -23,8 +23,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "devices/common/parameters.h"
 #include "views/common/page_registry.h"
 
 class QComboBox;
@@ -32,21 +34,26 @@ class QLabel;
 class QPlainTextEdit;
 class QProgressBar;
 class QPushButton;
+class QTabWidget;
 class QTableWidget;
 class QTimer;
 class QwtPlot;
 class QwtPlotCurve;
+class QwtPlotIntervalCurve;
 class QGroupBox;
 
 namespace mozzi {
 namespace devices::rigtests {
 struct LiveReadout;
 struct StepReport;
+struct Quantity;
 }  // namespace devices::rigtests
 
 namespace views {
 
+class InteractivePlot;
 class ParameterForm;
+class PlateSketch;
 struct RigHandOver;
 
 class RigTestPage : public QWidget {
@@ -64,11 +71,26 @@ class RigTestPage : public QWidget {
   QComboBox* testBox() const { return test_; }
   ParameterForm* rigForm() const { return rigForm_; }
   ParameterForm* testForm() const { return testForm_; }
+  // Stiffness rig: the set-up form (plate, lasers, load point, constrained
+  // end; devices/rigtests stiffnessSetupParameters), its picture over the
+  // specimen's silhouette (the drawing the Twist Axes page uses) and the
+  // result of the geometry check ("" when the set-up is fine). Null for the
+  // tyre tester.
+  ParameterForm* setupForm() const { return setupForm_; }
+  QwtPlot* setupPlot() const;
+  PlateSketch* setupSketch() const { return sketch_.get(); }
+  QString geometryText() const;
+  // The tabs over the plots: the measurement's plots, and the set-up view.
+  QTabWidget* plotTabs() const { return plotTabs_; }
   QPushButton* runButton() const { return run_; }
   QPushButton* stopButton() const { return stop_; }
   QTableWidget* resultsTable() const { return results_; }
   QwtPlot* livePlot() const { return livePlot_; }
   QwtPlot* resultPlot() const { return resultPlot_; }
+  // Sine sweep: the dynamic twist axis against frequency (inclination [deg]
+  // on the left axis, twist arm a_tw [mm] on the right, each with its
+  // one-sigma bars), filled as frequencies complete and from a stored test.
+  QwtPlot* axisPlot() const { return axisPlot_; }
   QString statusText() const;
   QString readoutText() const;
   // The rig's set-up for the chosen specimen (plate points, load point; tyre
@@ -112,10 +134,18 @@ class RigTestPage : public QWidget {
   void fillTests();
   void rebuildTestForm();
   void showSetup();
+  void rebuildSetupForm();
+  void drawSetup();
+  // The set-up form's geometry values (without the actuator choice).
+  devices::ParameterMap geometryValues() const;
   void drain();
   void onLive(const devices::rigtests::LiveReadout& r);
   void onStep(const devices::rigtests::StepReport& s);
   void onDone(bool ok, const QString& message);
+  // Sine sweep: one frequency's axis point and its sine-fit loop (results of
+  // a step report or of the stored step).
+  void addAxisPoint(const std::vector<devices::rigtests::Quantity>& results);
+  void clearAxisPlot();
   void resetPlots();
   void replot();
   void setStatus(const QString& text, bool error = false);
@@ -138,6 +168,15 @@ class RigTestPage : public QWidget {
   QComboBox* test_ = nullptr;
   ParameterForm* rigForm_ = nullptr;
   ParameterForm* testForm_ = nullptr;
+  ParameterForm* setupForm_ = nullptr;
+  QGroupBox* setupFormBox_ = nullptr;
+  QWidget* setupScroll_ = nullptr;  // the form's scroll area, as wide as the form
+  QTabWidget* plotTabs_ = nullptr;
+  InteractivePlot* setupPlot_ = nullptr;
+  QwtPlotCurve* setupExtent_ = nullptr;  // draws nothing: the points the set-up view must hold
+  std::unique_ptr<PlateSketch> sketch_;
+  QLabel* geometry_ = nullptr;
+  QLabel* setupNote_ = nullptr;
   QPushButton* run_ = nullptr;
   QPushButton* stop_ = nullptr;
   QProgressBar* progress_ = nullptr;
@@ -146,6 +185,7 @@ class RigTestPage : public QWidget {
   QLabel* setupInfo_ = nullptr;
   QwtPlot* livePlot_ = nullptr;
   QwtPlot* resultPlot_ = nullptr;
+  QwtPlot* axisPlot_ = nullptr;
   QTableWidget* results_ = nullptr;
   QPlainTextEdit* logView_ = nullptr;
   QLabel* headline_ = nullptr;
@@ -161,7 +201,14 @@ class RigTestPage : public QWidget {
   QwtPlotCurve* fitLine2_ = nullptr;
   QwtPlotCurve* mfSlip_ = nullptr;    // the stored Magic Formula over the side-slip sweep
   QwtPlotCurve* mfCamber_ = nullptr;  // ... and over the camber sweep
+  QwtPlotCurve* sineFit_ = nullptr;   // sine sweep: the loop the last frequency's sine fits describe
+  QwtPlotCurve* inclination_ = nullptr;
+  QwtPlotCurve* arm_ = nullptr;
+  QwtPlotIntervalCurve* inclinationBars_ = nullptr;
+  QwtPlotIntervalCurve* armBars_ = nullptr;
   QVector<QPointF> timeLeftData_, timeRightData_, xyData_, xySecondData_;
+  // Sine sweep: (f [Hz], inclination [deg]) and (f, a_tw [mm]); their sigmas as (f, sigma).
+  QVector<QPointF> inclinationData_, armData_, inclinationSigma_, armSigma_;
   double timeWindowS_ = 0.0;  // 0: keep the whole step
   int liveStep_ = -1;
   bool dirty_ = false;
@@ -173,6 +220,9 @@ class RigTestPage : public QWidget {
   int jobId_ = 0;
   std::optional<qint64> lastTestId_;
   QString runningTest_;
+  // Plate geometry of the running (or shown) stiffness test, for the sine-fit loop.
+  std::vector<std::pair<double, double>> laserPoints_;
+  std::pair<double, double> loadPoint_{0.0, 0.0};
   std::vector<std::string> roles_;  // tyre tester: channel names of F_y, M_z, yaw angle, camber angle
 };
 

@@ -26,12 +26,7 @@
 #include "core/stiffness/twist_geometry.h"
 #include "devices/rigtests/stiffness_results.h"
 #include "views/plots/interactive_plot.h"
-
-// The silhouettes' resource lives in this static library (views/CMakeLists.txt);
-// Q_INIT_RESOURCE must be called outside any namespace.
-static void initSilhouetteResource() {
-  Q_INIT_RESOURCE(silhouettes);
-}
+#include "views/scene/plate_sketch.h"
 
 namespace mozzi {
 namespace views {
@@ -56,37 +51,9 @@ const QColor kStaticColour(20, 20, 20);
 const QColor kDynamicColour(200, 30, 30);
 const QColor kPathColour(230, 120, 0);
 const QColor kModalColour(40, 90, 170);
-const QColor kSilhouetteColour(120, 120, 120);
 
 QString qs(const std::string& s) {
   return QString::fromStdString(s);
-}
-
-// The silhouettes' named points in words of the user's language.
-QString pointName(const std::string& name) {
-  static const char* const kNames[] = {QT_TRANSLATE_NOOP("TwistAxesPoints", "steering head"),
-                                       QT_TRANSLATE_NOOP("TwistAxesPoints", "swing-arm pivot"),
-                                       QT_TRANSLATE_NOOP("TwistAxesPoints", "wheel hub"),
-                                       QT_TRANSLATE_NOOP("TwistAxesPoints", "wheel contact point"),
-                                       QT_TRANSLATE_NOOP("TwistAxesPoints", "wheel axle"),
-                                       QT_TRANSLATE_NOOP("TwistAxesPoints", "dropouts"),
-                                       QT_TRANSLATE_NOOP("TwistAxesPoints", "steerer tube")};
-  for (const char* n : kNames)
-    if (name == n) return QCoreApplication::translate("TwistAxesPoints", n);
-  return qs(name);
-}
-
-// The shipped catalogue, parsed once (resources/silhouettes/silhouettes.json).
-const core::Result<st::SilhouetteCatalogue>& silhouettes() {
-  static const core::Result<st::SilhouetteCatalogue> catalogue = [] {
-    initSilhouetteResource();
-    QFile file(QStringLiteral(":/silhouettes/silhouettes.json"));
-    if (!file.open(QIODevice::ReadOnly))
-      return core::Result<st::SilhouetteCatalogue>(
-          core::makeError(core::ErrorCode::NotFound, "the silhouettes resource is missing", "silhouettes.json"));
-    return st::parseSilhouettes(file.readAll().toStdString());
-  }();
-  return catalogue;
 }
 
 QwtPlotCurve* addCurve(QwtPlot* plot, const QColor& colour, double width, Qt::PenStyle style, bool autoscaled,
@@ -212,10 +179,7 @@ void TwistAxesPage::buildUi() {
   plot_->setMinimumSize(320, 280);
 
   // Items that persist over selections.
-  lasers_ = addCurve(plot_, QColor(220, 0, 0), 1.0, Qt::SolidLine, true, 30);
-  lasers_->setStyle(QwtPlotCurve::NoCurve);
-  lasers_->setSymbol(
-      new QwtSymbol(QwtSymbol::Ellipse, QBrush(QColor(220, 0, 0)), QPen(QColor(220, 0, 0)), QSize(7, 7)));
+  sketch_ = std::make_unique<PlateSketch>(plot_);
   extent_ = addCurve(plot_, Qt::transparent, 0.0, Qt::NoPen, true, 0);
   extent_->setStyle(QwtPlotCurve::NoCurve);
   staticAxis_ = addCurve(plot_, kStaticColour, 2.5, Qt::SolidLine, false, 20);
@@ -435,7 +399,7 @@ void TwistAxesPage::loadTests() {
       problems << tr("No dynamic axis to trace: %1").arg(qs(path.error().describe()));
   }
   if (const auto* g = data_->geometry()) {
-    const auto& catalogue = silhouettes();
+    const auto& catalogue = silhouetteCatalogue();
     std::string key = g->specimenKey;
     if (key.empty() && data_->dynamics) key = data_->dynamics->specimenKey;
     if (!catalogue) {
@@ -473,77 +437,30 @@ void TwistAxesPage::loadTests() {
 }
 
 void TwistAxesPage::drawStatic() {
-  for (auto* c : silhouette_) delete c;
-  silhouette_.clear();
   for (auto* m : markers_) delete m;
   markers_.clear();
   markerAlign_.clear();
-  lasers_->setSamples(QVector<QPointF>());
   staticArm_->setSamples(QVector<QPointF>());
   extent_->setSamples(QVector<QPointF>());
-  std::vector<core::Vector2> extent;  // points the view must hold that no curve draws
   const TwistAxesData& d = *data_;
   const rt::StiffnessTestView* g = d.geometry();
-  auto pointMarker = [&](const core::Vector2& at, QwtSymbol::Style style, const QColor& pen, const QBrush& brush,
-                         int size, const QString& text, Qt::Alignment align) {
-    auto* m = new QwtPlotMarker;
-    m->setValue(at(0), at(1));
-    m->setSymbol(new QwtSymbol(style, brush, QPen(pen, 1.5), QSize(size, size)));
-    if (!text.isEmpty()) {
-      QwtText t(text);
-      t.setColor(pen);
-      QColor back(Qt::white);
-      back.setAlpha(200);
-      t.setBackgroundBrush(back);
-      m->setLabel(t);
-      m->setLabelAlignment(align);
-    }
-    m->setZ(35);
-    m->setItemAttribute(QwtPlotItem::AutoScale, false);
-    m->attach(plot_);
-    markers_.push_back(m);
-    markerAlign_.push_back(align & Qt::AlignVertical_Mask);
-  };
+  // The specimen and the plate set-up: the drawing the Stiffness Rig page's set-up view shares.
+  PlateSketchInput sketch;
+  sketch.silhouette = d.silhouette ? &*d.silhouette : nullptr;
+  if (g) {
+    sketch.laserPoints = g->laserPoints;
+    sketch.loadPoint = g->loadPoint;
+    sketch.plateOutline = g->plateOutline;
+    if (!d.silhouette) sketch.constrainedEnd = g->constrainedEnd;
+  }
+  sketch_->draw(sketch);
+  std::vector<core::Vector2> extent = sketch_->extent();
   if (d.silhouette) {
-    for (const auto& poly : d.silhouette->polygons) {
-      auto* c = addCurve(plot_, kSilhouetteColour, 1.5, Qt::SolidLine, true, 10);
-      c->setSamples(points(poly, true));
-      silhouette_.push_back(c);
-    }
-    pointMarker(d.silhouette->constrainedEnd, QwtSymbol::Rect, QColor(60, 60, 60),
-                QBrush(QColor(60, 60, 60), Qt::BDiagPattern), 14,
-                tr("%1 (constrained)").arg(pointName(d.silhouette->constrainedEndName)), Qt::AlignLeft | Qt::AlignTop);
-    extent.push_back(d.silhouette->constrainedEnd);
-    if (d.silhouette->centreOfGravity) extent.push_back(*d.silhouette->centreOfGravity);
-    if (d.silhouette->centreOfGravity)
-      pointMarker(*d.silhouette->centreOfGravity, QwtSymbol::Ellipse, QColor(0, 150, 0), QBrush(Qt::NoBrush), 13,
-                  tr("centre of gravity (estimated)"), Qt::AlignRight | Qt::AlignBottom);
     silhouetteNote_->setText(tr("Outline: %1, approximate (not to scale of a drawing): %2")
                                  .arg(qs(d.silhouette->name), qs(d.silhouette->source)));
   } else {
     silhouetteNote_->setText(d.silhouetteError.isEmpty() ? QString()
                                                          : tr("No outline drawn: %1").arg(d.silhouetteError));
-  }
-  if (g) {
-    lasers_->setSamples(points(g->laserPoints));
-    for (std::size_t i = 0; i < g->laserPoints.size(); ++i) {
-      auto* m = new QwtPlotMarker;
-      m->setValue(g->laserPoints[i](0), g->laserPoints[i](1));
-      QwtText t(tr("L%1").arg(i + 1));
-      t.setColor(QColor(200, 0, 0));
-      m->setLabel(t);
-      m->setLabelAlignment(Qt::AlignRight | Qt::AlignBottom);
-      m->setItemAttribute(QwtPlotItem::AutoScale, false);
-      m->setZ(34);
-      m->attach(plot_);
-      markers_.push_back(m);
-      markerAlign_.push_back(Qt::AlignBottom);
-    }
-    const QString load =
-        d.silhouette ? tr("load point (%1)").arg(pointName(d.silhouette->loadPointName)) : tr("load point");
-    pointMarker(g->loadPoint, QwtSymbol::Ellipse, Qt::black, QBrush(Qt::black), 12, load,
-                Qt::AlignRight | Qt::AlignBottom);
-    extent.push_back(g->loadPoint);
   }
   extent_->setSamples(points(extent));
   if (d.statics && d.statics->axis) {
@@ -601,9 +518,12 @@ void TwistAxesPage::clipAxes() {
   // A line across the view, labelled near its upper end.
   const double centreU = 0.5 * (x.minValue() + x.maxValue());
   // Point labels on the side towards the view's centre, so none leaves it.
-  for (std::size_t i = 0; i < markers_.size(); ++i)
-    markers_[i]->setLabelAlignment((markers_[i]->xValue() < centreU ? Qt::AlignRight : Qt::AlignLeft) |
-                                   markerAlign_[i]);
+  auto place = [&](const std::vector<QwtPlotMarker*>& markers, const std::vector<Qt::Alignment>& align) {
+    for (std::size_t i = 0; i < markers.size(); ++i)
+      markers[i]->setLabelAlignment((markers[i]->xValue() < centreU ? Qt::AlignRight : Qt::AlignLeft) | align[i]);
+  };
+  place(sketch_->markers(), sketch_->markerAlignments());
+  place(markers_, markerAlign_);
   // `along`: where the label sits, as a fraction of the segment from its upper
   // end (the four lines' labels apart from each other).
   auto draw = [&](QwtPlotCurve* curve, QwtPlotMarker* tag, const std::optional<st::PlateAxis>& axis,

@@ -35,6 +35,7 @@ namespace mozzi {
 namespace views {
 
 class InteractivePlot;
+class PlateSketch;
 struct TwistAxesData;
 
 class TwistAxesPage : public QWidget {
@@ -107,11 +108,10 @@ class TwistAxesPage : public QWidget {
   InteractivePlot* plot_ = nullptr;
 
   // Items rebuilt per selection; the axis lines are clipped to the view.
-  std::vector<QwtPlotCurve*> silhouette_;
-  std::vector<QwtPlotMarker*> markers_;     // labels and points of the selection
+  std::unique_ptr<PlateSketch> sketch_;     // silhouette, plate, lasers, load point, constrained end
+  std::vector<QwtPlotMarker*> markers_;     // the page's own labels (a_tw)
   std::vector<Qt::Alignment> markerAlign_;  // their labels' vertical alignment
-  QwtPlotCurve* lasers_ = nullptr;
-  QwtPlotCurve* extent_ = nullptr;  // draws nothing: the points the view must hold
+  QwtPlotCurve* extent_ = nullptr;          // draws nothing: the points the view must hold
   QwtPlotCurve* staticAxis_ = nullptr;
   QwtPlotCurve* staticArm_ = nullptr;
   QwtPlotCurve* bendAxis_ = nullptr;

@@ -9,6 +9,7 @@
 #include "core/io/project_store.h"
 #include "core/tire/tire_csv.h"
 #include "devices/common/driver.h"
+#include "devices/rigtests/sequence_parameters.h"
 #include "devices/rigtests/stiffness_tests.h"
 #include "devices/rigtests/tyre_tests.h"
 #include "devices/rigtests/virtual_rigs.h"
@@ -22,12 +23,14 @@ constexpr const char* kUsage =
     "Usage: mozzi-cli rig list [--json]\n"
     "       mozzi-cli rig caps DRIVER [--file RECORDING] [--json]\n"
     "       mozzi-cli rig run PROJECT.mozzi --specimen NAME --rig sim-stiffness --test static|dynamic\n"
-    "                     [--force N] [--frequencies LIST] [--seed S] [--name TEST] [--json]\n"
+    "                     [--force N] [--frequencies LIST] [--actuator SOURCE] [--seed S] [--name TEST] [--json]\n"
     "       mozzi-cli rig run PROJECT.mozzi --specimen NAME --rig sim-tyre-tester --test relaxation|steady-state\n"
     "                     [--speed V] [--pressure BAR] [--frequencies LIST] [--seed S] [--name TEST] [--json]\n"
     "  --file         for sim-replay: the UFF file whose channels to show\n"
     "  --specimen     a virtual specimen key (rig list) or a project specimen's name\n"
     "  --force        static: ramp peak [N] (default the thesis's: 300 N, fork B 500 N); dynamic: sine set-point [N]\n"
+    "  --actuator     stiffness rig set-point: sim-stiffness (the rig's own drive, default), sim-funcgen\n"
+    "                 (the simulated function generator), usbtmc-funcgen (the first USBTMC generator found)\n"
     "  --frequencies  comma-separated [Hz]: stiffness rig 1..45 (default 1,2,5,10,15); tyre yaw\n"
     "                 (default 0.42,0.84,1.26,1.68,2.1)\n"
     "  --speed        disk speed [m/s] (default 5 km/h = 1.389 m/s; machine limit 50 km/h)\n"
@@ -271,6 +274,11 @@ int runTest(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
   if (stiffness && (a.value("--speed") || a.value("--pressure")))
     return usage("--speed and --pressure are options of the tyre tester");
   if (tyre && a.value("--force")) return usage("--force is an option of the stiffness rig");
+  if (tyre && a.value("--actuator")) return usage("--actuator is an option of the stiffness rig");
+  const std::string actuatorChoice = a.value("--actuator").value_or(rt::kActuatorRigDrive);
+  if (actuatorChoice != rt::kActuatorRigDrive && actuatorChoice != rt::kActuatorSimGenerator &&
+      actuatorChoice != rt::kActuatorUsbtmcGenerator)
+    return usage("--actuator is sim-stiffness, sim-funcgen or usbtmc-funcgen, not '" + actuatorChoice + "'");
   if (tyre && *test == "steady-state" && a.value("--frequencies"))
     return usage("--frequencies is not an option of the steady-state test");
   if (stiffness && *test == "static" && a.value("--frequencies"))
@@ -390,12 +398,15 @@ int runTest(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     auto dev = devices::sim::makeStiffnessRigDriver()->create(
         devices::DeviceDescriptor{"sim-stiffness", "", 0, 0, "", "sim:0"});
     if (!dev) return fail(dev.error());
+    // The set-point through a function generator when one is chosen.
+    auto actuator = rt::actuatorFor(actuatorChoice, *stiffSetup);
+    if (!actuator) return fail(actuator.error());
     if (*test == "static") {
-      auto o = rt::runStaticStiffnessTest(**dev, nullptr, *stiffSetup, staticSettings, target, cb);
+      auto o = rt::runStaticStiffnessTest(**dev, actuator->get(), *stiffSetup, staticSettings, target, cb);
       if (!o) return fail(o.error());
       return report(*o);
     }
-    auto o = rt::runDynamicStiffnessTest(**dev, nullptr, *stiffSetup, dynamicSettings, target, cb);
+    auto o = rt::runDynamicStiffnessTest(**dev, actuator->get(), *stiffSetup, dynamicSettings, target, cb);
     if (!o) return fail(o.error());
     return report(*o);
   }
@@ -418,7 +429,7 @@ const OptionSpec kSpec{{"--file"}, {"--json"}};
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   if (!args.empty() && args[0] == "run") {
     const auto parsed = ParsedArgs::parse(args, OptionSpec{{"--specimen", "--rig", "--test", "--force", "--frequencies",
-                                                            "--seed", "--speed", "--pressure", "--name"},
+                                                            "--seed", "--speed", "--pressure", "--name", "--actuator"},
                                                            {"--json"}});
     if (!parsed) {
       err << parsed.error().describe() << "\n" << kUsage;

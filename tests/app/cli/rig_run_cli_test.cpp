@@ -88,6 +88,33 @@ TEST_F(RigRunCli, DynamicTestGivesTheAxisPerFrequency) {
   }
 }
 
+// --actuator sim-funcgen: the set-point through the simulated function
+// generator; the stored set-up names both devices and the result is the one
+// the rig's own drive gives with the same seed (the rig follows the
+// generator's set-point exactly: 1e-9 relative on the printed JSON).
+TEST_F(RigRunCli, TheActuatorSetPointThroughTheSimulatedFunctionGenerator) {
+  auto runWith = [&](const char* actuator, const char* name) {
+    return run({"rig", "run", path_, "--specimen", "fork-a-with-wheel", "--rig", "sim-stiffness", "--test", "dynamic",
+                "--frequencies", "8", "--seed", "4", "--actuator", actuator, "--name", name, "--json"});
+  };
+  const auto gen = runWith("sim-funcgen", "through the generator");
+  ASSERT_EQ(gen.code, 0) << gen.err << gen.out;
+  const auto own = runWith("sim-stiffness", "own drive");
+  ASSERT_EQ(own.code, 0) << own.err << own.out;
+  const auto jg = nlohmann::json::parse(gen.out), jo = nlohmann::json::parse(own.out);
+  const double a = jg.at("steps").at(0).at("axis_inclination_deg").at("value").get<double>();
+  const double b = jo.at("steps").at(0).at("axis_inclination_deg").at("value").get<double>();
+  EXPECT_NEAR(a, b, 1e-9 * std::abs(b));
+  auto store = core::io::ProjectStore::open(path_, core::io::ProjectStore::OpenMode::ReadOnly);
+  ASSERT_TRUE(store.ok());
+  auto t = store->rigTest(jg.at("stored_test_id").get<std::int64_t>());
+  ASSERT_TRUE(t.ok());
+  EXPECT_EQ(store->rigSetup(*t->rigSetupId)->driver, "sim-stiffness + sim-funcgen");
+  const auto bad = runWith("a-kettle", "no");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--actuator"), std::string::npos) << bad.err;
+}
+
 TEST_F(RigRunCli, TyreTestsGiveRelaxationLengthsAndTheMagicFormula) {
   auto r = run({"rig", "run", path_, "--specimen", "tyre-120-70-r17", "--rig", "sim-tyre-tester", "--test",
                 "relaxation", "--frequencies", "0.84,1.26", "--json"});

@@ -20,6 +20,44 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The sine-fit loop of one frequency: lasers on a plate rotating about a known
+// axis with a known phase lag, so the load point's phasor is known exactly
+// (the plane through four exact points is exact): the loop must pass through
+// (Re X, |F|) at theta = 0 and (-Im X, 0) at theta = pi/2, to 1e-12 relative.
+TEST(StiffnessResults, FittedSineLoopFollowsTheLoadPointPhasor) {
+  const std::vector<core::Vector2> lasers{{-0.1, -0.075}, {0.1, -0.075}, {0.1, 0.075}, {-0.1, 0.075}};
+  const core::Vector2 load(0.02, -0.01);
+  // w(u, v) = (w0 + gu u + gv v) e^{i phi}
+  const double w0 = 2e-4, gu = 1e-3, gv = -4e-4, phi = -0.3;
+  auto at = [&](const core::Vector2& p) { return std::polar(w0 + gu * p.x() + gv * p.y(), phi); };
+  core::ComplexVector y(4);
+  for (int i = 0; i < 4; ++i) y(i) = at(lasers[static_cast<std::size_t>(i)]);
+  auto loop = fittedSineLoop(lasers, load, 250.0, y, 4);
+  ASSERT_TRUE(loop.ok()) << loop.error().describe();
+  ASSERT_EQ(loop->size(), 5u);
+  const std::complex<double> x = at(load);
+  EXPECT_NEAR((*loop)[0].x(), x.real(), 1e-12 * std::abs(x));
+  EXPECT_NEAR((*loop)[0].y(), 250.0, 1e-9);
+  EXPECT_NEAR((*loop)[1].x(), -x.imag(), 1e-12 * std::abs(x));
+  EXPECT_NEAR((*loop)[1].y(), 0.0, 1e-9);
+  EXPECT_NEAR((*loop)[4].x(), (*loop)[0].x(), 1e-15);  // closed
+  // Phasors from a step's results, and the errors.
+  std::vector<Quantity> results;
+  for (int i = 0; i < 4; ++i) {
+    const std::string k = "laser_" + std::to_string(i + 1);
+    results.push_back(Quantity{k + "_amplitude", "", std::abs(y(i)), "m", 0.0});
+    results.push_back(Quantity{k + "_phase", "", std::arg(y(i)), "rad", 0.0});
+  }
+  auto back = laserPhasorsOf(results, 4);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_LT((*back - y).norm(), 1e-15);
+  EXPECT_FALSE(laserPhasorsOf(results, 5).has_value());
+  EXPECT_FALSE(fittedSineLoop(lasers, load, 0.0, y).ok());
+  EXPECT_FALSE(fittedSineLoop({lasers[0], lasers[1], lasers[2]}, load, 1.0, y).ok());
+  const std::vector<core::Vector2> collinear{{0, 0}, {0.1, 0}, {0.2, 0}, {0.3, 0}};
+  EXPECT_FALSE(fittedSineLoop(collinear, load, 1.0, y).ok());
+}
+
 TEST(StiffnessResults, ReadsBackWhatTheSequencesStored) {
   const fs::path path = fs::temp_directory_path() / ("stiffness_results_" + std::to_string(::getpid()) + ".mozzi");
   fs::remove(path);

@@ -14,6 +14,7 @@
 
 #include "core/io/project_store.h"
 #include "core/stiffness/plate_motion.h"
+#include "devices/rigtests/sequence_parameters.h"
 #include "devices/rigtests/stiffness_tests.h"
 #include "devices/sim/sim_drivers.h"
 #include "devices/sim/specimen_models.h"
@@ -325,6 +326,75 @@ TEST_F(StiffnessSequence, TheActuatorSetPointGoesThroughTheFunctionGenerator) {
   EXPECT_EQ(cut->status, TestStatus::Interrupted);
   EXPECT_NE(cut->note.find("function generator unplugged"), std::string::npos) << cut->note;
   EXPECT_NE(device_->state(), DeviceState::Running);  // the DAQ was stopped too
+}
+
+// The simulated function generator (sim-funcgen, the usbtmc-funcgen
+// driver's parameters) gives the simulated rig its set-point: the rig
+// follows what the generator was set to, so a sine sweep through it records
+// exactly what the rig's own drive records with the same seed (the same force
+// A(f) and noise: every stored step result equal to 1e-12 relative), the
+// generator was set once per frequency and switched on and off around each
+// step; a static ramp through it (the generator's triangle -F -> +F -> -F)
+// gives Table 10's k_lat within 1%; a set-point beyond the generator's 20 Vpp
+// is refused naming the parameter before anything moves.
+TEST_F(StiffnessSequence, TheSimulatedFunctionGeneratorDrivesTheSimulatedRig) {
+  DynamicTestSettings dy;
+  dy.frequenciesHz = {5, 12};
+  dy.amplitudeN = 250.0;
+  auto viaGenerator = setup();
+  auto gen = actuatorFor(kActuatorSimGenerator, viaGenerator);
+  ASSERT_TRUE(gen.ok() && *gen) << (gen.ok() ? "" : gen.error().describe());
+  EXPECT_EQ(parameterText(viaGenerator.daqParameters, "actuator.source", ""), "sim-funcgen");
+  const auto before = sim::functionGeneratorSimCounters();
+  auto out = runDynamicStiffnessTest(*device_, gen->get(), viaGenerator, dy, StoreTarget{&*store_, specimen_, "gen"});
+  ASSERT_TRUE(out.ok()) << out.error().describe();
+  EXPECT_EQ(out->status, TestStatus::Complete) << out->note;
+  const auto after = sim::functionGeneratorSimCounters();
+  EXPECT_EQ(after.configured - before.configured, 2);
+  EXPECT_EQ(after.started - before.started, 2);
+  EXPECT_EQ(after.lastMode, "sine");
+  EXPECT_DOUBLE_EQ(after.lastFrequencyHz, 12.0);
+  EXPECT_DOUBLE_EQ(after.lastAmplitudeN, 250.0);
+  EXPECT_DOUBLE_EQ(after.lastAmplitudeVpp, 1.0);        // 2 x 250 N / 500 N/V
+  EXPECT_EQ((*gen)->state(), DeviceState::Configured);  // output off after the test
+  auto own = runDynamicStiffnessTest(*device_, nullptr, setup(), dy, StoreTarget{&*store_, specimen_, "own"});
+  ASSERT_TRUE(own.ok());
+  ASSERT_EQ(out->steps.size(), own->steps.size());
+  for (std::size_t k = 0; k < out->steps.size(); ++k) {
+    ASSERT_EQ(out->steps[k].results.size(), own->steps[k].results.size()) << k;
+    for (std::size_t i = 0; i < out->steps[k].results.size(); ++i) {
+      const auto& a = out->steps[k].results[i];
+      const auto& b = own->steps[k].results[i];
+      EXPECT_EQ(a.key, b.key);
+      EXPECT_NEAR(a.value, b.value, 1e-12 * std::abs(b.value)) << out->steps[k].label << " " << a.key;
+    }
+  }
+  auto stored = store_->rigTest(*out->testId);
+  ASSERT_TRUE(stored.ok());
+  auto rs = store_->rigSetup(*stored->rigSetupId);
+  ASSERT_TRUE(rs.ok());
+  EXPECT_EQ(rs->driver, "sim-stiffness + sim-funcgen");
+
+  StaticTestSettings st;
+  st.periodS = 4.0;
+  auto ramp = runStaticStiffnessTest(*device_, gen->get(), viaGenerator, st, StoreTarget{&*store_, specimen_, "ramp"});
+  ASSERT_TRUE(ramp.ok()) << ramp.error().describe();
+  ASSERT_TRUE(ramp->twist.has_value()) << ramp->note;
+  EXPECT_EQ(sim::functionGeneratorSimCounters().lastMode, "static-ramp");
+  const double kLat = sim::staticSpecimen("fork-a-with-wheel").value().lateralStiffness;
+  EXPECT_NEAR(ramp->twist->lateralStiffness / kLat, 1.0, 0.01);
+
+  // 2000 N at 100 N/V is 40 Vpp: refused by the generator, naming the parameter.
+  ASSERT_TRUE((*gen)->open().ok());
+  AcquisitionConfig tooMuch;
+  tooMuch.parameters = {
+      {"mode", std::string("sine")}, {"sine.amplitude", 2000.0}, {"actuator.newtons_per_volt", 100.0}};
+  auto refused = (*gen)->configure(tooMuch);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.error().where, "sine.amplitude");
+  EXPECT_NE(refused.error().message.find("20 Vpp"), std::string::npos) << refused.error().message;
+  (*gen)->close();
+  EXPECT_FALSE(actuatorFor("a-kettle", viaGenerator).ok());
 }
 
 TEST_F(StiffnessSequence, CancelEndsTheTestAsInterrupted) {

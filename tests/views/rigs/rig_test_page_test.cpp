@@ -15,13 +15,16 @@
 
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
+#include <qwt_plot_intervalcurve.h>
 #include <qwt_plot_item.h>
+#include <qwt_plot_marker.h>
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
 #include <QPushButton>
 #include <QSet>
 #include <QSignalSpy>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTreeWidgetItemIterator>
@@ -29,15 +32,19 @@
 #include <cmath>
 
 #include "core/io/project_store.h"
+#include "core/stiffness/plate_motion.h"
 #include "devices/rigtests/sequence_parameters.h"
+#include "devices/rigtests/stiffness_results.h"
 #include "devices/rigtests/tyre_tests.h"
 #include "devices/sim/sim_drivers.h"
 #include "devices/sim/specimen_catalogue.h"
+#include "devices/sim/specimen_models.h"
 #include "views/common/job_runner.h"
 #include "views/common/project_model.h"
 #include "views/common/project_tree.h"
 #include "views/panels/parameter_form.h"
 #include "views/panels/parameter_texts.h"
+#include "views/scene/plate_sketch.h"
 
 using mozzi::views::JobRunner;
 using mozzi::views::PageContext;
@@ -316,6 +323,220 @@ class RigTestPageTest : public QObject {
     // The last frequency's force-displacement loop and its 2 s of traces.
     QVERIFY(curveTitled(page.resultPlot(), QStringLiteral("current frequency"))->dataSize() > 100);
     saveShot(page, QStringLiteral("stiffness_rig_sine"));
+  }
+
+  // The dynamic twist axis against frequency: points added as each frequency
+  // is committed, then equal to what the project holds (the stored step
+  // results, read back through devices/rigtests/stiffness_results.h), with
+  // their one-sigma bars; the inclination follows the virtual specimen's
+  // plate model (the in-phase plane of its receptances at the four lasers,
+  // devices/sim/specimen_models.h) within 0.5 deg below the 22.3 Hz lateral
+  // mode (the sequence test's tolerance); the sine-fit loop spans the fitted
+  // force amplitude. A page opened on the stored test draws the same points.
+  void sineSweepDrawsTheTwistAxisAgainstFrequency() {
+    RigTestPage page(RigTestPage::Rig::Stiffness, context());
+    page.resize(1280, 800);
+    page.show();
+    QVERIFY(page.selectSpecimen(QStringLiteral("fork-a-with-wheel")));
+    QVERIFY(page.selectTest(QStringLiteral("dynamic")));
+    QVERIFY(page.axisPlot()->isVisible());
+    QVERIFY(page.testForm()->setValues({{"dynamic.frequencies", std::string("1, 10, 15")}}).ok());
+    QVERIFY(page.rigForm()->setValues({{"sim.seed", std::int64_t{8}}, {"sim.realtime", false}}).ok());
+    const QString incTitle = QStringLiteral("inclination ± 1σ"), armTitle = QStringLiteral("a_tw ± 1σ");
+    // While it runs: the steps' reports add their points before the page
+    // reads the stored test back (the project's change signal after each
+    // drained step report comes first; with the rig out of real time the
+    // last drain may hold every step).
+    int liveMax = 0;
+    bool done = false;
+    connect(&model_, &ProjectModel::rigTestsChanged, &page, [&] {
+      if (!done) liveMax = std::max(liveMax, static_cast<int>(curveTitled(page.axisPlot(), incTitle)->dataSize()));
+    });
+    QSignalSpy finished(&page, &RigTestPage::finished);
+    connect(&page, &RigTestPage::finished, &page, [&] { done = true; });
+    QTest::mouseClick(page.runButton(), Qt::LeftButton);
+    QVERIFY(finished.wait(120000));
+    QVERIFY2(finished.first().first().toBool(), qPrintable(page.statusText()));
+    disconnect(&model_, &ProjectModel::rigTestsChanged, &page, nullptr);
+    QVERIFY2(liveMax >= 1, qPrintable(QStringLiteral("points drawn from step reports: %1").arg(liveMax)));
+
+    auto view = rt::readStiffnessTest(*model_.store(), *page.lastTestId());
+    QVERIFY2(view.ok(), view.ok() ? "" : view.error().describe().c_str());
+    QCOMPARE(view->steps.size(), size_t{3});
+    const auto spec = mozzi::devices::sim::staticSpecimen("fork-a-with-wheel").value();
+    auto checkPoints = [&](RigTestPage& p) {
+      auto* inc = curveTitled(p.axisPlot(), incTitle);
+      auto* arm = curveTitled(p.axisPlot(), armTitle);
+      QVERIFY(inc && arm);
+      QCOMPARE(inc->dataSize(), size_t{3});
+      QCOMPARE(arm->dataSize(), size_t{3});
+      for (size_t k = 0; k < 3; ++k) {
+        const auto& st = view->steps[k];
+        const auto& beta = st.results.at("axis_inclination");
+        const auto& atw = st.results.at("a_tw");
+        QCOMPARE(inc->sample(k).x(), st.frequencyHz);
+        QCOMPARE(inc->sample(k).y(), beta.value * 180.0 / M_PI);
+        QCOMPARE(arm->sample(k).y(), atw.value * 1e3);
+        QVERIFY(beta.uncertainty > 0.0);
+      }
+    };
+    checkPoints(page);
+    // The bars: value ± sigma of the stored inclination.
+    QwtPlotIntervalCurve* bars = nullptr;
+    for (auto* item : page.axisPlot()->itemList(QwtPlotItem::Rtti_PlotIntervalCurve))
+      if (item->yAxis() == QwtPlot::yLeft) bars = static_cast<QwtPlotIntervalCurve*>(item);
+    QVERIFY(bars);
+    QCOMPARE(bars->dataSize(), size_t{3});
+    for (size_t k = 0; k < 3; ++k) {
+      const auto& beta = view->steps[k].results.at("axis_inclination");
+      QVERIFY(std::abs(bars->sample(k).interval.width() - 2 * beta.uncertainty * 180.0 / M_PI) < 1e-9);
+    }
+    // Against the plate model: the in-phase plane of the receptances' real parts.
+    for (const auto& st : view->steps) {
+      std::vector<double> w;
+      for (const auto& p : spec.laserPoints) w.push_back(std::real(spec.receptance(p, st.frequencyHz)));
+      auto expected = mozzi::core::stiffness::staticTwistAxis(spec.laserPoints, w, spec.loadPoint);
+      QVERIFY(expected.ok());
+      const double got = st.results.at("axis_inclination").value * 180.0 / M_PI;
+      const double want = expected->axis.beta * 180.0 / M_PI;
+      qInfo("%.0f Hz: inclination %.2f deg (plate model %.2f)", st.frequencyHz, got, want);
+      QVERIFY2(std::abs(got - want) < 0.5, qPrintable(QString::number(got - want)));
+    }
+    // The last frequency's sine-fit loop: closed, its force spans +-|F| fitted.
+    auto* loop = curveTitled(page.resultPlot(), QStringLiteral("sine fit, last frequency"));
+    QVERIFY(loop && loop->dataSize() > 100);
+    const double fAmp = view->steps.back().results.at("force_amplitude").value;
+    QVERIFY(std::abs(loop->boundingRect().bottom() / fAmp - 1.0) < 1e-3);
+    QVERIFY(std::abs(loop->boundingRect().top() / fAmp + 1.0) < 1e-3);
+    saveShot(page, QStringLiteral("stiffness_rig_sine_axis"));
+
+    // Reopened from the project: the same points.
+    PageContext ctx = context();
+    ctx.item = {RecordKind::RigTest, *page.lastTestId(), view->specimenId};
+    RigTestPage reopened(RigTestPage::Rig::Stiffness, ctx);
+    reopened.resize(1280, 800);
+    reopened.show();
+    checkPoints(reopened);
+    QVERIFY(reopened.axisPlot()->isVisible());
+  }
+
+  // The stiffness rig's set-up view: the form's plate, lasers, load point and
+  // constrained end drawn over the specimen's silhouette (the Twist Axes
+  // page's drawing), redrawn as the form changes; a geometry the twist axis
+  // cannot come from (lasers on one line) is named with its field, marked in
+  // the form and refuses the run before anything is stored; an edited valid
+  // set-up is what the stored test's geometry holds.
+  void setupViewDrawsTheFormAndRefusesBadGeometry() {
+    RigTestPage page(RigTestPage::Rig::Stiffness, context());
+    page.resize(1280, 800);
+    page.show();
+    QVERIFY(page.selectSpecimen(QStringLiteral("fork-a-with-wheel")));
+    QVERIFY(page.selectTest(QStringLiteral("static")));
+    page.plotTabs()->setCurrentIndex(1);
+    QVERIFY(page.setupForm() && page.setupSketch());
+    auto value = [&](const char* key) {
+      return std::get<double>(page.setupForm()->values().at(key)) * 1e-3;  // mm -> m
+    };
+    auto* sketch = page.setupSketch();
+    QCOMPARE(sketch->laserCurve()->dataSize(), size_t{4});
+    for (size_t i = 0; i < 4; ++i) {
+      const std::string n = std::to_string(i + 1);
+      QCOMPARE(sketch->laserCurve()->sample(i).x(), value(("setup.laser" + n + "_u").c_str()));
+      QCOMPARE(sketch->laserCurve()->sample(i).y(), value(("setup.laser" + n + "_v").c_str()));
+    }
+    QCOMPARE(sketch->plateCurve()->dataSize(), size_t{5});  // closed rectangle
+    QVERIFY(!sketch->silhouetteCurves().empty());
+    bool constrained = false, load = false;
+    for (auto* m : sketch->markers()) {
+      const QString label = m->label().text();
+      if (label.contains(QStringLiteral("(constrained)"))) {
+        constrained = true;
+        QCOMPARE(m->xValue(), value("setup.constrained_u"));
+        QCOMPARE(m->yValue(), value("setup.constrained_v"));
+      }
+      if (label.startsWith(QStringLiteral("load point"))) {
+        load = true;
+        QCOMPARE(m->xValue(), value("setup.load_u"));
+      }
+    }
+    QVERIFY(constrained && load);
+    QVERIFY2(page.geometryText().isEmpty(), qPrintable(page.geometryText()));
+    saveShot(page, QStringLiteral("stiffness_rig_setup"));
+
+    // Moving a laser redraws it.
+    QVERIFY(page.setupForm()->setValues({{"setup.laser2_u", 60.0}}).ok());
+    QCOMPARE(sketch->laserCurve()->sample(1).x(), 0.060);
+
+    // All four lasers on the line v = -75 mm: named, marked, refused.
+    QVERIFY(page.setupForm()
+                ->setValues({{"setup.laser3_u", 30.0},
+                             {"setup.laser3_v", -75.0},
+                             {"setup.laser4_u", -30.0},
+                             {"setup.laser4_v", -75.0}})
+                .ok());
+    QVERIFY2(page.geometryText().contains(QStringLiteral("one line")) &&
+                 page.geometryText().contains(QStringLiteral("Laser ")),
+             qPrintable(page.geometryText()));
+    bool marked = false;
+    for (const char* key : {"setup.laser1_u", "setup.laser2_u", "setup.laser3_u", "setup.laser4_u"})
+      marked = marked || !page.setupForm()->editor(key)->styleSheet().isEmpty();
+    QVERIFY(marked);
+    const auto before = model_.store()->rigTests().value().size();
+    QTest::mouseClick(page.runButton(), Qt::LeftButton);
+    QVERIFY(!page.isRunning());
+    QVERIFY2(page.statusText().contains(QStringLiteral("one line")), qPrintable(page.statusText()));
+    QCOMPARE(model_.store()->rigTests().value().size(), before);
+    QCOMPARE(page.plotTabs()->currentIndex(), 1);
+    saveShot(page, QStringLiteral("stiffness_rig_setup_refused"));
+
+    // Back to a plane: the edited set-up is the stored test's geometry.
+    QVERIFY(page.setupForm()->setValues({{"setup.laser3_v", 75.0}, {"setup.laser4_v", 75.0}}).ok());
+    QVERIFY2(page.geometryText().isEmpty(), qPrintable(page.geometryText()));
+    QVERIFY(page.testForm()->setValues({{"static.period", 2.0}}).ok());
+    QVERIFY(page.rigForm()->setValues({{"sim.realtime", false}}).ok());
+    QSignalSpy finished(&page, &RigTestPage::finished);
+    QTest::mouseClick(page.runButton(), Qt::LeftButton);
+    QVERIFY(finished.wait(60000));
+    QVERIFY2(finished.first().first().toBool(), qPrintable(page.statusText()));
+    auto view = rt::readStiffnessTest(*model_.store(), *page.lastTestId());
+    QVERIFY(view.ok());
+    QCOMPARE(view->laserPoints.size(), size_t{4});
+    QVERIFY(std::abs(view->laserPoints[1].x() - 0.060) < 1e-12);
+    QVERIFY(std::abs(view->laserPoints[2].x() - 0.030) < 1e-12);
+    QCOMPARE(view->plateOutline.size(), size_t{4});
+    QVERIFY(view->constrainedEnd.has_value());
+    // The simulated rig measured at the moved lasers: the specimen's k_lat still, within 1%.
+    const auto& statics = *mozzi::devices::sim::findSpecimen("fork-a-with-wheel")->statics;
+    QVERIFY2(std::abs(view->result("k_lat")->value / statics.lateralStiffness - 1.0) < 0.01,
+             qPrintable(QString::number(view->result("k_lat")->value)));
+  }
+
+  // The actuator's set-point through the simulated function generator, chosen
+  // in the set-up form: the generator is set per frequency and switched on,
+  // the test completes and its stored set-up names both devices.
+  void sineSweepThroughTheSimulatedFunctionGenerator() {
+    RigTestPage page(RigTestPage::Rig::Stiffness, context());
+    QVERIFY(page.selectSpecimen(QStringLiteral("fork-a-with-wheel")));
+    QVERIFY(page.selectTest(QStringLiteral("dynamic")));
+    QVERIFY(page.setupForm()->setValues({{"setup.actuator", std::string("sim-funcgen")}}).ok());
+    QVERIFY(
+        page.testForm()->setValues({{"dynamic.frequencies", std::string("5, 10")}, {"dynamic.amplitude", 200.0}}).ok());
+    QVERIFY(page.rigForm()->setValues({{"sim.realtime", false}}).ok());
+    const auto before = mozzi::devices::sim::functionGeneratorSimCounters();
+    QSignalSpy finished(&page, &RigTestPage::finished);
+    QTest::mouseClick(page.runButton(), Qt::LeftButton);
+    QVERIFY(finished.wait(60000));
+    QVERIFY2(finished.first().first().toBool(), qPrintable(page.statusText()));
+    const auto after = mozzi::devices::sim::functionGeneratorSimCounters();
+    QCOMPARE(after.configured - before.configured, 2);
+    QCOMPARE(after.started - before.started, 2);
+    QCOMPARE(after.lastFrequencyHz, 10.0);
+    QCOMPARE(after.lastAmplitudeN, 200.0);
+    auto stored = model_.store()->rigTest(*page.lastTestId());
+    QVERIFY(stored.ok());
+    auto rs = model_.store()->rigSetup(*stored->rigSetupId);
+    QVERIFY(rs.ok());
+    QCOMPARE(QString::fromStdString(rs->driver), QStringLiteral("sim-stiffness + sim-funcgen"));
   }
 
   void setPointsBeyondTheLimitsAreRefusedBeforeAnythingMoves() {
