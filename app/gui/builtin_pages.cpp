@@ -27,6 +27,7 @@
 #include "views/scene/scene_view.h"
 #include "views/scene/twist_axes_page.h"
 #include "views/stability/stability_page.h"
+#include "views/tyre/relaxation_page.h"
 
 namespace mozzi {
 namespace app {
@@ -287,6 +288,28 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                         [](QWidget* page, const PageContext& ctx) {
                           if (ctx.item.kind == RecordKind::RigTest)
                             static_cast<views::TwistAxesPage*>(page)->showRigTest(ctx.item.id);
+                        }});
+
+  // --- Tyres and wheelchairs (issue 22, views/tyre) ---------------------------
+  // Tyre relaxation (thesis §5.4, Figure 43): a tyre test's second page (the
+  // Tyre Tester is its default), or from the Pages menu on the project's tyres.
+  registry.add(PageSpec{QStringLiteral("tyre-relaxation"), QT_TRANSLATE_NOOP("Pages", "Tyre Relaxation"),
+                        QT_TRANSLATE_NOOP("Pages",
+                                          "Relaxation length against frequency and pressure, the ring model's "
+                                          "prediction and its contributions, the rigid-ring modes"),
+                        QString(), PageMenu::Pages,
+                        [](const ProjectItem& item) { return item.kind == RecordKind::TyreTest; },
+                        [](const PageContext& ctx) -> QWidget* {
+                          auto* page = new views::RelaxationPage(ctx);
+                          page->setObjectName(QStringLiteral("tyreRelaxationTab"));
+                          const auto log = ctx.log;
+                          if (log) QObject::connect(page, &views::RelaxationPage::message, page, log);
+                          return page;
+                        },
+                        /*singleton=*/true, /*openAtStart=*/false,
+                        [](QWidget* page, const PageContext& ctx) {
+                          if (ctx.item.kind == RecordKind::TyreTest)
+                            static_cast<views::RelaxationPage*>(page)->showTyreTest(ctx.item.id);
                         }});
 }
 
