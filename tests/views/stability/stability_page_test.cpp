@@ -9,6 +9,8 @@
 #include <qwt_plot_item.h>
 #include <qwt_plot_marker.h>
 #include <QDir>
+#include <QProcess>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QtTest>
 
@@ -67,6 +69,77 @@ class StabilityPageTest : public QObject {
     page.run();
     QVERIFY(!page.sweep().has_value());
     QVERIFY2(page.summaryText().contains(QStringLiteral("B must not be below A")), qPrintable(page.summaryText()));
+  }
+
+  // The motorcycle with lumped fork model 1 (thesis Table 12) compared with
+  // the rigid fork: every critical speed marked, compliant and rigid, equals
+  // the one `mozzi-cli stability motorcycle` prints, to its printed digits
+  // (6 decimals), for the same parameter file and speed grid.
+  void motorcycleForkAgainstTheCli() {
+    const QString params =
+        QStringLiteral(MOZZI_SHARED_DATA_DIR) + QStringLiteral("/motorcycle/sharp1971-parameters.csv");
+    mozzi::views::JobRunner jobs;
+    StabilityPage page(nullptr, &jobs);
+    page.resize(1280, 800);
+    page.show();
+    page.setModel(StabilityPage::Model::MotorcycleFork1);
+    page.setParameterFile(params);
+    page.setCompareRigid(true);
+    page.setSpeedRange(1.0, 60.0, 0.25);
+    QSignalSpy finished(&page, &StabilityPage::finished);
+    page.run();
+    QVERIFY(finished.wait(120000));
+    QVERIFY2(finished.first().first().toBool(), qPrintable(page.summaryText()));
+    QVERIFY(page.sweep() && page.rigidSweep());
+    for (const bool rigid : {false, true}) {
+      QStringList args{QStringLiteral("stability"),    QStringLiteral("motorcycle"),
+                       QStringLiteral("--params"),     params,
+                       QStringLiteral("--fork-model"), rigid ? QStringLiteral("rigid") : QStringLiteral("1"),
+                       QStringLiteral("--speeds"),     QStringLiteral("1:60:0.25")};
+      QProcess cli;
+      cli.start(QStringLiteral(MOZZI_CLI_PATH), args);
+      QVERIFY(cli.waitForFinished(120000));
+      QCOMPARE(cli.exitCode(), 0);
+      // "  weave stabilises at 5.927277 m/s (2.126 rad/s)"
+      const QRegularExpression event(QStringLiteral("^  (.+) (stabilises|destabilises) at ([0-9.]+) m/s"));
+      QStringList printed;
+      const QString cliText = QString::fromUtf8(cli.readAllStandardOutput());
+      for (const QString& line : cliText.split(QLatin1Char('\n'))) {
+        const auto m = event.match(line);
+        if (m.hasMatch()) printed << m.captured(3);
+      }
+      QVERIFY2(printed.size() >= 2, qPrintable(printed.join(QStringLiteral(", "))));
+      QStringList marked;
+      const QString tag = rigid ? QStringLiteral("rigid") : QStringLiteral("compliant");
+      for (QwtPlotItem* item : page.realPlot()->itemList(QwtPlotItem::Rtti_PlotMarker)) {
+        auto* m = static_cast<QwtPlotMarker*>(item);
+        if (m->lineStyle() != QwtPlotMarker::VLine || m->title().text() != tag) continue;
+        marked << QString::asprintf("%.6f", m->xValue());
+      }
+      qInfo("%s fork: CLI %s; page %s", qPrintable(tag), qPrintable(printed.join(QStringLiteral(", "))),
+            qPrintable(marked.join(QStringLiteral(", "))));
+      QCOMPARE(marked, printed);
+      // The named events of the page's sweep are the CLI's, in order.
+      QStringList names, cliNames;
+      for (const auto& e : (rigid ? *page.rigidSweep() : *page.sweep()).events)
+        if (e.kind == "stabilises" || e.kind == "destabilises") names << QString::fromStdString(e.mode + " " + e.kind);
+      for (const QString& line : cliText.split(QLatin1Char('\n'))) {
+        const auto m = event.match(line);
+        if (m.hasMatch()) cliNames << m.captured(1) + QLatin1Char(' ') + m.captured(2);
+      }
+      QCOMPARE(names, cliNames);
+    }
+    // Both forks on one plot: the rigid one's curves named as such.
+    QStringList names;
+    for (QwtPlotItem* item : page.realPlot()->itemList(QwtPlotItem::Rtti_PlotCurve)) names << item->title().text();
+    for (const char* mode : {"weave", "wobble", "capsize", "weave (rigid fork)", "wobble (rigid fork)"})
+      QVERIFY2(names.contains(QLatin1String(mode)), qPrintable(names.join(QStringLiteral(", "))));
+    shot(page, QStringLiteral("stability_motorcycle_fork1_vs_rigid"));
+    // Without a parameter file the motorcycle says what it needs.
+    page.setParameterFile(QString());
+    page.run();
+    QVERIFY(finished.wait(60000));
+    QVERIFY2(page.summaryText().contains(QStringLiteral("needs a parameter file")), qPrintable(page.summaryText()));
   }
 
  private:
