@@ -28,6 +28,7 @@
 #include "views/scene/twist_axes_page.h"
 #include "views/stability/stability_page.h"
 #include "views/tyre/relaxation_page.h"
+#include "views/wheelchair/wheelchair_page.h"
 
 namespace mozzi {
 namespace app {
@@ -311,6 +312,19 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                           if (ctx.item.kind == RecordKind::TyreTest)
                             static_cast<views::RelaxationPage*>(page)->showTyreTest(ctx.item.id);
                         }});
+  // Wheelchair manoeuvres (thesis §7.2 to §7.4, Figures 57 to 60).
+  registry.add(PageSpec{QStringLiteral("wheelchair"), QT_TRANSLATE_NOOP("Pages", "Wheelchair"),
+                        QT_TRANSLATE_NOOP("Pages",
+                                          "Slalom and steady-turning trajectories and rear slip angles of the "
+                                          "wheelchair model, with the tyre stiffness studies"),
+                        QString(), PageMenu::Tools, nullptr,
+                        [](const PageContext& ctx) -> QWidget* {
+                          auto* page = new views::WheelchairPage(ctx.parent, ctx.jobs);
+                          page->setObjectName(QStringLiteral("wheelchairTab"));
+                          page->run();  // the cornering-stiffness slalom of Figure 58: worth a look at once
+                          return page;
+                        },
+                        /*singleton=*/true, /*openAtStart=*/false, nullptr});
 }
 
 }  // namespace app
