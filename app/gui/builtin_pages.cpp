@@ -185,7 +185,8 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                         [](const PageContext& ctx) -> QWidget* {
                           auto* page = new views::StabilityPage(ctx.parent, ctx.jobs);
                           page->setObjectName(QStringLiteral("stabilityTab"));
-                          page->run();  // the benchmark bicycle, 0 to 10 m/s: worth a look at once
+                          page->setProjectModel(ctx.model);  // the forks the project keeps
+                          page->run();                       // the benchmark bicycle, 0 to 10 m/s: worth a look at once
                           return page;
                         },
                         /*singleton=*/true, /*openAtStart=*/false, nullptr});

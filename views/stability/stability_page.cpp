@@ -24,6 +24,7 @@
 #include "core/stability/compliant_fork_bicycle.h"
 #include "core/stability/motorcycle.h"
 #include "views/common/job_runner.h"
+#include "views/common/project_model.h"
 #include "views/plots/interactive_plot.h"
 
 namespace mozzi {
@@ -48,7 +49,8 @@ using Model = StabilityPage::Model;
 // The vehicle's system: the bicycle from the built-in or a file's parameters,
 // the motorcycle from a file (Sharp 1971 format); rigid: the same vehicle
 // with its fork rigid.
-core::Result<st::StabilitySystem> systemOf(Model model, const std::string& file, bool rigid) {
+core::Result<st::StabilitySystem> systemOf(Model model, const std::string& file, bool rigid,
+                                           const std::optional<st::KeptFork>& kept) {
   if (StabilityPage::isMotorcycle(model)) {
     if (file.empty())
       return core::makeError(core::ErrorCode::InvalidArgument,
@@ -58,9 +60,18 @@ core::Result<st::StabilitySystem> systemOf(Model model, const std::string& file,
     if (!p) return p.error();
     std::optional<st::LumpedForkModel> fork;
     if (!rigid && model != Model::Motorcycle) {
-      auto f = st::thesisLumpedForkModel(static_cast<int>(model) - static_cast<int>(Model::Motorcycle));
-      if (!f) return f.error();
-      fork = *f;
+      const int index = static_cast<int>(model) - static_cast<int>(Model::Motorcycle);  // 1 to 3
+      if (kept) {
+        const auto& m = kept->lumped.at(static_cast<std::size_t>(index - 1));
+        if (!m)
+          return core::makeError(core::ErrorCode::InvalidArgument,
+                                 "the kept fork '" + kept->name + "' has no model " + std::to_string(index), "fork");
+        fork = *m;
+      } else {
+        auto f = st::thesisLumpedForkModel(index);
+        if (!f) return f.error();
+        fork = *f;
+      }
     }
     auto m = st::MotorcycleModel::build(*p, fork);
     if (!m) return m.error();
@@ -72,17 +83,24 @@ core::Result<st::StabilitySystem> systemOf(Model model, const std::string& file,
     if (!loaded) return loaded.error();
     p = *loaded;
   }
-  core::Result<st::BicycleModel> m = rigid || model == Model::Benchmark ? st::benchmarkModel(p)
-                                     : model == Model::ForkBending
-                                         ? st::forkBendingModel(p, st::thesisSteelForkBending())
-                                         : st::forkTorsionModel(p, st::thesisSteelForkTorsion());
+  if (rigid || model == Model::Benchmark) {
+    auto m = st::benchmarkModel(p);
+    if (!m) return m.error();
+    return st::bicycleSystem(*m);
+  }
+  const char* missing = model == Model::ForkBending ? "bending" : "torsion";
+  if (kept && ((model == Model::ForkBending && !kept->bending) || (model == Model::ForkTorsion && !kept->torsion)))
+    return core::makeError(core::ErrorCode::InvalidArgument,
+                           "the kept fork '" + kept->name + "' has no " + missing + " stiffness", "fork");
+  auto m = model == Model::ForkBending ? st::forkBendingModel(p, kept ? *kept->bending : st::thesisSteelForkBending())
+                                       : st::forkTorsionModel(p, kept ? *kept->torsion : st::thesisSteelForkTorsion());
   if (!m) return m.error();
   return st::bicycleSystem(*m);
 }
 
 core::Result<st::StabilitySweep> sweepOf(Model model, const std::string& file, bool rigid,
-                                         const std::vector<double>& speeds) {
-  auto system = systemOf(model, file, rigid);
+                                         const std::optional<st::KeptFork>& kept, const std::vector<double>& speeds) {
+  auto system = systemOf(model, file, rigid, kept);
   if (!system) return system.error();
   return st::sweepSpeeds(*system, speeds);
 }
@@ -106,6 +124,10 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
   model_ = new QComboBox(this);
   model_->setObjectName(QStringLiteral("stabilityModel"));
   for (int i = 0; i < 7; ++i) model_->addItem(QString());
+  forkLabel_ = new QLabel(this);
+  fork_ = new QComboBox(this);
+  fork_->setObjectName(QStringLiteral("stabilityFork"));
+  fork_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
   compare_ = new QCheckBox(this);
   compare_->setObjectName(QStringLiteral("stabilityCompareRigid"));
   paramsLabel_ = new QLabel(this);
@@ -154,6 +176,8 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
   params->addWidget(paramsFile_, 1);
   params->addWidget(paramsButton_);
   params->addWidget(paramsClear_);
+  params->addWidget(forkLabel_);
+  params->addWidget(fork_);
   params->addWidget(compare_);
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(bar);
@@ -174,6 +198,7 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
 void StabilityPage::modelChanged() {
   const Model model = static_cast<Model>(model_->currentIndex());
   compare_->setEnabled(hasCompliantFork(model));
+  refreshForks();
   if (isMotorcycle(model) != isMotorcycle(shownFamily_)) {
     if (isMotorcycle(model))
       setSpeedRange(1.0, 60.0, 0.25);
@@ -196,6 +221,46 @@ void StabilityPage::chooseParameterFile() {
       QFileDialog::getOpenFileName(this, tr("Vehicle parameter file"), QFileInfo(parameterFile_).path(),
                                    tr("Parameter files (*.csv);;All files (*)"));
   if (!path.isEmpty()) setParameterFile(path);
+}
+
+void StabilityPage::setProjectModel(ProjectModel* model) {
+  project_ = model;
+  if (project_) {
+    connect(project_, &ProjectModel::analysesChanged, this, &StabilityPage::refreshForks);
+    connect(project_, &ProjectModel::projectChanged, this, &StabilityPage::refreshForks);
+  }
+  refreshForks();
+}
+
+// The Fork choice: the thesis's fork, then the project's kept forks of the
+// shown vehicle (motorcycle or bicycle); item data = 1 + index in kept_.
+void StabilityPage::refreshForks() {
+  kept_.clear();
+  if (project_ && project_->store()) {
+    if (auto forks = st::keptForks(*project_->store())) kept_ = std::move(*forks);
+  }
+  const Model model = static_cast<Model>(model_->currentIndex());
+  const int previous = fork_->currentData().toInt();
+  const QSignalBlocker block(fork_);
+  fork_->clear();
+  fork_->addItem(isMotorcycle(model) ? tr("thesis (Table 12)") : tr("thesis steel fork (§6.4, §6.5)"), 0);
+  for (std::size_t i = 0; i < kept_.size(); ++i)
+    if (kept_[i].motorcycle == isMotorcycle(model))
+      fork_->addItem(tr("kept: %1 (analysis %2)").arg(QString::fromStdString(kept_[i].name)).arg(kept_[i].analysisId),
+                     static_cast<int>(i + 1));
+  const int at = fork_->findData(previous);
+  fork_->setCurrentIndex(at >= 0 ? at : 0);
+  fork_->setEnabled(hasCompliantFork(model) && fork_->count() > 1);
+}
+
+bool StabilityPage::setForkChoice(int index) {
+  if (index < 0 || index >= fork_->count()) return false;
+  fork_->setCurrentIndex(index);
+  return true;
+}
+
+int StabilityPage::forkChoiceCount() const {
+  return fork_->count();
 }
 
 void StabilityPage::setCompareRigid(bool on) {
@@ -221,15 +286,18 @@ void StabilityPage::run() {
   const Model model = static_cast<Model>(model_->currentIndex());
   const bool compare = compare_->isChecked() && hasCompliantFork(model);
   const std::string file = parameterFile_.toStdString();
+  std::optional<st::KeptFork> kept;
+  const int keptIndex = fork_->currentData().toInt();
+  if (keptIndex > 0 && hasCompliantFork(model)) kept = kept_.at(static_cast<std::size_t>(keptIndex - 1));
   runButton_->setEnabled(false);
   summary_->setText(tr("Computing the eigenvalues against speed..."));
   const std::vector<double> grid = *speeds;
-  auto work = [model, compare, file, grid](JobProgress&) -> core::Result<Sweeps> {
-    auto main = sweepOf(model, file, false, grid);
+  auto work = [model, compare, file, kept, grid](JobProgress&) -> core::Result<Sweeps> {
+    auto main = sweepOf(model, file, false, kept, grid);
     if (!main) return main.error();
     Sweeps out{std::move(main).value(), std::nullopt};
     if (compare) {
-      auto rigid = sweepOf(model, file, true, grid);
+      auto rigid = sweepOf(model, file, true, std::nullopt, grid);
       if (!rigid) return rigid.error();
       out.rigid = std::move(rigid).value();
     }
@@ -375,6 +443,9 @@ void StabilityPage::retranslate() {
   model_->setItemText(5, tr("Motorcycle, lumped fork model 2 (thesis Table 12)"));
   model_->setItemText(6, tr("Motorcycle, lumped fork model 3 (thesis Table 12)"));
   compare_->setText(tr("Compare with the rigid fork"));
+  forkLabel_->setText(tr("Fork:"));
+  fork_->setToolTip(tr("The thesis's fork, or one the project keeps (Lumped Fork page)"));
+  refreshForks();
   compare_->setToolTip(tr("Sweep the same vehicle with a rigid fork too and draw it with open symbols"));
   paramsLabel_->setText(tr("Parameters:"));
   paramsButton_->setText(tr("From file..."));

@@ -20,6 +20,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/stability/kept_forks.h"
 #include "core/stability/mode_tracking.h"
 
 class QCheckBox;
@@ -34,6 +35,7 @@ namespace mozzi {
 namespace views {
 
 class JobRunner;
+class ProjectModel;
 
 class StabilityPage : public QWidget {
   Q_OBJECT
@@ -59,6 +61,12 @@ class StabilityPage : public QWidget {
   QString parameterFile() const { return parameterFile_; }
   // Also sweep the rigid-fork vehicle and draw it on the same plots.
   void setCompareRigid(bool on);
+  // The project whose kept forks (Lumped Fork page: analyses "lumped-fork",
+  // "bicycle-fork") the Fork choice offers beside the thesis's.
+  void setProjectModel(ProjectModel* model);
+  // 0: the thesis's fork; i > 0: the i-th kept fork the choice lists.
+  bool setForkChoice(int index);
+  int forkChoiceCount() const;
   // Starts the sweep (on the job runner when there is one, else at once).
   void run();
   // For tests and the log.
@@ -79,6 +87,7 @@ class StabilityPage : public QWidget {
   struct Sweeps;
   void present(core::Result<Sweeps> sweeps);
   void modelChanged();
+  void refreshForks();
   void chooseParameterFile();
   void drawSweep(const core::stability::StabilitySweep& sweep, bool rigid, QStringList& lines);
 
@@ -86,13 +95,17 @@ class StabilityPage : public QWidget {
   std::optional<core::stability::StabilitySweep> sweep_;
   std::optional<core::stability::StabilitySweep> rigidSweep_;
   QString parameterFile_;
-  Model shownFamily_ = Model::Benchmark;  // the family whose speed range is shown
+  ProjectModel* project_ = nullptr;
+  std::vector<core::stability::KeptFork> kept_;  // the project's, all families
+  Model shownFamily_ = Model::Benchmark;         // the family whose speed range is shown
   QComboBox* model_ = nullptr;
   QDoubleSpinBox* from_ = nullptr;
   QDoubleSpinBox* to_ = nullptr;
   QDoubleSpinBox* step_ = nullptr;
   QPushButton* runButton_ = nullptr;
   QCheckBox* compare_ = nullptr;
+  QLabel* forkLabel_ = nullptr;
+  QComboBox* fork_ = nullptr;
   QLabel* paramsLabel_ = nullptr;
   QLabel* paramsFile_ = nullptr;
   QPushButton* paramsButton_ = nullptr;

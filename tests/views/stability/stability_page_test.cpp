@@ -14,7 +14,13 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include <QTemporaryDir>
+#include <nlohmann/json.hpp>
+
+#include "core/stability/kept_forks.h"
+#include "core/stability/motorcycle.h"
 #include "views/common/job_runner.h"
+#include "views/common/project_model.h"
 
 using mozzi::views::StabilityPage;
 
@@ -140,6 +146,64 @@ class StabilityPageTest : public QObject {
     page.run();
     QVERIFY(finished.wait(60000));
     QVERIFY2(page.summaryText().contains(QStringLiteral("needs a parameter file")), qPrintable(page.summaryText()));
+  }
+
+  // A fork the project keeps (the Lumped Fork page's analysis, its JSON keys)
+  // replaces Table 12's: the page's critical speeds are those of core's
+  // motorcycle built with the kept model 1, exactly, and differ from the
+  // thesis fork's (the kept one is half as stiff).
+  void keptForkFromTheProject() {
+    QTemporaryDir dir;
+    mozzi::views::ProjectModel project;
+    QVERIFY(project.create(dir.filePath(QStringLiteral("forks.mozzi"))).ok());
+    auto specimen = project.addSpecimen(QStringLiteral("Fork A"), QStringLiteral("fork"));
+    QVERIFY(specimen.ok());
+    auto model = [](double k, double arm, double J, double c) {
+      return nlohmann::json{
+          {"stiffness_Nm_per_rad", k}, {"arm_m", arm}, {"inertia_kgm2", J}, {"damping_Nms_per_rad", c}};
+    };
+    mozzi::core::io::StoredAnalysis a;
+    a.specimenId = *specimen;
+    a.kind = "lumped-fork";
+    a.name = "Lumped fork models 1 to 3";
+    a.resultJson = nlohmann::json{{"inputs", {{"vibrating_mass_kg", 11.0}, {"wheel_centre_height_m", 0.265}}},
+                                  {"models",
+                                   {{"model1", model(14e3, 0.670, 2.085, 8.2)},
+                                    {"model2", model(78.4e3, 0.846, 3.995, 26.9)},
+                                    {"model3", model(28e3, 0.670, 1.426, 9.6)}}}}
+                       .dump();
+    QVERIFY(project.addAnalysis(a).ok());
+    const QString params =
+        QStringLiteral(MOZZI_SHARED_DATA_DIR) + QStringLiteral("/motorcycle/sharp1971-parameters.csv");
+    StabilityPage page(nullptr, nullptr);
+    page.setProjectModel(&project);
+    page.setModel(StabilityPage::Model::ForkBending);
+    QCOMPARE(page.forkChoiceCount(), 1);  // no bicycle fork kept
+    page.setModel(StabilityPage::Model::MotorcycleFork1);
+    QCOMPARE(page.forkChoiceCount(), 2);
+    page.setParameterFile(params);
+    page.setSpeedRange(1.0, 60.0, 0.25);
+    page.run();
+    QVERIFY(page.sweep().has_value());
+    const auto thesisEvents = page.sweep()->events;
+    QVERIFY(page.setForkChoice(1));
+    page.run();
+    QVERIFY2(page.sweep().has_value(), qPrintable(page.summaryText()));
+    namespace st = mozzi::core::stability;
+    const auto kept = st::keptForkFromJson(a.resultJson, a.kind).value();
+    const auto sharp = st::loadSharpParameters(params.toStdString()).value();
+    const auto direct = st::sweepSpeeds(st::MotorcycleModel::build(sharp, kept.lumped[0]).value().system(),
+                                        st::speedGrid(1.0, 60.0, 0.25).value())
+                            .value();
+    QCOMPARE(page.sweep()->events.size(), direct.events.size());
+    bool differs = thesisEvents.size() != direct.events.size();
+    for (size_t i = 0; i < direct.events.size(); ++i) {
+      QCOMPARE(page.sweep()->events[i].v, direct.events[i].v);
+      QCOMPARE(page.sweep()->events[i].mode, direct.events[i].mode);
+      differs = differs || (i < thesisEvents.size() && thesisEvents[i].v != direct.events[i].v);
+    }
+    QVERIFY(differs);
+    qInfo("kept fork: %s", qPrintable(page.summaryText()));
   }
 
  private:
