@@ -170,10 +170,9 @@ Result<RelaxationOverview> relaxationOverview(const io::ProjectStore& store, std
   return o;
 }
 
-std::string relaxationOverviewJson(const RelaxationOverview& o) {
-  using Json = nlohmann::json;
-  Json modes = Json::array();
-  for (const auto& m : o.ring.modes)
+nlohmann::json ringModelJson(const RingModel& r) {
+  nlohmann::json modes = nlohmann::json::array();
+  for (const auto& m : r.modes)
     modes.push_back({{"k", m.k},
                      {"name", m.name},
                      {"natural_frequency_hz", m.naturalFrequencyHz},
@@ -181,6 +180,11 @@ std::string relaxationOverviewJson(const RelaxationOverview& o) {
                      {"modal_mass_kg", m.modalMass},
                      {"modal_stiffness_n_per_m", m.modalStiffness},
                      {"damping_n_s_per_m", m.dampingCoefficient}});
+  return {{"ring_mass_kg", r.ringMass}, {"ring_radius_m", r.ringRadius}, {"modes", modes}};
+}
+
+std::string relaxationOverviewJson(const RelaxationOverview& o) {
+  using Json = nlohmann::json;
   auto cases = [](const std::vector<PredictionCase>& list) {
     Json out = Json::array();
     for (const auto& c : list) {
@@ -212,7 +216,7 @@ std::string relaxationOverviewJson(const RelaxationOverview& o) {
   }
   return Json{{"method", "thesis eq. 48-50, Table 16 ring, Table 17 contact half-length"},
               {"tyre", o.tyre.size},
-              {"ring", {{"ring_mass_kg", o.ring.ringMass}, {"ring_radius_m", o.ring.ringRadius}, {"modes", modes}}},
+              {"ring", ringModelJson(o.ring)},
               {"table17", cases(o.table17)},
               {"at_tests", cases(o.atTests)},
               {"measured", measured}}

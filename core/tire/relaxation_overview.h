@@ -18,6 +18,7 @@
 //   lambda, alpha   assumed friction, 1.5 deg (§5.4).
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -85,6 +86,10 @@ struct RelaxationOverview {
 // Errors: the specimen is unknown, stands for no thesis tyre, or the store
 // cannot be read; a prediction that cannot be made (eq. 49, m <= 0).
 Result<RelaxationOverview> relaxationOverview(const io::ProjectStore& store, std::int64_t specimenId);
+
+// A ring model as JSON (ring mass and radius, each mode's k, name, frequency,
+// zeta, m_k, C_k, c_k): `mozzi-cli tire ring --json` and the analysis below.
+nlohmann::json ringModelJson(const RingModel& ring);
 
 // The overview as an analysis record's result_json (kind "relaxation-prediction"):
 // the tyre, the ring modes, each prediction case with its contributions [m] and

@@ -14,6 +14,8 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include "views/screenshot.h"
+
 #include <QTemporaryDir>
 #include <nlohmann/json.hpp>
 
@@ -55,7 +57,7 @@ class StabilityPageTest : public QObject {
     for (QwtPlotItem* item : page.realPlot()->itemList(QwtPlotItem::Rtti_PlotMarker))
       verticals += item->isVisible() && static_cast<QwtPlotMarker*>(item)->lineStyle() == QwtPlotMarker::VLine;
     QCOMPARE(verticals, 2);
-    shot(page, QStringLiteral("stability_benchmark"));
+    QVERIFY(mozzi::views::test::saveShot(page, QStringLiteral("stability_benchmark")));
   }
 
   void compliantForkAddsItsMode() {
@@ -69,7 +71,7 @@ class StabilityPageTest : public QObject {
     QStringList names;
     for (QwtPlotItem* item : page.imaginaryPlot()->itemList(QwtPlotItem::Rtti_PlotCurve)) names << item->title().text();
     QVERIFY2(names.contains(QStringLiteral("fork bending")), qPrintable(names.join(QStringLiteral(", "))));
-    shot(page, QStringLiteral("stability_fork_bending"));
+    QVERIFY(mozzi::views::test::saveShot(page, QStringLiteral("stability_fork_bending")));
     // A bad range is said, not computed.
     page.setSpeedRange(5.0, 1.0, 0.1);
     page.run();
@@ -140,7 +142,7 @@ class StabilityPageTest : public QObject {
     for (QwtPlotItem* item : page.realPlot()->itemList(QwtPlotItem::Rtti_PlotCurve)) names << item->title().text();
     for (const char* mode : {"weave", "wobble", "capsize", "weave (rigid fork)", "wobble (rigid fork)"})
       QVERIFY2(names.contains(QLatin1String(mode)), qPrintable(names.join(QStringLiteral(", "))));
-    shot(page, QStringLiteral("stability_motorcycle_fork1_vs_rigid"));
+    QVERIFY(mozzi::views::test::saveShot(page, QStringLiteral("stability_motorcycle_fork1_vs_rigid")));
     // Without a parameter file the motorcycle says what it needs.
     page.setParameterFile(QString());
     page.run();
@@ -204,15 +206,6 @@ class StabilityPageTest : public QObject {
     }
     QVERIFY(differs);
     qInfo("kept fork: %s", qPrintable(page.summaryText()));
-  }
-
- private:
-  void shot(QWidget& w, const QString& name) {
-    const QDir dir(qEnvironmentVariable("MOZZI_SCREENSHOT_DIR", QDir::tempPath()));
-    QDir().mkpath(dir.path());
-    const QString scale = qEnvironmentVariable("QT_SCALE_FACTOR");
-    const QString file = scale.isEmpty() || scale == QLatin1String("1") ? name : name + QStringLiteral("_x") + scale;
-    QVERIFY(w.grab().save(dir.filePath(file + QStringLiteral(".png"))));
   }
 };
 

@@ -21,7 +21,9 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
+
 #include <nlohmann/json.hpp>
+#include "views/screenshot.h"
 
 #include "core/io/project_store.h"
 #include "core/tire/relaxation_prediction.h"
@@ -221,7 +223,7 @@ class RelaxationPageTest : public QObject {
       QVERIFY(std::abs(table->item(k, 2)->text().toDouble() / ring->modes[k].naturalFrequencyHz - 1.0) < 1e-3);
     }
     QVERIFY2(page.statusText().contains(QStringLiteral("2 bar: measured")), qPrintable(page.statusText()));
-    shot(page, QStringLiteral("tyre_relaxation"));
+    QVERIFY(mozzi::views::test::saveShot(page, QStringLiteral("tyre_relaxation")));
 
     // Kept in the project: an analysis whose JSON holds the bars' totals.
     QSignalSpy analyses(&model_, &ProjectModel::analysesChanged);
@@ -254,14 +256,6 @@ class RelaxationPageTest : public QObject {
   }
 
  private:
-  void shot(QWidget& w, const QString& name) {
-    const QDir dir(qEnvironmentVariable("MOZZI_SCREENSHOT_DIR", QDir::tempPath()));
-    QDir().mkpath(dir.path());
-    const QString scale = qEnvironmentVariable("QT_SCALE_FACTOR");
-    const QString file = scale.isEmpty() || scale == QLatin1String("1") ? name : name + QStringLiteral("_x") + scale;
-    QVERIFY(w.grab().save(dir.filePath(file + QStringLiteral(".png"))));
-  }
-
   QTemporaryDir dir_;
   ProjectModel model_;
   qint64 specimen_ = 0;

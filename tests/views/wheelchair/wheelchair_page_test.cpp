@@ -16,6 +16,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "views/screenshot.h"
+
 #include "core/stability/wheelchair_model.h"
 #include "views/common/job_runner.h"
 #include "views/panels/parameter_form.h"
@@ -104,7 +106,7 @@ class WheelchairPageTest : public QObject {
     qInfo("%d trajectory points checked against mozzi-cli wheelchair slalom --out", checked);
     // Figure 58: a stiffer tyre, a larger slalom (§7.3).
     QVERIFY2(page.summaryText().contains(QStringLiteral("lateral amplitude")), qPrintable(page.summaryText()));
-    shot(page, QStringLiteral("wheelchair_slalom_cornering"));
+    QVERIFY(mozzi::views::test::saveShot(page, QStringLiteral("wheelchair_slalom_cornering")));
   }
 
   void steadyTurningEndsOnTheSteadyTurn() {
@@ -131,17 +133,7 @@ class WheelchairPageTest : public QObject {
       QVERIFY(std::abs(end.slipRight - steady->slipRight) < 5e-3 * std::abs(steady->slipRight) + 1e-9);
     }
     QVERIFY2(page.summaryText().contains(QStringLiteral("C_M × 2: radius")), qPrintable(page.summaryText()));
-    shot(page, QStringLiteral("wheelchair_steady_aligning"));
-  }
-
- private:
-  void shot(QWidget& w, const QString& name) {
-    QTest::qWait(50);  // the layout takes the new texts' sizes
-    const QDir dir(qEnvironmentVariable("MOZZI_SCREENSHOT_DIR", QDir::tempPath()));
-    QDir().mkpath(dir.path());
-    const QString scale = qEnvironmentVariable("QT_SCALE_FACTOR");
-    const QString file = scale.isEmpty() || scale == QLatin1String("1") ? name : name + QStringLiteral("_x") + scale;
-    QVERIFY(w.grab().save(dir.filePath(file + QStringLiteral(".png"))));
+    QVERIFY(mozzi::views::test::saveShot(page, QStringLiteral("wheelchair_steady_aligning")));
   }
 };
 
