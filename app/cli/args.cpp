@@ -21,14 +21,6 @@ std::string numberText(double v) {
   return buf;
 }
 
-// The text as the user typed it, shortened for a message (a 1 GB argument
-// must not end up in an error message).
-std::string quoted(const std::string& text) {
-  constexpr std::size_t kShown = 40;
-  if (text.size() <= kShown) return "'" + text + "'";
-  return "'" + text.substr(0, kShown) + "...' (" + std::to_string(text.size()) + " characters)";
-}
-
 std::vector<std::string> split(const std::string& text, char sep) {
   std::vector<std::string> out;
   std::string item;
@@ -105,11 +97,17 @@ std::string OptionSpec::helpText() const {
   return text.str();
 }
 
+std::string quotedArg(const std::string& text) {
+  constexpr std::size_t kShown = 40;
+  if (text.size() <= kShown) return "'" + text + "'";
+  return "'" + text.substr(0, kShown) + "...' (" + std::to_string(text.size()) + " characters)";
+}
+
 core::Result<double> parseInRange(const std::string& text, const NumberRange& range, const std::string& what) {
   if (text.empty()) return makeError(ErrorCode::InvalidArgument, what + " is empty; valid: " + range.text(), what);
   if (text.size() > 64) {
     return makeError(ErrorCode::InvalidArgument,
-                     what + " is not a number: " + quoted(text) + "; valid: " + range.text(), what);
+                     what + " is not a number: " + quotedArg(text) + "; valid: " + range.text(), what);
   }
   const char* begin = text.c_str();
   while (*begin == ' ' || *begin == '\t') ++begin;
@@ -119,13 +117,13 @@ core::Result<double> parseInRange(const std::string& text, const NumberRange& ra
   while (end && (*end == ' ' || *end == '\t' || *end == '\r')) ++end;
   if (end == begin || end != text.c_str() + text.size()) {
     return makeError(ErrorCode::InvalidArgument,
-                     what + " is not a number: " + quoted(text) + "; valid: " + range.text(), what);
+                     what + " is not a number: " + quotedArg(text) + "; valid: " + range.text(), what);
   }
   if (!std::isfinite(v) || errno == ERANGE || std::fpclassify(v) == FP_SUBNORMAL) {
     // ERANGE: 1e400 overflows to inf, 1e-320 underflows to a subnormal or 0;
     // no quantity here is meant that way.
     return makeError(ErrorCode::InvalidArgument,
-                     what + " = " + quoted(text) + " is " +
+                     what + " = " + quotedArg(text) + " is " +
                          (std::isnan(v)       ? "not a number"
                           : !std::isfinite(v) ? "infinite"
                           : std::abs(v) > 1.0 ? "beyond the range of a double"
@@ -155,7 +153,8 @@ core::Result<ParsedArgs> ParsedArgs::parse(const std::vector<std::string>& args,
                        what);
     };
     if (onlyPositional || arg.size() < 2 || arg.compare(0, 2, "--") != 0) {
-      if (arg.size() > kMaxArgumentLength) return tooLong("argument " + std::to_string(i + 1) + " " + quoted(arg), arg);
+      if (arg.size() > kMaxArgumentLength)
+        return tooLong("argument " + std::to_string(i + 1) + " " + quotedArg(arg), arg);
       parsed.positional_.push_back(arg);
       continue;
     }
@@ -169,7 +168,7 @@ core::Result<ParsedArgs> ParsedArgs::parse(const std::vector<std::string>& args,
       name = arg.substr(0, eq);
       inlineValue = arg.substr(eq + 1);
     }
-    if (name.size() > 64) return makeError(ErrorCode::ParseError, "unknown option " + quoted(name), quoted(name));
+    if (name.size() > 64) return makeError(ErrorCode::ParseError, "unknown option " + quotedArg(name), quotedArg(name));
     if (spec.flags.count(name)) {
       if (inlineValue) return makeError(ErrorCode::ParseError, "option " + name + " takes no value", arg);
       parsed.flags_.insert(name);
@@ -185,7 +184,7 @@ core::Result<ParsedArgs> ParsedArgs::parse(const std::vector<std::string>& args,
         return tooLong("the value of option " + name, parsed.values_[name]);
       }
     } else {
-      return makeError(ErrorCode::ParseError, "unknown option " + quoted(name), name);
+      return makeError(ErrorCode::ParseError, "unknown option " + quotedArg(name), name);
     }
   }
   // Numeric options: every value checked against its declared range now,
@@ -213,7 +212,7 @@ core::Result<ParsedArgs> ParsedArgs::parse(const std::vector<std::string>& args,
         if (fields.size() != option.fields.size()) {
           return makeError(ErrorCode::InvalidArgument,
                            "option " + option.name + " needs " + form + (option.repeated ? "[,...]" : "") + ", got " +
-                               quoted(option.repeated ? tuples[t] : it->second),
+                               quotedArg(option.repeated ? tuples[t] : it->second),
                            option.name);
         }
         for (std::size_t f = 0; f < fields.size(); ++f) {
@@ -245,7 +244,7 @@ core::Result<std::optional<double>> ParsedArgs::number(const std::string& name) 
   char* end = nullptr;
   const double v = std::strtod(text->c_str(), &end);
   if (text->empty() || end != text->c_str() + text->size() || !std::isfinite(v)) {
-    return makeError(ErrorCode::InvalidArgument, "option " + name + " needs a finite number, got " + quoted(*text),
+    return makeError(ErrorCode::InvalidArgument, "option " + name + " needs a finite number, got " + quotedArg(*text),
                      name);
   }
   return std::optional<double>{v};

@@ -121,6 +121,10 @@ class ParsedArgs {
   std::map<std::string, std::vector<double>> numbers_;
 };
 
+// The text as the user typed it, quoted and shortened for a message (a 1 GB
+// argument must not end up in an error message).
+std::string quotedArg(const std::string& text);
+
 // Exit code for an error from ParsedArgs::parse (see there).
 int exitCodeFor(const core::Error& e);
 

@@ -27,6 +27,9 @@
 #include "views/scene/scene_view.h"
 #include "views/scene/twist_axes_page.h"
 #include "views/stability/stability_page.h"
+// Stiffness tables and lumped forks (issue 22, branch stiffpages).
+#include "views/stiffness/lumped_fork_page.h"
+#include "views/stiffness/stiffness_table_page.h"
 #include "views/tyre/relaxation_page.h"
 #include "views/wheelchair/wheelchair_page.h"
 
@@ -291,6 +294,42 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                           if (ctx.item.kind == RecordKind::RigTest)
                             static_cast<views::TwistAxesPage*>(page)->showRigTest(ctx.item.id);
                         }});
+
+  // --- Stiffness and forks (issue 22; views/stiffness) -----------------------------
+  // The stiffness tables of every static rig test side by side with the
+  // thesis's, a rig test's third page; the lumped fork models from the Tools menu.
+  registry.add(PageSpec{QStringLiteral("stiffness-tables"), QT_TRANSLATE_NOOP("Pages", "Stiffness"),
+                        QT_TRANSLATE_NOOP("Pages",
+                                          "Stiffness tables of the stored static rig tests, side by side across "
+                                          "specimens, with the thesis's values"),
+                        QString(), PageMenu::Pages,
+                        [](const ProjectItem& item) { return item.kind == RecordKind::RigTest; },
+                        [](const PageContext& ctx) -> QWidget* {
+                          auto* page = new views::StiffnessTablePage(ctx);
+                          page->setObjectName(QStringLiteral("stiffnessTablesTab"));
+                          const auto log = ctx.log;
+                          if (log) QObject::connect(page, &views::StiffnessTablePage::message, page, log);
+                          if (ctx.item.kind == RecordKind::RigTest) page->showRigTest(ctx.item.id);
+                          return page;
+                        },
+                        /*singleton=*/true, /*openAtStart=*/false,
+                        [](QWidget* page, const PageContext& ctx) {
+                          if (ctx.item.kind == RecordKind::RigTest)
+                            static_cast<views::StiffnessTablePage*>(page)->showRigTest(ctx.item.id);
+                        }});
+  registry.add(PageSpec{QStringLiteral("lumped-fork"), QT_TRANSLATE_NOOP("Pages", "Lumped Fork"),
+                        QT_TRANSLATE_NOOP("Pages",
+                                          "Lumped fork models 1 to 3 against the measured modes, and the "
+                                          "bicycle-fork stiffness and damping"),
+                        QString(), PageMenu::Tools, nullptr,
+                        [](const PageContext& ctx) -> QWidget* {
+                          auto* page = new views::LumpedForkPage(ctx);
+                          page->setObjectName(QStringLiteral("lumpedForkTab"));
+                          const auto log = ctx.log;
+                          if (log) QObject::connect(page, &views::LumpedForkPage::message, page, log);
+                          return page;
+                        },
+                        /*singleton=*/true, /*openAtStart=*/false, nullptr});
 
   // --- Tyres and wheelchairs (issue 22, views/tyre) ---------------------------
   // Tyre relaxation (thesis §5.4, Figure 43): a tyre test's second page (the

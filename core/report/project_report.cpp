@@ -1,6 +1,7 @@
 #include "core/report/project_report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -177,6 +178,61 @@ Result<bool> modalSection(const Context& c, Section& s) {
   return !s.blocks.empty();
 }
 
+// Analyses the Lumped Fork page keeps (kind "lumped-fork": the three lumped
+// models of thesis §4.2, Table 12; "bicycle-fork": §6.4, §6.5), with the keys
+// of `mozzi-cli fork ... --json`. They belong with the stiffness results, not
+// with the gap diagnoses.
+bool isForkModelAnalysis(const io::StoredAnalysis& a) {
+  return a.kind == "lumped-fork" || a.kind == "bicycle-fork";
+}
+
+Result<void> forkModelBlocks(const Context& c, Section& s) {
+  auto analyses = c.store.analyses();
+  if (!analyses) return analyses.error();
+  auto number = [](const nlohmann::json& j, const char* key) {
+    return j.is_object() && j.contains(key) && j[key].is_number() ? j[key].get<double>() : std::nan("");
+  };
+  for (const auto& a : *analyses) {
+    if (!c.wanted(a.specimenId) || !isForkModelAnalysis(a)) continue;
+    const auto json = nlohmann::json::parse(a.resultJson, nullptr, false);
+    s.blocks.push_back(Heading{a.name.empty() ? "Analysis " + std::to_string(a.id) : a.name});
+    Table t;
+    if (a.kind == "lumped-fork") {
+      t.caption = "Lumped fork models (thesis §4.2, Table 12)";
+      t.headers = {"Model", "k", "L", "J", "Pure moment", "f_n", "c", "zeta"};
+      t.units = {"", "N m/rad", "m", "kg m^2", "kg m^2", "Hz", "N m s/rad", ""};
+      const auto models = json.is_object() ? json.value("models", nlohmann::json::object()) : nlohmann::json();
+      for (int i = 1; i <= 3; ++i) {
+        const auto m =
+            models.is_object() ? models.value("model" + std::to_string(i), nlohmann::json()) : nlohmann::json();
+        t.rows.push_back({textCell(std::to_string(i)), numberCell(number(m, "stiffness_Nm_per_rad")),
+                          numberCell(number(m, "arm_m")), numberCell(number(m, "inertia_kgm2")),
+                          numberCell(number(m, "pure_moment_kgm2")), numberCell(number(m, "frequency_Hz")),
+                          numberCell(number(m, "damping_Nms_per_rad")), numberCell(number(m, "zeta"))});
+      }
+    } else {
+      t.caption = "Bicycle fork stiffness and damping (thesis §6.4, §6.5)";
+      t.headers = {"Quantity", "Value", "Unit"};
+      t.units = {"", "", ""};
+      const auto tors = json.is_object() ? json.value("torsion", nlohmann::json()) : nlohmann::json();
+      const auto bend = json.is_object() ? json.value("bending", nlohmann::json()) : nlohmann::json();
+      const struct {
+        const char* name;
+        double value;
+        const char* unit;
+      } rows[] = {{"torsion stiffness with wheel", number(tors, "stiffness_with_wheel_Nm_per_rad"), "N m/rad"},
+                  {"torsion stiffness, fork alone", number(tors, "stiffness_alone_Nm_per_rad"), "N m/rad"},
+                  {"torsion damping", number(tors, "damping_Nms_per_rad"), "N m s/rad"},
+                  {"bending arm h_W", number(bend, "bend_arm_hW_m"), "m"},
+                  {"bending stiffness", number(bend, "stiffness_Nm_per_rad"), "N m/rad"},
+                  {"bending damping", number(bend, "damping_Nms_per_rad"), "N m s/rad"}};
+      for (const auto& r : rows) t.rows.push_back({textCell(r.name), numberCell(r.value), textCell(r.unit)});
+    }
+    s.blocks.push_back(t);
+  }
+  return {};
+}
+
 Result<bool> stiffnessSection(const Context& c, Section& s) {
   auto tests = c.store.rigTests();
   if (!tests) return tests.error();
@@ -229,6 +285,7 @@ Result<bool> stiffnessSection(const Context& c, Section& s) {
       s.blocks.push_back(t);
     }
   }
+  if (auto r = forkModelBlocks(c, s); !r) return r.error();
   return !s.blocks.empty();
 }
 
@@ -266,7 +323,7 @@ Result<bool> gapSection(const Context& c, Section& s) {
   auto analyses = c.store.analyses();
   if (!analyses) return analyses.error();
   for (const auto& a : *analyses) {
-    if (!c.wanted(a.specimenId)) continue;
+    if (!c.wanted(a.specimenId) || isForkModelAnalysis(a)) continue;
     for (auto& block : storedAnalysisBlocks(a)) s.blocks.push_back(std::move(block));
   }
   return !s.blocks.empty();

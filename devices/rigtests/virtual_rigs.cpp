@@ -8,9 +8,7 @@
 
 namespace mozzi::devices::rigtests {
 
-namespace {
-
-const sim::SpecimenEntry* entryForName(const std::string& name) {
+const sim::SpecimenEntry* catalogueEntryForName(const std::string& name) {
   for (const auto& e : sim::specimenCatalogue())
     if (e.name == name) return &e;
   for (const auto& e : sim::specimenCatalogue())
@@ -25,8 +23,6 @@ const sim::SpecimenEntry* entryForName(const std::string& name) {
   return nullptr;
 }
 
-}  // namespace
-
 core::Result<SpecimenChoice> resolveSpecimen(core::io::ProjectStore& store, const std::string& text) {
   auto summary = store.summary();
   if (!summary) return summary.error();
@@ -34,7 +30,7 @@ core::Result<SpecimenChoice> resolveSpecimen(core::io::ProjectStore& store, cons
   if (const auto* e = sim::findSpecimen(text)) {
     c.catalogueKey = e->key;
     for (const auto& s : summary->specimens) {
-      const auto* m = entryForName(s.name);
+      const auto* m = catalogueEntryForName(s.name);
       if (m && m->key == e->key) {
         c.specimenId = s.id;
         c.projectName = s.name;
@@ -52,7 +48,7 @@ core::Result<SpecimenChoice> resolveSpecimen(core::io::ProjectStore& store, cons
   }
   for (const auto& s : summary->specimens) {
     if (s.name != text) continue;
-    const auto* m = entryForName(s.name);
+    const auto* m = catalogueEntryForName(s.name);
     if (!m)
       return core::makeError(core::ErrorCode::NotFound,
                              "the project specimen '" + text +

@@ -10,6 +10,9 @@
 namespace mozzi::core::io {
 class ProjectStore;
 }
+namespace mozzi::devices::sim {
+struct SpecimenEntry;
+}
 
 namespace mozzi::devices::rigtests {
 
@@ -28,6 +31,11 @@ struct SpecimenChoice {
 // and sources) unless `store` is read-only. Errors name the text and list
 // where the keys are.
 core::Result<SpecimenChoice> resolveSpecimen(core::io::ProjectStore& store, const std::string& text);
+
+// The virtual specimen a project specimen's name stands for, by the rule
+// above (the entry's name, the part before its comma, a tyre's size);
+// nullptr when none.
+const sim::SpecimenEntry* catalogueEntryForName(const std::string& specimenName);
 
 // The demo project's rig and tyre tests (issue 20): a static and a dynamic
 // test of fork A with wheel and of frame A (front-constrained) on the

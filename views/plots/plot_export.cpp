@@ -31,14 +31,6 @@ class PlotExport {
   Q_DECLARE_TR_FUNCTIONS(mozzi::views::PlotExport)
 };
 
-QString csvField(const QString& text) {
-  if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"')) && !text.contains(QLatin1Char('\n')))
-    return text;
-  QString quoted = text;
-  quoted.replace(QLatin1Char('"'), QStringLiteral("\"\""));
-  return QLatin1Char('"') + quoted + QLatin1Char('"');
-}
-
 std::vector<const QwtPlotCurve*> visibleCurves(const QwtPlot* plot) {
   std::vector<const QwtPlotCurve*> curves;
   for (const QwtPlotItem* item : plot->itemList(QwtPlotItem::Rtti_PlotCurve)) {
@@ -48,6 +40,14 @@ std::vector<const QwtPlotCurve*> visibleCurves(const QwtPlot* plot) {
 }
 
 }  // namespace
+
+QString csvField(const QString& text) {
+  if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"')) && !text.contains(QLatin1Char('\n')))
+    return text;
+  QString quoted = text;
+  quoted.replace(QLatin1Char('"'), QStringLiteral("\"\""));
+  return QLatin1Char('"') + quoted + QLatin1Char('"');
+}
 
 QString plotCsv(const QwtPlot* plot) {
   const auto curves = visibleCurves(plot);

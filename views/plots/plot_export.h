@@ -30,6 +30,10 @@ QString exportPlot(QwtPlot* plot, const QString& path, const PlotExportOptions& 
 // The CSV text exportPlot writes for `plot`.
 QString plotCsv(const QwtPlot* plot);
 
+// One CSV field: quoted (with doubled quotes) when it holds a comma, a quote
+// or a line break; as it is otherwise. For pages that export a table.
+QString csvField(const QString& text);
+
 // Adds an "Export Plot..." action to the plot's context menu (right click on
 // the plot) that asks for a file and calls exportPlot(); returns the action so
 // a page can put it on a tool bar too.

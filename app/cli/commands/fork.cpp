@@ -6,6 +6,7 @@
 #include "app/cli/args.h"
 #include "app/cli/command.h"
 #include "core/stiffness/fork_models.h"
+#include "devices/rigtests/fork_model_inputs.h"
 
 namespace mozzi::cli {
 namespace {
@@ -19,16 +20,6 @@ const char* kUsage =
     "                             --hub-length M --tip-distance M [--max-bend-arm M]\n"
     "                             --f-tors-wheel HZ --eta-tors-wheel ETA --f-tors-alone HZ [--f-tors-alone2 HZ]\n"
     "                             --f-bend-wheel HZ --eta-bend-wheel ETA --f-bend-alone HZ [--json]\n";
-
-nlohmann::json modelJson(const st::LumpedModel& m) {
-  return {{"stiffness_Nm_per_rad", m.stiffness},
-          {"arm_m", m.arm},
-          {"inertia_kgm2", m.inertia},
-          {"pure_moment_kgm2", m.pureMoment},
-          {"frequency_Hz", m.frequencyHz},
-          {"damping_Nms_per_rad", m.damping},
-          {"zeta", m.zeta}};
-}
 
 // The option table: a motorcycle or bicycle fork (thesis §4.2 Table 12,
 // §6.4-§6.5 Tables 19-21 are well inside).
@@ -104,11 +95,7 @@ int forkCommand(const std::vector<std::string>& args, std::ostream& out, std::os
       return kExitFailure;
     }
     if (json) {
-      out << nlohmann::json{{"model1", modelJson(r->model1)},
-                            {"model2", modelJson(r->model2)},
-                            {"model3", modelJson(r->model3)}}
-                 .dump(2)
-          << "\n";
+      out << devices::rigtests::lumpedModelsJson(*r).dump(2) << "\n";
     } else {
       out << "model  k_Nm_per_rad  L_m  J_kgm2  pure_moment_kgm2  f_n_Hz  c_Nms_per_rad  zeta\n";
       int i = 1;

@@ -1,5 +1,6 @@
 // mozzi-cli project: create, inspect, demo and export projects
 // (docs/cli/project.md).
+#include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -11,6 +12,7 @@
 #include "core/io/csv/csv_exchange.h"
 #include "core/io/project_store.h"
 #include "core/io/uff/uff.h"
+#include "core/io/uff_import.h"
 #include "devices/sim/virtual_specimens.h"
 
 namespace mozzi::cli {
@@ -19,12 +21,13 @@ namespace {
 constexpr const char* kUsage =
     "Usage: mozzi-cli project info FILE.mozzi [--json]\n"
     "       mozzi-cli project new|demo FILE.mozzi\n"
+    "       mozzi-cli project import FILE.mozzi IN.uff [--specimen NAME]\n"
     "       mozzi-cli project check FILE.mozzi [--json]\n"
     "       mozzi-cli project export FILE.mozzi --uff OUT.uff [--binary] [--frf-set ID]\n"
     "       mozzi-cli project export FILE.mozzi --csv OUT.csv [--frf-set ID]\n";
 
 // The option table (docs/cli.md, ranges): --frf-set is a row id.
-const OptionSpec kSpec{{"--uff", "--csv"},
+const OptionSpec kSpec{{"--uff", "--csv", "--specimen"},
                        {"--json", "--binary"},
                        {{"--frf-set", wholeNumber(1, 9007199254740992.0), "FRF set id (see 'project info')"}},
                        {"--uff", "--csv"}};
@@ -288,6 +291,39 @@ int exportCsv(const core::io::ProjectStore& store, const std::string& file, cons
   return kExitOk;
 }
 
+// Brings a Universal File into the project (core/io/uff_import.h): its mesh,
+// FRF sets and modal results go to the specimen named by --specimen, created
+// when the project has none of that name (default: the file's stem). The
+// import converts everything before it writes, so a file that cannot be read
+// leaves the project as it was.
+int importFile(const std::string& file, const std::string& uffPath, std::optional<std::string> specimenName,
+               std::ostream& out, std::ostream& err) {
+  auto store = core::io::ProjectStore::open(file);
+  if (!store) return fail(err, "import", store.error());
+  auto summary = store->summary();
+  if (!summary) return fail(err, "import", summary.error());
+  const std::string name = specimenName.value_or(std::filesystem::path(uffPath).stem().string());
+  std::int64_t specimenId = 0;
+  for (const auto& sp : summary->specimens) {
+    if (sp.name == name) specimenId = sp.id;
+  }
+  const bool created = specimenId == 0;
+  if (created) {
+    auto id = store->addSpecimen(name, "imported", "imported from " + uffPath);
+    if (!id) return fail(err, "import", id.error());
+    specimenId = *id;
+  }
+  auto report = core::io::importUff(*store, uffPath, specimenId);
+  if (!report) return fail(err, "import", report.error());
+  out << "imported " << uffPath << " into specimen '" << name << "'" << (created ? " (new)" : "") << ": "
+      << report->nodes << " nodes, " << report->lines << " lines, " << report->frfPairs << " FRFs"
+      << (report->frfSetId ? " (FRF set " + std::to_string(*report->frfSetId) + ")" : "") << ", " << report->modes
+      << " modes" << (report->modalResultId ? " (modal result " + std::to_string(*report->modalResultId) + ")" : "")
+      << "\n";
+  for (const auto& note : report->notes) out << "  " << note << "\n";
+  return kExitOk;
+}
+
 // Reads every record back and verifies its checksum (docs/cli/project.md).
 // Exit 0 when nothing is damaged, 1 when something is (each damaged record
 // named) or the file cannot be opened at all.
@@ -330,12 +366,16 @@ int projectCommand(const std::vector<std::string>& args, std::ostream& out, std:
     if (exitCodeFor(parsed.error()) == kExitUsage) err << kUsage;
     return exitCodeFor(parsed.error());
   }
-  if (parsed->positional().size() != 2) {
-    err << "mozzi-cli project: expected a subcommand and a file\n" << kUsage;
+  const auto& pos = parsed->positional();
+  const bool isImport = !pos.empty() && pos[0] == "import";
+  if (pos.size() != (isImport ? 3u : 2u)) {
+    err << "mozzi-cli project: expected " << (isImport ? "a project and a UFF file" : "a subcommand and a file") << "\n"
+        << kUsage;
     return kExitUsage;
   }
-  const std::string& sub = parsed->positional()[0];
-  const std::string& file = parsed->positional()[1];
+  const std::string& sub = pos[0];
+  const std::string& file = pos[1];
+  if (isImport) return importFile(file, pos[2], parsed->value("--specimen"), out, err);
   if (sub == "new") {
     auto store = core::io::ProjectStore::create(file, buildinfo::kMozziVersion);
     if (!store) return fail(err, "new", store.error());
@@ -382,11 +422,13 @@ int projectCommand(const std::vector<std::string>& args, std::ostream& out, std:
   return kExitUsage;
 }
 
-const CommandRegistrar kRegistrar({"project",
-                                   "info|new|demo|check|export FILE.mozzi [--json] [--uff OUT.uff | --csv OUT.csv]",
-                                   "Create a project (empty or the demo), summarise or check it, or export its FRFs "
-                                   "and modes",
-                                   projectCommand, &kSpec});
+const CommandRegistrar kRegistrar(
+    {"project",
+     "info|new|demo|check|export FILE.mozzi [--json] [--uff OUT.uff | --csv OUT.csv] | import FILE.mozzi IN.uff "
+     "[--specimen NAME]",
+     "Create a project (empty or the demo), summarise or check it, import a UFF into it, "
+     "or export its FRFs and modes",
+     projectCommand, &kSpec});
 
 }  // namespace
 }  // namespace mozzi::cli
