@@ -21,6 +21,7 @@
 
 #include "core/stability/kept_forks.h"
 #include "core/stability/motorcycle.h"
+#include "devices/rigtests/fork_model_inputs.h"
 #include "views/common/job_runner.h"
 #include "views/common/project_model.h"
 
@@ -206,6 +207,38 @@ class StabilityPageTest : public QObject {
     }
     QVERIFY(differs);
     qInfo("kept fork: %s", qPrintable(page.summaryText()));
+  }
+
+  // The JSON the Lumped Fork page keeps (its own helpers, on its default
+  // inputs: thesis Table 12's) reads back into the stability model's lumped
+  // forks: k, c, J, L as computed, M the vibrating mass, the mass arm L less
+  // the wheel-centre height.
+  void keptForkReadsTheLumpedForkPagesJson() {
+    namespace rt = mozzi::devices::rigtests;
+    namespace st = mozzi::core::stability;
+    const auto specs = rt::lumpedForkParameterSpecs();
+    mozzi::devices::ParameterMap defaults;
+    for (const auto& spec : specs) defaults[spec.key] = spec.defaultValue;
+    const auto input = rt::lumpedForkInput(defaults);
+    const auto models = mozzi::core::stiffness::forkLumpedModels(input);
+    QVERIFY(models.ok());
+    const nlohmann::json j{
+        {"fork", "motorcycle"}, {"inputs", rt::lumpedInputJson(input)}, {"models", rt::lumpedModelsJson(*models)}};
+    const auto kept = st::keptForkFromJson(j.dump(), "lumped-fork");
+    QVERIFY2(kept.ok(), kept.ok() ? "" : kept.error().describe().c_str());
+    const mozzi::core::stiffness::LumpedModel* computed[] = {&models->model1, &models->model2, &models->model3};
+    for (int i = 0; i < 3; ++i) {
+      const auto& m = kept->lumped[static_cast<size_t>(i)];
+      QVERIFY(m.has_value());
+      QCOMPARE(m->stiffness, computed[i]->stiffness);
+      QCOMPARE(m->damping, computed[i]->damping);
+      QCOMPARE(m->inertia, computed[i]->inertia);
+      QCOMPARE(m->axisFromContact, computed[i]->arm);
+      QCOMPARE(m->mass, input.vibratingMass);
+      QCOMPARE(m->massArm, computed[i]->arm - input.wheelCentreHeight);
+    }
+    // Table 12's model 1 arm: 0.670 - 0.265 = 0.405 m, as thesisLumpedForkModel.
+    QVERIFY(std::abs(kept->lumped[0]->massArm - st::thesisLumpedForkModel(1).value().massArm) < 1e-12);
   }
 };
 
