@@ -30,6 +30,8 @@
 // Stiffness tables and lumped forks (issue 22, branch stiffpages).
 #include "views/stiffness/lumped_fork_page.h"
 #include "views/stiffness/stiffness_table_page.h"
+#include "views/tyre/relaxation_page.h"
+#include "views/wheelchair/wheelchair_page.h"
 
 namespace mozzi {
 namespace app {
@@ -186,7 +188,8 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                         [](const PageContext& ctx) -> QWidget* {
                           auto* page = new views::StabilityPage(ctx.parent, ctx.jobs);
                           page->setObjectName(QStringLiteral("stabilityTab"));
-                          page->run();  // the benchmark bicycle, 0 to 10 m/s: worth a look at once
+                          page->setProjectModel(ctx.model);  // the forks the project keeps
+                          page->run();                       // the benchmark bicycle, 0 to 10 m/s: worth a look at once
                           return page;
                         },
                         /*singleton=*/true, /*openAtStart=*/false, nullptr});
@@ -324,6 +327,41 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                           page->setObjectName(QStringLiteral("lumpedForkTab"));
                           const auto log = ctx.log;
                           if (log) QObject::connect(page, &views::LumpedForkPage::message, page, log);
+                          return page;
+                        },
+                        /*singleton=*/true, /*openAtStart=*/false, nullptr});
+
+  // --- Tyres and wheelchairs (issue 22, views/tyre) ---------------------------
+  // Tyre relaxation (thesis §5.4, Figure 43): a tyre test's second page (the
+  // Tyre Tester is its default), or from the Pages menu on the project's tyres.
+  registry.add(PageSpec{QStringLiteral("tyre-relaxation"), QT_TRANSLATE_NOOP("Pages", "Tyre Relaxation"),
+                        QT_TRANSLATE_NOOP("Pages",
+                                          "Relaxation length against frequency and pressure, the ring model's "
+                                          "prediction and its contributions, the rigid-ring modes"),
+                        QString(), PageMenu::Pages,
+                        [](const ProjectItem& item) { return item.kind == RecordKind::TyreTest; },
+                        [](const PageContext& ctx) -> QWidget* {
+                          auto* page = new views::RelaxationPage(ctx);
+                          page->setObjectName(QStringLiteral("tyreRelaxationTab"));
+                          const auto log = ctx.log;
+                          if (log) QObject::connect(page, &views::RelaxationPage::message, page, log);
+                          return page;
+                        },
+                        /*singleton=*/true, /*openAtStart=*/false,
+                        [](QWidget* page, const PageContext& ctx) {
+                          if (ctx.item.kind == RecordKind::TyreTest)
+                            static_cast<views::RelaxationPage*>(page)->showTyreTest(ctx.item.id);
+                        }});
+  // Wheelchair manoeuvres (thesis §7.2 to §7.4, Figures 57 to 60).
+  registry.add(PageSpec{QStringLiteral("wheelchair"), QT_TRANSLATE_NOOP("Pages", "Wheelchair"),
+                        QT_TRANSLATE_NOOP("Pages",
+                                          "Slalom and steady-turning trajectories and rear slip angles of the "
+                                          "wheelchair model, with the tyre stiffness studies"),
+                        QString(), PageMenu::Tools, nullptr,
+                        [](const PageContext& ctx) -> QWidget* {
+                          auto* page = new views::WheelchairPage(ctx.parent, ctx.jobs);
+                          page->setObjectName(QStringLiteral("wheelchairTab"));
+                          page->run();  // the cornering-stiffness slalom of Figure 58: worth a look at once
                           return page;
                         },
                         /*singleton=*/true, /*openAtStart=*/false, nullptr});

@@ -113,6 +113,7 @@ Result<MotorcycleModel> MotorcycleModel::build(const SharpParameters& p, const s
   auto lin = linearize(t);
   if (!lin) return lin.error();
   m.lin_ = *lin;
+  m.massLu_ = Eigen::PartialPivLU<Matrix>(m.lin_.Mfull);  // speed-free: factored once for every speed
   m.coordinates_ = t.coordinates;
   const int n = lin->n, N = n + 2;
   m.jointDamping_ = Matrix::Zero(N, N);
@@ -135,10 +136,10 @@ Result<Matrix> MotorcycleModel::stateMatrix(double u) const {
   Matrix F = Matrix::Zero(N, S);
   F.block(2, iq, n, n) = -(p_.g * lin_.K0 + jointStiffness_);
   F.block(0, iw, N, N) = -(u * lin_.Gfull + jointDamping_);
-  F.col(iw + 1) -= u * lin_.Mfull.col(0);  // y_P'' = v_lat' + u r
-  F.col(iY) += lin_.front.lateral;         // Y_f at the front contact
-  F.col(iY + 1) += lin_.rear.lateral;      // Y_r at the rear contact
-  const Eigen::PartialPivLU<Matrix> lu(lin_.Mfull);
+  F.col(iw + 1) -= u * lin_.Mfull.col(0);           // y_P'' = v_lat' + u r
+  F.col(iY) += lin_.front.lateral;                  // Y_f at the front contact
+  F.col(iY + 1) += lin_.rear.lateral;               // Y_r at the rear contact
+  const Eigen::PartialPivLU<Matrix>& lu = massLu_;  // the linearisation's mass matrix, factored in build()
   Matrix A = Matrix::Zero(S, S);
   A.block(iq, iw + 2, n, n).setIdentity();
   A.block(iw, 0, N, S) = lu.solve(F);

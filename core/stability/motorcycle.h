@@ -10,6 +10,7 @@
 // Equations: built from the bodies by multibody_linearizer.h (Kane, linearised),
 // with the tyre forces acting at the contact points.
 
+#include <Eigen/LU>
 #include <optional>
 #include <string>
 #include <vector>
@@ -78,8 +79,9 @@ class MotorcycleModel {
  private:
   SharpParameters p_;
   Linearization lin_;
-  Matrix jointDamping_;    // N x N on (y, psi, q)
-  Matrix jointStiffness_;  // n x n on q
+  Eigen::PartialPivLU<Matrix> massLu_;  // of lin_.Mfull, the same at every speed
+  Matrix jointDamping_;                 // N x N on (y, psi, q)
+  Matrix jointStiffness_;               // n x n on q
   std::vector<std::string> coordinates_;
 };
 

@@ -5,6 +5,7 @@
 // thesis does not print, marked as assumptions (docs/validation/tire.md).
 
 #include <array>
+#include <cstddef>
 #include <string>
 
 namespace mozzi::core::tire {
@@ -109,6 +110,19 @@ inline const std::array<ThesisTyre, 6>& thesisTyres() {
        3.6},
   }};
   return tyres;
+}
+
+// Table 17's contact half-length a [m] of `tyre` at `pressurePa`, linear in
+// pressure between the tabulated ones, held beyond them.
+inline double table17HalfLength(const ThesisTyre& tyre, double pressurePa) {
+  const auto& p = kThesisPressures;
+  if (pressurePa <= p.front()) return tyre.halfLength.front();
+  for (std::size_t i = 1; i < p.size(); ++i)
+    if (pressurePa <= p[i]) {
+      const double u = (pressurePa - p[i - 1]) / (p[i] - p[i - 1]);
+      return tyre.halfLength[i - 1] + u * (tyre.halfLength[i] - tyre.halfLength[i - 1]);
+    }
+  return tyre.halfLength.back();
 }
 
 }  // namespace mozzi::core::tire

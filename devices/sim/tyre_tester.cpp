@@ -64,15 +64,7 @@ std::size_t mfIndex(const std::string& name) {
 
 double tyreHalfLengthAt(const std::string& tyreKey, double pressurePa) {
   const auto* t = thesisTyre(tyreKey);
-  if (!t) return 0.0;
-  const auto& p = core::tire::kThesisPressures;
-  if (pressurePa <= p.front()) return t->halfLength.front();
-  for (std::size_t i = 1; i < p.size(); ++i)
-    if (pressurePa <= p[i]) {
-      const double u = (pressurePa - p[i - 1]) / (p[i] - p[i - 1]);
-      return t->halfLength[i - 1] + u * (t->halfLength[i] - t->halfLength[i - 1]);
-    }
-  return t->halfLength.back();
+  return t ? core::tire::table17HalfLength(*t, pressurePa) : 0.0;
 }
 
 core::Result<TyreTesterSetup> tyreTesterSetup(const ParameterMap& parameters) {

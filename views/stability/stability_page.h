@@ -5,15 +5,25 @@
 // named by core (core/stability/mode_tracking.h), the critical speeds (a real
 // part crossing zero) marked on both plots and listed. Models: the benchmark
 // bicycle of Meijaard et al. (2007) and the same bicycle with the thesis's
-// compliant steel fork in bending (§6.5) or torsion (§6.4). The sweep runs on
-// the job runner; the page computes nothing itself.
+// compliant steel fork in bending (§6.5) or torsion (§6.4); the motorcycle in
+// the structure of Sharp (1971) with a rigid fork or the lumped fork models 1
+// to 3 of thesis §4.2 (Table 12, Figure 33). Parameters: built in (the
+// benchmark bicycle) or from a parameter file (core/stability/parameter_file:
+// the bicycle's or Sharp's CSV, as `mozzi-cli stability --params` reads).
+// "Compare with the rigid fork" sweeps the same vehicle with a rigid fork too
+// and draws both on one plot (rigid: open symbols, dotted markers). The
+// sweeps run on the job runner; the page computes nothing itself.
 
+#include <QString>
+#include <QStringList>
 #include <QWidget>
 #include <optional>
 #include <vector>
 
+#include "core/stability/kept_forks.h"
 #include "core/stability/mode_tracking.h"
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -25,20 +35,43 @@ namespace mozzi {
 namespace views {
 
 class JobRunner;
+class ProjectModel;
 
 class StabilityPage : public QWidget {
   Q_OBJECT
  public:
-  enum class Model { Benchmark = 0, ForkBending, ForkTorsion };
+  enum class Model {
+    Benchmark = 0,
+    ForkBending,
+    ForkTorsion,
+    Motorcycle,  // Sharp (1971) structure, rigid fork
+    MotorcycleFork1,
+    MotorcycleFork2,
+    MotorcycleFork3
+  };
+  static bool isMotorcycle(Model m) { return m >= Model::Motorcycle; }
+  static bool hasCompliantFork(Model m) { return m != Model::Benchmark && m != Model::Motorcycle; }
 
   StabilityPage(QWidget* parent, JobRunner* jobs);
 
   void setModel(Model model);
   void setSpeedRange(double fromMps, double toMps, double stepMps);
+  // A parameter file (empty: the built-in benchmark bicycle; the motorcycle needs one).
+  void setParameterFile(const QString& path);
+  QString parameterFile() const { return parameterFile_; }
+  // Also sweep the rigid-fork vehicle and draw it on the same plots.
+  void setCompareRigid(bool on);
+  // The project whose kept forks (Lumped Fork page: analyses "lumped-fork",
+  // "bicycle-fork") the Fork choice offers beside the thesis's.
+  void setProjectModel(ProjectModel* model);
+  // 0: the thesis's fork; i > 0: the i-th kept fork the choice lists.
+  bool setForkChoice(int index);
+  int forkChoiceCount() const;
   // Starts the sweep (on the job runner when there is one, else at once).
   void run();
   // For tests and the log.
   const std::optional<core::stability::StabilitySweep>& sweep() const { return sweep_; }
+  const std::optional<core::stability::StabilitySweep>& rigidSweep() const { return rigidSweep_; }
   QString summaryText() const;
   QwtPlot* realPlot() const { return real_; }
   QwtPlot* imaginaryPlot() const { return imaginary_; }
@@ -51,15 +84,32 @@ class StabilityPage : public QWidget {
 
  private:
   void retranslate();
-  void present(core::Result<core::stability::StabilitySweep> sweep);
+  struct Sweeps;
+  void present(core::Result<Sweeps> sweeps);
+  void modelChanged();
+  void refreshForks();
+  void chooseParameterFile();
+  void drawSweep(const core::stability::StabilitySweep& sweep, bool rigid, QStringList& lines);
 
   JobRunner* jobs_ = nullptr;
   std::optional<core::stability::StabilitySweep> sweep_;
+  std::optional<core::stability::StabilitySweep> rigidSweep_;
+  QString parameterFile_;
+  ProjectModel* project_ = nullptr;
+  std::vector<core::stability::KeptFork> kept_;  // the project's, all families
+  Model shownFamily_ = Model::Benchmark;         // the family whose speed range is shown
   QComboBox* model_ = nullptr;
   QDoubleSpinBox* from_ = nullptr;
   QDoubleSpinBox* to_ = nullptr;
   QDoubleSpinBox* step_ = nullptr;
   QPushButton* runButton_ = nullptr;
+  QCheckBox* compare_ = nullptr;
+  QLabel* forkLabel_ = nullptr;
+  QComboBox* fork_ = nullptr;
+  QLabel* paramsLabel_ = nullptr;
+  QLabel* paramsFile_ = nullptr;
+  QPushButton* paramsButton_ = nullptr;
+  QPushButton* paramsClear_ = nullptr;
   QLabel* modelLabel_ = nullptr;
   QLabel* speedsLabel_ = nullptr;
   QLabel* summary_ = nullptr;

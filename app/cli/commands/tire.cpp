@@ -13,6 +13,7 @@
 #include "app/cli/command.h"
 #include "core/tire/magic_formula.h"
 #include "core/tire/relaxation_length.h"
+#include "core/tire/relaxation_overview.h"
 #include "core/tire/relaxation_prediction.h"
 #include "core/tire/ring_model.h"
 #include "core/tire/steady_state.h"
@@ -176,19 +177,6 @@ int relaxation(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
 }
 
 // ---- ring ---------------------------------------------------------------------
-Json ringJson(const tr::RingModel& r) {
-  Json modes = Json::array();
-  for (const auto& m : r.modes)
-    modes.push_back({{"k", m.k},
-                     {"name", m.name},
-                     {"natural_frequency_hz", m.naturalFrequencyHz},
-                     {"damping_ratio", m.dampingRatio},
-                     {"modal_mass_kg", m.modalMass},
-                     {"modal_stiffness_n_per_m", m.modalStiffness},
-                     {"damping_n_s_per_m", m.dampingCoefficient}});
-  return {{"ring_mass_kg", r.ringMass}, {"ring_radius_m", r.ringRadius}, {"modes", modes}};
-}
-
 void printRing(const tr::RingModel& r, std::ostream& out) {
   out << "ring mass " << r.ringMass << " kg (eq. 45-47, c = 2 zeta sqrt(C m))\n";
   out << "  k  mode        f [Hz]   zeta    m_k [kg]   C_k [kN/m]   c_k [Ns/m]\n";
@@ -214,7 +202,7 @@ int ring(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
   auto r = tr::identifyRingModel(in, s);
   if (!r) return fail(err, "ring", r.error());
   if (a.flag("--json"))
-    out << ringJson(*r).dump(2) << "\n";
+    out << tr::ringModelJson(*r).dump(2) << "\n";
   else
     printRing(*r, out);
   return kExitOk;
@@ -349,12 +337,8 @@ int predict(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     rows.push_back(j);
   }
   if (a.flag("--json"))
-    out << Json{{"tyre", label},
-                {"cornering_stiffness_n_per_rad", cAlpha},
-                {"load_n", fz},
-                {"friction", lambda},
-                {"ring", ringJson(*ringModel)},
-                {"pressures", rows}}
+    out << Json{{"tyre", label},      {"cornering_stiffness_n_per_rad", cAlpha}, {"load_n", fz},
+                {"friction", lambda}, {"ring", tr::ringModelJson(*ringModel)},   {"pressures", rows}}
                .dump(2)
         << "\n";
   return kExitOk;

@@ -9,10 +9,21 @@
 #include <qwt_plot_item.h>
 #include <qwt_plot_marker.h>
 #include <QDir>
+#include <QProcess>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QtTest>
 
+#include "views/screenshot.h"
+
+#include <QTemporaryDir>
+#include <nlohmann/json.hpp>
+
+#include "core/stability/kept_forks.h"
+#include "core/stability/motorcycle.h"
+#include "devices/rigtests/fork_model_inputs.h"
 #include "views/common/job_runner.h"
+#include "views/common/project_model.h"
 
 using mozzi::views::StabilityPage;
 
@@ -47,7 +58,7 @@ class StabilityPageTest : public QObject {
     for (QwtPlotItem* item : page.realPlot()->itemList(QwtPlotItem::Rtti_PlotMarker))
       verticals += item->isVisible() && static_cast<QwtPlotMarker*>(item)->lineStyle() == QwtPlotMarker::VLine;
     QCOMPARE(verticals, 2);
-    shot(page, QStringLiteral("stability_benchmark"));
+    QVERIFY(mozzi::views::test::saveShot(page, QStringLiteral("stability_benchmark")));
   }
 
   void compliantForkAddsItsMode() {
@@ -61,7 +72,7 @@ class StabilityPageTest : public QObject {
     QStringList names;
     for (QwtPlotItem* item : page.imaginaryPlot()->itemList(QwtPlotItem::Rtti_PlotCurve)) names << item->title().text();
     QVERIFY2(names.contains(QStringLiteral("fork bending")), qPrintable(names.join(QStringLiteral(", "))));
-    shot(page, QStringLiteral("stability_fork_bending"));
+    QVERIFY(mozzi::views::test::saveShot(page, QStringLiteral("stability_fork_bending")));
     // A bad range is said, not computed.
     page.setSpeedRange(5.0, 1.0, 0.1);
     page.run();
@@ -69,13 +80,165 @@ class StabilityPageTest : public QObject {
     QVERIFY2(page.summaryText().contains(QStringLiteral("B must not be below A")), qPrintable(page.summaryText()));
   }
 
- private:
-  void shot(QWidget& w, const QString& name) {
-    const QDir dir(qEnvironmentVariable("MOZZI_SCREENSHOT_DIR", QDir::tempPath()));
-    QDir().mkpath(dir.path());
-    const QString scale = qEnvironmentVariable("QT_SCALE_FACTOR");
-    const QString file = scale.isEmpty() || scale == QLatin1String("1") ? name : name + QStringLiteral("_x") + scale;
-    QVERIFY(w.grab().save(dir.filePath(file + QStringLiteral(".png"))));
+  // The motorcycle with lumped fork model 1 (thesis Table 12) compared with
+  // the rigid fork: every critical speed marked, compliant and rigid, equals
+  // the one `mozzi-cli stability motorcycle` prints, to its printed digits
+  // (6 decimals), for the same parameter file and speed grid.
+  void motorcycleForkAgainstTheCli() {
+    const QString params =
+        QStringLiteral(MOZZI_SHARED_DATA_DIR) + QStringLiteral("/motorcycle/sharp1971-parameters.csv");
+    mozzi::views::JobRunner jobs;
+    StabilityPage page(nullptr, &jobs);
+    page.resize(1280, 800);
+    page.show();
+    page.setModel(StabilityPage::Model::MotorcycleFork1);
+    page.setParameterFile(params);
+    page.setCompareRigid(true);
+    page.setSpeedRange(1.0, 60.0, 0.25);
+    QSignalSpy finished(&page, &StabilityPage::finished);
+    page.run();
+    QVERIFY(finished.wait(120000));
+    QVERIFY2(finished.first().first().toBool(), qPrintable(page.summaryText()));
+    QVERIFY(page.sweep() && page.rigidSweep());
+    for (const bool rigid : {false, true}) {
+      QStringList args{QStringLiteral("stability"),    QStringLiteral("motorcycle"),
+                       QStringLiteral("--params"),     params,
+                       QStringLiteral("--fork-model"), rigid ? QStringLiteral("rigid") : QStringLiteral("1"),
+                       QStringLiteral("--speeds"),     QStringLiteral("1:60:0.25")};
+      QProcess cli;
+      cli.start(QStringLiteral(MOZZI_CLI_PATH), args);
+      QVERIFY(cli.waitForFinished(120000));
+      QCOMPARE(cli.exitCode(), 0);
+      // "  weave stabilises at 5.927277 m/s (2.126 rad/s)"
+      const QRegularExpression event(QStringLiteral("^  (.+) (stabilises|destabilises) at ([0-9.]+) m/s"));
+      QStringList printed;
+      const QString cliText = QString::fromUtf8(cli.readAllStandardOutput());
+      for (const QString& line : cliText.split(QLatin1Char('\n'))) {
+        const auto m = event.match(line);
+        if (m.hasMatch()) printed << m.captured(3);
+      }
+      QVERIFY2(printed.size() >= 2, qPrintable(printed.join(QStringLiteral(", "))));
+      QStringList marked;
+      const QString tag = rigid ? QStringLiteral("rigid") : QStringLiteral("compliant");
+      for (QwtPlotItem* item : page.realPlot()->itemList(QwtPlotItem::Rtti_PlotMarker)) {
+        auto* m = static_cast<QwtPlotMarker*>(item);
+        if (m->lineStyle() != QwtPlotMarker::VLine || m->title().text() != tag) continue;
+        marked << QString::asprintf("%.6f", m->xValue());
+      }
+      qInfo("%s fork: CLI %s; page %s", qPrintable(tag), qPrintable(printed.join(QStringLiteral(", "))),
+            qPrintable(marked.join(QStringLiteral(", "))));
+      QCOMPARE(marked, printed);
+      // The named events of the page's sweep are the CLI's, in order.
+      QStringList names, cliNames;
+      for (const auto& e : (rigid ? *page.rigidSweep() : *page.sweep()).events)
+        if (e.kind == "stabilises" || e.kind == "destabilises") names << QString::fromStdString(e.mode + " " + e.kind);
+      for (const QString& line : cliText.split(QLatin1Char('\n'))) {
+        const auto m = event.match(line);
+        if (m.hasMatch()) cliNames << m.captured(1) + QLatin1Char(' ') + m.captured(2);
+      }
+      QCOMPARE(names, cliNames);
+    }
+    // Both forks on one plot: the rigid one's curves named as such.
+    QStringList names;
+    for (QwtPlotItem* item : page.realPlot()->itemList(QwtPlotItem::Rtti_PlotCurve)) names << item->title().text();
+    for (const char* mode : {"weave", "wobble", "capsize", "weave (rigid fork)", "wobble (rigid fork)"})
+      QVERIFY2(names.contains(QLatin1String(mode)), qPrintable(names.join(QStringLiteral(", "))));
+    QVERIFY(mozzi::views::test::saveShot(page, QStringLiteral("stability_motorcycle_fork1_vs_rigid")));
+    // Without a parameter file the motorcycle says what it needs.
+    page.setParameterFile(QString());
+    page.run();
+    QVERIFY(finished.wait(60000));
+    QVERIFY2(page.summaryText().contains(QStringLiteral("needs a parameter file")), qPrintable(page.summaryText()));
+  }
+
+  // A fork the project keeps (the Lumped Fork page's analysis, its JSON keys)
+  // replaces Table 12's: the page's critical speeds are those of core's
+  // motorcycle built with the kept model 1, exactly, and differ from the
+  // thesis fork's (the kept one is half as stiff).
+  void keptForkFromTheProject() {
+    QTemporaryDir dir;
+    mozzi::views::ProjectModel project;
+    QVERIFY(project.create(dir.filePath(QStringLiteral("forks.mozzi"))).ok());
+    auto specimen = project.addSpecimen(QStringLiteral("Fork A"), QStringLiteral("fork"));
+    QVERIFY(specimen.ok());
+    auto model = [](double k, double arm, double J, double c) {
+      return nlohmann::json{
+          {"stiffness_Nm_per_rad", k}, {"arm_m", arm}, {"inertia_kgm2", J}, {"damping_Nms_per_rad", c}};
+    };
+    mozzi::core::io::StoredAnalysis a;
+    a.specimenId = *specimen;
+    a.kind = "lumped-fork";
+    a.name = "Lumped fork models 1 to 3";
+    a.resultJson = nlohmann::json{{"inputs", {{"vibrating_mass_kg", 11.0}, {"wheel_centre_height_m", 0.265}}},
+                                  {"models",
+                                   {{"model1", model(14e3, 0.670, 2.085, 8.2)},
+                                    {"model2", model(78.4e3, 0.846, 3.995, 26.9)},
+                                    {"model3", model(28e3, 0.670, 1.426, 9.6)}}}}
+                       .dump();
+    QVERIFY(project.addAnalysis(a).ok());
+    const QString params =
+        QStringLiteral(MOZZI_SHARED_DATA_DIR) + QStringLiteral("/motorcycle/sharp1971-parameters.csv");
+    StabilityPage page(nullptr, nullptr);
+    page.setProjectModel(&project);
+    page.setModel(StabilityPage::Model::ForkBending);
+    QCOMPARE(page.forkChoiceCount(), 1);  // no bicycle fork kept
+    page.setModel(StabilityPage::Model::MotorcycleFork1);
+    QCOMPARE(page.forkChoiceCount(), 2);
+    page.setParameterFile(params);
+    page.setSpeedRange(1.0, 60.0, 0.25);
+    page.run();
+    QVERIFY(page.sweep().has_value());
+    const auto thesisEvents = page.sweep()->events;
+    QVERIFY(page.setForkChoice(1));
+    page.run();
+    QVERIFY2(page.sweep().has_value(), qPrintable(page.summaryText()));
+    namespace st = mozzi::core::stability;
+    const auto kept = st::keptForkFromJson(a.resultJson, a.kind).value();
+    const auto sharp = st::loadSharpParameters(params.toStdString()).value();
+    const auto direct = st::sweepSpeeds(st::MotorcycleModel::build(sharp, kept.lumped[0]).value().system(),
+                                        st::speedGrid(1.0, 60.0, 0.25).value())
+                            .value();
+    QCOMPARE(page.sweep()->events.size(), direct.events.size());
+    bool differs = thesisEvents.size() != direct.events.size();
+    for (size_t i = 0; i < direct.events.size(); ++i) {
+      QCOMPARE(page.sweep()->events[i].v, direct.events[i].v);
+      QCOMPARE(page.sweep()->events[i].mode, direct.events[i].mode);
+      differs = differs || (i < thesisEvents.size() && thesisEvents[i].v != direct.events[i].v);
+    }
+    QVERIFY(differs);
+    qInfo("kept fork: %s", qPrintable(page.summaryText()));
+  }
+
+  // The JSON the Lumped Fork page keeps (its own helpers, on its default
+  // inputs: thesis Table 12's) reads back into the stability model's lumped
+  // forks: k, c, J, L as computed, M the vibrating mass, the mass arm L less
+  // the wheel-centre height.
+  void keptForkReadsTheLumpedForkPagesJson() {
+    namespace rt = mozzi::devices::rigtests;
+    namespace st = mozzi::core::stability;
+    const auto specs = rt::lumpedForkParameterSpecs();
+    mozzi::devices::ParameterMap defaults;
+    for (const auto& spec : specs) defaults[spec.key] = spec.defaultValue;
+    const auto input = rt::lumpedForkInput(defaults);
+    const auto models = mozzi::core::stiffness::forkLumpedModels(input);
+    QVERIFY(models.ok());
+    const nlohmann::json j{
+        {"fork", "motorcycle"}, {"inputs", rt::lumpedInputJson(input)}, {"models", rt::lumpedModelsJson(*models)}};
+    const auto kept = st::keptForkFromJson(j.dump(), "lumped-fork");
+    QVERIFY2(kept.ok(), kept.ok() ? "" : kept.error().describe().c_str());
+    const mozzi::core::stiffness::LumpedModel* computed[] = {&models->model1, &models->model2, &models->model3};
+    for (int i = 0; i < 3; ++i) {
+      const auto& m = kept->lumped[static_cast<size_t>(i)];
+      QVERIFY(m.has_value());
+      QCOMPARE(m->stiffness, computed[i]->stiffness);
+      QCOMPARE(m->damping, computed[i]->damping);
+      QCOMPARE(m->inertia, computed[i]->inertia);
+      QCOMPARE(m->axisFromContact, computed[i]->arm);
+      QCOMPARE(m->mass, input.vibratingMass);
+      QCOMPARE(m->massArm, computed[i]->arm - input.wheelCentreHeight);
+    }
+    // Table 12's model 1 arm: 0.670 - 0.265 = 0.405 m, as thesisLumpedForkModel.
+    QVERIFY(std::abs(kept->lumped[0]->massArm - st::thesisLumpedForkModel(1).value().massArm) < 1e-12);
   }
 };
 
