@@ -4,7 +4,7 @@
 <context>
     <name>Pages</name>
     <message numerus="yes">
-        <location filename="../app/gui/builtin_pages.cpp" line="+58"/>
+        <location filename="../app/gui/builtin_pages.cpp" line="+63"/>
         <source>%n trace line segment(s) name nodes the mesh does not have and are not drawn</source>
         <translation>
             <numerusform>%n segmento di linea di traccia cita nodi assenti dalla mesh e non viene disegnato</numerusform>
@@ -57,7 +57,7 @@
         <translation>Autovalori di un modello di bicicletta in funzione della velocità, con i modi nominati e le velocità critiche segnate</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Mesh Editor</source>
         <translation>Editor della mesh</translation>
     </message>
@@ -127,7 +127,47 @@
         <translation>Gli assi di torsione statico e dinamico delle prove al banco di rigidezza salvate, sulla sagoma del componente</translation>
     </message>
     <message>
-        <location line="-173"/>
+        <location line="+21"/>
+        <source>Stiffness</source>
+        <translation>Rigidezza</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stiffness tables of the stored static rig tests, side by side across specimens, with the thesis&apos;s values</source>
+        <translation>Tabelle di rigidezza delle prove statiche al banco memorizzate, affiancate per provino, con i valori della tesi</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Lumped Fork</source>
+        <translation>Forcella a parametri concentrati</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lumped fork models 1 to 3 against the measured modes, and the bicycle-fork stiffness and damping</source>
+        <translation>Modelli di forcella a parametri concentrati da 1 a 3 a confronto con i modi misurati, e rigidezza e smorzamento della forcella da bicicletta</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Tyre Relaxation</source>
+        <translation>Rilassamento pneumatico</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Relaxation length against frequency and pressure, the ring model&apos;s prediction and its contributions, the rigid-ring modes</source>
+        <translation>Lunghezza di rilassamento in funzione della frequenza e della pressione, la previsione del modello ad anello e i suoi contributi, i modi ad anello rigido</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Wheelchair</source>
+        <translation>Carrozzina</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slalom and steady-turning trajectories and rear slip angles of the wheelchair model, with the tyre stiffness studies</source>
+        <translation>Traiettorie in slalom e in curva stazionaria e angoli di deriva posteriori del modello di carrozzina, con gli studi sulla rigidezza degli pneumatici</translation>
+    </message>
+    <message>
+        <location line="-251"/>
         <source>Could not read the FRF set: %1</source>
         <translation>Impossibile leggere l&apos;insieme di FRF: %1</translation>
     </message>
@@ -443,6 +483,147 @@
         <location line="+1"/>
         <source>white noise RMS on the load cell</source>
         <translation>valore RMS del rumore bianco sulla cella di carico</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Actuator set-point from</source>
+        <translation>Riferimento dell&apos;attuatore da</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>internal: the rig&apos;s own drive (mode, static.*, sine.*); sim-funcgen: the simulated function generator (§1.1)</source>
+        <translation>internal: il comando proprio del banco (mode, static.*, sine.*); sim-funcgen: il generatore di funzioni simulato (§1.1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Actuator set-point</source>
+        <translation>Riferimento dell&apos;attuatore</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sim-stiffness: the rig&apos;s own drive; sim-funcgen / usbtmc-funcgen: a function generator gives the actuator controller its set-point (§1.1)</source>
+        <translation>sim-stiffness: il comando proprio del banco; sim-funcgen / usbtmc-funcgen: un generatore di funzioni fornisce il riferimento al controllore dell&apos;attuatore (§1.1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Laser positions</source>
+        <translation>Posizioni dei laser</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>plate points u:v of lasers 1 to 4, separated by commas; empty = the specimen&apos;s plate layout</source>
+        <translation>punti u:v della piastra dei laser da 1 a 4, separati da virgole; vuoto = la disposizione della piastra del provino</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Load point</source>
+        <translation>Punto di carico</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>plate point u:v where the actuator loads; empty = the specimen&apos;s load point</source>
+        <translation>punto u:v della piastra dove carica l&apos;attuatore; vuoto = il punto di carico del provino</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Plate width (u)</source>
+        <translation>Larghezza della piastra (u)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the reference plate along u, centred on the load point where it is fixed to the specimen (§1.2)</source>
+        <translation>la piastra di riferimento lungo u, centrata sul punto di carico dove è fissata al provino (§1.2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Plate height (v)</source>
+        <translation>Altezza della piastra (v)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the reference plate along v, centred on the load point where it is fixed to the specimen (§1.2)</source>
+        <translation>la piastra di riferimento lungo v, centrata sul punto di carico dove è fissata al provino (§1.2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Laser 1 u</source>
+        <translation>Laser 1 u</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Laser 1 v</source>
+        <translation>Laser 1 v</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Laser 2 u</source>
+        <translation>Laser 2 u</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Laser 2 v</source>
+        <translation>Laser 2 v</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Laser 3 u</source>
+        <translation>Laser 3 u</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Laser 3 v</source>
+        <translation>Laser 3 v</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Laser 4 u</source>
+        <translation>Laser 4 u</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Laser 4 v</source>
+        <translation>Laser 4 v</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>where the laser&apos;s spot is on the plate, u = x (§1.2)</source>
+        <translation>dove cade il punto del laser sulla piastra, u = x (§1.2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>where the laser&apos;s spot is on the plate, v = z (§1.2)</source>
+        <translation>dove cade il punto del laser sulla piastra, v = z (§1.2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load point u</source>
+        <translation>Punto di carico u</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Load point v</source>
+        <translation>Punto di carico v</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>where the actuator loads the specimen through the load cell (§1.1)</source>
+        <translation>dove l&apos;attuatore carica il provino attraverso la cella di carico (§1.1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location filename="../views/rigs/rig_test_page.cpp" line="+600"/>
+        <source>Constrained end u</source>
+        <translation>Estremità vincolata u</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Constrained end v</source>
+        <translation>Estremità vincolata v</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>where the specimen is locked to the rig&apos;s frame (§1.2)</source>
+        <translation>dove il provino è bloccato al telaio del banco (§1.2)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1039,6 +1220,372 @@
         <source>fit the Magic Formula to F_y and M_z at the end</source>
         <translation>stima la Magic Formula su F_y e M_z alla fine</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>Static bending stiffness</source>
+        <translation>Rigidezza flessionale statica</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>from the static test and its decomposition (Table 10: 28 kNm/rad)</source>
+        <translation>dalla prova statica e dalla sua scomposizione (Tabella 10: 28 kNm/rad)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Static axis arm L1</source>
+        <translation>Braccio dell&apos;asse statico L1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>where the static twist axis meets the fork axis, from the contact point (Table 12: 0.670 m)</source>
+        <translation>dove l&apos;asse di torsione statico incontra l&apos;asse della forcella, dal punto di contatto (Tabella 12: 0.670 m)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Dynamic axis arm L2</source>
+        <translation>Braccio dell&apos;asse dinamico L2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>where the modal twist axis meets the fork axis, from the contact point (Table 12: 0.846 m)</source>
+        <translation>dove l&apos;asse di torsione modale incontra l&apos;asse della forcella, dal punto di contatto (Tabella 12: 0.846 m)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Wheel centre height</source>
+        <translation>Altezza del centro ruota</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>wheel centre above the contact point (0.670 - 0.405 m, §4.2)</source>
+        <translation>centro ruota sopra il punto di contatto (0.670 - 0.405 m, §4.2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Vibrating mass</source>
+        <translation>Massa vibrante</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>wheel and unsprung mass (8 + 3 kg, §4.2)</source>
+        <translation>ruota e massa non sospesa (8 + 3 kg, §4.2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wheel inertia</source>
+        <translation>Inerzia della ruota</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the wheel&apos;s diametrical moment of inertia (0.278 kgm^2, §4.2)</source>
+        <translation>momento d&apos;inerzia diametrale della ruota (0.278 kgm^2, §4.2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Measured lateral mode</source>
+        <translation>Modo laterale misurato</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>natural frequency of the lateral mode with the wheel (Table 11: 22.3 Hz)</source>
+        <translation>frequenza naturale del modo laterale con la ruota (Tabella 11: 22.3 Hz)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Viscous damping ratio</source>
+        <translation>Rapporto di smorzamento viscoso</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>of that mode, as a fraction (Table 11: 2.4 %)</source>
+        <translation>di quel modo, come frazione (Tabella 11: 2.4 %)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fork mass</source>
+        <translation>Massa della forcella</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>m_fork (Table 21: carbon 0.393, steel 1.336 kg)</source>
+        <translation>m_fork (Tabella 21: carbonio 0.393, acciaio 1.336 kg)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wheel mass</source>
+        <translation>Massa della ruota</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>m_F (Table 21)</source>
+        <translation>m_F (Tabella 21)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wheel radius</source>
+        <translation>Raggio della ruota</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>r_F (Table 21)</source>
+        <translation>r_F (Tabella 21)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hub mass</source>
+        <translation>Massa del mozzo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the fake hub of the fork-alone test (Table 21)</source>
+        <translation>il finto mozzo della prova sulla sola forcella (Tabella 21)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Hub radius</source>
+        <translation>Raggio del mozzo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+2"/>
+        <source>Table 21</source>
+        <translation>Tabella 21</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>Hub length</source>
+        <translation>Lunghezza del mozzo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Blade-tip distance d</source>
+        <translation>Distanza delle punte degli steli d</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>blade tips to the steering axis (eq. 52; not printed, 0.060 m assumed)</source>
+        <translation>dalle punte degli steli all&apos;asse di sterzo (eq. 52; non pubblicata, assunta 0.060 m)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Largest bending arm</source>
+        <translation>Braccio flessionale massimo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>h_W range upper end: the lower jaw fixing point (§6.5: 0.460 m)</source>
+        <translation>estremo superiore di h_W: il punto di fissaggio della ganascia inferiore (§6.5: 0.460 m)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torsion mode with wheel</source>
+        <translation>Modo torsionale con ruota</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+8"/>
+        <source>Table 20, carbon fork</source>
+        <translation>Tabella 20, forcella in carbonio</translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source>Torsion loss factor with wheel</source>
+        <translation>Fattore di perdita torsionale con ruota</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>hysteretic eta = 2 zeta (Table 20: 10.04 %)</source>
+        <translation>eta isteretico = 2 zeta (Tabella 20: 10.04 %)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torsion mode, fork alone</source>
+        <translation>Modo torsionale, sola forcella</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+8"/>
+        <source>Table 19, carbon fork</source>
+        <translation>Tabella 19, forcella in carbonio</translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source>Second torsion mode, fork alone</source>
+        <translation>Secondo modo torsionale, sola forcella</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0 when the fork alone shows one torsion mode (steel fork: 230.1 Hz, eq. 54)</source>
+        <translation>0 quando la sola forcella mostra un solo modo torsionale (forcella in acciaio: 230.1 Hz, eq. 54)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lateral mode with wheel</source>
+        <translation>Modo laterale con ruota</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Lateral loss factor with wheel</source>
+        <translation>Fattore di perdita laterale con ruota</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>hysteretic eta = 2 zeta (Table 20: 4.24 %)</source>
+        <translation>eta isteretico = 2 zeta (Tabella 20: 4.24 %)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lateral mode, fork alone</source>
+        <translation>Modo laterale, sola forcella</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Manoeuvre</source>
+        <translation>Manovra</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stiffness study</source>
+        <translation>Studio della rigidezza</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Forward speed</source>
+        <translation>Velocità di avanzamento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Differential torque</source>
+        <translation>Coppia differenziale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slalom frequency</source>
+        <translation>Frequenza dello slalom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Duration</source>
+        <translation>Durata</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torque ramp</source>
+        <translation>Rampa di coppia</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mass</source>
+        <translation>Massa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Yaw inertia</source>
+        <translation>Inerzia di imbardata</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rear axle behind CoM</source>
+        <translation>Asse posteriore dietro il baricentro</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Casters ahead of CoM</source>
+        <translation>Ruote pivottanti davanti al baricentro</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rear half-track</source>
+        <translation>Semicarreggiata posteriore</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rear cornering stiffness</source>
+        <translation>Rigidezza di deriva posteriore</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rear aligning stiffness</source>
+        <translation>Rigidezza di autoallineamento posteriore</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>slalom: T_R - T_L = torque cos(2 pi f t); steady turning: the torque ramped up, then held (§7.3)</source>
+        <translation>slalom: T_R - T_L = coppia cos(2 pi f t); curva stazionaria: la coppia cresce in rampa, poi resta costante (§7.3)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the rear tyres&apos; cornering or aligning stiffness at 0.5, 1 and 2 times its value (Figures 57 to 60)</source>
+        <translation>la rigidezza di deriva o di autoallineamento degli pneumatici posteriori a 0,5, 1 e 2 volte il suo valore (Figure da 57 a 60)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>held constant (§7.3); 4 km/h by default</source>
+        <translation>mantenuta costante (§7.3); 4 km/h per impostazione predefinita</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>T_R - T_L: the slalom&apos;s amplitude or the steady turn&apos;s held value</source>
+        <translation>T_R - T_L: l&apos;ampiezza dello slalom o il valore mantenuto della curva stazionaria</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a manual slalom is below 1 Hz</source>
+        <translation>uno slalom manuale è sotto 1 Hz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>simulated time</source>
+        <translation>tempo simulato</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>steady turning: time to reach the held torque</source>
+        <translation>curva stazionaria: tempo per raggiungere la coppia mantenuta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>chair, user and rear wheels (assumed: 110 kg)</source>
+        <translation>carrozzina, utente e ruote posteriori (assunta: 110 kg)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>about the centre of mass</source>
+        <translation>attorno al baricentro</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>b: distance of the rear axle behind the centre of mass (assumed)</source>
+        <translation>b: distanza dell&apos;asse posteriore dietro il baricentro (assunta)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a_f: distance of the caster pivots ahead of the centre of mass (assumed)</source>
+        <translation>a_f: distanza dei perni delle ruote pivottanti davanti al baricentro (assunta)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>w: half the distance between the rear wheels (assumed)</source>
+        <translation>w: metà della distanza tra le ruote posteriori (assunta)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>per rear tyre (10 F_z/rad at 400 N, §7.1)</source>
+        <translation>per pneumatico posteriore (10 F_z/rad a 400 N, §7.1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>per rear tyre (7.5 mm pneumatic trail)</source>
+        <translation>per pneumatico posteriore (avancorsa pneumatica 7,5 mm)</translation>
+    </message>
+</context>
+<context>
+    <name>PlateSketch</name>
+    <message>
+        <location filename="../views/scene/plate_sketch.cpp" line="+146"/>
+        <source>specimen&apos;s end</source>
+        <translation>estremità del provino</translation>
+    </message>
 </context>
 <context>
     <name>ReportWriter</name>
@@ -1056,7 +1603,7 @@
 <context>
     <name>RigResults</name>
     <message>
-        <location filename="../views/rigs/rig_test_page.cpp" line="+141"/>
+        <location filename="../views/rigs/rig_test_page.cpp" line="-453"/>
         <source>lateral stiffness k_lat</source>
         <translation>rigidezza laterale k_lat</translation>
     </message>
@@ -1267,9 +1814,95 @@
     </message>
 </context>
 <context>
+    <name>StiffnessTablePage</name>
+    <message>
+        <location filename="../views/stiffness/stiffness_table_page.cpp" line="+51"/>
+        <source>Lateral stiffness</source>
+        <translation>Rigidezza laterale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Twist arm</source>
+        <translation>Braccio di torsione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Twist stiffness</source>
+        <translation>Rigidezza di torsione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bending arm</source>
+        <translation>Braccio flessionale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bending stiffness</source>
+        <translation>Rigidezza flessionale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torsion arm</source>
+        <translation>Braccio torsionale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torsion stiffness</source>
+        <translation>Rigidezza torsionale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inclination of the twist axis</source>
+        <translation>Inclinazione dell&apos;asse di torsione</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>front-constrained</source>
+        <translation>vincolato anteriormente</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>rear-constrained</source>
+        <translation>vincolato posteriormente</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>steering head locked</source>
+        <translation>cannotto di sterzo bloccato</translation>
+    </message>
+</context>
+<context>
+    <name>TwistAxesPage</name>
+    <message>
+        <location filename="../views/scene/plate_sketch.cpp" line="-9"/>
+        <source>centre of gravity (estimated)</source>
+        <translation>baricentro (stimato)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 (constrained)</source>
+        <translation>%1 (vincolato)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>L%1</source>
+        <translation>L%1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>load point (%1)</source>
+        <translation>punto di carico (%1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>load point</source>
+        <translation>punto di carico</translation>
+    </message>
+</context>
+<context>
     <name>TwistAxesPoints</name>
     <message>
-        <location filename="../views/scene/twist_axes_page.cpp" line="+67"/>
+        <location line="-102"/>
         <source>steering head</source>
         <translation>cannotto di sterzo</translation>
     </message>
@@ -3069,6 +3702,300 @@
     </message>
 </context>
 <context>
+    <name>mozzi::views::LumpedForkPage</name>
+    <message>
+        <location filename="../views/stiffness/lumped_fork_page.cpp" line="+248"/>
+        <source>Keep for specimen:</source>
+        <translation>Conserva per il provino:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Compute</source>
+        <translation>Calcola</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fit the three lumped models and the bicycle fork from the forms</source>
+        <translation>Identifica i tre modelli a parametri concentrati e la forcella da bicicletta dai moduli</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Measured modes:</source>
+        <translation>Modi misurati:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Use the selected mode</source>
+        <translation>Usa il modo selezionato</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Take the selected mode&apos;s frequency and damping ratio as the measured lateral mode</source>
+        <translation>Prende frequenza e smorzamento del modo selezionato come modo laterale misurato</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keep the models in the project</source>
+        <translation>Conserva i modelli nel progetto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keep in the project</source>
+        <translation>Conserva nel progetto</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bold: computed by the model; the other values come from the inputs (the dotted entries of thesis Table 12). Values to six significant digits, as mozzi-cli fork prints them.</source>
+        <translation>In grassetto: calcolato dal modello; gli altri valori vengono dai dati di ingresso (le voci con il punto della Tabella 12 della tesi). Valori a sei cifre significative, come li stampa mozzi-cli fork.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>h_W is where the bending stiffness computed with the wheel (eq. 58) equals the one of the fork alone (eq. 59); c = zeta c_c with zeta = eta / 2 (eq. 55, 56, 60).</source>
+        <translation>h_W è dove la rigidezza flessionale calcolata con la ruota (eq. 58) è uguale a quella della sola forcella (eq. 59); c = zeta c_c con zeta = eta / 2 (eq. 55, 56, 60).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Motorcycle fork (§4.2, Table 12)</source>
+        <translation>Forcella motociclistica (§4.2, Tabella 12)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bicycle fork (§6.4, §6.5)</source>
+        <translation>Forcella da bicicletta (§6.4, §6.5)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frequency [Hz]</source>
+        <translation>Frequenza [Hz]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bending arm h_W from the blade tips [m]</source>
+        <translation>Braccio flessionale h_W dalle punte degli steli [m]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>k_β(h_W) [Nm/rad]</source>
+        <translation>k_β(h_W) [Nm/rad]</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+45"/>
+        <source>%1: %2 (%n mode(s))</source>
+        <translation>%1: %2 (%n modo/i)</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>Computing the lumped models...</source>
+        <translation>Calcolo dei modelli a parametri concentrati...</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>The computation stopped: %1</source>
+        <translation>Il calcolo si è interrotto: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Lumped fork models</source>
+        <translation>Modelli di forcella a parametri concentrati</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Lumped models: %1</source>
+        <translation>Modelli a parametri concentrati: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bicycle fork torsion: %1</source>
+        <translation>Torsione della forcella da bicicletta: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bicycle fork bending: %1</source>
+        <translation>Flessione della forcella da bicicletta: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Computed.</source>
+        <translation>Calcolato.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Bending stiffness k_i [Nm/rad]</source>
+        <translation>Rigidezza flessionale k_i [Nm/rad]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bending arm L_i [m]</source>
+        <translation>Braccio flessionale L_i [m]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Vibrating inertia J_i [kgm²]</source>
+        <translation>Inerzia vibrante J_i [kgm²]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pure moment of inertia [kgm²]</source>
+        <translation>Momento d&apos;inerzia puro [kgm²]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Natural frequency f_n [Hz]</source>
+        <translation>Frequenza naturale f_n [Hz]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Damping coefficient c_i [Nms/rad]</source>
+        <translation>Coefficiente di smorzamento c_i [Nms/rad]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Viscous damping ζ_i</source>
+        <translation>Smorzamento viscoso ζ_i</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Model 1</source>
+        <translation>Modello 1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Model 2</source>
+        <translation>Modello 2</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Model 3</source>
+        <translation>Modello 3</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>f [Hz]</source>
+        <translation>f [Hz]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>ζ</source>
+        <translation>ζ</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Model 1 f_n - f</source>
+        <translation>Modello 1 f_n - f</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Model 2 f_n - f</source>
+        <translation>Modello 2 f_n - f</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Model 3 f_n - f</source>
+        <translation>Modello 3 f_n - f</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>Measured modes</source>
+        <translation>Modi misurati</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Model %1</source>
+        <translation>Modello %1</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Torsion inertia with wheel [kgm²]</source>
+        <translation>Inerzia torsionale con ruota [kgm²]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torsion inertia, fork alone [kgm²]</source>
+        <translation>Inerzia torsionale, sola forcella [kgm²]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torsion stiffness with wheel [Nm/rad]</source>
+        <translation>Rigidezza torsionale con ruota [Nm/rad]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torsion stiffness, fork alone [Nm/rad]</source>
+        <translation>Rigidezza torsionale, sola forcella [Nm/rad]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torsion damping [Nms/rad]</source>
+        <translation>Smorzamento torsionale [Nms/rad]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bending arm h_W [m]</source>
+        <translation>Braccio flessionale h_W [m]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bending stiffness [Nm/rad]</source>
+        <translation>Rigidezza flessionale [Nm/rad]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bending inertia with wheel [kgm²]</source>
+        <translation>Inerzia flessionale con ruota [kgm²]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bending damping [Nms/rad]</source>
+        <translation>Smorzamento flessionale [Nms/rad]</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Value</source>
+        <translation>Valore</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>with the wheel (eq. 58)</source>
+        <translation>con la ruota (eq. 58)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fork alone (eq. 59)</source>
+        <translation>sola forcella (eq. 59)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>h_W = %1 m, k = %2 Nm/rad</source>
+        <translation>h_W = %1 m, k = %2 Nm/rad</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>No specimen to keep the model for.</source>
+        <translation>Nessun provino per cui conservare il modello.</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <location line="+7"/>
+        <source>Could not keep the model: %1</source>
+        <translation>Impossibile conservare il modello: %1</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>Kept as model %1 of %2.</source>
+        <translation>Conservato come modello %1 di %2.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Lumped fork models 1 to 3</source>
+        <translation>Modelli di forcella a parametri concentrati da 1 a 3</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Bicycle fork stiffness and damping</source>
+        <translation>Rigidezza e smorzamento della forcella da bicicletta</translation>
+    </message>
+</context>
+<context>
     <name>mozzi::views::MeshEditor</name>
     <message>
         <location filename="../views/editors/mesh_editor.cpp" line="+47"/>
@@ -4406,9 +5333,203 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     </message>
 </context>
 <context>
+    <name>mozzi::views::RelaxationPage</name>
+    <message>
+        <location filename="../views/tyre/relaxation_page.cpp" line="+186"/>
+        <source>The project holds no tyre specimen.</source>
+        <translation>Il progetto non contiene alcun pneumatico.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Reading the relaxation tests and predicting (thesis eq. 48)...</source>
+        <translation>Lettura delle prove di rilassamento e previsione (eq. 48 della tesi)...</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Tyre relaxation</source>
+        <translation>Rilassamento pneumatico</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cannot show the relaxation length: %1</source>
+        <translation>Impossibile mostrare la lunghezza di rilassamento: %1</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>No relaxation test of this tyre in the project: the prediction alone.</source>
+        <translation>Nessuna prova di rilassamento di questo pneumatico nel progetto: solo la previsione.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%n relaxation test(s) of tyre %1.</source>
+        <translation>%n prova/e di rilassamento del pneumatico %1.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n relaxation test(s) hold no result and are not drawn.</source>
+        <translation>%n prova/e di rilassamento senza risultati, non disegnate.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 bar: measured %2 m, predicted %3 m (%4%).</source>
+        <translation>%1 bar: misurata %2 m, prevista %3 m (%4%).</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>Inputs of eq. 48: ring stiffness from thesis Table 16 (nominal pressure); contact half-length a from Table 17 for the bars and as each test stored it for the lines; F_z %1 N; cornering stiffness from the project&apos;s steady-state test at %n of the 7 Table 17 pressures, elsewhere assumed %2 F_z; friction %3 and slip angle 1.5° assumed (§5.4). Tyre mass %4 kg and damping ratio %5 assumed (eq. 45 to 47).</source>
+        <translation>Dati dell&apos;eq. 48: rigidezze dell&apos;anello dalla Tabella 16 della tesi (pressione nominale); semilunghezza dell&apos;impronta a dalla Tabella 17 per le barre e come memorizzata da ciascuna prova per le linee; F_z %1 N; rigidezza di deriva dalla prova stazionaria del progetto a %n delle 7 pressioni della Tabella 17, altrove assunta %2 F_z; attrito %3 e angolo di deriva 1,5° assunti (§5.4). Massa del pneumatico %4 kg e rapporto di smorzamento %5 assunti (eq. da 45 a 47).</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>measured, %1 bar</source>
+        <translation>misurata, %1 bar</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>standard error</source>
+        <translation>errore standard</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>predicted (eq. 48), %1 bar</source>
+        <translation>prevista (eq. 48), %1 bar</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>predicted (eq. 48)</source>
+        <translation>prevista (eq. 48)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>contact patch a m</source>
+        <translation>impronta a m</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>camber mode</source>
+        <translation>modo di camber</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>lateral mode</source>
+        <translation>modo laterale</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>C-shaped mode</source>
+        <translation>modo a C</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S-shaped mode</source>
+        <translation>modo a S</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>modes k ≥ 4</source>
+        <translation>modi k ≥ 4</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>measured (band mean)</source>
+        <translation>misurata (media nella banda)</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>Could not keep the prediction: %1</source>
+        <translation>Impossibile conservare la previsione: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Relaxation prediction of %1 kept in the project (analysis %2)</source>
+        <translation>Previsione del rilassamento di %1 conservata nel progetto (analisi %2)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Tyre:</source>
+        <translation>Pneumatico:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keep in project</source>
+        <translation>Conserva nel progetto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Store the prediction and its inputs as an analysis of the project</source>
+        <translation>Memorizza la previsione e i suoi dati come analisi del progetto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Relaxation length against yaw frequency</source>
+        <translation>Lunghezza di rilassamento in funzione della frequenza di imbardata</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frequency [Hz]</source>
+        <translation>Frequenza [Hz]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+3"/>
+        <source>σ [m]</source>
+        <translation>σ [m]</translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source>Relaxation length against pressure (thesis Figure 43)</source>
+        <translation>Lunghezza di rilassamento in funzione della pressione (Figura 43 della tesi)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inflation pressure [bar]</source>
+        <translation>Pressione di gonfiaggio [bar]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Rigid-ring modes (thesis Table 16, eq. 45 to 47)</source>
+        <translation>Modi ad anello rigido (Tabella 16 della tesi, eq. da 45 a 47)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>k</source>
+        <translation>k</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>mode</source>
+        <translation>modo</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>f [Hz]</source>
+        <translation>f [Hz]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>ζ</source>
+        <translation>ζ</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>m_k [kg]</source>
+        <translation>m_k [kg]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>C_k [kN/m]</source>
+        <translation>C_k [kN/m]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>c_k [N s/m]</source>
+        <translation>c_k [N s/m]</translation>
+    </message>
+</context>
+<context>
     <name>mozzi::views::RigTestPage</name>
     <message>
-        <location filename="../views/rigs/rig_test_page.cpp" line="+190"/>
+        <location filename="../views/rigs/rig_test_page.cpp" line="+250"/>
         <source>Stiffness rig (simulated Motostiffmeter)</source>
         <translation>Banco di rigidezza (Motostiffmeter simulato)</translation>
     </message>
@@ -4444,6 +5565,36 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Set-up: plate, lasers, load point (mm)</source>
+        <translation>Allestimento: piastra, laser, punto di carico (mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Measurement</source>
+        <translation>Misura</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Set-up view</source>
+        <translation>Vista dell&apos;allestimento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Set-up over the specimen</source>
+        <translation>Allestimento sul provino</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>u [m] (plate plane)</source>
+        <translation>u [m] (piano della piastra)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>v [m]</source>
+        <translation>v [m]</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Result stored in the project</source>
         <translation>Risultato memorizzato nel progetto</translation>
     </message>
@@ -4538,7 +5689,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Scansioni di deriva e di campanatura: le caratteristiche e la Magic Formula</translation>
     </message>
     <message numerus="yes">
-        <location line="+46"/>
+        <location line="+48"/>
         <source>Plate (u, v) [mm]: %n laser(s) at %1; load point at (%2, %3); the other end locked.</source>
         <translation>
             <numerusform>Piastra (u, v) [mm]: %n laser in %1; punto di carico in (%2, %3); l&apos;altra estremità bloccata.</numerusform>
@@ -4551,7 +5702,28 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Carico F_z %1 N; semilunghezza di contatto a %2 mm (Tabella 17); limiti di lavoro deriva ±%3°, campanatura ±%4° (macchina ±%5°, ±%6°, disco fino a %7 km/h).</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location line="+72"/>
+        <location line="+2"/>
+        <source>No outline drawn: %1</source>
+        <translation>Nessun contorno disegnato: %1</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Set-up not valid, field &apos;%1&apos;: %2</source>
+        <translation>Allestimento non valido, campo &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Set-up not valid: %1</source>
+        <translation>Allestimento non valido: %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Outline: %1, approximate (not to scale of a drawing).</source>
+        <translation>Contorno: %1, approssimato (non in scala di un disegno).</translation>
+    </message>
+    <message>
+        <location line="+114"/>
         <source>Time [s]</source>
         <translation>Tempo [s]</translation>
     </message>
@@ -4593,12 +5765,12 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+22"/>
+        <location line="+29"/>
         <source>current frequency</source>
         <translation>frequenza corrente</translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-29"/>
         <source>measured</source>
         <translation>misura</translation>
     </message>
@@ -4606,6 +5778,41 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <location line="+1"/>
         <source>F = k_lat x (stored k_lat)</source>
         <translation>F = k_lat x (k_lat memorizzata)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sine fit, last frequency</source>
+        <translation>fit sinusoidale, ultima frequenza</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Dynamic twist axis against frequency</source>
+        <translation>Asse di torsione dinamico in funzione della frequenza</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frequency [Hz]</source>
+        <translation>Frequenza [Hz]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inclination [deg]</source>
+        <translation>Inclinazione [°]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Twist arm a_tw [mm]</source>
+        <translation>Braccio di torsione a_tw [mm]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>inclination ± 1σ</source>
+        <translation>inclinazione ± 1σ</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a_tw ± 1σ</source>
+        <translation>a_tw ± 1σ</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -4692,16 +5899,18 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     </message>
     <message>
         <location line="+9"/>
+        <location line="+23"/>
         <source>Not started: %1</source>
         <translation>Non avviata: %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-22"/>
+        <location line="+23"/>
         <source>Rig test not started: %1</source>
         <translation>Prova al banco non avviata: %1</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+68"/>
         <source>Running: %1 on %2</source>
         <translation>In corso: %1 su %2</translation>
     </message>
@@ -4742,7 +5951,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Prova al banco: %1</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+87"/>
         <source>%1 at %2 s</source>
         <translation>%1 a %2 s</translation>
     </message>
@@ -4762,7 +5971,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Passo %1 (%2) conservato senza risultato: %3</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+106"/>
         <source>Cannot read the rig test: %1</source>
         <translation>Impossibile leggere la prova al banco: %1</translation>
     </message>
@@ -4801,6 +6010,11 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <source>&apos;%1&apos; (%2)</source>
         <translation>&apos;%1&apos; (%2)</translation>
     </message>
+    <message>
+        <location line="+31"/>
+        <source>Cannot read the rig test&apos;s twist axes: %1</source>
+        <translation>Impossibile leggere gli assi di torsione della prova: %1</translation>
+    </message>
 </context>
 <context>
     <name>mozzi::views::SceneView</name>
@@ -4823,42 +6037,92 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::StabilityPage</name>
     <message>
-        <location filename="../views/stability/stability_page.cpp" line="+126"/>
+        <location filename="../views/stability/stability_page.cpp" line="+293"/>
         <source>Computing the eigenvalues against speed...</source>
         <translation>Calcolo degli autovalori in funzione della velocità...</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+18"/>
         <source>Stability against speed</source>
         <translation>Stabilità in funzione della velocità</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Cannot compute: %1</source>
         <translation>Impossibile calcolare: %1</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+71"/>
         <source>%1 %2 at %3 m/s</source>
         <translation>%1 %2 a %3 m/s</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>%1 %2 m/s</source>
         <translation>%1 %2 m/s</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="-55"/>
         <source>No real part crosses zero in this speed range.</source>
         <translation>Nessuna parte reale attraversa lo zero in questo intervallo di velocità.</translation>
     </message>
     <message>
+        <location line="-142"/>
+        <source>built-in (benchmark bicycle, Meijaard et al. 2007)</source>
+        <translation>incorporati (bicicletta di riferimento, Meijaard et al. 2007)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Vehicle parameter file</source>
+        <translation>File dei parametri del veicolo</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>Parameter files (*.csv);;All files (*)</source>
+        <translation>File dei parametri (*.csv);;Tutti i file (*)</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>thesis (Table 12)</source>
+        <translation>tesi (Tabella 12)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>thesis steel fork (§6.4, §6.5)</source>
+        <translation>forcella in acciaio della tesi (§6.4, §6.5)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>kept: %1 (analysis %2)</source>
+        <translation>conservata: %1 (analisi %2)</translation>
+    </message>
+    <message>
+        <location line="+107"/>
         <source>Critical speeds: %1</source>
         <translation>Velocità critiche: %1</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+3"/>
+        <source>Rigid fork: no real part crosses zero.</source>
+        <translation>Forcella rigida: nessuna parte reale attraversa lo zero.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rigid fork: %1</source>
+        <translation>Forcella rigida: %1</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1 (rigid fork)</source>
+        <translation>%1 (forcella rigida)</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>rigid: %1</source>
+        <translation>rigida: %1</translation>
+    </message>
+    <message>
+        <location line="+27"/>
         <source>Model:</source>
         <translation>Modello:</translation>
     </message>
@@ -4879,6 +6143,66 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Motorcycle (Sharp 1971), rigid fork</source>
+        <translation>Motocicletta (Sharp 1971), forcella rigida</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Motorcycle, lumped fork model 1 (thesis Table 12)</source>
+        <translation>Motocicletta, modello a parametri concentrati 1 della forcella (Tabella 12 della tesi)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Motorcycle, lumped fork model 2 (thesis Table 12)</source>
+        <translation>Motocicletta, modello a parametri concentrati 2 della forcella (Tabella 12 della tesi)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Motorcycle, lumped fork model 3 (thesis Table 12)</source>
+        <translation>Motocicletta, modello a parametri concentrati 3 della forcella (Tabella 12 della tesi)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Compare with the rigid fork</source>
+        <translation>Confronta con la forcella rigida</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fork:</source>
+        <translation>Forcella:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The thesis&apos;s fork, or one the project keeps (Lumped Fork page)</source>
+        <translation>La forcella della tesi, o una conservata nel progetto (pagina Forcella a parametri concentrati)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Sweep the same vehicle with a rigid fork too and draw it with open symbols</source>
+        <translation>Calcola anche lo stesso veicolo con la forcella rigida e disegnalo con simboli vuoti</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parameters:</source>
+        <translation>Parametri:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>From file...</source>
+        <translation>Da file...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A bicycle (Meijaard et al. 2007) or motorcycle (Sharp 1971) parameter file, as mozzi-cli stability --params reads</source>
+        <translation>Un file di parametri di bicicletta (Meijaard et al. 2007) o di motocicletta (Sharp 1971), come lo legge mozzi-cli stability --params</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Built-in</source>
+        <translation>Incorporati</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Speeds from, to, step:</source>
         <translation>Velocità da, a, passo:</translation>
     </message>
@@ -4968,9 +6292,130 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     </message>
 </context>
 <context>
+    <name>mozzi::views::StiffnessTablePage</name>
+    <message>
+        <location filename="../views/stiffness/stiffness_table_page.cpp" line="+66"/>
+        <source>Thesis values beside the measured ones</source>
+        <translation>Valori della tesi accanto a quelli misurati</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Where a specimen is one of the thesis&apos;s, its printed values (Tables 3 to 5, 7, 9, 10, 13) and the difference from the measured ones</source>
+        <translation>Se il provino è uno di quelli della tesi, i suoi valori pubblicati (Tabelle da 3 a 5, 7, 9, 10, 13) e la differenza da quelli misurati</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Copy as CSV</source>
+        <translation>Copia come CSV</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export CSV...</source>
+        <translation>Esporta CSV...</translation>
+    </message>
+    <message>
+        <location line="+58"/>
+        <location line="+105"/>
+        <source>measured</source>
+        <translation>misurato</translation>
+    </message>
+    <message>
+        <location line="-89"/>
+        <source>%1 %2, one standard deviation %3 %2 (as stored)</source>
+        <translation>%1 %2, deviazione standard %3 %2 (come memorizzato)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+84"/>
+        <source>thesis</source>
+        <translation>tesi</translation>
+    </message>
+    <message>
+        <location line="-68"/>
+        <source>difference</source>
+        <translation>differenza</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Thesis values as printed (misprinted units corrected, docs/validation/stiffness.md) from %1.</source>
+        <translation>Valori della tesi come pubblicati (unità errate corrette, docs/validation/stiffness.md) da %1.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>No project is open.</source>
+        <translation>Nessun progetto aperto.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Could not read the rig tests: %1</source>
+        <translation>Impossibile leggere le prove al banco: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The project holds no static stiffness test: run one on the Stiffness Rig page.</source>
+        <translation>Il progetto non contiene prove statiche di rigidezza: eseguirne una nella pagina Banco di rigidezza.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n static test(s); sine sweeps are on the Twist Axes page.</source>
+        <translation>%n prova/e statica/he; le scansioni sinusoidali sono nella pagina Assi di torsione.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not shown: %1</source>
+        <translation>Non mostrato: %1</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>quantity</source>
+        <translation>grandezza</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>unit</source>
+        <translation>unità</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>standard deviation</source>
+        <translation>deviazione standard</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <location line="+5"/>
+        <source>Cannot write %1: %2</source>
+        <translation>Impossibile scrivere %1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Stiffness tables copied as CSV.</source>
+        <translation>Tabelle di rigidezza copiate come CSV.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Export the stiffness tables</source>
+        <translation>Esporta le tabelle di rigidezza</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CSV data (*.csv)</source>
+        <translation>Dati CSV (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stiffness tables written to %1.</source>
+        <translation>Tabelle di rigidezza scritte in %1.</translation>
+    </message>
+</context>
+<context>
     <name>mozzi::views::TwistAxesPage</name>
     <message>
-        <location filename="../views/scene/twist_axes_page.cpp" line="+215"/>
+        <location filename="../views/scene/twist_axes_page.cpp" line="+252"/>
         <source>Specimen</source>
         <translation>Provino</translation>
     </message>
@@ -5001,12 +6446,12 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+392"/>
+        <location line="+348"/>
         <source>Dynamic</source>
         <translation>Dinamica</translation>
     </message>
     <message>
-        <location line="-391"/>
+        <location line="-347"/>
         <source>u [m] (plate plane)</source>
         <translation>u [m] (piano della piastra)</translation>
     </message>
@@ -5072,17 +6517,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>&apos;%1&apos; è %2: %3</translation>
     </message>
     <message>
-        <location line="+45"/>
-        <source>%1 (constrained)</source>
-        <translation>%1 (vincolato)</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>centre of gravity (estimated)</source>
-        <translation>baricentro (stimato)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+25"/>
         <source>Outline: %1, approximate (not to scale of a drawing): %2</source>
         <translation>Sagoma: %1, approssimata (non in scala da un disegno): %2</translation>
     </message>
@@ -5092,33 +6527,18 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Nessuna sagoma disegnata: %1</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>L%1</source>
-        <translation>L%1</translation>
-    </message>
-    <message>
-        <location line="+11"/>
-        <source>load point (%1)</source>
-        <translation>punto di carico (%1)</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>load point</source>
-        <translation>punto di carico</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <location line="+99"/>
+        <location line="+9"/>
+        <location line="+102"/>
         <source>a_tw</source>
         <translation>a_tw</translation>
     </message>
     <message>
-        <location line="-76"/>
+        <location line="-79"/>
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+57"/>
         <source>static twist axis</source>
         <translation>asse di torsione statico</translation>
     </message>
@@ -5196,6 +6616,94 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <location line="+26"/>
         <source>Dynamic, %1 Hz</source>
         <translation>Dinamica, %1 Hz</translation>
+    </message>
+</context>
+<context>
+    <name>mozzi::views::WheelchairPage</name>
+    <message>
+        <location filename="../views/wheelchair/wheelchair_page.cpp" line="+171"/>
+        <source>Correct the marked values first.</source>
+        <translation>Correggere prima i valori segnalati.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Simulating the manoeuvre...</source>
+        <translation>Simulazione della manovra...</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Wheelchair manoeuvre</source>
+        <translation>Manovra della carrozzina</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Cannot simulate: %1</source>
+        <translation>Impossibile simulare: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>chair</source>
+        <translation>carrozzina</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C_α × %1</source>
+        <translation>C_α × %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C_M × %1</source>
+        <translation>C_M × %1</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1: lateral amplitude %2 m, rear slip amplitude right %3°, left %4°</source>
+        <translation>%1: ampiezza laterale %2 m, ampiezza della deriva posteriore destra %3°, sinistra %4°</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: radius %2 m at the end, rear slip right %3°, left %4°</source>
+        <translation>%1: raggio %2 m alla fine, deriva posteriore destra %3°, sinistra %4°</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Simulate</source>
+        <translation>Simula</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Trajectory of the centre of mass (thesis Figures 57 to 60)</source>
+        <translation>Traiettoria del baricentro (Figure da 57 a 60 della tesi)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>x [m]</source>
+        <translation>x [m]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>y [m]</source>
+        <translation>y [m]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Right rear wheel slip angle</source>
+        <translation>Angolo di deriva della ruota posteriore destra</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Left rear wheel slip angle</source>
+        <translation>Angolo di deriva della ruota posteriore sinistra</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>α [deg]</source>
+        <translation>α [gradi]</translation>
     </message>
 </context>
 </TS>
