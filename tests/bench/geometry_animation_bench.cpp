@@ -68,6 +68,45 @@ void BM_AnimationTick20k(benchmark::State& state) {
 }
 BENCHMARK(BM_AnimationTick20k)->Unit(benchmark::kMicrosecond);
 
+// What a tick does now (scene_view.cpp): the points only, one fused loop;
+// the colours were set once per shape (BM_ColourValues20k).
+void BM_AnimationTickPoints20k(benchmark::State& state) {
+  const int nx = 200, ny = 100;
+  const auto d = plate(nx, ny);
+  std::vector<Dof> dofs;
+  ComplexVector values;
+  measured(d, nx, dofs, values);
+  const auto field = geometry::shapeField(d, dofs, values).value();
+  const auto base = geometry::nodePoints(d.mesh).value();
+  const auto re = geometry::realPart(field.u), im = geometry::imagPart(field.u);
+  geometry::NodePoints out(base.rows(), 3);
+  double t = 0.0;
+  for (auto _ : state) {
+    t += 1.0 / 30.0;
+    const auto s = geometry::warpScales(0.01, geometry::animationPhase(t, 0.5));
+    geometry::deformPoints(base.data(), re.data(), im.data(), base.rows(), s, out.data());
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * base.rows());
+}
+BENCHMARK(BM_AnimationTickPoints20k)->Unit(benchmark::kMicrosecond);
+
+// Once per shape and amplitude: each node's peak displacement, the value it is coloured by.
+void BM_ColourValues20k(benchmark::State& state) {
+  const int nx = 200, ny = 100;
+  const auto d = plate(nx, ny);
+  std::vector<Dof> dofs;
+  ComplexVector values;
+  measured(d, nx, dofs, values);
+  const auto field = geometry::shapeField(d, dofs, values).value();
+  for (auto _ : state) {
+    Vector c = geometry::colourValues(field.u, 0.01);
+    benchmark::DoNotOptimize(c.data());
+  }
+  state.SetItemsProcessed(state.iterations() * field.u.rows());
+}
+BENCHMARK(BM_ColourValues20k)->Unit(benchmark::kMicrosecond);
+
 void BM_ShapeFieldInterpolated20k(benchmark::State& state) {
   const int nx = 200, ny = 100;
   const auto d = plate(nx, ny);

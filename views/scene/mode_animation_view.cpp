@@ -284,7 +284,7 @@ bool ModeAnimationView::present(SceneView* scene, const Shape& shape, std::optio
   scene->setColourByMagnitude(colourCheck_->isChecked());
   scene->setUndeformedVisible(undeformedCheck_->isChecked());
   scene->setArrowsVisible(arrowsCheck_->isChecked());
-  scene->setLegendTitle(tr("|u|"));
+  scene->setLegendTitle(tr("peak |u|"));
   field = std::move(spread).value();
   return true;
 }
@@ -414,6 +414,8 @@ void ModeAnimationView::play() {
     playButton_->setChecked(true);
   }
   retranslate();
+  scene_->setAnimating(true);
+  compare_->setAnimating(true);
   timer_->start(0);
 }
 
@@ -423,6 +425,8 @@ void ModeAnimationView::pause() {
     if (fpsClock_.isValid() && fpsClock_.elapsed() > 0) fps_ = 1000.0 * fpsTicks_ / fpsClock_.elapsed();
   }
   playing_ = false;
+  scene_->setAnimating(false);
+  compare_->setAnimating(false);
   {
     QSignalBlocker block(playButton_);
     playButton_->setChecked(false);

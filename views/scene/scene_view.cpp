@@ -26,6 +26,7 @@
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
 #include <QEvent>
 #include <QMouseEvent>
 #include <QSurfaceFormat>
@@ -64,7 +65,7 @@ struct SceneView::Pipeline {
   vtkNew<vtkPolyData> deformed;
   vtkNew<vtkPoints> deformedPoints;
   vtkNew<vtkDoubleArray> deformedCoords;
-  vtkNew<vtkDoubleArray> magnitude;
+  vtkNew<vtkUnsignedCharArray> colours;  // RGB per node, from the peak displacement: set once per shape
   vtkNew<vtkPolyDataMapper> deformedMapper;
   vtkNew<vtkActor> deformedActor;
   vtkNew<vtkLookupTable> lut;
@@ -153,15 +154,18 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), pipeline_(new Pipeline)
   p.deformedPoints->SetDataTypeToDouble();
   p.deformedPoints->SetData(p.deformedCoords);
   p.deformed->SetPoints(p.deformedPoints);
-  p.magnitude->SetName("displacement magnitude");
-  p.deformed->GetPointData()->SetScalars(p.magnitude);
+  // Colours are given as RGB (direct scalars): VTK uploads them once and does
+  // not map scalars again when a tick moves the points. The lookup table
+  // makes them and draws the legend.
+  p.colours->SetNumberOfComponents(3);
+  p.colours->SetName("peak displacement colour");
+  p.deformed->GetPointData()->SetScalars(p.colours);
   p.lut->SetHueRange(0.667, 0.0);  // blue (still) to red (largest)
   p.lut->SetNumberOfTableValues(256);
   p.lut->Build();
   p.deformedMapper->SetInputData(p.deformed);
-  p.deformedMapper->SetLookupTable(p.lut);
   p.deformedMapper->SetScalarModeToUsePointData();
-  p.deformedMapper->UseLookupTableScalarRangeOff();
+  p.deformedMapper->SetColorModeToDirectScalars();
   p.deformedActor->SetMapper(p.deformedMapper);
   p.deformedActor->GetProperty()->SetColor(0.11, 0.21, 0.34);
   p.deformedActor->GetProperty()->SetLineWidth(3.0);
@@ -440,7 +444,7 @@ bool SceneView::setShape(const core::geometry::NodeDisplacements& u, const std::
   const Eigen::Index n = meshPoints ? meshPoints->GetNumberOfPoints() : 0;
   if (u.rows() != n || n == 0) return false;
   // Built once per shape: base points, Re and Im parts, the deformed layer's
-  // arrays and cells. Ticks only write into deformedCoords and magnitude.
+  // arrays, colours and cells. Ticks only write into deformedCoords.
   base_.resize(n, 3);
   for (Eigen::Index i = 0; i < n; ++i) {
     double xyz[3];
@@ -452,7 +456,7 @@ bool SceneView::setShape(const core::geometry::NodeDisplacements& u, const std::
   im_ = core::geometry::imagPart(u);
   shapeRows_ = n;
   p.deformedCoords->SetNumberOfTuples(n);
-  p.magnitude->SetNumberOfTuples(n);
+  p.colours->SetNumberOfTuples(n);
   p.deformed->SetLines(p.mesh->GetLines());
   p.deformed->SetPolys(p.mesh->GetPolys());
   // Large meshes: the lines show the nodes; per-node dots would double the
@@ -522,8 +526,12 @@ void SceneView::applyStyle() {
     mesh->SetLineWidth(1.0);
     nodes->SetColor(0.55, 0.58, 0.62);
     nodes->SetPointSize(4.0 * dpr);
-    p.meshActor->SetVisibility(undeformedVisible_ ? 1 : 0);
-    p.nodeActor->SetVisibility(undeformedVisible_ && !large ? 1 : 0);
+    // A large mesh's overlay waits for a pause: under software OpenGL its tens
+    // of thousands of static lines cost about as much per frame as the moving
+    // shape itself (docs/performance/scene.md).
+    const bool overlay = undeformedVisible_ && !(large && animating_);
+    p.meshActor->SetVisibility(overlay ? 1 : 0);
+    p.nodeActor->SetVisibility(overlay && !large ? 1 : 0);
   } else {
     mesh->SetColor(0.11, 0.21, 0.34);
     mesh->SetOpacity(meshFaces_ > 0 ? 0.9 : 1.0);
@@ -550,12 +558,11 @@ void SceneView::setPhase(double theta) {
   }
   Pipeline& p = *pipeline_;
   const auto scales = core::geometry::warpScales(amplitude_, theta);
+  // One fused loop into the array VTK draws; the colours stay as they are.
   core::geometry::deformPoints(base_.data(), re_.data(), im_.data(), shapeRows_, scales,
-                               p.deformedCoords->GetPointer(0), p.magnitude->GetPointer(0));
+                               p.deformedCoords->GetPointer(0));
   p.deformedCoords->Modified();
   p.deformedPoints->Modified();
-  p.magnitude->Modified();
-  p.deformed->Modified();
   if (p.arrowActor->GetVisibility()) {
     double* v = p.arrowVectors->GetPointer(0);
     for (std::size_t k = 0; k < arrowRows_.size(); ++k) {
@@ -571,8 +578,19 @@ void SceneView::setPhase(double theta) {
 void SceneView::updateColourRange() {
   colourRange_ = core::geometry::colourRange(shape_, amplitude_);
   Pipeline& p = *pipeline_;
-  p.deformedMapper->SetScalarRange(colourRange_.min, colourRange_.max);
   p.lut->SetTableRange(colourRange_.min, colourRange_.max);
+  // Each node's colour: its peak displacement over the cycle through the
+  // legend's table (once per shape and amplitude, not per tick).
+  const core::Vector values = core::geometry::colourValues(shape_, amplitude_);
+  if (p.colours->GetNumberOfTuples() != values.size()) p.colours->SetNumberOfTuples(values.size());
+  unsigned char* rgb = p.colours->GetPointer(0);
+  for (Eigen::Index i = 0; i < values.size(); ++i) {
+    const unsigned char* c = p.lut->MapValue(values[i]);
+    rgb[3 * i] = c[0];
+    rgb[3 * i + 1] = c[1];
+    rgb[3 * i + 2] = c[2];
+  }
+  p.colours->Modified();
 }
 
 void SceneView::setColourByMagnitude(bool on) {
@@ -580,6 +598,17 @@ void SceneView::setColourByMagnitude(bool on) {
   Pipeline& p = *pipeline_;
   p.deformedMapper->SetScalarVisibility(on ? 1 : 0);
   p.legend->SetVisibility(on && hasShape() ? 1 : 0);
+  render();
+}
+
+bool SceneView::undeformedShown() const {
+  return pipeline_->meshActor->GetVisibility() != 0;
+}
+
+void SceneView::setAnimating(bool on) {
+  if (animating_ == on) return;
+  animating_ = on;
+  applyStyle();
   render();
 }
 
@@ -640,7 +669,7 @@ void SceneView::changeEvent(QEvent* event) {
 }
 
 void SceneView::retranslate() {
-  pipeline_->legend->SetTitle(tr("|u|").toUtf8().constData());
+  pipeline_->legend->SetTitle(tr("peak |u|").toUtf8().constData());
 }
 
 ShownMesh showStoredMesh(SceneView& scene, core::io::ProjectStore* store, qint64 specimenId) {

@@ -5,7 +5,8 @@
 //              shape is shown
 //   selection  highlighted nodes (the mesh editor's selection)
 //   labels     node numbers
-//   deformed   the mesh displaced by a shape, coloured by displacement magnitude
+//   deformed   the mesh displaced by a shape, coloured by each node's peak
+//              displacement over the cycle (set once per shape and amplitude)
 //              with a legend
 //   arrows     displacement arrows at the measured nodes
 // Geometry and the shape arrays are built once (showMesh, setShape); each
@@ -90,6 +91,12 @@ class SceneView : public QWidget {
   double phase() const { return phase_; }
   void setColourByMagnitude(bool on);
   void setUndeformedVisible(bool on);
+  // The animation is playing. A large mesh (see kLargeMeshNodes) shows its
+  // undeformed overlay only while paused.
+  void setAnimating(bool on);
+  bool isAnimating() const { return animating_; }
+  // The undeformed mesh is drawn (as the overlay while a shape is shown).
+  bool undeformedShown() const;
   void setArrowsVisible(bool on);
   void setLegendTitle(const QString& title);
   core::geometry::ColourRange colourRange() const { return colourRange_; }
@@ -112,7 +119,8 @@ class SceneView : public QWidget {
   void retranslate();
   void hideHitMarker();
   // Meshes above this many nodes are drawn for speed (thin lines, plain dots,
-  // no dots on the deformed shape, opaque overlay): see applyStyle().
+  // no dots on the deformed shape, opaque overlay shown only while paused):
+  // see applyStyle().
   static constexpr int kLargeMeshNodes = 5000;
   bool isLarge() const;
   void applyStyle();
@@ -138,6 +146,7 @@ class SceneView : public QWidget {
   double phase_ = 0.0;
   bool colourByMagnitude_ = true;
   bool undeformedVisible_ = true;
+  bool animating_ = false;
   bool arrowsVisible_ = false;
   core::geometry::ColourRange colourRange_;
   QPoint pressPos_;

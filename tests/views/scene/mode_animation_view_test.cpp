@@ -318,7 +318,12 @@ void ModeAnimationViewTest::twentyThousandNodesAnimateFast() {
   }
   view.setFrameInterval(0);  // as fast as it goes
   view.setSpeed(1.0);
+  QVERIFY(view.scene()->undeformedShown());
   view.play();
+  // Above 5,000 nodes the overlay waits for a pause (it costs as much per
+  // frame as the moving shape under llvmpipe; docs/performance/scene.md).
+  QVERIFY(view.scene()->isAnimating());
+  QVERIFY(!view.scene()->undeformedShown());
   QTest::qWait(500);  // warm-up (shader compilation, first uploads)
   view.pause();
   const int ticksBefore = view.ticks();
@@ -335,15 +340,19 @@ void ModeAnimationViewTest::twentyThousandNodesAnimateFast() {
       "20,000-node mesh: %.1f frames/s wall (%.1f ms per frame), %.1f ms CPU per frame, %d frames; "
       "shape set-up %lld ms",
       fps, 1000.0 / fps, cpuMsPerFrame, frames, static_cast<long long>(setupMs));
+  QVERIFY(!view.scene()->isAnimating());
+  QVERIFY(view.scene()->undeformedShown());  // paused: the overlay is back
   QVERIFY(view.grab().save(screenshotPath(QStringLiteral("mode_animation_20k.png"))));
   // Issue 21 asks for 30 frames per second under llvmpipe on the 2-core
-  // machine, i.e. at most 33 ms per frame. This build does not reach it (see
-  // docs/performance/scene.md: about 90 ms of CPU per frame, half VTK's
-  // render, half Qt composing the window). The wall rate depends on what else
-  // the machine runs; the CPU time per frame does not, so the guard is on CPU
-  // time: a frame must stay under 150 ms of CPU (a regression of the layer
-  // styling for large meshes or multisampling coming back would exceed it).
-  QVERIFY2(cpuMsPerFrame <= 150.0, qPrintable(QStringLiteral("%1 ms CPU per frame").arg(cpuMsPerFrame)));
+  // machine, i.e. at most 33 ms per frame. Measured at 1280 x 800 while
+  // playing: 31-35 ms of CPU per frame (GUI thread and llvmpipe's two
+  // rasterizer threads together) under a load of 12-14, against 44-50 ms
+  // before the overlay waited for a pause (docs/performance/scene.md). The
+  // wall rate depends on what else the machine runs, so the guard is on CPU
+  // time, with room for a loaded machine (CPU time per frame grows under
+  // contention too): 75 ms. The overlay's return while playing is checked
+  // above by state, not by time.
+  QVERIFY2(cpuMsPerFrame <= 75.0, qPrintable(QStringLiteral("%1 ms CPU per frame").arg(cpuMsPerFrame)));
 }
 
 int main(int argc, char** argv) {
