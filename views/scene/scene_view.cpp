@@ -5,6 +5,7 @@
 #include <vtkActor2D.h>
 #include <vtkArrowSource.h>
 #include <vtkAxesActor.h>
+#include <vtkBillboardTextActor3D.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
@@ -88,6 +89,7 @@ struct SceneView::Pipeline {
   vtkNew<vtkGlyph3D> hitGlyph;
   vtkNew<vtkPolyDataMapper> hitArrowMapper;
   vtkNew<vtkActor> hitArrowActor;
+  vtkNew<vtkBillboardTextActor3D> hitText;  // the point's DOF, beside the node, facing the camera
 };
 
 void SceneView::prepareSurfaceFormat() {
@@ -246,6 +248,20 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), pipeline_(new Pipeline)
   p.hitArrowActor->PickableOff();
   p.hitArrowActor->VisibilityOff();
   p.renderer->AddActor(p.hitArrowActor);
+  // The DOF in bold on a white plate, readable over lines and background alike.
+  auto* hitTextStyle = p.hitText->GetTextProperty();
+  hitTextStyle->SetColor(0.05, 0.45, 0.17);
+  hitTextStyle->BoldOn();
+  hitTextStyle->ShadowOff();
+  hitTextStyle->SetBackgroundColor(1.0, 1.0, 1.0);
+  hitTextStyle->SetBackgroundOpacity(0.85);
+  hitTextStyle->SetFrame(1);
+  hitTextStyle->SetFrameColor(0.10, 0.62, 0.25);
+  hitTextStyle->SetJustificationToLeft();
+  hitTextStyle->SetVerticalJustificationToBottom();
+  p.hitText->PickableOff();
+  p.hitText->VisibilityOff();
+  p.renderer->AddActor(p.hitText);
 
   p.picker->PickFromListOn();
   p.picker->AddPickList(p.nodeActor);
@@ -374,11 +390,26 @@ void SceneView::hideHitMarker() {
   hitMarker_.reset();
   pipeline_->hitNodeActor->VisibilityOff();
   pipeline_->hitArrowActor->VisibilityOff();
+  pipeline_->hitText->VisibilityOff();
 }
 
-void SceneView::setHitMarker(std::optional<int> label, const core::Vector3& strike) {
+std::optional<core::Vector3> SceneView::hitMarkerPosition() const {
+  vtkPoints* points = pipeline_->hitNode->GetPoints();
+  vtkCellArray* verts = pipeline_->hitNode->GetVerts();
+  if (!hitMarker_ || !points || !verts || verts->GetNumberOfCells() != 1) return std::nullopt;
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  verts->InitTraversal();
+  if (!verts->GetNextCell(count, ids) || count != 1) return std::nullopt;
+  double at[3];
+  points->GetPoint(ids[0], at);
+  return core::Vector3(at[0], at[1], at[2]);
+}
+
+void SceneView::setHitMarker(std::optional<int> label, const core::Vector3& strike, const QString& text) {
   Pipeline& p = *pipeline_;
   hideHitMarker();
+  hitText_ = text;
   vtkPoints* points = p.mesh->GetPoints();
   const auto it = label ? std::find(labels_.begin(), labels_.end(), *label) : labels_.end();
   if (it != labels_.end() && points) {
@@ -393,6 +424,15 @@ void SceneView::setHitMarker(std::optional<int> label, const core::Vector3& stri
     p.hitNode->SetPoints(points);
     p.hitNode->SetVerts(vert);
     p.hitNodeActor->VisibilityOn();
+    if (!text.isEmpty()) {
+      // Up and right of the node by a few pixels, clear of the marker's dot.
+      const double dpr = std::max(1.0, vtkWidget_->devicePixelRatioF());
+      p.hitText->SetInput(text.toUtf8().constData());
+      p.hitText->SetPosition(at);
+      p.hitText->SetDisplayOffset(static_cast<int>(14 * dpr), static_cast<int>(10 * dpr));
+      p.hitText->GetTextProperty()->SetFontSize(18);  // VTK scales text with the window's DPI itself
+      p.hitText->VisibilityOn();
+    }
     // The arrow: a quarter of the mesh's size, so it reads at any scale; its tip on the node.
     const double size = p.mesh->GetLength();  // the bounding box's diagonal
     const double norm = strike.norm();

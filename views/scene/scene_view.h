@@ -69,10 +69,15 @@ class SceneView : public QWidget {
   void setLabelsVisible(bool visible);
   // The hit marker: the node to strike next drawn large, with an arrow that
   // ends at it along `strike` (global axes; the hammer's direction of travel,
-  // its length ignored; zero: the node alone). nullopt removes the marker.
-  // A label the mesh lacks removes it too.
-  void setHitMarker(std::optional<int> label, const core::Vector3& strike = core::Vector3::Zero());
+  // its length ignored; zero: the node alone) and `text` beside it (the
+  // point's DOF; empty: no text). nullopt removes the marker. A label the
+  // mesh lacks removes it too.
+  void setHitMarker(std::optional<int> label, const core::Vector3& strike = core::Vector3::Zero(),
+                    const QString& text = QString());
   std::optional<int> hitMarkerNode() const { return hitMarker_; }
+  // Where the marker is drawn (global axes) and the text shown beside it.
+  std::optional<core::Vector3> hitMarkerPosition() const;
+  QString hitMarkerText() const { return hitMarker_ ? hitText_ : QString(); }
   // The node drawn nearest `widgetPos` (widget pixels), if one is within a few pixels.
   std::optional<int> nodeAt(const QPoint& widgetPos) const;
 
@@ -136,6 +141,7 @@ class SceneView : public QWidget {
   std::vector<int> labels_;  // node label per mesh point
   std::vector<int> selected_;
   std::optional<int> hitMarker_;
+  QString hitText_;
   bool renderPending_ = false;  // a deferred render of the hit marker is queued
   // Shape state: base points and the two parts of the shape, split once.
   core::geometry::NodePoints base_, re_, im_;
