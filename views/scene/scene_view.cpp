@@ -1,6 +1,7 @@
 #include "views/scene/scene_view.h"
 
-#include <QVTKOpenGLNativeWidget.h>
+#include <QVTKOpenGLStereoWidget.h>
+#include <QVTKOpenGLWindow.h>
 #include <vtkActor.h>
 #include <vtkActor2D.h>
 #include <vtkArrowSource.h>
@@ -11,6 +12,7 @@
 #include <vtkDoubleArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkGlyph3D.h>
+#include <vtkImageData.h>
 #include <vtkIntArray.h>
 #include <vtkLabeledDataMapper.h>
 #include <vtkLookupTable.h>
@@ -28,8 +30,11 @@
 #include <vtkScalarBarActor.h>
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+#include <QBackingStore>
 #include <QEvent>
 #include <QMouseEvent>
+#include <QPainter>
 #include <QSurfaceFormat>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -93,15 +98,21 @@ struct SceneView::Pipeline {
 };
 
 void SceneView::prepareSurfaceFormat() {
-  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLStereoWidget::defaultFormat());
 }
 
 SceneView::SceneView(QWidget* parent) : QWidget(parent), pipeline_(new Pipeline) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
-  vtkWidget_ = new QVTKOpenGLNativeWidget(this);
+  // A native child window (a QOpenGLWindow in a container): VTK's frame goes
+  // straight to its own window, so Qt does not compose the whole top-level
+  // window for every animation frame (with software OpenGL that composition
+  // cost as much as the render; docs/performance/scene.md). Grabs of a page
+  // get the 3-D picture from paintEvent below.
+  vtkWidget_ = new QVTKOpenGLStereoWidget(this);
   vtkWidget_->setObjectName(QStringLiteral("sceneVtkWidget"));
-  vtkWidget_->installEventFilter(this);
+  vtkWidget_->installEventFilter(this);                          // events sent to the widget (tests)
+  vtkWidget_->embeddedOpenGLWindow()->installEventFilter(this);  // the user's clicks
   layout->addWidget(vtkWidget_);
   Pipeline& p = *pipeline_;
 
@@ -674,17 +685,35 @@ vtkPoints* SceneView::deformedPoints() const {
 }
 
 QImage SceneView::grabFrame() {
+  if (!isReady()) return QImage();
   render();
-  return vtkWidget_->grabFramebuffer();
+  // VTK's own frame, read from its render buffer (QOpenGLWindow's grab draws
+  // the scene again in Qt's state, where VTK 9.1 lost the opaque mesh layers).
+  vtkNew<vtkWindowToImageFilter> reader;
+  reader->SetInput(pipeline_->window);
+  reader->ReadFrontBufferOff();
+  reader->ShouldRerenderOff();
+  reader->SetInputBufferTypeToRGB();
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  int size[3];
+  image->GetDimensions(size);
+  if (size[0] <= 0 || size[1] <= 0) return QImage();
+  const auto* rgb = static_cast<const uchar*>(image->GetScalarPointer());
+  // VTK's rows run bottom-up; mirrored() also makes the deep copy.
+  return QImage(rgb, size[0], size[1], 3 * size[0], QImage::Format_RGB888).mirrored(false, true);
 }
 
 void SceneView::render() {
+  // Before its window is first exposed VTK has no context to draw in; the
+  // first expose draws the scene as it is then.
+  if (!isReady()) return;
   pipeline_->window->Render();
   ++framesRendered_;
 }
 
 bool SceneView::eventFilter(QObject* watched, QEvent* event) {
-  if (watched == vtkWidget_) {
+  if (watched == vtkWidget_ || watched == vtkWidget_->embeddedOpenGLWindow()) {
     if (event->type() == QEvent::MouseButtonPress) {
       auto* me = static_cast<QMouseEvent*>(event);
       if (me->button() == Qt::LeftButton) {
@@ -701,6 +730,25 @@ bool SceneView::eventFilter(QObject* watched, QEvent* event) {
     }
   }
   return QWidget::eventFilter(watched, event);
+}
+
+void SceneView::paintEvent(QPaintEvent* event) {
+  // On screen the native 3-D window covers this widget. Painted into another
+  // device (QWidget::grab of a page, Export Work Area as Image), the native
+  // window is not part of the picture: paint its frame where it sits. On
+  // screen Qt paints into the top-level's backing store; anything else is a grab.
+  QPaintDevice* target = redirected(nullptr);
+  QBackingStore* store = window()->backingStore();
+  const bool grabbing = target && (!store || target != store->paintDevice());
+  if (grabbing && vtkWidget_->isVisible() && isReady()) {
+    QPainter painter(this);
+    painter.drawImage(vtkWidget_->geometry(), grabFrame());
+  }
+  QWidget::paintEvent(event);
+}
+
+bool SceneView::isReady() const {
+  return vtkWidget_->isValid();
 }
 
 void SceneView::changeEvent(QEvent* event) {

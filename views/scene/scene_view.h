@@ -23,7 +23,7 @@
 #include "core/geometry/mode_shape.h"
 #include "core/io/project_records.h"
 
-class QVTKOpenGLNativeWidget;
+class QVTKOpenGLStereoWidget;
 namespace mozzi::core::io {
 class ProjectStore;
 }
@@ -110,6 +110,10 @@ class SceneView : public QWidget {
 
   // The rendered picture at the widget's size (device pixels).
   QImage grabFrame();
+  // The 3-D window has its OpenGL context: it draws, and grabs of it (and of
+  // the page holding it) show the picture. False until the window is first
+  // exposed, a moment after its top-level window is shown.
+  bool isReady() const;
 
  signals:
   // A click (press and release without dragging) on a node.
@@ -118,6 +122,7 @@ class SceneView : public QWidget {
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
   void changeEvent(QEvent* event) override;
+  void paintEvent(QPaintEvent* event) override;
 
  private:
   void updateColourRange();
@@ -130,7 +135,7 @@ class SceneView : public QWidget {
   bool isLarge() const;
   void applyStyle();
 
-  QVTKOpenGLNativeWidget* vtkWidget_ = nullptr;
+  QVTKOpenGLStereoWidget* vtkWidget_ = nullptr;
   struct Pipeline;
   Pipeline* pipeline_ = nullptr;
   int framesRendered_ = 0;

@@ -144,6 +144,7 @@ void HammerStationPageTest::wholeCampaignFromTheKeyboard() {
   page.resize(1280, 800);
   page.show();
   QVERIFY(QTest::qWaitForWindowExposed(&page));
+  QTRY_VERIFY(page.scene()->isReady());  // the 3-D window is a native child: exposed a moment later
 
   // --- the wizard -------------------------------------------------------------------
   page.action(QStringLiteral("newCampaign"))->trigger();

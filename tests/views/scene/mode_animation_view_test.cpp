@@ -109,6 +109,7 @@ void ModeAnimationViewTest::vertexPositionsAtAPhaseAreShapeTimesScale() {
   view.resize(1280, 800);
   view.show();
   QVERIFY(QTest::qWaitForWindowExposed(&view));
+  QTRY_VERIFY(view.scene()->isReady());  // the 3-D window is a native child: exposed a moment later
   view.setMesh(fork());
   view.setShapes(shapes());
   QVERIFY(view.showShape(1));  // the complex mode
@@ -162,6 +163,7 @@ void ModeAnimationViewTest::sideBySideShowsTheMac() {
   view.resize(1280, 800);
   view.show();
   QVERIFY(QTest::qWaitForWindowExposed(&view));
+  QTRY_VERIFY(view.scene()->isReady());  // the 3-D window is a native child: exposed a moment later
   view.setMesh(fork());
   view.setShapes(shapes());
   QVERIFY(view.showShape(0));
@@ -182,6 +184,7 @@ void ModeAnimationViewTest::sideBySideShowsTheMac() {
   view.setPhase(M_PI / 2);
   QVERIFY(view.findChild<QLabel*>(QStringLiteral("animationScene") + QStringLiteral("Title"))->text() ==
           QStringLiteral("Mode 1"));
+  QTRY_VERIFY(view.compareScene()->isReady());
   QVERIFY(view.grab().save(screenshotPath(QStringLiteral("mode_animation_side_by_side.png"))));
   QVERIFY(view.compareWith(-1));
   QVERIFY(!view.mac().has_value());
@@ -222,6 +225,7 @@ void ModeAnimationViewTest::exportsFramesGifAndPngSequence() {
   view.resize(1280, 800);
   view.show();
   QVERIFY(QTest::qWaitForWindowExposed(&view));
+  QTRY_VERIFY(view.scene()->isReady());  // the 3-D window is a native child: exposed a moment later
   view.setMesh(fork());
   view.setShapes(shapes());
   QVERIFY(view.showShape(0));
@@ -300,6 +304,7 @@ void ModeAnimationViewTest::twentyThousandNodesAnimateFast() {
   view.resize(1280, 800);
   view.show();
   QVERIFY(QTest::qWaitForWindowExposed(&view));
+  QTRY_VERIFY(view.scene()->isReady());  // the 3-D window is a native child: exposed a moment later
   QElapsedTimer setup;
   setup.start();
   view.setMesh(plate);
