@@ -77,6 +77,10 @@ ColourRange colourRange(const NodeDisplacements& u, double amplitude) {
   return range;
 }
 
+Vector colourValues(const NodeDisplacements& u, double amplitude) {
+  return std::abs(amplitude) * peakMagnitudes(u);
+}
+
 Vector framePhases(int frames) {
   if (frames <= 0) return Vector();
   Vector phases(frames);

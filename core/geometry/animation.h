@@ -54,6 +54,13 @@ struct ColourRange {
 };
 ColourRange colourRange(const NodeDisplacements& u, double amplitude);
 
+// The value each node is coloured by: its peak displacement over a cycle at
+// amplitude A, |A| max_theta |Re(u) sin(theta) + Im(u) cos(theta)| [m]
+// (peakMagnitudes in mode_shape.h), spanning colourRange(). It does not change
+// with the phase, so a view computes it (and its colours) once per shape and
+// amplitude, and a tick only moves the points.
+Vector colourValues(const NodeDisplacements& u, double amplitude);
+
 // Phases of an exported cycle: theta_k = 2 pi k / frames, k = 0..frames-1.
 Vector framePhases(int frames);
 // "<stem>_<fps>fps_<index, zero-padded to 4>.png", e.g. "mode-2_25fps_0007.png".

@@ -45,28 +45,68 @@ void measured(const io::MeshDocument& d, int nx, std::vector<Dof>& dofs, Complex
   values = Eigen::Map<ComplexVector>(v.data(), static_cast<Eigen::Index>(v.size()));
 }
 
-void BM_AnimationTick20k(benchmark::State& state) {
-  const int nx = 200, ny = 100;  // 20,000 nodes
+// The 20,000-node plate with its shape spread and split once, as a view holds them.
+struct Plate20k {
+  geometry::ShapeField field;
+  geometry::NodePoints base, re, im;
+};
+Plate20k plate20k() {
+  const int nx = 200, ny = 100;
   const auto d = plate(nx, ny);
   std::vector<Dof> dofs;
   ComplexVector values;
   measured(d, nx, dofs, values);
-  const auto field = geometry::shapeField(d, dofs, values).value();
-  const auto base = geometry::nodePoints(d.mesh).value();
-  const auto re = geometry::realPart(field.u), im = geometry::imagPart(field.u);
-  geometry::NodePoints out(base.rows(), 3);
-  Vector magnitude(base.rows());
+  Plate20k p;
+  p.field = geometry::shapeField(d, dofs, values).value();
+  p.base = geometry::nodePoints(d.mesh).value();
+  p.re = geometry::realPart(p.field.u);
+  p.im = geometry::imagPart(p.field.u);
+  return p;
+}
+
+// A tick as it was: the points and a magnitude per node.
+void BM_AnimationTick20k(benchmark::State& state) {
+  const Plate20k p = plate20k();
+  geometry::NodePoints out(p.base.rows(), 3);
+  Vector magnitude(p.base.rows());
   double t = 0.0;
   for (auto _ : state) {
     t += 1.0 / 30.0;
     const auto s = geometry::warpScales(0.01, geometry::animationPhase(t, 0.5));
-    geometry::deformPoints(base, re, im, s, out, &magnitude);
+    geometry::deformPoints(p.base, p.re, p.im, s, out, &magnitude);
     benchmark::DoNotOptimize(out.data());
     benchmark::DoNotOptimize(magnitude.data());
   }
-  state.SetItemsProcessed(state.iterations() * base.rows());
+  state.SetItemsProcessed(state.iterations() * p.base.rows());
 }
 BENCHMARK(BM_AnimationTick20k)->Unit(benchmark::kMicrosecond);
+
+// What a tick does now (scene_view.cpp): the points only, one fused loop;
+// the colours were set once per shape (BM_ColourValues20k).
+void BM_AnimationTickPoints20k(benchmark::State& state) {
+  const Plate20k p = plate20k();
+  geometry::NodePoints out(p.base.rows(), 3);
+  double t = 0.0;
+  for (auto _ : state) {
+    t += 1.0 / 30.0;
+    const auto s = geometry::warpScales(0.01, geometry::animationPhase(t, 0.5));
+    geometry::deformPoints(p.base.data(), p.re.data(), p.im.data(), p.base.rows(), s, out.data());
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * p.base.rows());
+}
+BENCHMARK(BM_AnimationTickPoints20k)->Unit(benchmark::kMicrosecond);
+
+// Once per shape and amplitude: each node's peak displacement, the value it is coloured by.
+void BM_ColourValues20k(benchmark::State& state) {
+  const Plate20k p = plate20k();
+  for (auto _ : state) {
+    Vector c = geometry::colourValues(p.field.u, 0.01);
+    benchmark::DoNotOptimize(c.data());
+  }
+  state.SetItemsProcessed(state.iterations() * p.field.u.rows());
+}
+BENCHMARK(BM_ColourValues20k)->Unit(benchmark::kMicrosecond);
 
 void BM_ShapeFieldInterpolated20k(benchmark::State& state) {
   const int nx = 200, ny = 100;

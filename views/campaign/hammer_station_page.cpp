@@ -461,7 +461,8 @@ void HammerStationPage::updateHitMarker() {
     for (std::size_t i = 0; i < nodes.size(); ++i)
       if (nodes[i].label == dof.node) strike = field->u.row(static_cast<Eigen::Index>(i)).real().transpose();
   }
-  scene_->setHitMarker(dof.node, strike);
+  // The point's DOF beside the marker, as the point table names it.
+  scene_->setHitMarker(dof.node, strike, tr("Next: %1").arg(dofText(dof)));
 }
 
 void HammerStationPage::showCampaign(qint64 campaignId) {
@@ -816,6 +817,7 @@ void HammerStationPage::retranslate() {
     e.action->setText(tr("%1 (%2)").arg(tr(e.text), key));
     e.action->setToolTip(e.action->text());
   }
+  if (scene_ && sceneMesh_) updateHitMarker();  // the marker's "Next: ..." in the new language
   autoArm_->setText(tr("Arm again after each decision"));
   autoArm_->setToolTip(tr("Applies when the campaign starts"));
   responseLabel_->setText(tr("Response:"));

@@ -21,8 +21,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include <qwt_plot_curve.h>
+#include <qwt_text.h>
+
+#include <memory>
+
+#include "core/common/frf_display.h"
+#include "core/common/plot_math.h"
 #include "core/geometry/animation.h"
 #include "core/io/gif_writer.h"
+#include "views/plots/interactive_plot.h"
+#include "views/plots/vector_series.h"
 #include "views/scene/scene_view.h"
 
 namespace mozzi {
@@ -86,6 +95,14 @@ ModeAnimationView::ModeAnimationView(QWidget* parent) : QWidget(parent) {
   odsRow->addWidget(odsButton_);
   odsLabel_ = new QLabel(controls);
   form->addRow(odsLabel_, odsRow);
+  odsPlot_ = new InteractivePlot(controls);
+  odsPlot_->setObjectName(QStringLiteral("animationOdsPlot"));
+  odsPlot_->setMinimumHeight(controls->fontMetrics().height() * 11);
+  odsCurve_ = new QwtPlotCurve;
+  odsCurve_->setPen(QColor(31, 119, 180), 1.0);
+  odsCurve_->attach(odsPlot_);
+  odsPlot_->hide();  // until an FRF set is given
+  form->addRow(odsPlot_);
   amplitudeSlider_ = new QSlider(Qt::Horizontal, controls);
   amplitudeSlider_->setObjectName(QStringLiteral("animationAmplitudeSlider"));
   amplitudeSlider_->setRange(-100, 100);
@@ -168,6 +185,14 @@ ModeAnimationView::ModeAnimationView(QWidget* parent) : QWidget(parent) {
     if (!filling_) compareWith(i - 1);
   });
   connect(odsButton_, &QPushButton::clicked, this, [this] { showOds(odsSpin_->value()); });
+  connect(odsPlot_, &InteractivePlot::cursorMoved, this, [this](double hz) {
+    if (filling_) return;
+    {
+      QSignalBlocker block(odsSpin_);
+      odsSpin_->setValue(hz);
+    }
+    showOds(hz);
+  });
   connect(amplitudeSlider_, &QSlider::valueChanged, this, [this](int v) { setAmplitudeFactor(sliderFactor(v)); });
   connect(speedSpin_, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) { setSpeed(v); });
   connect(colourCheck_, &QCheckBox::toggled, this, [this](bool on) {
@@ -246,6 +271,25 @@ void ModeAnimationView::setFrfSet(const core::FrfMatrix& frf, const QString& nam
   }
   odsButton_->setEnabled(frf.lineCount() > 0);
   odsSpin_->setEnabled(frf.lineCount() > 0);
+  // The guide curve: |sum of the responses to reference 0| in dB, where the
+  // peaks (the modes) show which frequencies are worth a look.
+  odsPlot_->hide();
+  if (frf.lineCount() > 0 && !frf.references.empty()) {
+    core::FrfFilter filter;
+    filter.reference = frf.references.front();
+    auto sum = core::frfSum(frf, core::pickFrfs(frf, filter));
+    if (sum) {
+      auto x = std::make_shared<const core::Vector>(frf.frequencyHz);
+      auto y = std::make_shared<const core::Vector>(core::frfViewValues(*sum, core::FrfView::MagnitudeDb));
+      odsCurve_->setData(new VectorSeries(x, y));
+      odsPlot_->setYFloor(core::kMagnitudeFloorDb);
+      odsPlot_->show();
+      odsPlot_->autoscale();
+      filling_ = true;  // the cursor marks the spin box's frequency; no ODS yet
+      odsPlot_->setCursor(odsSpin_->value());
+      filling_ = false;
+    }
+  }
 }
 
 bool ModeAnimationView::present(SceneView* scene, const Shape& shape, std::optional<geo::ShapeField>& field,
@@ -284,7 +328,7 @@ bool ModeAnimationView::present(SceneView* scene, const Shape& shape, std::optio
   scene->setColourByMagnitude(colourCheck_->isChecked());
   scene->setUndeformedVisible(undeformedCheck_->isChecked());
   scene->setArrowsVisible(arrowsCheck_->isChecked());
-  scene->setLegendTitle(tr("|u|"));
+  scene->setLegendTitle(tr("peak |u|"));
   field = std::move(spread).value();
   return true;
 }
@@ -364,6 +408,11 @@ bool ModeAnimationView::showOds(double frequencyHz) {
   }
   Shape shape;
   shape.name = tr("ODS at %1 Hz (%2)").arg(ods->lineHz, 0, 'f', 2).arg(frfName_);
+  if (!odsPlot_->isHidden()) {
+    filling_ = true;  // the cursor on the line used, without showing the ODS twice
+    odsPlot_->setCursor(ods->lineHz);
+    filling_ = false;
+  }
   shape.dofs = ods->dofs;
   shape.values = ods->values;
   if (!present(scene_, shape, field_, autoAmplitude_)) return false;
@@ -414,6 +463,8 @@ void ModeAnimationView::play() {
     playButton_->setChecked(true);
   }
   retranslate();
+  scene_->setAnimating(true);
+  compare_->setAnimating(true);
   timer_->start(0);
 }
 
@@ -423,6 +474,8 @@ void ModeAnimationView::pause() {
     if (fpsClock_.isValid() && fpsClock_.elapsed() > 0) fps_ = 1000.0 * fpsTicks_ / fpsClock_.elapsed();
   }
   playing_ = false;
+  scene_->setAnimating(false);
+  compare_->setAnimating(false);
   {
     QSignalBlocker block(playButton_);
     playButton_->setChecked(false);
@@ -563,6 +616,15 @@ void ModeAnimationView::retranslate() {
   odsLabel_->setText(tr("ODS at"));
   odsButton_->setText(tr("Show"));
   odsButton_->setToolTip(tr("Operating deflection shape of the FRF set at the line nearest this frequency"));
+  odsPlot_->setToolTip(tr("Click (or use the arrow keys) to animate the operating deflection shape at that frequency"));
+  // Axis titles in the controls' own font: Qwt's default bold title is too
+  // large for a plot this small.
+  for (const auto& [axis, text] : {std::pair<int, QString>{QwtPlot::xBottom, tr("Frequency [Hz]")},
+                                   std::pair<int, QString>{QwtPlot::yLeft, tr("|sum H| [dB]")}}) {
+    QwtText title(text);
+    title.setFont(odsPlot_->font());
+    odsPlot_->setAxisTitle(axis, title);
+  }
   amplitudeLabel_->setText(tr("Amplitude"));
   amplitudeSlider_->setToolTip(tr("0.1x to 10x the automatic amplitude (largest displacement 10 % of the mesh)"));
   speedLabel_->setText(tr("Cycles/s"));

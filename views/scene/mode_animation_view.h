@@ -27,10 +27,12 @@ class QPushButton;
 class QSlider;
 class QSplitter;
 class QTimer;
+class QwtPlotCurve;
 
 namespace mozzi {
 namespace views {
 
+class InteractivePlot;
 class SceneView;
 
 class ModeAnimationView : public QWidget {
@@ -63,6 +65,10 @@ class ModeAnimationView : public QWidget {
   bool compareWith(int index);
   // Shows the ODS at the FRF line nearest `frequencyHz` in the left scene.
   bool showOds(double frequencyHz);
+  // The FRF set's sum |sum H| (reference 0, dB) under the controls: placing
+  // its cursor (a click, or the arrow keys) shows the ODS at that frequency.
+  // Hidden until an FRF set is given.
+  InteractivePlot* odsPlot() const { return odsPlot_; }
   std::optional<double> mac() const { return mac_; }
   QString macText() const;
 
@@ -132,6 +138,8 @@ class ModeAnimationView : public QWidget {
   QComboBox* compareCombo_ = nullptr;
   QDoubleSpinBox* odsSpin_ = nullptr;
   QPushButton* odsButton_ = nullptr;
+  InteractivePlot* odsPlot_ = nullptr;
+  QwtPlotCurve* odsCurve_ = nullptr;
   QSlider* amplitudeSlider_ = nullptr;
   QDoubleSpinBox* speedSpin_ = nullptr;
   QCheckBox* colourCheck_ = nullptr;

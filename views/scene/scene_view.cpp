@@ -1,15 +1,18 @@
 #include "views/scene/scene_view.h"
 
-#include <QVTKOpenGLNativeWidget.h>
+#include <QVTKOpenGLStereoWidget.h>
+#include <QVTKOpenGLWindow.h>
 #include <vtkActor.h>
 #include <vtkActor2D.h>
 #include <vtkArrowSource.h>
 #include <vtkAxesActor.h>
+#include <vtkBillboardTextActor3D.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkGlyph3D.h>
+#include <vtkImageData.h>
 #include <vtkIntArray.h>
 #include <vtkLabeledDataMapper.h>
 #include <vtkLookupTable.h>
@@ -26,8 +29,12 @@
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+#include <QBackingStore>
 #include <QEvent>
 #include <QMouseEvent>
+#include <QPainter>
 #include <QSurfaceFormat>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -64,7 +71,7 @@ struct SceneView::Pipeline {
   vtkNew<vtkPolyData> deformed;
   vtkNew<vtkPoints> deformedPoints;
   vtkNew<vtkDoubleArray> deformedCoords;
-  vtkNew<vtkDoubleArray> magnitude;
+  vtkNew<vtkUnsignedCharArray> colours;  // RGB per node, from the peak displacement: set once per shape
   vtkNew<vtkPolyDataMapper> deformedMapper;
   vtkNew<vtkActor> deformedActor;
   vtkNew<vtkLookupTable> lut;
@@ -87,18 +94,25 @@ struct SceneView::Pipeline {
   vtkNew<vtkGlyph3D> hitGlyph;
   vtkNew<vtkPolyDataMapper> hitArrowMapper;
   vtkNew<vtkActor> hitArrowActor;
+  vtkNew<vtkBillboardTextActor3D> hitText;  // the point's DOF, beside the node, facing the camera
 };
 
 void SceneView::prepareSurfaceFormat() {
-  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLStereoWidget::defaultFormat());
 }
 
 SceneView::SceneView(QWidget* parent) : QWidget(parent), pipeline_(new Pipeline) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
-  vtkWidget_ = new QVTKOpenGLNativeWidget(this);
+  // A native child window (a QOpenGLWindow in a container): VTK's frame goes
+  // straight to its own window, so Qt does not compose the whole top-level
+  // window for every animation frame (with software OpenGL that composition
+  // cost as much as the render; docs/performance/scene.md). Grabs of a page
+  // get the 3-D picture from paintEvent below.
+  vtkWidget_ = new QVTKOpenGLStereoWidget(this);
   vtkWidget_->setObjectName(QStringLiteral("sceneVtkWidget"));
-  vtkWidget_->installEventFilter(this);
+  vtkWidget_->installEventFilter(this);                          // events sent to the widget (tests)
+  vtkWidget_->embeddedOpenGLWindow()->installEventFilter(this);  // the user's clicks
   layout->addWidget(vtkWidget_);
   Pipeline& p = *pipeline_;
 
@@ -153,15 +167,18 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), pipeline_(new Pipeline)
   p.deformedPoints->SetDataTypeToDouble();
   p.deformedPoints->SetData(p.deformedCoords);
   p.deformed->SetPoints(p.deformedPoints);
-  p.magnitude->SetName("displacement magnitude");
-  p.deformed->GetPointData()->SetScalars(p.magnitude);
+  // Colours are given as RGB (direct scalars): VTK uploads them once and does
+  // not map scalars again when a tick moves the points. The lookup table
+  // makes them and draws the legend.
+  p.colours->SetNumberOfComponents(3);
+  p.colours->SetName("peak displacement colour");
+  p.deformed->GetPointData()->SetScalars(p.colours);
   p.lut->SetHueRange(0.667, 0.0);  // blue (still) to red (largest)
   p.lut->SetNumberOfTableValues(256);
   p.lut->Build();
   p.deformedMapper->SetInputData(p.deformed);
-  p.deformedMapper->SetLookupTable(p.lut);
   p.deformedMapper->SetScalarModeToUsePointData();
-  p.deformedMapper->UseLookupTableScalarRangeOff();
+  p.deformedMapper->SetColorModeToDirectScalars();
   p.deformedActor->SetMapper(p.deformedMapper);
   p.deformedActor->GetProperty()->SetColor(0.11, 0.21, 0.34);
   p.deformedActor->GetProperty()->SetLineWidth(3.0);
@@ -242,6 +259,20 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), pipeline_(new Pipeline)
   p.hitArrowActor->PickableOff();
   p.hitArrowActor->VisibilityOff();
   p.renderer->AddActor(p.hitArrowActor);
+  // The DOF in bold on a white plate, readable over lines and background alike.
+  auto* hitTextStyle = p.hitText->GetTextProperty();
+  hitTextStyle->SetColor(0.05, 0.45, 0.17);
+  hitTextStyle->BoldOn();
+  hitTextStyle->ShadowOff();
+  hitTextStyle->SetBackgroundColor(1.0, 1.0, 1.0);
+  hitTextStyle->SetBackgroundOpacity(0.85);
+  hitTextStyle->SetFrame(1);
+  hitTextStyle->SetFrameColor(0.10, 0.62, 0.25);
+  hitTextStyle->SetJustificationToLeft();
+  hitTextStyle->SetVerticalJustificationToBottom();
+  p.hitText->PickableOff();
+  p.hitText->VisibilityOff();
+  p.renderer->AddActor(p.hitText);
 
   p.picker->PickFromListOn();
   p.picker->AddPickList(p.nodeActor);
@@ -370,11 +401,26 @@ void SceneView::hideHitMarker() {
   hitMarker_.reset();
   pipeline_->hitNodeActor->VisibilityOff();
   pipeline_->hitArrowActor->VisibilityOff();
+  pipeline_->hitText->VisibilityOff();
 }
 
-void SceneView::setHitMarker(std::optional<int> label, const core::Vector3& strike) {
+std::optional<core::Vector3> SceneView::hitMarkerPosition() const {
+  vtkPoints* points = pipeline_->hitNode->GetPoints();
+  vtkCellArray* verts = pipeline_->hitNode->GetVerts();
+  if (!hitMarker_ || !points || !verts || verts->GetNumberOfCells() != 1) return std::nullopt;
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  verts->InitTraversal();
+  if (!verts->GetNextCell(count, ids) || count != 1) return std::nullopt;
+  double at[3];
+  points->GetPoint(ids[0], at);
+  return core::Vector3(at[0], at[1], at[2]);
+}
+
+void SceneView::setHitMarker(std::optional<int> label, const core::Vector3& strike, const QString& text) {
   Pipeline& p = *pipeline_;
   hideHitMarker();
+  hitText_ = text;
   vtkPoints* points = p.mesh->GetPoints();
   const auto it = label ? std::find(labels_.begin(), labels_.end(), *label) : labels_.end();
   if (it != labels_.end() && points) {
@@ -389,6 +435,15 @@ void SceneView::setHitMarker(std::optional<int> label, const core::Vector3& stri
     p.hitNode->SetPoints(points);
     p.hitNode->SetVerts(vert);
     p.hitNodeActor->VisibilityOn();
+    if (!text.isEmpty()) {
+      // Up and right of the node by a few pixels, clear of the marker's dot.
+      const double dpr = std::max(1.0, vtkWidget_->devicePixelRatioF());
+      p.hitText->SetInput(text.toUtf8().constData());
+      p.hitText->SetPosition(at);
+      p.hitText->SetDisplayOffset(static_cast<int>(14 * dpr), static_cast<int>(10 * dpr));
+      p.hitText->GetTextProperty()->SetFontSize(18);  // VTK scales text with the window's DPI itself
+      p.hitText->VisibilityOn();
+    }
     // The arrow: a quarter of the mesh's size, so it reads at any scale; its tip on the node.
     const double size = p.mesh->GetLength();  // the bounding box's diagonal
     const double norm = strike.norm();
@@ -440,7 +495,7 @@ bool SceneView::setShape(const core::geometry::NodeDisplacements& u, const std::
   const Eigen::Index n = meshPoints ? meshPoints->GetNumberOfPoints() : 0;
   if (u.rows() != n || n == 0) return false;
   // Built once per shape: base points, Re and Im parts, the deformed layer's
-  // arrays and cells. Ticks only write into deformedCoords and magnitude.
+  // arrays, colours and cells. Ticks only write into deformedCoords.
   base_.resize(n, 3);
   for (Eigen::Index i = 0; i < n; ++i) {
     double xyz[3];
@@ -452,7 +507,7 @@ bool SceneView::setShape(const core::geometry::NodeDisplacements& u, const std::
   im_ = core::geometry::imagPart(u);
   shapeRows_ = n;
   p.deformedCoords->SetNumberOfTuples(n);
-  p.magnitude->SetNumberOfTuples(n);
+  p.colours->SetNumberOfTuples(n);
   p.deformed->SetLines(p.mesh->GetLines());
   p.deformed->SetPolys(p.mesh->GetPolys());
   // Large meshes: the lines show the nodes; per-node dots would double the
@@ -522,8 +577,12 @@ void SceneView::applyStyle() {
     mesh->SetLineWidth(1.0);
     nodes->SetColor(0.55, 0.58, 0.62);
     nodes->SetPointSize(4.0 * dpr);
-    p.meshActor->SetVisibility(undeformedVisible_ ? 1 : 0);
-    p.nodeActor->SetVisibility(undeformedVisible_ && !large ? 1 : 0);
+    // A large mesh's overlay waits for a pause: under software OpenGL its tens
+    // of thousands of static lines cost about as much per frame as the moving
+    // shape itself (docs/performance/scene.md).
+    const bool overlay = undeformedVisible_ && !(large && animating_);
+    p.meshActor->SetVisibility(overlay ? 1 : 0);
+    p.nodeActor->SetVisibility(overlay && !large ? 1 : 0);
   } else {
     mesh->SetColor(0.11, 0.21, 0.34);
     mesh->SetOpacity(meshFaces_ > 0 ? 0.9 : 1.0);
@@ -550,12 +609,11 @@ void SceneView::setPhase(double theta) {
   }
   Pipeline& p = *pipeline_;
   const auto scales = core::geometry::warpScales(amplitude_, theta);
+  // One fused loop into the array VTK draws; the colours stay as they are.
   core::geometry::deformPoints(base_.data(), re_.data(), im_.data(), shapeRows_, scales,
-                               p.deformedCoords->GetPointer(0), p.magnitude->GetPointer(0));
+                               p.deformedCoords->GetPointer(0));
   p.deformedCoords->Modified();
   p.deformedPoints->Modified();
-  p.magnitude->Modified();
-  p.deformed->Modified();
   if (p.arrowActor->GetVisibility()) {
     double* v = p.arrowVectors->GetPointer(0);
     for (std::size_t k = 0; k < arrowRows_.size(); ++k) {
@@ -571,8 +629,19 @@ void SceneView::setPhase(double theta) {
 void SceneView::updateColourRange() {
   colourRange_ = core::geometry::colourRange(shape_, amplitude_);
   Pipeline& p = *pipeline_;
-  p.deformedMapper->SetScalarRange(colourRange_.min, colourRange_.max);
   p.lut->SetTableRange(colourRange_.min, colourRange_.max);
+  // Each node's colour: its peak displacement over the cycle through the
+  // legend's table (once per shape and amplitude, not per tick).
+  const core::Vector values = core::geometry::colourValues(shape_, amplitude_);
+  if (p.colours->GetNumberOfTuples() != values.size()) p.colours->SetNumberOfTuples(values.size());
+  unsigned char* rgb = p.colours->GetPointer(0);
+  for (Eigen::Index i = 0; i < values.size(); ++i) {
+    const unsigned char* c = p.lut->MapValue(values[i]);
+    rgb[3 * i] = c[0];
+    rgb[3 * i + 1] = c[1];
+    rgb[3 * i + 2] = c[2];
+  }
+  p.colours->Modified();
 }
 
 void SceneView::setColourByMagnitude(bool on) {
@@ -580,6 +649,17 @@ void SceneView::setColourByMagnitude(bool on) {
   Pipeline& p = *pipeline_;
   p.deformedMapper->SetScalarVisibility(on ? 1 : 0);
   p.legend->SetVisibility(on && hasShape() ? 1 : 0);
+  render();
+}
+
+bool SceneView::undeformedShown() const {
+  return pipeline_->meshActor->GetVisibility() != 0;
+}
+
+void SceneView::setAnimating(bool on) {
+  if (animating_ == on) return;
+  animating_ = on;
+  applyStyle();
   render();
 }
 
@@ -605,17 +685,35 @@ vtkPoints* SceneView::deformedPoints() const {
 }
 
 QImage SceneView::grabFrame() {
+  if (!isReady()) return QImage();
   render();
-  return vtkWidget_->grabFramebuffer();
+  // VTK's own frame, read from its render buffer (QOpenGLWindow's grab draws
+  // the scene again in Qt's state, where VTK 9.1 lost the opaque mesh layers).
+  vtkNew<vtkWindowToImageFilter> reader;
+  reader->SetInput(pipeline_->window);
+  reader->ReadFrontBufferOff();
+  reader->ShouldRerenderOff();
+  reader->SetInputBufferTypeToRGB();
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  int size[3];
+  image->GetDimensions(size);
+  if (size[0] <= 0 || size[1] <= 0) return QImage();
+  const auto* rgb = static_cast<const uchar*>(image->GetScalarPointer());
+  // VTK's rows run bottom-up; mirrored() also makes the deep copy.
+  return QImage(rgb, size[0], size[1], 3 * size[0], QImage::Format_RGB888).mirrored(false, true);
 }
 
 void SceneView::render() {
+  // Before its window is first exposed VTK has no context to draw in; the
+  // first expose draws the scene as it is then.
+  if (!isReady()) return;
   pipeline_->window->Render();
   ++framesRendered_;
 }
 
 bool SceneView::eventFilter(QObject* watched, QEvent* event) {
-  if (watched == vtkWidget_) {
+  if (watched == vtkWidget_ || watched == vtkWidget_->embeddedOpenGLWindow()) {
     if (event->type() == QEvent::MouseButtonPress) {
       auto* me = static_cast<QMouseEvent*>(event);
       if (me->button() == Qt::LeftButton) {
@@ -634,13 +732,32 @@ bool SceneView::eventFilter(QObject* watched, QEvent* event) {
   return QWidget::eventFilter(watched, event);
 }
 
+void SceneView::paintEvent(QPaintEvent* event) {
+  // On screen the native 3-D window covers this widget. Painted into another
+  // device (QWidget::grab of a page, Export Work Area as Image), the native
+  // window is not part of the picture: paint its frame where it sits. On
+  // screen Qt paints into the top-level's backing store; anything else is a grab.
+  QPaintDevice* target = redirected(nullptr);
+  QBackingStore* store = window()->backingStore();
+  const bool grabbing = target && (!store || target != store->paintDevice());
+  if (grabbing && vtkWidget_->isVisible() && isReady()) {
+    QPainter painter(this);
+    painter.drawImage(vtkWidget_->geometry(), grabFrame());
+  }
+  QWidget::paintEvent(event);
+}
+
+bool SceneView::isReady() const {
+  return vtkWidget_->isValid();
+}
+
 void SceneView::changeEvent(QEvent* event) {
   if (event->type() == QEvent::LanguageChange) retranslate();
   QWidget::changeEvent(event);
 }
 
 void SceneView::retranslate() {
-  pipeline_->legend->SetTitle(tr("|u|").toUtf8().constData());
+  pipeline_->legend->SetTitle(tr("peak |u|").toUtf8().constData());
 }
 
 ShownMesh showStoredMesh(SceneView& scene, core::io::ProjectStore* store, qint64 specimenId) {

@@ -5,7 +5,8 @@
 //              shape is shown
 //   selection  highlighted nodes (the mesh editor's selection)
 //   labels     node numbers
-//   deformed   the mesh displaced by a shape, coloured by displacement magnitude
+//   deformed   the mesh displaced by a shape, coloured by each node's peak
+//              displacement over the cycle (set once per shape and amplitude)
 //              with a legend
 //   arrows     displacement arrows at the measured nodes
 // Geometry and the shape arrays are built once (showMesh, setShape); each
@@ -22,7 +23,7 @@
 #include "core/geometry/mode_shape.h"
 #include "core/io/project_records.h"
 
-class QVTKOpenGLNativeWidget;
+class QVTKOpenGLStereoWidget;
 namespace mozzi::core::io {
 class ProjectStore;
 }
@@ -68,10 +69,15 @@ class SceneView : public QWidget {
   void setLabelsVisible(bool visible);
   // The hit marker: the node to strike next drawn large, with an arrow that
   // ends at it along `strike` (global axes; the hammer's direction of travel,
-  // its length ignored; zero: the node alone). nullopt removes the marker.
-  // A label the mesh lacks removes it too.
-  void setHitMarker(std::optional<int> label, const core::Vector3& strike = core::Vector3::Zero());
+  // its length ignored; zero: the node alone) and `text` beside it (the
+  // point's DOF; empty: no text). nullopt removes the marker. A label the
+  // mesh lacks removes it too.
+  void setHitMarker(std::optional<int> label, const core::Vector3& strike = core::Vector3::Zero(),
+                    const QString& text = QString());
   std::optional<int> hitMarkerNode() const { return hitMarker_; }
+  // Where the marker is drawn (global axes) and the text shown beside it.
+  std::optional<core::Vector3> hitMarkerPosition() const;
+  QString hitMarkerText() const { return hitMarker_ ? hitText_ : QString(); }
   // The node drawn nearest `widgetPos` (widget pixels), if one is within a few pixels.
   std::optional<int> nodeAt(const QPoint& widgetPos) const;
 
@@ -90,6 +96,12 @@ class SceneView : public QWidget {
   double phase() const { return phase_; }
   void setColourByMagnitude(bool on);
   void setUndeformedVisible(bool on);
+  // The animation is playing. A large mesh (see kLargeMeshNodes) shows its
+  // undeformed overlay only while paused.
+  void setAnimating(bool on);
+  bool isAnimating() const { return animating_; }
+  // The undeformed mesh is drawn (as the overlay while a shape is shown).
+  bool undeformedShown() const;
   void setArrowsVisible(bool on);
   void setLegendTitle(const QString& title);
   core::geometry::ColourRange colourRange() const { return colourRange_; }
@@ -98,6 +110,10 @@ class SceneView : public QWidget {
 
   // The rendered picture at the widget's size (device pixels).
   QImage grabFrame();
+  // The 3-D window has its OpenGL context: it draws, and grabs of it (and of
+  // the page holding it) show the picture. False until the window is first
+  // exposed, a moment after its top-level window is shown.
+  bool isReady() const;
 
  signals:
   // A click (press and release without dragging) on a node.
@@ -106,18 +122,20 @@ class SceneView : public QWidget {
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
   void changeEvent(QEvent* event) override;
+  void paintEvent(QPaintEvent* event) override;
 
  private:
   void updateColourRange();
   void retranslate();
   void hideHitMarker();
   // Meshes above this many nodes are drawn for speed (thin lines, plain dots,
-  // no dots on the deformed shape, opaque overlay): see applyStyle().
+  // no dots on the deformed shape, opaque overlay shown only while paused):
+  // see applyStyle().
   static constexpr int kLargeMeshNodes = 5000;
   bool isLarge() const;
   void applyStyle();
 
-  QVTKOpenGLNativeWidget* vtkWidget_ = nullptr;
+  QVTKOpenGLStereoWidget* vtkWidget_ = nullptr;
   struct Pipeline;
   Pipeline* pipeline_ = nullptr;
   int framesRendered_ = 0;
@@ -128,6 +146,7 @@ class SceneView : public QWidget {
   std::vector<int> labels_;  // node label per mesh point
   std::vector<int> selected_;
   std::optional<int> hitMarker_;
+  QString hitText_;
   bool renderPending_ = false;  // a deferred render of the hit marker is queued
   // Shape state: base points and the two parts of the shape, split once.
   core::geometry::NodePoints base_, re_, im_;
@@ -138,6 +157,7 @@ class SceneView : public QWidget {
   double phase_ = 0.0;
   bool colourByMagnitude_ = true;
   bool undeformedVisible_ = true;
+  bool animating_ = false;
   bool arrowsVisible_ = false;
   core::geometry::ColourRange colourRange_;
   QPoint pressPos_;

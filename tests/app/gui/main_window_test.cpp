@@ -297,6 +297,7 @@ void MainWindowTest::sceneRendersWithOpenGl() {
   QVERIFY(scene);
   window_->workArea()->setCurrentPage(scene);
   QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+  QTRY_VERIFY(scene->isReady());  // the 3-D window is a native child: exposed a moment later
   const int before = scene->framesRendered();
   scene->render();
   QCOMPARE(scene->framesRendered(), before + 1);
@@ -325,6 +326,7 @@ void MainWindowTest::importedGeometryIsDrawnInThe3dView() {
     meshRow = meshRow || properties->item(r, 1)->text() == QStringLiteral("36 nodes, 30 lines");
   }
   QVERIFY(meshRow);
+  QTRY_VERIFY(scene->isReady());
   scene->render();
   const QString folder = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR", QDir::tempPath());
   QDir().mkpath(folder);

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -69,6 +70,33 @@ TEST(Animation, AutoAmplitudeMakesThePeakATenthOfTheMeshDiagonal) {
   EXPECT_NEAR(range.max, 0.5, 1e-15);
   EXPECT_FALSE(autoAmplitude(base, NodeDisplacements::Zero(2, 3)).ok());
   EXPECT_FALSE(autoAmplitude(NodePoints::Zero(2, 3), u).ok());
+}
+
+TEST(Animation, ColourValuesAreThePeakDisplacementOverACycle) {
+  // Node 0 real, node 1 circular (Re u and Im u orthogonal, equal norms:
+  // constant magnitude), node 2 a general complex vector.
+  NodeDisplacements u(3, 3);
+  u << Complex(3, 0), Complex(4, 0), Complex(0, 0),  //
+      Complex(2, 0), Complex(0, 2), Complex(0, 0),   //
+      Complex(1, 0.5), Complex(-0.2, 0.7), Complex(0.3, -0.4);
+  const double amplitude = -0.01;  // the sign of A does not change a magnitude
+  const Vector values = colourValues(u, amplitude);
+  ASSERT_EQ(values.size(), 3);
+  EXPECT_NEAR(values[0], 0.01 * 5.0, 1e-15);
+  EXPECT_NEAR(values[1], 0.01 * 2.0, 1e-15);
+  // Node 2 against the largest displacement of a 20,000-step sweep of one
+  // cycle: the sweep misses the peak by at most 1 - cos(pi/20000) ~ 1.2e-8 relative.
+  NodePoints base = NodePoints::Zero(3, 3), out;
+  Vector magnitude;
+  double sweptPeak = 0.0;
+  for (int k = 0; k < 20000; ++k) {
+    deformPoints(base, realPart(u), imagPart(u), warpScales(amplitude, 2.0 * M_PI * k / 20000), out, &magnitude);
+    sweptPeak = std::max(sweptPeak, magnitude[2]);
+  }
+  EXPECT_NEAR(values[2], sweptPeak, 2e-8 * sweptPeak);
+  EXPECT_GE(values[2], sweptPeak * (1.0 - 1e-15));
+  // The colour range runs from 0 to the largest of them.
+  EXPECT_NEAR(colourRange(u, amplitude).max, values.maxCoeff(), 1e-15);
 }
 
 TEST(Animation, FramesCoverOneCycleAndCarryTheRateInTheirNames) {

@@ -30,7 +30,9 @@
 #include <QtTest>
 #include <algorithm>
 #include <cstdio>
+#include <map>
 
+#include "core/geometry/mesh_placement.h"
 #include "devices/campaign/campaign_store.h"
 #include "views/campaign/campaign_session.h"
 #include "views/campaign/campaign_wizard.h"
@@ -142,6 +144,7 @@ void HammerStationPageTest::wholeCampaignFromTheKeyboard() {
   page.resize(1280, 800);
   page.show();
   QVERIFY(QTest::qWaitForWindowExposed(&page));
+  QTRY_VERIFY(page.scene()->isReady());  // the 3-D window is a native child: exposed a moment later
 
   // --- the wizard -------------------------------------------------------------------
   page.action(QStringLiteral("newCampaign"))->trigger();
@@ -214,6 +217,17 @@ void HammerStationPageTest::wholeCampaignFromTheKeyboard() {
   const qint64 campaignId = wizard->createdCampaign();
   QTRY_VERIFY(page.findChild<mozzi::views::CampaignWizard*>() == nullptr);  // closed and deleted
   QCOMPARE(page.selectedCampaign(), campaignId);
+  // The mesh the page marks points on: the specimen's stored mesh in global axes.
+  std::map<int, mozzi::core::Vector3> nodeAt;
+  {
+    auto campaign = model.store()->campaign(campaignId);
+    QVERIFY(campaign);
+    auto mesh = model.store()->mesh(campaign->specimenId);
+    QVERIFY2(mesh, mesh ? "" : mesh.error().describe().c_str());
+    auto global = mozzi::core::geometry::globalNodePositions(*mesh);
+    QVERIFY(global);
+    for (std::size_t i = 0; i < mesh->nodes.size(); ++i) nodeAt[mesh->nodes[i].label] = (*global)[i];
+  }
 
   // --- the campaign at the page, keyboard only --------------------------------------------
   page.findChild<QCheckBox*>(QStringLiteral("hammerAutoArm"))->setChecked(false);  // A arms each hit
@@ -246,6 +260,18 @@ void HammerStationPageTest::wholeCampaignFromTheKeyboard() {
     // The point to hit next is marked on the specimen's mesh in the 3-D view.
     QTRY_COMPARE(page.scene()->hitMarkerNode().value_or(-1),
                  definition->points[static_cast<std::size_t>(*page.currentPoint())].node);
+    {  // Drawn at that node's coordinates, with the point's DOF beside it.
+      const mozzi::core::Dof next = definition->points[static_cast<std::size_t>(*page.currentPoint())];
+      QVERIFY(nodeAt.count(next.node) == 1);
+      const auto drawn = page.scene()->hitMarkerPosition();
+      QVERIFY(drawn.has_value());
+      QVERIFY2((*drawn - nodeAt[next.node]).norm() <= 1e-12,
+               qPrintable(QStringLiteral("node %1 drawn %2 m from its coordinates")
+                              .arg(next.node)
+                              .arg((*drawn - nodeAt[next.node]).norm())));
+      QCOMPARE(page.scene()->hitMarkerText(),
+               QStringLiteral("Next: %1").arg(QString::fromStdString(mozzi::core::formatDof(next))));
+    }
     // Redo: once point 1 is done, the technician selects it and presses R;
     // the engine sets its hits aside and measures it again at once.
     if (!redone && *page.currentPoint() == 1) {

@@ -85,6 +85,7 @@ void MeshEditorTest::editsUndoAndRedoGiveTheExpectedTable() {
   editor.resize(1280, 800);
   editor.show();
   QVERIFY(QTest::qWaitForWindowExposed(&editor));
+  QTRY_VERIFY(editor.scene()->isReady());  // the 3-D window is a native child: exposed a moment later
   editor.setDocument(grid());
   const QStringList start = nodeRows(editor);
   QCOMPARE(start.size(), 6);
@@ -154,6 +155,7 @@ void MeshEditorTest::clickingANodeInTheSceneSelectsIt() {
   editor.resize(1280, 800);
   editor.show();
   QVERIFY(QTest::qWaitForWindowExposed(&editor));
+  QTRY_VERIFY(editor.scene()->isReady());  // the 3-D window is a native child: exposed a moment later
   editor.setDocument(grid());
   auto* scene = editor.scene();
   auto* vtk = scene->findChild<QWidget*>(QStringLiteral("sceneVtkWidget"));

@@ -8,6 +8,7 @@
 // reports frames per second. Screenshots: mode_animation*.png.
 #include "views/scene/mode_animation_view.h"
 
+#include <qwt_plot_curve.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkPoints.h>
@@ -23,6 +24,7 @@
 #include <cmath>
 #include <ctime>
 
+#include "views/plots/interactive_plot.h"
 #include "views/scene/scene_view.h"
 
 using mozzi::core::Complex;
@@ -99,6 +101,7 @@ class ModeAnimationViewTest : public QObject {
   void odsIsTheFrfColumnAtTheNearestLine();
   void exportsFramesGifAndPngSequence();
   void twentyThousandNodesAnimateFast();
+  void odsFollowsThePlotCursor();
 };
 
 void ModeAnimationViewTest::vertexPositionsAtAPhaseAreShapeTimesScale() {
@@ -106,6 +109,7 @@ void ModeAnimationViewTest::vertexPositionsAtAPhaseAreShapeTimesScale() {
   view.resize(1280, 800);
   view.show();
   QVERIFY(QTest::qWaitForWindowExposed(&view));
+  QTRY_VERIFY(view.scene()->isReady());  // the 3-D window is a native child: exposed a moment later
   view.setMesh(fork());
   view.setShapes(shapes());
   QVERIFY(view.showShape(1));  // the complex mode
@@ -159,6 +163,7 @@ void ModeAnimationViewTest::sideBySideShowsTheMac() {
   view.resize(1280, 800);
   view.show();
   QVERIFY(QTest::qWaitForWindowExposed(&view));
+  QTRY_VERIFY(view.scene()->isReady());  // the 3-D window is a native child: exposed a moment later
   view.setMesh(fork());
   view.setShapes(shapes());
   QVERIFY(view.showShape(0));
@@ -179,15 +184,15 @@ void ModeAnimationViewTest::sideBySideShowsTheMac() {
   view.setPhase(M_PI / 2);
   QVERIFY(view.findChild<QLabel*>(QStringLiteral("animationScene") + QStringLiteral("Title"))->text() ==
           QStringLiteral("Mode 1"));
+  QTRY_VERIFY(view.compareScene()->isReady());
   QVERIFY(view.grab().save(screenshotPath(QStringLiteral("mode_animation_side_by_side.png"))));
   QVERIFY(view.compareWith(-1));
   QVERIFY(!view.mac().has_value());
   QVERIFY(!view.compareScene()->isVisible());
 }
 
-void ModeAnimationViewTest::odsIsTheFrfColumnAtTheNearestLine() {
-  ModeAnimationView view;
-  view.setMesh(fork());
+// An FRF set on the fork's measured X DOFs, 0-200 Hz in 1 Hz lines, reference node 5.
+static mozzi::core::FrfMatrix forkFrf() {
   mozzi::core::FrfMatrix frf;
   frf.frequencyHz = mozzi::core::Vector::LinSpaced(201, 0.0, 200.0);
   for (int n : kMeasured) frf.responses.push_back(dof(n, mozzi::core::Direction::X));
@@ -196,6 +201,14 @@ void ModeAnimationViewTest::odsIsTheFrfColumnAtTheNearestLine() {
   for (int k = 0; k < 201; ++k)
     for (int o = 0; o < 6; ++o) h(k, o) = Complex(std::cos(0.01 * k * (o + 1)), std::sin(0.02 * k)) * double(o % 3);
   frf.h = {h};
+  return frf;
+}
+
+void ModeAnimationViewTest::odsIsTheFrfColumnAtTheNearestLine() {
+  ModeAnimationView view;
+  view.setMesh(fork());
+  const mozzi::core::FrfMatrix frf = forkFrf();
+  const mozzi::core::ComplexMatrix& h = frf.h[0];
   view.setFrfSet(frf, QStringLiteral("fork-a.uff"));
   QVERIFY(view.showOds(41.4));  // nearest line 41 Hz
   const double amplitude = view.amplitude();
@@ -212,6 +225,7 @@ void ModeAnimationViewTest::exportsFramesGifAndPngSequence() {
   view.resize(1280, 800);
   view.show();
   QVERIFY(QTest::qWaitForWindowExposed(&view));
+  QTRY_VERIFY(view.scene()->isReady());  // the 3-D window is a native child: exposed a moment later
   view.setMesh(fork());
   view.setShapes(shapes());
   QVERIFY(view.showShape(0));
@@ -290,6 +304,7 @@ void ModeAnimationViewTest::twentyThousandNodesAnimateFast() {
   view.resize(1280, 800);
   view.show();
   QVERIFY(QTest::qWaitForWindowExposed(&view));
+  QTRY_VERIFY(view.scene()->isReady());  // the 3-D window is a native child: exposed a moment later
   QElapsedTimer setup;
   setup.start();
   view.setMesh(plate);
@@ -318,7 +333,12 @@ void ModeAnimationViewTest::twentyThousandNodesAnimateFast() {
   }
   view.setFrameInterval(0);  // as fast as it goes
   view.setSpeed(1.0);
+  QVERIFY(view.scene()->undeformedShown());
   view.play();
+  // Above 5,000 nodes the overlay waits for a pause (it costs as much per
+  // frame as the moving shape under llvmpipe; docs/performance/scene.md).
+  QVERIFY(view.scene()->isAnimating());
+  QVERIFY(!view.scene()->undeformedShown());
   QTest::qWait(500);  // warm-up (shader compilation, first uploads)
   view.pause();
   const int ticksBefore = view.ticks();
@@ -335,15 +355,54 @@ void ModeAnimationViewTest::twentyThousandNodesAnimateFast() {
       "20,000-node mesh: %.1f frames/s wall (%.1f ms per frame), %.1f ms CPU per frame, %d frames; "
       "shape set-up %lld ms",
       fps, 1000.0 / fps, cpuMsPerFrame, frames, static_cast<long long>(setupMs));
+  QVERIFY(!view.scene()->isAnimating());
+  QVERIFY(view.scene()->undeformedShown());  // paused: the overlay is back
   QVERIFY(view.grab().save(screenshotPath(QStringLiteral("mode_animation_20k.png"))));
   // Issue 21 asks for 30 frames per second under llvmpipe on the 2-core
-  // machine, i.e. at most 33 ms per frame. This build does not reach it (see
-  // docs/performance/scene.md: about 90 ms of CPU per frame, half VTK's
-  // render, half Qt composing the window). The wall rate depends on what else
-  // the machine runs; the CPU time per frame does not, so the guard is on CPU
-  // time: a frame must stay under 150 ms of CPU (a regression of the layer
-  // styling for large meshes or multisampling coming back would exceed it).
-  QVERIFY2(cpuMsPerFrame <= 150.0, qPrintable(QStringLiteral("%1 ms CPU per frame").arg(cpuMsPerFrame)));
+  // machine, i.e. at most 33 ms per frame. Measured at 1280 x 800 while
+  // playing: 18-19 ms of CPU per frame (GUI thread and llvmpipe's two
+  // rasterizer threads together) under a load of 9, against 43-44 ms before
+  // the native 3-D window, the colours set once and the overlay waiting for
+  // a pause (docs/performance/scene.md). The
+  // wall rate depends on what else the machine runs, so the guard is on CPU
+  // time, with room for a loaded machine (CPU time per frame grows under
+  // contention too): 75 ms. The overlay's return while playing is checked
+  // above by state, not by time.
+  QVERIFY2(cpuMsPerFrame <= 75.0, qPrintable(QStringLiteral("%1 ms CPU per frame").arg(cpuMsPerFrame)));
+}
+
+void ModeAnimationViewTest::odsFollowsThePlotCursor() {
+  ModeAnimationView view;
+  view.resize(1280, 800);
+  view.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&view));
+  view.setMesh(fork());
+  QVERIFY(view.odsPlot()->isHidden());  // no FRF set yet
+  const mozzi::core::FrfMatrix frf = forkFrf();
+  view.setFrfSet(frf, QStringLiteral("fork-a.uff"));
+  QVERIFY(view.odsPlot()->isVisible());
+  QVERIFY(!view.scene()->hasShape());  // the set alone shows nothing yet
+  // The curve is |sum over the responses to reference 0| in dB, line by line.
+  auto* curve = dynamic_cast<QwtPlotCurve*>(view.odsPlot()->itemList(QwtPlotItem::Rtti_PlotCurve).value(0));
+  QVERIFY(curve);
+  QCOMPARE(static_cast<Eigen::Index>(curve->dataSize()), frf.lineCount());
+  const Complex sum80 = frf.h[0].row(80).sum();
+  QVERIFY(std::abs(curve->sample(80).y() - 20.0 * std::log10(std::abs(sum80))) < 1e-9);
+  // Placing the cursor (as a click does) animates the ODS at the nearest line.
+  view.odsPlot()->setCursor(120.3);
+  QVERIFY(view.scene()->hasShape());
+  QVERIFY2(view.findChild<QLabel*>(QStringLiteral("animationInfo"))->text().contains(QStringLiteral("120.00 Hz")),
+           qPrintable(view.findChild<QLabel*>(QStringLiteral("animationInfo"))->text()));
+  QCOMPARE(view.odsPlot()->cursor().value_or(-1.0), 120.0);  // moved onto the line used
+  const double amplitude = view.amplitude();
+  view.setPhase(M_PI / 2);  // sin = 1, cos = 0: displacement = A Re(u)
+  double p[3];
+  view.scene()->deformedPoints()->GetPoint(4, p);  // node 5 = response 3
+  QVERIFY(std::abs(p[0] - amplitude * frf.h[0](120, 2).real()) < 1e-9);
+  // Stepping the cursor with the keys moves the ODS one line on.
+  view.odsPlot()->stepCursor(1);
+  QVERIFY(view.findChild<QLabel*>(QStringLiteral("animationInfo"))->text().contains(QStringLiteral("121.00 Hz")));
+  QVERIFY(view.grab().save(screenshotPath(QStringLiteral("mode_animation_ods.png"))));
 }
 
 int main(int argc, char** argv) {
