@@ -64,11 +64,7 @@ bool Model::residuals(const double* u, double* r) const {
   bool ok;
   if (rows_.empty()) {
     ok = problem_.residuals(theta_buf_.data(), candidate, phi, r);
-    if (ok) {
-      const int n = problem_.residualCount();
-      for (int j = 0; j < n; ++j) ok = ok && std::isfinite(r[j]);
-    }
-    return ok;
+    return ok && Eigen::Map<const Eigen::VectorXd>(r, problem_.residualCount()).allFinite();
   }
   ok = problem_.residuals(theta_buf_.data(), candidate, phi, full_buf_.data());
   for (std::size_t j = 0; ok && j < rows_.size(); ++j) {
