@@ -172,11 +172,22 @@ class DataCost : public ceres::CostFunction {
     for (int i = 0; i < model.parameterCount(); ++i) mutable_parameter_block_sizes()->push_back(1);
   }
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    for (int i = 0; i < model_.parameterCount(); ++i) u_[i] = parameters[i][0];
-    if (!model_.residuals(u_.data(), residuals)) return false;
-    if (!jacobians) return true;
     const int n = model_.residualCount();
-    const Eigen::VectorXd r0 = Eigen::Map<const Eigen::VectorXd>(residuals, n);
+    for (int i = 0; i < model_.parameterCount(); ++i) u_[i] = parameters[i][0];
+    // Levenberg-Marquardt evaluates a trial point without Jacobians and, once
+    // the step is accepted, the same point again with them: the residuals of
+    // the last evaluation serve the second time (the model is deterministic).
+    if (jacobians && lastValid_ && u_ == lastU_) {
+      std::copy(lastR_.data(), lastR_.data() + n, residuals);
+    } else {
+      lastValid_ = false;
+      if (!model_.residuals(u_.data(), residuals)) return false;
+    }
+    lastU_ = u_;
+    lastR_ = Eigen::Map<const Eigen::VectorXd>(residuals, n);
+    lastValid_ = true;
+    if (!jacobians) return true;
+    const Eigen::VectorXd& r0 = lastR_;
     for (int i = 0; i < model_.parameterCount(); ++i) {
       if (!jacobians[i]) continue;
       // Forward differences during the iterations (half the evaluations);
@@ -191,6 +202,10 @@ class DataCost : public ceres::CostFunction {
   const Model& model_;
   mutable Eigen::VectorXd u_;
   mutable Eigen::MatrixXd col_;
+  // The last point evaluated and its residuals (one Ceres solve evaluates
+  // from one thread at a time: Solver::Options::num_threads = 1).
+  mutable Eigen::VectorXd lastU_, lastR_;
+  mutable bool lastValid_ = false;
 };
 
 // Gaussian prior N(nominal, sigma) on one parameter: r = scale u / sigma.
