@@ -373,21 +373,44 @@ Result<Diagnosis> diagnoseOnce(const GapProblem& problem, const DiagnosisOptions
     }
   }
   if (!restarted.empty() && !keepGoing(0.8, "candidate restarts")) return cancelled();
-  parallelFor(restarted.size(), [&](std::size_t r) {
-    const std::size_t c = restarted[r];
+  // One task per (candidate, start), then per candidate the best start
+  // polished: the same fits as fitModel's staged multistart, spread evenly
+  // over the cores (a task per candidate left one core idle at the end).
+  const int randomCount = std::max(0, options.multistarts - 2);
+  std::vector<Eigen::VectorXd> randomStarts;
+  for (std::size_t c : restarted) {
     const auto& sc = screen.candidates[c];
-    Model model(problem, theta, sc.index, sc.phi);
-    std::vector<Eigen::VectorXd> randomStarts;
+    const Model model(problem, theta, sc.index, sc.phi);
     auto crng = engine::seededRng(options.seed, 10, static_cast<unsigned long long>(sc.index));
-    for (int i = 2; i < options.multistarts; ++i) {
+    for (int i = 0; i < randomCount; ++i) {
       Eigen::VectorXd r = engine::randomStart(model, crng);
       r.head(p) = u0;
       randomStarts.push_back(r);
     }
-    FitOptions fr;
-    fr.startIterations = kStartIterations;
-    const FitResult more = engine::fitModel(model, randomStarts, fr);
-    if (more.ok && more.nll < fits[c].nll) fits[c] = more;
+  }
+  FitOptions staged;
+  if (randomCount > 1) staged.maxIterations = kStartIterations;
+  std::vector<FitResult> startFits(randomStarts.size());
+  parallelFor(randomStarts.size(), [&](std::size_t t) {
+    const auto& sc = screen.candidates[restarted[t / static_cast<std::size_t>(randomCount)]];
+    startFits[t] = engine::fitModel(Model(problem, theta, sc.index, sc.phi), {randomStarts[t]}, staged);
+  });
+  parallelFor(restarted.size(), [&](std::size_t r) {
+    const std::size_t c = restarted[r];
+    const auto& sc = screen.candidates[c];
+    const Model model(problem, theta, sc.index, sc.phi);
+    const FitResult* best = nullptr;  // the lowest NLL, the first on ties
+    for (int i = 0; i < randomCount; ++i) {
+      const FitResult& f = startFits[r * static_cast<std::size_t>(randomCount) + static_cast<std::size_t>(i)];
+      if (f.ok && (!best || f.nll < best->nll)) best = &f;
+    }
+    if (!best) return;
+    FitResult more = *best;
+    if (randomCount > 1) {
+      const FitResult polished = engine::fitModel(model, {best->u}, {});
+      if (polished.ok && polished.nll < more.nll) more = polished;
+    }
+    if (more.nll < fits[c].nll) fits[c] = more;
   });
   // 4c. Covariance at each optimum (a restart there converges at once).
   if (!keepGoing(0.82, "standard errors")) return cancelled();

@@ -64,11 +64,7 @@ bool Model::residuals(const double* u, double* r) const {
   bool ok;
   if (rows_.empty()) {
     ok = problem_.residuals(theta_buf_.data(), candidate, phi, r);
-    if (ok) {
-      const int n = problem_.residualCount();
-      for (int j = 0; j < n; ++j) ok = ok && std::isfinite(r[j]);
-    }
-    return ok;
+    return ok && Eigen::Map<const Eigen::VectorXd>(r, problem_.residualCount()).allFinite();
   }
   ok = problem_.residuals(theta_buf_.data(), candidate, phi, full_buf_.data());
   for (std::size_t j = 0; ok && j < rows_.size(); ++j) {
@@ -176,18 +172,34 @@ class DataCost : public ceres::CostFunction {
     for (int i = 0; i < model.parameterCount(); ++i) mutable_parameter_block_sizes()->push_back(1);
   }
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    for (int i = 0; i < model_.parameterCount(); ++i) u_[i] = parameters[i][0];
-    if (!model_.residuals(u_.data(), residuals)) return false;
+    const int n = model_.residualCount(), p = model_.parameterCount();
+    for (int i = 0; i < p; ++i) u_[i] = parameters[i][0];
+    // Ceres' bounded Levenberg-Marquardt evaluates each trial point up to
+    // three times: with the gradient (its projected line search), for the
+    // cost, and once the step is accepted with the Jacobian again. The model
+    // is deterministic: the last point's residuals and Jacobian serve again.
+    if (!(lastValid_ && u_ == lastU_)) {
+      lastValid_ = jacobianValid_ = false;
+      if (!model_.residuals(u_.data(), residuals)) return false;
+      lastU_ = u_;
+      lastR_ = Eigen::Map<const Eigen::VectorXd>(residuals, n);
+      lastValid_ = true;
+    } else {
+      std::copy(lastR_.data(), lastR_.data() + n, residuals);
+    }
     if (!jacobians) return true;
-    const int n = model_.residualCount();
-    const Eigen::VectorXd r0 = Eigen::Map<const Eigen::VectorXd>(residuals, n);
-    for (int i = 0; i < model_.parameterCount(); ++i) {
-      if (!jacobians[i]) continue;
+    if (!jacobianValid_) {
       // Forward differences during the iterations (half the evaluations);
       // the covariance below uses central ones.
-      if (!model_.jacobian(u_, i, 1, kJacobianStep, col_, &r0)) return false;
-      std::copy(col_.data(), col_.data() + n, jacobians[i]);
+      lastJ_.resize(n, p);
+      for (int i = 0; i < p; ++i) {
+        if (!model_.jacobian(u_, i, 1, kJacobianStep, col_, &lastR_)) return false;
+        lastJ_.col(i) = col_.col(0);
+      }
+      jacobianValid_ = true;
     }
+    for (int i = 0; i < p; ++i)
+      if (jacobians[i]) std::copy(lastJ_.col(i).data(), lastJ_.col(i).data() + n, jacobians[i]);
     return true;
   }
 
@@ -195,6 +207,11 @@ class DataCost : public ceres::CostFunction {
   const Model& model_;
   mutable Eigen::VectorXd u_;
   mutable Eigen::MatrixXd col_;
+  // The last point evaluated, its residuals and (when asked for) Jacobian;
+  // one Ceres solve evaluates from one thread (Solver::Options::num_threads = 1).
+  mutable Eigen::VectorXd lastU_, lastR_;
+  mutable Eigen::MatrixXd lastJ_;
+  mutable bool lastValid_ = false, jacobianValid_ = false;
 };
 
 // Gaussian prior N(nominal, sigma) on one parameter: r = scale u / sigma.

@@ -21,6 +21,12 @@ namespace {
 // Coordinates up to which non-proportional damping is solved directly per line.
 constexpr Eigen::Index kDirectSolveLimit = 24;
 
+// a b without std::complex's recovery of NaN products (Annex G): the same
+// value for finite operands, without its test and branch on every product.
+inline Complex times(Complex a, Complex b) {
+  return {a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real()};
+}
+
 enum class Effect { MassLoading, Boundary, Element, ResidualMode, Hysteretic, Window, Misalignment };
 
 const char* effectName(Effect e) {
@@ -417,36 +423,64 @@ class StructuralCore {
       }
       const bool ss = sys.ssPoles.size() > 0;
       const Eigen::Index terms = ss ? sys.ssPoles.size() : sys.w2.size();
-      p_.resize(no, terms);
-      q_.resize(terms, ni);
-      for (Eigen::Index o = 0; o < no; ++o)
-        p_.row(o) = ss ? ComplexMatrix(sys.ssLeft.row(resp[static_cast<std::size_t>(o)]))
-                       : ComplexMatrix(sys.a.row(resp[static_cast<std::size_t>(o)]).cast<Complex>());
-      for (Eigen::Index i = 0; i < ni; ++i)
-        q_.col(i) = ss ? ComplexMatrix(sys.ssRight.col(refs[static_cast<std::size_t>(i)]))
-                       : ComplexMatrix(sys.a.row(refs[static_cast<std::size_t>(i)]).transpose().cast<Complex>());
+      if (!ss) {
+        // Diagonal modal damping: real mode shapes, so H_oi = sum_r R_oir g_r
+        // with real R_oir = a_or a_ir, kept contiguous per (o, i).
+        modal_ = true;
+        coef_.resize(static_cast<std::size_t>(no * ni * terms));
+        std::size_t m = 0;
+        for (Eigen::Index i = 0; i < ni; ++i)
+          for (Eigen::Index o = 0; o < no; ++o)
+            for (Eigen::Index r = 0; r < terms; ++r)
+              coef_[m++] = sys.a(resp[static_cast<std::size_t>(o)], r) * sys.a(refs[static_cast<std::size_t>(i)], r);
+        gRe_.resize(static_cast<std::size_t>(terms));
+        gIm_.resize(static_cast<std::size_t>(terms));
+        return;
+      }
       g_.resize(terms);
       w_.resize(terms);
+      p_.resize(no, terms);
+      q_.resize(terms, ni);
+      for (Eigen::Index o = 0; o < no; ++o) p_.row(o) = sys.ssLeft.row(resp[static_cast<std::size_t>(o)]);
+      for (Eigen::Index i = 0; i < ni; ++i) q_.col(i) = sys.ssRight.col(refs[static_cast<std::size_t>(i)]);
     }
 
     // H at s into h (rows x refs), before type conversion.
     void at(Complex s, ComplexMatrix& h) {
       if (direct_) {
         h.noalias() = p_ * dynamicStiffness(sys_, s).partialPivLu().solve(q_);
+      } else if (modal_) {
+        // g_r = 1 / z_r, z_r = omega_r^2 (1 + i eta) + s c_r + s^2 with
+        // s = a + i omega, in real arithmetic (std::complex products carry
+        // NaN-recovery branches that cost as much as the sums here).
+        const double a = s.real(), w = s.imag();
+        const double s2Re = a * a - w * w, s2Im = 2.0 * a * w;
+        const auto terms = static_cast<std::size_t>(sys_.w2.size());
+        for (std::size_t r = 0; r < terms; ++r) {
+          const double w2 = sys_.w2[static_cast<Eigen::Index>(r)], c = sys_.cdiag[static_cast<Eigen::Index>(r)];
+          const double zRe = w2 + a * c + s2Re, zIm = w2 * sys_.eta + w * c + s2Im;
+          const double inv = 1.0 / (zRe * zRe + zIm * zIm);
+          gRe_[r] = zRe * inv;
+          gIm_[r] = -zIm * inv;
+        }
+        const double* coef = coef_.data();
+        for (Eigen::Index i = 0; i < h.cols(); ++i) {
+          for (Eigen::Index o = 0; o < h.rows(); ++o) {
+            double re = 0.0, im = 0.0;
+            for (std::size_t r = 0; r < terms; ++r) {
+              re += coef[r] * gRe_[r];
+              im += coef[r] * gIm_[r];
+            }
+            coef += terms;
+            h(o, i) = Complex(re, im);
+          }
+        }
       } else {
         // 1 / z as conj(z) / |z|^2: a real division instead of the library's
         // scaled complex one (__divdc3), which took a sixth of a diagnosis.
-        if (sys_.ssPoles.size() > 0) {
-          for (Eigen::Index r = 0; r < g_.size(); ++r) {
-            const Complex z = s - sys_.ssPoles[r];
-            g_[r] = std::conj(z) / std::norm(z);
-          }
-        } else {
-          const Complex stiff(1.0, sys_.eta);
-          for (Eigen::Index r = 0; r < g_.size(); ++r) {
-            const Complex z = sys_.w2[r] * stiff + s * sys_.cdiag[r] + s * s;
-            g_[r] = std::conj(z) / std::norm(z);
-          }
+        for (Eigen::Index r = 0; r < g_.size(); ++r) {
+          const Complex z = s - sys_.ssPoles[r];
+          g_[r] = std::conj(z) / std::norm(z);
         }
         // Explicit sums: at these sizes (a few DOFs, tens of terms) a general
         // product expression costs more in dispatch than in arithmetic.
@@ -474,8 +508,10 @@ class StructuralCore {
     const std::vector<int>& resp_;
     const std::vector<int>& refs_;
     bool direct_ = false;
+    bool modal_ = false;
     ComplexMatrix p_, q_;
     ComplexVector g_, w_;
+    std::vector<double> coef_, gRe_, gIm_;  // modal_: R_oir (i, o, r order) and g_r
   };
 };
 
@@ -746,7 +782,7 @@ class FrfProblem final : public GapProblem {
       const Complex s(sys.decay, 2 * M_PI * data_.frequencyHz[k]);
       receptance.at(s, x);
       Complex factor(1.0, 0.0);
-      for (int n = 0; n < order; ++n) factor *= s;
+      for (int n = 0; n < order; ++n) factor = times(factor, s);
       for (Eigen::Index i = 0; i < ni; ++i) {
         for (Eigen::Index o = 0; o < no; ++o) {
           Complex v = x(o, i);
@@ -756,7 +792,7 @@ class FrfProblem final : public GapProblem {
                 std::sin(tilt.angle) * x(misRow_[static_cast<std::size_t>(tilt.candidate)], i);
           }
           h[static_cast<std::size_t>(i)](k, o) =
-              factor * v * resp_[static_cast<std::size_t>(o)].sign * refs_[static_cast<std::size_t>(i)].sign;
+              times(factor, v) * (resp_[static_cast<std::size_t>(o)].sign * refs_[static_cast<std::size_t>(i)].sign);
         }
       }
     }
@@ -785,9 +821,8 @@ class FrfProblem final : public GapProblem {
         }
       }
     }
-    for (std::size_t q = 0; q < j; ++q)
-      if (!std::isfinite(r[q])) return false;
-    return true;
+    // (Vectorised, without an early exit: a non-finite entry is the rare case.)
+    return Eigen::Map<const Eigen::VectorXd>(r, static_cast<Eigen::Index>(j)).allFinite();
   }
 
   GapMetrics metricsFor(const double* theta, const std::vector<int>& combo, const double* phi) const;
