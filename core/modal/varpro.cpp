@@ -213,15 +213,16 @@ bool ModalVarpro::orthogonalize(const Eigen::Ref<const Vector>& theta) {
   return true;
 }
 
-bool ModalVarpro::evaluate(const Eigen::Ref<const Vector>& theta, bool withDerivatives) {
+bool ModalVarpro::evaluate(const Eigen::Ref<const Vector>& theta, Derivatives what) {
   derivatives_ = false;
-  if (withDerivatives && !withDerivatives_) return false;
-  if (theta.size() != 2 * nm_ || !fillBasis(theta, withDerivatives)) return false;
+  const bool anyDerivatives = what != Derivatives::None, full = what == Derivatives::Full;
+  if (anyDerivatives && !withDerivatives_) return false;
+  if (theta.size() != 2 * nm_ || !fillBasis(theta, anyDerivatives)) return false;
   // A = [Phi, E] now; Phi is replaced by Q below (E stays).
   if (!orthogonalize(theta)) return false;
-  const Eigen::Index nd = 4 * nm_, cols = withDerivatives ? p_ + nd : p_;
-  if (withDerivatives) qtE_.noalias() = a_.leftCols(p_).transpose() * a_.rightCols(nd);  // Q^T E
-  // [Z; E^T Y] = [Q, E]^T Y: the one pass over the data.
+  const Eigen::Index nd = 4 * nm_, cols = full ? p_ + nd : p_;
+  if (anyDerivatives) qtE_.noalias() = a_.leftCols(p_).transpose() * a_.rightCols(nd);  // Q^T E
+  // [Z; E^T Y] = [Q, E]^T Y (Z = Q^T Y without the gradient): the one pass over the data.
   auto w = w_.topRows(cols);
   w.setZero();
   for (std::size_t s = 0; s < segments_.size(); ++s) {
@@ -233,13 +234,10 @@ bool ModalVarpro::evaluate(const Eigen::Ref<const Vector>& theta, bool withDeriv
   x_ = z;
   r_.triangularView<Eigen::Upper>().solveInPlace(x_);
   if (!x_.allFinite()) return false;
-  if (!withDerivatives) return true;
+  if (!anyDerivatives) return true;
 
-  // F = E^T R = E^T (Y - Q Z) = E^T Y - (Q^T E)^T Z, and
   // E^T P E = E^T E - (Q^T E)^T (Q^T E): P E is never formed (it cost one
-  // more product of the size of Q^T E). Both symmetric parts by rank updates.
-  auto f = w_.bottomRows(nd);
-  f.noalias() -= qtE_.transpose() * z;
+  // more product of the size of Q^T E); by rank updates.
   epe_.setZero();
   epe_.selfadjointView<Eigen::Lower>().rankUpdate(a_.rightCols(nd).transpose());
   epe_.selfadjointView<Eigen::Lower>().rankUpdate(qtE_.transpose(), -1.0);
@@ -248,8 +246,6 @@ bool ModalVarpro::evaluate(const Eigen::Ref<const Vector>& theta, bool withDeriv
   for (int r = 0; r < nm_; ++r) {
     for (int t = 0; t < 2; ++t) {
       const int j = 2 * r + t;
-      grad_[j] = -(f.row(derivCol(r, t, 0)).dot(x_.row(basisCol(r, 0))) +
-                   f.row(derivCol(r, t, 1)).dot(x_.row(basisCol(r, 1))));
       for (int r2 = 0; r2 < nm_; ++r2) {
         for (int t2 = 0; t2 < 2; ++t2) {
           double v = 0.0;
@@ -259,6 +255,19 @@ bool ModalVarpro::evaluate(const Eigen::Ref<const Vector>& theta, bool withDeriv
           jtjK_(j, 2 * r2 + t2) = v;
         }
       }
+    }
+  }
+  if (!full) {
+    derivatives_ = true;
+    return true;
+  }
+  // F = E^T R = E^T (Y - Q Z) = E^T Y - (Q^T E)^T Z.
+  auto f = w_.bottomRows(nd);
+  f.noalias() -= qtE_.transpose() * z;
+  for (int r = 0; r < nm_; ++r) {
+    for (int t = 0; t < 2; ++t) {
+      grad_[2 * r + t] = -(f.row(derivCol(r, t, 0)).dot(x_.row(basisCol(r, 0))) +
+                           f.row(derivCol(r, t, 1)).dot(x_.row(basisCol(r, 1))));
     }
   }
   // B_j = T^-T D_j^T R: D_j^T R has rows 2r, 2r+1 = F rows of (r, t); T^T is

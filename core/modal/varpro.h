@@ -69,11 +69,21 @@ class ModalVarpro {
   static Result<ModalVarpro> create(const FrfMatrix& frf, std::vector<LineSegment> segments, int modes,
                                     bool lowerResidual, bool upperResidual, bool derivatives = true);
 
+  // What an evaluation computes besides SSR and X.
+  enum class Derivatives {
+    None,        // the LSFD at fixed poles
+    Covariance,  // and J_K^T J_K (kaufman()): E and its products with Q and
+                 // itself, no pass of E over the data (no gradient)
+    Full,        // and the gradient and J_GP^T J_GP: the pass over the data is [Q, E]^T Y
+  };
   // Evaluates at theta (2 nm: f [Hz], zeta per mode). False when a pole is
   // not admissible (f <= 0, zeta outside (0, 1)), the basis is rank
   // deficient (two equal poles: the caller treats it as a failed step), or
   // derivatives are asked of an object created without them.
-  bool evaluate(const Eigen::Ref<const Vector>& theta, bool withDerivatives);
+  bool evaluate(const Eigen::Ref<const Vector>& theta, Derivatives what);
+  bool evaluate(const Eigen::Ref<const Vector>& theta, bool withDerivatives) {
+    return evaluate(theta, withDerivatives ? Derivatives::Full : Derivatives::None);
+  }
 
   // After evaluate(): SSR = ||Y - Phi X||^2 in the data's units squared.
   double ssr() const { return ssr_; }
@@ -96,7 +106,8 @@ class ModalVarpro {
   // The model of one FRF (response o, reference i) on the lines, Q z_c with
   // c = i no + o: a column of modelValues() without the others (resized).
   void modelValues(Eigen::Index response, Eigen::Index reference, ComplexVector& out) const;
-  // With derivatives: J^T r (2 nm), J_GP^T J_GP and J_K^T J_K (2 nm x 2 nm).
+  // With Derivatives::Full: J^T r (2 nm), J_GP^T J_GP and J_K^T J_K (2 nm x
+  // 2 nm); with Derivatives::Covariance J_K^T J_K only.
   const Vector& gradient() const { return grad_; }
   const Matrix& gaussNewton() const { return jtjGp_; }
   const Matrix& kaufman() const { return jtjK_; }
