@@ -87,14 +87,14 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
   RefineResult out;
   out.bandLines = nf;
   out.fittedLines = vp->lineCount();
-  if (!vp->evaluate(theta, true)) {
+  if (!vp->evaluate(theta, ModalVarpro::Derivatives::Kaufman)) {
     return makeError(ErrorCode::NumericalFailure, "LSFD fails for the initial poles (rank-deficient basis)", where);
   }
   ++out.evaluations;
   const double yn2 = vp->dataNorm2();
   double ssr = vp->ssr();
   out.initialRelativeError = std::sqrt(ssr / yn2);
-  Matrix h = vp->gaussNewton();
+  Matrix h = vp->kaufman();
   Vector g = vp->gradient();
   bool atTheta = true;  // vp holds the evaluation at theta
 
@@ -160,7 +160,7 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
     const double predicted = -g.dot(delta) - 0.5 * delta.dot(h * delta);  // of SSR / 2
     ++out.evaluations;
     atTheta = false;
-    if (!vp->evaluate(trial, finalTrial ? ModalVarpro::Derivatives::Covariance : ModalVarpro::Derivatives::Full)) {
+    if (!vp->evaluate(trial, finalTrial ? ModalVarpro::Derivatives::Covariance : ModalVarpro::Derivatives::Kaufman)) {
       shortcutFailed = shortcutFailed || finalTrial;
       mu *= nu;
       nu *= 2.0;
@@ -177,7 +177,7 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
     shortcutFailed = shortcutFailed || finalTrial;
     if (rho > 0.0) {
       theta = trial;
-      h = vp->gaussNewton();
+      h = vp->kaufman();
       g = vp->gradient();
       atTheta = true;
       const double old = ssr;

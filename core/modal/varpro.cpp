@@ -99,6 +99,9 @@ Result<ModalVarpro> ModalVarpro::create(const FrfMatrix& frf, std::vector<LineSe
     v.grad_.resize(2 * modes);
     v.jtjGp_.resize(2 * modes, 2 * modes);
     v.jtjK_.resize(2 * modes, 2 * modes);
+    v.rx_.resize(rows, 2 * modes);
+    v.zx_.resize(v.p_, 2 * modes);
+    v.ezx_.resize(nd, 2 * modes);
   }
   return v;
 }
@@ -257,7 +260,32 @@ bool ModalVarpro::evaluate(const Eigen::Ref<const Vector>& theta, Derivatives wh
       }
     }
   }
-  if (!full) {
+  if (what == Derivatives::Covariance) {
+    derivatives_ = true;
+    return true;
+  }
+  if (what == Derivatives::Kaufman) {
+    // g_j = -sum_c E_(j,c)^T (R X_m^T)_(2r+c), R X_m^T = Y X_m^T - Q Z X_m^T;
+    // E^T Q Z X_m^T = (Q^T E)^T (Z X_m^T): Q is not applied to the data's size.
+    const Eigen::Index nx = 2 * nm_;
+    const auto xm = x_.topRows(nx);
+    for (std::size_t s = 0; s < segments_.size(); ++s) {
+      auto rows = rx_.middleRows(segmentRow_[s], 2 * segments_[s].count);
+      rows.setZero();
+      for (Eigen::Index i = 0; i < ni_; ++i) rows.noalias() += ySegment(s, i) * xm.middleCols(i * no_, no_).transpose();
+    }
+    zx_.noalias() = z * xm.transpose();
+    ezx_.noalias() = qtE_.transpose() * zx_;
+    const auto e = a_.rightCols(nd);
+    for (int r = 0; r < nm_; ++r) {
+      for (int t = 0; t < 2; ++t) {
+        double v = 0.0;
+        for (int c = 0; c < 2; ++c) {
+          v += e.col(derivCol(r, t, c)).dot(rx_.col(basisCol(r, c))) - ezx_(derivCol(r, t, c), basisCol(r, c));
+        }
+        grad_[2 * r + t] = -v;
+      }
+    }
     derivatives_ = true;
     return true;
   }
