@@ -91,6 +91,15 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
     return makeError(ErrorCode::NumericalFailure, "LSFD fails for the initial poles (rank-deficient basis)", where);
   }
   ++out.evaluations;
+  {
+    std::vector<Complex> start;
+    for (const Mode& md : initial.modes) start.push_back(md.pole);
+    out.startModel = modalModelFromLinear(*vp, frf, start);
+    for (int r = 0; r < nm; ++r) {
+      out.startModel.modes[static_cast<std::size_t>(r)].participation =
+          initial.modes[static_cast<std::size_t>(r)].participation;
+    }
+  }
   const double yn2 = vp->dataNorm2();
   double ssr = vp->ssr();
   out.initialRelativeError = std::sqrt(ssr / yn2);

@@ -55,6 +55,8 @@ struct RefineOptions {
 
 struct RefineResult {
   ModalModel model;                    // refined poles, residues and residual terms
+  ModalModel startModel;               // LSFD at the initial poles on the fitted lines (the first evaluation;
+                                       // the band's LSFD when fittedLines == bandLines)
   std::vector<double> frequencyStdHz;  // one standard error per mode [Hz]
   std::vector<double> zetaStd;         // one standard error per mode (zeta; eta's is twice)
   double initialRelativeError = 0.0;   // sqrt(SSR / sum |H|^2) over the fitted lines, before
