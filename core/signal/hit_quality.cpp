@@ -99,12 +99,15 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
       // No run can be longer than the samples at the extreme: one vectorised
       // count of them first (usually the peak alone), the run scan only when
       // there are enough.
+      // Counted in doubles (exact below 2^53), branch-free: the compiler
+      // vectorises it (the integer count did not, a third of assessHit).
       const double* xp = x.data();
-      std::int64_t nearHi = 0, nearLo = 0;
+      double countHi = 0.0, countLo = 0.0;
       for (Eigen::Index i = 0; i < n; ++i) {
-        nearHi += std::abs(xp[i] - hi) <= tol;
-        nearLo += std::abs(xp[i] - lo) <= tol;
+        countHi += std::abs(xp[i] - hi) <= tol ? 1.0 : 0.0;
+        countLo += std::abs(xp[i] - lo) <= tol ? 1.0 : 0.0;
       }
+      const auto nearHi = static_cast<std::int64_t>(countHi), nearLo = static_cast<std::int64_t>(countLo);
       for (const double extreme : {hi, lo}) {
         if (std::abs(extreme) < 0.5 * cq.peak) continue;
         if ((extreme == hi ? nearHi : nearLo) < options.clipRunLength) continue;
@@ -139,8 +142,11 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
   f = record.samples.col(q.referenceChannel);
   if (quiet >= 2) f.array() -= f.head(quiet).mean();  // remove the pre-trigger offset
   const double noise = refq.noiseRms.value_or(0.0);
+  // max |f| and its first index (Eigen's maxCoeff(&index) takes the first
+  // too, but runs scalar): the vectorised maximum, then a scan to it.
+  const double absMax = f.cwiseAbs().maxCoeff();
   Eigen::Index peakIdx = 0;
-  f.cwiseAbs().maxCoeff(&peakIdx);
+  while (std::abs(f[peakIdx]) != absMax) ++peakIdx;
   const double peak = f[peakIdx];
   q.peakForce = peak;
   const double sign = peak >= 0.0 ? 1.0 : -1.0;
@@ -182,12 +188,16 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
 
   // double hit: a second excursion after the main pulse has ended
   const double reboundLevel = std::max(options.doubleHitFraction * absPeak, options.noiseFactor * noise);
+  // The largest |f| after the pulse (its first sample) when it reaches the
+  // rebound level.
   Eigen::Index second = -1;
   double secondPeak = 0.0;
-  for (Eigen::Index i = b + 1; i < n; ++i) {
-    if (std::abs(f[i]) >= reboundLevel && std::abs(f[i]) > secondPeak) {
-      secondPeak = std::abs(f[i]);
-      second = i;
+  if (b + 1 < n) {
+    const double m = f.tail(n - b - 1).cwiseAbs().maxCoeff();
+    if (m >= reboundLevel && m > 0.0) {
+      secondPeak = m;
+      second = b + 1;
+      while (std::abs(f[second]) != m) ++second;
     }
   }
   if (second >= 0) {
