@@ -124,16 +124,21 @@ bool ModalVarpro::fillBasis(const Eigen::Ref<const Vector>& theta, bool withDeri
   for (int r = 0; r < nm_; ++r) {
     const double f = theta[2 * r], z = theta[2 * r + 1];
     const double wn = kTwoPi * f, s = std::sqrt(1.0 - z * z);
-    modeTerms_[static_cast<std::size_t>(r)] = {wn, s, z * wn, wn * s};  // lambda = -sigma + i wd
+    // d lambda / d f = lambda / f = 2 pi (-zeta + i s); d lambda / d zeta = wn (-1 - i zeta / s)
+    modeTerms_[static_cast<std::size_t>(r)] = {wn,
+                                               s,
+                                               z * wn,
+                                               wn * s,  // lambda = -sigma + i wd
+                                               Complex(-kTwoPi * z, kTwoPi * s),
+                                               Complex(-wn, -wn * z / s)};
   }
   for (Eigen::Index k = 0; k < nf_; ++k) {
     const double w = omega_[k];
     const Complex fn = fn_[k];
     const Eigen::Index row = 2 * k;
     for (int r = 0; r < nm_; ++r) {
-      const double z = theta[2 * r + 1];
       const auto& m = modeTerms_[static_cast<std::size_t>(r)];
-      const double wn = m.wn, s = m.s, sigma = m.sigma, wd = m.wd;
+      const double sigma = m.sigma, wd = m.wd;
       // a = 1/(i w - lambda) = 1/(sigma + i (w - wd)), b = 1/(sigma + i (w + wd))
       const double d1 = w - wd, d2 = w + wd;
       const double n1 = 1.0 / (sigma * sigma + d1 * d1), n2 = 1.0 / (sigma * sigma + d2 * d2);
@@ -144,8 +149,7 @@ bool ModalVarpro::fillBasis(const Eigen::Ref<const Vector>& theta, bool withDeri
       a_(row, basisCol(r, 1)) = c2.real();
       a_(row + 1, basisCol(r, 1)) = c2.imag();
       if (!withDerivatives) continue;
-      // d lambda / d f = lambda / f = 2 pi (-zeta + i s); d lambda / d zeta = wn (-1 - i zeta / s)
-      const Complex dl[2] = {Complex(-kTwoPi * z, kTwoPi * s), Complex(-wn, -wn * z / s)};
+      const Complex dl[2] = {m.dlf, m.dlz};
       const Complex a2 = a * a, b2 = b * b;
       for (int t = 0; t < 2; ++t) {
         // da = a^2 dlambda, db = b^2 conj(dlambda)

@@ -150,6 +150,7 @@ class ModalVarpro {
 
   struct ModeTerms {
     double wn, s, sigma, wd;  // 2 pi f, sqrt(1 - zeta^2), zeta wn, wn s (lambda = -sigma + i wd)
+    Complex dlf, dlz;         // d lambda / d f, d lambda / d zeta
   };
   std::vector<ModeTerms> modeTerms_;  // per mode, of the theta being filled in
 
@@ -165,7 +166,7 @@ class ModalVarpro {
   Matrix epe_;                       // 4 nm x 4 nm: E^T P E
   Matrix g_;                         // p x p: X X^T
   Matrix b_;                         // p x (m 2 nm): B_j side by side
-  Matrix rx_;                        // 2 nf x 2 nm: R X_m^T (X_m = the modes' rows of X), Kaufman's gradient
+  Matrix rx_;                        // up to 4096 rows x 2 nm: Y X_m^T on a block of rows (X_m: the modes' rows of X)
   Matrix zx_;                        // p x 2 nm: Z X_m^T
   Matrix ezx_;                       // 4 nm x 2 nm: (Q^T E)^T Z X_m^T
   Vector colNorm_;
