@@ -166,7 +166,7 @@ class ModalVarpro {
   Matrix epe_;                       // 4 nm x 4 nm: E^T P E
   Matrix g_;                         // p x p: X X^T
   Matrix b_;                         // p x (m 2 nm): B_j side by side
-  Matrix rx_;                        // up to 4096 rows x 2 nm: Y X_m^T on a block of rows (X_m: the modes' rows of X)
+  Matrix rx_;                        // up to 1024 rows x 2 nm: Y X_m^T on a block of rows (X_m: the modes' rows of X)
   Matrix zx_;                        // p x 2 nm: Z X_m^T
   Matrix ezx_;                       // 4 nm x 2 nm: (Q^T E)^T Z X_m^T
   Vector colNorm_;
