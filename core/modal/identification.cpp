@@ -36,25 +36,50 @@ Result<void> fitSelection(const FrfMatrix& frf, const IdentificationOptions& opt
   LsfdOptions lo2;
   lo2.bandLowHz = est.bandLowHz;
   lo2.bandHighHz = est.bandHighHz;
-  auto model = lsfd(frf, poles, lo2);
-  if (!model) return model.error();
-  for (std::size_t r = 0; r < poles.size(); ++r) model->modes[r].participation = out.selected[r].participation;
-  out.lsfdModel = std::move(model).value();
+  auto bandLsfd = [&]() -> Result<void> {
+    auto model = lsfd(frf, poles, lo2);
+    if (!model) return model.error();
+    for (std::size_t r = 0; r < poles.size(); ++r) model->modes[r].participation = out.selected[r].participation;
+    out.lsfdModel = std::move(model).value();
+    return {};
+  };
+  if (!options.refine) return bandLsfd();
 
-  if (options.refine) {
-    RefineOptions ro;
-    ro.bandLowHz = est.bandLowHz;
-    ro.bandHighHz = est.bandHighHz;
-    ro.maxIterations = options.maxRefineIterations;
-    ro.maxLines = options.refineMaxLines;
-    ro.progress = [&](int iteration, double) {
-      return report(IdentificationStage::Refinement,
-                    static_cast<double>(iteration) / static_cast<double>(std::max(1, options.maxRefineIterations)));
-    };
-    auto refined = refineModalModel(frf, out.lsfdModel, ro);
-    if (!refined) return refined.error();
-    out.refined = std::move(refined).value();
+  // The refinement's first evaluation is the LSFD at the selected poles: on
+  // the band's lines (no thinning) it is out.lsfdModel, not computed twice.
+  ModalModel start;
+  start.responses = frf.responses;
+  start.references = frf.references;
+  for (const auto& s : out.selected) {
+    Mode md;
+    md.pole = s.pole;
+    md.residue = ComplexMatrix::Zero(frf.responseCount(), frf.referenceCount());
+    md.participation = s.participation;
+    start.modes.push_back(std::move(md));
   }
+  RefineOptions ro;
+  ro.bandLowHz = est.bandLowHz;
+  ro.bandHighHz = est.bandHighHz;
+  ro.maxIterations = options.maxRefineIterations;
+  ro.maxLines = options.refineMaxLines;
+  ro.progress = [&](int iteration, double) {
+    return report(IdentificationStage::Refinement,
+                  static_cast<double>(iteration) / static_cast<double>(std::max(1, options.maxRefineIterations)));
+  };
+  auto refined = refineModalModel(frf, start, ro);
+  if (!refined) {
+    if (refined.error().code == ErrorCode::Cancelled) return refined.error();
+    // The LSFD's own error where it fails too (rank-deficient basis, band).
+    if (auto ok = bandLsfd(); !ok) return ok.error();
+    return refined.error();
+  }
+  if (refined->fittedLines == refined->bandLines) {
+    out.lsfdModel = std::move(refined->startModel);
+  } else if (auto ok = bandLsfd(); !ok) {
+    return ok.error();
+  }
+  refined->startModel = ModalModel{};
+  out.refined = std::move(refined).value();
   return {};
 }
 

@@ -87,14 +87,23 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
   RefineResult out;
   out.bandLines = nf;
   out.fittedLines = vp->lineCount();
-  if (!vp->evaluate(theta, true)) {
+  if (!vp->evaluate(theta, ModalVarpro::Derivatives::Kaufman)) {
     return makeError(ErrorCode::NumericalFailure, "LSFD fails for the initial poles (rank-deficient basis)", where);
   }
   ++out.evaluations;
+  {
+    std::vector<Complex> start;
+    for (const Mode& md : initial.modes) start.push_back(md.pole);
+    out.startModel = modalModelFromLinear(*vp, frf, start);
+    for (int r = 0; r < nm; ++r) {
+      out.startModel.modes[static_cast<std::size_t>(r)].participation =
+          initial.modes[static_cast<std::size_t>(r)].participation;
+    }
+  }
   const double yn2 = vp->dataNorm2();
   double ssr = vp->ssr();
   out.initialRelativeError = std::sqrt(ssr / yn2);
-  Matrix h = vp->gaussNewton();
+  Matrix h = vp->kaufman();
   Vector g = vp->gradient();
   bool atTheta = true;  // vp holds the evaluation at theta
 
@@ -110,14 +119,30 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
   // errors in every direction (delta^T J^T J delta = 2 x the decrease).
   const double dof = static_cast<double>(2 * vp->lineCount() * m - (np + p * m));
   Vector gnStep(np);
+  // The last step: Gauss-Newton converges linearly here (the residual is
+  // noise), each step's predicted decrease a factor `rate` of the one
+  // before (about 1e-4 on the benchmark sets). When the decrease after this
+  // step is predicted 10 x below the stop threshold, the trial is evaluated
+  // without the gradient (Derivatives::Covariance: no pass of E over the
+  // data), and accepted it is the solution; J_K^T J_K, X and SSR are then
+  // still those of the solution. Rejected, the iteration goes on as before.
+  double lastDecrease = 0.0;  // Gauss-Newton decrease predicted at the previous accepted point
+  bool finalTrial = false, shortcutFailed = false;
   for (int it = 0; it < opt.maxIterations; ++it) {
     if (opt.progress && !opt.progress(it, std::sqrt(ssr / yn2))) {
       return makeError(ErrorCode::Cancelled, "refinement cancelled", where);
     }
     ldlt.compute(h);
+    finalTrial = false;
     if (ldlt.info() == Eigen::Success) {
       gnStep = ldlt.solve(-g);
-      if (gnStep.allFinite() && -g.dot(gnStep) <= 1e-6 * ssr / dof) break;  // -g.step = decrease of SSR
+      const double decrease = -g.dot(gnStep), threshold = 1e-6 * ssr / dof;  // -g.step = decrease of SSR
+      if (gnStep.allFinite() && decrease <= threshold) break;
+      if (gnStep.allFinite() && !shortcutFailed && lastDecrease > 0.0) {
+        const double rate = decrease / lastDecrease;
+        finalTrial = rate <= 0.1 && decrease * rate <= 0.1 * threshold;
+      }
+      if (gnStep.allFinite()) lastDecrease = decrease;
     }
     ++out.iterations;
     lhs = h;
@@ -144,16 +169,24 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
     const double predicted = -g.dot(delta) - 0.5 * delta.dot(h * delta);  // of SSR / 2
     ++out.evaluations;
     atTheta = false;
-    if (!vp->evaluate(trial, true)) {
+    if (!vp->evaluate(trial, finalTrial ? ModalVarpro::Derivatives::Covariance : ModalVarpro::Derivatives::Kaufman)) {
+      shortcutFailed = shortcutFailed || finalTrial;
       mu *= nu;
       nu *= 2.0;
       continue;
     }
     const double actual = 0.5 * (ssr - vp->ssr());
     const double rho = predicted > 0.0 ? actual / predicted : -1.0;
+    if (rho > 0.0 && finalTrial) {
+      theta = trial;
+      atTheta = true;
+      ssr = vp->ssr();
+      break;
+    }
+    shortcutFailed = shortcutFailed || finalTrial;
     if (rho > 0.0) {
       theta = trial;
-      h = vp->gaussNewton();
+      h = vp->kaufman();
       g = vp->gradient();
       atTheta = true;
       const double old = ssr;
@@ -168,7 +201,9 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
     }
   }
   if (!atTheta) {
-    if (!vp->evaluate(theta, true)) return makeError(ErrorCode::NumericalFailure, "LSFD fails at the solution", where);
+    if (!vp->evaluate(theta, ModalVarpro::Derivatives::Covariance)) {
+      return makeError(ErrorCode::NumericalFailure, "LSFD fails at the solution", where);
+    }
     ++out.evaluations;
   }
 
@@ -181,7 +216,10 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
         initial.modes[static_cast<std::size_t>(r)].participation;
   }
 
-  const double finalSsr = vp->explicitSsr();
+  // SSR = ||Y||^2 - ||Z||^2 loses about log10(||Y||^2 / SSR) of its 16
+  // digits; the explicit residual (one more pass over the data) only where
+  // fewer than 10 would be left (an almost exact fit).
+  const double finalSsr = vp->ssr() > 1e-6 * yn2 ? vp->ssr() : vp->explicitSsr();
   out.finalRelativeError = std::sqrt(finalSsr / yn2);
   const Matrix& jtj = vp->kaufman();
   Eigen::LDLT<Matrix> cov(jtj);

@@ -4,10 +4,18 @@
 // with the complex residues and the lower/upper residual terms of every FRF.
 // Variable projection (varpro.h): for each trial of the poles the residues and
 // residual terms are the LSFD least-squares solution, eliminated exactly, and
-// Levenberg-Marquardt moves the poles with the Golub-Pereyra Jacobian of the
-// projected residual, evaluated analytically (one pass over the data per
-// evaluation, no numeric differences). Residual: H - H_model over the band's
-// lines (or the lines carrying the modes, below), every response and reference.
+// Levenberg-Marquardt moves the poles with the exact gradient of the
+// projected functional and Kaufman's approximation J_K^T J_K of its
+// Gauss-Newton matrix (Kaufman, BIT 15, 1975: the Golub-Pereyra term dropped;
+// Ruhe and Wedin, SIAM Rev. 22, 1980: the same asymptotic rate; on the
+// benchmark sets and the tests' six-mode system the same iterations and the
+// same results to the printed digits), evaluated analytically: per
+// evaluation the LSFD's pass over the data (Q^T Y, 2 nm + 4 columns) and
+// one of 2 nm columns (Y X^T on the modes' rows; E^T Y had 4 nm), no numeric
+// differences. The last step, when the observed linear rate predicts
+// convergence, is evaluated without the second pass (varpro.h, Derivatives).
+// Residual: H - H_model over the band's lines (or the lines carrying the
+// modes, below), every response and reference.
 // Standard errors: Cov(f, zeta) = s^2 (J_K^T J_K)^-1 with Kaufman's Jacobian
 // J_K at the solution (J_K^T J_K is the Schur complement of the full
 // problem's Gauss-Newton matrix on the nonlinear block, so the uncertainty of
@@ -47,6 +55,8 @@ struct RefineOptions {
 
 struct RefineResult {
   ModalModel model;                    // refined poles, residues and residual terms
+  ModalModel startModel;               // LSFD at the initial poles on the fitted lines (the first evaluation;
+                                       // the band's LSFD when fittedLines == bandLines)
   std::vector<double> frequencyStdHz;  // one standard error per mode [Hz]
   std::vector<double> zetaStd;         // one standard error per mode (zeta; eta's is twice)
   double initialRelativeError = 0.0;   // sqrt(SSR / sum |H|^2) over the fitted lines, before

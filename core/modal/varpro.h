@@ -23,6 +23,8 @@
 //   Golub-Pereyra's Jacobian  J_GP,j = -P D_j X - Q T^-T D_j^T R   (exact d(PY)/dtheta_j)
 // The two parts are orthogonal to each other and Q^T R = 0, hence
 //   gradient      g_j = J^T r = -<D_j X, R> = -sum_c F_(j,c) . X_(row c of mode j)      (F = E^T R)
+//                     = -sum_c E_(j,c)^T (R X^T)_(column c of mode j),
+//                 R X^T = Y X^T - Q (Z X^T)  (only the modes' 2 nm columns)
 //   J_K^T J_K     = sum_{c,c'} (E^T P E)_{(j,c),(l,c')} (X X^T)_{(j,c),(l,c')}
 //   J_GP^T J_GP   = J_K^T J_K + <B_j, B_l>,   B_j = T^-T D_j^T R   (p x m)
 // None of them needs J itself (2 nf m x 2 nm: 290 MB for 100 FRFs x 9,000
@@ -69,11 +71,23 @@ class ModalVarpro {
   static Result<ModalVarpro> create(const FrfMatrix& frf, std::vector<LineSegment> segments, int modes,
                                     bool lowerResidual, bool upperResidual, bool derivatives = true);
 
+  // What an evaluation computes besides SSR and X.
+  enum class Derivatives {
+    None,        // the LSFD at fixed poles
+    Covariance,  // and J_K^T J_K (kaufman()): E and its products with Q and
+                 // itself, no pass of E over the data (no gradient)
+    Kaufman,     // and the gradient: a second pass over the data, Y X^T on
+                 // the modes' rows of X (2 nm columns, half of E^T Y's 4 nm)
+    Full,        // and the gradient and J_GP^T J_GP: the pass over the data is [Q, E]^T Y
+  };
   // Evaluates at theta (2 nm: f [Hz], zeta per mode). False when a pole is
   // not admissible (f <= 0, zeta outside (0, 1)), the basis is rank
   // deficient (two equal poles: the caller treats it as a failed step), or
   // derivatives are asked of an object created without them.
-  bool evaluate(const Eigen::Ref<const Vector>& theta, bool withDerivatives);
+  bool evaluate(const Eigen::Ref<const Vector>& theta, Derivatives what);
+  bool evaluate(const Eigen::Ref<const Vector>& theta, bool withDerivatives) {
+    return evaluate(theta, withDerivatives ? Derivatives::Full : Derivatives::None);
+  }
 
   // After evaluate(): SSR = ||Y - Phi X||^2 in the data's units squared.
   double ssr() const { return ssr_; }
@@ -96,7 +110,8 @@ class ModalVarpro {
   // The model of one FRF (response o, reference i) on the lines, Q z_c with
   // c = i no + o: a column of modelValues() without the others (resized).
   void modelValues(Eigen::Index response, Eigen::Index reference, ComplexVector& out) const;
-  // With derivatives: J^T r (2 nm), J_GP^T J_GP and J_K^T J_K (2 nm x 2 nm).
+  // With Derivatives::Full: J^T r (2 nm), J_GP^T J_GP and J_K^T J_K (2 nm x
+  // 2 nm); Kaufman: J^T r and J_K^T J_K; Covariance: J_K^T J_K.
   const Vector& gradient() const { return grad_; }
   const Matrix& gaussNewton() const { return jtjGp_; }
   const Matrix& kaufman() const { return jtjK_; }
@@ -135,6 +150,7 @@ class ModalVarpro {
 
   struct ModeTerms {
     double wn, s, sigma, wd;  // 2 pi f, sqrt(1 - zeta^2), zeta wn, wn s (lambda = -sigma + i wd)
+    Complex dlf, dlz;         // d lambda / d f, d lambda / d zeta
   };
   std::vector<ModeTerms> modeTerms_;  // per mode, of the theta being filled in
 
@@ -150,6 +166,9 @@ class ModalVarpro {
   Matrix epe_;                       // 4 nm x 4 nm: E^T P E
   Matrix g_;                         // p x p: X X^T
   Matrix b_;                         // p x (m 2 nm): B_j side by side
+  Matrix rx_;                        // up to 1024 rows x 2 nm: Y X_m^T on a block of rows (X_m: the modes' rows of X)
+  Matrix zx_;                        // p x 2 nm: Z X_m^T
+  Matrix ezx_;                       // 4 nm x 2 nm: (Q^T E)^T Z X_m^T
   Vector colNorm_;
   Vector grad_;
   Matrix jtjGp_, jtjK_;

@@ -58,25 +58,17 @@ Result<std::shared_ptr<const RealFft>> RealFft::forLength(Eigen::Index n) {
   AlignedBuffer<double> in(static_cast<std::size_t>(n));
   AlignedBuffer<std::complex<double>> out(static_cast<std::size_t>(n / 2 + 1));
   fftw_plan plan;
-  fftw_plan inverse;
   {
     std::lock_guard<std::mutex> lock(plannerMutex());
     plan = fftw_plan_dft_r2c_1d(static_cast<int>(n), in.data(), reinterpret_cast<fftw_complex*>(out.data()),
                                 FFTW_ESTIMATE);
-    inverse = fftw_plan_dft_c2r_1d(static_cast<int>(n), reinterpret_cast<fftw_complex*>(out.data()), in.data(),
-                                   FFTW_ESTIMATE);
-    if ((plan == nullptr) != (inverse == nullptr)) {
-      if (plan != nullptr) fftw_destroy_plan(plan);
-      if (inverse != nullptr) fftw_destroy_plan(inverse);
-      plan = nullptr;
-    }
   }
-  if (plan == nullptr || inverse == nullptr) {
+  if (plan == nullptr) {
     return makeError(ErrorCode::NumericalFailure, "FFTW could not create a plan of length " + std::to_string(n),
                      "FFT plan");
   }
-  std::shared_ptr<const RealFft> fft(new RealFft(n, plan, inverse, fftw_alignment_of(in.data()),
-                                                 fftw_alignment_of(reinterpret_cast<double*>(out.data()))));
+  std::shared_ptr<const RealFft> fft(
+      new RealFft(n, plan, fftw_alignment_of(in.data()), fftw_alignment_of(reinterpret_cast<double*>(out.data()))));
   (*cache)[n] = fft;
   return fft;
 }
@@ -84,10 +76,18 @@ Result<std::shared_ptr<const RealFft>> RealFft::forLength(Eigen::Index n) {
 RealFft::~RealFft() {
   std::lock_guard<std::mutex> lock(plannerMutex());
   fftw_destroy_plan(static_cast<fftw_plan>(plan_));
-  fftw_destroy_plan(static_cast<fftw_plan>(inversePlan_));
+  if (inversePlan_ != nullptr) fftw_destroy_plan(static_cast<fftw_plan>(inversePlan_));
 }
 
-void RealFft::inverse(const std::complex<double>* in, double* out) const {
+bool RealFft::inverse(const std::complex<double>* in, double* out) const {
+  std::call_once(inverseOnce_, [this] {
+    AlignedBuffer<std::complex<double>> spectrum(static_cast<std::size_t>(lineCount()));
+    AlignedBuffer<double> samples(static_cast<std::size_t>(n_));
+    std::lock_guard<std::mutex> lock(plannerMutex());
+    inversePlan_ = fftw_plan_dft_c2r_1d(static_cast<int>(n_), reinterpret_cast<fftw_complex*>(spectrum.data()),
+                                        samples.data(), FFTW_ESTIMATE);
+  });
+  if (inversePlan_ == nullptr) return false;
   // c2r overwrites its input, so the spectrum always goes through scratch.
   thread_local AlignedBuffer<std::complex<double>> scratchIn;
   thread_local AlignedBuffer<double> scratchOut;
@@ -101,6 +101,7 @@ void RealFft::inverse(const std::complex<double>* in, double* out) const {
   fftw_execute_dft_c2r(static_cast<fftw_plan>(inversePlan_), reinterpret_cast<fftw_complex*>(scratchIn.data()),
                        scratchOut.data());
   std::memcpy(out, scratchOut.data(), sizeof(double) * static_cast<std::size_t>(n_));
+  return true;
 }
 
 void RealFft::forward(const double* in, std::complex<double>* out) const {

@@ -23,11 +23,25 @@ std::string channelText(const TimeRecord& r, Eigen::Index c) {
 }
 
 // Linear interpolation of the crossing of `level` between samples i-1 and i
-// of y (y[i-1] on one side, y[i] on the other); returns a fractional index.
-double crossing(const Vector& y, Eigen::Index i, double level) {
-  const double a = y[i - 1], b = y[i];
+// of y (a = y[i-1] on one side, b = y[i] on the other); returns a fractional index.
+double crossing(double a, double b, Eigen::Index i, double level) {
   if (a == b) return static_cast<double>(i);
   return static_cast<double>(i - 1) + (level - a) / (b - a);
+}
+
+// The force pulse and its spectrum, per thread: FFTW-aligned (the plan runs
+// on them without a copy), kept between hits (no fresh pages per hit).
+struct PulseWorkspace {
+  AlignedBuffer<double> pulse;
+  AlignedBuffer<std::complex<double>> spectrum;
+};
+PulseWorkspace& pulseWorkspace(Eigen::Index n) {
+  thread_local PulseWorkspace ws;
+  if (ws.pulse.size() < static_cast<std::size_t>(n)) ws.pulse = AlignedBuffer<double>(static_cast<std::size_t>(n));
+  if (ws.spectrum.size() < static_cast<std::size_t>(n / 2 + 1)) {
+    ws.spectrum = AlignedBuffer<std::complex<double>>(static_cast<std::size_t>(n / 2 + 1));
+  }
+  return ws;
 }
 }  // namespace
 
@@ -85,12 +99,15 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
       // No run can be longer than the samples at the extreme: one vectorised
       // count of them first (usually the peak alone), the run scan only when
       // there are enough.
+      // Counted in doubles (exact below 2^53), branch-free: the compiler
+      // vectorises it (the integer count did not, a third of assessHit).
       const double* xp = x.data();
-      std::int64_t nearHi = 0, nearLo = 0;
+      double countHi = 0.0, countLo = 0.0;
       for (Eigen::Index i = 0; i < n; ++i) {
-        nearHi += std::abs(xp[i] - hi) <= tol;
-        nearLo += std::abs(xp[i] - lo) <= tol;
+        countHi += std::abs(xp[i] - hi) <= tol ? 1.0 : 0.0;
+        countLo += std::abs(xp[i] - lo) <= tol ? 1.0 : 0.0;
       }
+      const auto nearHi = static_cast<std::int64_t>(countHi), nearLo = static_cast<std::int64_t>(countLo);
       for (const double extreme : {hi, lo}) {
         if (std::abs(extreme) < 0.5 * cq.peak) continue;
         if ((extreme == hi ? nearHi : nearLo) < options.clipRunLength) continue;
@@ -120,15 +137,20 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
     q.accepted = false;
     return q;
   }
-  Vector f = record.samples.col(q.referenceChannel);
+  PulseWorkspace& ws = pulseWorkspace(n);
+  Eigen::Map<Vector> f(ws.pulse.data(), n);
+  f = record.samples.col(q.referenceChannel);
   if (quiet >= 2) f.array() -= f.head(quiet).mean();  // remove the pre-trigger offset
   const double noise = refq.noiseRms.value_or(0.0);
+  // max |f| and its first index (Eigen's maxCoeff(&index) takes the first
+  // too, but runs scalar): the vectorised maximum, then a scan to it.
+  const double absMax = f.cwiseAbs().maxCoeff();
   Eigen::Index peakIdx = 0;
-  f.cwiseAbs().maxCoeff(&peakIdx);
+  while (std::abs(f[peakIdx]) != absMax) ++peakIdx;
   const double peak = f[peakIdx];
   q.peakForce = peak;
   const double sign = peak >= 0.0 ? 1.0 : -1.0;
-  const Vector s = f * sign;  // main pulse positive
+  const auto s = [&](Eigen::Index i) { return f[i] * sign; };  // main pulse positive
   const double absPeak = std::abs(peak);
   if (noise > 0.0) q.forceSnrDb = 20.0 * std::log10(absPeak / noise);
   if (quiet < 2) q.notes.push_back("too few pre-trigger samples: noise floor unknown");
@@ -136,7 +158,7 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
   const double trigger =
       options.triggerLevel.value_or(std::max(options.triggerFraction * absPeak, options.noiseFactor * noise));
   for (Eigen::Index i = 0; i < n; ++i) {
-    if (s[i] >= trigger) {
+    if (s(i) >= trigger) {
       q.triggerSample = i;
       break;
     }
@@ -158,20 +180,24 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
   // pulse edges at max(edge fraction x peak, noise factor x noise)
   const double edge = std::max(options.pulseEdgeFraction * absPeak, options.noiseFactor * noise);
   Eigen::Index a = peakIdx, b = peakIdx;
-  while (a > 0 && s[a - 1] >= edge) --a;
-  while (b + 1 < n && s[b + 1] >= edge) ++b;
-  const double start = a > 0 ? crossing(s, a, edge) : 0.0;
-  const double end = b + 1 < n ? crossing(s, b + 1, edge) : static_cast<double>(n - 1);
+  while (a > 0 && s(a - 1) >= edge) --a;
+  while (b + 1 < n && s(b + 1) >= edge) ++b;
+  const double start = a > 0 ? crossing(s(a - 1), s(a), a, edge) : 0.0;
+  const double end = b + 1 < n ? crossing(s(b), s(b + 1), b + 1, edge) : static_cast<double>(n - 1);
   q.pulseWidthS = (end - start) / fs;
 
   // double hit: a second excursion after the main pulse has ended
   const double reboundLevel = std::max(options.doubleHitFraction * absPeak, options.noiseFactor * noise);
+  // The largest |f| after the pulse (its first sample) when it reaches the
+  // rebound level.
   Eigen::Index second = -1;
   double secondPeak = 0.0;
-  for (Eigen::Index i = b + 1; i < n; ++i) {
-    if (std::abs(f[i]) >= reboundLevel && std::abs(f[i]) > secondPeak) {
-      secondPeak = std::abs(f[i]);
-      second = i;
+  if (b + 1 < n) {
+    const double m = f.tail(n - b - 1).cwiseAbs().maxCoeff();
+    if (m >= reboundLevel && m > 0.0) {
+      secondPeak = m;
+      second = b + 1;
+      while (std::abs(f[second]) != m) ++second;
     }
   }
   if (second >= 0) {
@@ -191,9 +217,8 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
   if (second >= 0 && second < cut) f.segment(b + 1, cut - b - 1).setZero();
   auto fft = RealFft::forLength(n);
   if (!fft) return fft.error();
-  auto spec = (*fft)->transform(f);
-  if (!spec) return spec.error();
-  const Vector energy = spec->cwiseAbs2();  // |F(f)|^2
+  (*fft)->forward(f.data(), ws.spectrum.data());
+  const Vector energy = Eigen::Map<const ComplexVector>(ws.spectrum.data(), n / 2 + 1).cwiseAbs2();  // |F(f)|^2
   const double df = fs / static_cast<double>(n);
   // reference level: mean over the low-frequency plateau, f <= 0.1 / width
   const Eigen::Index plateau = std::clamp<Eigen::Index>(

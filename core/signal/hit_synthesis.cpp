@@ -113,7 +113,9 @@ Result<TimeRecord> synthesizeHammerHit(const LinearMdof& system, const HammerHit
         const double r = static_cast<double>(k) * fsFine / static_cast<double>(nFine) / fc;
         spectrum[k] *= 1.0 / std::sqrt(1.0 + std::pow(r, 8)) / static_cast<double>(nFine);
       }
-      (*fft)->inverse(spectrum.data(), col.data());
+      if (!(*fft)->inverse(spectrum.data(), col.data())) {
+        return makeError(ErrorCode::NumericalFailure, "FFTW could not plan the inverse FFT", "hammer hit synthesis");
+      }
       fine.col(c) = col;
     }
   }

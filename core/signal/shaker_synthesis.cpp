@@ -85,7 +85,9 @@ Result<std::vector<TimeRecord>> synthesizeShakerBlocks(const LinearMdof& system,
         const bool realLine = k == 0 || (n % 2 == 0 && k == nf - 1);
         spectrum[k] = realLine ? Complex(lineAmp * std::cos(p) * fineN, 0.0) : std::polar(lineAmp * 0.5 * fineN, p);
       }
-      (*fft)->inverse(spectrum.data(), period.data());  // unnormalised: n x(t)
+      if (!(*fft)->inverse(spectrum.data(), period.data())) {  // unnormalised: n x(t)
+        return makeError(ErrorCode::NumericalFailure, "FFTW could not plan the inverse FFT", "shaker synthesis");
+      }
       period /= fineN;
       for (Eigen::Index p = 0; p < periods; ++p) {
         force.col(spec.forcedDofs[static_cast<std::size_t>(i)]).segment(p * nFine, nFine) = period;

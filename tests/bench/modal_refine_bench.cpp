@@ -3,8 +3,10 @@
 // band 50-950 Hz (10 modes), starting from the LSFD model of the poles the
 // automatic selection of the pLSCF diagram (orders to 60) picked:
 //   BM_Lsfd_*          LSFD at those poles (residues, lower/upper residuals)
-//   BM_VarproEval_*    one variable-projection evaluation with the Jacobian
-//                      (what each Levenberg-Marquardt trial costs)
+//   BM_VarproEval_*    one variable-projection evaluation with the
+//                      Golub-Pereyra normal equations ([Q, E]^T Y)
+//   BM_VarproKaufman_* one evaluation as the refinement's trials make it:
+//                      gradient and J_K^T J_K (Q^T Y, then Y X^T on the modes' rows)
 //   BM_Refine_*        the whole refinement with standard errors
 // Counters: iterations and evaluations of the refinement, and its largest
 // relative frequency and damping errors against the generating modes.
@@ -75,7 +77,8 @@ void runLsfd(benchmark::State& state, const Case& c) {
   state.counters["modes"] = static_cast<double>(c.poles.size());
 }
 
-void runEvaluation(benchmark::State& state, const Case& c) {
+void runEvaluation(benchmark::State& state, const Case& c,
+                   ModalVarpro::Derivatives what = ModalVarpro::Derivatives::Full) {
   Eigen::Index k0 = 0, k = 0;
   while (k0 < c.frf.lineCount() && c.frf.frequencyHz[k0] < kLowHz) ++k0;
   k = k0;
@@ -92,7 +95,7 @@ void runEvaluation(benchmark::State& state, const Case& c) {
     theta[2 * r + 1] = poleZeta(c.poles[static_cast<std::size_t>(r)]);
   }
   for (auto _ : state) {
-    if (!vp->evaluate(theta, true)) {
+    if (!vp->evaluate(theta, what)) {
       state.SkipWithError("evaluation failed");
       return;
     }
@@ -138,6 +141,10 @@ void BM_VarproEval_100x20000(benchmark::State& state) {
   runEvaluation(state, large());
 }
 BENCHMARK(BM_VarproEval_100x20000)->Unit(benchmark::kMillisecond);
+void BM_VarproKaufman_100x20000(benchmark::State& state) {
+  runEvaluation(state, large(), ModalVarpro::Derivatives::Kaufman);
+}
+BENCHMARK(BM_VarproKaufman_100x20000)->Unit(benchmark::kMillisecond);
 void BM_Refine_100x20000(benchmark::State& state) {
   runRefine(state, large());
 }
@@ -151,6 +158,10 @@ void BM_VarproEval_10x5000(benchmark::State& state) {
   runEvaluation(state, small());
 }
 BENCHMARK(BM_VarproEval_10x5000)->Unit(benchmark::kMillisecond);
+void BM_VarproKaufman_10x5000(benchmark::State& state) {
+  runEvaluation(state, small(), ModalVarpro::Derivatives::Kaufman);
+}
+BENCHMARK(BM_VarproKaufman_10x5000)->Unit(benchmark::kMillisecond);
 void BM_Refine_10x5000(benchmark::State& state) {
   runRefine(state, small());
 }

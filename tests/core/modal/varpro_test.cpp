@@ -145,6 +145,37 @@ TEST(Varpro, NormalEquationsWithoutTheJacobianMatchDense) {
   EXPECT_GT((hgp - hk).cwiseAbs().maxCoeff(), 1e-6 * hgp.cwiseAbs().maxCoeff());
 }
 
+// The refinement's evaluations (refine.h): Derivatives::Kaufman gives the
+// same gradient as the full one (from Y X^T on the modes' rows instead of
+// E^T Y) and the same J_K^T J_K, Derivatives::Covariance the same J_K^T J_K,
+// SSR and X; over two segments and two references (the row and column
+// indexing of the second pass).
+TEST(Varpro, KaufmanAndCovarianceEvaluationsMatchTheFullOne) {
+  const FrfMatrix frf = data();
+  const Eigen::Index half = frf.lineCount() / 2;
+  auto made =
+      ModalVarpro::create(frf, {LineSegment{0, half - 40}, LineSegment{half, frf.lineCount() - half}}, 6, true, true);
+  ASSERT_TRUE(made.ok()) << made.error().describe();
+  ModalVarpro vp = std::move(made).value();
+  const Vector theta = probe();
+  ASSERT_TRUE(vp.evaluate(theta, ModalVarpro::Derivatives::Full));
+  const Vector g = vp.gradient();
+  const Matrix hk = vp.kaufman(), x = vp.linear();
+  const double ssr = vp.ssr();
+  ASSERT_TRUE(vp.evaluate(theta, ModalVarpro::Derivatives::Kaufman));
+  EXPECT_LT((vp.gradient() - g).cwiseAbs().maxCoeff(), 1e-9 * g.cwiseAbs().maxCoeff());
+  EXPECT_LT((vp.kaufman() - hk).cwiseAbs().maxCoeff(), 1e-12 * hk.cwiseAbs().maxCoeff());
+  ASSERT_TRUE(vp.evaluate(theta, ModalVarpro::Derivatives::Covariance));
+  EXPECT_LT((vp.kaufman() - hk).cwiseAbs().maxCoeff(), 1e-12 * hk.cwiseAbs().maxCoeff());
+  EXPECT_LT((vp.linear() - x).cwiseAbs().maxCoeff(), 1e-12 * x.cwiseAbs().maxCoeff());
+  EXPECT_NEAR(vp.ssr(), ssr, 1e-12 * ssr);
+  // Without the derivative workspace neither is possible.
+  auto lsfdOnly = ModalVarpro::create(frf, {LineSegment{0, frf.lineCount()}}, 6, true, true, false);
+  ASSERT_TRUE(lsfdOnly.ok());
+  EXPECT_FALSE(lsfdOnly->evaluate(theta, ModalVarpro::Derivatives::Kaufman));
+  EXPECT_FALSE(lsfdOnly->evaluate(theta, ModalVarpro::Derivatives::Covariance));
+}
+
 // The residual per FRF (blocks of lines, the product subtracted in place)
 // equals |R_c|^2 of the dense residual, and sums to explicitSsr(); one FRF's
 // model values are that FRF's column of modelValues(). Two references, so
