@@ -2878,12 +2878,17 @@
     </message>
     <message>
         <location line="+122"/>
-        <location line="+396"/>
+        <location line="+397"/>
         <source>%1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-338"/>
+        <location line="-352"/>
+        <source>Next: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Choose a campaign first, or make one with New Campaign (Ctrl+Shift+N).</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2965,12 +2970,12 @@
     </message>
     <message>
         <location line="+12"/>
-        <location line="+195"/>
+        <location line="+196"/>
         <source>Time since arming [s]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-177"/>
+        <location line="-178"/>
         <source>Time in the hit&apos;s record [s]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3126,7 +3131,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>Arm again after each decision</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4500,7 +4505,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ModeAnimationView</name>
     <message>
-        <location filename="../views/scene/mode_animation_view.cpp" line="+187"/>
+        <location filename="../views/scene/mode_animation_view.cpp" line="+212"/>
         <source>Export a frame</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4535,7 +4540,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+43"/>
         <location line="+5"/>
         <location line="+5"/>
         <source>Cannot show %1: %2</source>
@@ -4548,7 +4553,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location line="+6"/>
-        <source>|u|</source>
+        <source>peak |u|</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4577,12 +4582,12 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+16"/>
         <source>MAC %1 (%2 shared DOFs)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+99"/>
+        <location line="+103"/>
         <location line="+33"/>
         <source>Cannot write %1.</source>
         <translation type="unfinished"></translation>
@@ -4662,6 +4667,21 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location line="+1"/>
+        <source>Click (or use the arrow keys) to animate the operating deflection shape at that frequency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Frequency [Hz]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>|sum H| [dB]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Amplitude</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6026,8 +6046,8 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::SceneView</name>
     <message>
-        <location filename="../views/scene/scene_view.cpp" line="+643"/>
-        <source>|u|</source>
+        <location filename="../views/scene/scene_view.cpp" line="+760"/>
+        <source>peak |u|</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
