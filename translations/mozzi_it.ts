@@ -3781,7 +3781,10 @@
     <message numerus="yes">
         <location line="+45"/>
         <source>%1: %2 (%n mode(s))</source>
-        <translation>%1: %2 (%n modo/i)</translation>
+        <translation>
+            <numerusform>%1: %2 (%n modo)</numerusform>
+            <numerusform>%1: %2 (%n modi)</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+50"/>
@@ -5362,12 +5365,18 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     <message numerus="yes">
         <location line="+2"/>
         <source>%n relaxation test(s) of tyre %1.</source>
-        <translation>%n prova/e di rilassamento del pneumatico %1.</translation>
+        <translation>
+            <numerusform>%n prova di rilassamento del pneumatico %1.</numerusform>
+            <numerusform>%n prove di rilassamento del pneumatico %1.</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
         <location line="+3"/>
         <source>%n relaxation test(s) hold no result and are not drawn.</source>
-        <translation>%n prova/e di rilassamento senza risultati, non disegnate.</translation>
+        <translation>
+            <numerusform>%n prova di rilassamento non ha risultati e non è disegnata.</numerusform>
+            <numerusform>%n prove di rilassamento non hanno risultati e non sono disegnate.</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+6"/>
@@ -5377,7 +5386,10 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     <message numerus="yes">
         <location line="+8"/>
         <source>Inputs of eq. 48: ring stiffness from thesis Table 16 (nominal pressure); contact half-length a from Table 17 for the bars and as each test stored it for the lines; F_z %1 N; cornering stiffness from the project&apos;s steady-state test at %n of the 7 Table 17 pressures, elsewhere assumed %2 F_z; friction %3 and slip angle 1.5° assumed (§5.4). Tyre mass %4 kg and damping ratio %5 assumed (eq. 45 to 47).</source>
-        <translation>Dati dell&apos;eq. 48: rigidezze dell&apos;anello dalla Tabella 16 della tesi (pressione nominale); semilunghezza dell&apos;impronta a dalla Tabella 17 per le barre e come memorizzata da ciascuna prova per le linee; F_z %1 N; rigidezza di deriva dalla prova stazionaria del progetto a %n delle 7 pressioni della Tabella 17, altrove assunta %2 F_z; attrito %3 e angolo di deriva 1,5° assunti (§5.4). Massa del pneumatico %4 kg e rapporto di smorzamento %5 assunti (eq. da 45 a 47).</translation>
+        <translation>
+            <numerusform>Dati dell&apos;eq. 48: rigidezze dell&apos;anello dalla Tabella 16 della tesi (pressione nominale); semilunghezza dell&apos;impronta a dalla Tabella 17 per le barre e come memorizzata da ciascuna prova per le linee; F_z %1 N; rigidezza di deriva dalla prova stazionaria del progetto a %n delle 7 pressioni della Tabella 17, altrove assunta %2 F_z; attrito %3 e angolo di deriva 1,5° assunti (§5.4). Massa del pneumatico %4 kg e rapporto di smorzamento %5 assunti (eq. da 45 a 47).</numerusform>
+            <numerusform>Dati dell&apos;eq. 48: rigidezze dell&apos;anello dalla Tabella 16 della tesi (pressione nominale); semilunghezza dell&apos;impronta a dalla Tabella 17 per le barre e come memorizzata da ciascuna prova per le linee; F_z %1 N; rigidezza di deriva dalla prova stazionaria del progetto a %n delle 7 pressioni della Tabella 17, altrove assunta %2 F_z; attrito %3 e angolo di deriva 1,5° assunti (§5.4). Massa del pneumatico %4 kg e rapporto di smorzamento %5 assunti (eq. da 45 a 47).</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+32"/>
@@ -6363,7 +6375,10 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     <message numerus="yes">
         <location line="+3"/>
         <source>%n static test(s); sine sweeps are on the Twist Axes page.</source>
-        <translation>%n prova/e statica/he; le scansioni sinusoidali sono nella pagina Assi di torsione.</translation>
+        <translation>
+            <numerusform>%n prova statica; le scansioni sinusoidali sono nella pagina Assi di torsione.</numerusform>
+            <numerusform>%n prove statiche; le scansioni sinusoidali sono nella pagina Assi di torsione.</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2"/>
