@@ -2878,12 +2878,17 @@
     </message>
     <message>
         <location line="+122"/>
-        <location line="+396"/>
+        <location line="+397"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="-338"/>
+        <location line="-352"/>
+        <source>Next: %1</source>
+        <translation>Prossimo: %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Choose a campaign first, or make one with New Campaign (Ctrl+Shift+N).</source>
         <translation>Scegli prima una campagna, oppure creane una con Nuova campagna (Ctrl+Shift+N).</translation>
     </message>
@@ -2965,12 +2970,12 @@
     </message>
     <message>
         <location line="+12"/>
-        <location line="+195"/>
+        <location line="+196"/>
         <source>Time since arming [s]</source>
         <translation>Tempo dall&apos;armamento [s]</translation>
     </message>
     <message>
-        <location line="-177"/>
+        <location line="-178"/>
         <source>Time in the hit&apos;s record [s]</source>
         <translation>Tempo nella registrazione del colpo [s]</translation>
     </message>
@@ -3126,7 +3131,7 @@
         <translation>Campagna terminata: insieme di FRF %1</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>Arm again after each decision</source>
         <translation>Arma di nuovo dopo ogni decisione</translation>
     </message>
@@ -4504,7 +4509,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ModeAnimationView</name>
     <message>
-        <location filename="../views/scene/mode_animation_view.cpp" line="+187"/>
+        <location filename="../views/scene/mode_animation_view.cpp" line="+212"/>
         <source>Export a frame</source>
         <translation>Esporta un fotogramma</translation>
     </message>
@@ -4539,7 +4544,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>%1 (%2 Hz)</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+43"/>
         <location line="+5"/>
         <location line="+5"/>
         <source>Cannot show %1: %2</source>
@@ -4552,8 +4557,8 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location line="+6"/>
-        <source>|u|</source>
-        <translation>|u|</translation>
+        <source>peak |u|</source>
+        <translation>|u| di picco</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -4581,12 +4586,12 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>ODS a %1 Hz (%2)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+16"/>
         <source>MAC %1 (%2 shared DOFs)</source>
         <translation>MAC %1 (%2 GDL in comune)</translation>
     </message>
     <message>
-        <location line="+99"/>
+        <location line="+103"/>
         <location line="+33"/>
         <source>Cannot write %1.</source>
         <translation>Impossibile scrivere %1.</translation>
@@ -4666,6 +4671,21 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location line="+1"/>
+        <source>Click (or use the arrow keys) to animate the operating deflection shape at that frequency</source>
+        <translation>Fare clic (o usare i tasti freccia) per animare la deformata operativa a quella frequenza</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Frequency [Hz]</source>
+        <translation>Frequenza [Hz]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>|sum H| [dB]</source>
+        <translation>|somma H| [dB]</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Amplitude</source>
         <translation>Ampiezza</translation>
     </message>
@@ -6031,9 +6051,9 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::SceneView</name>
     <message>
-        <location filename="../views/scene/scene_view.cpp" line="+643"/>
-        <source>|u|</source>
-        <translation>|u|</translation>
+        <location filename="../views/scene/scene_view.cpp" line="+760"/>
+        <source>peak |u|</source>
+        <translation>|u| di picco</translation>
     </message>
     <message>
         <location line="+12"/>
