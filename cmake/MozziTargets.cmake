@@ -17,7 +17,15 @@ if(MOZZI_UBSAN)
   list(APPEND _mozzi_sanitize_link -fsanitize=undefined)
 endif()
 if(_mozzi_sanitize_flags)
-  list(APPEND _mozzi_sanitize_flags -fno-omit-frame-pointer -O1 -g1)
+  # EIGEN_MALLOC_ALREADY_ALIGNED=1: under ASan Eigen switches from malloc to
+  # its own over-allocating aligned malloc (its Memory.h tests
+  # __SANITIZE_ADDRESS__). With MOZZI_SANITIZE_ONLY, instrumented and plain
+  # translation units share Eigen's inline allocation functions, and the
+  # linker keeps one copy of each: a matrix allocated by one and freed by the
+  # other is a heap-buffer-overflow (found by tire_csv_fuzz). glibc's and
+  # ASan's malloc both return 16-byte aligned memory on x86-64, what Eigen's
+  # SSE code needs, so every unit uses malloc as the plain build does.
+  list(APPEND _mozzi_sanitize_flags -fno-omit-frame-pointer -O1 -g1 -DEIGEN_MALLOC_ALREADY_ALIGNED=1)
 endif()
 
 function(mozzi_target_defaults target)
