@@ -1,16 +1,16 @@
 #!/usr/bin/env bash
 # The sanitizer stage (issues 17 and 24): AddressSanitizer and
 # UndefinedBehaviorSanitizer (gcc; -O1 -g1 -fno-omit-frame-pointer, every
-# undefined-behaviour report fatal) over the libraries' fuzz corpora replayed
-# with their bounded mutations (tests/fuzz/replay_main.cpp); with
-# MOZZI_SANITIZE_CLI=1 also cli_args_fuzz and the tests of mozzi-cli, with
-# MOZZI_SANITIZE_UNIT=1 also the unit tests of core/ and devices/ (neither has
-# run green yet). Any sanitizer report fails the test, and a failed test fails
-# this script (and so scripts/test.sh and .ci/run).
+# undefined-behaviour report fatal) over the fuzz corpora replayed with their
+# bounded mutations (tests/fuzz/replay_main.cpp) and the tests of mozzi-cli
+# (the robustness test's every command and option among them); with
+# MOZZI_SANITIZE_UNIT=1 also over the unit tests of core/ and devices/. Any
+# sanitizer report fails the test, and a failed test fails this script (and
+# so scripts/test.sh and .ci/run).
 #
 # Its own build folder, build/asan (MOZZI_ASAN_BUILD_DIR overrides it): no GUI
 # layer, no benchmarks, and only the test programs the stage runs are built.
-# Instrumented: every test and fuzz program, and of the libraries the code
+# Instrumented: every test and fuzz program, mozzi-cli, and of the libraries the code
 # that reads files, devices and command lines (`scope` below: core's common
 # and io domains, the tyre CSV reader, the stability parameter file, the gap
 # problem loader and model file, the mesh editor, devices' usbtmc folder, the
@@ -44,19 +44,9 @@ jobs=$(nproc)
 excluded='_kill|^devices_campaign_campaign_memory$'
 # The tests run: the fuzz targets, the CLI's tests and the house-rule checks;
 # MOZZI_SANITIZE_UNIT=1 adds core's and devices' unit tests (about 100 more
-# programs to build: not yet run green under the sanitizers, see
-# docs/building.md).
-selected='(_fuzz$|^layers_)'
-excluded_default='^cli_args_fuzz$'
-if [ "${MOZZI_SANITIZE_CLI:-0}" = 1 ]; then
-  selected='(_fuzz$|^app_cli_|^cli_|^layers_)'
-  excluded_default=''
-fi
-if [ "${MOZZI_SANITIZE_UNIT:-0}" = 1 ]; then
-  selected='.'
-  excluded_default=''
-fi
-if [ -n "$excluded_default" ]; then excluded="$excluded|$excluded_default"; fi
+# programs to build; not in CI until they have run green, see docs/building.md).
+selected='(_fuzz$|^app_cli_|^cli_|^layers_)'
+if [ "${MOZZI_SANITIZE_UNIT:-0}" = 1 ]; then selected='.'; fi
 
 scope='^(core/(common|io)/|core/tire/tire_csv|core/stability/parameter_file|core/gap/(problem_loader|structural/model_file)|core/geometry/mesh_edit|devices/(usbtmc/|sim/(replay_driver|sim_drivers|tyre_tester)|campaign/campaign_definition)|app/cli/args)'
 if [ "${MOZZI_SANITIZE_FULL:-0}" = 1 ]; then scope=''; fi
@@ -72,17 +62,16 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMOZZI_SANITIZ
 # The programs of the selected tests (a test's name is its program's target),
 # and mozzi-cli, which the CLI tests run (cmake/MozziTargets.cmake compiles
 # instrumented code with -O1 -g1: line tables are all a report needs). Built in
-# two steps, the parsers' fuzz targets and the CLI first.
+# two steps: the fuzz targets first, then mozzi-cli and the tests.
 mapfile -t tests < <(ctest --test-dir "$build" -N -L 'unit|fuzz-smoke' -R "$selected" -E "$excluded" |
   sed -n 's/^ *Test *#[0-9]*: \(.*\)$/\1/p')
 mapfile -t known < <(ninja -C "$build" -t targets all | sed -n 's/^\([A-Za-z0-9_-]*\): phony$/\1/p')
 first=()
-second=()
+second=(mozzi-cli)
 for t in "${tests[@]}"; do
   for k in "${known[@]}"; do
     if [ "$t" = "$k" ]; then
       case "$t" in
-        cli_args_fuzz) second+=("$t") ;;
         *_fuzz) first+=("$t") ;;
         *) second+=("$t") ;;
       esac
@@ -91,7 +80,7 @@ for t in "${tests[@]}"; do
   done
 done
 cmake --build "$build" -j "$jobs" --target "${first[@]}"
-if [ ${#second[@]} -gt 0 ]; then cmake --build "$build" -j "$jobs" --target mozzi-cli "${second[@]}"; fi
+cmake --build "$build" -j "$jobs" --target "${second[@]}"
 echo "sanitize.sh: build of $((${#first[@]} + ${#second[@]})) targets took $(($(date +%s) - start)) s"
 
 # verify_asan_link_order=0: the umockdev tests run under umockdev-wrapper,
