@@ -7,7 +7,6 @@
 #include "app/cli/args.h"
 #include "app/cli/command.h"
 #include "core/io/project_store.h"
-#include "core/tire/tire_csv.h"
 #include "devices/common/driver.h"
 #include "devices/rigtests/sequence_parameters.h"
 #include "devices/rigtests/stiffness_tests.h"
@@ -283,27 +282,16 @@ int runTest(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
     return usage("--frequencies is not an option of the steady-state test");
   if (stiffness && *test == "static" && a.value("--frequencies"))
     return usage("--frequencies is not an option of the static test");
-  std::optional<double> force, speed, pressure, seedValue;
-  for (auto [name, dst] : {std::pair{"--force", &force}, std::pair{"--speed", &speed},
-                           std::pair{"--pressure", &pressure}, std::pair{"--seed", &seedValue}}) {
-    auto v = a.number(name);
-    if (!v) return usage(v.error().describe());
-    *dst = *v;
-  }
-  std::uint64_t seed = 1;
-  if (seedValue) {
-    if (*seedValue < 0 || *seedValue > 4294967295.0 || std::floor(*seedValue) != *seedValue)
-      return usage("--seed must be an integer from 0 to 4294967295");
-    seed = static_cast<std::uint64_t>(*seedValue);
-  }
+  // The numbers are range-checked by the parser (kSpec); the rig's own limits
+  // (5000 N, 1..45 Hz, 50 km/h) by the test's settings check below.
+  auto number = [&](const char* name) -> std::optional<double> {
+    const auto v = a.numbers(name);
+    return v.empty() ? std::nullopt : std::optional<double>(v.front());
+  };
+  const std::optional<double> force = number("--force"), speed = number("--speed"), pressure = number("--pressure");
+  const std::uint64_t seed = static_cast<std::uint64_t>(number("--seed").value_or(1.0));
   std::optional<std::vector<double>> frequencies;
-  if (auto text = a.value("--frequencies")) {
-    auto t = core::tire::parseNumberTuples(*text, 1, "--frequencies");
-    if (!t) return usage(t.error().describe());
-    frequencies.emplace();
-    for (const auto& x : *t) frequencies->push_back(x.front());
-    if (frequencies->empty()) return usage("--frequencies is empty");
-  }
+  if (a.value("--frequencies")) frequencies = a.numbers("--frequencies");
   const bool json = a.flag("--json");
   const std::string name = a.value("--name").value_or("");
 
@@ -423,26 +411,39 @@ int runTest(const ParsedArgs& a, std::ostream& out, std::ostream& err) {
   return report(*o);
 }
 
-// list and caps (the option table of --help); run parses its own options.
-const OptionSpec kSpec{{"--file"}, {"--json"}};
+// The option table of list, caps and run. The ranges say what a number can
+// mean; each rig refuses set-points beyond its own limits (the stiffness
+// rig's 5000 N and 1..45 Hz, the tyre tester's 50 km/h), naming the limit.
+const OptionSpec kSpec{{"--file", "--specimen", "--rig", "--test", "--name", "--actuator"},
+                       {"--json"},
+                       {{"--force", aboveTo(0, 1e5, "N"), "stiffness rig force set-point"},
+                        {"--frequencies", "test frequencies", {{"f", aboveTo(0, 1000, "Hz")}}, ',', true, 1000},
+                        {"--speed", aboveTo(0, 100, "m/s"), "tyre tester disk speed"},
+                        {"--pressure", closed(0.5, 4, "bar"), "tyre inflation pressure"},
+                        {"--seed", wholeNumber(0, 4294967295.0), "simulation seed"}}};
 
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  if (!args.empty() && args[0] == "run") {
-    const auto parsed = ParsedArgs::parse(args, OptionSpec{{"--specimen", "--rig", "--test", "--force", "--frequencies",
-                                                            "--seed", "--speed", "--pressure", "--name", "--actuator"},
-                                                           {"--json"}});
-    if (!parsed) {
-      err << parsed.error().describe() << "\n" << kUsage;
+  const auto parsed = ParsedArgs::parse(args, kSpec);
+  if (!parsed) {
+    err << "mozzi-cli rig: " << parsed.error().describe() << "\n";
+    if (exitCodeFor(parsed.error()) == kExitUsage) err << kUsage;
+    return exitCodeFor(parsed.error());
+  }
+  const auto& pos = parsed->positional();
+  if (!pos.empty() && pos[0] == "run") {
+    if (parsed->value("--file")) {
+      err << "mozzi-cli rig run: --file is an option of rig caps\n" << kUsage;
       return kExitUsage;
     }
     return runTest(*parsed, out, err);
   }
-  const auto parsed = ParsedArgs::parse(args, kSpec);
-  if (!parsed) {
-    err << parsed.error().describe() << "\n" << kUsage;
-    return kExitUsage;
+  for (const char* o : {"--specimen", "--rig", "--test", "--name", "--actuator", "--force", "--frequencies", "--speed",
+                        "--pressure", "--seed"}) {
+    if (parsed->value(o)) {
+      err << "mozzi-cli rig: " << o << " is an option of rig run\n" << kUsage;
+      return kExitUsage;
+    }
   }
-  const auto& pos = parsed->positional();
   if (pos.size() == 1 && pos[0] == "list") return list(parsed->flag("--json"), out);
   if (pos.size() == 2 && pos[0] == "caps")
     return caps(pos[1], parsed->value("--file").value_or(""), parsed->flag("--json"), out, err);

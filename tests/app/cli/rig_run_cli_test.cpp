@@ -7,6 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "cli_run.h"
 #include "core/io/project_store.h"
@@ -178,6 +181,42 @@ TEST_F(RigRunCli, RefusalsNameWhatIsWrongAndStoreNothing) {
   EXPECT_TRUE(info.at("rig_tests").empty());
   EXPECT_TRUE(info.at("tyre_tests").empty());
   EXPECT_EQ(info.at("specimens").size(), 2u);
+}
+
+// rig run's numbers are on the command's option table (issue 17): --help
+// states their ranges, the parser refuses a value outside them (exit 1, the
+// option and its range named) before the project is opened, and run's
+// options given to list or caps are usage errors.
+TEST_F(RigRunCli, OptionRangesComeFromTheOptionTable) {
+  const auto help = run({"rig", "--help"});
+  ASSERT_EQ(help.code, 0);
+  for (const char* o : {"--force", "--frequencies", "--speed", "--pressure", "--seed"})
+    EXPECT_NE(help.out.find(o), std::string::npos) << o << " in\n" << help.out;
+  EXPECT_NE(help.out.find("[0.5, 4] bar"), std::string::npos) << help.out;
+
+  const std::vector<std::string> base = {
+      "rig", "run", path_, "--specimen", "tyre-120-70-r17", "--rig", "sim-tyre-tester", "--test", "relaxation"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = base;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run(args);
+  };
+  for (const auto& [option, value, range] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{{"--pressure", "9", "[0.5, 4] bar"},
+                                                                      {"--seed", "1.5", "whole number"},
+                                                                      {"--seed", "-1", "whole number"},
+                                                                      {"--speed", "nan", "(0, 100] m/s"},
+                                                                      {"--frequencies", "1,,2", "(0, 1000] Hz"}}) {
+    const auto r = with({option, value});
+    EXPECT_EQ(r.code, kExitFailure) << option << " " << value << ": " << r.err;
+    EXPECT_NE(r.err.find(option), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(range), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(run({"rig", "list", "--force", "3"}).code, kExitUsage);
+  EXPECT_EQ(run({"rig", "caps", "sim-stiffness", "--seed", "3"}).code, kExitUsage);
+  EXPECT_EQ(with({"--file", "x.uff"}).code, kExitUsage);
+  const auto info = nlohmann::json::parse(run({"project", "info", path_, "--json"}).out);
+  EXPECT_TRUE(info.at("tyre_tests").empty());
 }
 
 }  // namespace

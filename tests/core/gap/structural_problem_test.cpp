@@ -301,7 +301,9 @@ TEST(StructuralProblem, ResidualModeMovesNoMode) {
   const int cand = findCandidate(**p, "residual_mode", {"3+Z"});
   ASSERT_GE(cand, 0);
   const std::vector<double> theta{1.0, 1.0};
-  const auto& par = (*p)->candidates()[static_cast<std::size_t>(cand)].parameters;
+  // candidates() returns a copy: keep it, or par would dangle (found by ASan).
+  const auto candidates = (*p)->candidates();
+  const auto& par = candidates[static_cast<std::size_t>(cand)].parameters;
   const std::vector<double> phi{0.3 * par[0].upper, 0.1 * par[1].upper, 0.0};
   const auto before = (*p)->metrics(theta.data(), -1, nullptr);
   const auto after = (*p)->metrics(theta.data(), cand, phi.data());
