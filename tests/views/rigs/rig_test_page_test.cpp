@@ -45,6 +45,7 @@
 #include "views/panels/parameter_form.h"
 #include "views/panels/parameter_texts.h"
 #include "views/scene/plate_sketch.h"
+#include "views/screenshot.h"
 
 using mozzi::views::JobRunner;
 using mozzi::views::PageContext;
@@ -56,13 +57,8 @@ namespace rt = mozzi::devices::rigtests;
 namespace {
 
 void saveShot(QWidget& page, const QString& name) {
-  const QString shots = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR");
-  if (shots.isEmpty()) return;
-  QTest::qWait(200);  // the layout requests the result posted are handled before the picture
-  QDir().mkpath(shots);
-  const bool hiDpi = qApp->devicePixelRatio() > 1.0;
-  page.grab().save(shots + QStringLiteral("/") + name + (hiDpi ? QStringLiteral("@2x") : QString()) +
-                   QStringLiteral(".png"));
+  // Results posted just before are laid out first.
+  mozzi::views::test::saveShot(page, name, 200);
 }
 
 QwtPlotCurve* curveTitled(QwtPlot* plot, const QString& title) {

@@ -12,7 +12,7 @@
 //    the trace through each axis's foot from the load point;
 //  - the view's equal aspect, the labels, the table's k_lat;
 //  - every static virtual specimen has a silhouette.
-// Screenshots: twist_axes (1 Hz), twist_axes_20hz (and @2x under QT_SCALE_FACTOR=2).
+// Screenshots: twist_axes (1 Hz), twist_axes_20hz (and @2x under QT_SCALE_FACTOR=2, tests/views/screenshot.h).
 #include "views/scene/twist_axes_page.h"
 
 #include <qwt_plot.h>
@@ -40,6 +40,7 @@
 #include "views/common/job_runner.h"
 #include "views/common/project_model.h"
 #include "views/plots/interactive_plot.h"
+#include "views/screenshot.h"
 
 using mozzi::views::JobRunner;
 using mozzi::views::PageContext;
@@ -58,13 +59,8 @@ constexpr std::uint64_t kSeed = 11;
 const std::vector<double> kFrequencies{1, 5, 10, 15, 20};
 
 void saveShot(QWidget& page, const QString& name) {
-  const QString shots = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR");
-  if (shots.isEmpty()) return;
-  QTest::qWait(200);
-  QDir().mkpath(shots);
-  const bool hiDpi = qApp->devicePixelRatio() > 1.0;
-  page.grab().save(shots + QStringLiteral("/") + name + (hiDpi ? QStringLiteral("@2x") : QString()) +
-                   QStringLiteral(".png"));
+  // Results posted just before are laid out first.
+  mozzi::views::test::saveShot(page, name, 200);
 }
 
 // The whole-test (or one step's) stored value of `key`.

@@ -9,17 +9,13 @@
 #include <QtTest>
 
 #include "views/common/project_model.h"
+#include "views/screenshot.h"
 
 namespace stiffness_pages {
 
 inline void saveShot(QWidget& page, const QString& name) {
-  const QString shots = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR");
-  if (shots.isEmpty()) return;
-  QTest::qWait(200);
-  QDir().mkpath(shots);
-  const bool hiDpi = qApp->devicePixelRatio() > 1.0;
-  page.grab().save(shots + QStringLiteral("/") + name + (hiDpi ? QStringLiteral("@2x") : QString()) +
-                   QStringLiteral(".png"));
+  // Results posted just before are laid out first.
+  mozzi::views::test::saveShot(page, name, 200);
 }
 
 // Creates the demo project in `dir` and opens it in `model`; the error text, empty when it worked.
