@@ -1,0 +1,140 @@
+// The Italian of the report's words (report_text.h): English source -> Italian.
+// Symbols, units and record names are not translated.
+#include <string>
+#include <unordered_map>
+
+#include "core/report/report_text.h"
+
+namespace mozzi::core::report {
+
+const char* italianText(const std::string& english) {
+  static const std::unordered_map<std::string, const char*> kItalian = {
+      // Sections
+      {"Mozzi report: %1", "Relazione Mozzi: %1"},
+      {"Project and specimens", "Progetto e provini"},
+      {"Frequency response functions", "Funzioni di risposta in frequenza"},
+      {"Modal parameters", "Parametri modali"},
+      {"Stiffness tests", "Prove di rigidezza"},
+      {"Tyre tests", "Prove sugli pneumatici"},
+      {"Gap diagnoses", "Diagnosi dello scarto modello-prova"},
+      // Title block
+      {"specimen %1", "provino %1"},
+      {"Project %1, created %2 by Mozzi %3, schema %4.", "Progetto %1, creato il %2 da Mozzi %3, schema %4."},
+      {"Report generated %1.", "Relazione generata il %1."},
+      {"Specimens", "Provini"},
+      {"Specimen", "Provino"},
+      {"Kind", "Tipo"},
+      {"Description", "Descrizione"},
+      {"Campaign %1 (%2)", "Campagna %1 (%2)"},
+      {"Kind %1, started %2.", "Tipo %1, iniziata il %2."},
+      {"Constraint: %1.", "Vincolo: %1."},
+      {"Operator: %1.", "Operatore: %1."},
+      {"FRF estimator %1.", "Stimatore delle FRF %1."},
+      {"Notes: %1", "Note: %1"},
+      {"Transducers", "Trasduttori"},
+      {"Transducers of %1", "Trasduttori di %1"},
+      {"Channel", "Canale"},
+      {"Input", "Ingresso"},
+      {"Name", "Nome"},
+      {"Quantity", "Grandezza"},
+      {"Unit", "Unità"},
+      {"Model", "Modello"},
+      {"Serial", "Matricola"},
+      {"Sensitivity", "Sensibilità"},
+      {"Calibrated", "Tarato il"},
+      {"V per unit", "V per unità"},
+      {"mV per unit", "mV per unità"},
+      {"Rig %1 (%2)", "Banco %1 (%2)"},
+      {"Rig kind %1, driver %2.", "Tipo di banco %1, driver %2."},
+      {"Measurement meshes", "Griglie di misura"},
+      {"Measurement mesh of %1: nodes, trace lines and faces", "Griglia di misura di %1: nodi, linee e facce"},
+      // FRF
+      {"FRF sets", "Insiemi di FRF"},
+      {"Set", "Insieme"},
+      {"Source", "Origine"},
+      {"Estimator", "Stimatore"},
+      {"Type", "Tipo"},
+      {"Lines", "Righe spettrali"},
+      {"Responses", "Risposte"},
+      {"References", "Riferimenti"},
+      {"FRF overlay of %1 (%2, magnitude)", "FRF sovrapposte di %1 (%2, modulo)"},
+      {"Coherence of %1", "Coerenza di %1"},
+      // Modal
+      {"Method %1, band %2 to %3 Hz", "Metodo %1, banda da %2 a %3 Hz"},
+      {", from FRF set %1", ", dall'insieme di FRF %1"},
+      {"Damping as the viscous ratio zeta and the loss factor eta = 2 zeta. The project stores frequency, damping "
+       "and shape per mode; no standard errors or MPC.",
+       "Smorzamento come rapporto viscoso zeta e fattore di perdita eta = 2 zeta. Il progetto conserva frequenza, "
+       "smorzamento e forma di ogni modo; né errori standard né MPC."},
+      {"Modes of %1", "Modi di %1"},
+      {"Mode", "Modo"},
+      {"Frequency", "Frequenza"},
+      {"Damping ratio zeta", "Rapporto di smorzamento zeta"},
+      {"Loss factor eta", "Fattore di perdita eta"},
+      {"Stabilization diagram of %1 (%2 to %3 Hz)", "Diagramma di stabilizzazione di %1 (da %2 a %3 Hz)"},
+      {"Mode %1 of %2: %3 Hz, zeta %4 %", "Modo %1 di %2: %3 Hz, zeta %4 %"},
+      // Stiffness
+      {"Analysis %1", "Analisi %1"},
+      {"Lumped fork models (thesis §4.2, Table 12)", "Modelli a parametri concentrati della forcella (tesi §4.2, "
+                                                      "Tabella 12)"},
+      {"Pure moment", "Momento puro"},
+      {"Bicycle fork stiffness and damping (thesis §6.4, §6.5)",
+       "Rigidezza e smorzamento della forcella da bicicletta (tesi §6.4, §6.5)"},
+      {"torsion stiffness with wheel", "rigidezza torsionale con ruota"},
+      {"torsion stiffness, fork alone", "rigidezza torsionale, sola forcella"},
+      {"torsion damping", "smorzamento torsionale"},
+      {"bending arm h_W", "braccio flessionale h_W"},
+      {"bending stiffness", "rigidezza flessionale"},
+      {"bending damping", "smorzamento flessionale"},
+      {"Value", "Valore"},
+      {"Per step of %1 (one standard deviation)", "Per passo di %1 (una deviazione standard)"},
+      {"Step", "Passo"},
+      {"frequency", "frequenza"},
+      {"static", "statica"},
+      {"dynamic", "dinamica"},
+      {"running", "in corso"},
+      {"complete", "completa"},
+      {"interrupted", "interrotta"},
+      {"failed", "fallita"},
+      {"Results of %1 (one standard deviation)", "Risultati di %1 (una deviazione standard)"},
+      {"Twist axis of %1 over %2 (plate plane)", "Asse di torsione di %1 su %2 (piano della piastra)"},
+      // Tyres
+      {"Inflation pressure %1 Pa, vertical load %2 N, speed %3 m/s, %4 measured points.",
+       "Pressione di gonfiaggio %1 Pa, carico verticale %2 N, velocità %3 m/s, %4 punti misurati."},
+      {"Magic Formula coefficients of %1", "Coefficienti della Magic Formula di %1"},
+      {"Parameter", "Parametro"},
+      {"Lateral force and aligning moment of %1 against slip angle",
+       "Forza laterale e momento autoallineante di %1 in funzione dell'angolo di deriva"},
+      {"Relaxation length of %1 against frequency and pressure, with the eq. 48 prediction",
+       "Lunghezza di rilassamento di %1 in funzione di frequenza e pressione, con la previsione dell'eq. 48"},
+      // Gap
+      {"Model: %1. Test: %2.", "Modello: %1. Prova: %2."},
+      {"Verdict: %1", "Verdetto: %1"},
+      {"(%1 and %2), gap %3 before, %4 after both", "(%1 e %2), scarto %3 prima, %4 dopo entrambi"},
+      {"(%1 at %2), gap %3 before, %4 after", "(%1 in %2), scarto %3 prima, %4 dopo"},
+      {"Gap before: %1 = %2; where it lies (flagged rows)", "Scarto iniziale: %1 = %2; dove si trova (righe segnalate)"},
+      {"Item", "Voce"},
+      {"Gap", "Scarto"},
+      {"Ranked effects (bold in the workbench: the verdict's)",
+       "Effetti in ordine (in grassetto nel banco di lavoro: quelli del verdetto)"},
+      {"Effect", "Effetto"},
+      {"Location", "Posizione"},
+      {"Size \u00b1 standard error", "Entità \u00b1 errore standard"},
+      {"Likelihood ratio", "Rapporto di verosimiglianza"},
+      {"Threshold", "Soglia"},
+      {"Held-out gain", "Guadagno sui dati esclusi"},
+      {"Shrink", "Riduzione"},
+      {"Measured and model, before and after", "Misura e modello, prima e dopo"},
+      {"Findings of %1", "Risultati di %1"},
+      {"Band", "Banda"},
+      {"Condition", "Condizione"},
+      {"Size", "Entità"},
+      {"Remaining gap", "Scarto residuo"},
+      {"Measured and model of %1, before and after the best effect",
+       "Misura e modello di %1, prima e dopo l'effetto migliore"},
+  };
+  auto it = kItalian.find(english);
+  return it == kItalian.end() ? nullptr : it->second;
+}
+
+}  // namespace mozzi::core::report
