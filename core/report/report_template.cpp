@@ -31,9 +31,8 @@ Result<ReportTemplate> templateFromJson(const std::string& text) {
         return makeError(ErrorCode::ParseError, "sections[" + std::to_string(i) + "] is not text", where);
       const auto key = k.get<std::string>();
       if (std::find(keys.begin(), keys.end(), key) == keys.end())
-        return makeError(ErrorCode::InvalidArgument, "unknown report section '" + key + "' in sections[" +
-                                                         std::to_string(i) + "]",
-                         where);
+        return makeError(ErrorCode::InvalidArgument,
+                         "unknown report section '" + key + "' in sections[" + std::to_string(i) + "]", where);
       t.sections.push_back(key);
     }
   }

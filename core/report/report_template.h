@@ -26,8 +26,7 @@ struct ReportTemplate {
   bool html = false;  // (the command line says it with --out and --html)
 
   bool operator==(const ReportTemplate& o) const {
-    return sections == o.sections && specimen == o.specimen && language == o.language && pdf == o.pdf &&
-           html == o.html;
+    return sections == o.sections && specimen == o.specimen && language == o.language && pdf == o.pdf && html == o.html;
   }
 };
 

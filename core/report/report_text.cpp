@@ -61,8 +61,7 @@ std::string Texts::date(const std::string& iso) const {
   int y = 0, mo = 0, d = 0, h = 0, mi = 0;
   char sep = 0;
   // "YYYY-MM-DDTHH:MM..." or "YYYY-MM-DD HH:MM..."
-  if (std::sscanf(iso.c_str(), "%4d-%2d-%2d%c%2d:%2d", &y, &mo, &d, &sep, &h, &mi) != 6 ||
-      (sep != 'T' && sep != ' '))
+  if (std::sscanf(iso.c_str(), "%4d-%2d-%2d%c%2d:%2d", &y, &mo, &d, &sep, &h, &mi) != 6 || (sep != 'T' && sep != ' '))
     return iso;
   char buf[48];
   if (language_ == Language::Italian)

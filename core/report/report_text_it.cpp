@@ -75,8 +75,9 @@ const char* italianText(const std::string& english) {
       {"Mode %1 of %2: %3 Hz, zeta %4 %", "Modo %1 di %2: %3 Hz, zeta %4 %"},
       // Stiffness
       {"Analysis %1", "Analisi %1"},
-      {"Lumped fork models (thesis §4.2, Table 12)", "Modelli a parametri concentrati della forcella (tesi §4.2, "
-                                                      "Tabella 12)"},
+      {"Lumped fork models (thesis §4.2, Table 12)",
+       "Modelli a parametri concentrati della forcella (tesi §4.2, "
+       "Tabella 12)"},
       {"Pure moment", "Momento puro"},
       {"Bicycle fork stiffness and damping (thesis §6.4, §6.5)",
        "Rigidezza e smorzamento della forcella da bicicletta (tesi §6.4, §6.5)"},
@@ -112,7 +113,8 @@ const char* italianText(const std::string& english) {
       {"Verdict: %1", "Verdetto: %1"},
       {"(%1 and %2), gap %3 before, %4 after both", "(%1 e %2), scarto %3 prima, %4 dopo entrambi"},
       {"(%1 at %2), gap %3 before, %4 after", "(%1 in %2), scarto %3 prima, %4 dopo"},
-      {"Gap before: %1 = %2; where it lies (flagged rows)", "Scarto iniziale: %1 = %2; dove si trova (righe segnalate)"},
+      {"Gap before: %1 = %2; where it lies (flagged rows)",
+       "Scarto iniziale: %1 = %2; dove si trova (righe segnalate)"},
       {"Item", "Voce"},
       {"Gap", "Scarto"},
       {"Ranked effects (bold in the workbench: the verdict's)",

@@ -93,14 +93,11 @@ core::Result<void> addDemoGapDiagnosis(core::io::ProjectStore& store) {
   nlohmann::json modes = nlohmann::json::array();
   for (std::size_t r = 0; r < specimen->tabulatedModes; ++r)
     modes.push_back({{"frequency_Hz", specimen->frequencyHz[r]}, {"zeta", specimen->zeta[r]}});
-  stored.parametersJson = nlohmann::json{{"form", "modal"},
-                                         {"dofs", model.labels},
-                                         {"modes", modes}}
-                              .dump();
+  stored.parametersJson = nlohmann::json{{"form", "modal"}, {"dofs", model.labels}, {"modes", modes}}.dump();
   auto modelId = store.addModel(stored);
   if (!modelId) return modelId.error();
-  auto analysis = core::report::analysisFromDiagnosis(**problem, *d, "Fork A design model against campaign " +
-                                                                         set->name);
+  auto analysis =
+      core::report::analysisFromDiagnosis(**problem, *d, "Fork A design model against campaign " + set->name);
   analysis.specimenId = specimenId;
   analysis.modelId = *modelId;
   analysis.frfSetId = set->id;

@@ -74,8 +74,8 @@ PageContext contextOf(PageProject& p) {
 bool sceneAvailable(QString* error) {
   const QString platform = QGuiApplication::platformName();
   if (platform != QLatin1String("offscreen") && platform != QLatin1String("minimal")) return true;
-  return fail(error, tr("the 3-D scene needs a display with OpenGL (Xvfb is enough); the %1 platform has none")
-                         .arg(platform));
+  return fail(error,
+              tr("the 3-D scene needs a display with OpenGL (Xvfb is enough); the %1 platform has none").arg(platform));
 }
 
 // Shows `widget` (its OpenGL window needs exposing) and waits up to `ms` for `ready`.
@@ -90,7 +90,8 @@ bool showAndWait(QWidget* widget, Ready ready, int ms) {
 
 // The scene's picture, or a null image with *error when there is no OpenGL context.
 QImage sceneImage(SceneView* scene, QString* error) {
-  if (!showAndWait(scene->window(), [scene] { return scene->isReady(); }, 3000)) {
+  if (!showAndWait(
+          scene->window(), [scene] { return scene->isReady(); }, 3000)) {
     fail(error, tr("the 3-D scene has no OpenGL context on this display"));
     return {};
   }
@@ -186,7 +187,8 @@ bool renderModeShape(const FigureRequest& r, FigureDrawing& out, QString* error)
   shape.dofs = table->dofs;
   shape.values = table->modes[index].shape;
   view->setShapes({shape});
-  if (!showAndWait(view.get(), [&] { return view->scene()->isReady(); }, 3000))
+  if (!showAndWait(
+          view.get(), [&] { return view->scene()->isReady(); }, 3000))
     return fail(error, tr("the 3-D scene has no OpenGL context on this display"));
   if (!view->showShape(0)) return fail(error, tr("the mode shape does not fit the mesh"));
   view->setPhase(M_PI / 2);  // the largest deflection: A sin(theta) = A

@@ -153,8 +153,8 @@ bool renderStabilization(const FigureRequest& r, FigureDrawing& out, QString* er
   auto modes = r.store.modalResult(info->id);
   if (!modes) return fail(error, QString::fromStdString(modes.error().describe()));
   identification::Options options;
-  options.method = info->method.find("LSCE") != std::string::npos ? identification::Method::Lsce
-                                                                   : identification::Method::Plscf;
+  options.method =
+      info->method.find("LSCE") != std::string::npos ? identification::Method::Lsce : identification::Method::Plscf;
   options.bandLowHz = info->bandLowHz;
   options.bandHighHz = info->bandHighHz;
   options.refine = false;  // the diagram only
