@@ -84,7 +84,8 @@ ReportDialog::ReportDialog(ProjectModel* model, QWidget* parent) : QDialog(paren
   output(pdf_, pdfPath_, pdfBrowse_);
   output(html_, htmlDir_, htmlBrowse_);
   connect(pdfBrowse_, &QPushButton::clicked, this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Report PDF"), pdfPath_->text(), tr("PDF documents (*.pdf)"));
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Report PDF"), pdfPath_->text(), tr("PDF documents (*.pdf)"));
     if (!path.isEmpty()) pdfPath_->setText(path);
   });
   connect(htmlBrowse_, &QPushButton::clicked, this, [this] {
@@ -103,8 +104,9 @@ ReportDialog::ReportDialog(ProjectModel* model, QWidget* parent) : QDialog(paren
   if (model_->store()) {
     auto saved = core::report::loadReportTemplate(*model_->store());
     if (saved && *saved) t = **saved;
-    if (!saved) status_->setText(tr("The project's report template cannot be read: %1")
-                                     .arg(QString::fromStdString(saved.error().describe())));
+    if (!saved)
+      status_->setText(
+          tr("The project's report template cannot be read: %1").arg(QString::fromStdString(saved.error().describe())));
   }
   setReportTemplate(t);
   retranslate();
@@ -122,7 +124,7 @@ core::report::ReportTemplate ReportDialog::reportTemplate() const {
   if (all) t.sections.clear();  // every section, including those added later
   t.specimen = specimen_->currentData().toString().toStdString();
   t.language = language_->currentData().toString() == QLatin1String("it") ? core::report::Language::Italian
-                                                                           : core::report::Language::English;
+                                                                          : core::report::Language::English;
   t.pdf = pdf_->isChecked();
   t.html = html_->isChecked();
   return t;
