@@ -8,9 +8,11 @@
 #include <qwt_symbol.h>
 #include <QCoreApplication>
 #include <QPen>
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "core/modal/plscf.h"
 #include "views/common/job_runner.h"
 #include "views/modal/identification_backend.h"
 #include "views/plots/frf_plot.h"
@@ -157,6 +159,9 @@ bool renderStabilization(const FigureRequest& r, FigureDrawing& out, QString* er
       info->method.find("LSCE") != std::string::npos ? identification::Method::Lsce : identification::Method::Plscf;
   options.bandLowHz = info->bandLowHz;
   options.bandHighHz = info->bandHighHz;
+  // As the identification ran (the demo, the page's default): order 60,
+  // capped at what the band's lines support.
+  options.maxOrder = std::min(60, std::max(8, core::modal::plscfOrderLimit(*frf, info->bandLowHz, info->bandHighHz)));
   options.refine = false;  // the diagram only
   JobProgress progress;
   auto outcome = identification::identify(*frf, options, progress);

@@ -157,7 +157,8 @@ TEST_F(ReportCliTest, DemoReportAsPdfAndHtml) {
   EXPECT_TRUE(fs::file_size(html / "frf-set-1.svg") > 1000);
   EXPECT_TRUE(fs::file_size(html / "frf-set-1.png") > 1000);
   EXPECT_NE(index.find("src=\"frf-set-1.svg\""), std::string::npos);
-  for (const char* figure : {"frf-coherence-1.svg", "twist-axes-1.svg", "tyre-steady-2.svg", "gap-overlay-1.svg"}) {
+  for (const char* figure : {"frf-coherence-1.svg", "stabilization-1.svg", "stabilization-2.svg", "twist-axes-1.svg",
+                             "tyre-steady-2.svg", "gap-overlay-1.svg"}) {
     EXPECT_TRUE(fs::exists(html / figure) && fs::file_size(html / figure) > 1000) << figure;
     EXPECT_NE(index.find(std::string("src=\"") + figure + "\""), std::string::npos) << figure;
   }
