@@ -132,16 +132,18 @@ QWidget* createFrfPage(const PageContext& ctx) {
 }  // namespace
 
 void registerBuiltinPages(views::PageRegistry& registry) {
-  registry.add(PageSpec{QStringLiteral("overview"), QT_TRANSLATE_NOOP("Pages", "Overview"),
-                        QT_TRANSLATE_NOOP("Pages", "The open project: file, schema, specimens"), QString(),
-                        PageMenu::Pages, [](const ProjectItem& item) { return item.kind == RecordKind::Project; },
-                        [](const PageContext& ctx) -> QWidget* {
-                          auto* page = new views::ProjectOverview(ctx.parent);
-                          page->setObjectName(QStringLiteral("overviewTab"));
-                          page->setModel(ctx.model);
-                          return page;
-                        },
-                        /*singleton=*/true, /*openAtStart=*/true, nullptr});
+  registry.add(
+      PageSpec{QStringLiteral("overview"), QT_TRANSLATE_NOOP("Pages", "Overview"),
+               QT_TRANSLATE_NOOP("Pages", "The open project: where to start, its specimens and what each holds"),
+               QString(), PageMenu::Pages, [](const ProjectItem& item) { return item.kind == RecordKind::Project; },
+               [](const PageContext& ctx) -> QWidget* {
+                 auto* page = new views::ProjectOverview(ctx.parent);
+                 page->setObjectName(QStringLiteral("overviewTab"));
+                 page->setPages(ctx.registry, ctx.openPage);
+                 page->setModel(ctx.model);
+                 return page;
+               },
+               /*singleton=*/true, /*openAtStart=*/true, nullptr});
 
   registry.add(PageSpec{QStringLiteral("scene"), QT_TRANSLATE_NOOP("Pages", "3-D View"),
                         QT_TRANSLATE_NOOP("Pages", "The selected specimen's measurement mesh in 3-D"), QString(),
