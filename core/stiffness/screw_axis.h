@@ -57,4 +57,19 @@ Result<ScrewAxis> screwAxis(const Matrix& points, const Matrix& displacements, c
 Result<ScrewAxis> screwAxisFromPhasors(const Matrix& points, const ComplexMatrix& phasors,
                                        const ScrewAxisOptions& options = {});
 
+// The rigid twist fitted to scalar readings, each the displacement of point
+// p_k along the unit direction e_k (a mode shape's translational DOFs: one
+// accelerometer axis at a node), v_k = e_k . (d_O + w x p_k), eq. 15 projected
+// on e_k; least squares over the m >= 6 readings. points, directions: m x 3
+// (directions are normalised); values: m. Errors: sizes, non-finite values, a
+// zero direction, readings that leave a rotation or translation unseen
+// (collinear points, too few directions), rotation not resolved.
+Result<ScrewAxis> screwAxisFromReadings(const Matrix& points, const Matrix& directions, const Vector& values,
+                                        const ScrewAxisOptions& options = {});
+
+// Same from complex readings (a complex mode shape): the common phase is
+// removed as in screwAxisFromPhasors and the rest reported as phaseResidual.
+Result<ScrewAxis> screwAxisFromReadingPhasors(const Matrix& points, const Matrix& directions,
+                                              const ComplexVector& values, const ScrewAxisOptions& options = {});
+
 }  // namespace mozzi::core::stiffness
