@@ -79,8 +79,8 @@ Result<PlateCsv> parsePlateCsv(const std::string& text, const std::string& sourc
     const auto fields = splitFields(line);
     if (fields[0] == "sensor" || fields[0] == "load") {
       double u = 0, v = 0;
-      if (fields.size() != 3 || !parsesAsNumber(fields[1], u) || !parsesAsNumber(fields[2], v) ||
-          !std::isfinite(u) || !std::isfinite(v)) {
+      if (fields.size() != 3 || !parsesAsNumber(fields[1], u) || !parsesAsNumber(fields[2], v) || !std::isfinite(u) ||
+          !std::isfinite(v)) {
         return makeError(ErrorCode::ParseError, "expected '" + fields[0] + ",u,v' with numbers", where);
       }
       for (double x : {u, v})
@@ -136,12 +136,9 @@ Result<PlateCsv> readPlateCsv(const std::string& path, bool needSensors, bool ne
 
 const char* plateCsvKindName(PlateCsvKind kind) {
   switch (kind) {
-    case PlateCsvKind::Static:
-      return "static";
-    case PlateCsvKind::Dynamic:
-      return "dynamic";
-    case PlateCsvKind::Modal:
-      return "modal";
+    case PlateCsvKind::Static: return "static";
+    case PlateCsvKind::Dynamic: return "dynamic";
+    case PlateCsvKind::Modal: return "modal";
   }
   return "static";
 }

@@ -14,9 +14,8 @@ namespace {
 const char* kGeometry = "sensor,0.2,-0.3\nsensor,0,-0.3\nsensor,0,0\nload,0,-0.5\n";
 
 TEST(PlateCsv, GeometryHeaderAndRows) {
-  const auto csv = parsePlateCsv(std::string("# a comment\n\n") + kGeometry +
-                                     "force_N,d1_m,d2_m,d3_m\n300,1.0e-3,0.6e-3,0.2e-3\n",
-                                 "s.csv", true);
+  const auto csv = parsePlateCsv(
+      std::string("# a comment\n\n") + kGeometry + "force_N,d1_m,d2_m,d3_m\n300,1.0e-3,0.6e-3,0.2e-3\n", "s.csv", true);
   ASSERT_TRUE(csv.ok()) << csv.error().describe();
   ASSERT_EQ(csv->sensors.size(), 3u);
   EXPECT_EQ(csv->load, Vector2(0, -0.5));
@@ -77,8 +76,9 @@ TEST(PlateCsv, SweepPhasesInRadiansAndModalFrfs) {
   EXPECT_DOUBLE_EQ((*sweep)[0].amplitude(2), 3e-3);
   EXPECT_DOUBLE_EQ((*sweep)[0].forceAmplitude, 300.0);
 
-  auto m = parsePlateCsv(std::string(kGeometry) + "10,1,0,1,0,1,0\n20,5,1,1,0,2,0\n30,1,0,1,0,1,0\n40,1,0,3,4,1,0\n"
-                                                      "50,1,0,1,0,1,0\n",
+  auto m = parsePlateCsv(std::string(kGeometry) +
+                             "10,1,0,1,0,1,0\n20,5,1,1,0,2,0\n30,1,0,1,0,1,0\n40,1,0,3,4,1,0\n"
+                             "50,1,0,1,0,1,0\n",
                          "m.csv", true);
   ASSERT_TRUE(m.ok());
   const auto frf = modalFrfFromCsv(*m, FrfType::Receptance);
