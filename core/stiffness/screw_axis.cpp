@@ -33,6 +33,11 @@ double ScrewAxis::distance(const Vector3& q) const {
   return (q - point).cross(direction).norm();
 }
 
+AxisEnds axisSegment(const ScrewAxis& axis, const Vector3& centre, double halfLength) {
+  const Vector3 p0 = axis.point + axis.direction * (centre - axis.point).dot(axis.direction);
+  return {p0 - halfLength * axis.direction, p0 + halfLength * axis.direction};
+}
+
 namespace {
 
 // The least-squares rigid twist of m scalar readings b_k = e_k . (d_O + w x p_k)

@@ -46,6 +46,14 @@ struct ScrewAxis {
   double distance(const Vector3& q) const;
 };
 
+// The stretch of the axis drawn through a body centred at `centre`: from
+// p0 - halfLength u to p0 + halfLength u, p0 the axis point nearest `centre`.
+struct AxisEnds {
+  Vector3 from = Vector3::Zero();
+  Vector3 to = Vector3::Zero();
+};
+AxisEnds axisSegment(const ScrewAxis& axis, const Vector3& centre, double halfLength);
+
 // points: n x 3 [m]; displacements: n x 3 [m]. Errors: fewer than 3 points,
 // shape mismatch, non-finite values, collinear or coincident points (the
 // rotation about their line is unobservable), rotation not resolved.

@@ -82,8 +82,8 @@ core::Result<StiffnessTestView> dynamicViewFromCsv(const st::PlateCsv& csv, cons
       }
       ++withAxis;
     } else {
-      problems += (problems.empty() ? "" : "; ") + core::formatNumber(s.frequencyHz) + " Hz (" +
-                  csv.where(k) + "): " + s.axis.error().message;
+      problems += (problems.empty() ? "" : "; ") + core::formatNumber(s.frequencyHz) + " Hz (" + csv.where(k) +
+                  "): " + s.axis.error().message;
     }
     v.steps.push_back(std::move(step));
   }

@@ -228,10 +228,9 @@ void TwistCsvImport::computeModal() {
     for (std::size_t i = 0; i < f->csv.sensors.size(); ++i) cols.push_back(static_cast<int>(i));
     QStringList problems;
     const core::Vector2 load = f->csv.hasLoad ? f->csv.load : core::Vector2::Zero();
-    for (auto [spin, into, what] :
-         {std::tuple<QDoubleSpinBox*, std::optional<st::ModalAxis>*, QString>{bendingHz_, &modal_.bending,
-                                                                              tr("bending")},
-          {torsionHz_, &modal_.torsion, tr("torsion")}}) {
+    for (auto [spin, into, what] : {std::tuple<QDoubleSpinBox*, std::optional<st::ModalAxis>*, QString>{
+                                        bendingHz_, &modal_.bending, tr("bending")},
+                                    {torsionHz_, &modal_.torsion, tr("torsion")}}) {
       auto r = st::modalTwistAxis(*f->frf, cols, 0, spin->value(), f->csv.sensors, load);
       if (r)
         *into = std::move(r).value();

@@ -10,8 +10,8 @@
 // peaks of the summed FRFs. Imported files stay for the page's life; they are
 // not written to the project.
 
-#include <QString>
 #include <QGroupBox>
+#include <QString>
 #include <optional>
 #include <vector>
 

@@ -88,7 +88,8 @@ void checkDrawn(TwistAxesPage& page, QwtPlotCurve* curve, const Vector2& point, 
   const QPointF a = curve->sample(0), b = curve->sample(1), p(point(0), point(1));
   QVERIFY2(angleDifference(inclination(a, b), beta) < 1e-9,
            qPrintable(QStringLiteral("%1: %2 deg").arg(what).arg((inclination(a, b) - beta) * 180 / kPi)));
-  QVERIFY2(distanceFromLine(p, a, b) < 1e-9, qPrintable(QStringLiteral("%1: %2 m").arg(what).arg(distanceFromLine(p, a, b))));
+  QVERIFY2(distanceFromLine(p, a, b) < 1e-9,
+           qPrintable(QStringLiteral("%1: %2 m").arg(what).arg(distanceFromLine(p, a, b))));
   auto* plot = page.plot();
   const QwtScaleMap xm = plot->canvasMap(QwtPlot::xBottom), ym = plot->canvasMap(QwtPlot::yLeft);
   auto px = [&](const QPointF& s) { return QPointF(xm.transform(s.x()), ym.transform(s.y())); };
@@ -142,8 +143,9 @@ class TwistAxesImportTest : public QObject {
     // Dynamic sweep: at 5, 10 and 20 Hz a rotation about an axis that moves
     // and turns with frequency; amplitudes and phases (0 or 180 deg) as a
     // sine fit gives them, no force columns.
-    const std::vector<std::pair<double, Axis>> sweep{
-        {5, {{0.05, -0.1}, 20 * kPi / 180}}, {10, {{0.02, -0.05}, 35 * kPi / 180}}, {20, {{-0.03, 0.02}, 55 * kPi / 180}}};
+    const std::vector<std::pair<double, Axis>> sweep{{5, {{0.05, -0.1}, 20 * kPi / 180}},
+                                                     {10, {{0.02, -0.05}, 35 * kPi / 180}},
+                                                     {20, {{-0.03, 0.02}, 55 * kPi / 180}}};
     std::ostringstream d;
     d.precision(17);
     d << kPlate << "freq_Hz,A1,phi1,A2,phi2,A3,phi3,A4,phi4\n";
@@ -198,7 +200,8 @@ class TwistAxesImportTest : public QObject {
     QVERIFY2(!err, qPrintable(err.value_or(QString())));
     QTest::qWait(50);
     // The peaks the page guesses are the modes, to a line.
-    QVERIFY2(std::abs(import->bendingSpin()->value() - fb) <= 0.5, qPrintable(QString::number(import->bendingSpin()->value())));
+    QVERIFY2(std::abs(import->bendingSpin()->value() - fb) <= 0.5,
+             qPrintable(QString::number(import->bendingSpin()->value())));
     QVERIFY(std::abs(import->torsionSpin()->value() - ft) <= 0.5);
     import->setModeFrequencies(fb, ft);
     QTest::qWait(50);
@@ -226,7 +229,8 @@ class TwistAxesImportTest : public QObject {
       QVERIFY2(dq < 1e-3, qPrintable(QString::number(dq)));
     }
     const QStringList labels = page.plotLabels();
-    QVERIFY2(labels.contains(QStringLiteral("bending axis (modal, 26 Hz)")), qPrintable(labels.join(QLatin1String(" | "))));
+    QVERIFY2(labels.contains(QStringLiteral("bending axis (modal, 26 Hz)")),
+             qPrintable(labels.join(QLatin1String(" | "))));
     QVERIFY(labels.contains(QStringLiteral("torsion axis (modal, 60 Hz)")));
     QVERIFY(labels.contains(QStringLiteral("static twist axis")));
     QVERIFY(import->modalText().contains(QStringLiteral("bending at 26.00 Hz (in-phase)")));
@@ -239,7 +243,8 @@ class TwistAxesImportTest : public QObject {
     PageContext ctx{&model_, &jobs_, {}, nullptr, {}};
     TwistAxesPage page(ctx);
     auto* import = page.csvImport();
-    const auto bad = write(dir_, QStringLiteral("bad.csv"), std::string(kPlate) + "300,1e-3,2e-3,3e-3,4e-3\n300,1e-3,nan,3e-3,4e-3\n");
+    const auto bad = write(dir_, QStringLiteral("bad.csv"),
+                           std::string(kPlate) + "300,1e-3,2e-3,3e-3,4e-3\n300,1e-3,nan,3e-3,4e-3\n");
     auto err = import->openFile(QString::fromStdString(bad));
     QVERIFY(err);
     QVERIFY2(err->contains(QStringLiteral("bad.csv:7")) && err->contains(QStringLiteral("column 3")), qPrintable(*err));
