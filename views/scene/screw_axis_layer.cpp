@@ -28,7 +28,6 @@ ScrewAxisLayer::ScrewAxisLayer(SceneView* scene) : scene_(scene) {
   actor_->SetMapper(mapper);
   actor_->GetProperty()->SetColor(kColour[0], kColour[1], kColour[2]);
   actor_->GetProperty()->SetLineWidth(4.0);
-  actor_->GetProperty()->SetRenderLinesAsTubes(true);
   actor_->GetProperty()->LightingOff();
   actor_->PickableOff();
   actor_->VisibilityOff();
