@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <complex>
+#include <nlohmann/json.hpp>
 
 #include "core/common/text.h"
 #include "core/stiffness/dynamic_twist.h"
+#include "devices/rigtests/test_store.h"
 
 namespace mozzi::devices::rigtests {
 
@@ -92,6 +94,47 @@ core::Result<StiffnessTestView> dynamicViewFromCsv(const st::PlateCsv& csv, cons
                            csv.source);
   if (note) *note = problems;
   return v;
+}
+
+core::Result<std::int64_t> storeImportedTest(core::io::ProjectStore& store, std::int64_t specimenId,
+                                             const StiffnessTestView& view, const std::string& sourcePath) {
+  auto name = detail::uniqueTestName(store, specimenId, false, view.name, view.dynamic ? "dynamic" : "static");
+  if (!name) return name.error();
+  core::io::StoredRigSetup rs;
+  rs.specimenId = specimenId;
+  rs.name = "imported " + *name;
+  rs.rigKind = "imported-csv";
+  rs.driver = "csv";
+  nlohmann::json geometry;
+  geometry["plate_axes"] = "u = x, v = z, w = y (thesis §1.2): as the imported file gives them";
+  geometry["load_point_m"] = {view.loadPoint.x(), view.loadPoint.y()};
+  geometry["laser_points_m"] = nlohmann::json::array();
+  for (const auto& p : view.laserPoints) geometry["laser_points_m"].push_back({p.x(), p.y()});
+  rs.axisMapJson = geometry.dump();
+  rs.parametersJson = nlohmann::json{{"source", sourcePath}}.dump();
+  auto setupId = store.addRigSetup(rs);
+  if (!setupId) return setupId.error();
+  core::io::StoredRigTest t;
+  t.specimenId = specimenId;
+  t.rigSetupId = *setupId;
+  t.kind = view.dynamic ? core::io::StoredRigTest::Kind::Dynamic : core::io::StoredRigTest::Kind::Static;
+  t.name = *name;
+  t.parametersJson = nlohmann::json{{"imported_from", sourcePath}}.dump();
+  t.status = core::io::TestStatus::Complete;
+  t.statusNote = view.statusNote;
+  auto put = [&t](const std::map<std::string, StoredQuantity>& results, std::optional<int> step) {
+    for (const auto& [key, q] : results) t.results.push_back({key, q.value, q.unit, q.uncertainty, step});
+  };
+  put(view.results, std::nullopt);
+  for (const auto& s : view.steps) {
+    put(s.results, s.step);
+    for (Eigen::Index i = 0; i < s.laserPhasors.size(); ++i) {
+      const std::string key = "laser_" + std::to_string(i + 1);
+      t.results.push_back({key + "_amplitude", std::abs(s.laserPhasors(i)), "m", 0.0, s.step});
+      t.results.push_back({key + "_phase", std::arg(s.laserPhasors(i)), "rad", 0.0, s.step});
+    }
+  }
+  return store.addRigTest(t);
 }
 
 }  // namespace mozzi::devices::rigtests

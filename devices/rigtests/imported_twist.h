@@ -24,4 +24,15 @@ core::Result<StiffnessTestView> staticViewFromCsv(const core::stiffness::PlateCs
 core::Result<StiffnessTestView> dynamicViewFromCsv(const core::stiffness::PlateCsv& csv, const std::string& name,
                                                    std::string* note = nullptr);
 
+// Keeps an imported static or dynamic view in the project as a rig test of
+// `specimenId`, so the report, the Stiffness page and the CLI see it: a rig
+// set-up (rig kind "imported-csv", driver "csv", the source file in its
+// parameters) holding the plate geometry as readStiffnessTest reads it, and a
+// complete test named after the view (made unique within the specimen)
+// holding its results (whole-test for static, per step for dynamic: the
+// frequency, the axis, a_tw, k_lat and k_tw where known, the laser phasors).
+// Returns the test's id. Errors: those of the store.
+core::Result<std::int64_t> storeImportedTest(core::io::ProjectStore& store, std::int64_t specimenId,
+                                             const StiffnessTestView& view, const std::string& sourcePath);
+
 }  // namespace mozzi::devices::rigtests

@@ -25,6 +25,7 @@
 #include "core/io/project_store.h"
 #include "core/stiffness/silhouettes.h"
 #include "core/stiffness/twist_geometry.h"
+#include "devices/rigtests/imported_twist.h"
 #include "devices/rigtests/stiffness_results.h"
 #include "views/plots/interactive_plot.h"
 #include "views/scene/plate_sketch.h"
@@ -234,6 +235,7 @@ void TwistAxesPage::buildUi() {
     if (!filling_) loadTests();
   });
   connect(import_, &TwistCsvImport::message, this, &TwistAxesPage::message);
+  connect(import_, &TwistCsvImport::keepRequested, this, &TwistAxesPage::keepImported);
   // The axes are lines across the view: re-clipped whenever the view moves.
   auto queueClip = [this] {
     if (clipQueued_) return;
@@ -367,6 +369,49 @@ void TwistAxesPage::showImported(int index) {
     filling_ = false;
   }
   loadTests();
+}
+
+bool TwistAxesPage::keepImported() {
+  core::io::ProjectStore* store = model_->store();
+  if (!store) {
+    setStatus(tr("Open a project to keep the imported tests in."), true);
+    return false;
+  }
+  qint64 specimen = specimen_->currentData().toLongLong();
+  std::optional<qint64> kept[2];
+  QStringList names;
+  QComboBox* boxes[2] = {static_, dynamic_};
+  for (int k = 0; k < 2; ++k) {
+    const qint64 id = boxes[k]->currentData().toLongLong();
+    if (id > 0) kept[k] = id;
+    const TwistCsvImport::File* f = id < 0 ? import_->file(static_cast<int>(-id - 1)) : nullptr;
+    if (!f || !f->view) continue;
+    if (specimen == 0) {
+      auto made =
+          store->addSpecimen("imported twist tests", "imported", "plate CSV files imported on the Twist Axes page");
+      if (!made) {
+        setStatus(tr("Cannot add a specimen: %1").arg(qs(made.error().describe())), true);
+        return false;
+      }
+      specimen = *made;
+      model_->notifyChanged(RecordKind::Specimen, specimen);
+    }
+    auto r = rt::storeImportedTest(*store, specimen, *f->view, f->path.toStdString());
+    if (!r) {
+      setStatus(tr("Cannot keep %1: %2").arg(f->name, qs(r.error().describe())), true);
+      return false;
+    }
+    kept[k] = *r;
+    names << f->name;
+  }
+  if (names.isEmpty()) {
+    setStatus(tr("Choose an imported static or dynamic test to keep."), true);
+    return false;
+  }
+  model_->notifyChanged(RecordKind::RigTest);
+  selectTests(kept[0], kept[1]);
+  setStatus(tr("Kept in the project: %1").arg(names.join(QStringLiteral(", "))));
+  return true;
 }
 
 bool TwistAxesPage::selectTests(std::optional<qint64> staticTest, std::optional<qint64> dynamicTest) {

@@ -100,6 +100,14 @@ class TwistAxesPage : public QWidget {
   void setStatus(const QString& text, bool error = false);
   void addImportedTests();
   void showImported(int index);
+
+ public:
+  // Stores the imported static and dynamic tests shown as rig tests of the
+  // chosen specimen (a new one when none is chosen) and shows them; false
+  // with the reason in the status line when nothing could be stored.
+  bool keepImported();
+
+ private:
   QwtPlotMarker* label(const QString& text, const QColor& colour);
 
   ProjectModel* model_;

@@ -44,6 +44,11 @@ TwistCsvImport::TwistCsvImport(QWidget* parent) : QGroupBox(parent) {
   row->addWidget(kindLabel_);
   row->addWidget(kind_, 1);
   layout->addLayout(row);
+  keep_ = new QPushButton;
+  keep_->setObjectName(QStringLiteral("keepImported"));
+  keep_->setEnabled(false);
+  layout->addWidget(keep_);
+  connect(keep_, &QPushButton::clicked, this, &TwistCsvImport::keepRequested);
 
   auto* form = new QFormLayout;
   type_ = new QComboBox;
@@ -114,6 +119,10 @@ void TwistCsvImport::retranslate() {
   open_->setText(tr("Open CSV…"));
   open_->setToolTip(tr("Read a plate CSV as mozzi-cli twist static, dynamic or modal reads it"));
   kindLabel_->setText(tr("as"));
+  keep_->setText(tr("Keep imported tests in the project"));
+  keep_->setToolTip(
+      tr("Store the imported static and dynamic tests shown as rig tests of the specimen (a new "
+         "specimen when none is chosen)"));
   const QString kinds[] = {tr("kind from the columns"), tr("static (force, displacements)"),
                            tr("dynamic (amplitude, phase)"), tr("modal (FRF Re, Im)")};
   for (int i = 0; i < 4; ++i) kind_->setItemText(i, kinds[i]);
@@ -191,6 +200,7 @@ std::optional<QString> TwistCsvImport::openFile(const QString& path, std::option
   } else {
     files_[static_cast<std::size_t>(index)] = std::move(f);
   }
+  for (const auto& file : files_) keep_->setEnabled(keep_->isEnabled() || file.view.has_value());
   showError(note.empty() ? QString() : tr("Some frequencies of %1 give no axis: %2").arg(path, qs(note)));
   if (*kind == st::PlateCsvKind::Modal) {
     modalIndex_ = index;

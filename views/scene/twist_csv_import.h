@@ -7,8 +7,8 @@
 // imported_twist.h); a modal file (hammer FRFs of the plate's accelerometers,
 // thesis §1.4) gives the modal twist axes at the bending and torsion modes
 // (§1.7), at frequencies the user sets, first guessed from the two highest
-// peaks of the summed FRFs. Imported files stay for the page's life; they are
-// not written to the project.
+// peaks of the summed FRFs. Imported files stay for the page's life; "Keep in
+// project" asks the page to store the imported tests it shows as rig tests.
 
 #include <QGroupBox>
 #include <QString>
@@ -65,12 +65,15 @@ class TwistCsvImport : public QGroupBox {
   QDoubleSpinBox* torsionSpin() const { return torsionHz_; }
   QComboBox* kindBox() const { return kind_; }
   QComboBox* typeBox() const { return type_; }
+  QPushButton* keepButton() const { return keep_; }
   QString modalText() const;
   QString errorText() const;
 
  signals:
   void imported(int index);
   void modalChanged();
+  // "Keep in project" was pressed (the page stores the imported tests it shows).
+  void keepRequested();
   void message(const QString& text);
 
  protected:
@@ -85,6 +88,7 @@ class TwistCsvImport : public QGroupBox {
   int modalIndex_ = -1;
   ModalAxes modal_;
   QPushButton* open_ = nullptr;
+  QPushButton* keep_ = nullptr;
   QComboBox* kind_ = nullptr;
   QComboBox* type_ = nullptr;
   QLabel* kindLabel_ = nullptr;

@@ -41,7 +41,7 @@ struct Screw {
 };
 
 // A frame-like cage: four nodes at z = 0 and four at z = 0.4 m, joined by lines.
-const Vector3 kNodes[] = {{0, 0, 0},       {0.3, 0, 0},      {0.3, 0.2, 0},   {0, 0.2, 0},
+const Vector3 kNodes[] = {{0, 0, 0},         {0.3, 0, 0},       {0.3, 0.2, 0},     {0, 0.2, 0},
                           {0.05, 0.02, 0.4}, {0.25, 0.02, 0.4}, {0.25, 0.18, 0.4}, {0.05, 0.18, 0.4}};
 
 io::StoredMesh cage() {
@@ -128,7 +128,8 @@ class ModeScrewAxisTest : public QObject {
     QTRY_VERIFY(view->scene()->isReady());
     QVERIFY(view->showShape(0));
     auto* layer = view->screwAxisLayer();
-    for (const auto& [index, screw, name] : {std::tuple<int, Screw, const char*>{0, bend, "mode 1"}, {1, tors, "mode 2"}}) {
+    for (const auto& [index, screw, name] :
+         {std::tuple<int, Screw, const char*>{0, bend, "mode 1"}, {1, tors, "mode 2"}}) {
       QVERIFY(view->showShape(index));
       QVERIFY2(view->screwAxis().has_value(), qPrintable(view->screwAxisProblem()));
       QVERIFY(layer->hasAxis() && layer->isVisible());
@@ -159,7 +160,8 @@ class ModeScrewAxisTest : public QObject {
     QVERIFY(!view->screwAxis());
     QVERIFY(!layer->hasAxis());
     QVERIFY2(view->screwAxisProblem().contains(QStringLiteral("unseen")), qPrintable(view->screwAxisProblem()));
-    QVERIFY(view->findChild<QLabel*>(QStringLiteral("animationInfo"))->text().contains(QStringLiteral("No Mozzi axis")));
+    QVERIFY(
+        view->findChild<QLabel*>(QStringLiteral("animationInfo"))->text().contains(QStringLiteral("No Mozzi axis")));
   }
 };
 

@@ -14,6 +14,7 @@
 //    modalTwistAxis gives (1e-9, one pixel), and these lie near the modes'
 //    own axes (the other mode adds a few per cent in quadrature; see the
 //    tolerance below);
+//  - kept in the project, the files become rig tests drawn the same way;
 //  - a bad file is refused with the file and line named.
 // Screenshot: twist_axes_import (and @2x under QT_SCALE_FACTOR=2).
 #include <qwt_plot.h>
@@ -21,6 +22,7 @@
 #include <qwt_scale_map.h>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QPushButton>
 #include <QSlider>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -29,6 +31,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/io/project_store.h"
 #include "core/stiffness/dynamic_twist.h"
 #include "core/stiffness/plate_csv.h"
 #include "views/common/job_runner.h"
@@ -237,6 +240,24 @@ class TwistAxesImportTest : public QObject {
     QVERIFY2(page.statusText().isEmpty(), qPrintable(page.statusText()));
     page.frequencySlider()->setValue(1);
     QVERIFY(mozzi::views::test::saveShot(page, QStringLiteral("twist_axes_import"), 200));
+
+    // Kept in the project: stored rig tests of a new specimen, read back from
+    // the store and drawn as the imported files were.
+    QVERIFY(import->keepButton()->isEnabled());
+    QVERIFY2(page.keepImported(), qPrintable(page.statusText()));
+    const qint64 keptStatic = page.staticBox()->currentData().toLongLong();
+    const qint64 keptDynamic = page.dynamicBox()->currentData().toLongLong();
+    QVERIFY(keptStatic > 0 && keptDynamic > 0);
+    QCOMPARE(page.specimenBox()->currentText(), QStringLiteral("imported twist tests"));
+    auto stored = model_.store()->rigTest(keptStatic);
+    QVERIFY(stored.ok());
+    QCOMPARE(QString::fromStdString(stored->name), QStringLiteral("ramp.csv"));
+    QTest::qWait(50);
+    checkDrawn(page, page.staticAxisCurve(), statics.q, statics.beta, "kept static");
+    QCOMPARE(page.frequencySlider()->maximum(), 2);
+    page.frequencySlider()->setValue(2);
+    checkDrawn(page, page.dynamicAxisCurve(), sweep[2].second.q, sweep[2].second.beta, "kept dynamic");
+    QVERIFY(page.statusText().startsWith(QStringLiteral("Kept in the project")));
   }
 
   void aBadFileIsNamedWithItsLine() {
@@ -249,7 +270,8 @@ class TwistAxesImportTest : public QObject {
     QVERIFY(err);
     QVERIFY2(err->contains(QStringLiteral("bad.csv:7")) && err->contains(QStringLiteral("column 3")), qPrintable(*err));
     QCOMPARE(import->errorText(), *err);
-    QCOMPARE(page.staticBox()->count(), 1);  // only "(none)": nothing imported
+    for (int i = 0; i < page.staticBox()->count(); ++i)  // nothing imported
+      QVERIFY(!page.staticBox()->itemText(i).endsWith(QStringLiteral("(imported)")));
     // Dynamic or modal alike and no header: the kind must be chosen.
     const auto both = write(dir_, QStringLiteral("both.csv"), std::string(kPlate) + "5,1,0,1,0,1,0,1,0\n");
     err = import->openFile(QString::fromStdString(both));
