@@ -181,6 +181,13 @@ ModeAnimationView::ModeAnimationView(QWidget* parent) : QWidget(parent) {
   layout->addWidget(splitter, 1);
   screwLayer_ = std::make_unique<ScrewAxisLayer>(scene_);
 
+  wireControls();
+  retranslate();
+}
+
+ModeAnimationView::~ModeAnimationView() = default;
+
+void ModeAnimationView::wireControls() {
   timer_ = new QTimer(this);
   timer_->setSingleShot(true);
   connect(timer_, &QTimer::timeout, this, &ModeAnimationView::tick);
@@ -227,10 +234,7 @@ ModeAnimationView::ModeAnimationView(QWidget* parent) : QWidget(parent) {
                                                       tr("Animated GIF (*.gif);;PNG sequence (*.png)"));
     if (!path.isEmpty()) exportAnimation(path, 25);
   });
-  retranslate();
 }
-
-ModeAnimationView::~ModeAnimationView() = default;
 
 void ModeAnimationView::setMesh(const core::io::MeshDocument& mesh) {
   pause();

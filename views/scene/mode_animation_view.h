@@ -128,6 +128,7 @@ class ModeAnimationView : public QWidget {
   void retranslate();
   void report(const QString& text);
   void fillCombos();
+  void wireControls();
   void updateScrewAxis(const Shape& shape);
 
   core::io::MeshDocument mesh_;
