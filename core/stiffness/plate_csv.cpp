@@ -52,6 +52,14 @@ Result<void> checkRange(double v, double most, const std::string& what, const st
                    where);
 }
 
+// The twist files need the plate's sensors (the readers ask for them, a
+// PlateCsv built otherwise may lack them).
+Result<void> needSensors(const PlateCsv& csv) {
+  if (csv.sensors.size() >= 3) return {};
+  return makeError(ErrorCode::ParseError,
+                   "at least 3 'sensor,u,v' rows are needed, found " + std::to_string(csv.sensors.size()), csv.source);
+}
+
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return s;
@@ -177,6 +185,7 @@ Result<PlateCsvKind> guessPlateCsvKind(const PlateCsv& csv) {
 }
 
 Result<StaticTwistResult> staticTwistFromCsv(const PlateCsv& csv, const StaticTestOptions& options) {
+  if (auto r = needSensors(csv); !r) return r.error();
   if (!csv.hasLoad) return makeError(ErrorCode::ParseError, "no 'load,u,v' row", csv.source);
   const std::size_t ns = csv.sensors.size();
   if (csv.rows.empty()) return makeError(ErrorCode::ParseError, "no data rows", csv.source);
@@ -199,6 +208,7 @@ Result<StaticTwistResult> staticTwistFromCsv(const PlateCsv& csv, const StaticTe
 }
 
 Result<std::vector<SweepPoint>> sweepFromCsv(const PlateCsv& csv) {
+  if (auto r = needSensors(csv); !r) return r.error();
   const std::size_t ns = csv.sensors.size();
   if (csv.rows.empty()) return makeError(ErrorCode::ParseError, "no data rows", csv.source);
   const std::size_t nc = csv.rows.front().size();
@@ -227,6 +237,7 @@ Result<std::vector<SweepPoint>> sweepFromCsv(const PlateCsv& csv) {
 }
 
 Result<FrfMatrix> modalFrfFromCsv(const PlateCsv& csv, FrfType type) {
+  if (auto r = needSensors(csv); !r) return r.error();
   const std::size_t ns = csv.sensors.size();
   if (csv.rows.empty()) return makeError(ErrorCode::ParseError, "no data rows", csv.source);
   if (csv.rows.front().size() != 1 + 2 * ns) {

@@ -47,6 +47,17 @@ TEST(PlateCsv, BadRowsNameFileAndLine) {
   check("sensor,0,0\nsensor,1,0\n1,2,3\n", "bad.csv", "at least 3 'sensor,u,v' rows");
   check(kGeometry, "bad.csv", "no data rows");
   EXPECT_FALSE(readPlateCsv("/nonexistent/plate.csv", true).ok());
+  // Read without asking for sensors (as `mozzi` does), a file has none for the twist readers.
+  const auto bare = parsePlateCsv("5,1,0,1,0,1,0\n", "bare.csv", false);
+  ASSERT_TRUE(bare.ok());
+  const auto sweep = sweepFromCsv(*bare);
+  const auto modal = modalFrfFromCsv(*bare, FrfType::Receptance);
+  const auto statics = staticTwistFromCsv(*bare);
+  ASSERT_FALSE(sweep.ok() || modal.ok() || statics.ok());
+  for (const Error& e : {sweep.error(), modal.error(), statics.error()}) {
+    EXPECT_EQ(e.where, "bare.csv");
+    EXPECT_NE(e.message.find("at least 3 'sensor,u,v' rows"), std::string::npos) << e.describe();
+  }
 }
 
 TEST(PlateCsv, KindFromColumnsAndHeader) {
