@@ -87,6 +87,7 @@ TwistCsvImport::TwistCsvImport(QWidget* parent) : QGroupBox(parent) {
 
   for (int i = 0; i < 4; ++i) kind_->addItem(QString());
   for (int i = 0; i < 3; ++i) type_->addItem(QString());
+  type_->setCurrentIndex(static_cast<int>(core::FrfType::Accelerance));  // as `twist modal` without --type
   retranslate();
 
   connect(open_, &QPushButton::clicked, this, [this] {
@@ -130,7 +131,6 @@ void TwistCsvImport::retranslate() {
   // Index order of core::FrfType: receptance, mobility, accelerance.
   const QString types[] = {tr("receptance"), tr("mobility"), tr("accelerance")};
   for (int i = 0; i < 3; ++i) type_->setItemText(i, types[i]);
-  if (type_->currentIndex() < 0) type_->setCurrentIndex(static_cast<int>(core::FrfType::Accelerance));
   bendingLabel_->setText(tr("Bending mode"));
   torsionLabel_->setText(tr("Torsion mode"));
   bendingHz_->setToolTip(tr("Frequency of the bending mode: the modal twist axis there is drawn (§1.4, §1.7)"));

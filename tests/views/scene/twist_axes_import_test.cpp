@@ -197,6 +197,8 @@ class TwistAxesImportTest : public QObject {
       }
       m << "\n";
     }
+    // Accelerance by default, as `mozzi-cli twist modal` without --type; this file holds receptances.
+    QCOMPARE(import->typeBox()->currentIndex(), static_cast<int>(mozzi::core::FrfType::Accelerance));
     import->typeBox()->setCurrentIndex(static_cast<int>(mozzi::core::FrfType::Receptance));
     const auto modalPath = write(dir_, QStringLiteral("hammer.csv"), m.str());
     err = import->openFile(QString::fromStdString(modalPath));
