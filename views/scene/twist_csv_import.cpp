@@ -50,7 +50,10 @@ TwistCsvImport::TwistCsvImport(QWidget* parent) : QGroupBox(parent) {
   layout->addWidget(keep_);
   connect(keep_, &QPushButton::clicked, this, &TwistCsvImport::keepRequested);
 
-  auto* form = new QFormLayout;
+  // The modal file's controls, shown once a modal file is open.
+  modalBox_ = new QWidget;
+  auto* form = new QFormLayout(modalBox_);
+  form->setContentsMargins(0, 0, 0, 0);
   type_ = new QComboBox;
   type_->setObjectName(QStringLiteral("frfType"));
   typeLabel_ = new QLabel;
@@ -71,7 +74,8 @@ TwistCsvImport::TwistCsvImport(QWidget* parent) : QGroupBox(parent) {
   torsionLabel_ = new QLabel;
   form->addRow(bendingLabel_, bendingHz_);
   form->addRow(torsionLabel_, torsionHz_);
-  layout->addLayout(form);
+  layout->addWidget(modalBox_);
+  modalBox_->hide();
   modalInfo_ = new QLabel;
   modalInfo_->setObjectName(QStringLiteral("modalInfo"));
   modalInfo_->setWordWrap(true);
@@ -109,8 +113,7 @@ TwistCsvImport::TwistCsvImport(QWidget* parent) : QGroupBox(parent) {
     File& f = files_[static_cast<std::size_t>(modalIndex_)];
     auto frf = st::modalFrfFromCsv(f.csv, static_cast<core::FrfType>(type_->currentIndex()));
     if (frf) f.frf = std::move(frf).value();
-    computeModal();
-    emit modalChanged();
+    guessModes();  // the peaks of the summed FRFs move with the type
   });
 }
 
@@ -137,6 +140,7 @@ void TwistCsvImport::retranslate() {
   torsionHz_->setToolTip(tr("Frequency of the torsion mode: the modal twist axis there is drawn (§1.4, §1.7)"));
   filling_ = false;
   modalInfo_->setText(modalText());
+  modalInfo_->setVisible(!modalInfo_->text().isEmpty());
 }
 
 void TwistCsvImport::changeEvent(QEvent* event) {
@@ -204,20 +208,28 @@ std::optional<QString> TwistCsvImport::openFile(const QString& path, std::option
   showError(note.empty() ? QString() : tr("Some frequencies of %1 give no axis: %2").arg(path, qs(note)));
   if (*kind == st::PlateCsvKind::Modal) {
     modalIndex_ = index;
-    const File& m = files_[static_cast<std::size_t>(index)];
-    const double lo = m.frf->frequencyHz(0), hi = m.frf->frequencyHz(m.frf->lineCount() - 1);
-    std::vector<double> peaks = st::frfPeakFrequencies(*m.frf, 2);
-    while (peaks.size() < 2) peaks.push_back(peaks.empty() ? lo : hi);
-    filling_ = true;
-    for (QDoubleSpinBox* s : {bendingHz_, torsionHz_}) {
-      s->setRange(lo, hi);
-      s->setEnabled(true);
-    }
-    filling_ = false;
-    setModeFrequencies(peaks[0], peaks[1]);
+    modalBox_->show();
+    guessModes();
   }
   emit imported(index);
   return std::nullopt;
+}
+
+// The bending and torsion frequencies at the two highest peaks of the modal
+// file's summed FRFs (the band's ends when it has fewer).
+void TwistCsvImport::guessModes() {
+  const File* m = file(modalIndex_);
+  if (!m || !m->frf) return;
+  const double lo = m->frf->frequencyHz(0), hi = m->frf->frequencyHz(m->frf->lineCount() - 1);
+  std::vector<double> peaks = st::frfPeakFrequencies(*m->frf, 2);
+  while (peaks.size() < 2) peaks.push_back(peaks.empty() ? lo : hi);
+  filling_ = true;
+  for (QDoubleSpinBox* s : {bendingHz_, torsionHz_}) {
+    s->setRange(lo, hi);
+    s->setEnabled(true);
+  }
+  filling_ = false;
+  setModeFrequencies(peaks[0], peaks[1]);
 }
 
 void TwistCsvImport::setModeFrequencies(double bendingHz, double torsionHz) {
@@ -250,6 +262,7 @@ void TwistCsvImport::computeModal() {
     modal_.problems = problems.join(QStringLiteral("; "));
   }
   modalInfo_->setText(modalText());
+  modalInfo_->setVisible(!modalInfo_->text().isEmpty());
 }
 
 QString TwistCsvImport::modalText() const {

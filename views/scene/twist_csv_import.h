@@ -7,7 +7,7 @@
 // imported_twist.h); a modal file (hammer FRFs of the plate's accelerometers,
 // thesis §1.4) gives the modal twist axes at the bending and torsion modes
 // (§1.7), at frequencies the user sets, first guessed from the two highest
-// peaks of the summed FRFs. Imported files stay for the page's life; "Keep in
+// peaks of the summed FRFs (again when the FRF type is changed). Imported files stay for the page's life; "Keep in
 // project" asks the page to store the imported tests it shows as rig tests.
 
 #include <QGroupBox>
@@ -82,6 +82,7 @@ class TwistCsvImport : public QGroupBox {
  private:
   void retranslate();
   void computeModal();
+  void guessModes();
   void showError(const QString& text);
 
   std::vector<File> files_;
@@ -97,6 +98,7 @@ class TwistCsvImport : public QGroupBox {
   QLabel* torsionLabel_ = nullptr;
   QDoubleSpinBox* bendingHz_ = nullptr;
   QDoubleSpinBox* torsionHz_ = nullptr;
+  QWidget* modalBox_ = nullptr;
   QLabel* modalInfo_ = nullptr;
   QLabel* error_ = nullptr;
   bool filling_ = false;

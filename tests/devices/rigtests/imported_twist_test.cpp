@@ -76,9 +76,9 @@ TEST(ImportedTwist, StaticAndDynamicViewsKeepTheirAxesInAProject) {
     EXPECT_NEAR(sweep->steps[static_cast<std::size_t>(k)].axis->beta, betas[k], 1e-9);
   }
 
-  const auto path = (std::filesystem::temp_directory_path() /
-                     ("mozzi_imported_twist_" + std::to_string(::getpid()) + ".mozzi"))
-                        .string();
+  const auto path =
+      (std::filesystem::temp_directory_path() / ("mozzi_imported_twist_" + std::to_string(::getpid()) + ".mozzi"))
+          .string();
   std::filesystem::remove(path);
   auto store = core::io::ProjectStore::create(path, "test");
   ASSERT_TRUE(store.ok()) << store.error().describe();

@@ -197,12 +197,15 @@ class TwistAxesImportTest : public QObject {
       }
       m << "\n";
     }
-    // Accelerance by default, as `mozzi-cli twist modal` without --type; this file holds receptances.
-    QCOMPARE(import->typeBox()->currentIndex(), static_cast<int>(mozzi::core::FrfType::Accelerance));
-    import->typeBox()->setCurrentIndex(static_cast<int>(mozzi::core::FrfType::Receptance));
     const auto modalPath = write(dir_, QStringLiteral("hammer.csv"), m.str());
+    QVERIFY(!import->typeBox()->isVisible());  // the modal controls appear with a modal file
     err = import->openFile(QString::fromStdString(modalPath));
     QVERIFY2(!err, qPrintable(err.value_or(QString())));
+    QVERIFY(import->typeBox()->isVisible());
+    // Accelerance by default, as `mozzi-cli twist modal` without --type; this
+    // file holds receptances: the user says so, and the peaks are found again.
+    QCOMPARE(import->typeBox()->currentIndex(), static_cast<int>(mozzi::core::FrfType::Accelerance));
+    import->typeBox()->setCurrentIndex(static_cast<int>(mozzi::core::FrfType::Receptance));
     QTest::qWait(50);
     // The peaks the page guesses are the modes, to a line.
     QVERIFY2(std::abs(import->bendingSpin()->value() - fb) <= 0.5,
