@@ -131,8 +131,7 @@ Result<StabilityRecord> stabilityRecordFromJson(const std::string& text) {
   if (!vehicle) return vehicle.error();
   if (!model) return model.error();
   if (*vehicle != "bicycle" && *vehicle != "motorcycle")
-    return makeError(ErrorCode::InvalidArgument, "vehicle '" + *vehicle + "' is neither bicycle nor motorcycle",
-                     where);
+    return makeError(ErrorCode::InvalidArgument, "vehicle '" + *vehicle + "' is neither bicycle nor motorcycle", where);
   r.vehicle = *vehicle;
   r.model = *model;
   r.fork = optionalText(j, "fork");

@@ -32,11 +32,11 @@ namespace mozzi::core::stability {
 inline constexpr const char* kStabilityAnalysisKind = "stability";
 
 struct StabilityRecord {
-  std::string vehicle;         // "bicycle" or "motorcycle"
-  std::string model;           // what was swept, as `mozzi-cli stability` names it
-  std::string fork;            // "rigid", "bending", "torsion", "model 1", "model 2", "model 3"
-  std::string forkSource;      // "thesis", "kept analysis N", "command line"
-  std::string parametersFile;  // empty: the built-in parameters
+  std::string vehicle;                      // "bicycle" or "motorcycle"
+  std::string model;                        // what was swept, as `mozzi-cli stability` names it
+  std::string fork;                         // "rigid", "bending", "torsion", "model 1", "model 2", "model 3"
+  std::string forkSource;                   // "thesis", "kept analysis N", "command line"
+  std::string parametersFile;               // empty: the built-in parameters
   double from = 0.0, to = 0.0, step = 0.0;  // the requested speed grid [m/s]
   StabilitySweep sweep;
   std::optional<StabilitySweep> rigidSweep;  // the same vehicle with a rigid fork, when compared

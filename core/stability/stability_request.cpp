@@ -65,8 +65,8 @@ Result<StabilitySystem> bicycleSystemOf(const StabilityRequest& r, bool rigid, s
     return makeError(ErrorCode::InvalidArgument, "'" + r.fork + "' is not rigid, bending or torsion", "bicycle fork");
   const bool bending = r.fork == "bending";
   if (r.kept && ((bending && !r.kept->bending) || (!bending && !r.kept->torsion)))
-    return makeError(ErrorCode::InvalidArgument,
-                     "the kept fork '" + r.kept->name + "' has no " + r.fork + " stiffness", "fork");
+    return makeError(ErrorCode::InvalidArgument, "the kept fork '" + r.kept->name + "' has no " + r.fork + " stiffness",
+                     "fork");
   auto m = bending ? forkBendingModel(p, r.kept ? *r.kept->bending : thesisSteelForkBending())
                    : forkTorsionModel(p, r.kept ? *r.kept->torsion : thesisSteelForkTorsion());
   if (!m) return m.error();

@@ -51,8 +51,10 @@ const std::vector<std::pair<const char*, double WheelchairParameters::*>>& chair
 
 const std::vector<std::pair<const char*, double WheelchairStudy::*>>& studyNumbers() {
   static const std::vector<std::pair<const char*, double WheelchairStudy::*>> fields = {
-      {"speed_m_s", &WheelchairStudy::speed},        {"torque_nm", &WheelchairStudy::torque},
-      {"frequency_hz", &WheelchairStudy::frequency}, {"duration_s", &WheelchairStudy::duration},
+      {"speed_m_s", &WheelchairStudy::speed},
+      {"torque_nm", &WheelchairStudy::torque},
+      {"frequency_hz", &WheelchairStudy::frequency},
+      {"duration_s", &WheelchairStudy::duration},
       {"ramp_s", &WheelchairStudy::ramp}};
   return fields;
 }

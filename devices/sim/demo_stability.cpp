@@ -16,7 +16,9 @@ core::Result<void> addDemoStability(core::io::ProjectStore& store) {
   // Bicycle 0-10 m/s every 0.05 m/s (Meijaard et al. 2007 Figure 3, thesis
   // Figure 51); motorcycle 1-60 m/s every 0.25 m/s (thesis Figure 33).
   const Sweep sweeps[] = {
-      {"Benchmark bicycle, rigid fork", "Steel bicycle fork", {"bicycle", "rigid", std::nullopt, "", 0.0, 10.0, 0.05, false}},
+      {"Benchmark bicycle, rigid fork",
+       "Steel bicycle fork",
+       {"bicycle", "rigid", std::nullopt, "", 0.0, 10.0, 0.05, false}},
       {"Benchmark bicycle, steel fork in bending against the rigid fork",
        "Steel bicycle fork",
        {"bicycle", "bending", std::nullopt, "", 0.0, 10.0, 0.05, true}},

@@ -26,7 +26,7 @@ QwtPlot* stabilityFigurePlot(const core::report::Figure& figure, const core::io:
     if (!stored) return fail(stored.error());
     auto page = std::make_unique<WheelchairPage>(nullptr, nullptr);
     page->resize(1280, 800);
-    page->showRecord(stored->record);
+    page->showRecord(std::move(stored->record));
     QwtPlot* plot = page->trajectoryPlot();
     owner = std::move(page);
     return plot;
@@ -41,7 +41,7 @@ QwtPlot* stabilityFigurePlot(const core::report::Figure& figure, const core::io:
   if (!stored) return fail(stored.error());
   auto page = std::make_unique<StabilityPage>(nullptr, nullptr);
   page->resize(1280, 800);
-  page->showRecord(stored->record);
+  page->showRecord(std::move(stored->record));
   QwtPlot* plot = figure.view == "stability-real" ? page->realPlot() : page->imaginaryPlot();
   owner = std::move(page);
   return plot;

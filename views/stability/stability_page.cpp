@@ -46,6 +46,9 @@ QColor modeColour(const std::string& name) {
 
 using Model = StabilityPage::Model;
 
+// The fork of each Model entry, as core::stability::StabilityRequest names it.
+const char* const kForks[] = {"rigid", "bending", "torsion", "rigid", "model 1", "model 2", "model 3"};
+
 // The workbench's plot (grid, cursor, zoom, pan, export).
 InteractivePlot* makePlot(QWidget* parent, const char* objectName) {
   auto* plot = new InteractivePlot(parent);
@@ -242,10 +245,9 @@ void StabilityPage::setSpeedRange(double fromMps, double toMps, double stepMps) 
 
 st::StabilityRequest StabilityPage::request() const {
   const Model model = static_cast<Model>(model_->currentIndex());
-  static const char* const forks[] = {"rigid", "bending", "torsion", "rigid", "model 1", "model 2", "model 3"};
   st::StabilityRequest r;
   r.vehicle = isMotorcycle(model) ? "motorcycle" : "bicycle";
-  r.fork = forks[static_cast<int>(model)];
+  r.fork = kForks[static_cast<int>(model)];
   r.parametersFile = parameterFile_.toStdString();
   r.from = from_->value();
   r.to = to_->value();
@@ -343,12 +345,30 @@ bool StabilityPage::showStored(qint64 analysisId) {
   }
   const int at = stored_->findData(QVariant::fromValue<qint64>(analysisId));
   if (at >= 0) stored_->setCurrentIndex(at);
-  showRecord(stored->record);
+  showRecord(std::move(stored->record));
   return true;
 }
 
-void StabilityPage::showRecord(const st::StabilityRecord& record) {
-  present(Sweeps{record, {}}, false, true);
+void StabilityPage::showRecord(st::StabilityRecord record) {
+  // The controls say what the record is: its vehicle and fork, its speeds
+  // and parameter file (a kept fork's choice stays as it is).
+  for (int m = 0; m < 7; ++m)
+    if (isMotorcycle(static_cast<Model>(m)) == (record.vehicle == "motorcycle") && record.fork == kForks[m]) {
+      setModel(static_cast<Model>(m));
+      break;
+    }
+  if (record.step > 0.0) setSpeedRange(record.from, record.to, record.step);
+  setParameterFile(QString::fromStdString(record.parametersFile));
+  compare_->setChecked(record.rigidSweep.has_value());
+  present(Sweeps{std::move(record), {}}, false, true);
+}
+
+std::optional<st::StabilityRecord> StabilityPage::record() const {
+  if (!record_ || !sweep_) return std::nullopt;
+  st::StabilityRecord r = *record_;
+  r.sweep = *sweep_;
+  r.rigidSweep = rigidSweep_;
+  return r;
 }
 
 void StabilityPage::present(core::Result<Sweeps> result, bool keepIt, bool fromStore) {
@@ -370,9 +390,13 @@ void StabilityPage::present(core::Result<Sweeps> result, bool keepIt, bool fromS
     return;
   }
   const QString kept = keepIt ? keep(*result) : QString();
+  // The sweeps moved, not copied (10,000 speeds redraw within a frame); the
+  // rest of the record kept beside them.
+  sweep_ = std::move(result->record.sweep);
+  rigidSweep_ = std::move(result->record.rigidSweep);
+  result->record.sweep = {};
+  result->record.rigidSweep.reset();
   record_ = std::move(result->record);
-  sweep_ = record_->sweep;
-  rigidSweep_ = record_->rigidSweep;
   auto* zero = new QwtPlotMarker;
   zero->setLineStyle(QwtPlotMarker::HLine);
   zero->setYValue(0.0);
@@ -426,6 +450,8 @@ void StabilityPage::drawSweep(const st::StabilitySweep& sweep, bool rigid, QStri
       auto* c = new QwtPlotCurve(rigid ? tr("%1 (rigid fork)").arg(it.key()) : it.key());
       const QColor colour = modeColour(it.key().toStdString());
       c->setStyle(QwtPlotCurve::NoCurve);
+      // Points on the same pixel drawn once: 10,000 speeds redraw within a frame.
+      c->setPaintAttribute(QwtPlotCurve::FilterPoints, true);
       c->setSymbol(rigid ? new QwtSymbol(QwtSymbol::Ellipse, QBrush(Qt::NoBrush), QPen(colour, 1.0), QSize(6, 6))
                          : new QwtSymbol(QwtSymbol::Ellipse, QBrush(colour), QPen(colour), QSize(4, 4)));
       c->setSamples(it.value());

@@ -82,9 +82,10 @@ class StabilityPage : public QWidget {
   std::vector<qint64> storedResults() const;
   bool showStored(qint64 analysisId);
   // Draws a record (a stored one, or the report's figure).
-  void showRecord(const core::stability::StabilityRecord& record);
+  void showRecord(core::stability::StabilityRecord record);
   qint64 lastStoredId() const { return lastStoredId_; }  // 0: the last sweep was not kept
-  const std::optional<core::stability::StabilityRecord>& record() const { return record_; }
+  // The record shown (a copy: for tests and the log).
+  std::optional<core::stability::StabilityRecord> record() const;
   // For tests and the log.
   const std::optional<core::stability::StabilitySweep>& sweep() const { return sweep_; }
   const std::optional<core::stability::StabilitySweep>& rigidSweep() const { return rigidSweep_; }
@@ -112,7 +113,7 @@ class StabilityPage : public QWidget {
   void drawSweep(const core::stability::StabilitySweep& sweep, bool rigid, QStringList& lines);
 
   JobRunner* jobs_ = nullptr;
-  std::optional<core::stability::StabilityRecord> record_;
+  std::optional<core::stability::StabilityRecord> record_;  // without its sweeps: sweep_, rigidSweep_
   qint64 lastStoredId_ = 0;
   std::optional<core::stability::StabilitySweep> sweep_;
   std::optional<core::stability::StabilitySweep> rigidSweep_;

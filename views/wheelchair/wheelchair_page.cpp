@@ -262,6 +262,23 @@ bool WheelchairPage::showStored(qint64 analysisId) {
 }
 
 void WheelchairPage::showRecord(const st::WheelchairRecord& record) {
+  // The form says what the record is (a value outside the form's range is
+  // clamped and marked there; the plots show the record as kept).
+  const st::WheelchairStudy& s = record.study;
+  (void)form_->setValues({{"manoeuvre", s.manoeuvre},
+                          {"study", s.study},
+                          {"speed", s.speed},
+                          {"torque", s.torque},
+                          {"frequency", s.frequency},
+                          {"duration", s.duration},
+                          {"ramp", s.ramp},
+                          {"chair.mass", s.chair.mass},
+                          {"chair.yaw_inertia", s.chair.yawInertia},
+                          {"chair.rear_axle_behind", s.chair.rearAxleBehindCoM},
+                          {"chair.caster_ahead", s.chair.casterAheadOfCoM},
+                          {"chair.half_track", s.chair.rearHalfTrack},
+                          {"chair.cornering_stiffness", s.chair.rearCorneringStiffness},
+                          {"chair.aligning_stiffness", s.chair.rearAligningStiffness}});
   present(Outcome{record, {}}, false);
 }
 

@@ -108,8 +108,8 @@ TEST(StabilityRecord, BrokenRecordsNameTheKey) {
   auto noVehicle = stabilityRecordFromJson(R"({"model": "m", "sweep": {"speeds": []}})");
   ASSERT_FALSE(noVehicle.ok());
   EXPECT_NE(noVehicle.error().message.find("vehicle"), std::string::npos);
-  auto badMode =
-      stabilityRecordFromJson(R"({"vehicle": "bicycle", "model": "m", "sweep": {"speeds": [{"v": 1, "modes": [{}]}]}})");
+  auto badMode = stabilityRecordFromJson(
+      R"({"vehicle": "bicycle", "model": "m", "sweep": {"speeds": [{"v": 1, "modes": [{}]}]}})");
   ASSERT_FALSE(badMode.ok());
   EXPECT_NE(badMode.error().describe().find("speeds[0]"), std::string::npos) << badMode.error().describe();
   StabilityRequest wrong;
@@ -124,12 +124,12 @@ TEST(StabilityRecord, BuiltInSharpParametersAreTheDataFile) {
   ASSERT_TRUE(file.ok()) << file.error().describe();
   const SharpParameters b = sharp1971Parameters();
   const double SharpParameters::*fields[] = {
-      &SharpParameters::Mf,  &SharpParameters::Mr,  &SharpParameters::Zf,  &SharpParameters::Irx,
-      &SharpParameters::Irz, &SharpParameters::Crxz, &SharpParameters::Ifx, &SharpParameters::Ifz,
-      &SharpParameters::ify, &SharpParameters::iry, &SharpParameters::a,   &SharpParameters::b,
-      &SharpParameters::e,   &SharpParameters::f,   &SharpParameters::h,   &SharpParameters::Rf,
-      &SharpParameters::Rr,  &SharpParameters::t,   &SharpParameters::eps, &SharpParameters::Cf1,
-      &SharpParameters::Cf2, &SharpParameters::Cr1, &SharpParameters::Cr2, &SharpParameters::K,
+      &SharpParameters::Mf,    &SharpParameters::Mr,   &SharpParameters::Zf,  &SharpParameters::Irx,
+      &SharpParameters::Irz,   &SharpParameters::Crxz, &SharpParameters::Ifx, &SharpParameters::Ifz,
+      &SharpParameters::ify,   &SharpParameters::iry,  &SharpParameters::a,   &SharpParameters::b,
+      &SharpParameters::e,     &SharpParameters::f,    &SharpParameters::h,   &SharpParameters::Rf,
+      &SharpParameters::Rr,    &SharpParameters::t,    &SharpParameters::eps, &SharpParameters::Cf1,
+      &SharpParameters::Cf2,   &SharpParameters::Cr1,  &SharpParameters::Cr2, &SharpParameters::K,
       &SharpParameters::sigma, &SharpParameters::g};
   for (auto field : fields) EXPECT_EQ(b.*field, (*file).*field);
 }
@@ -166,10 +166,9 @@ TEST_F(TempProject, WheelchairRunReloadsIdentically) {
     for (std::size_t i = 0; i < rec->runs[r].history.size(); ++i) {
       const auto& x = back->record.runs[r].history[i];
       const auto& y = rec->runs[r].history[i];
-      ASSERT_TRUE(x.t == y.t && x.x == y.x && x.y == y.y && x.psi == y.psi && x.u == y.u && x.v == y.v &&
-                  x.r == y.r && x.deltaRight == y.deltaRight && x.deltaLeft == y.deltaLeft &&
-                  x.slipRight == y.slipRight && x.slipLeft == y.slipLeft && x.torqueRight == y.torqueRight &&
-                  x.torqueLeft == y.torqueLeft)
+      ASSERT_TRUE(x.t == y.t && x.x == y.x && x.y == y.y && x.psi == y.psi && x.u == y.u && x.v == y.v && x.r == y.r &&
+                  x.deltaRight == y.deltaRight && x.deltaLeft == y.deltaLeft && x.slipRight == y.slipRight &&
+                  x.slipLeft == y.slipLeft && x.torqueRight == y.torqueRight && x.torqueLeft == y.torqueLeft)
           << "run " << r << " sample " << i;
     }
   }
