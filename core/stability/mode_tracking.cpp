@@ -217,15 +217,20 @@ Result<StabilitySweep> sweepOnGrid(const StabilitySystem& s, const std::vector<d
     tracks.push_back({{{0, static_cast<int>(i)}}, {}});
     out.points[0].roots[i].track = static_cast<int>(i);
   }
+  struct Cand {
+    double cost;
+    int i, j;
+  };
+  std::vector<Cand> cands;     // reused from speed to speed
+  std::vector<double> curAbs;  // |lambda| of the current roots
   for (size_t k = 1; k < out.points.size(); ++k) {
     auto& prev = out.points[k - 1].roots;
     auto& cur = out.points[k].roots;
-    struct Cand {
-      double cost;
-      int i, j;
-    };
-    std::vector<Cand> cands;
+    cands.clear();
+    curAbs.resize(cur.size());
+    for (size_t j = 0; j < cur.size(); ++j) curAbs[j] = std::abs(cur[j].lambda);
     for (size_t i = 0; i < prev.size(); ++i) {
+      const double prevAbs = std::abs(prev[i].lambda);
       const Track& tr = tracks[prev[i].track];
       Complex predicted = prev[i].lambda;
       if (tr.samples.size() >= 2 && tr.samples[tr.samples.size() - 2].first == static_cast<int>(k) - 2) {
@@ -235,7 +240,7 @@ Result<StabilitySweep> sweepOnGrid(const StabilitySystem& s, const std::vector<d
         predicted = prev[i].lambda + (prev[i].lambda - older) * (h1 / h0);
       }
       for (size_t j = 0; j < cur.size(); ++j) {
-        const double scale = std::abs(prev[i].lambda) + std::abs(cur[j].lambda) + 1.0;
+        const double scale = prevAbs + curAbs[j] + 1.0;
         // A real root turns complex only by meeting another real root: a type
         // change costs extra so it is chosen only when nothing fits better.
         const bool typeChange = (prev[i].lambda.imag() > 0.0) != (cur[j].lambda.imag() > 0.0);
