@@ -87,6 +87,31 @@ core::Result<std::pair<std::int64_t, std::string>> storeResult(const std::string
   return std::make_pair(*added, row->name);
 }
 
+// Keeps the record when --project is given, then prints the sweep (text or
+// JSON) with where it was kept.
+int keepAndPrint(const ParsedArgs& parsed, st::StabilityRecord record, std::ostream& out, std::ostream& err) {
+  const auto project = parsed.value("--project");
+  std::optional<std::pair<std::int64_t, std::string>> stored;
+  if (project) {
+    auto kept =
+        storeResult(*project, parsed.value("--store").value_or(record.model), parsed.value("--specimen"), record);
+    if (!kept) {
+      err << "mozzi-cli stability: " << kept.error().describe() << "\n";
+      return kExitFailure;
+    }
+    stored = *kept;
+  }
+  if (parsed.flag("--json")) {
+    auto j = st::sweepJson(record.model, record.sweep);
+    if (stored) j["stored_analysis"] = {{"id", stored->first}, {"name", stored->second}};
+    out << j.dump(2) << "\n";
+  } else {
+    printText(out, record.model, record.sweep);
+    if (stored) out << "stored in " << *project << " as analysis " << stored->first << " '" << stored->second << "'\n";
+  }
+  return kExitOk;
+}
+
 int stabilityCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const auto parsed = ParsedArgs::parse(args, kSpec);
   if (!parsed && exitCodeFor(parsed.error()) == kExitFailure) {
@@ -115,8 +140,7 @@ int stabilityCommand(const std::vector<std::string>& args, std::ostream& out, st
     return kExitFailure;
   }
 
-  const auto project = parsed->value("--project");
-  if (!project && (parsed->value("--store") || parsed->value("--specimen"))) {
+  if (!parsed->value("--project") && (parsed->value("--store") || parsed->value("--specimen"))) {
     err << "mozzi-cli stability: --store and --specimen need --project P.mozzi\n" << kUsage;
     return kExitUsage;
   }
@@ -219,26 +243,9 @@ int stabilityCommand(const std::vector<std::string>& args, std::ostream& out, st
     err << "mozzi-cli stability: " << sweep.error().describe() << "\n";
     return kExitFailure;
   }
-  std::optional<std::pair<std::int64_t, std::string>> stored;
-  if (project) {
-    record.model = model;
-    record.sweep = *sweep;
-    auto kept = storeResult(*project, parsed->value("--store").value_or(model), parsed->value("--specimen"), record);
-    if (!kept) {
-      err << "mozzi-cli stability: " << kept.error().describe() << "\n";
-      return kExitFailure;
-    }
-    stored = *kept;
-  }
-  if (parsed->flag("--json")) {
-    auto j = st::sweepJson(model, *sweep);
-    if (stored) j["stored_analysis"] = {{"id", stored->first}, {"name", stored->second}};
-    out << j.dump(2) << "\n";
-  } else {
-    printText(out, model, *sweep);
-    if (stored) out << "stored in " << *project << " as analysis " << stored->first << " '" << stored->second << "'\n";
-  }
-  return kExitOk;
+  record.model = model;
+  record.sweep = *sweep;
+  return keepAndPrint(*parsed, std::move(record), out, err);
 }
 
 const CommandRegistrar kRegistrar(
