@@ -43,8 +43,7 @@ class StabilityProjectCli : public ::testing::Test {
 };
 
 TEST_F(StabilityProjectCli, KeepsWhatItPrints) {
-  const CliRun r =
-      run({"stability", "bicycle", "--speeds", "0:10:0.05", "--project", path_, "--store", "benchmark"});
+  const CliRun r = run({"stability", "bicycle", "--speeds", "0:10:0.05", "--project", path_, "--store", "benchmark"});
   ASSERT_EQ(r.code, kExitOk) << r.err;
   EXPECT_NE(r.out.find("weave stabilises at 4.292383 m/s"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("as analysis 1 'benchmark'"), std::string::npos) << r.out;
