@@ -99,10 +99,10 @@ Result<bool> wheelchairSection(const io::ProjectStore& store, const std::map<std
     Table t;
     t.caption = slalom ? "Slalom after two cycles of start transient" : "Steady turn at the end of the run";
     if (slalom) {
-      t.headers = {"Stiffness factor", "Lateral amplitude", "Rear slip amplitude right", "left"};
+      t.headers = {"Stiffness factor", "Lateral amplitude", "Rear slip amplitude right", "Rear slip amplitude left"};
       t.units = {"", "m", "deg", "deg"};
     } else {
-      t.headers = {"Stiffness factor", "Radius", "Rear slip right", "left"};
+      t.headers = {"Stiffness factor", "Radius", "Rear slip right", "Rear slip left"};
       t.units = {"", "m", "deg", "deg"};
     }
     for (const auto& run : r.record.runs) {
