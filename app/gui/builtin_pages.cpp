@@ -190,8 +190,8 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                         [](const PageContext& ctx) -> QWidget* {
                           auto* page = new views::StabilityPage(ctx.parent, ctx.jobs);
                           page->setObjectName(QStringLiteral("stabilityTab"));
-                          page->setProjectModel(ctx.model);  // the forks the project keeps
-                          page->run();                       // the benchmark bicycle, 0 to 10 m/s: worth a look at once
+                          page->setProjectModel(ctx.model);  // the forks and sweeps the project keeps
+                          page->openShowing();  // the last kept sweep, or the benchmark bicycle 0 to 10 m/s
                           return page;
                         },
                         /*singleton=*/true, /*openAtStart=*/false, nullptr});
@@ -363,7 +363,8 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                         [](const PageContext& ctx) -> QWidget* {
                           auto* page = new views::WheelchairPage(ctx.parent, ctx.jobs);
                           page->setObjectName(QStringLiteral("wheelchairTab"));
-                          page->run();  // the cornering-stiffness slalom of Figure 58: worth a look at once
+                          page->setProjectModel(ctx.model);  // the manoeuvres the project keeps
+                          page->openShowing();  // the last kept one, or the cornering-stiffness slalom of Figure 58
                           return page;
                         },
                         /*singleton=*/true, /*openAtStart=*/false, nullptr});

@@ -10,6 +10,7 @@
 #include "core/common/frf_type.h"
 #include "core/common/text.h"
 #include "core/report/gap_report.h"
+#include "core/report/stability_report.h"
 
 namespace mozzi::core::report {
 namespace {
@@ -323,7 +324,7 @@ Result<bool> gapSection(const Context& c, Section& s) {
   auto analyses = c.store.analyses();
   if (!analyses) return analyses.error();
   for (const auto& a : *analyses) {
-    if (!c.wanted(a.specimenId) || isForkModelAnalysis(a)) continue;
+    if (!c.wanted(a.specimenId) || isForkModelAnalysis(a) || hasOwnStabilitySection(a.kind)) continue;
     for (auto& block : storedAnalysisBlocks(a)) s.blocks.push_back(std::move(block));
   }
   return !s.blocks.empty();
@@ -332,7 +333,8 @@ Result<bool> gapSection(const Context& c, Section& s) {
 }  // namespace
 
 const std::vector<std::string>& reportSectionKeys() {
-  static const std::vector<std::string> keys = {"title", "frf", "modal", "stiffness", "tyre", "gap"};
+  static const std::vector<std::string> keys = {"title", "frf", "modal",     "stiffness",
+                                                "tyre",  "gap", "stability", "wheelchair"};
   return keys;
 }
 
@@ -343,6 +345,8 @@ std::string sectionHeading(const std::string& key) {
   if (key == "stiffness") return "Stiffness tests";
   if (key == "tyre") return "Tyre tests";
   if (key == "gap") return "Gap diagnoses";
+  if (key == "stability") return "Stability against speed";
+  if (key == "wheelchair") return "Wheelchair manoeuvres";
   return {};
 }
 
@@ -388,6 +392,9 @@ Result<Report> buildProjectReport(const io::ProjectStore& store, const ReportOpt
       has = tyreSection(c, s);
     } else if (key == "gap") {
       has = gapSection(c, s);
+    } else if (key == "stability" || key == "wheelchair") {  // core/report/stability_report.cpp
+      has = key == "stability" ? stabilitySection(store, c.specimenNames, s)
+                               : wheelchairSection(store, c.specimenNames, s);
     }
     if (!has) return has.error();
     if (*has) report.sections.push_back(std::move(s));

@@ -4,6 +4,7 @@
 #include "core/io/project_store.h"
 #include "devices/campaign/demo_campaigns.h"
 #include "devices/rigtests/virtual_rigs.h"
+#include "devices/sim/demo_stability.h"
 
 namespace mozzi::devices::sim {
 
@@ -125,8 +126,14 @@ core::Result<void> addIdentifiedModes(DemoContext& demo) {
   return campaign::identifyDemoCampaigns(demo.store);
 }
 
+// Step 5: stability of the benchmark bicycle and of Sharp's motorcycle (devices/sim/demo_stability.cpp).
+core::Result<void> addStability(DemoContext& demo) {
+  return addDemoStability(demo.store);
+}
+
 // The demo, in order; append a step to extend it.
-const DemoStep kDemoSteps[] = {addSpecimensWithMeshes, addRigAndTyreTests, addHammerCampaigns, addIdentifiedModes};
+const DemoStep kDemoSteps[] = {addSpecimensWithMeshes, addRigAndTyreTests, addHammerCampaigns, addIdentifiedModes,
+                               addStability};
 
 }  // namespace
 

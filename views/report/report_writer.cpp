@@ -20,6 +20,7 @@
 #include "views/plots/frf_plot.h"
 #include "views/plots/interactive_plot.h"
 #include "views/plots/plot_export.h"
+#include "views/report/stability_figures.h"
 
 namespace mozzi {
 namespace views {
@@ -31,6 +32,7 @@ constexpr double kMmPerInch = 25.4;
 // cannot be drawn here). `owner` keeps the widget alive.
 QwtPlot* figurePlot(const core::report::Figure& figure, const core::io::ProjectStore& store,
                     std::unique_ptr<QWidget>& owner, QString* error) {
+  if (isStabilityFigure(figure.view)) return stabilityFigurePlot(figure, store, owner, error);  // stability_figures.cpp
   if (figure.view == "frf-overlay") {
     auto frf = store.frfSet(figure.recordId);
     if (!frf) {

@@ -6,7 +6,8 @@
 // offscreen platform is enough). docs/cli/report.md.
 //
 // Figures rendered today: "frf-overlay" (views/plots FrfPlot, every FRF of the
-// set, magnitude). Others ("gap-overlay" outside the Model vs Test page) are
+// set, magnitude); "stability-real", "stability-imaginary", "wheelchair-trajectory"
+// (stability_figures.h). Others ("gap-overlay" outside the Model vs Test page) are
 // left as a placeholder naming the view.
 
 #include <QImage>
