@@ -139,5 +139,4 @@ Result<std::vector<StoredAnalysis>> ProjectStore::analyses() const {
   return out;
 }
 
-
 }  // namespace mozzi::core::io

@@ -34,8 +34,7 @@ inline std::string hitWhere(const std::string& path, std::int64_t id) {
 }
 
 // Copies a blob of doubles out of a column, checking its size.
-Result<std::vector<double>> columnDoubles(sqlite3_stmt* stmt, int column, std::int64_t count,
-                                          const std::string& where);
+Result<std::vector<double>> columnDoubles(sqlite3_stmt* stmt, int column, std::int64_t count, const std::string& where);
 
 // A record's samples: positive finite rate, at least one channel and one
 // sample, at most 2 GiB, every sample finite.

@@ -11,9 +11,9 @@
 
 namespace mozzi::core::io {
 
-using data::kMaxFrfLines;
 using data::columnDoubles;
 using data::ContentCrc;
+using data::kMaxFrfLines;
 using data::verifyChecksum;
 using sql::sqliteError;
 

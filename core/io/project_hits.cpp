@@ -9,10 +9,10 @@
 
 namespace mozzi::core::io {
 
-using data::finite;
-using data::hitWhere;
 using data::checkSamples;
 using data::columnSamples;
+using data::finite;
+using data::hitWhere;
 using sql::sqliteError;
 
 // --- campaigns and hits --------------------------------------------------------------

@@ -11,8 +11,8 @@
 namespace mozzi::core::io {
 
 using data::finite;
-using data::verifyChecksum;
 using data::meshChecksum;
+using data::verifyChecksum;
 using sql::sqliteError;
 
 // --- mesh -----------------------------------------------------------------------

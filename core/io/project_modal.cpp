@@ -8,8 +8,8 @@
 
 namespace mozzi::core::io {
 
-using data::finite;
 using data::ContentCrc;
+using data::finite;
 using data::verifyChecksum;
 using sql::sqliteError;
 

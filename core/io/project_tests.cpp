@@ -1,22 +1,21 @@
 // ProjectStore: rig tests and tyre tests, whole or committed step by step
 // (devices/rigtests), their time records and results.
 
-
 #include "core/io/project_data_internal.h"
 #include "core/io/project_sql.h"
 #include "core/io/project_store.h"
 
 namespace mozzi::core::io {
 
+using data::bindStep;
 using data::finite;
 using data::insertRecord;
-using data::setStatusNote;
-using data::setFinalStatus;
 using data::readRecord;
-using data::bindStep;
-using data::verifyChecksum;
 using data::rigTestChecksum;
+using data::setFinalStatus;
+using data::setStatusNote;
 using data::tyreTestChecksum;
+using data::verifyChecksum;
 using sql::sqliteError;
 
 // --- rig tests ------------------------------------------------------------------------

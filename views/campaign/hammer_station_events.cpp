@@ -36,13 +36,13 @@
 #include "devices/common/driver.h"
 #include "views/campaign/campaign_session.h"
 #include "views/campaign/campaign_wizard.h"
+#include "views/campaign/hammer_station_internal.h"
 #include "views/common/dof_text.h"
 #include "views/plots/frf_plot.h"
 #include "views/plots/interactive_plot.h"
 #include "views/plots/plot_export.h"
 #include "views/plots/vector_series.h"
 #include "views/scene/scene_view.h"
-#include "views/campaign/hammer_station_internal.h"
 
 namespace mozzi {
 namespace views {

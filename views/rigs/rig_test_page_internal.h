@@ -83,7 +83,6 @@ inline Shown shown(double value, double uncertainty, const std::string& unit) {
   return {value, uncertainty, qs(unit)};
 }
 
-
 inline QString number(double v) {
   return QString::number(v, 'g', 5);
 }

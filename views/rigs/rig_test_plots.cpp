@@ -55,14 +55,14 @@
 namespace mozzi {
 namespace views {
 
-using rig_page::kPi;
-using rig_page::kTyreTimeWindowS;
-using rig_page::kSineTimeWindowS;
-using rig_page::qs;
-using rig_page::shown;
-using rig_page::number;
-using rig_page::resultLabel;
 using rig_page::addCurve;
+using rig_page::kPi;
+using rig_page::kSineTimeWindowS;
+using rig_page::kTyreTimeWindowS;
+using rig_page::number;
+using rig_page::qs;
+using rig_page::resultLabel;
+using rig_page::shown;
 
 void RigTestPage::resetPlots() {
   const bool stiff = rig_ == Rig::Stiffness;
@@ -188,7 +188,6 @@ void RigTestPage::resetPlots() {
   livePlot_->replot();
   resultPlot_->replot();
 }
-
 
 void RigTestPage::clearAxisPlot() {
   inclinationData_.clear();
@@ -486,7 +485,6 @@ void RigTestPage::drawStoredFits(qint64 id, const std::vector<StoredRow>& rows, 
     }
   }
 }
-
 
 }  // namespace views
 }  // namespace mozzi

@@ -57,11 +57,11 @@ namespace views {
 
 using rig_page::kPi;
 using rig_page::kPlotRateHz;
-using rig_page::qs;
-using rig_page::SequenceRun;
-using rig_page::runOnSimulatedRig;
-using rig_page::shown;
 using rig_page::number;
+using rig_page::qs;
+using rig_page::runOnSimulatedRig;
+using rig_page::SequenceRun;
+using rig_page::shown;
 using rig_page::trimFront;
 
 void RigTestPage::start() {
@@ -217,8 +217,7 @@ void RigTestPage::onJobFinished(const core::Result<rt::Outcome>& result) {
     ok = outcome->status == core::io::TestStatus::Complete;
     if (outcome->testId) {
       lastTestId_ = *outcome->testId;
-      model_->notifyChanged(rig_ == Rig::Stiffness ? RecordKind::RigTest : RecordKind::TyreTest,
-                            *outcome->testId);
+      model_->notifyChanged(rig_ == Rig::Stiffness ? RecordKind::RigTest : RecordKind::TyreTest, *outcome->testId);
       showStoredTest(*outcome->testId);
     }
     const QString name = qs(outcome->testName);
@@ -361,7 +360,6 @@ void RigTestPage::onStep(const rt::StepReport& s) {
     xySecondData_.append(QPointF(camber->value * 180.0 / kPi, fy->value));
   dirty_ = true;
 }
-
 
 }  // namespace views
 }  // namespace mozzi

@@ -55,8 +55,8 @@
 namespace mozzi {
 namespace views {
 
-using rig_page::qs;
 using rig_page::number;
+using rig_page::qs;
 
 // The stiffness rig's set-up tab: the plate, the lasers, the load point and the
 // constrained end over the specimen's silhouette, as the form says. The form
@@ -248,7 +248,6 @@ void RigTestPage::drawSetup() {
                              : note);
   showSetup();
 }
-
 
 }  // namespace views
 }  // namespace mozzi

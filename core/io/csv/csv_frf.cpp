@@ -10,17 +10,17 @@
 
 namespace mozzi::core::io::csv {
 
+using detail::frfUnit;
+using detail::frfUnitText;
 using detail::kMagic;
 using detail::lower;
 using detail::num;
-using detail::Table;
 using detail::parseError;
 using detail::parseTable;
-using detail::Title;
-using detail::splitTitle;
-using detail::frfUnit;
-using detail::frfUnitText;
 using detail::readWholeFile;
+using detail::splitTitle;
+using detail::Table;
+using detail::Title;
 using detail::writeFile;
 
 // --- FRFs ---------------------------------------------------------------------------------

@@ -15,15 +15,15 @@
 namespace mozzi::core::io::csv {
 
 using detail::kMagic;
-using detail::trim;
 using detail::lower;
 using detail::num;
-using detail::Table;
 using detail::parseError;
 using detail::parseTable;
-using detail::Title;
-using detail::splitTitle;
 using detail::readWholeFile;
+using detail::splitTitle;
+using detail::Table;
+using detail::Title;
+using detail::trim;
 using detail::writeFile;
 
 // --- measurement meshes ----------------------------------------------------------------------
@@ -214,15 +214,13 @@ Result<void> readSystemsSection(const Table& t, const std::string& source, const
     }
     cs.label = *label;
     cs.kind = static_cast<StoredCoordinateSystem::Kind>(*type);
-    for (int k = 0; k < 3; ++k)
-      cs.origin[k] = factor[k] * t.rows[r][cols->index.at(std::string("origin ") + "xyz"[k])];
+    for (int k = 0; k < 3; ++k) cs.origin[k] = factor[k] * t.rows[r][cols->index.at(std::string("origin ") + "xyz"[k])];
     for (int axis = 0; axis < 3; ++axis)
       for (int k = 0; k < 3; ++k)
         cs.rotation(k, axis) = t.rows[r][cols->index.at(std::string(1, "xyz"[axis]) + " axis " + "xyz"[k])];
     if (auto it = t.keys.find("name " + std::to_string(cs.label)); it != t.keys.end()) cs.name = it->second;
     if (!systemKinds.emplace(cs.label, cs.kind).second) {
-      return parseError("coordinate system " + std::to_string(cs.label) + " is defined twice", source,
-                        t.rowLines[r]);
+      return parseError("coordinate system " + std::to_string(cs.label) + " is defined twice", source, t.rowLines[r]);
     }
     mesh.coordinateSystems.push_back(std::move(cs));
   }

@@ -14,12 +14,12 @@ namespace mozzi::core::io::csv {
 using detail::kMagic;
 using detail::lower;
 using detail::num;
-using detail::Table;
 using detail::parseError;
 using detail::parseTable;
-using detail::Title;
-using detail::splitTitle;
 using detail::readWholeFile;
+using detail::splitTitle;
+using detail::Table;
+using detail::Title;
 using detail::writeFile;
 
 // --- modal tables --------------------------------------------------------------------------

@@ -11,16 +11,16 @@
 
 namespace mozzi::core::io::csv {
 
+using detail::dofInName;
 using detail::kMagic;
 using detail::lower;
 using detail::num;
-using detail::Table;
 using detail::parseError;
 using detail::parseTable;
-using detail::Title;
-using detail::splitTitle;
-using detail::dofInName;
 using detail::readWholeFile;
+using detail::splitTitle;
+using detail::Table;
+using detail::Title;
 using detail::writeFile;
 
 // --- time records ----------------------------------------------------------------------
