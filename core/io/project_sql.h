@@ -47,7 +47,7 @@ StoredCampaign campaignFromRow(sqlite3_stmt* row);
 Result<void> insertCampaignPoints(sqlite3* db, std::int64_t campaignId, const std::vector<StoredCampaignPoint>& points,
                                   const std::string& where);
 
-// CRC-32 of the content of an empty mesh (project_data.cpp, "Checksums"), the
+// CRC-32 of the content of an empty mesh (project_data.cpp; docs/formats/project.md, "Checksums"), the
 // value a new specimen starts with.
 std::uint32_t emptyMeshChecksum();
 
