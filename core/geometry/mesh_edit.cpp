@@ -233,13 +233,11 @@ Result<void> checkSlaveRules(const MeshDocument& d) {
     if (st == 1) return makeError(ErrorCode::InvalidArgument, "slave rules form a cycle", "slave " + formatDof(dof));
     if (st == 2) return {};
     st = 1;
-    for (const auto& m : it->second->masters)
-      if (auto r = visit(m.first); !r) return r;
+    for (const auto& m : it->second->masters) MOZZI_TRY(visit(m.first));
     state[dof] = 2;
     return {};
   };
-  for (const auto& s : d.slaves)
-    if (auto r = visit(s.slave); !r) return r;
+  for (const auto& s : d.slaves) MOZZI_TRY(visit(s.slave));
   return {};
 }
 
@@ -303,7 +301,7 @@ Result<MeshEdit> planAddNode(const MeshDocument& document, StoredNode node) {
     return makeError(ErrorCode::InvalidArgument, "node " + std::to_string(node.label) + " already exists",
                      "node " + std::to_string(node.label));
   }
-  if (auto r = checkSystems(document, node); !r) return r.error();
+  MOZZI_TRY(checkSystems(document, node));
   node.id = 0;
   MeshEdit e;
   e.description = "add node " + std::to_string(node.label);
@@ -317,7 +315,7 @@ Result<MeshEdit> planSetNode(const MeshDocument& document, int label, const Stor
   if (node.label != label) {
     return makeError(ErrorCode::InvalidArgument, "changing a label is a renumber", "node " + std::to_string(label));
   }
-  if (auto r = checkSystems(document, node); !r) return r.error();
+  MOZZI_TRY(checkSystems(document, node));
   MeshEdit e;
   e.description = "edit node " + std::to_string(label);
   StoredNode after = node;
@@ -603,7 +601,7 @@ Result<MeshEdit> planSetSlave(const MeshDocument& document, const SlavedDof& rul
     e.ops.push_back(insertion(document.slaves.size(), rule));
     trial.slaves.push_back(rule);
   }
-  if (auto r = checkSlaveRules(trial); !r) return r.error();
+  MOZZI_TRY(checkSlaveRules(trial));
   return e;
 }
 
@@ -653,7 +651,7 @@ Result<void> validate(const MeshDocument& document) {
     const std::string where = "node " + std::to_string(n.label);
     if (n.label <= 0) return makeError(ErrorCode::InvalidArgument, "node labels are positive", where);
     if (!labels.insert(n.label).second) return makeError(ErrorCode::InvalidArgument, "label used twice", where);
-    if (auto r = checkSystems(document, n); !r) return r;
+    MOZZI_TRY(checkSystems(document, n));
   }
   for (std::size_t i = 0; i < document.mesh.lines.size(); ++i) {
     const auto& l = document.mesh.lines[i];

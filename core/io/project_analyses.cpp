@@ -132,9 +132,8 @@ Result<std::vector<StoredAnalysis>> ProjectStore::analyses() const {
   }
   std::vector<StoredAnalysis> out;
   for (const auto id : ids) {
-    auto a = analysis(id);
-    if (!a) return a.error();
-    out.push_back(std::move(*a));
+    MOZZI_TRY_ASSIGN(auto a, analysis(id));
+    out.push_back(std::move(a));
   }
   return out;
 }

@@ -91,8 +91,7 @@ Result<void> insertRecord(sqlite3* db, const char* table, std::int64_t testId, i
                           const Eigen::MatrixXf& samples, SampleEncoding encoding, const std::string& where) {
   MOZZI_TRY(checkSamples(samples, sampleRateHz, where));
   const auto count = static_cast<std::size_t>(samples.size());
-  auto blob = encodeSamples(samples.data(), count, encoding);
-  if (!blob) return blob.error();
+  MOZZI_TRY_ASSIGN(auto blob, encodeSamples(samples.data(), count, encoding));
   const std::uint32_t crc = sampleCrc32(reinterpret_cast<const std::uint8_t*>(samples.data()), count * sizeof(float));
   const std::string owner = std::string(table) == "tyre_test_record" ? "tyre_test_id" : "rig_test_id";
   const std::string text = "INSERT INTO " + std::string(table) + "(" + owner +
@@ -101,7 +100,7 @@ Result<void> insertRecord(sqlite3* db, const char* table, std::int64_t testId, i
   sql::Statement stmt(db, text.c_str());
   stmt.bind(1, testId).bind(2, step).bind(3, sampleRateHz).bind(4, static_cast<std::int64_t>(samples.cols()));
   stmt.bind(5, static_cast<std::int64_t>(samples.rows())).bind(6, static_cast<int>(encoding));
-  stmt.bindBlob(7, blob->data(), blob->size()).bind(8, static_cast<std::int64_t>(crc));
+  stmt.bindBlob(7, blob.data(), blob.size()).bind(8, static_cast<std::int64_t>(crc));
   MOZZI_TRY(stmt.run("cannot store the record", where));
   return {};
 }

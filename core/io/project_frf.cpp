@@ -143,9 +143,8 @@ Result<FrfMatrix> ProjectStore::frfSet(std::int64_t frfSetId) const {
     if (lines <= 0 || lines > kMaxFrfLines) {
       return makeError(ErrorCode::Corrupt, "implausible line count " + std::to_string(lines), where);
     }
-    auto f = columnDoubles(stmt.get(), 2, lines, where + ", frequencies");
-    if (!f) return f.error();
-    frf.frequencyHz = Eigen::Map<const Vector>(f->data(), lines);
+    MOZZI_TRY_ASSIGN(auto f, columnDoubles(stmt.get(), 2, lines, where + ", frequencies"));
+    frf.frequencyHz = Eigen::Map<const Vector>(f.data(), lines);
   }
   sql::Statement stmt(
       db_, ("SELECT response_index, reference_index, response_node, response_direction, reference_node,"
@@ -186,20 +185,17 @@ Result<FrfMatrix> ProjectStore::frfSet(std::int64_t frfSetId) const {
     if (r.o < 0 || r.i < 0 || r.o >= 1 << 20 || r.i >= 1 << 20) {
       return makeError(ErrorCode::Corrupt, "FRF index out of range", where);
     }
-    auto response = sql::columnDof(stmt.get(), 2, 3, where);
-    if (!response) return response.error();
-    auto reference = sql::columnDof(stmt.get(), 4, 5, where);
-    if (!reference) return reference.error();
-    r.response = *response;
-    r.reference = *reference;
+    MOZZI_TRY_ASSIGN(auto response, sql::columnDof(stmt.get(), 2, 3, where));
+    MOZZI_TRY_ASSIGN(auto reference, sql::columnDof(stmt.get(), 4, 5, where));
+    r.response = response;
+    r.reference = reference;
     auto h = columnDoubles(stmt.get(), 6, 2 * lines,
                            where + ", FRF " + formatDof(r.response) + "/" + formatDof(r.reference));
     if (!h) return h.error();
     r.h = std::move(*h);
     if (sqlite3_column_type(stmt.get(), 7) != SQLITE_NULL) {
-      auto c = columnDoubles(stmt.get(), 7, lines, where + ", coherence");
-      if (!c) return c.error();
-      r.coherence = std::move(*c);
+      MOZZI_TRY_ASSIGN(auto c, columnDoubles(stmt.get(), 7, lines, where + ", coherence"));
+      r.coherence = std::move(c);
       anyCoherence = true;
     }
     no = std::max(no, r.o + 1);

@@ -68,8 +68,7 @@ Result<std::int64_t> ProjectStore::commitHit(const StoredHit& hit) {
   // Encode before the transaction so the write lock is held only for the
   // insert and the fsync.
   const std::size_t count = static_cast<std::size_t>(hit.samples.size());
-  auto blob = encodeSamples(hit.samples.data(), count, hitEncoding_);
-  if (!blob) return blob.error();
+  MOZZI_TRY_ASSIGN(auto blob, encodeSamples(hit.samples.data(), count, hitEncoding_));
   const std::uint32_t crc =
       sampleCrc32(reinterpret_cast<const std::uint8_t*>(hit.samples.data()), count * sizeof(float));
 
@@ -83,7 +82,7 @@ Result<std::int64_t> ProjectStore::commitHit(const StoredHit& hit) {
   stmt.bind(1, hit.campaignId).bind(2, hit.sequence).bind(3, hit.point.node).bind(4, hit.point.uffCode());
   stmt.bind(5, hit.recordedUtc.empty() ? sql::nowUtc() : hit.recordedUtc).bind(6, hit.sampleRateHz);
   stmt.bind(7, static_cast<std::int64_t>(hit.channelCount())).bind(8, static_cast<std::int64_t>(hit.sampleCount()));
-  stmt.bind(9, static_cast<int>(hitEncoding_)).bindBlob(10, blob->data(), blob->size());
+  stmt.bind(9, static_cast<int>(hitEncoding_)).bindBlob(10, blob.data(), blob.size());
   stmt.bind(11, static_cast<std::int64_t>(crc)).bind(12, hit.accepted ? 1 : 0);
   stmt.bind(13, static_cast<std::int64_t>(hit.qualityFlags)).bind(14, hit.qualityReasons);
   MOZZI_TRY_ASSIGN(const std::int64_t id, stmt.insert("cannot store the hit", where));
@@ -117,17 +116,15 @@ Result<StoredHit> ProjectStore::hit(std::int64_t hitId) const {
     h.id = sqlite3_column_int64(stmt.get(), 0);
     h.campaignId = sqlite3_column_int64(stmt.get(), 1);
     h.sequence = sqlite3_column_int(stmt.get(), 2);
-    auto point = sql::columnDof(stmt.get(), 3, 4, where);
-    if (!point) return point.error();
-    h.point = *point;
+    MOZZI_TRY_ASSIGN(auto point, sql::columnDof(stmt.get(), 3, 4, where));
+    h.point = point;
     h.recordedUtc = sql::columnText(stmt.get(), 5);
     h.sampleRateHz = sqlite3_column_double(stmt.get(), 6);
     if (!(h.sampleRateHz > 0.0) || !finite(h.sampleRateHz)) {
       return makeError(ErrorCode::Corrupt, "stored sample rate is not a positive number", where);
     }
-    auto samples = columnSamples(stmt.get(), 7, where);
-    if (!samples) return samples.error();
-    h.samples = std::move(*samples);
+    MOZZI_TRY_ASSIGN(auto samples, columnSamples(stmt.get(), 7, where));
+    h.samples = std::move(samples);
     h.accepted = sqlite3_column_int(stmt.get(), 12) != 0;
     h.qualityFlags = static_cast<std::uint32_t>(sqlite3_column_int64(stmt.get(), 13));
     h.qualityReasons = sql::columnText(stmt.get(), 14);
@@ -166,9 +163,8 @@ Result<std::vector<HitInfo>> ProjectStore::hits(std::int64_t campaignId) const {
     HitInfo h;
     h.id = sqlite3_column_int64(stmt.get(), 0);
     h.sequence = sqlite3_column_int(stmt.get(), 1);
-    auto point = sql::columnDof(stmt.get(), 2, 3, hitWhere(path_, h.id));
-    if (!point) return point.error();
-    h.point = *point;
+    MOZZI_TRY_ASSIGN(auto point, sql::columnDof(stmt.get(), 2, 3, hitWhere(path_, h.id)));
+    h.point = point;
     h.recordedUtc = sql::columnText(stmt.get(), 4);
     h.sampleRateHz = sqlite3_column_double(stmt.get(), 5);
     h.channelCount = sqlite3_column_int(stmt.get(), 6);

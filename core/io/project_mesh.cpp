@@ -74,31 +74,25 @@ Result<void> ProjectStore::setMesh(std::int64_t specimenId, const StoredMesh& me
   };
   sql::Statement line(db_, "INSERT INTO mesh_line(specimen_id, node_a, node_b) VALUES (?1, ?2, ?3)");
   for (const auto& l : mesh.lines) {
-    auto a = idOf(l.nodeA, "a line");
-    if (!a) return a.error();
-    auto b = idOf(l.nodeB, "a line");
-    if (!b) return b.error();
+    MOZZI_TRY_ASSIGN(auto a, idOf(l.nodeA, "a line"));
+    MOZZI_TRY_ASSIGN(auto b, idOf(l.nodeB, "a line"));
     line.reset();
-    line.bind(1, specimenId).bind(2, *a).bind(3, *b);
+    line.bind(1, specimenId).bind(2, a).bind(3, b);
     MOZZI_TRY(line.run("cannot store a trace line", where));
   }
   sql::Statement face(db_,
                       "INSERT INTO mesh_face(specimen_id, node_a, node_b, node_c, node_d) VALUES (?1, ?2, ?3, ?4, ?5)");
   for (const auto& f : mesh.faces) {
-    auto a = idOf(f.nodeA, "a face");
-    if (!a) return a.error();
-    auto b = idOf(f.nodeB, "a face");
-    if (!b) return b.error();
-    auto c = idOf(f.nodeC, "a face");
-    if (!c) return c.error();
+    MOZZI_TRY_ASSIGN(auto a, idOf(f.nodeA, "a face"));
+    MOZZI_TRY_ASSIGN(auto b, idOf(f.nodeB, "a face"));
+    MOZZI_TRY_ASSIGN(auto c, idOf(f.nodeC, "a face"));
     std::optional<std::int64_t> d;
     if (f.nodeD != 0) {
-      auto dd = idOf(f.nodeD, "a face");
-      if (!dd) return dd.error();
-      d = *dd;
+      MOZZI_TRY_ASSIGN(auto dd, idOf(f.nodeD, "a face"));
+      d = dd;
     }
     face.reset();
-    face.bind(1, specimenId).bind(2, *a).bind(3, *b).bind(4, *c).bind(5, d);
+    face.bind(1, specimenId).bind(2, a).bind(3, b).bind(4, c).bind(5, d);
     MOZZI_TRY(face.run("cannot store a face", where));
   }
   sql::Statement crc(db_, "UPDATE specimen SET mesh_crc32 = ?1 WHERE id = ?2");

@@ -165,9 +165,8 @@ Result<ModalTable> ProjectStore::modalResult(std::int64_t modalResultId) const {
       if (sqlite3_column_int64(shape.get(), 0) != static_cast<std::int64_t>(values.size())) {
         return makeError(ErrorCode::Corrupt, "mode-shape DOFs do not number 0..n-1", where);
       }
-      auto dof = sql::columnDof(shape.get(), 1, 2, where);
-      if (!dof) return dof.error();
-      dofs.push_back(*dof);
+      MOZZI_TRY_ASSIGN(auto dof, sql::columnDof(shape.get(), 1, 2, where));
+      dofs.push_back(dof);
       values.emplace_back(sqlite3_column_double(shape.get(), 3), sqlite3_column_double(shape.get(), 4));
     }
     if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read a mode shape", where);

@@ -57,10 +57,9 @@ Result<void> ProjectStore::insertRigResults(std::int64_t rigTestId, const std::v
   }
   // Results arrive step by step: the checksum covers them all, so it is
   // computed again from what is now stored (inside the caller's transaction).
-  auto stored = readRigTest(rigTestId, false);
-  if (!stored) return stored.error();
+  MOZZI_TRY_ASSIGN(auto stored, readRigTest(rigTestId, false));
   sql::Statement crc(db_, "UPDATE rig_test SET content_crc32 = ?2 WHERE id = ?1");
-  crc.bind(1, rigTestId).bind(2, static_cast<std::int64_t>(rigTestChecksum(*stored)));
+  crc.bind(1, rigTestId).bind(2, static_cast<std::int64_t>(rigTestChecksum(stored)));
   MOZZI_TRY(crc.run("cannot update the rig test's checksum", where));
   return {};
 }
@@ -190,10 +189,9 @@ Result<void> ProjectStore::insertTyreData(std::int64_t tyreTestId, std::int64_t 
   }
   // Points and parameters arrive step by step: the checksum is computed again
   // from what is now stored (inside the caller's transaction).
-  auto stored = readTyreTest(tyreTestId, false);
-  if (!stored) return stored.error();
+  MOZZI_TRY_ASSIGN(auto stored, readTyreTest(tyreTestId, false));
   sql::Statement crc(db_, "UPDATE tyre_test SET content_crc32 = ?2 WHERE id = ?1");
-  crc.bind(1, tyreTestId).bind(2, static_cast<std::int64_t>(tyreTestChecksum(*stored)));
+  crc.bind(1, tyreTestId).bind(2, static_cast<std::int64_t>(tyreTestChecksum(stored)));
   MOZZI_TRY(crc.run("cannot update the tyre test's checksum", where));
   return {};
 }

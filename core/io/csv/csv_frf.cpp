@@ -58,9 +58,8 @@ Result<void> writeFrfCsv(const FrfMatrix& frf, std::ostream& out) {
 }
 
 Result<FrfMatrix> readFrfCsv(std::string_view text, const std::string& source) {
-  auto parsed = parseTable(text, source);
-  if (!parsed) return parsed.error();
-  const Table& t = *parsed;
+  MOZZI_TRY_ASSIGN(auto parsed, parseTable(text, source));
+  const Table& t = parsed;
   if (!t.kind.empty() && t.kind != "frf") return parseError("this is a '" + t.kind + "' file, not FRFs", source, 1);
   const Title f = splitTitle(t.titles[0]);
   auto fUnit = siUnit(f.unit.value_or(""));
@@ -180,9 +179,8 @@ Result<FrfMatrix> readFrfCsv(std::string_view text, const std::string& source) {
 }
 
 Result<FrfMatrix> importFrfCsv(const std::string& path) {
-  auto text = readWholeFile(path);
-  if (!text) return text.error();
-  return readFrfCsv(*text, path);
+  MOZZI_TRY_ASSIGN(auto text, readWholeFile(path));
+  return readFrfCsv(text, path);
 }
 
 Result<void> exportFrfCsv(const FrfMatrix& frf, const std::string& path) {

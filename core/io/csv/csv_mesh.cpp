@@ -191,33 +191,28 @@ Result<void> readSystemsSection(const Table& t, const std::string& source, const
   std::vector<std::string> required = {"cs", "type", "origin x", "origin y", "origin z"};
   for (const char* axis : {"x", "y", "z"})
     for (const char* k : {"x", "y", "z"}) required.push_back(std::string(axis) + " axis " + k);
-  auto cols = meshColumns(t, required, {}, sectionName, source);
-  if (!cols) return cols.error();
+  MOZZI_TRY_ASSIGN(auto cols, meshColumns(t, required, {}, sectionName, source));
   double factor[3];
   for (int k = 0; k < 3; ++k) {
-    auto f = lengthFactor(*cols, std::string("origin ") + "xyz"[k], t, source);
-    if (!f) return f.error();
-    factor[k] = *f;
+    MOZZI_TRY_ASSIGN(auto f, lengthFactor(cols, std::string("origin ") + "xyz"[k], t, source));
+    factor[k] = f;
   }
-  for (const auto& name : {"cs", "type"})
-    if (auto r = checkDimensionless(*cols, name, t, source); !r) return r.error();
+  for (const auto& name : {"cs", "type"}) MOZZI_TRY(checkDimensionless(cols, name, t, source));
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     StoredCoordinateSystem cs;
-    auto label = intAt(t, r, *cols, source, "cs");
-    if (!label) return label.error();
-    auto type = intAt(t, r, *cols, source, "type");
-    if (!type) return type.error();
-    if (*label <= 0) return parseError("coordinate system labels are positive", source, t.rowLines[r]);
-    if (*type < 0 || *type > 2) {
+    MOZZI_TRY_ASSIGN(auto label, intAt(t, r, cols, source, "cs"));
+    MOZZI_TRY_ASSIGN(auto type, intAt(t, r, cols, source, "type"));
+    if (label <= 0) return parseError("coordinate system labels are positive", source, t.rowLines[r]);
+    if (type < 0 || type > 2) {
       return parseError("type must be 0 (cartesian), 1 (cylindrical) or 2 (spherical)", source, t.rowLines[r],
-                        static_cast<int>(cols->index.at("type") + 1));
+                        static_cast<int>(cols.index.at("type") + 1));
     }
-    cs.label = *label;
-    cs.kind = static_cast<StoredCoordinateSystem::Kind>(*type);
-    for (int k = 0; k < 3; ++k) cs.origin[k] = factor[k] * t.rows[r][cols->index.at(std::string("origin ") + "xyz"[k])];
+    cs.label = label;
+    cs.kind = static_cast<StoredCoordinateSystem::Kind>(type);
+    for (int k = 0; k < 3; ++k) cs.origin[k] = factor[k] * t.rows[r][cols.index.at(std::string("origin ") + "xyz"[k])];
     for (int axis = 0; axis < 3; ++axis)
       for (int k = 0; k < 3; ++k)
-        cs.rotation(k, axis) = t.rows[r][cols->index.at(std::string(1, "xyz"[axis]) + " axis " + "xyz"[k])];
+        cs.rotation(k, axis) = t.rows[r][cols.index.at(std::string(1, "xyz"[axis]) + " axis " + "xyz"[k])];
     if (auto it = t.keys.find("name " + std::to_string(cs.label)); it != t.keys.end()) cs.name = it->second;
     if (!systemKinds.emplace(cs.label, cs.kind).second) {
       return parseError("coordinate system " + std::to_string(cs.label) + " is defined twice", source, t.rowLines[r]);
@@ -230,32 +225,27 @@ Result<void> readSystemsSection(const Table& t, const std::string& source, const
 Result<void> readNodesSection(const Table& t, const std::string& source, const std::string& sectionName,
                               MeshDocument& doc, const std::map<int, StoredCoordinateSystem::Kind>& systemKinds) {
   auto& mesh = doc.mesh;
-  auto cols = meshColumns(t, {"node", "x", "y", "z"}, {"cs", "displacement cs"}, sectionName, source);
-  if (!cols) return cols.error();
+  MOZZI_TRY_ASSIGN(auto cols, meshColumns(t, {"node", "x", "y", "z"}, {"cs", "displacement cs"}, sectionName, source));
   double factor[3];
   for (int k = 0; k < 3; ++k) {
-    auto f = lengthFactor(*cols, std::string(1, "xyz"[k]), t, source);
-    if (!f) return f.error();
-    factor[k] = *f;
+    MOZZI_TRY_ASSIGN(auto f, lengthFactor(cols, std::string(1, "xyz"[k]), t, source));
+    factor[k] = f;
   }
   for (const auto& name : {"node", "cs", "displacement cs"})
-    if (cols->index.count(name))
-      if (auto r = checkDimensionless(*cols, name, t, source); !r) return r.error();
+    if (cols.index.count(name)) MOZZI_TRY(checkDimensionless(cols, name, t, source));
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     StoredNode n;
-    auto label = intAt(t, r, *cols, source, "node");
-    if (!label) return label.error();
-    n.label = *label;
+    MOZZI_TRY_ASSIGN(auto label, intAt(t, r, cols, source, "node"));
+    n.label = label;
     if (n.label <= 0) return parseError("node labels are positive", source, t.rowLines[r]);
     for (const auto& [name, field] : {std::pair<const char*, int*>{"cs", &n.definitionCs},
                                       std::pair<const char*, int*>{"displacement cs", &n.displacementCs}}) {
-      if (!cols->index.count(name)) continue;
-      auto v = intAt(t, r, *cols, source, name);
-      if (!v) return v.error();
-      if (*v < 0) return parseError(std::string(name) + " must not be negative", source, t.rowLines[r]);
-      *field = *v;
+      if (!cols.index.count(name)) continue;
+      MOZZI_TRY_ASSIGN(auto v, intAt(t, r, cols, source, name));
+      if (v < 0) return parseError(std::string(name) + " must not be negative", source, t.rowLines[r]);
+      *field = v;
     }
-    for (int k = 0; k < 3; ++k) n.position[k] = t.rows[r][cols->index.at(std::string(1, "xyz"[k]))];
+    for (int k = 0; k < 3; ++k) n.position[k] = t.rows[r][cols.index.at(std::string(1, "xyz"[k]))];
     // Lengths scale with the column unit; angles (degrees) of cylindrical
     // (theta) and spherical (theta, phi) systems do not.
     const auto kindIt = systemKinds.find(n.definitionCs);
@@ -278,20 +268,18 @@ Result<void> readLinksSection(const Table& t, const std::string& source, const s
   auto cols = meshColumns(t, required, lines ? std::vector<std::string>{} : std::vector<std::string>{"node d"},
                           sectionName, source);
   if (!cols) return cols.error();
-  for (const auto& [name, index] : cols->index)
-    if (auto r = checkDimensionless(*cols, name, t, source); !r) return r.error();
+  for (const auto& [name, index] : cols->index) MOZZI_TRY(checkDimensionless(*cols, name, t, source));
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     int v[4] = {0, 0, 0, 0};
     for (int k = 0; k < 4; ++k) {
       const std::string name = std::string("node ") + "abcd"[k];
       if (!cols->index.count(name)) continue;
-      auto x = intAt(t, r, *cols, source, name);
-      if (!x) return x.error();
-      if (*x < 0 || (*x == 0 && k < 3)) {
+      MOZZI_TRY_ASSIGN(auto x, intAt(t, r, *cols, source, name));
+      if (x < 0 || (x == 0 && k < 3)) {
         return parseError(name + " must be a node label (positive)", source, t.rowLines[r],
                           static_cast<int>(cols->index.at(name) + 1));
       }
-      v[k] = *x;
+      v[k] = x;
     }
     if (lines) {
       mesh.lines.push_back({v[0], v[1]});
@@ -304,17 +292,14 @@ Result<void> readLinksSection(const Table& t, const std::string& source, const s
 
 Result<void> readDofsSection(const Table& t, const std::string& source, const std::string& sectionName,
                              MeshDocument& doc) {
-  auto cols = meshColumns(t, {"node", "direction"}, {}, sectionName, source);
-  if (!cols) return cols.error();
+  MOZZI_TRY_ASSIGN(auto cols, meshColumns(t, {"node", "direction"}, {}, sectionName, source));
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
-    auto node = intAt(t, r, *cols, source, "node");
-    if (!node) return node.error();
-    auto code = intAt(t, r, *cols, source, "direction");
-    if (!code) return code.error();
-    auto dof = dofFromUff(*node, *code);
+    MOZZI_TRY_ASSIGN(auto node, intAt(t, r, cols, source, "node"));
+    MOZZI_TRY_ASSIGN(auto code, intAt(t, r, cols, source, "direction"));
+    auto dof = dofFromUff(node, code);
     if (!dof) {
       return parseError("direction must be a UFF code +/-1..6", source, t.rowLines[r],
-                        static_cast<int>(cols->index.at("direction") + 1));
+                        static_cast<int>(cols.index.at("direction") + 1));
     }
     doc.measurementDofs.push_back(*dof);
   }
@@ -330,11 +315,9 @@ Result<void> readSlavesSection(const Table& t, const std::string& source, const 
     Dof dofs[2];
     for (int k = 0; k < 2; ++k) {
       const std::string who = k == 0 ? "slave" : "master";
-      auto node = intAt(t, r, *cols, source, who + " node");
-      if (!node) return node.error();
-      auto code = intAt(t, r, *cols, source, who + " direction");
-      if (!code) return code.error();
-      auto dof = dofFromUff(*node, *code);
+      MOZZI_TRY_ASSIGN(auto node, intAt(t, r, *cols, source, who + " node"));
+      MOZZI_TRY_ASSIGN(auto code, intAt(t, r, *cols, source, who + " direction"));
+      auto dof = dofFromUff(node, code);
       if (!dof) {
         return parseError(who + " direction must be a UFF code +/-1..6", source, t.rowLines[r],
                           static_cast<int>(cols->index.at(who + " direction") + 1));
@@ -418,9 +401,8 @@ Result<MeshDocument> readMeshCsv(std::string_view text, const std::string& sourc
       return parseError("section '" + section.name + "' appears twice", source, std::max(section.line, 1));
     }
     seen[section.name] = section.line;
-    auto parsed = parseTable(section.text, source, section.lineOffset);
-    if (!parsed) return parsed.error();
-    const Table& t = *parsed;
+    MOZZI_TRY_ASSIGN(auto parsed, parseTable(section.text, source, section.lineOffset));
+    const Table& t = parsed;
     if (section.name == "coordinate-systems") {
       if (seen.count("nodes")) {
         return parseError("the coordinate-systems section must come before the nodes", source, section.line);
@@ -441,9 +423,8 @@ Result<MeshDocument> readMeshCsv(std::string_view text, const std::string& sourc
 }
 
 Result<MeshDocument> importMeshCsv(const std::string& path) {
-  auto text = readWholeFile(path);
-  if (!text) return text.error();
-  return readMeshCsv(*text, path);
+  MOZZI_TRY_ASSIGN(auto text, readWholeFile(path));
+  return readMeshCsv(text, path);
 }
 
 Result<void> exportMeshCsv(const MeshDocument& document, const std::string& path) {

@@ -60,9 +60,8 @@ Result<void> writeModalCsv(const ModalTable& table, std::ostream& out) {
 }
 
 Result<ModalTable> readModalCsv(std::string_view text, const std::string& source) {
-  auto parsed = parseTable(text, source);
-  if (!parsed) return parsed.error();
-  const Table& t = *parsed;
+  MOZZI_TRY_ASSIGN(auto parsed, parseTable(text, source));
+  const Table& t = parsed;
   if (!t.kind.empty() && t.kind != "modal") return parseError("this is a '" + t.kind + "' file, not modes", source, 1);
   int freqCol = -1, dampCol = -1;
   double dampFactor = 1.0;  // to viscous ratio zeta
@@ -136,9 +135,8 @@ Result<ModalTable> readModalCsv(std::string_view text, const std::string& source
 }
 
 Result<ModalTable> importModalCsv(const std::string& path) {
-  auto text = readWholeFile(path);
-  if (!text) return text.error();
-  return readModalCsv(*text, path);
+  MOZZI_TRY_ASSIGN(auto text, readWholeFile(path));
+  return readModalCsv(text, path);
 }
 
 Result<void> exportModalCsv(const ModalTable& table, const std::string& path) {

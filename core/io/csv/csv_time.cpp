@@ -53,9 +53,8 @@ Result<void> writeTimeCsv(const TimeTable& table, std::ostream& out) {
 }
 
 Result<TimeTable> readTimeCsv(std::string_view text, const std::string& source) {
-  auto parsed = parseTable(text, source);
-  if (!parsed) return parsed.error();
-  const Table& t = *parsed;
+  MOZZI_TRY_ASSIGN(auto parsed, parseTable(text, source));
+  const Table& t = parsed;
   if (!t.kind.empty() && t.kind != "time-record") {
     return parseError("this is a '" + t.kind + "' file, not a time record", source, 1);
   }
@@ -127,9 +126,8 @@ Result<TimeTable> readTimeCsv(std::string_view text, const std::string& source) 
 }
 
 Result<TimeTable> importTimeCsv(const std::string& path) {
-  auto text = readWholeFile(path);
-  if (!text) return text.error();
-  return readTimeCsv(*text, path);
+  MOZZI_TRY_ASSIGN(auto text, readWholeFile(path));
+  return readTimeCsv(text, path);
 }
 
 Result<void> exportTimeCsv(const TimeTable& table, const std::string& path) {
