@@ -17,11 +17,9 @@ using detail::lower;
 using detail::num;
 using detail::parseError;
 using detail::parseTable;
-using detail::readWholeFile;
 using detail::splitTitle;
 using detail::Table;
 using detail::Title;
-using detail::writeFile;
 
 // --- FRFs ---------------------------------------------------------------------------------
 
@@ -179,14 +177,11 @@ Result<FrfMatrix> readFrfCsv(std::string_view text, const std::string& source) {
 }
 
 Result<FrfMatrix> importFrfCsv(const std::string& path) {
-  MOZZI_TRY_ASSIGN(auto text, readWholeFile(path));
-  return readFrfCsv(text, path);
+  return detail::importWith<FrfMatrix>(path, readFrfCsv);
 }
 
 Result<void> exportFrfCsv(const FrfMatrix& frf, const std::string& path) {
-  std::ostringstream out;
-  if (auto r = writeFrfCsv(frf, out); !r) return makeError(r.error().code, r.error().message, path);
-  return writeFile(path, out.str());
+  return detail::exportWith<FrfMatrix>(frf, path, writeFrfCsv);
 }
 
 }  // namespace mozzi::core::io::csv

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <ostream>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -64,5 +66,21 @@ const char* frfUnitText(FrfType type);
 Result<std::string> readWholeFile(const std::string& path);
 // Temporary file renamed into place (core/io/output_file.h).
 Result<void> writeFile(const std::string& path, const std::string& text);
+
+// A whole file read by one kind's reader (readTimeCsv, ...), with the path as
+// the source its errors name.
+template <class T>
+Result<T> importWith(const std::string& path, Result<T> (*read)(std::string_view, const std::string&)) {
+  MOZZI_TRY_ASSIGN(auto text, readWholeFile(path));
+  return read(text, path);
+}
+
+// One kind's writer (writeTimeCsv, ...) into a file; a refusal names the path.
+template <class T>
+Result<void> exportWith(const T& value, const std::string& path, Result<void> (*write)(const T&, std::ostream&)) {
+  std::ostringstream out;
+  if (auto r = write(value, out); !r) return makeError(r.error().code, r.error().message, path);
+  return writeFile(path, out.str());
+}
 
 }  // namespace mozzi::core::io::csv::detail

@@ -19,12 +19,10 @@ using detail::lower;
 using detail::num;
 using detail::parseError;
 using detail::parseTable;
-using detail::readWholeFile;
 using detail::splitTitle;
 using detail::Table;
 using detail::Title;
 using detail::trim;
-using detail::writeFile;
 
 // --- measurement meshes ----------------------------------------------------------------------
 namespace {
@@ -423,14 +421,11 @@ Result<MeshDocument> readMeshCsv(std::string_view text, const std::string& sourc
 }
 
 Result<MeshDocument> importMeshCsv(const std::string& path) {
-  MOZZI_TRY_ASSIGN(auto text, readWholeFile(path));
-  return readMeshCsv(text, path);
+  return detail::importWith<MeshDocument>(path, readMeshCsv);
 }
 
 Result<void> exportMeshCsv(const MeshDocument& document, const std::string& path) {
-  std::ostringstream out;
-  if (auto r = writeMeshCsv(document, out); !r) return makeError(r.error().code, r.error().message, path);
-  return writeFile(path, out.str());
+  return detail::exportWith<MeshDocument>(document, path, writeMeshCsv);
 }
 
 }  // namespace mozzi::core::io::csv

@@ -16,11 +16,9 @@ using detail::lower;
 using detail::num;
 using detail::parseError;
 using detail::parseTable;
-using detail::readWholeFile;
 using detail::splitTitle;
 using detail::Table;
 using detail::Title;
-using detail::writeFile;
 
 // --- modal tables --------------------------------------------------------------------------
 
@@ -135,14 +133,11 @@ Result<ModalTable> readModalCsv(std::string_view text, const std::string& source
 }
 
 Result<ModalTable> importModalCsv(const std::string& path) {
-  MOZZI_TRY_ASSIGN(auto text, readWholeFile(path));
-  return readModalCsv(text, path);
+  return detail::importWith<ModalTable>(path, readModalCsv);
 }
 
 Result<void> exportModalCsv(const ModalTable& table, const std::string& path) {
-  std::ostringstream out;
-  if (auto r = writeModalCsv(table, out); !r) return makeError(r.error().code, r.error().message, path);
-  return writeFile(path, out.str());
+  return detail::exportWith<ModalTable>(table, path, writeModalCsv);
 }
 
 }  // namespace mozzi::core::io::csv

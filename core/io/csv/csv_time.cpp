@@ -17,11 +17,9 @@ using detail::lower;
 using detail::num;
 using detail::parseError;
 using detail::parseTable;
-using detail::readWholeFile;
 using detail::splitTitle;
 using detail::Table;
 using detail::Title;
-using detail::writeFile;
 
 // --- time records ----------------------------------------------------------------------
 
@@ -126,14 +124,11 @@ Result<TimeTable> readTimeCsv(std::string_view text, const std::string& source) 
 }
 
 Result<TimeTable> importTimeCsv(const std::string& path) {
-  MOZZI_TRY_ASSIGN(auto text, readWholeFile(path));
-  return readTimeCsv(text, path);
+  return detail::importWith<TimeTable>(path, readTimeCsv);
 }
 
 Result<void> exportTimeCsv(const TimeTable& table, const std::string& path) {
-  std::ostringstream out;
-  if (auto r = writeTimeCsv(table, out); !r) return makeError(r.error().code, r.error().message, path);
-  return writeFile(path, out.str());
+  return detail::exportWith<TimeTable>(table, path, writeTimeCsv);
 }
 
 }  // namespace mozzi::core::io::csv
