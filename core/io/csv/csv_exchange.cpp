@@ -200,6 +200,19 @@ Result<void> writeFile(const std::string& path, const std::string& text) {
   return writeOutputFile(path, text);  // temporary file renamed into place (core/io/output_file.h)
 }
 
+Result<Table> parseTableOf(std::string_view text, const std::string& source, const char* kind, const char* what) {
+  MOZZI_TRY_ASSIGN(Table t, parseTable(text, source));
+  if (!t.kind.empty() && t.kind != kind) {
+    return parseError("this is a '" + t.kind + "' file, not " + std::string(what), source, 1);
+  }
+  return t;
+}
+
+Result<void> written(const std::ostream& out) {
+  if (!out) return makeError(ErrorCode::IoError, "cannot write the CSV text", "CSV export");
+  return {};
+}
+
 }  // namespace detail
 
 using detail::lower;
@@ -241,6 +254,40 @@ Result<SiUnit> siUnit(std::string_view text) {
   auto it = kUnits.find(key);
   if (it == kUnits.end()) return makeError(ErrorCode::ParseError, "unknown unit '" + std::string(text) + "'");
   return it->second;
+}
+
+// --- files ----------------------------------------------------------------------------------
+
+Result<TimeTable> importTimeCsv(const std::string& path) {
+  return detail::importWith<TimeTable>(path, readTimeCsv);
+}
+
+Result<FrfMatrix> importFrfCsv(const std::string& path) {
+  return detail::importWith<FrfMatrix>(path, readFrfCsv);
+}
+
+Result<ModalTable> importModalCsv(const std::string& path) {
+  return detail::importWith<ModalTable>(path, readModalCsv);
+}
+
+Result<MeshDocument> importMeshCsv(const std::string& path) {
+  return detail::importWith<MeshDocument>(path, readMeshCsv);
+}
+
+Result<void> exportTimeCsv(const TimeTable& table, const std::string& path) {
+  return detail::exportWith<TimeTable>(table, path, writeTimeCsv);
+}
+
+Result<void> exportFrfCsv(const FrfMatrix& frf, const std::string& path) {
+  return detail::exportWith<FrfMatrix>(frf, path, writeFrfCsv);
+}
+
+Result<void> exportModalCsv(const ModalTable& table, const std::string& path) {
+  return detail::exportWith<ModalTable>(table, path, writeModalCsv);
+}
+
+Result<void> exportMeshCsv(const MeshDocument& document, const std::string& path) {
+  return detail::exportWith<MeshDocument>(document, path, writeMeshCsv);
 }
 
 }  // namespace mozzi::core::io::csv

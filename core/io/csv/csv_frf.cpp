@@ -10,16 +10,7 @@
 
 namespace mozzi::core::io::csv {
 
-using detail::frfUnit;
-using detail::frfUnitText;
-using detail::kMagic;
-using detail::lower;
-using detail::num;
-using detail::parseError;
-using detail::parseTable;
-using detail::splitTitle;
-using detail::Table;
-using detail::Title;
+using namespace detail;  // NOLINT(google-build-using-namespace): the exchange's private helpers
 
 // --- FRFs ---------------------------------------------------------------------------------
 
@@ -51,14 +42,11 @@ Result<void> writeFrfCsv(const FrfMatrix& frf, std::ostream& out) {
     }
     out << '\n';
   }
-  if (!out) return makeError(ErrorCode::IoError, "cannot write the CSV text", "CSV export");
-  return {};
+  return written(out);
 }
 
 Result<FrfMatrix> readFrfCsv(std::string_view text, const std::string& source) {
-  MOZZI_TRY_ASSIGN(auto parsed, parseTable(text, source));
-  const Table& t = parsed;
-  if (!t.kind.empty() && t.kind != "frf") return parseError("this is a '" + t.kind + "' file, not FRFs", source, 1);
+  MOZZI_TRY_ASSIGN(const Table t, parseTableOf(text, source, "frf", "FRFs"));
   const Title f = splitTitle(t.titles[0]);
   auto fUnit = siUnit(f.unit.value_or(""));
   if (lower(f.name) != "frequency" || !fUnit || fUnit->quantity != "frequency") {
@@ -174,14 +162,6 @@ Result<FrfMatrix> readFrfCsv(std::string_view text, const std::string& source) {
   if (auto v = frf.validate(); !v)
     return parseError(v.error().message + " (" + v.error().where + ")", source, t.headerLine);
   return frf;
-}
-
-Result<FrfMatrix> importFrfCsv(const std::string& path) {
-  return detail::importWith<FrfMatrix>(path, readFrfCsv);
-}
-
-Result<void> exportFrfCsv(const FrfMatrix& frf, const std::string& path) {
-  return detail::exportWith<FrfMatrix>(frf, path, writeFrfCsv);
 }
 
 }  // namespace mozzi::core::io::csv

@@ -41,6 +41,11 @@ struct Table {
 Error parseError(const std::string& message, const std::string& source, int line, int column = 0);
 std::vector<std::string_view> splitFields(std::string_view line, char sep);
 Result<Table> parseTable(std::string_view text, const std::string& source, int lineOffset = 0);
+// parseTable, then a file of another kind refused: "this is a '<kind>' file,
+// not <what>" (a file without "# mozzi-csv 1, <kind>" is taken as it is).
+Result<Table> parseTableOf(std::string_view text, const std::string& source, const char* kind, const char* what);
+// What a writer returns: an error when the stream failed.
+Result<void> written(const std::ostream& out);
 
 // "accel 21:+Z [m/s^2]" -> name "accel 21:+Z", unit "m/s^2". A title without
 // brackets has no unit (error for the caller to word).

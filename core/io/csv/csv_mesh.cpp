@@ -14,15 +14,7 @@
 
 namespace mozzi::core::io::csv {
 
-using detail::kMagic;
-using detail::lower;
-using detail::num;
-using detail::parseError;
-using detail::parseTable;
-using detail::splitTitle;
-using detail::Table;
-using detail::Title;
-using detail::trim;
+using namespace detail;  // NOLINT(google-build-using-namespace): the exchange's private helpers
 
 // --- measurement meshes ----------------------------------------------------------------------
 namespace {
@@ -168,8 +160,7 @@ Result<void> writeMeshCsv(const MeshDocument& document, std::ostream& out) {
       }
     }
   }
-  if (!out) return makeError(ErrorCode::IoError, "cannot write the CSV text", "CSV export");
-  return {};
+  return written(out);
 }
 
 namespace {
@@ -418,14 +409,6 @@ Result<MeshDocument> readMeshCsv(std::string_view text, const std::string& sourc
   }
   if (mesh.nodes.empty()) return parseError("no nodes (a nodes section or a node, x, y, z table)", source, 1);
   return doc;
-}
-
-Result<MeshDocument> importMeshCsv(const std::string& path) {
-  return detail::importWith<MeshDocument>(path, readMeshCsv);
-}
-
-Result<void> exportMeshCsv(const MeshDocument& document, const std::string& path) {
-  return detail::exportWith<MeshDocument>(document, path, writeMeshCsv);
 }
 
 }  // namespace mozzi::core::io::csv

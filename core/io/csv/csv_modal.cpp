@@ -11,14 +11,7 @@
 
 namespace mozzi::core::io::csv {
 
-using detail::kMagic;
-using detail::lower;
-using detail::num;
-using detail::parseError;
-using detail::parseTable;
-using detail::splitTitle;
-using detail::Table;
-using detail::Title;
+using namespace detail;  // NOLINT(google-build-using-namespace): the exchange's private helpers
 
 // --- modal tables --------------------------------------------------------------------------
 
@@ -53,14 +46,11 @@ Result<void> writeModalCsv(const ModalTable& table, std::ostream& out) {
     }
     out << '\n';
   }
-  if (!out) return makeError(ErrorCode::IoError, "cannot write the CSV text", "CSV export");
-  return {};
+  return written(out);
 }
 
 Result<ModalTable> readModalCsv(std::string_view text, const std::string& source) {
-  MOZZI_TRY_ASSIGN(auto parsed, parseTable(text, source));
-  const Table& t = parsed;
-  if (!t.kind.empty() && t.kind != "modal") return parseError("this is a '" + t.kind + "' file, not modes", source, 1);
+  MOZZI_TRY_ASSIGN(const Table t, parseTableOf(text, source, "modal", "modes"));
   int freqCol = -1, dampCol = -1;
   double dampFactor = 1.0;  // to viscous ratio zeta
   double freqFactor = 1.0;
@@ -130,14 +120,6 @@ Result<ModalTable> readModalCsv(std::string_view text, const std::string& source
     out.modes.push_back(std::move(m));
   }
   return out;
-}
-
-Result<ModalTable> importModalCsv(const std::string& path) {
-  return detail::importWith<ModalTable>(path, readModalCsv);
-}
-
-Result<void> exportModalCsv(const ModalTable& table, const std::string& path) {
-  return detail::exportWith<ModalTable>(table, path, writeModalCsv);
 }
 
 }  // namespace mozzi::core::io::csv

@@ -11,15 +11,7 @@
 
 namespace mozzi::core::io::csv {
 
-using detail::dofInName;
-using detail::kMagic;
-using detail::lower;
-using detail::num;
-using detail::parseError;
-using detail::parseTable;
-using detail::splitTitle;
-using detail::Table;
-using detail::Title;
+using namespace detail;  // NOLINT(google-build-using-namespace): the exchange's private helpers
 
 // --- time records ----------------------------------------------------------------------
 
@@ -46,16 +38,11 @@ Result<void> writeTimeCsv(const TimeTable& table, std::ostream& out) {
     for (Eigen::Index c = 0; c < table.samples.cols(); ++c) out << ',' << num(table.samples(r, c));
     out << '\n';
   }
-  if (!out) return makeError(ErrorCode::IoError, "cannot write the CSV text", "CSV export");
-  return {};
+  return written(out);
 }
 
 Result<TimeTable> readTimeCsv(std::string_view text, const std::string& source) {
-  MOZZI_TRY_ASSIGN(auto parsed, parseTable(text, source));
-  const Table& t = parsed;
-  if (!t.kind.empty() && t.kind != "time-record") {
-    return parseError("this is a '" + t.kind + "' file, not a time record", source, 1);
-  }
+  MOZZI_TRY_ASSIGN(const Table t, parseTableOf(text, source, "time-record", "a time record"));
   TimeTable out;
   // Columns: optional leading time column, then channels.
   const Title firstTitle = splitTitle(t.titles[0]);
@@ -121,14 +108,6 @@ Result<TimeTable> readTimeCsv(std::string_view text, const std::string& source) 
   if (!rate) return parseError("no time column and no '# sample_rate_hz = ...' line", source, t.headerLine);
   out.sampleRateHz = *rate;
   return out;
-}
-
-Result<TimeTable> importTimeCsv(const std::string& path) {
-  return detail::importWith<TimeTable>(path, readTimeCsv);
-}
-
-Result<void> exportTimeCsv(const TimeTable& table, const std::string& path) {
-  return detail::exportWith<TimeTable>(table, path, writeTimeCsv);
 }
 
 }  // namespace mozzi::core::io::csv
