@@ -132,16 +132,18 @@ QWidget* createFrfPage(const PageContext& ctx) {
 }  // namespace
 
 void registerBuiltinPages(views::PageRegistry& registry) {
-  registry.add(PageSpec{QStringLiteral("overview"), QT_TRANSLATE_NOOP("Pages", "Overview"),
-                        QT_TRANSLATE_NOOP("Pages", "The open project: file, schema, specimens"), QString(),
-                        PageMenu::Pages, [](const ProjectItem& item) { return item.kind == RecordKind::Project; },
-                        [](const PageContext& ctx) -> QWidget* {
-                          auto* page = new views::ProjectOverview(ctx.parent);
-                          page->setObjectName(QStringLiteral("overviewTab"));
-                          page->setModel(ctx.model);
-                          return page;
-                        },
-                        /*singleton=*/true, /*openAtStart=*/true, nullptr});
+  registry.add(
+      PageSpec{QStringLiteral("overview"), QT_TRANSLATE_NOOP("Pages", "Overview"),
+               QT_TRANSLATE_NOOP("Pages", "The open project: where to start, its specimens and what each holds"),
+               QString(), PageMenu::Pages, [](const ProjectItem& item) { return item.kind == RecordKind::Project; },
+               [](const PageContext& ctx) -> QWidget* {
+                 auto* page = new views::ProjectOverview(ctx.parent);
+                 page->setObjectName(QStringLiteral("overviewTab"));
+                 page->setPages(ctx.registry, ctx.openPage);
+                 page->setModel(ctx.model);
+                 return page;
+               },
+               /*singleton=*/true, /*openAtStart=*/true, nullptr});
 
   registry.add(PageSpec{QStringLiteral("scene"), QT_TRANSLATE_NOOP("Pages", "3-D View"),
                         QT_TRANSLATE_NOOP("Pages", "The selected specimen's measurement mesh in 3-D"), QString(),
@@ -188,8 +190,8 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                         [](const PageContext& ctx) -> QWidget* {
                           auto* page = new views::StabilityPage(ctx.parent, ctx.jobs);
                           page->setObjectName(QStringLiteral("stabilityTab"));
-                          page->setProjectModel(ctx.model);  // the forks the project keeps
-                          page->run();                       // the benchmark bicycle, 0 to 10 m/s: worth a look at once
+                          page->setProjectModel(ctx.model);  // the forks and sweeps the project keeps
+                          page->openShowing();  // the last kept sweep, or the benchmark bicycle 0 to 10 m/s
                           return page;
                         },
                         /*singleton=*/true, /*openAtStart=*/false, nullptr});
@@ -361,7 +363,8 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                         [](const PageContext& ctx) -> QWidget* {
                           auto* page = new views::WheelchairPage(ctx.parent, ctx.jobs);
                           page->setObjectName(QStringLiteral("wheelchairTab"));
-                          page->run();  // the cornering-stiffness slalom of Figure 58: worth a look at once
+                          page->setProjectModel(ctx.model);  // the manoeuvres the project keeps
+                          page->openShowing();  // the last kept one, or the cornering-stiffness slalom of Figure 58
                           return page;
                         },
                         /*singleton=*/true, /*openAtStart=*/false, nullptr});

@@ -288,7 +288,7 @@ void MainWindow::createDocks() {
 
 // The tree wide enough for specimen names, the log a few lines high.
 void MainWindow::applyDefaultDockSizes() {
-  resizeDocks({projectDock_}, {fontMetrics().averageCharWidth() * 36}, Qt::Horizontal);
+  resizeDocks({projectDock_}, {fontMetrics().averageCharWidth() * 42}, Qt::Horizontal);
   resizeDocks({logDock_}, {fontMetrics().lineSpacing() * 7}, Qt::Vertical);
 }
 

@@ -93,3 +93,27 @@ class [[nodiscard]] Result<void> {
 };
 
 }  // namespace mozzi::core
+
+// Error propagation, the one way (issue 24). Inside a function returning any
+// Result<U>:
+//   MOZZI_TRY(expr);                 // expr is a Result<T>; on error, return it
+//   MOZZI_TRY_ASSIGN(decl, expr);    // on success, `decl = std::move(value)`
+// e.g. `MOZZI_TRY(tx.begun());` and
+//      `MOZZI_TRY_ASSIGN(const std::int64_t id, stmt.insert("cannot store the hit", where));`
+// Each evaluates expr exactly once. MOZZI_TRY_ASSIGN declares a hidden local
+// named after the line, so it is a statement, not an expression: one per line.
+// Where the error needs more context (a different code or `where`), write the
+// test by hand.
+#define MOZZI_TRY(...)                                                                               \
+  do {                                                                                               \
+    if (auto mozziTryResult_ = (__VA_ARGS__); !mozziTryResult_.ok()) return mozziTryResult_.error(); \
+  } while (false)
+
+#define MOZZI_TRY_CONCAT_INNER_(a, b) a##b
+#define MOZZI_TRY_CONCAT_(a, b) MOZZI_TRY_CONCAT_INNER_(a, b)
+#define MOZZI_TRY_ASSIGN_IMPL_(tmp, decl, ...) \
+  auto tmp = (__VA_ARGS__);                    \
+  if (!tmp.ok()) return tmp.error();           \
+  decl = std::move(tmp).value()
+#define MOZZI_TRY_ASSIGN(decl, ...) \
+  MOZZI_TRY_ASSIGN_IMPL_(MOZZI_TRY_CONCAT_(mozziTryValue_, __LINE__), decl, __VA_ARGS__)

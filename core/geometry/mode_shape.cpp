@@ -247,6 +247,52 @@ Result<ShapeField> shapeField(const io::MeshDocument& document, const std::vecto
   return field;
 }
 
+Result<ShapeReadings> shapeReadings(const io::MeshDocument& document, const std::vector<Dof>& dofs,
+                                    const ComplexVectorRef& values) {
+  if (static_cast<Eigen::Index>(dofs.size()) != values.size()) {
+    return makeError(ErrorCode::InvalidArgument,
+                     std::to_string(dofs.size()) + " DOFs but " + std::to_string(values.size()) + " shape values",
+                     "mode shape");
+  }
+  const auto& mesh = document.mesh;
+  auto points = nodePoints(mesh);
+  if (!points) return points.error();
+  std::unordered_map<int, Eigen::Index> row;
+  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(mesh.nodes.size()); ++i) row[mesh.nodes[i].label] = i;
+  std::map<int, const StoredCoordinateSystem*> systems;
+  for (const auto& cs : mesh.coordinateSystems) systems[cs.label] = &cs;
+  ShapeReadings out;
+  std::vector<Vector3> at, along;
+  std::vector<Complex> v;
+  std::map<Key, bool> seen;
+  for (std::size_t k = 0; k < dofs.size(); ++k) {
+    const Dof& d = dofs[k];
+    const auto it = row.find(d.node);
+    if (d.isRotation() || it == row.end() || !seen.emplace(Key{d.node, axisOf(d)}, true).second) continue;
+    const Complex value = values[static_cast<Eigen::Index>(k)];
+    if (!std::isfinite(value.real()) || !std::isfinite(value.imag()))
+      return makeError(ErrorCode::InvalidArgument, "shape value is not finite", "DOF " + formatDof(d));
+    const Vector3 p = points->row(it->second).transpose();
+    const auto& node = mesh.nodes[static_cast<std::size_t>(it->second)];
+    const auto cs = systems.find(node.displacementCs);
+    const Matrix3 axes = localAxes(cs == systems.end() ? nullptr : cs->second, p);
+    out.dofs.push_back(d);
+    at.push_back(p);
+    along.push_back(axes.col(axisOf(d)));
+    v.push_back(d.negative ? -value : value);
+  }
+  const auto m = static_cast<Eigen::Index>(at.size());
+  out.points.resize(m, 3);
+  out.directions.resize(m, 3);
+  out.values.resize(m);
+  for (Eigen::Index k = 0; k < m; ++k) {
+    out.points.row(k) = at[static_cast<std::size_t>(k)].transpose();
+    out.directions.row(k) = along[static_cast<std::size_t>(k)].transpose();
+    out.values(k) = v[static_cast<std::size_t>(k)];
+  }
+  return out;
+}
+
 Vector peakMagnitudes(const NodeDisplacements& u) {
   Vector peak(u.rows());
   for (Eigen::Index i = 0; i < u.rows(); ++i) {

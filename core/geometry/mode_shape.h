@@ -54,6 +54,21 @@ Result<NodePoints> nodePoints(const io::StoredMesh& mesh);
 Result<ShapeField> shapeField(const io::MeshDocument& document, const std::vector<Dof>& dofs,
                               const ComplexVectorRef& values, const FieldOptions& options = {});
 
+// The measured translations of a shape, one reading per DOF, for a rigid-twist
+// fit (core/stiffness/screw_axis.h, screwAxisFromReadingPhasors; thesis §1.5):
+// the node's global position, the global unit direction of the DOF's positive
+// sense in the node's displacement system, and the value (sign of a negative
+// DOF folded in). Rotations, slaved and interpolated values and DOFs on nodes
+// the mesh lacks are left out; of two values of one direction the first is kept.
+struct ShapeReadings {
+  std::vector<Dof> dofs;  // the DOF each reading came from
+  Matrix points;          // m x 3 [m]
+  Matrix directions;      // m x 3, unit
+  ComplexVector values;   // m
+};
+Result<ShapeReadings> shapeReadings(const io::MeshDocument& document, const std::vector<Dof>& dofs,
+                                    const ComplexVectorRef& values);
+
 // Largest displacement magnitude of each node over a cycle:
 // max_theta |Re(u) sin(theta) + Im(u) cos(theta)|; with a = Re u, b = Im u,
 // = sqrt((|a|^2 + |b|^2)/2 + sqrt(((|a|^2 - |b|^2)/2)^2 + (a.b)^2)).

@@ -1,5 +1,5 @@
 // The campaign's roving schedule and redo (schema 2, issue 15): separate from
-// project_data.cpp so the campaign engine's storage stays in one place.
+// project_hits.cpp so the campaign engine's storage stays in one place.
 #include <sqlite3.h>
 
 #include <set>

@@ -89,7 +89,7 @@ std::optional<Dof> columnOptionalDof(sqlite3_stmt* stmt, int nodeColumn, int dir
   return *dof;
 }
 
-Statement::Statement(sqlite3* db, const char* sql) {
+Statement::Statement(sqlite3* db, const char* sql) : db_(db) {
   if (sqlite3_prepare_v2(db, sql, -1, &stmt_, nullptr) != SQLITE_OK) {
     sqlite3_finalize(stmt_);
     stmt_ = nullptr;
@@ -138,6 +138,23 @@ void Statement::reset() {
   if (!stmt_) return;
   sqlite3_reset(stmt_);
   sqlite3_clear_bindings(stmt_);
+}
+
+Result<void> Statement::run(const std::string& what, const std::string& where) {
+  if (step() != SQLITE_DONE) return sqliteError(db_, what, where);
+  return {};
+}
+
+Result<std::int64_t> Statement::insert(const std::string& what, const std::string& where) {
+  MOZZI_TRY(run(what, where));
+  return static_cast<std::int64_t>(sqlite3_last_insert_rowid(db_));
+}
+
+Result<void> Statement::single(const std::string& what, const std::string& absent, const std::string& where) {
+  const int rc = step();
+  if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, absent, where);
+  if (rc != SQLITE_ROW) return sqliteError(db_, what, where);
+  return {};
 }
 
 Transaction::Transaction(sqlite3* db, std::string where) : db_(db), where_(std::move(where)) {

@@ -47,7 +47,7 @@ StoredCampaign campaignFromRow(sqlite3_stmt* row);
 Result<void> insertCampaignPoints(sqlite3* db, std::int64_t campaignId, const std::vector<StoredCampaignPoint>& points,
                                   const std::string& where);
 
-// CRC-32 of the content of an empty mesh (project_data.cpp, "Checksums"), the
+// CRC-32 of the content of an empty mesh (project_data.cpp; docs/formats/project.md, "Checksums"), the
 // value a new specimen starts with.
 std::uint32_t emptyMeshChecksum();
 
@@ -75,7 +75,18 @@ class Statement {
   int step();
   void reset();
 
+  // Steps a statement that returns no row (INSERT, UPDATE, DELETE). Anything
+  // but SQLITE_DONE is an error "<what>: <SQLite's message>" at `where`, so
+  // `what` names the statement ("cannot store the hit").
+  Result<void> run(const std::string& what, const std::string& where);
+  // run(), then the rowid of the row the INSERT made.
+  Result<std::int64_t> insert(const std::string& what, const std::string& where);
+  // Steps to the one row a lookup by key returns: NotFound "<absent>" when
+  // there is none, an error naming `what` when SQLite fails.
+  Result<void> single(const std::string& what, const std::string& absent, const std::string& where);
+
  private:
+  sqlite3* db_ = nullptr;
   sqlite3_stmt* stmt_ = nullptr;
 };
 

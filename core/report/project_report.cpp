@@ -10,6 +10,7 @@
 #include "core/common/frf_type.h"
 #include "core/common/text.h"
 #include "core/report/gap_report.h"
+#include "core/report/stability_report.h"
 
 namespace mozzi::core::report {
 namespace {
@@ -416,7 +417,7 @@ Result<bool> gapSection(const Context& c, Section& s) {
   auto analyses = c.store.analyses();
   if (!analyses) return analyses.error();
   for (const auto& a : *analyses) {
-    if (!c.wanted(a.specimenId) || !isGapAnalysis(a)) continue;
+    if (!c.wanted(a.specimenId) || !isGapAnalysis(a) || hasOwnStabilitySection(a.kind)) continue;
     for (auto& block : storedAnalysisBlocks(a, c.t)) s.blocks.push_back(std::move(block));
   }
   return !s.blocks.empty();
@@ -439,6 +440,11 @@ const std::vector<SectionEntry>& sectionTable() {
       {"stiffness", "Stiffness tests", stiffnessSection},
       {"tyre", "Tyre tests", tyreSection},
       {"gap", "Gap diagnoses", gapSection},
+      // core/report/stability_report.cpp
+      {"stability", "Stability against speed",
+       [](const Context& c, Section& s) { return stabilitySection(c.store, c.specimenNames, s); }},
+      {"wheelchair", "Wheelchair manoeuvres",
+       [](const Context& c, Section& s) { return wheelchairSection(c.store, c.specimenNames, s); }},
   };
   return table;
 }

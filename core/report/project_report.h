@@ -18,7 +18,7 @@
 
 namespace mozzi::core::report {
 
-// Section keys in report order: title, frf, modal, stiffness, tyre, gap.
+// Section keys in report order: title, frf, modal, stiffness, tyre, gap, stability, wheelchair.
 const std::vector<std::string>& reportSectionKeys();
 // The heading of a section key ("Project and specimens", ...) in `language`;
 // empty for an unknown key.

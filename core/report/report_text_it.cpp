@@ -17,6 +17,8 @@ const char* italianText(const std::string& english) {
       {"Stiffness tests", "Prove di rigidezza"},
       {"Tyre tests", "Prove sugli pneumatici"},
       {"Gap diagnoses", "Diagnosi dello scarto modello-prova"},
+      {"Stability against speed", "Stabilità in funzione della velocità"},
+      {"Wheelchair manoeuvres", "Manovre della carrozzina"},
       // Title block
       {"specimen %1", "provino %1"},
       {"Project %1, created %2 by Mozzi %3, schema %4.", "Progetto %1, creato il %2 da Mozzi %3, schema %4."},

@@ -47,6 +47,11 @@ struct SharpParameters {
 // malformed parameter and the line.
 Result<SharpParameters> loadSharpParameters(const std::string& path);
 
+// The same "standard machine" built in (sharp1971.cpp): the value_si column of
+// shared/data/motorcycle/sharp1971-parameters.csv, typed in, so the demo
+// project and the report need no file (a test checks the two agree).
+SharpParameters sharp1971Parameters();
+
 // Thesis §4.2, Table 12: lumped model of the enduro fork's lateral bending.
 struct LumpedForkModel {
   std::string name;

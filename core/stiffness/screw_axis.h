@@ -46,6 +46,14 @@ struct ScrewAxis {
   double distance(const Vector3& q) const;
 };
 
+// The stretch of the axis drawn through a body centred at `centre`: from
+// p0 - halfLength u to p0 + halfLength u, p0 the axis point nearest `centre`.
+struct AxisEnds {
+  Vector3 from = Vector3::Zero();
+  Vector3 to = Vector3::Zero();
+};
+AxisEnds axisSegment(const ScrewAxis& axis, const Vector3& centre, double halfLength);
+
 // points: n x 3 [m]; displacements: n x 3 [m]. Errors: fewer than 3 points,
 // shape mismatch, non-finite values, collinear or coincident points (the
 // rotation about their line is unobservable), rotation not resolved.
@@ -56,5 +64,20 @@ Result<ScrewAxis> screwAxis(const Matrix& points, const Matrix& displacements, c
 // real part is used; the remaining imaginary part is reported as phaseResidual.
 Result<ScrewAxis> screwAxisFromPhasors(const Matrix& points, const ComplexMatrix& phasors,
                                        const ScrewAxisOptions& options = {});
+
+// The rigid twist fitted to scalar readings, each the displacement of point
+// p_k along the unit direction e_k (a mode shape's translational DOFs: one
+// accelerometer axis at a node), v_k = e_k . (d_O + w x p_k), eq. 15 projected
+// on e_k; least squares over the m >= 6 readings. points, directions: m x 3
+// (directions are normalised); values: m. Errors: sizes, non-finite values, a
+// zero direction, readings that leave a rotation or translation unseen
+// (collinear points, too few directions), rotation not resolved.
+Result<ScrewAxis> screwAxisFromReadings(const Matrix& points, const Matrix& directions, const Vector& values,
+                                        const ScrewAxisOptions& options = {});
+
+// Same from complex readings (a complex mode shape): the common phase is
+// removed as in screwAxisFromPhasors and the rest reported as phaseResidual.
+Result<ScrewAxis> screwAxisFromReadingPhasors(const Matrix& points, const Matrix& directions,
+                                              const ComplexVector& values, const ScrewAxisOptions& options = {});
 
 }  // namespace mozzi::core::stiffness

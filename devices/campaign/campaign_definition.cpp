@@ -301,43 +301,38 @@ class Reader {
   std::string path_;
 };
 
-#define MOZZI_TRY(var, expr)            \
-  auto var##_r = (expr);                \
-  if (!var##_r) return var##_r.error(); \
-  auto var = std::move(*var##_r)
-
 core::Result<ChannelAssignment> channelFromJson(const json& j, const std::string& path) {
   Reader r(j, path);
   ChannelAssignment c;
-  MOZZI_TRY(input, r.integer("input"));
+  MOZZI_TRY_ASSIGN(auto input, r.integer("input"));
   if (input < 0 || input > 255) return makeError(ErrorCode::ParseError, "input out of 0..255", r.at("input"));
   c.input = static_cast<int>(input);
-  MOZZI_TRY(name, r.text("name", std::string()));
+  MOZZI_TRY_ASSIGN(auto name, r.text("name", std::string()));
   c.name = name;
-  MOZZI_TRY(kind, r.text("kind"));
-  MOZZI_TRY(k, parseTransducerKind(kind, r.at("kind")));
+  MOZZI_TRY_ASSIGN(auto kind, r.text("kind"));
+  MOZZI_TRY_ASSIGN(auto k, parseTransducerKind(kind, r.at("kind")));
   c.transducer.kind = k;
-  MOZZI_TRY(model, r.text("model", std::string()));
+  MOZZI_TRY_ASSIGN(auto model, r.text("model", std::string()));
   c.transducer.model = model;
-  MOZZI_TRY(serial, r.text("serial", std::string()));
+  MOZZI_TRY_ASSIGN(auto serial, r.text("serial", std::string()));
   c.transducer.serial = serial;
-  MOZZI_TRY(sens, r.number("sensitivity_mv_per_unit"));
+  MOZZI_TRY_ASSIGN(auto sens, r.number("sensitivity_mv_per_unit"));
   c.transducer.sensitivityMvPerUnit = sens;
-  MOZZI_TRY(unit, r.text("unit", std::string()));
+  MOZZI_TRY_ASSIGN(auto unit, r.text("unit", std::string()));
   c.transducer.unit = unit;
-  MOZZI_TRY(iepe, r.boolean("iepe", false));
+  MOZZI_TRY_ASSIGN(auto iepe, r.boolean("iepe", false));
   c.transducer.iepe = iepe;
-  MOZZI_TRY(date, r.text("calibration_date", std::string()));
+  MOZZI_TRY_ASSIGN(auto date, r.text("calibration_date", std::string()));
   c.calibrationDate = date;
-  MOZZI_TRY(range, r.integer("range_code", 0));
+  MOZZI_TRY_ASSIGN(auto range, r.integer("range_code", 0));
   if (range < 0 || range > 255) return makeError(ErrorCode::ParseError, "range code out of 0..255", r.at("range_code"));
   c.rangeCode = static_cast<std::uint8_t>(range);
-  MOZZI_TRY(gain, r.number("conditioner_gain", 1.0));
+  MOZZI_TRY_ASSIGN(auto gain, r.number("conditioner_gain", 1.0));
   c.conditionerGain = gain;
-  MOZZI_TRY(roving, r.boolean("roving", false));
+  MOZZI_TRY_ASSIGN(auto roving, r.boolean("roving", false));
   c.roving = roving;
   if (!c.roving) {
-    MOZZI_TRY(dof, r.dof("dof"));
+    MOZZI_TRY_ASSIGN(auto dof, r.dof("dof"));
     c.dof = dof;
   }
   return c;
@@ -348,18 +343,18 @@ core::Result<ChannelAssignment> channelFromJson(const json& j, const std::string
 core::Result<CampaignDefinition> definitionFromJson(const json& j) {
   Reader r(j, "campaign");
   CampaignDefinition d;
-  MOZZI_TRY(format, r.text("format"));
+  MOZZI_TRY_ASSIGN(auto format, r.text("format"));
   if (format != "mozzi-campaign")
     return makeError(ErrorCode::ParseError, "not a campaign definition (format '" + format + "')", r.at("format"));
-  MOZZI_TRY(version, r.integer("version"));
+  MOZZI_TRY_ASSIGN(auto version, r.integer("version"));
   if (version != 1)
     return makeError(ErrorCode::Unsupported, "campaign definition version " + std::to_string(version) + " (reads 1)",
                      r.at("version"));
-  MOZZI_TRY(key, r.text("specimen_key", std::string()));
+  MOZZI_TRY_ASSIGN(auto key, r.text("specimen_key", std::string()));
   d.specimenKey = key;
-  MOZZI_TRY(mesh, r.text("mesh_template", std::string()));
+  MOZZI_TRY_ASSIGN(auto mesh, r.text("mesh_template", std::string()));
   d.meshTemplate = mesh;
-  MOZZI_TRY(points, r.field("points"));
+  MOZZI_TRY_ASSIGN(auto points, r.field("points"));
   if (!points->is_array()) return makeError(ErrorCode::ParseError, "expected an array of DOF labels", r.at("points"));
   for (std::size_t i = 0; i < points->size(); ++i) {
     const std::string where = r.at("points") + "[" + std::to_string(i) + "]";
@@ -368,13 +363,13 @@ core::Result<CampaignDefinition> definitionFromJson(const json& j) {
     if (!p) return makeError(ErrorCode::ParseError, p.error().message, where);
     d.points.push_back(*p);
   }
-  MOZZI_TRY(constraint, r.field("constraint"));
+  MOZZI_TRY_ASSIGN(auto constraint, r.field("constraint"));
   {
     Reader c(*constraint, r.at("constraint"));
-    MOZZI_TRY(kind, c.text("kind"));
-    MOZZI_TRY(k, parseConstraintKind(kind));
+    MOZZI_TRY_ASSIGN(auto kind, c.text("kind"));
+    MOZZI_TRY_ASSIGN(auto k, parseConstraintKind(kind));
     d.constraint.kind = k;
-    MOZZI_TRY(nodes, c.field("clamped_nodes", false));
+    MOZZI_TRY_ASSIGN(auto nodes, c.field("clamped_nodes", false));
     if (nodes) {
       if (!nodes->is_array()) return makeError(ErrorCode::ParseError, "expected node labels", c.at("clamped_nodes"));
       for (const auto& n : *nodes) {
@@ -383,60 +378,60 @@ core::Result<CampaignDefinition> definitionFromJson(const json& j) {
         d.constraint.clampedNodes.push_back(n.get<int>());
       }
     }
-    MOZZI_TRY(desc, c.text("description", std::string()));
+    MOZZI_TRY_ASSIGN(auto desc, c.text("description", std::string()));
     d.constraint.description = desc;
   }
-  MOZZI_TRY(excitation, r.text("excitation"));
-  MOZZI_TRY(ex, parseExcitationKind(excitation));
+  MOZZI_TRY_ASSIGN(auto excitation, r.text("excitation"));
+  MOZZI_TRY_ASSIGN(auto ex, parseExcitationKind(excitation));
   d.excitation = ex;
-  MOZZI_TRY(fixed, r.field("fixed_point", false));
+  MOZZI_TRY_ASSIGN(auto fixed, r.field("fixed_point", false));
   if (fixed) {
-    MOZZI_TRY(fp, r.dof("fixed_point"));
+    MOZZI_TRY_ASSIGN(auto fp, r.dof("fixed_point"));
     d.fixedPoint = fp;
   }
-  MOZZI_TRY(channels, r.field("channels"));
+  MOZZI_TRY_ASSIGN(auto channels, r.field("channels"));
   if (!channels->is_array()) return makeError(ErrorCode::ParseError, "expected an array", r.at("channels"));
   for (std::size_t i = 0; i < channels->size(); ++i) {
-    MOZZI_TRY(c, channelFromJson((*channels)[i], r.at("channels") + "[" + std::to_string(i) + "]"));
+    MOZZI_TRY_ASSIGN(auto c, channelFromJson((*channels)[i], r.at("channels") + "[" + std::to_string(i) + "]"));
     d.channels.push_back(std::move(c));
   }
-  MOZZI_TRY(acq, r.field("acquisition"));
+  MOZZI_TRY_ASSIGN(auto acq, r.field("acquisition"));
   {
     Reader a(*acq, r.at("acquisition"));
-    MOZZI_TRY(fs, a.number("sample_rate_hz"));
-    MOZZI_TRY(len, a.number("record_s"));
-    MOZZI_TRY(pre, a.number("pre_trigger_fraction", 0.1));
-    MOZZI_TRY(level, a.number("trigger_level"));
+    MOZZI_TRY_ASSIGN(auto fs, a.number("sample_rate_hz"));
+    MOZZI_TRY_ASSIGN(auto len, a.number("record_s"));
+    MOZZI_TRY_ASSIGN(auto pre, a.number("pre_trigger_fraction", 0.1));
+    MOZZI_TRY_ASSIGN(auto level, a.number("trigger_level"));
     d.acquisition = AcquisitionSettings{fs, len, pre, level};
   }
-  MOZZI_TRY(hits, r.integer("hits_per_point"));
+  MOZZI_TRY_ASSIGN(auto hits, r.integer("hits_per_point"));
   if (hits < 1 || hits > 1000)
     return makeError(ErrorCode::ParseError, "hits per point must be in 1..1000", r.at("hits_per_point"));
   d.hitsPerPoint = static_cast<int>(hits);
-  MOZZI_TRY(windows, r.field("windows", false));
+  MOZZI_TRY_ASSIGN(auto windows, r.field("windows", false));
   if (windows) {
     Reader w(*windows, r.at("windows"));
-    MOZZI_TRY(fw, w.number("force_width_s", 0.0));
-    MOZZI_TRY(ft, w.number("force_taper_s", 0.0));
-    MOZZI_TRY(tau, w.number("exponential_tau_s", 0.0));
+    MOZZI_TRY_ASSIGN(auto fw, w.number("force_width_s", 0.0));
+    MOZZI_TRY_ASSIGN(auto ft, w.number("force_taper_s", 0.0));
+    MOZZI_TRY_ASSIGN(auto tau, w.number("exponential_tau_s", 0.0));
     d.windows = WindowSettings{fw, ft, tau};
   }
-  MOZZI_TRY(estimator, r.text("estimator", std::string("H1")));
+  MOZZI_TRY_ASSIGN(auto estimator, r.text("estimator", std::string("H1")));
   auto est = core::signal::parseFrfEstimator(estimator);
   if (!est) return makeError(ErrorCode::ParseError, est.error().message, r.at("estimator"));
   d.estimator = *est;
-  MOZZI_TRY(fmax, r.number("frf_max_hz", 0.0));
+  MOZZI_TRY_ASSIGN(auto fmax, r.number("frf_max_hz", 0.0));
   d.frfMaxHz = fmax;
-  MOZZI_TRY(rules, r.field("rules", false));
+  MOZZI_TRY_ASSIGN(auto rules, r.field("rules", false));
   if (rules) {
     Reader q(*rules, r.at("rules"));
-    MOZZI_TRY(dh, q.boolean("double_hit", true));
-    MOZZI_TRY(ov, q.boolean("overload", true));
-    MOZZI_TRY(minF, q.number("min_peak_force_n", 0.0));
-    MOZZI_TRY(snr, q.number("min_force_snr_db", 30.0));
-    MOZZI_TRY(coh, q.number("min_coherence", 0.0));
+    MOZZI_TRY_ASSIGN(auto dh, q.boolean("double_hit", true));
+    MOZZI_TRY_ASSIGN(auto ov, q.boolean("overload", true));
+    MOZZI_TRY_ASSIGN(auto minF, q.number("min_peak_force_n", 0.0));
+    MOZZI_TRY_ASSIGN(auto snr, q.number("min_force_snr_db", 30.0));
+    MOZZI_TRY_ASSIGN(auto coh, q.number("min_coherence", 0.0));
     d.rules = RejectionRules{dh, ov, minF, snr, coh, 0.0, 0.0};
-    MOZZI_TRY(band, q.field("coherence_band_hz", false));
+    MOZZI_TRY_ASSIGN(auto band, q.field("coherence_band_hz", false));
     if (band) {
       if (!band->is_array() || band->size() != 2 || !(*band)[0].is_number() || !(*band)[1].is_number())
         return makeError(ErrorCode::ParseError, "expected [LO, HI] in Hz", q.at("coherence_band_hz"));
@@ -444,21 +439,21 @@ core::Result<CampaignDefinition> definitionFromJson(const json& j) {
       d.rules.coherenceBandHighHz = (*band)[1].get<double>();
     }
   }
-  MOZZI_TRY(station, r.field("station"));
+  MOZZI_TRY_ASSIGN(auto station, r.field("station"));
   {
     Reader s(*station, r.at("station"));
-    MOZZI_TRY(driver, s.text("driver"));
+    MOZZI_TRY_ASSIGN(auto driver, s.text("driver"));
     d.driver = driver;
-    MOZZI_TRY(serial, s.text("serial", std::string()));
+    MOZZI_TRY_ASSIGN(auto serial, s.text("serial", std::string()));
     d.deviceSerial = serial;
-    MOZZI_TRY(seed, s.text("seed", std::string("1")));
+    MOZZI_TRY_ASSIGN(auto seed, s.text("seed", std::string("1")));
     char* end = nullptr;
     errno = 0;
     const unsigned long long v = std::strtoull(seed.c_str(), &end, 10);
     if (seed.empty() || *end != '\0' || errno != 0 || seed[0] == '-')
       return makeError(ErrorCode::ParseError, "seed must be a non-negative integer (as text)", s.at("seed"));
     d.seed = v;
-    MOZZI_TRY(params, s.field("parameters", false));
+    MOZZI_TRY_ASSIGN(auto params, s.field("parameters", false));
     if (params) {
       if (!params->is_object()) return makeError(ErrorCode::ParseError, "expected an object", s.at("parameters"));
       for (const auto& [k, v] : params->items()) {
@@ -475,7 +470,6 @@ core::Result<CampaignDefinition> definitionFromJson(const json& j) {
       }
     }
   }
-#undef MOZZI_TRY
   if (auto v = d.validate(); !v) return makeError(v.error().code, v.error().message, "campaign." + v.error().where);
   return d;
 }

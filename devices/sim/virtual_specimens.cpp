@@ -5,6 +5,7 @@
 #include "devices/campaign/demo_campaigns.h"
 #include "devices/rigtests/virtual_rigs.h"
 #include "devices/sim/demo_gap.h"
+#include "devices/sim/demo_stability.h"
 
 namespace mozzi::devices::sim {
 
@@ -126,14 +127,19 @@ core::Result<void> addIdentifiedModes(DemoContext& demo) {
   return campaign::identifyDemoCampaigns(demo.store);
 }
 
-// Step 5: a design model of fork A with wheel and its gap diagnosis against the campaign's FRFs.
+// Step 5: stability of the benchmark bicycle and of Sharp's motorcycle (devices/sim/demo_stability.cpp).
+core::Result<void> addStability(DemoContext& demo) {
+  return addDemoStability(demo.store);
+}
+
+// Step 6: a design model of fork A with wheel and its gap diagnosis against the campaign's FRFs.
 core::Result<void> addModelAndGapDiagnosis(DemoContext& demo) {
   return addDemoGapDiagnosis(demo.store);
 }
 
 // The demo, in order; append a step to extend it.
-const DemoStep kDemoSteps[] = {addSpecimensWithMeshes, addRigAndTyreTests, addHammerCampaigns, addIdentifiedModes,
-                               addModelAndGapDiagnosis};
+const DemoStep kDemoSteps[] = {addSpecimensWithMeshes, addRigAndTyreTests, addHammerCampaigns,
+                               addIdentifiedModes,     addStability,       addModelAndGapDiagnosis};
 
 }  // namespace
 

@@ -63,6 +63,32 @@ void BM_ScrewAxis(benchmark::State& state) {
 }
 BENCHMARK(BM_ScrewAxis)->Arg(3)->Arg(30);
 
+// The Mode Animation page's Mozzi axis: the rigid twist fitted to a complex
+// mode's readings, n nodes measured along x, y and z (3n readings), what the
+// page computes on the GUI thread each time a mode is chosen.
+void BM_ModeScrewAxisReadings(benchmark::State& state) {
+  const auto n = static_cast<Eigen::Index>(state.range(0));
+  mozzi::core::Matrix p(3 * n, 3), e(3 * n, 3);
+  mozzi::core::ComplexVector v(3 * n);
+  const Eigen::Vector3d w(0.001, 0.002, 0.01), dO(5e-4, -2e-4, 3e-4);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i);
+    const Eigen::Vector3d pi(0.3 * std::cos(t), 0.2 * std::sin(1.7 * t), 0.1 * t / static_cast<double>(n));
+    const Eigen::Vector3d d = dO + w.cross(pi);
+    for (int k = 0; k < 3; ++k) {
+      p.row(3 * i + k) = pi.transpose();
+      e.row(3 * i + k) = Eigen::Vector3d::Unit(k).transpose();
+      v(3 * i + k) = d(k) * std::polar(1.0, 0.4);
+    }
+  }
+  for (auto _ : state) {
+    auto r = st::screwAxisFromReadingPhasors(p, e, v);
+    benchmark::DoNotOptimize(r);
+  }
+  state.SetItemsProcessed(state.iterations() * 3 * n);
+}
+BENCHMARK(BM_ModeScrewAxisReadings)->Arg(30)->Arg(20000)->Unit(benchmark::kMillisecond);
+
 void BM_DynamicSweep1To45Hz(benchmark::State& state) {
   std::vector<st::SweepPoint> sweep;
   for (int f = 1; f <= 45; ++f) {

@@ -1,3 +1,7 @@
+// The hammer-station page: its widgets, and the campaign controls (start,
+// stop, new campaign, skip and redo). The session's events, the traces and the
+// verdict: hammer_station_events.cpp.
+
 #include "views/campaign/hammer_station_page.h"
 
 #include <qwt_legend.h>
@@ -33,6 +37,7 @@
 #include "devices/common/driver.h"
 #include "views/campaign/campaign_session.h"
 #include "views/campaign/campaign_wizard.h"
+#include "views/campaign/hammer_station_internal.h"
 #include "views/common/dof_text.h"
 #include "views/plots/frf_plot.h"
 #include "views/plots/interactive_plot.h"
@@ -50,53 +55,66 @@ namespace {
 constexpr int kRefreshMs = 40;                   // 25 Hz traces
 constexpr int kSpecimenRole = Qt::UserRole + 1;  // campaign list: the campaign's specimen
 
-QString stateName(cp::EngineState state) {
-  switch (state) {
-    case cp::EngineState::Idle: return HammerStationPage::tr("Idle: press A to arm");
-    case cp::EngineState::Armed: return HammerStationPage::tr("Armed: hit the point");
-    case cp::EngineState::Recording: return HammerStationPage::tr("Recording the hit");
-    case cp::EngineState::VerdictPending: return HammerStationPage::tr("Verdict: Space accepts, Backspace rejects");
-    case cp::EngineState::PointDone: return HammerStationPage::tr("Point done");
-    case cp::EngineState::WaitingForDevice: return HammerStationPage::tr("Waiting for the device");
-    case cp::EngineState::Finished: return HammerStationPage::tr("Campaign finished");
-  }
-  return QString();
-}
-
-// Axis titles in the page's normal font (Qwt's default is large and bold:
-// too big for the traces at 1280x800).
-void setAxisText(QwtPlot* plot, int axis, const QString& text) {
-  QwtText title(text);
-  // On one line: wrapped at a word break, a unit splits ("Response [m/" over "s^2]").
-  title.setRenderFlags(Qt::AlignCenter);
-  QFont f = plot->font();
-  f.setBold(false);
-  title.setFont(f);
-  plot->setAxisTitle(axis, title);
-}
-
-std::shared_ptr<const core::Vector> column(const std::vector<std::shared_ptr<const core::Matrix>>& blocks,
-                                           Eigen::Index channel) {
-  Eigen::Index n = 0;
-  for (const auto& b : blocks) n += b->rows();
-  auto out = std::make_shared<core::Vector>(n);
-  Eigen::Index k = 0;
-  for (const auto& b : blocks) {
-    if (channel < b->cols())
-      out->segment(k, b->rows()) = b->col(channel);
-    else
-      out->segment(k, b->rows()).setZero();
-    k += b->rows();
-  }
-  return out;
-}
-
 }  // namespace
+
+using hammer_station::setAxisText;
 
 HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.parent), ctx_(ctx) {
   session_ = new CampaignSession(ctx.model, this);
+  auto* top = buildTopBar();
+  auto* verdictRow = buildVerdictRow();
+  auto* left = buildTracePanel();
+  auto* right = buildProgressPanel();
 
-  // --- top: campaign, start/stop, station -------------------------------------
+  auto* split = new QSplitter(Qt::Horizontal, this);
+  split->addWidget(left);
+  split->addWidget(right);
+  split->setStretchFactor(0, 3);
+  split->setStretchFactor(1, 2);
+  split->setChildrenCollapsible(false);
+
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(top);
+  layout->addWidget(banner_);
+  layout->addLayout(verdictRow);
+  layout->addWidget(split, 1);
+  setFocusPolicy(Qt::StrongFocus);
+
+  wire();
+
+  refresh_ = new QTimer(this);
+  refresh_->setInterval(kRefreshMs);
+  connect(refresh_, &QTimer::timeout, this, &HammerStationPage::refreshTraces);
+  refresh_->start();
+
+  reloadCampaigns();
+  if (ctx.item.kind == RecordKind::Campaign) showCampaign(ctx.item.id);
+  setVerdict(QString(), QString(), QString());
+  retranslate();
+  updateActions();
+}
+
+// An action with its key, on a text button; retranslate() names both.
+QToolButton* HammerStationPage::addActionButton(const QString& name, const char* text, const QKeySequence& key,
+                                                const std::function<void()>& slot) {
+  auto* a = new QAction(this);
+  a->setObjectName(name);
+  a->setShortcut(key);
+  a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+  QWidget::addAction(a);
+  connect(a, &QAction::triggered, this, slot);
+  auto* b = new QToolButton(this);
+  b->setObjectName(name + QStringLiteral("Button"));
+  b->setDefaultAction(a);
+  b->setToolButtonStyle(Qt::ToolButtonTextOnly);
+  b->setFocusPolicy(Qt::NoFocus);
+  b->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+  actions_.push_back(ActionEntry{name, a, b, text});
+  return b;
+}
+
+// --- top: campaign, start/stop, station -------------------------------------
+QHBoxLayout* HammerStationPage::buildTopBar() {
   auto* top = new QHBoxLayout;
   campaigns_ = new QComboBox(this);
   campaigns_->setObjectName(QStringLiteral("hammerCampaigns"));
@@ -108,31 +126,18 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   autoArm_->setChecked(true);
   autoArm_->setFocusPolicy(Qt::NoFocus);
 
-  auto addAction = [this](const QString& name, const char* text, const QKeySequence& key, auto slot) {
-    auto* a = new QAction(this);
-    a->setObjectName(name);
-    a->setShortcut(key);
-    a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    QWidget::addAction(a);
-    connect(a, &QAction::triggered, this, slot);
-    auto* b = new QToolButton(this);
-    b->setObjectName(name + QStringLiteral("Button"));
-    b->setDefaultAction(a);
-    b->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    b->setFocusPolicy(Qt::NoFocus);
-    b->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
-    actions_.push_back(ActionEntry{name, a, b, text});
-    return b;
-  };
-  top->addWidget(addAction(QStringLiteral("newCampaign"), QT_TR_NOOP("New Campaign..."),
-                           QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N), [this] { newCampaign(); }));
-  top->addWidget(
-      addAction(QStringLiteral("start"), QT_TR_NOOP("Start"), QKeySequence(Qt::Key_F5), [this] { startCampaign(); }));
-  top->addWidget(addAction(QStringLiteral("stop"), QT_TR_NOOP("Stop"), QKeySequence(Qt::SHIFT | Qt::Key_F5),
-                           [this] { stopCampaign(); }));
+  top->addWidget(addActionButton(QStringLiteral("newCampaign"), QT_TR_NOOP("New Campaign..."),
+                                 QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N), [this] { newCampaign(); }));
+  top->addWidget(addActionButton(QStringLiteral("start"), QT_TR_NOOP("Start"), QKeySequence(Qt::Key_F5),
+                                 [this] { startCampaign(); }));
+  top->addWidget(addActionButton(QStringLiteral("stop"), QT_TR_NOOP("Stop"), QKeySequence(Qt::SHIFT | Qt::Key_F5),
+                                 [this] { stopCampaign(); }));
   top->addWidget(autoArm_);
+  return top;
+}
 
-  // --- verdict row --------------------------------------------------------------
+// --- verdict row --------------------------------------------------------------
+QHBoxLayout* HammerStationPage::buildVerdictRow() {
   verdict_ = new QLabel(this);
   verdict_->setObjectName(QStringLiteral("hammerVerdict"));
   QFont big = verdict_->font();
@@ -181,8 +186,11 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   auto* verdictRow = new QHBoxLayout;
   verdictRow->addLayout(verdictBox, 3);
   verdictRow->addLayout(status, 1);
+  return verdictRow;
+}
 
-  // --- left: traces and the point's running FRF ---------------------------------
+// --- left: traces and the point's running FRF ---------------------------------
+QWidget* HammerStationPage::buildTracePanel() {
   auto* left = new QWidget(this);
   auto* leftLayout = new QVBoxLayout(left);
   leftLayout->setContentsMargins(0, 0, 0, 0);
@@ -237,8 +245,11 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   frfStack_->addWidget(frf_);
   leftLayout->addWidget(frfStack_, 3);
   frfStack_->setMinimumHeight(280);  // magnitude and coherence readable at 1280x800
+  return left;
+}
 
-  // --- right: progress over the mesh, actions, log --------------------------------
+// --- right: progress over the mesh, actions, log --------------------------------
+QWidget* HammerStationPage::buildProgressPanel() {
   auto* right = new QWidget(this);
   auto* rightLayout = new QVBoxLayout(right);
   rightLayout->setContentsMargins(0, 0, 0, 0);
@@ -282,20 +293,23 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
 
   auto* buttons = new QGridLayout;
   buttons->addWidget(
-      addAction(QStringLiteral("arm"), QT_TR_NOOP("Arm"), QKeySequence(Qt::Key_A), [this] { session_->arm(); }), 0, 0);
-  buttons->addWidget(addAction(QStringLiteral("disarm"), QT_TR_NOOP("Disarm"), QKeySequence(Qt::Key_Escape),
-                               [this] { session_->disarm(); }),
+      addActionButton(QStringLiteral("arm"), QT_TR_NOOP("Arm"), QKeySequence(Qt::Key_A), [this] { session_->arm(); }),
+      0, 0);
+  buttons->addWidget(addActionButton(QStringLiteral("disarm"), QT_TR_NOOP("Disarm"), QKeySequence(Qt::Key_Escape),
+                                     [this] { session_->disarm(); }),
                      0, 1);
-  buttons->addWidget(addAction(QStringLiteral("accept"), QT_TR_NOOP("Accept"), QKeySequence(Qt::Key_Space),
-                               [this] { session_->accept(); }),
+  buttons->addWidget(addActionButton(QStringLiteral("accept"), QT_TR_NOOP("Accept"), QKeySequence(Qt::Key_Space),
+                                     [this] { session_->accept(); }),
                      1, 0);
-  buttons->addWidget(addAction(QStringLiteral("reject"), QT_TR_NOOP("Reject"), QKeySequence(Qt::Key_Backspace),
-                               [this] { session_->reject(); }),
+  buttons->addWidget(addActionButton(QStringLiteral("reject"), QT_TR_NOOP("Reject"), QKeySequence(Qt::Key_Backspace),
+                                     [this] { session_->reject(); }),
                      1, 1);
   buttons->addWidget(
-      addAction(QStringLiteral("redo"), QT_TR_NOOP("Redo Point"), QKeySequence(Qt::Key_R), [this] { doRedo(); }), 2, 0);
+      addActionButton(QStringLiteral("redo"), QT_TR_NOOP("Redo Point"), QKeySequence(Qt::Key_R), [this] { doRedo(); }),
+      2, 0);
   buttons->addWidget(
-      addAction(QStringLiteral("skip"), QT_TR_NOOP("Skip Point"), QKeySequence(Qt::Key_S), [this] { doSkip(); }), 2, 1);
+      addActionButton(QStringLiteral("skip"), QT_TR_NOOP("Skip Point"), QKeySequence(Qt::Key_S), [this] { doSkip(); }),
+      2, 1);
   for (auto& e : actions_) {
     if (e.name == QLatin1String("accept") || e.name == QLatin1String("reject")) {
       QFont f = e.button->font();
@@ -317,22 +331,11 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
   log_->setWordWrap(true);
   log_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   rightLayout->addWidget(log_, 1);
+  return right;
+}
 
-  auto* split = new QSplitter(Qt::Horizontal, this);
-  split->addWidget(left);
-  split->addWidget(right);
-  split->setStretchFactor(0, 3);
-  split->setStretchFactor(1, 2);
-  split->setChildrenCollapsible(false);
-
-  auto* layout = new QVBoxLayout(this);
-  layout->addLayout(top);
-  layout->addWidget(banner_);
-  layout->addLayout(verdictRow);
-  layout->addWidget(split, 1);
-  setFocusPolicy(Qt::StrongFocus);
-
-  // --- wiring ------------------------------------------------------------------
+// --- wiring: the session's events and the model's changes ----------------------
+void HammerStationPage::wire() {
   connect(session_, &CampaignSession::verdictReady, this, &HammerStationPage::onVerdict);
   connect(session_, &CampaignSession::hitCommitted, this, &HammerStationPage::onCommitted);
   connect(session_, &CampaignSession::runningFrf, this, &HammerStationPage::onRunningFrf);
@@ -368,17 +371,6 @@ HammerStationPage::HammerStationPage(const PageContext& ctx) : QWidget(ctx.paren
     shownGeneration_ = 0;
     retranslate();
   });
-
-  refresh_ = new QTimer(this);
-  refresh_->setInterval(kRefreshMs);
-  connect(refresh_, &QTimer::timeout, this, &HammerStationPage::refreshTraces);
-  refresh_->start();
-
-  reloadCampaigns();
-  if (ctx.item.kind == RecordKind::Campaign) showCampaign(ctx.item.id);
-  setVerdict(QString(), QString(), QString());
-  retranslate();
-  updateActions();
 }
 
 HammerStationPage::~HammerStationPage() {
@@ -607,242 +599,6 @@ void HammerStationPage::log(const QString& text) {
   while (log_->count() > 500) delete log_->takeItem(0);
   log_->scrollToBottom();
   if (ctx_.log) ctx_.log(tr("Hammer station: %1").arg(text));
-}
-
-void HammerStationPage::setVerdict(const QString& headline, const QString& detail, const QString& colour) {
-  verdictHeadline_ = headline;
-  verdict_->setText(headline.isEmpty() ? QStringLiteral(" ") : headline);
-  verdictDetail_->setText(detail);
-  QPalette p = verdict_->palette();
-  p.setColor(QPalette::Window, colour.isEmpty() ? palette().color(QPalette::Window) : QColor(colour));
-  p.setColor(QPalette::WindowText, colour.isEmpty() ? palette().color(QPalette::WindowText) : QColor(Qt::white));
-  verdict_->setPalette(p);
-}
-
-void HammerStationPage::refreshTraces() {
-  // The trigger lamp follows the engine's state and the live stream.
-  const LiveSnapshot live = session_->liveSnapshot();
-  const bool triggered =
-      state_ && (*state_ == cp::EngineState::Recording || (*state_ == cp::EngineState::Armed && live.triggered));
-  const bool armed = state_ && *state_ == cp::EngineState::Armed;
-  QPalette p = trigger_->palette();
-  p.setColor(QPalette::Window, triggered ? QColor(214, 40, 40) : armed ? QColor(244, 162, 97) : QColor(200, 200, 200));
-  p.setColor(QPalette::WindowText, triggered ? Qt::white : Qt::black);
-  trigger_->setPalette(p);
-  trigger_->setText(triggered ? tr("TRIGGERED") : armed ? tr("ARMED") : tr("TRIGGER"));
-
-  if (showingRecord_ || live.generation == shownGeneration_ || live.blocks.empty() || live.sampleRateHz <= 0.0) return;
-  shownGeneration_ = live.generation;
-  const auto force = column(live.blocks, forceChannel_);
-  const int r = responseChannel_->currentIndex();
-  const int responseColumn = r >= 0 && r < static_cast<int>(responseChannels_.size()) ? responseChannels_[r] : -1;
-  auto time = std::make_shared<core::Vector>(force->size());
-  for (Eigen::Index i = 0; i < time->size(); ++i)
-    (*time)[i] = static_cast<double>(live.firstSample + i) / live.sampleRateHz;
-  forceCurve_->setData(new VectorSeries(time, force));
-  if (responseColumn >= 0) responseCurve_->setData(new VectorSeries(time, column(live.blocks, responseColumn)));
-  setAxisText(traces_, QwtPlot::xBottom, tr("Time since arming [s]"));
-  traces_->replot();
-  ++traceRefreshes_;
-}
-
-void HammerStationPage::showRecordTraces(const core::signal::TimeRecord& record) {
-  if (record.sampleRateHz <= 0.0 || record.samples.rows() == 0) return;
-  showingRecord_ = true;
-  const Eigen::Index n = record.samples.rows();
-  auto time = std::make_shared<core::Vector>(n);
-  for (Eigen::Index i = 0; i < n; ++i) (*time)[i] = static_cast<double>(i) / record.sampleRateHz;
-  auto force = std::make_shared<core::Vector>(
-      record.samples.col(std::min<Eigen::Index>(forceChannel_, record.samples.cols() - 1)));
-  forceCurve_->setData(new VectorSeries(time, force));
-  const int r = responseChannel_->currentIndex();
-  if (r >= 0 && r < static_cast<int>(responseChannels_.size()) && responseChannels_[r] < record.samples.cols())
-    responseCurve_->setData(
-        new VectorSeries(time, std::make_shared<core::Vector>(record.samples.col(responseChannels_[r]))));
-  setAxisText(traces_, QwtPlot::xBottom, tr("Time in the hit's record [s]"));
-  traces_->replot();
-  ++traceRefreshes_;
-}
-
-void HammerStationPage::onState(cp::EngineState state, const QString& message) {
-  const bool newArm = state == cp::EngineState::Armed && state_ != cp::EngineState::Armed;
-  state_ = state;
-  stateLabel_->setText(stateName(state));
-  if (newArm) {
-    showingRecord_ = false;
-    shownGeneration_ = 0;
-    setVerdict(tr("ARMED"), tr("Hit point %1").arg(current_ ? QString::number(*current_ + 1) : QString()),
-               QStringLiteral("#b86f00"));
-  }
-  if (state == cp::EngineState::WaitingForDevice) {
-    showBanner(message.isEmpty() ? tr("The device went away; the campaign goes on when it is back.") : message);
-    QApplication::beep();
-  }
-  if (!message.isEmpty() && state != cp::EngineState::WaitingForDevice) log(message);
-  updateActions();
-}
-
-void HammerStationPage::onVerdict(const cp::HitVerdictEvent& v) {
-  if (v.record) showRecordTraces(*v.record);
-  QStringList details;
-  details << tr("Point %1 (%2), hit attempt %3").arg(v.position + 1).arg(dofText(v.point)).arg(v.attempt + 1);
-  for (const auto& note : v.verdict.notes) details << QString::fromStdString(note);
-  if (v.verdict.meanCoherence) details << tr("mean coherence %1").arg(*v.verdict.meanCoherence, 0, 'f', 3);
-  if (v.verdict.passed) {
-    setVerdict(tr("GOOD HIT — Space accepts"), details.join(QStringLiteral("; ")), QStringLiteral("#2a7f3f"));
-    QApplication::beep();
-  } else {
-    QStringList reasons;
-    for (const auto& reason : v.verdict.reasons) reasons << QString::fromStdString(reason);
-    setVerdict(tr("REJECT: %1").arg(reasons.join(QStringLiteral(", "))),
-               tr("Backspace rejects, Space keeps it anyway. %1").arg(details.join(QStringLiteral("; "))),
-               QStringLiteral("#b3261e"));
-    QApplication::beep();
-    QTimer::singleShot(180, this, [] { QApplication::beep(); });  // two beeps: look at the screen
-  }
-  updateActions();
-}
-
-void HammerStationPage::onCommitted(const cp::CommittedHitEvent& hit) {
-  const QString reasons = QString::fromStdString(hit.reasons);
-  if (hit.accepted) {
-    setVerdict(tr("ACCEPTED"),
-               tr("Hit %1 stored at point %2 (%3)").arg(hit.hitId).arg(hit.position + 1).arg(dofText(hit.point)),
-               QStringLiteral("#2a7f3f"));
-    log(tr("Point %1: hit %2 accepted").arg(hit.position + 1).arg(hit.hitId));
-  } else {
-    setVerdict(tr("REJECTED"), reasons, QStringLiteral("#6d6d6d"));
-    log(tr("Point %1: hit %2 rejected (%3)").arg(hit.position + 1).arg(hit.hitId).arg(reasons));
-  }
-}
-
-void HammerStationPage::onRunningFrf(const cp::RunningFrfEvent& e) {
-  if (!e.frf) return;
-  const int response = std::max(0, frf_->currentResponse());
-  const int reference = std::max(0, frf_->currentReference());
-  frf_->setFrfs(e.frf);
-  frfStack_->setCurrentWidget(frf_);
-  frf_->showPair(response, reference);
-  // Short axis titles: the FRF shares the column with the traces.
-  setAxisText(frf_->magnitudePlot(), QwtPlot::yLeft, tr("|H| [dB]"));
-  setAxisText(frf_->coherencePlot(), QwtPlot::yLeft, tr("Coh."));
-  pointTitle_->setText(tr("Point %1 (%2): running FRF of %n accepted hit(s)", nullptr, e.hits)
-                           .arg(e.position + 1)
-                           .arg(dofText(e.point)));
-}
-
-void HammerStationPage::onProgress(const cp::EngineProgress& p) {
-  const bool pointChanged = p.current != current_;
-  lastProgress_ = p;
-  current_ = p.current;
-  if (pointChanged) updateHitMarker();
-  state_ = p.state;
-  station_->setText(tr("Station: %1").arg(QString::fromStdString(p.device)));
-  const auto& s = p.schedule;
-  progress_->setValue(static_cast<int>(std::lround(s.fraction() * 1000.0)));
-  progress_->setFormat(tr("%1 of %2 points").arg(s.pointsDone + s.pointsSkipped).arg(s.pointCount));
-  progressLabel_->setText(tr("%1: %2 done, %3 skipped; %4 hits accepted, %5 rejected")
-                              .arg(QString::fromStdString(p.campaignName))
-                              .arg(s.pointsDone)
-                              .arg(s.pointsSkipped)
-                              .arg(s.acceptedHits)
-                              .arg(s.rejectedHits));
-  if (points_->rowCount() != static_cast<int>(p.points.size())) points_->setRowCount(static_cast<int>(p.points.size()));
-  for (const auto& pt : p.points) {
-    const int row = pt.position;
-    if (row < 0 || row >= points_->rowCount()) continue;
-    const bool current = p.current && *p.current == row;
-    QString status;
-    QColor background;
-    if (pt.skipped) {
-      status = tr("skipped: %1").arg(QString::fromStdString(pt.skipReason));
-      background = QColor(225, 225, 225);
-    } else if (pt.done) {
-      status = tr("done");
-      background = QColor(214, 240, 219);
-    } else if (current) {
-      status = tr("measuring now");
-      background = QColor(255, 221, 87);
-    } else {
-      status = pt.attempts > 0 ? tr("started") : tr("to do");
-    }
-    const QStringList cells = {QString::number(row + 1), dofText(pt.dof),
-                               tr("%1 / %2").arg(pt.accepted).arg(p.hitsPerPoint), status};
-    for (int c = 0; c < cells.size(); ++c) {
-      QTableWidgetItem* item = points_->item(row, c);
-      if (!item) {
-        item = new QTableWidgetItem;
-        points_->setItem(row, c, item);
-      }
-      item->setText(cells[c]);
-      item->setBackground(background.isValid() ? QBrush(background) : QBrush());
-      QFont f = item->font();
-      f.setBold(current);
-      item->setFont(f);
-      if (c == 3 && pt.attempts > pt.accepted)
-        item->setToolTip(tr("%n attempt(s) at this point", nullptr, pt.attempts));
-    }
-  }
-  if (pointChanged && p.current) {
-    points_->scrollToItem(points_->item(*p.current, 0), QAbstractItemView::PositionAtCenter);
-    if (!showingRecord_) {
-      frf_->setFrfs(nullptr);
-      frfStack_->setCurrentWidget(frfHint_);
-    }
-    pointTitle_->setText(tr("Point %1 (%2)").arg(*p.current + 1).arg(dofText(p.points[*p.current].dof)));
-  }
-  updateActions();
-}
-
-void HammerStationPage::onFinished(const cp::FinishedEvent& f) {
-  setVerdict(tr("CAMPAIGN COMPLETE"),
-             tr("%1 points measured, %2 skipped; FRF set %3 stored with its hits")
-                 .arg(f.schedule.pointsDone)
-                 .arg(f.schedule.pointsSkipped)
-                 .arg(f.frfSetId),
-             QStringLiteral("#1d3557"));
-  log(tr("Campaign finished: FRF set %1").arg(f.frfSetId));
-  QApplication::beep();
-  updateActions();
-}
-
-void HammerStationPage::changeEvent(QEvent* event) {
-  if (event->type() == QEvent::LanguageChange) retranslate();
-  QWidget::changeEvent(event);
-}
-
-void HammerStationPage::retranslate() {
-  for (auto& e : actions_) {
-    const QString key = e.action->shortcut().toString(QKeySequence::NativeText);
-    e.action->setText(tr("%1 (%2)").arg(tr(e.text), key));
-    e.action->setToolTip(e.action->text());
-  }
-  if (scene_ && sceneMesh_) updateHitMarker();  // the marker's "Next: ..." in the new language
-  autoArm_->setText(tr("Arm again after each decision"));
-  autoArm_->setToolTip(tr("Applies when the campaign starts"));
-  responseLabel_->setText(tr("Response:"));
-  skipReason_->setPlaceholderText(tr("Reason for Skip or Redo"));
-  skipReason_->setToolTip(tr("Type the reason, then S skips the current point or R measures the selected point again"));
-  points_->setHorizontalHeaderLabels({tr("Point"), tr("DOF"), tr("Hits"), tr("Status")});
-  traces_->setTitle(QString());
-  forceCurve_->setTitle(tr("Force"));
-  responseCurve_->setTitle(responseChannel_->currentText().isEmpty() ? tr("Response")
-                                                                     : responseChannel_->currentText());
-  {
-    const int r = responseChannel_->currentIndex();
-    const QString unit = r >= 0 && r < responseUnits_.size() ? responseUnits_[r] : tr("EU");
-    // The unit alone: the legend names the response, and "Response [m/s^2]"
-    // is longer than the traces are high at 1280x800.
-    setAxisText(traces_, QwtPlot::yRight, tr("[%1]", "right axis of the hit traces: the response's unit").arg(unit));
-  }
-  if (traces_->axisTitle(QwtPlot::yLeft).isEmpty()) setAxisText(traces_, QwtPlot::yLeft, tr("Force [N]"));
-  if (traces_->axisTitle(QwtPlot::xBottom).isEmpty())
-    setAxisText(traces_, QwtPlot::xBottom, tr("Time since arming [s]"));
-  if (!state_) stateLabel_->setText(session_->isRunning() ? QString() : tr("Not started: choose a campaign, press F5"));
-  if (station_->text().isEmpty()) station_->setText(tr("Station: not connected"));
-  frfHint_->setText(tr("The running FRF and coherence of the point appear after its first accepted hit."));
-  if (pointTitle_->text().isEmpty()) pointTitle_->setText(tr("No point yet"));
-  if (verdictHeadline_.isEmpty()) verdictDetail_->setText(tr("The verdict of each hit appears here."));
 }
 
 }  // namespace views

@@ -19,6 +19,7 @@
 #include <QString>
 #include <QStringList>
 #include <QWidget>
+#include <functional>
 #include <optional>
 
 #include "core/io/mesh_document.h"
@@ -28,6 +29,8 @@
 class QAction;
 class QCheckBox;
 class QComboBox;
+class QHBoxLayout;
+class QKeySequence;
 class QLabel;
 class QLineEdit;
 class QListWidget;
@@ -83,6 +86,15 @@ class HammerStationPage : public QWidget {
   void changeEvent(QEvent* event) override;
 
  private:
+  // The constructor's parts, called in this order (hammer_station_page.cpp).
+  QToolButton* addActionButton(const QString& name, const char* text, const QKeySequence& key,
+                               const std::function<void()>& slot);
+  QHBoxLayout* buildTopBar();
+  QHBoxLayout* buildVerdictRow();
+  QWidget* buildTracePanel();
+  QWidget* buildProgressPanel();
+  void wire();
+
   void retranslate();
   void reloadCampaigns();
   void updateActions();

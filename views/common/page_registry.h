@@ -21,6 +21,7 @@ namespace mozzi {
 namespace views {
 
 class JobRunner;
+class PageRegistry;
 
 // A record of the open project a page can be opened on.
 struct ProjectItem {
@@ -40,6 +41,10 @@ struct PageContext {
   QWidget* parent = nullptr;      // parent for the page widget
   // Writes a line to the window's log (timestamped there); may be empty in tests.
   std::function<void(const QString&)> log;
+  // The page table and a way to open another page (the Overview's start
+  // list); null or empty in tests that build a page alone.
+  const PageRegistry* registry = nullptr;
+  std::function<QWidget*(const QString& pageId, const ProjectItem& item)> openPage = {};
 };
 
 // Where a page appears for opening without a project item.

@@ -137,7 +137,10 @@ void PageTabs::followSelection(const ProjectItem& item) {
 }
 
 PageContext PageTabs::context(const ProjectItem& item) {
-  return PageContext{model_, jobs_, item, this, log_};
+  return PageContext{
+      model_, jobs_, item, this, log_, registry_, [this](const QString& pageId, const ProjectItem& target) {
+        return openPage(pageId, target);
+      }};
 }
 
 QString PageTabs::tabTitle(const PageSpec& spec, const ProjectItem& item) const {

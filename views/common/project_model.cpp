@@ -155,8 +155,10 @@ QString ProjectModel::recordName(RecordKind kind, qint64 id) const {
     case RecordKind::Analysis:
       if (auto analysis = store_->analysis(id)) return text(analysis->name);
       return {};
-    case RecordKind::None:
     case RecordKind::Campaign:
+      if (auto campaign = store_->campaign(id)) return text(campaign->name);
+      return {};
+    case RecordKind::None:
     case RecordKind::Hit:
     case RecordKind::Model: break;
   }

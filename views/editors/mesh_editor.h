@@ -26,6 +26,7 @@ class QTabWidget;
 class QTableView;
 class QToolBar;
 class QUndoStack;
+class QVBoxLayout;
 
 namespace mozzi {
 namespace views {
@@ -101,6 +102,7 @@ class MeshEditor : public QWidget {
 
  private:
   friend class MeshEditCommand;
+  void buildToolbar(QVBoxLayout* layout);                                        // from the constructor
   void applyDocument(const core::io::MeshDocument& document, bool resetCamera);  // from the undo commands
   void refresh(bool resetCamera);
   void syncSceneSelection();

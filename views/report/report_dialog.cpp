@@ -31,6 +31,8 @@ QString reportSectionTitle(const std::string& key) {
       {"stiffness", QT_TRANSLATE_NOOP("ReportDialog", "Stiffness tests")},
       {"tyre", QT_TRANSLATE_NOOP("ReportDialog", "Tyre tests")},
       {"gap", QT_TRANSLATE_NOOP("ReportDialog", "Gap diagnoses")},
+      {"stability", QT_TRANSLATE_NOOP("ReportDialog", "Stability against speed")},
+      {"wheelchair", QT_TRANSLATE_NOOP("ReportDialog", "Wheelchair manoeuvres")},
   };
   for (const auto& [k, title] : titles)
     if (key == k) return QCoreApplication::translate("ReportDialog", title);

@@ -47,6 +47,7 @@ namespace devices::rigtests {
 struct LiveReadout;
 struct StepReport;
 struct Quantity;
+struct Outcome;
 }  // namespace devices::rigtests
 
 namespace views {
@@ -129,6 +130,8 @@ class RigTestPage : public QWidget {
 
  private:
   void buildUi();
+  QWidget* buildControls();   // the run controls (rig_test_page.cpp)
+  QWidget* buildSetupView();  // the stiffness rig's set-up tab (rig_test_setup.cpp)
   void retranslate();
   void fillSpecimens();
   void fillTests();
@@ -141,6 +144,15 @@ class RigTestPage : public QWidget {
   void drain();
   void onLive(const devices::rigtests::LiveReadout& r);
   void onStep(const devices::rigtests::StepReport& s);
+  // One stored result or parameter of a test, as showStoredTest() lists it.
+  struct StoredRow {
+    std::optional<int> step;
+    std::string key;
+    double value, uncertainty;
+    std::string unit;
+  };
+  void drawStoredFits(qint64 testId, const std::vector<StoredRow>& rows, double tyreLoadN, double tyrePressurePa);
+  void onJobFinished(const core::Result<devices::rigtests::Outcome>& result);
   void onDone(bool ok, const QString& message);
   // Sine sweep: one frequency's axis point and its sine-fit loop (results of
   // a step report or of the stored step).

@@ -33,6 +33,7 @@
 #include "views/plots/interactive_plot.h"
 #include "views/plots/vector_series.h"
 #include "views/scene/scene_view.h"
+#include "views/scene/screw_axis_layer.h"
 
 namespace mozzi {
 namespace views {
@@ -127,6 +128,10 @@ ModeAnimationView::ModeAnimationView(QWidget* parent) : QWidget(parent) {
   form->addRow(colourCheck_);
   form->addRow(undeformedCheck_);
   form->addRow(arrowsCheck_);
+  screwCheck_ = new QCheckBox(controls);
+  screwCheck_->setObjectName(QStringLiteral("animationScrewAxisCheck"));
+  screwCheck_->setChecked(true);
+  form->addRow(screwCheck_);
   playButton_ = new QPushButton(controls);
   playButton_->setObjectName(QStringLiteral("animationPlayButton"));
   playButton_->setCheckable(true);
@@ -174,7 +179,15 @@ ModeAnimationView::ModeAnimationView(QWidget* parent) : QWidget(parent) {
   splitter->setSizes({500, 500});  // side by side: equal halves
   compare_->parentWidget()->hide();
   layout->addWidget(splitter, 1);
+  screwLayer_ = std::make_unique<ScrewAxisLayer>(scene_);
 
+  wireControls();
+  retranslate();
+}
+
+ModeAnimationView::~ModeAnimationView() = default;
+
+void ModeAnimationView::wireControls() {
   timer_ = new QTimer(this);
   timer_->setSingleShot(true);
   connect(timer_, &QTimer::timeout, this, &ModeAnimationView::tick);
@@ -207,6 +220,10 @@ ModeAnimationView::ModeAnimationView(QWidget* parent) : QWidget(parent) {
     scene_->setArrowsVisible(on);
     compare_->setArrowsVisible(on);
   });
+  connect(screwCheck_, &QCheckBox::toggled, this, [this](bool on) {
+    screwLayer_->setVisible(on);
+    scene_->render();
+  });
   connect(playButton_, &QPushButton::toggled, this, [this](bool on) { on ? play() : pause(); });
   connect(frameButton_, &QPushButton::clicked, this, [this] {
     const QString path = QFileDialog::getSaveFileName(this, tr("Export a frame"), QString(), tr("PNG image (*.png)"));
@@ -217,10 +234,7 @@ ModeAnimationView::ModeAnimationView(QWidget* parent) : QWidget(parent) {
                                                       tr("Animated GIF (*.gif);;PNG sequence (*.png)"));
     if (!path.isEmpty()) exportAnimation(path, 25);
   });
-  retranslate();
 }
-
-ModeAnimationView::~ModeAnimationView() = default;
 
 void ModeAnimationView::setMesh(const core::io::MeshDocument& mesh) {
   pause();
@@ -230,6 +244,9 @@ void ModeAnimationView::setMesh(const core::io::MeshDocument& mesh) {
   field_.reset();
   otherField_.reset();
   mac_.reset();
+  screw_.reset();
+  screwProblem_.clear();
+  screwLayer_->clear();
   auto positions = geo::nodePoints(mesh_.mesh);
   if (positions) {
     std::vector<core::Vector3> points;
@@ -340,6 +357,7 @@ bool ModeAnimationView::showShape(int index) {
   }
   if (!present(scene_, shapes_[static_cast<std::size_t>(index)], field_, autoAmplitude_)) return false;
   current_ = shapes_[static_cast<std::size_t>(index)];
+  updateScrewAxis(*current_);
   filling_ = true;
   shapeCombo_->setCurrentIndex(index);
   filling_ = false;
@@ -417,8 +435,36 @@ bool ModeAnimationView::showOds(double frequencyHz) {
   shape.values = ods->values;
   if (!present(scene_, shape, field_, autoAmplitude_)) return false;
   current_ = shape;
+  updateScrewAxis(shape);
   updateInfo();
   return true;
+}
+
+void ModeAnimationView::updateScrewAxis(const Shape& shape) {
+  screw_.reset();
+  screwProblem_.clear();
+  screwLayer_->clear();
+  const core::io::MeshDocument& doc = shape.mesh ? *shape.mesh : mesh_;
+  auto readings = geo::shapeReadings(doc, shape.dofs, shape.values);
+  auto points = geo::nodePoints(doc.mesh);
+  if (!readings || !points) {
+    screwProblem_ = QString::fromStdString((!readings ? readings.error() : points.error()).message);
+  } else {
+    auto axis = core::stiffness::screwAxisFromReadingPhasors(readings->points, readings->directions, readings->values);
+    if (!axis) {
+      screwProblem_ = QString::fromStdString(axis.error().message);
+    } else {
+      screw_ = std::move(axis).value();
+      // Through the mesh: the stretch nearest its centre, as long as the mesh
+      // is wide, so it stays inside the sphere the camera frames.
+      const core::Vector3 lo = points->colwise().minCoeff().transpose(), hi = points->colwise().maxCoeff().transpose();
+      const double half = 0.5 * std::max((hi - lo).norm(), 1e-3);
+      const auto ends = core::stiffness::axisSegment(*screw_, 0.5 * (lo + hi), half);
+      screwLayer_->show(ends.from, ends.to, tr("Mozzi axis, pitch %1 m/rad").arg(screw_->pitch, 0, 'g', 3));
+    }
+  }
+  screwLayer_->setVisible(screwCheck_->isChecked());
+  scene_->render();
 }
 
 QString ModeAnimationView::macText() const {
@@ -587,6 +633,23 @@ void ModeAnimationView::updateInfo() {
                                     .arg(field_->slavedNodes)
                                     .arg(field_->interpolatedNodes)
                                     .arg(field_->stillNodes);
+    if (screw_) {
+      const auto& u = screw_->direction;
+      const auto& p = screw_->point;
+      info +=
+          QLatin1Char('\n') + tr("Mozzi (screw) axis: pitch %1 m/rad, direction (%2, %3, %4), through (%5, %6, %7) m")
+                                  .arg(screw_->pitch, 0, 'g', 3)
+                                  .arg(u.x(), 0, 'f', 3)
+                                  .arg(u.y(), 0, 'f', 3)
+                                  .arg(u.z(), 0, 'f', 3)
+                                  .arg(p.x(), 0, 'f', 4)
+                                  .arg(p.y(), 0, 'f', 4)
+                                  .arg(p.z(), 0, 'f', 4);
+      if (screw_->lowConfidence)
+        info += QLatin1Char(' ') + tr("(low confidence: %1)").arg(QString::fromStdString(screw_->note));
+    } else if (!screwProblem_.isEmpty()) {
+      info += QLatin1Char('\n') + tr("No Mozzi axis: %1").arg(screwProblem_);
+    }
   } else {
     info = tr("Choose a mode to animate.");
   }
@@ -631,6 +694,10 @@ void ModeAnimationView::retranslate() {
   colourCheck_->setText(tr("Colour by displacement"));
   undeformedCheck_->setText(tr("Undeformed overlay"));
   arrowsCheck_->setText(tr("Arrows at measured nodes"));
+  screwCheck_->setText(tr("Mozzi (screw) axis"));
+  screwCheck_->setToolTip(
+      tr("The screw axis of the rigid motion fitted to the shape's measured translations, with its "
+         "pitch (thesis §1.5)"));
   playButton_->setText(isPlaying() ? tr("Pause (Space)") : tr("Play (Space)"));
   frameButton_->setText(tr("Export frame…"));
   animationButton_->setText(tr("Export animation…"));

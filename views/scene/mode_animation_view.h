@@ -10,6 +10,7 @@
 
 #include <QElapsedTimer>
 #include <QWidget>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "core/common/frf_matrix.h"
 #include "core/geometry/mode_shape.h"
 #include "core/io/mesh_document.h"
+#include "core/stiffness/screw_axis.h"
 
 class QCheckBox;
 class QComboBox;
@@ -34,6 +36,7 @@ namespace views {
 
 class InteractivePlot;
 class SceneView;
+class ScrewAxisLayer;
 
 class ModeAnimationView : public QWidget {
   Q_OBJECT
@@ -94,6 +97,16 @@ class ModeAnimationView : public QWidget {
   SceneView* compareScene() const { return compare_; }
   const core::geometry::ShapeField* field() const { return field_ ? &*field_ : nullptr; }
 
+  // The Mozzi (screw) axis of the shown shape (thesis §1.5): the rigid twist
+  // fitted to its measured translations (core::geometry::shapeReadings,
+  // core::stiffness::screwAxisFromReadingPhasors), drawn through the mesh with
+  // its pitch; the check box shows or hides it. None when the readings do not
+  // determine a rigid motion (screwAxisProblem() says why).
+  const std::optional<core::stiffness::ScrewAxis>& screwAxis() const { return screw_; }
+  QString screwAxisProblem() const { return screwProblem_; }
+  ScrewAxisLayer* screwAxisLayer() const { return screwLayer_.get(); }
+  QCheckBox* screwAxisCheck() const { return screwCheck_; }
+
   bool exportFrame(const QString& path);
   // One cycle at the current speed, `framesPerSecond` frames a second: an
   // animated GIF when `path` ends in .gif, otherwise PNG files named
@@ -115,6 +128,8 @@ class ModeAnimationView : public QWidget {
   void retranslate();
   void report(const QString& text);
   void fillCombos();
+  void wireControls();
+  void updateScrewAxis(const Shape& shape);
 
   core::io::MeshDocument mesh_;
   std::vector<Shape> shapes_;
@@ -145,6 +160,10 @@ class ModeAnimationView : public QWidget {
   QCheckBox* colourCheck_ = nullptr;
   QCheckBox* undeformedCheck_ = nullptr;
   QCheckBox* arrowsCheck_ = nullptr;
+  QCheckBox* screwCheck_ = nullptr;
+  std::unique_ptr<ScrewAxisLayer> screwLayer_;
+  std::optional<core::stiffness::ScrewAxis> screw_;
+  QString screwProblem_;
   QPushButton* playButton_ = nullptr;
   QPushButton* frameButton_ = nullptr;
   QPushButton* animationButton_ = nullptr;

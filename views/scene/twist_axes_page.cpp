@@ -20,13 +20,16 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "core/io/project_store.h"
 #include "core/stiffness/silhouettes.h"
 #include "core/stiffness/twist_geometry.h"
+#include "devices/rigtests/imported_twist.h"
 #include "devices/rigtests/stiffness_results.h"
 #include "views/plots/interactive_plot.h"
 #include "views/scene/plate_sketch.h"
+#include "views/scene/twist_csv_import.h"
 
 namespace mozzi {
 namespace views {
@@ -40,8 +43,12 @@ struct TwistAxesData {
   std::optional<st::PlacedSilhouette> silhouette;
   QString silhouetteError;
   std::optional<st::AxisPath> path;
-  // Geometry of the set-up (of the static test, else of the dynamic one).
-  const rt::StiffnessTestView* geometry() const { return statics ? &*statics : (dynamics ? &*dynamics : nullptr); }
+  // The plate of an imported modal file, when no test gives one.
+  std::optional<rt::StiffnessTestView> modalPlate;
+  // Geometry of the set-up (of the static test, else of the dynamic one, else of the modal file).
+  const rt::StiffnessTestView* geometry() const {
+    return statics ? &*statics : (dynamics ? &*dynamics : (modalPlate ? &*modalPlate : nullptr));
+  }
 };
 
 namespace {
@@ -133,6 +140,9 @@ void TwistAxesPage::buildUi() {
   form->addRow(staticLabel_, static_);
   form->addRow(dynamicLabel_, dynamic_);
   leftLayout->addLayout(form);
+  import_ = new TwistCsvImport;
+  import_->setObjectName(QStringLiteral("csvImport"));
+  leftLayout->addWidget(import_);
 
   auto* freq = new QHBoxLayout;
   frequencyLabel_ = new QLabel;
@@ -220,6 +230,12 @@ void TwistAxesPage::buildUi() {
       if (!filling_) loadTests();
     });
   connect(slider_, &QSlider::valueChanged, this, &TwistAxesPage::drawFrequency);
+  connect(import_, &TwistCsvImport::imported, this, &TwistAxesPage::showImported);
+  connect(import_, &TwistCsvImport::modalChanged, this, [this] {
+    if (!filling_) loadTests();
+  });
+  connect(import_, &TwistCsvImport::message, this, &TwistAxesPage::message);
+  connect(import_, &TwistCsvImport::keepRequested, this, &TwistAxesPage::keepImported);
   // The axes are lines across the view: re-clipped whenever the view moves.
   auto queueClip = [this] {
     if (clipQueued_) return;
@@ -310,6 +326,7 @@ void TwistAxesPage::fillTests() {
   dynamic_->clear();
   static_->addItem(tr("(none)"), QVariant::fromValue<qlonglong>(0));
   dynamic_->addItem(tr("(none)"), QVariant::fromValue<qlonglong>(0));
+  addImportedTests();
   core::io::ProjectStore* store = model_->store();
   if (store && specimen != 0) {
     auto tests = store->rigTests();
@@ -327,6 +344,74 @@ void TwistAxesPage::fillTests() {
     box->setCurrentIndex(keep != 0 && at >= 0 ? at : box->count() - 1);
   }
   filling_ = false;
+}
+
+// Imported static and dynamic files, listed after "(none)" with negative ids
+// -(index + 1) into the import's files, whatever the specimen.
+void TwistAxesPage::addImportedTests() {
+  const auto& files = import_->files();
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (!files[i].view) continue;
+    QComboBox* box = files[i].view->dynamic ? dynamic_ : static_;
+    box->addItem(tr("%1 (imported)").arg(files[i].name),
+                 QVariant::fromValue<qlonglong>(-static_cast<qlonglong>(i) - 1));
+  }
+}
+
+void TwistAxesPage::showImported(int index) {
+  const TwistCsvImport::File* f = import_->file(index);
+  if (!f) return;
+  fillTests();
+  if (f->view) {
+    QComboBox* box = f->view->dynamic ? dynamic_ : static_;
+    filling_ = true;
+    box->setCurrentIndex(box->findData(QVariant::fromValue<qlonglong>(-static_cast<qlonglong>(index) - 1)));
+    filling_ = false;
+  }
+  loadTests();
+}
+
+bool TwistAxesPage::keepImported() {
+  core::io::ProjectStore* store = model_->store();
+  if (!store) {
+    setStatus(tr("Open a project to keep the imported tests in."), true);
+    return false;
+  }
+  qint64 specimen = specimen_->currentData().toLongLong();
+  std::optional<qint64> kept[2];
+  QStringList names;
+  QComboBox* boxes[2] = {static_, dynamic_};
+  for (int k = 0; k < 2; ++k) {
+    const qint64 id = boxes[k]->currentData().toLongLong();
+    if (id > 0) kept[k] = id;
+    const TwistCsvImport::File* f = id < 0 ? import_->file(static_cast<int>(-id - 1)) : nullptr;
+    if (!f || !f->view) continue;
+    if (specimen == 0) {
+      auto made =
+          store->addSpecimen("imported twist tests", "imported", "plate CSV files imported on the Twist Axes page");
+      if (!made) {
+        setStatus(tr("Cannot add a specimen: %1").arg(qs(made.error().describe())), true);
+        return false;
+      }
+      specimen = *made;
+      model_->notifyChanged(RecordKind::Specimen, specimen);
+    }
+    auto r = rt::storeImportedTest(*store, specimen, *f->view, f->path.toStdString());
+    if (!r) {
+      setStatus(tr("Cannot keep %1: %2").arg(f->name, qs(r.error().describe())), true);
+      return false;
+    }
+    kept[k] = *r;
+    names << f->name;
+  }
+  if (names.isEmpty()) {
+    setStatus(tr("Choose an imported static or dynamic test to keep."), true);
+    return false;
+  }
+  model_->notifyChanged(RecordKind::RigTest);
+  selectTests(kept[0], kept[1]);
+  setStatus(tr("Kept in the project: %1").arg(names.join(QStringLiteral(", "))));
+  return true;
 }
 
 bool TwistAxesPage::selectTests(std::optional<qint64> staticTest, std::optional<qint64> dynamicTest) {
@@ -382,6 +467,10 @@ void TwistAxesPage::loadTests() {
   QStringList problems;
   auto read = [&](QComboBox* box, std::optional<rt::StiffnessTestView>& into) {
     const qint64 id = box->currentData().toLongLong();
+    if (id < 0) {
+      if (const auto* f = import_->file(static_cast<int>(-id - 1)); f && f->view) into = f->view;
+      return;
+    }
     if (!store || id == 0) return;
     auto view = rt::readStiffnessTest(*store, id);
     if (view)
@@ -391,6 +480,14 @@ void TwistAxesPage::loadTests() {
   };
   read(static_, data_->statics);
   read(dynamic_, data_->dynamics);
+  if (const auto& modal = import_->modalAxes(); modal.file) {
+    rt::StiffnessTestView plate;
+    plate.name = modal.file->name.toStdString();
+    plate.loadPoint = modal.file->csv.hasLoad ? modal.file->csv.load : core::Vector2::Zero();
+    plate.laserPoints = modal.file->csv.sensors;
+    data_->modalPlate = std::move(plate);
+    if (!modal.problems.isEmpty()) problems << modal.problems;
+  }
   if (data_->dynamics) {
     auto path = st::dynamicAxisPath(data_->dynamics->dynamicAxes(), data_->dynamics->loadPoint);
     if (path)
@@ -424,7 +521,7 @@ void TwistAxesPage::loadTests() {
   drawFrequency();
   if (!problems.isEmpty()) {
     setStatus(problems.join(QStringLiteral("\n")), true);
-  } else if (!data_->statics && !data_->dynamics) {
+  } else if (!data_->statics && !data_->dynamics && !data_->modalPlate) {
     setStatus(store ? tr("No stiffness-rig test to show: run one on the Stiffness Rig page.")
                     : tr("No project is open."));
   } else {
@@ -550,8 +647,20 @@ void TwistAxesPage::clipAxes() {
   };
   const rt::StiffnessTestView* g = d.geometry();
   draw(staticAxis_, staticAxisLabel_, d.statics ? d.statics->axis : std::nullopt, tr("static twist axis"), 0.90);
-  draw(bendAxis_, bendLabel_, g ? g->bendAxis : std::nullopt, tr("bending axis (set-up)"), 0.08);
-  draw(torsAxis_, torsLabel_, g ? g->torsAxis : std::nullopt, tr("torsion axis (set-up)"), 0.75);
+  // The modal axes of an imported hammer test (§1.4, §1.7), else the set-up's.
+  const auto& modal = import_->modalAxes();
+  if (modal.file) {
+    for (auto [curve, tag, axis, text, along] :
+         {std::tuple<QwtPlotCurve*, QwtPlotMarker*, const std::optional<st::ModalAxis>*, QString, double>{
+              bendAxis_, bendLabel_, &modal.bending, tr("bending axis (modal, %1 Hz)"), 0.08},
+          {torsAxis_, torsLabel_, &modal.torsion, tr("torsion axis (modal, %1 Hz)"), 0.75}}) {
+      draw(curve, tag, *axis ? std::optional<st::PlateAxis>((*axis)->axis.axis.axis) : std::nullopt,
+           *axis ? text.arg((*axis)->frequencyHz, 0, 'g', 4) : QString(), along);
+    }
+  } else {
+    draw(bendAxis_, bendLabel_, g ? g->bendAxis : std::nullopt, tr("bending axis (set-up)"), 0.08);
+    draw(torsAxis_, torsLabel_, g ? g->torsAxis : std::nullopt, tr("torsion axis (set-up)"), 0.75);
+  }
   std::optional<st::PlateAxis> dyn;
   QString dynText;
   if (d.path && !d.path->points.empty()) {

@@ -10,6 +10,11 @@
 // k_tw, a_tw and the axis inclination with their uncertainties, static and at
 // the chosen frequency.
 //
+// Besides the project's tests, plate CSVs as `mozzi-cli twist` reads them
+// (TwistCsvImport, "Open CSV…"): static and dynamic files are listed with the
+// tests; a modal file (hammer FRFs, §1.4) gives the bending and torsion modal
+// twist axes (§1.7) drawn in place of the set-up's.
+//
 // The page computes nothing: it reads the tests through
 // devices/rigtests/stiffness_results.h, places the silhouette, traces the
 // path and clips the axes to the view with core/stiffness (silhouettes.h,
@@ -36,6 +41,7 @@ namespace views {
 
 class InteractivePlot;
 class PlateSketch;
+class TwistCsvImport;
 struct TwistAxesData;
 
 class TwistAxesPage : public QWidget {
@@ -63,6 +69,10 @@ class TwistAxesPage : public QWidget {
   QwtPlotCurve* staticAxisCurve() const { return staticAxis_; }
   QwtPlotCurve* dynamicAxisCurve() const { return dynamicAxis_; }
   QwtPlotCurve* pathCurve() const { return path_; }
+  QwtPlotCurve* bendingAxisCurve() const { return bendAxis_; }
+  QwtPlotCurve* torsionAxisCurve() const { return torsAxis_; }
+  // The imported CSV files ("Open CSV…").
+  TwistCsvImport* csvImport() const { return import_; }
   // The frequency whose dynamic axis is drawn (none without a sweep).
   std::optional<double> shownFrequencyHz() const;
   // The silhouette's name and source ("" when none is drawn), the status line.
@@ -88,6 +98,16 @@ class TwistAxesPage : public QWidget {
   void clipAxes();
   void fillTable();
   void setStatus(const QString& text, bool error = false);
+  void addImportedTests();
+  void showImported(int index);
+
+ public:
+  // Stores the imported static and dynamic tests shown as rig tests of the
+  // chosen specimen (a new one when none is chosen) and shows them; false
+  // with the reason in the status line when nothing could be stored.
+  bool keepImported();
+
+ private:
   QwtPlotMarker* label(const QString& text, const QColor& colour);
 
   ProjectModel* model_;
@@ -106,6 +126,7 @@ class TwistAxesPage : public QWidget {
   QSlider* slider_ = nullptr;
   QTableWidget* table_ = nullptr;
   InteractivePlot* plot_ = nullptr;
+  TwistCsvImport* import_ = nullptr;
 
   // Items rebuilt per selection; the axis lines are clipped to the view.
   std::unique_ptr<PlateSketch> sketch_;     // silhouette, plate, lasers, load point, constrained end

@@ -46,64 +46,8 @@ QColor modeColour(const std::string& name) {
 
 using Model = StabilityPage::Model;
 
-// The vehicle's system: the bicycle from the built-in or a file's parameters,
-// the motorcycle from a file (Sharp 1971 format); rigid: the same vehicle
-// with its fork rigid.
-core::Result<st::StabilitySystem> systemOf(Model model, const std::string& file, bool rigid,
-                                           const std::optional<st::KeptFork>& kept) {
-  if (StabilityPage::isMotorcycle(model)) {
-    if (file.empty())
-      return core::makeError(core::ErrorCode::InvalidArgument,
-                             "the motorcycle needs a parameter file (Sharp 1971 format, docs/cli/stability.md)",
-                             "parameters");
-    auto p = st::loadSharpParameters(file);
-    if (!p) return p.error();
-    std::optional<st::LumpedForkModel> fork;
-    if (!rigid && model != Model::Motorcycle) {
-      const int index = static_cast<int>(model) - static_cast<int>(Model::Motorcycle);  // 1 to 3
-      if (kept) {
-        const auto& m = kept->lumped.at(static_cast<std::size_t>(index - 1));
-        if (!m)
-          return core::makeError(core::ErrorCode::InvalidArgument,
-                                 "the kept fork '" + kept->name + "' has no model " + std::to_string(index), "fork");
-        fork = *m;
-      } else {
-        auto f = st::thesisLumpedForkModel(index);
-        if (!f) return f.error();
-        fork = *f;
-      }
-    }
-    auto m = st::MotorcycleModel::build(*p, fork);
-    if (!m) return m.error();
-    return m->system();
-  }
-  st::BenchmarkParameters p = st::meijaard2007Parameters();
-  if (!file.empty()) {
-    auto loaded = st::loadBenchmarkParameters(file);
-    if (!loaded) return loaded.error();
-    p = *loaded;
-  }
-  if (rigid || model == Model::Benchmark) {
-    auto m = st::benchmarkModel(p);
-    if (!m) return m.error();
-    return st::bicycleSystem(*m);
-  }
-  const char* missing = model == Model::ForkBending ? "bending" : "torsion";
-  if (kept && ((model == Model::ForkBending && !kept->bending) || (model == Model::ForkTorsion && !kept->torsion)))
-    return core::makeError(core::ErrorCode::InvalidArgument,
-                           "the kept fork '" + kept->name + "' has no " + missing + " stiffness", "fork");
-  auto m = model == Model::ForkBending ? st::forkBendingModel(p, kept ? *kept->bending : st::thesisSteelForkBending())
-                                       : st::forkTorsionModel(p, kept ? *kept->torsion : st::thesisSteelForkTorsion());
-  if (!m) return m.error();
-  return st::bicycleSystem(*m);
-}
-
-core::Result<st::StabilitySweep> sweepOf(Model model, const std::string& file, bool rigid,
-                                         const std::optional<st::KeptFork>& kept, const std::vector<double>& speeds) {
-  auto system = systemOf(model, file, rigid, kept);
-  if (!system) return system.error();
-  return st::sweepSpeeds(*system, speeds);
-}
+// The fork of each Model entry, as core::stability::StabilityRequest names it.
+const char* const kForks[] = {"rigid", "bending", "torsion", "rigid", "model 1", "model 2", "model 3"};
 
 // The workbench's plot (grid, cursor, zoom, pan, export).
 InteractivePlot* makePlot(QWidget* parent, const char* objectName) {
@@ -114,9 +58,10 @@ InteractivePlot* makePlot(QWidget* parent, const char* objectName) {
 
 }  // namespace
 
+// The record and its result_json, serialised on the job runner's thread.
 struct StabilityPage::Sweeps {
-  st::StabilitySweep main;
-  std::optional<st::StabilitySweep> rigid;
+  st::StabilityRecord record;
+  std::string json;
 };
 
 StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent), jobs_(jobs) {
@@ -158,6 +103,12 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
   summary_->setObjectName(QStringLiteral("stabilitySummary"));
   summary_->setWordWrap(true);
   summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  storedLabel_ = new QLabel(this);
+  stored_ = new QComboBox(this);
+  stored_->setObjectName(QStringLiteral("stabilityStored"));
+  stored_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+  showStored_ = new QPushButton(this);
+  showStored_->setObjectName(QStringLiteral("stabilityShowStored"));
   real_ = makePlot(this, "stabilityReal");
   imaginary_ = makePlot(this, "stabilityImaginary");
   real_->insertLegend(new QwtLegend, QwtPlot::TopLegend);  // one legend: the colours are the same below
@@ -179,9 +130,14 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
   params->addWidget(forkLabel_);
   params->addWidget(fork_);
   params->addWidget(compare_);
+  auto* kept = new QHBoxLayout;
+  kept->addWidget(storedLabel_);
+  kept->addWidget(stored_, 1);
+  kept->addWidget(showStored_);
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(bar);
   layout->addLayout(params);
+  layout->addLayout(kept);
   layout->addWidget(summary_);
   layout->addWidget(real_, 1);
   layout->addWidget(imaginary_, 1);
@@ -189,7 +145,11 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
   connect(model_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this](int) { modelChanged(); });
   connect(paramsButton_, &QPushButton::clicked, this, &StabilityPage::chooseParameterFile);
   connect(paramsClear_, &QPushButton::clicked, this, [this] { setParameterFile(QString()); });
+  connect(showStored_, &QPushButton::clicked, this, [this] {
+    if (stored_->count() > 0) showStored(stored_->currentData().toLongLong());
+  });
   retranslate();
+  refreshStored();
   modelChanged();
 }
 
@@ -199,6 +159,7 @@ void StabilityPage::modelChanged() {
   const Model model = static_cast<Model>(model_->currentIndex());
   compare_->setEnabled(hasCompliantFork(model));
   refreshForks();
+  setParameterFile(parameterFile_);
   if (isMotorcycle(model) != isMotorcycle(shownFamily_)) {
     if (isMotorcycle(model))
       setSpeedRange(1.0, 60.0, 0.25);
@@ -210,7 +171,9 @@ void StabilityPage::modelChanged() {
 
 void StabilityPage::setParameterFile(const QString& path) {
   parameterFile_ = path;
-  paramsFile_->setText(path.isEmpty() ? tr("built-in (benchmark bicycle, Meijaard et al. 2007)")
+  const bool motorcycle = isMotorcycle(static_cast<Model>(model_->currentIndex()));
+  paramsFile_->setText(path.isEmpty() ? (motorcycle ? tr("built-in (Sharp 1971 standard machine)")
+                                                    : tr("built-in (benchmark bicycle, Meijaard et al. 2007)"))
                                       : QFileInfo(path).fileName());
   paramsFile_->setToolTip(path);
   paramsClear_->setEnabled(!path.isEmpty());
@@ -228,8 +191,11 @@ void StabilityPage::setProjectModel(ProjectModel* model) {
   if (project_) {
     connect(project_, &ProjectModel::analysesChanged, this, &StabilityPage::refreshForks);
     connect(project_, &ProjectModel::projectChanged, this, &StabilityPage::refreshForks);
+    connect(project_, &ProjectModel::analysesChanged, this, &StabilityPage::refreshStored);
+    connect(project_, &ProjectModel::projectChanged, this, &StabilityPage::refreshStored);
   }
   refreshForks();
+  refreshStored();
 }
 
 // The Fork choice: the thesis's fork, then the project's kept forks of the
@@ -277,42 +243,135 @@ void StabilityPage::setSpeedRange(double fromMps, double toMps, double stepMps) 
   step_->setValue(stepMps);
 }
 
+st::StabilityRequest StabilityPage::request() const {
+  const Model model = static_cast<Model>(model_->currentIndex());
+  st::StabilityRequest r;
+  r.vehicle = isMotorcycle(model) ? "motorcycle" : "bicycle";
+  r.fork = kForks[static_cast<int>(model)];
+  r.parametersFile = parameterFile_.toStdString();
+  r.from = from_->value();
+  r.to = to_->value();
+  r.step = step_->value();
+  r.compareRigid = compare_->isChecked() && hasCompliantFork(model);
+  const int keptIndex = fork_->currentData().toInt();
+  if (keptIndex > 0 && hasCompliantFork(model)) r.kept = kept_.at(static_cast<std::size_t>(keptIndex - 1));
+  return r;
+}
+
 void StabilityPage::run() {
-  auto speeds = st::speedGrid(from_->value(), to_->value(), step_->value());
-  if (!speeds) {
-    present(speeds.error());
+  start(true);
+}
+
+void StabilityPage::openShowing() {
+  const auto ids = storedResults();
+  if (ids.empty() || !showStored(ids.back())) start(false);
+}
+
+void StabilityPage::start(bool keepResult) {
+  if (auto speeds = st::speedGrid(from_->value(), to_->value(), step_->value()); !speeds) {
+    present(speeds.error(), true);
     return;
   }
-  const Model model = static_cast<Model>(model_->currentIndex());
-  const bool compare = compare_->isChecked() && hasCompliantFork(model);
-  const std::string file = parameterFile_.toStdString();
-  std::optional<st::KeptFork> kept;
-  const int keptIndex = fork_->currentData().toInt();
-  if (keptIndex > 0 && hasCompliantFork(model)) kept = kept_.at(static_cast<std::size_t>(keptIndex - 1));
   runButton_->setEnabled(false);
   summary_->setText(tr("Computing the eigenvalues against speed..."));
-  const std::vector<double> grid = *speeds;
-  auto work = [model, compare, file, kept, grid](JobProgress&) -> core::Result<Sweeps> {
-    auto main = sweepOf(model, file, false, kept, grid);
-    if (!main) return main.error();
-    Sweeps out{std::move(main).value(), std::nullopt};
-    if (compare) {
-      auto rigid = sweepOf(model, file, true, std::nullopt, grid);
-      if (!rigid) return rigid.error();
-      out.rigid = std::move(rigid).value();
-    }
+  const bool keep = keepResult && project_ && project_->store();
+  auto work = [request = request(), keep](JobProgress&) -> core::Result<Sweeps> {
+    auto record = st::computeStabilityRecord(request);
+    if (!record) return record.error();
+    Sweeps out{std::move(*record), {}};
+    if (keep) out.json = st::stabilityRecordJson(out.record);
     return out;
   };
   if (!jobs_) {
     JobProgress progress;
-    present(work(progress));
+    present(work(progress), keep);
     return;
   }
   jobs_->run<Sweeps>(this, tr("Stability against speed"), work,
-                     [this](core::Result<Sweeps> result) { present(std::move(result)); });
+                     [this, keep](core::Result<Sweeps> result) { present(std::move(result), keep); });
 }
 
-void StabilityPage::present(core::Result<Sweeps> result) {
+// Keeps the sweep as an analysis of kind "stability" under the kept fork's
+// specimen or the vehicle's default one (core/stability/stability_record.h).
+QString StabilityPage::keep(const Sweeps& sweeps) {
+  lastStoredId_ = 0;
+  if (!project_ || !project_->store()) return {};
+  const st::StabilityRequest r = request();
+  auto specimen = r.kept ? core::Result<std::int64_t>(r.kept->specimenId)
+                         : st::defaultStabilitySpecimen(*project_->store(), sweeps.record.vehicle);
+  if (!specimen) return tr("Not kept: %1").arg(QString::fromStdString(specimen.error().describe()));
+  auto name = st::freeAnalysisName(*project_->store(), *specimen, sweeps.record.model);
+  if (!name) return tr("Not kept: %1").arg(QString::fromStdString(name.error().describe()));
+  core::io::StoredAnalysis a;
+  a.specimenId = *specimen;
+  a.kind = st::kStabilityAnalysisKind;
+  a.name = *name;
+  a.resultJson = sweeps.json.empty() ? st::stabilityRecordJson(sweeps.record) : sweeps.json;
+  auto id = project_->addAnalysis(a);
+  if (!id) return tr("Not kept: %1").arg(QString::fromStdString(id.error().describe()));
+  lastStoredId_ = *id;
+  return tr("Kept in the project as analysis %1.").arg(*id);
+}
+
+void StabilityPage::refreshStored() {
+  const qint64 previous = stored_->currentData().toLongLong();
+  const QSignalBlocker block(stored_);
+  stored_->clear();
+  if (project_ && project_->store()) {
+    if (auto analyses = project_->store()->analyses())
+      for (const auto& a : *analyses)
+        if (a.kind == st::kStabilityAnalysisKind)
+          stored_->addItem(tr("%1 (analysis %2)").arg(QString::fromStdString(a.name)).arg(a.id),
+                           QVariant::fromValue<qint64>(a.id));
+  }
+  const int at = stored_->findData(QVariant::fromValue<qint64>(previous));
+  stored_->setCurrentIndex(at >= 0 ? at : stored_->count() - 1);
+  stored_->setEnabled(stored_->count() > 0);
+  showStored_->setEnabled(stored_->count() > 0);
+}
+
+std::vector<qint64> StabilityPage::storedResults() const {
+  std::vector<qint64> ids;
+  for (int i = 0; i < stored_->count(); ++i) ids.push_back(stored_->itemData(i).toLongLong());
+  return ids;
+}
+
+bool StabilityPage::showStored(qint64 analysisId) {
+  if (!project_ || !project_->store()) return false;
+  auto stored = st::storedStabilityRecord(*project_->store(), analysisId);
+  if (!stored) {
+    present(stored.error(), false, true);
+    return false;
+  }
+  const int at = stored_->findData(QVariant::fromValue<qint64>(analysisId));
+  if (at >= 0) stored_->setCurrentIndex(at);
+  showRecord(std::move(stored->record));
+  return true;
+}
+
+void StabilityPage::showRecord(st::StabilityRecord record) {
+  // The controls say what the record is: its vehicle and fork, its speeds
+  // and parameter file (a kept fork's choice stays as it is).
+  for (int m = 0; m < 7; ++m)
+    if (isMotorcycle(static_cast<Model>(m)) == (record.vehicle == "motorcycle") && record.fork == kForks[m]) {
+      setModel(static_cast<Model>(m));
+      break;
+    }
+  if (record.step > 0.0) setSpeedRange(record.from, record.to, record.step);
+  setParameterFile(QString::fromStdString(record.parametersFile));
+  compare_->setChecked(record.rigidSweep.has_value());
+  present(Sweeps{std::move(record), {}}, false, true);
+}
+
+std::optional<st::StabilityRecord> StabilityPage::record() const {
+  if (!record_ || !sweep_) return std::nullopt;
+  st::StabilityRecord r = *record_;
+  r.sweep = *sweep_;
+  r.rigidSweep = rigidSweep_;
+  return r;
+}
+
+void StabilityPage::present(core::Result<Sweeps> result, bool keepIt, bool fromStore) {
   runButton_->setEnabled(true);
   for (QwtPlot* plot : {real_, imaginary_}) plot->detachItems(QwtPlotItem::Rtti_PlotCurve, true);
   for (QwtPlotMarker* m : markers_) {  // ours only: the plots' cursors stay
@@ -321,6 +380,7 @@ void StabilityPage::present(core::Result<Sweeps> result) {
   }
   markers_.clear();
   if (!result) {
+    record_.reset();
     sweep_.reset();
     rigidSweep_.reset();
     summary_->setText(tr("Cannot compute: %1").arg(QString::fromStdString(result.error().describe())));
@@ -329,8 +389,14 @@ void StabilityPage::present(core::Result<Sweeps> result) {
     emit finished(false);
     return;
   }
-  sweep_ = std::move(result->main);
-  rigidSweep_ = std::move(result->rigid);
+  const QString kept = keepIt ? keep(*result) : QString();
+  // The sweeps moved, not copied (10,000 speeds redraw within a frame); the
+  // rest of the record kept beside them.
+  sweep_ = std::move(result->record.sweep);
+  rigidSweep_ = std::move(result->record.rigidSweep);
+  result->record.sweep = {};
+  result->record.rigidSweep.reset();
+  record_ = std::move(result->record);
   auto* zero = new QwtPlotMarker;
   zero->setLineStyle(QwtPlotMarker::HLine);
   zero->setYValue(0.0);
@@ -358,6 +424,8 @@ void StabilityPage::present(core::Result<Sweeps> result) {
     text +=
         QStringLiteral(". ") + (rigidLines.isEmpty() ? tr("Rigid fork: no real part crosses zero.")
                                                      : tr("Rigid fork: %1").arg(rigidLines.join(QStringLiteral("; "))));
+  if (fromStore) text = tr("Stored: %1. %2").arg(QString::fromStdString(record_->model), text);
+  if (!kept.isEmpty()) text += QLatin1Char(' ') + kept;
   summary_->setText(text);
   alignLeftAxes({real_, imaginary_});  // one speed axis: the canvases line up
   real_->replot();
@@ -382,6 +450,8 @@ void StabilityPage::drawSweep(const st::StabilitySweep& sweep, bool rigid, QStri
       auto* c = new QwtPlotCurve(rigid ? tr("%1 (rigid fork)").arg(it.key()) : it.key());
       const QColor colour = modeColour(it.key().toStdString());
       c->setStyle(QwtPlotCurve::NoCurve);
+      // Points on the same pixel drawn once: 10,000 speeds redraw within a frame.
+      c->setPaintAttribute(QwtPlotCurve::FilterPoints, true);
       c->setSymbol(rigid ? new QwtSymbol(QwtSymbol::Ellipse, QBrush(Qt::NoBrush), QPen(colour, 1.0), QSize(6, 6))
                          : new QwtSymbol(QwtSymbol::Ellipse, QBrush(colour), QPen(colour), QSize(4, 4)));
       c->setSamples(it.value());
@@ -456,6 +526,9 @@ void StabilityPage::retranslate() {
   setParameterFile(parameterFile_);
   speedsLabel_->setText(tr("Speeds from, to, step:"));
   runButton_->setText(tr("Compute"));
+  storedLabel_->setText(tr("Kept results:"));
+  stored_->setToolTip(tr("Stability sweeps the project keeps (this page, mozzi-cli stability --project)"));
+  showStored_->setText(tr("Show"));
   real_->setTitle(tr("Real part of the eigenvalues"));
   real_->setAxisTitle(QwtPlot::xBottom, tr("Speed [m/s]"));
   real_->setAxisTitle(QwtPlot::yLeft, tr("Re λ [1/s]"));

@@ -12,7 +12,10 @@
 // the bicycle's or Sharp's CSV, as `mozzi-cli stability --params` reads).
 // "Compare with the rigid fork" sweeps the same vehicle with a rigid fork too
 // and draws both on one plot (rigid: open symbols, dotted markers). The
-// sweeps run on the job runner; the page computes nothing itself.
+// sweeps run on the job runner; the page computes nothing itself. With a
+// project open, every sweep is kept as an analysis of kind "stability"
+// (core/stability/stability_record.h), which the page lists and re-shows, as
+// `mozzi-cli stability --project` and the project report read it.
 
 #include <QString>
 #include <QStringList>
@@ -22,6 +25,7 @@
 
 #include "core/stability/kept_forks.h"
 #include "core/stability/mode_tracking.h"
+#include "core/stability/stability_record.h"
 
 class QCheckBox;
 class QComboBox;
@@ -67,8 +71,21 @@ class StabilityPage : public QWidget {
   // 0: the thesis's fork; i > 0: the i-th kept fork the choice lists.
   bool setForkChoice(int index);
   int forkChoiceCount() const;
-  // Starts the sweep (on the job runner when there is one, else at once).
+  // Starts the sweep (on the job runner when there is one, else at once);
+  // with a project open the result is kept in it.
   void run();
+  // On opening: the last kept result, else a sweep with the page's defaults
+  // that is not kept.
+  void openShowing();
+  // The stability analyses the project keeps (ids, in the list's order), and
+  // one of them shown again (false and the error in the summary if unreadable).
+  std::vector<qint64> storedResults() const;
+  bool showStored(qint64 analysisId);
+  // Draws a record (a stored one, or the report's figure).
+  void showRecord(core::stability::StabilityRecord record);
+  qint64 lastStoredId() const { return lastStoredId_; }  // 0: the last sweep was not kept
+  // The record shown (a copy: for tests and the log).
+  std::optional<core::stability::StabilityRecord> record() const;
   // For tests and the log.
   const std::optional<core::stability::StabilitySweep>& sweep() const { return sweep_; }
   const std::optional<core::stability::StabilitySweep>& rigidSweep() const { return rigidSweep_; }
@@ -85,13 +102,19 @@ class StabilityPage : public QWidget {
  private:
   void retranslate();
   struct Sweeps;
-  void present(core::Result<Sweeps> sweeps);
+  void present(core::Result<Sweeps> sweeps, bool keepIt, bool fromStore = false);
+  core::stability::StabilityRequest request() const;
+  QString keep(const Sweeps& sweeps);
+  void refreshStored();
+  void start(bool keepResult);
   void modelChanged();
   void refreshForks();
   void chooseParameterFile();
   void drawSweep(const core::stability::StabilitySweep& sweep, bool rigid, QStringList& lines);
 
   JobRunner* jobs_ = nullptr;
+  std::optional<core::stability::StabilityRecord> record_;  // without its sweeps: sweep_, rigidSweep_
+  qint64 lastStoredId_ = 0;
   std::optional<core::stability::StabilitySweep> sweep_;
   std::optional<core::stability::StabilitySweep> rigidSweep_;
   QString parameterFile_;
@@ -113,6 +136,9 @@ class StabilityPage : public QWidget {
   QLabel* modelLabel_ = nullptr;
   QLabel* speedsLabel_ = nullptr;
   QLabel* summary_ = nullptr;
+  QLabel* storedLabel_ = nullptr;
+  QComboBox* stored_ = nullptr;
+  QPushButton* showStored_ = nullptr;
   QwtPlot* real_ = nullptr;
   QwtPlot* imaginary_ = nullptr;
   std::vector<QwtPlotMarker*> markers_;  // the zero line and the critical speeds

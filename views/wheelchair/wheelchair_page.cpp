@@ -3,6 +3,7 @@
 #include <qwt_legend.h>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
+#include <QComboBox>
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -13,6 +14,7 @@
 
 #include "core/common/text.h"
 #include "views/common/job_runner.h"
+#include "views/common/project_model.h"
 #include "views/panels/parameter_form.h"
 #include "views/plots/interactive_plot.h"
 
@@ -52,36 +54,18 @@ st::WheelchairParameters chairOf(const ParameterMap& v) {
   return p;
 }
 
-// The manoeuvre for each factor of the study, as `mozzi-cli wheelchair` runs
-// it: the slalom through runSlalom (the CLI's slalom --out history), steady
-// turning through simulate with the torque ramped up.
-core::Result<std::vector<WheelchairPage::Run>> simulateAll(const ParameterMap& v) {
-  const std::string manoeuvre = devices::parameterText(v, "manoeuvre", "slalom");
-  const std::string study = devices::parameterText(v, "study", "none");
-  const double speed = devices::parameterReal(v, "speed", 4.0 / 3.6);
-  const double torque = devices::parameterReal(v, "torque", 10.0);
-  const double frequency = devices::parameterReal(v, "frequency", 0.25);
-  const double duration = devices::parameterReal(v, "duration", 20.0);
-  const double ramp = devices::parameterReal(v, "ramp", 1.0);
-  const std::vector<double> factors = study == "none" ? std::vector<double>{1.0} : std::vector<double>{0.5, 1.0, 2.0};
-  std::vector<WheelchairPage::Run> out;
-  for (double factor : factors) {
-    st::WheelchairParameters p = chairOf(v);
-    if (study == "cornering stiffness") p.rearCorneringStiffness *= factor;  // Figures 57, 58
-    if (study == "aligning stiffness") p.rearAligningStiffness *= factor;    // Figures 59, 60
-    WheelchairPage::Run run{factor, {}};
-    if (manoeuvre == "slalom") {
-      auto r = st::runSlalom(p, speed, torque, frequency, duration);
-      if (!r) return r.error();
-      run.history = std::move(r->history);
-    } else {
-      auto r = st::simulate(p, st::steadyTurningManoeuvre(speed, torque, ramp, duration));
-      if (!r) return r.error();
-      run.history = std::move(*r);
-    }
-    out.push_back(std::move(run));
-  }
-  return out;
+// The form's study: the manoeuvre and chair as `mozzi-cli wheelchair` takes them.
+st::WheelchairStudy studyOf(const ParameterMap& v) {
+  st::WheelchairStudy s;
+  s.manoeuvre = devices::parameterText(v, "manoeuvre", "slalom");
+  s.study = devices::parameterText(v, "study", "none");
+  s.speed = devices::parameterReal(v, "speed", 4.0 / 3.6);
+  s.torque = devices::parameterReal(v, "torque", 10.0);
+  s.frequency = devices::parameterReal(v, "frequency", 0.25);
+  s.duration = devices::parameterReal(v, "duration", 20.0);
+  s.ramp = devices::parameterReal(v, "ramp", 1.0);
+  s.chair = chairOf(v);
+  return s;
 }
 
 QColor runColour(std::size_t i) {
@@ -143,6 +127,11 @@ WheelchairPage::WheelchairPage(QWidget* parent, JobRunner* jobs) : QWidget(paren
   slipRight_ = plot("wheelchairSlipRight");
   slipLeft_ = plot("wheelchairSlipLeft");
   trajectory_->insertLegend(new QwtLegend, QwtPlot::RightLegend);
+  storedLabel_ = new QLabel(this);
+  stored_ = new QComboBox(this);
+  stored_->setObjectName(QStringLiteral("wheelchairStored"));
+  showStored_ = new QPushButton(this);
+  showStored_->setObjectName(QStringLiteral("wheelchairShowStored"));
 
   auto* scroll = new QScrollArea(this);
   scroll->setWidget(form_);
@@ -152,6 +141,9 @@ WheelchairPage::WheelchairPage(QWidget* parent, JobRunner* jobs) : QWidget(paren
   auto* left = new QVBoxLayout;
   left->addWidget(scroll, 1);
   left->addWidget(runButton_);
+  left->addWidget(storedLabel_);
+  left->addWidget(stored_);
+  left->addWidget(showStored_);
   auto* slips = new QHBoxLayout;
   slips->addWidget(slipRight_);
   slips->addWidget(slipLeft_);
@@ -163,43 +155,151 @@ WheelchairPage::WheelchairPage(QWidget* parent, JobRunner* jobs) : QWidget(paren
   layout->addLayout(left);
   layout->addLayout(right, 1);
   connect(runButton_, &QPushButton::clicked, this, &WheelchairPage::run);
+  connect(showStored_, &QPushButton::clicked, this, [this] {
+    if (stored_->count() > 0) showStored(stored_->currentData().toLongLong());
+  });
   retranslate();
+  refreshStored();
 }
 
 void WheelchairPage::run() {
+  start(true);
+}
+
+void WheelchairPage::openShowing() {
+  const auto ids = storedResults();
+  if (ids.empty() || !showStored(ids.back())) start(false);
+}
+
+void WheelchairPage::start(bool keepResult) {
   if (form_->hasProblems()) {
     summary_->setText(tr("Correct the marked values first."));
     emit finished(false);
     return;
   }
-  const ParameterMap values = form_->values();
+  const st::WheelchairStudy study = studyOf(form_->values());
   runButton_->setEnabled(false);
   summary_->setText(tr("Simulating the manoeuvre..."));
-  auto work = [values](JobProgress&) { return simulateAll(values); };
+  const bool keep = keepResult && project_ && project_->store();
+  // The record and its result_json, serialised on the job runner's thread.
+  auto work = [study, keep](JobProgress&) -> core::Result<Outcome> {
+    auto record = st::runWheelchairStudy(study);
+    if (!record) return record.error();
+    Outcome out{std::move(*record), {}};
+    if (keep) out.json = st::wheelchairRecordJson(out.record);
+    return out;
+  };
   if (!jobs_) {
     JobProgress progress;
-    present(work(progress), values);
+    present(work(progress), keep);
     return;
   }
-  jobs_->run<std::vector<Run>>(
-      this, tr("Wheelchair manoeuvre"), work,
-      [this, values](core::Result<std::vector<Run>> result) { present(std::move(result), values); });
+  jobs_->run<Outcome>(this, tr("Wheelchair manoeuvre"), work,
+                      [this, keep](core::Result<Outcome> result) { present(std::move(result), keep); });
 }
 
-void WheelchairPage::present(core::Result<std::vector<Run>> result, const ParameterMap& values) {
+void WheelchairPage::setProjectModel(ProjectModel* model) {
+  project_ = model;
+  if (project_) {
+    connect(project_, &ProjectModel::analysesChanged, this, &WheelchairPage::refreshStored);
+    connect(project_, &ProjectModel::projectChanged, this, &WheelchairPage::refreshStored);
+  }
+  refreshStored();
+}
+
+// Keeps the runs as an analysis of kind "wheelchair" under the project's
+// wheelchair-tyre specimen (core/stability/wheelchair_record.h).
+QString WheelchairPage::keep(const Outcome& outcome) {
+  lastStoredId_ = 0;
+  if (!project_ || !project_->store()) return {};
+  auto specimen = st::defaultWheelchairSpecimen(*project_->store());
+  if (!specimen) return tr("Not kept: %1").arg(QString::fromStdString(specimen.error().describe()));
+  const std::string base = outcome.record.study.manoeuvre +
+                           (outcome.record.study.study == "none" ? "" : ", " + outcome.record.study.study + " study");
+  auto a = st::wheelchairAnalysis(*project_->store(), *specimen, base, st::WheelchairRecord{});
+  if (!a) return tr("Not kept: %1").arg(QString::fromStdString(a.error().describe()));
+  a->resultJson = outcome.json.empty() ? st::wheelchairRecordJson(outcome.record) : outcome.json;
+  auto id = project_->addAnalysis(*a);
+  if (!id) return tr("Not kept: %1").arg(QString::fromStdString(id.error().describe()));
+  lastStoredId_ = *id;
+  return tr("Kept in the project as analysis %1.").arg(*id);
+}
+
+void WheelchairPage::refreshStored() {
+  const qint64 previous = stored_->currentData().toLongLong();
+  const QSignalBlocker block(stored_);
+  stored_->clear();
+  if (project_ && project_->store()) {
+    if (auto analyses = project_->store()->analyses())
+      for (const auto& a : *analyses)
+        if (a.kind == st::kWheelchairAnalysisKind)
+          stored_->addItem(tr("%1 (analysis %2)").arg(QString::fromStdString(a.name)).arg(a.id),
+                           QVariant::fromValue<qint64>(a.id));
+  }
+  const int at = stored_->findData(QVariant::fromValue<qint64>(previous));
+  stored_->setCurrentIndex(at >= 0 ? at : stored_->count() - 1);
+  stored_->setEnabled(stored_->count() > 0);
+  showStored_->setEnabled(stored_->count() > 0);
+}
+
+std::vector<qint64> WheelchairPage::storedResults() const {
+  std::vector<qint64> ids;
+  for (int i = 0; i < stored_->count(); ++i) ids.push_back(stored_->itemData(i).toLongLong());
+  return ids;
+}
+
+bool WheelchairPage::showStored(qint64 analysisId) {
+  if (!project_ || !project_->store()) return false;
+  auto stored = st::storedWheelchairRecord(*project_->store(), analysisId);
+  if (!stored) {
+    present(stored.error(), false);
+    return false;
+  }
+  const int at = stored_->findData(QVariant::fromValue<qint64>(analysisId));
+  if (at >= 0) stored_->setCurrentIndex(at);
+  showRecord(stored->record);
+  return true;
+}
+
+void WheelchairPage::showRecord(const st::WheelchairRecord& record) {
+  // The form says what the record is (a value outside the form's range is
+  // clamped and marked there; the plots show the record as kept).
+  const st::WheelchairStudy& s = record.study;
+  (void)form_->setValues({{"manoeuvre", s.manoeuvre},
+                          {"study", s.study},
+                          {"speed", s.speed},
+                          {"torque", s.torque},
+                          {"frequency", s.frequency},
+                          {"duration", s.duration},
+                          {"ramp", s.ramp},
+                          {"chair.mass", s.chair.mass},
+                          {"chair.yaw_inertia", s.chair.yawInertia},
+                          {"chair.rear_axle_behind", s.chair.rearAxleBehindCoM},
+                          {"chair.caster_ahead", s.chair.casterAheadOfCoM},
+                          {"chair.half_track", s.chair.rearHalfTrack},
+                          {"chair.cornering_stiffness", s.chair.rearCorneringStiffness},
+                          {"chair.aligning_stiffness", s.chair.rearAligningStiffness}});
+  present(Outcome{record, {}}, false);
+}
+
+void WheelchairPage::present(core::Result<Outcome> result, bool keepIt) {
   runButton_->setEnabled(true);
   for (QwtPlot* p : {trajectory_, slipRight_, slipLeft_}) p->detachItems(QwtPlotItem::Rtti_PlotCurve, true);
   if (!result) {
     runs_.clear();
+    record_.reset();
     summary_->setText(tr("Cannot simulate: %1").arg(QString::fromStdString(result.error().describe())));
     for (QwtPlot* p : {trajectory_, slipRight_, slipLeft_}) p->replot();
     emit finished(false);
     return;
   }
-  runs_ = std::move(result).value();
-  const std::string study = devices::parameterText(values, "study", "none");
-  const bool slalom = devices::parameterText(values, "manoeuvre", "slalom") == "slalom";
-  const double frequency = devices::parameterReal(values, "frequency", 0.25);
+  const QString kept = keepIt ? keep(*result) : QString();
+  record_ = std::move(result->record);
+  runs_.clear();
+  for (const auto& r : record_->runs) runs_.push_back(Run{r.factor, r.history});
+  const std::string study = record_->study.study;
+  const bool slalom = record_->study.manoeuvre == "slalom";
+  const double frequency = record_->study.frequency;
   QStringList lines;
   for (std::size_t i = 0; i < runs_.size(); ++i) {
     const Run& run = runs_[i];
@@ -237,6 +337,7 @@ void WheelchairPage::present(core::Result<std::vector<Run>> result, const Parame
                    .arg(name, number(radius, 4), number(end.slipRight / kDeg, 4), number(end.slipLeft / kDeg, 4));
     }
   }
+  if (!kept.isEmpty()) lines << kept;
   summary_->setText(lines.join(QLatin1Char('\n')));
   // A turn is drawn to scale (its circle round); a slalom's sideways sway
   // would vanish at equal scales, so its axes fit the path.
@@ -256,6 +357,9 @@ void WheelchairPage::changeEvent(QEvent* event) {
 
 void WheelchairPage::retranslate() {
   runButton_->setText(tr("Simulate"));
+  storedLabel_->setText(tr("Kept results:"));
+  stored_->setToolTip(tr("Manoeuvres the project keeps (this page, mozzi-cli wheelchair slalom --project)"));
+  showStored_->setText(tr("Show"));
   trajectory_->setTitle(tr("Trajectory of the centre of mass (thesis Figures 57 to 60)"));
   trajectory_->setAxisTitle(QwtPlot::xBottom, tr("x [m]"));
   trajectory_->setAxisTitle(QwtPlot::yLeft, tr("y [m]"));

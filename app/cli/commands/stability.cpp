@@ -5,15 +5,19 @@
 #include <cmath>
 #include <iomanip>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 #include <sstream>
+#include <utility>
 
 #include "app/cli/args.h"
 #include "app/cli/command.h"
+#include "core/io/project_store.h"
 #include "core/stability/benchmark_bicycle.h"
 #include "core/stability/compliant_fork_bicycle.h"
 #include "core/stability/mode_tracking.h"
 #include "core/stability/motorcycle.h"
+#include "core/stability/stability_record.h"
 
 namespace mozzi::cli {
 namespace {
@@ -22,14 +26,15 @@ namespace st = core::stability;
 
 constexpr const char* kUsage =
     "Usage: mozzi-cli stability bicycle [--params FILE] [--fork-bending k,c,hW | --fork-torsion k,c] "
-    "--speeds A:B:STEP [--json]\n"
-    "       mozzi-cli stability motorcycle --params FILE [--fork-model 1|2|3|rigid] --speeds A:B:STEP [--json]\n";
+    "--speeds A:B:STEP [--json] [--project P.mozzi [--store NAME] [--specimen NAME]]\n"
+    "       mozzi-cli stability motorcycle --params FILE [--fork-model 1|2|3|rigid] --speeds A:B:STEP [--json]\n"
+    "                                      [--project P.mozzi [--store NAME] [--specimen NAME]]\n";
 
 // The option table (docs/cli/stability.md): road speeds; fork joint
 // stiffness up to 1e12 N m/rad (rigid for practical purposes, balance.h),
 // damping and bend arm of a real fork.
 const OptionSpec kSpec{
-    {"--params", "--fork-model"},
+    {"--params", "--fork-model", "--project", "--store", "--specimen"},
     {"--json"},
     {{"--speeds",
       "speed grid",
@@ -43,33 +48,6 @@ const OptionSpec kSpec{
       "fork torsion joint",
       {{"k", aboveTo(0, 1e12, "N m/rad")}, {"c", closed(0, 1e6, "N m s/rad")}},
       ','}}};
-
-nlohmann::json toJson(const std::string& model, const st::StabilitySweep& sweep) {
-  nlohmann::json j;
-  j["model"] = model;
-  j["speeds"] = nlohmann::json::array();
-  for (const auto& p : sweep.points) {
-    nlohmann::json modes = nlohmann::json::array();
-    for (const auto& r : p.roots) modes.push_back({{"name", r.name}, {"re", r.lambda.real()}, {"im", r.lambda.imag()}});
-    j["speeds"].push_back({{"v", p.v}, {"modes", modes}});
-  }
-  nlohmann::json critical = nlohmann::json::object();
-  for (const char* name : {"weave", "capsize", "wobble"}) critical[name] = nullptr;
-  for (const auto& e : sweep.events) {
-    if (e.kind != "stabilises" && e.kind != "destabilises") continue;
-    if (critical.contains(e.mode) && !critical[e.mode].is_null()) continue;
-    critical[e.mode] = e.v;
-  }
-  j["critical_speeds"] = critical;
-  j["events"] = nlohmann::json::array();
-  for (const auto& e : sweep.events) {
-    nlohmann::json ev = {{"mode", e.mode}, {"v", e.v}, {"kind", e.kind}};
-    if (e.kind == "pair born" || e.kind == "pair splits") ev["lambda"] = e.lambda;
-    if (e.kind == "stabilises" || e.kind == "destabilises") ev["im"] = e.frequency;
-    j["events"].push_back(ev);
-  }
-  return j;
-}
 
 void printText(std::ostream& out, const std::string& model, const st::StabilitySweep& sweep) {
   out << "stability of " << model << "\n";
@@ -85,12 +63,53 @@ void printText(std::ostream& out, const std::string& model, const st::StabilityS
   out << "events:\n";
   if (sweep.events.empty()) out << "  none in this speed range\n";
   for (const auto& e : sweep.events) {
-    out << "  " << e.mode << " " << e.kind << " at " << std::setprecision(6) << e.v << " m/s";
+    out << "  " << e.mode << " " << e.kind << " at " << st::criticalSpeedText(e.v) << " m/s";
     if (e.kind == "stabilises" || e.kind == "destabilises")
-      out << " (" << std::setprecision(3) << e.frequency << " rad/s)";
+      out << " (" << st::crossingFrequencyText(e.frequency) << " rad/s)";
     out << "\n";
   }
   out.unsetf(std::ios::floatfield);
+}
+
+// Keeps the sweep as an analysis of kind "stability" (stability_record.h)
+// under the named specimen or the vehicle's default one; returns its id and name.
+core::Result<std::pair<std::int64_t, std::string>> storeResult(const std::string& path, const std::string& name,
+                                                               const std::optional<std::string>& specimen,
+                                                               const st::StabilityRecord& record) {
+  auto store = core::io::ProjectStore::open(path);
+  if (!store) return store.error();
+  auto id = specimen ? st::specimenNamed(*store, *specimen) : st::defaultStabilitySpecimen(*store, record.vehicle);
+  if (!id) return id.error();
+  auto row = st::stabilityAnalysis(*store, *id, name, record);
+  if (!row) return row.error();
+  auto added = store->addAnalysis(*row);
+  if (!added) return added.error();
+  return std::make_pair(*added, row->name);
+}
+
+// Keeps the record when --project is given, then prints the sweep (text or
+// JSON) with where it was kept.
+int keepAndPrint(const ParsedArgs& parsed, st::StabilityRecord record, std::ostream& out, std::ostream& err) {
+  const auto project = parsed.value("--project");
+  std::optional<std::pair<std::int64_t, std::string>> stored;
+  if (project) {
+    auto kept =
+        storeResult(*project, parsed.value("--store").value_or(record.model), parsed.value("--specimen"), record);
+    if (!kept) {
+      err << "mozzi-cli stability: " << kept.error().describe() << "\n";
+      return kExitFailure;
+    }
+    stored = *kept;
+  }
+  if (parsed.flag("--json")) {
+    auto j = st::sweepJson(record.model, record.sweep);
+    if (stored) j["stored_analysis"] = {{"id", stored->first}, {"name", stored->second}};
+    out << j.dump(2) << "\n";
+  } else {
+    printText(out, record.model, record.sweep);
+    if (stored) out << "stored in " << *project << " as analysis " << stored->first << " '" << stored->second << "'\n";
+  }
+  return kExitOk;
 }
 
 int stabilityCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -121,8 +140,20 @@ int stabilityCommand(const std::vector<std::string>& args, std::ostream& out, st
     return kExitFailure;
   }
 
+  if (!parsed->value("--project") && (parsed->value("--store") || parsed->value("--specimen"))) {
+    err << "mozzi-cli stability: --store and --specimen need --project P.mozzi\n" << kUsage;
+    return kExitUsage;
+  }
   st::StabilitySystem system;
   std::string model;
+  st::StabilityRecord record;
+  record.vehicle = kind;
+  record.from = range.at(0);
+  record.to = range.at(1);
+  record.step = range.at(2);
+  record.forkSource = "command line";
+  record.fork = "rigid";
+  record.parametersFile = parsed->value("--params").value_or("");
   if (kind == "bicycle") {
     if (parsed->value("--fork-model")) {
       err << "mozzi-cli stability bicycle: --fork-model is for the motorcycle\n" << kUsage;
@@ -150,10 +181,12 @@ int stabilityCommand(const std::vector<std::string>& args, std::ostream& out, st
       const auto v = parsed->numbers("--fork-bending");  // k, c, hW, range-checked by parse()
       m = st::forkBendingModel(params, {v.at(0), v.at(1), v.at(2)});
       model += " with fork bending";
+      record.fork = "bending";
     } else if (torsion) {
       const auto v = parsed->numbers("--fork-torsion");  // k, c
       m = st::forkTorsionModel(params, {v.at(0), v.at(1), 0.0});
       model += " with fork torsion";
+      record.fork = "torsion";
     } else {
       m = st::benchmarkModel(params);
     }
@@ -185,6 +218,7 @@ int stabilityCommand(const std::vector<std::string>& args, std::ostream& out, st
         return kExitUsage;
       }
       fork = *f;
+      record.fork = f->name;
     }
     if (!((*speeds)[0] > 0.0)) {
       err << "mozzi-cli stability motorcycle: option --speeds: speeds must be positive (tyre slip divides by "
@@ -209,19 +243,16 @@ int stabilityCommand(const std::vector<std::string>& args, std::ostream& out, st
     err << "mozzi-cli stability: " << sweep.error().describe() << "\n";
     return kExitFailure;
   }
-  if (parsed->flag("--json")) {
-    out << toJson(model, *sweep).dump(2) << "\n";
-  } else {
-    printText(out, model, *sweep);
-  }
-  return kExitOk;
+  record.model = model;
+  record.sweep = *sweep;
+  return keepAndPrint(*parsed, std::move(record), out, err);
 }
 
 const CommandRegistrar kRegistrar(
     {"stability",
      "bicycle [--params FILE] [--fork-bending k,c,hW | --fork-torsion k,c] --speeds A:B:STEP "
      "[--json] | motorcycle --params FILE [--fork-model 1|2|3|rigid] --speeds A:B:STEP "
-     "[--json]",
+     "[--json]; either with [--project P.mozzi [--store NAME] [--specimen NAME]]",
      "Eigenvalues against speed with mode names and critical speeds (weave, capsize, wobble)", stabilityCommand,
      &kSpec});
 

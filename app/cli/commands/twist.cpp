@@ -12,8 +12,8 @@
 #include "app/cli/command.h"
 #include "core/common/dof.h"
 #include "core/io/csv/csv_exchange.h"
-#include "core/io/text_file.h"
 #include "core/stiffness/dynamic_twist.h"
+#include "core/stiffness/plate_csv.h"
 #include "core/stiffness/plate_motion.h"
 #include "core/stiffness/screw_axis.h"
 
@@ -24,110 +24,7 @@ namespace st = core::stiffness;
 using core::Vector2;
 constexpr double kDeg = 180.0 / 3.14159265358979323846;
 
-// A plate CSV: '#' comments and blank lines ignored; rows starting with
-// "sensor,u,v" and "load,u,v" give the geometry; a row whose first field is
-// text that does not read as a number at all (a header) is skipped; every
-// other row is numeric data, and "nan" or "inf" there is an error, not a
-// header. Ranges (docs/cli/stiffness.md): positions within 100 m of the
-// plate origin, data values within 1e9 in SI units; the file at most 64 MiB.
-constexpr double kMaxPlatePosition = 100.0;  // [m]
-constexpr double kMaxPlateValue = 1e9;       // [N, m, Hz, deg, m/N ...]
-constexpr std::uint64_t kMaxPlateFileBytes = std::uint64_t{64} << 20;
-struct PlateCsv {
-  std::vector<Vector2> sensors;
-  Vector2 load = Vector2::Zero();
-  bool hasLoad = false;
-  std::vector<std::vector<double>> rows;
-};
-
-core::Result<std::vector<std::string>> splitLine(const std::string& line) {
-  std::vector<std::string> out;
-  std::string field;
-  std::istringstream s(line);
-  while (std::getline(s, field, ',')) {
-    const auto b = field.find_first_not_of(" \t\r");
-    const auto e = field.find_last_not_of(" \t\r");
-    out.push_back(b == std::string::npos ? std::string() : field.substr(b, e - b + 1));
-  }
-  return out;
-}
-
-// Parses the whole field as a number (nan and inf included: the caller
-// decides); false when it is not a number at all.
-bool parsesAsNumber(const std::string& t, double& v) {
-  if (t.empty()) return false;
-  char* end = nullptr;
-  v = std::strtod(t.c_str(), &end);
-  return end == t.c_str() + t.size();
-}
-
-bool toNumber(const std::string& t, double& v) {
-  return parsesAsNumber(t, v) && std::isfinite(v);
-}
-
-core::Result<PlateCsv> readPlateCsv(const std::string& path, bool needSensors, bool needRows = true) {
-  auto text = core::io::readTextFile(path, "plate CSV", kMaxPlateFileBytes);
-  if (!text) return text.error();
-  std::istringstream in(*text);
-  PlateCsv csv;
-  std::string line;
-  int lineNo = 0;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    const std::string where = path + ":" + std::to_string(lineNo);
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
-    auto fields = *splitLine(line);
-    if (fields[0] == "sensor" || fields[0] == "load") {
-      double u = 0, v = 0;
-      if (fields.size() != 3 || !toNumber(fields[1], u) || !toNumber(fields[2], v)) {
-        return core::makeError(core::ErrorCode::ParseError, "expected '" + fields[0] + ",u,v' with numbers", where);
-      }
-      for (double x : {u, v}) {
-        if (auto r = checkInRange(x, closed(-kMaxPlatePosition, kMaxPlatePosition, "m"), fields[0] + " position"); !r) {
-          return core::makeError(core::ErrorCode::ParseError, r.error().message, where);
-        }
-      }
-      if (fields[0] == "sensor") {
-        csv.sensors.emplace_back(u, v);
-      } else {
-        csv.load = Vector2(u, v);
-        csv.hasLoad = true;
-      }
-      continue;
-    }
-    double probe = 0;
-    if (!parsesAsNumber(fields[0], probe)) continue;  // header row ("nan" is data, and an error below)
-    std::vector<double> row;
-    for (std::size_t k = 0; k < fields.size(); ++k) {
-      const auto& f = fields[k];
-      double v = 0;
-      if (!parsesAsNumber(f, v)) {
-        return core::makeError(core::ErrorCode::ParseError,
-                               "column " + std::to_string(k + 1) + " is not a number: '" + f.substr(0, 40) + "'",
-                               where);
-      }
-      if (auto r = checkInRange(v, closed(-kMaxPlateValue, kMaxPlateValue), "column " + std::to_string(k + 1)); !r) {
-        return core::makeError(core::ErrorCode::ParseError, r.error().message, where);
-      }
-      row.push_back(v);
-    }
-    if (!csv.rows.empty() && row.size() != csv.rows.front().size()) {
-      return core::makeError(
-          core::ErrorCode::ParseError,
-          "row has " + std::to_string(row.size()) + " fields, expected " + std::to_string(csv.rows.front().size()),
-          where);
-    }
-    csv.rows.push_back(std::move(row));
-  }
-  if (needSensors && csv.sensors.size() < 3) {
-    return core::makeError(core::ErrorCode::ParseError,
-                           "at least 3 'sensor,u,v' rows are needed, found " + std::to_string(csv.sensors.size()),
-                           path);
-  }
-  if (needRows && csv.rows.empty()) return core::makeError(core::ErrorCode::ParseError, "no data rows", path);
-  return csv;
-}
+using st::readPlateCsv;  // the plate CSV reader the Twist Axes page shares (core/stiffness/plate_csv.h)
 
 nlohmann::json axisJson(const st::PlateAxis& a) {
   return {{"point_m", {a.point(0), a.point(1)}}, {"direction", {a.direction(0), a.direction(1)}},
@@ -149,33 +46,10 @@ int fail(std::ostream& err, const std::string& cmd, const core::Error& e) {
 int twistStatic(const ParsedArgs& args, const std::string& file, std::ostream& out, std::ostream& err) {
   auto csv = readPlateCsv(file, true);
   if (!csv) return fail(err, "twist static", csv.error());
-  if (!csv->hasLoad)
-    return fail(err, "twist static", core::makeError(core::ErrorCode::ParseError, "no 'load,u,v' row", file));
-  const std::size_t ns = csv->sensors.size();
-  if (csv->rows.front().size() != ns + 1) {
-    return fail(err, "twist static",
-                core::makeError(core::ErrorCode::ParseError,
-                                "data rows need force + " + std::to_string(ns) + " displacements", file));
-  }
+  auto r = st::staticTwistFromCsv(*csv);
+  if (!r) return fail(err, "twist static", r.error());
+  const st::StaticTwistResult& res = *r;
   nlohmann::json j;
-  st::StaticTwistResult res;
-  if (csv->rows.size() == 1) {
-    std::vector<double> w(csv->rows[0].begin() + 1, csv->rows[0].end());
-    auto r = st::staticTwistSingleLoad(csv->sensors, w, csv->rows[0][0], csv->load);
-    if (!r) return fail(err, "twist static", r.error());
-    res = std::move(*r);
-  } else {
-    core::Vector f(static_cast<Eigen::Index>(csv->rows.size()));
-    core::Matrix d(static_cast<Eigen::Index>(csv->rows.size()), static_cast<Eigen::Index>(ns));
-    for (std::size_t k = 0; k < csv->rows.size(); ++k) {
-      f(static_cast<Eigen::Index>(k)) = csv->rows[k][0];
-      for (std::size_t i = 0; i < ns; ++i)
-        d(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(i)) = csv->rows[k][i + 1];
-    }
-    auto r = st::staticTwistTest(csv->sensors, f, d, csv->load);
-    if (!r) return fail(err, "twist static", r.error());
-    res = std::move(*r);
-  }
   if (args.flag("--json")) {
     j = {{"axis", axisJson(res.axis.axis)},
          {"lateral_stiffness_N_per_m", res.lateralStiffness},
@@ -204,32 +78,9 @@ int twistStatic(const ParsedArgs& args, const std::string& file, std::ostream& o
 int twistDynamic(const ParsedArgs& args, const std::string& file, std::ostream& out, std::ostream& err) {
   auto csv = readPlateCsv(file, true);
   if (!csv) return fail(err, "twist dynamic", csv.error());
-  const std::size_t ns = csv->sensors.size();
-  const std::size_t nc = csv->rows.front().size();
-  if (nc != 1 + 2 * ns && nc != 3 + 2 * ns) {
-    return fail(err, "twist dynamic",
-                core::makeError(core::ErrorCode::ParseError,
-                                "rows need freq_Hz, then amplitude_m, phase_deg per laser, optionally "
-                                "force_N, force_phase_deg",
-                                file));
-  }
-  std::vector<st::SweepPoint> sweep;
-  for (const auto& r : csv->rows) {
-    st::SweepPoint p;
-    p.frequencyHz = r[0];
-    p.amplitude.resize(static_cast<Eigen::Index>(ns));
-    p.phase.resize(static_cast<Eigen::Index>(ns));
-    for (std::size_t i = 0; i < ns; ++i) {
-      p.amplitude(static_cast<Eigen::Index>(i)) = r[1 + 2 * i];
-      p.phase(static_cast<Eigen::Index>(i)) = r[2 + 2 * i] / kDeg;
-    }
-    if (nc == 3 + 2 * ns) {
-      p.forceAmplitude = r[1 + 2 * ns];
-      p.forcePhase = r[2 + 2 * ns] / kDeg;
-    }
-    sweep.push_back(p);
-  }
-  auto res = st::dynamicTwistSweep(csv->sensors, sweep, csv->load);
+  auto sweep = st::sweepFromCsv(*csv);
+  if (!sweep) return fail(err, "twist dynamic", sweep.error());
+  auto res = st::dynamicTwistSweep(csv->sensors, *sweep, csv->load);
   if (!res) return fail(err, "twist dynamic", res.error());
   nlohmann::json arr = nlohmann::json::array();
   if (!args.flag("--json"))
@@ -332,44 +183,29 @@ int twistModal(const ParsedArgs& args, const std::string& file, std::ostream& ou
     if (!r) return fail(err, "twist modal", r.error());
     return printModal(args, *r, out);
   }
-  if (csv->rows.front().size() != 1 + 2 * ns) {
-    return fail(err, "twist modal",
-                core::makeError(core::ErrorCode::ParseError, "rows need freq_Hz, then Re, Im per accelerometer", file));
-  }
-  core::FrfMatrix frf;
+  core::FrfType frfType = core::FrfType::Accelerance;
   const std::string type = args.value("--type").value_or("accelerance");
   if (type == "accelerance") {
-    frf.type = core::FrfType::Accelerance;
+    frfType = core::FrfType::Accelerance;
   } else if (type == "mobility") {
-    frf.type = core::FrfType::Mobility;
+    frfType = core::FrfType::Mobility;
   } else if (type == "receptance") {
-    frf.type = core::FrfType::Receptance;
+    frfType = core::FrfType::Receptance;
   } else {
     err << "mozzi-cli twist modal: --type must be accelerance, mobility or receptance\n";
     return kExitUsage;
   }
-  const auto nf = static_cast<Eigen::Index>(csv->rows.size());
-  frf.frequencyHz.resize(nf);
-  core::ComplexMatrix h(nf, static_cast<Eigen::Index>(ns));
-  for (Eigen::Index k = 0; k < nf; ++k) {
-    const auto& r = csv->rows[static_cast<std::size_t>(k)];
-    frf.frequencyHz(k) = r[0];
-    for (std::size_t i = 0; i < ns; ++i) h(k, static_cast<Eigen::Index>(i)) = core::Complex(r[1 + 2 * i], r[2 + 2 * i]);
-  }
+  auto frf = st::modalFrfFromCsv(*csv, frfType);
+  if (!frf) return fail(err, "twist modal", frf.error());
   std::vector<int> cols;
-  for (std::size_t i = 0; i < ns; ++i) {
-    frf.responses.push_back(core::Dof{static_cast<int>(i + 1), core::Direction::Y, false});
-    cols.push_back(static_cast<int>(i));
-  }
-  frf.references.push_back(core::Dof{100, core::Direction::Y, false});
-  frf.h.push_back(h);
+  for (std::size_t i = 0; i < ns; ++i) cols.push_back(static_cast<int>(i));
   st::PhasorAxisOptions o;
   if (auto tol = args.number("--phase-tol-deg"); !tol) {
     return fail(err, "twist modal", tol.error());
   } else if (*tol) {
     o.phaseTolerance = **tol / kDeg;
   }
-  auto r = st::modalTwistAxis(frf, cols, 0, **freq, csv->sensors, csv->hasLoad ? csv->load : Vector2::Zero(), o);
+  auto r = st::modalTwistAxis(*frf, cols, 0, **freq, csv->sensors, csv->hasLoad ? csv->load : Vector2::Zero(), o);
   if (!r) return fail(err, "twist modal", r.error());
   return printModal(args, *r, out);
 }

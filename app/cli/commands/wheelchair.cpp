@@ -4,13 +4,18 @@
 #include <cmath>
 #include <iomanip>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
+#include <utility>
 
 #include "app/cli/args.h"
 #include "app/cli/command.h"
 #include "app/cli/output.h"
 #include "core/io/output_file.h"
+#include "core/io/project_store.h"
+#include "core/stability/stability_record.h"
 #include "core/stability/wheelchair_model.h"
+#include "core/stability/wheelchair_record.h"
 
 namespace mozzi::cli {
 namespace {
@@ -23,6 +28,7 @@ const char* kUsage =
     "Usage: mozzi-cli wheelchair steady [--speed M/S] [--torque NM | --yaw-rate RAD/S] [chair options] [--json]\n"
     "       mozzi-cli wheelchair slalom [--speed M/S] [--torque NM] [--frequency HZ] [--duration S]\n"
     "                                   [--out HISTORY.csv] [chair options] [--json]\n"
+    "                                   [--project P.mozzi [--store NAME] [--specimen NAME]]\n"
     "       mozzi-cli wheelchair sensitivity --stiffness cornering|aligning|tyre [--speed] [--torque]\n"
     "                                   [--slalom-torque NM] [--frequency HZ] [--duration S] [--json]\n"
     "chair options: --mass KG --yaw-inertia KGM2 --rear-axle-behind M --caster-ahead M --half-track M\n"
@@ -35,7 +41,7 @@ int usage(std::ostream& err, const std::string& msg) {
 
 // The option table: ranges a wheelchair can have (thesis ch. 7 values are
 // well inside); the frequency bound is the model's (kMaxSlalomFrequencyHz).
-const OptionSpec kSpec{{"--out", "--stiffness"},
+const OptionSpec kSpec{{"--out", "--stiffness", "--project", "--store", "--specimen"},
                        {"--json"},
                        {{"--speed", aboveTo(0, 10, "m/s"), "forward speed"},
                         {"--torque", closed(-1000, 1000, "N m"), "differential torque T_R - T_L (slalom amplitude)"},
@@ -73,6 +79,21 @@ Json slalomJson(const st::SlalomSummary& s) {
           {"slip_mean_left_rad", s.slipMeanLeft}};
 }
 
+// Keeps the slalom as an analysis of kind "wheelchair" (wheelchair_record.h).
+core::Result<std::pair<std::int64_t, std::string>> storeSlalom(const std::string& path, const std::string& name,
+                                                               const std::optional<std::string>& specimen,
+                                                               const st::WheelchairRecord& record) {
+  auto store = core::io::ProjectStore::open(path);
+  if (!store) return store.error();
+  auto id = specimen ? st::specimenNamed(*store, *specimen) : st::defaultWheelchairSpecimen(*store);
+  if (!id) return id.error();
+  auto row = st::wheelchairAnalysis(*store, *id, name, record);
+  if (!row) return row.error();
+  auto added = store->addAnalysis(*row);
+  if (!added) return added.error();
+  return std::make_pair(*added, row->name);
+}
+
 int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const auto a = ParsedArgs::parse(args, kSpec);
   if (!a) {
@@ -99,6 +120,9 @@ int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, s
     if (auto v = a->number(name); v && *v) *target = **v;  // range-checked by parse()
   }
   if (a->value("--out") && a->positional()[0] != "slalom") return usage(err, "--out is for the slalom");
+  if (a->value("--project") && a->positional()[0] != "slalom") return usage(err, "--project is for the slalom");
+  if (!a->value("--project") && (a->value("--store") || a->value("--specimen")))
+    return usage(err, "--store and --specimen need --project P.mozzi");
   if (int rc = refuseOutputsOntoInputs(*a, kSpec, {}, "wheelchair", err); rc != kExitOk) return rc;
   const std::string& sub = a->positional()[0];
   const bool json = a->flag("--json");
@@ -151,8 +175,27 @@ int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, s
         return kExitFailure;
       }
     }
+    std::optional<std::pair<std::int64_t, std::string>> stored;
+    if (auto project = a->value("--project")) {
+      st::WheelchairRecord record;
+      record.study.manoeuvre = "slalom";
+      record.study.speed = speed;
+      record.study.torque = torque;
+      record.study.frequency = frequency;
+      record.study.duration = duration;
+      record.study.chair = p;
+      record.runs.push_back({1.0, *h});
+      auto kept = storeSlalom(*project, a->value("--store").value_or("slalom"), a->value("--specimen"), record);
+      if (!kept) {
+        err << "mozzi-cli wheelchair slalom: " << kept.error().describe() << "\n";
+        return kExitFailure;
+      }
+      stored = *kept;
+    }
     if (json) {
-      out << slalomJson(*s).dump(2) << "\n";
+      Json j = slalomJson(*s);
+      if (stored) j["stored_analysis"] = {{"id", stored->first}, {"name", stored->second}};
+      out << j.dump(2) << "\n";
     } else {
       char line[240];
       std::snprintf(line, sizeof line,
@@ -161,6 +204,9 @@ int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, s
                     speed, torque, frequency, s->lateralAmplitude, s->slipAmplitudeRight / kDeg,
                     s->slipAmplitudeLeft / kDeg);
       out << line;
+      if (stored)
+        out << "stored in " << *a->value("--project") << " as analysis " << stored->first << " '" << stored->second
+            << "'\n";
     }
     return kExitOk;
   }
@@ -195,7 +241,9 @@ int wheelchairCommand(const std::vector<std::string>& args, std::ostream& out, s
   return usage(err, "unknown subcommand '" + sub + "'");
 }
 
-const CommandRegistrar kRegistrar({"wheelchair", "steady|slalom|sensitivity [options] [--json]",
+const CommandRegistrar kRegistrar({"wheelchair",
+                                   "steady|slalom|sensitivity [options] [--json]; slalom [--project P.mozzi "
+                                   "[--store NAME] [--specimen NAME]]",
                                    "Wheelchair manoeuvres with measured tyre stiffnesses (thesis §7.2-§7.4)",
                                    wheelchairCommand, &kSpec});
 

@@ -32,7 +32,7 @@ namespace fs = std::filesystem;
 
 const std::vector<std::string> kHeadings = {
     "Project and specimens", "Frequency response functions", "Modal parameters", "Stiffness tests", "Tyre tests",
-    "Gap diagnoses"};
+    "Gap diagnoses",         "Stability against speed"};
 
 // Modes stored into the demo (it holds none yet): values of our choosing.
 const std::vector<std::pair<double, double>> kModes = {{23.4567, 0.0123}, {71.8125, 0.0251}, {203.375, 0.00875}};
@@ -153,17 +153,23 @@ TEST_F(ReportCliTest, DemoReportAsPdfAndHtml) {
   for (auto it = std::sregex_iterator(index.begin(), index.end(), h2); it != std::sregex_iterator(); ++it, ++sections)
     EXPECT_NE(std::find(kHeadings.begin(), kHeadings.end(), (*it)[1].str()), kHeadings.end()) << (*it)[1].str();
   EXPECT_EQ(sections, static_cast<int>(kHeadings.size()));
+  // The demo's kept stability sweeps (devices/sim/demo_stability.cpp): the
+  // benchmark bicycle's weave speed as the CLI prints it (Meijaard et al.
+  // 2007: 4.29238253634110 m/s) and the Stability page's plots as figures.
+  EXPECT_NE(text.out.find("4.292383"), std::string::npos);
+  EXPECT_NE(index.find("src=\"stability-"), std::string::npos);
   // The FRF overlays, vector and raster; the other figures of the views.
   EXPECT_TRUE(fs::file_size(html / "frf-set-1.svg") > 1000);
   EXPECT_TRUE(fs::file_size(html / "frf-set-1.png") > 1000);
   EXPECT_NE(index.find("src=\"frf-set-1.svg\""), std::string::npos);
-  for (const char* figure : {"frf-coherence-1.svg", "stabilization-1.svg", "stabilization-2.svg", "twist-axes-1.svg",
-                             "tyre-steady-2.svg", "gap-overlay-1.svg"}) {
+  for (const char* figure :
+       {"frf-coherence-1.svg", "stabilization-1.svg", "stabilization-2.svg", "twist-axes-1.svg", "tyre-steady-2.svg"}) {
     EXPECT_TRUE(fs::exists(html / figure) && fs::file_size(html / figure) > 1000) << figure;
     EXPECT_NE(index.find(std::string("src=\"") + figure + "\""), std::string::npos) << figure;
   }
-  // The demo's stored gap diagnosis (demo step 5) with its overlay.
+  // The demo's stored gap diagnosis (demo step 6) with its overlay.
   EXPECT_NE(index.find("Fork A design model against campaign"), std::string::npos);
+  EXPECT_NE(index.find("src=\"gap-overlay-"), std::string::npos);
 
   // One page to PNG (poppler's renderer reads what we wrote).
   const auto png =

@@ -219,6 +219,44 @@ void MainWindowTest::demoProjectFillsTreeOverviewAndProperties() {
   QVERIFY(overview);
   QCOMPARE(overview->specimenRows(), expected);
 
+  // The specimens table's counts are the store's records, specimen by specimen.
+  auto* table = overview->findChild<QTableWidget*>(QStringLiteral("overviewSpecimens"));
+  QVERIFY(table);
+  auto* store = window_->model()->store();
+  const auto frfSets = store->frfSets();
+  const auto modal = store->modalResults();
+  QVERIFY(frfSets.ok() && modal.ok() && !frfSets->empty() && !modal->empty());
+  int frfColumn = -1, modalColumn = -1;
+  for (int c = 0; c < table->columnCount(); ++c) {
+    if (table->horizontalHeaderItem(c)->text() == QStringLiteral("FRF sets")) frfColumn = c;
+    if (table->horizontalHeaderItem(c)->text() == QStringLiteral("Modal results")) modalColumn = c;
+  }
+  QVERIFY(frfColumn > 0 && modalColumn > 0);
+  int frfTotal = 0, modalTotal = 0;
+  for (int r = 0; r < table->rowCount(); ++r) {
+    frfTotal += table->item(r, frfColumn)->text().toInt();
+    modalTotal += table->item(r, modalColumn)->text().toInt();
+  }
+  QCOMPARE(frfTotal, static_cast<int>(frfSets->size()));
+  QCOMPARE(modalTotal, static_cast<int>(modal->size()));
+
+  // The start list offers every page but the Overview, each on something the
+  // demo holds, and opens it: the Mode Animation on a modal result.
+  const auto& entries = overview->startEntries();
+  QCOMPARE(static_cast<int>(entries.size()), static_cast<int>(window_->pages().pages().size()) - 1);
+  int animation = -1;
+  for (int i = 0; i < static_cast<int>(entries.size()); ++i) {
+    const auto& entry = entries[static_cast<std::size_t>(i)];
+    QVERIFY2(entry.available, qPrintable(entry.pageId));
+    if (entry.pageId == QStringLiteral("mode-animation")) animation = i;
+  }
+  QVERIFY(animation >= 0);
+  QCOMPARE(entries[static_cast<std::size_t>(animation)].item.kind, mozzi::views::RecordKind::ModalResult);
+  QWidget* opened = overview->openStartEntry(animation);
+  QVERIFY(opened);
+  QCOMPARE(window_->workArea()->currentPage(), opened);
+  QCOMPARE(window_->workArea()->itemOf(opened).id, entries[static_cast<std::size_t>(animation)].item.id);
+
   tree->setCurrentItem(specimens->child(0));
   auto* properties = window_->findChild<QTableWidget*>(QStringLiteral("propertiesTable"));
   QVERIFY(properties);

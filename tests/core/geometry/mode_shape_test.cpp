@@ -5,6 +5,8 @@
 // worked by hand in the comments.
 #include "core/geometry/mode_shape.h"
 
+#include "core/stiffness/screw_axis.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -165,6 +167,66 @@ TEST(ModeShape, OdsTakesTheNearestLine) {
   EXPECT_EQ(operatingDeflectionShape(frf, 1e9)->line, 10);
   EXPECT_EQ(operatingDeflectionShape(frf, -5.0)->line, 0);
   EXPECT_FALSE(operatingDeflectionShape(frf, 50.0, 1).ok());
+}
+
+// A rigid screw motion about a known axis, measured as a mode on a mesh whose
+// nodes report in a turned cartesian and in a cylindrical displacement system
+// and with some negative DOFs: the readings give back the screw axis of the
+// motion (thesis §1.5; notes.md closed forms), whatever the node systems.
+// Motion: rotation w = theta u about the axis through q with direction u, and
+// a slide h theta along it: d(p) = w x (p - q) + h w. Exact data: round-off.
+TEST(ModeShape, ReadingsOfARigidScrewGiveItsAxisBack) {
+  const Vector3 u = Vector3(0.3, -0.2, 1.0).normalized(), q(0.05, 0.12, 0.0);
+  const double theta = 2e-3, h = 0.04;  // [rad], [m/rad]
+  const Vector3 w = theta * u;
+  MeshDocument d;
+  io::StoredCoordinateSystem turned;
+  turned.label = 1;
+  turned.rotation = Eigen::AngleAxisd(0.6, Vector3(1, 1, 0).normalized()).toRotationMatrix();
+  io::StoredCoordinateSystem cyl;
+  cyl.label = 2;
+  cyl.kind = io::StoredCoordinateSystem::Kind::Cylindrical;
+  cyl.origin = Vector3(0.1, 0.0, 0.0);
+  d.mesh.coordinateSystems = {turned, cyl};
+  const Vector3 at[] = {{0, 0, 0}, {0.4, 0, 0}, {0.4, 0.3, 0.1}, {0, 0.3, -0.2}, {0.2, 0.15, 0.3}};
+  std::vector<Dof> dofs;
+  std::vector<Complex> values;
+  const Complex mode = std::polar(1.0, 0.4);  // a complex mode with a common phase
+  for (int i = 0; i < 5; ++i) {
+    const int cs = i % 3;  // global, turned, cylindrical
+    d.mesh.nodes.push_back(node(i + 1, at[i], 0, cs));
+    const Vector3 disp = w.cross(at[i] - q) + h * w;
+    // Local axes of the node's displacement system, in global coordinates.
+    Matrix3 axes = Matrix3::Identity();
+    if (cs == 1) axes = turned.rotation;
+    if (cs == 2) {
+      const double phi = std::atan2(at[i].y() - cyl.origin.y(), at[i].x() - cyl.origin.x());
+      axes.col(0) = Vector3(std::cos(phi), std::sin(phi), 0);
+      axes.col(1) = Vector3(-std::sin(phi), std::cos(phi), 0);
+      axes.col(2) = Vector3::UnitZ();
+    }
+    for (int k = 0; k < 3; ++k) {
+      const bool negative = (i + k) % 2 == 1;
+      const double local = axes.col(k).dot(disp);
+      dofs.push_back(dof(i + 1, static_cast<Direction>(k + 1), negative));
+      values.push_back((negative ? -local : local) * mode);
+    }
+  }
+  dofs.push_back(dof(3, Direction::RZ));  // a rotation: left out
+  values.emplace_back(5.0, 0.0);
+  dofs.push_back(dof(42, Direction::X));  // a node the mesh lacks: left out
+  values.emplace_back(7.0, 0.0);
+  const ComplexVector v = Eigen::Map<const ComplexVector>(values.data(), static_cast<Eigen::Index>(values.size()));
+  auto r = shapeReadings(d, dofs, v);
+  ASSERT_TRUE(r.ok()) << r.error().describe();
+  ASSERT_EQ(r->values.size(), 15);
+  auto s = stiffness::screwAxisFromReadingPhasors(r->points, r->directions, r->values);
+  ASSERT_TRUE(s.ok()) << s.error().describe();
+  EXPECT_NEAR(std::abs(s->direction.dot(u)), 1.0, 1e-12);
+  EXPECT_LT(s->distance(q), 1e-12);  // the axis passes through q
+  EXPECT_NEAR(s->pitch, h, 1e-12);   // the pitch is the motion's, whatever the phase and the sign
+  EXPECT_LT(s->phaseResidual, 1e-12);
+  EXPECT_FALSE(shapeReadings(d, dofs, v.head(3)).ok());  // sizes differ
 }
 
 }  // namespace

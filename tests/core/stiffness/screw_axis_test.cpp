@@ -121,5 +121,44 @@ TEST(ScrewAxis, PhasorsWithACommonPhase) {
   EXPECT_TRUE(m->lowConfidence);
 }
 
+// Scalar readings (one accelerometer axis each, directions not along the
+// global axes) of the notes.md rigid motion: the same axis and pitch as the
+// full 3-D displacements give, to round-off; with a common complex factor too.
+TEST(ScrewAxis, ReadingsAlongArbitraryDirections) {
+  const Vector3 w(0.001, 0.002, 0.010), dO(0.5e-3, -0.2e-3, 0.3e-3);
+  const Matrix p = plate();
+  const Matrix d = move(p, w, dO);
+  // Two readings per point along skewed (unnormalised) directions: 8 readings.
+  Matrix at(8, 3), dir(8, 3);
+  Vector v(8);
+  const Vector3 e[2] = {Vector3(1, 2, 0.5), Vector3(-0.3, 0.4, 2)};
+  for (int i = 0; i < 4; ++i) {
+    for (int k = 0; k < 2; ++k) {
+      const Vector3 ek = (e[k] + Vector3(0.1 * i, 0, -0.2 * i)).eval();
+      at.row(2 * i + k) = p.row(i);
+      dir.row(2 * i + k) = ek.transpose();
+      v(2 * i + k) = ek.normalized().dot(Vector3(d.row(i).transpose()));
+    }
+  }
+  const auto r = screwAxisFromReadings(at, dir, v);
+  ASSERT_TRUE(r.ok()) << r.error().describe();
+  EXPECT_NEAR((r->direction - Vector3(0.0975900072948533, 0.195180014589707, 0.975900072948533)).norm(), 0, 1e-12);
+  EXPECT_NEAR((r->point - Vector3(0.0247619047619048, 0.0447619047619048, -0.0114285714285714)).norm(), 0, 1e-12);
+  EXPECT_NEAR(r->pitch, 0.0295238095238095, 1e-12);
+  const auto c = screwAxisFromReadingPhasors(at, dir, v.cast<Complex>() * std::polar(3.0, -0.7));
+  ASSERT_TRUE(c.ok()) << c.error().describe();
+  EXPECT_NEAR(std::abs(c->direction.dot(r->direction)), 1.0, 1e-12);
+  EXPECT_NEAR((c->point - r->point).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(c->pitch, r->pitch, 1e-12);
+  // Readings that all lie along x cannot see a rotation about x: refused.
+  Matrix along(8, 3);
+  along.setZero();
+  along.col(0).setOnes();
+  const auto blind = screwAxisFromReadings(at, along, v);
+  ASSERT_FALSE(blind.ok());
+  EXPECT_NE(blind.error().message.find("unseen"), std::string::npos);
+  EXPECT_FALSE(screwAxisFromReadings(at.topRows(5), dir.topRows(5), v.head(5)).ok());  // fewer than 6
+}
+
 }  // namespace
 }  // namespace mozzi::core::stiffness

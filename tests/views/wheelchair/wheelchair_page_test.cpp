@@ -20,6 +20,7 @@
 
 #include "core/stability/wheelchair_model.h"
 #include "views/common/job_runner.h"
+#include "views/common/project_model.h"
 #include "views/panels/parameter_form.h"
 
 using mozzi::views::WheelchairPage;
@@ -134,6 +135,61 @@ class WheelchairPageTest : public QObject {
     }
     QVERIFY2(page.summaryText().contains(QStringLiteral("C_M × 2: radius")), qPrintable(page.summaryText()));
     QVERIFY(mozzi::views::test::saveShot(page, QStringLiteral("wheelchair_steady_aligning")));
+  }
+
+  // With a project open each simulation is kept (analysis of kind
+  // "wheelchair") under the wheelchair-tyre specimen, listed, and shown again
+  // identically: every plotted point of every run bit for bit.
+  void keptRunsReloadIdentically() {
+    QTemporaryDir dir;
+    mozzi::views::ProjectModel project;
+    QVERIFY(project.create(dir.filePath(QStringLiteral("chair.mozzi"))).ok());
+    QVERIFY(project.addSpecimen(QStringLiteral("Frame"), QStringLiteral("frame")).ok());
+    auto tyres = project.addSpecimen(QStringLiteral("Wheelchair tyres"), QStringLiteral("wheelchair-tyre"));
+    QVERIFY(tyres.ok());
+    mozzi::views::JobRunner jobs;
+    WheelchairPage page(nullptr, &jobs);
+    page.resize(1280, 800);
+    page.show();
+    page.setProjectModel(&project);
+    QVERIFY(page.storedResults().empty());
+    QVERIFY(page.form()
+                ->setValues({{"manoeuvre", std::string("slalom")},
+                             {"study", std::string("aligning stiffness")},
+                             {"duration", 12.0}})
+                .ok());
+    QSignalSpy finished(&page, &WheelchairPage::finished);
+    page.run();
+    QVERIFY(finished.wait(60000));
+    QVERIFY2(finished.first().first().toBool(), qPrintable(page.summaryText()));
+    const qint64 first = page.lastStoredId();
+    QVERIFY2(first > 0, qPrintable(page.summaryText()));
+    QCOMPARE(page.storedResults(), std::vector<qint64>{first});
+    auto stored = project.store()->analysis(first);
+    QVERIFY(stored.ok());
+    QCOMPARE(stored->specimenId, *tyres);
+    QCOMPARE(stored->kind, std::string("wheelchair"));
+    auto points = [&page] {
+      std::vector<std::vector<QPointF>> out;
+      for (QwtPlot* plot : {page.trajectoryPlot(), page.slipRightPlot(), page.slipLeftPlot()})
+        for (QwtPlotItem* item : plot->itemList(QwtPlotItem::Rtti_PlotCurve)) {
+          auto* c = static_cast<QwtPlotCurve*>(item);
+          std::vector<QPointF> p;
+          for (size_t i = 0; i < c->dataSize(); ++i) p.push_back(c->sample(static_cast<int>(i)));
+          out.push_back(std::move(p));
+        }
+      return out;
+    };
+    const auto computed = points();
+    QCOMPARE(computed.size(), size_t{9});  // 3 runs x 3 plots
+    QVERIFY(page.form()->setValues({{"study", std::string("none")}}).ok());
+    page.run();
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(page.storedResults().size(), size_t{2});
+    QVERIFY(points() != computed);
+    QVERIFY(page.showStored(first));
+    QVERIFY(points() == computed);
+    QVERIFY(mozzi::views::test::saveShot(page, QStringLiteral("wheelchair_kept_aligning")));
   }
 };
 
