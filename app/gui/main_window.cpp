@@ -34,6 +34,7 @@
 #include "views/common/page_tabs.h"
 #include "views/common/project_model.h"
 #include "views/common/project_tree.h"
+#include "views/report/report_dialog.h"
 
 // Resources compiled into the static mozzi_app library must be registered by
 // hand (the linker drops their unreferenced initialisers). Global scope: the
@@ -154,11 +155,11 @@ void MainWindow::createActions() {
   });
   exportReportAction_ = new QAction(this);
   connect(exportReportAction_, &QAction::triggered, this, [this] {
-    const QString suggested =
-        QDir(projectFolder()).filePath(QFileInfo(model_->path()).completeBaseName() + QStringLiteral("-report.pdf"));
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export Report"), suggested, tr("PDF documents (*.pdf)"));
-    if (!path.isEmpty()) exportReport(path);
+    const QString stem = QDir(projectFolder()).filePath(QFileInfo(model_->path()).completeBaseName());
+    views::ReportDialog dialog(model_, this);
+    dialog.setPdfPath(stem + QStringLiteral("-report.pdf"));
+    dialog.setHtmlDir(stem + QStringLiteral("-report"));
+    if (dialog.exec() == QDialog::Accepted) writeReport(dialog.pdfPath(), dialog.htmlDir(), dialog.reportTemplate());
   });
   quitAction_ = new QAction(this);
   quitAction_->setShortcut(QKeySequence::Quit);
@@ -302,7 +303,7 @@ void MainWindow::retranslateUi() {
   importMenu_->setTitle(tr("&Import"));
   exportMenu_->setTitle(tr("&Export"));
   exportImageAction_->setText(tr("Work Area as &Image..."));
-  exportReportAction_->setText(tr("&Report (PDF)..."));
+  exportReportAction_->setText(tr("&Report..."));
   importUffAction_->setText(tr("&Universal File (UFF)..."));
   quitAction_->setText(tr("&Quit"));
   viewMenu_->setTitle(tr("&View"));
@@ -406,6 +407,23 @@ bool MainWindow::selectItem(const views::ProjectItem& item) {
 }
 
 bool MainWindow::exportReport(const QString& pdfPath) {
+  // PROJECT PDF HTMLDIR SECTIONS SPECIMEN (app/report/report_main.cpp): the project's template.
+  return startReport(pdfPath, {model_->path(), pdfPath, QStringLiteral("-"), QStringLiteral("-"), QStringLiteral("-")});
+}
+
+bool MainWindow::writeReport(const QString& pdfPath, const QString& htmlDir, const core::report::ReportTemplate& t) {
+  if (pdfPath.isEmpty() && htmlDir.isEmpty()) return false;
+  QStringList sections;
+  for (const auto& key : t.sections) sections << QString::fromStdString(key);
+  // PROJECT PDF HTMLDIR SECTIONS SPECIMEN LANG (app/report/report_main.cpp).
+  const auto dash = [](const QString& v) { return v.isEmpty() ? QStringLiteral("-") : v; };
+  return startReport(
+      pdfPath.isEmpty() ? htmlDir : pdfPath,
+      {model_->path(), dash(pdfPath), dash(htmlDir), dash(sections.join(QLatin1Char(','))),
+       dash(QString::fromStdString(t.specimen)), QString::fromLatin1(core::report::languageCode(t.language))});
+}
+
+bool MainWindow::startReport(const QString& pdfPath, const QStringList& arguments) {
   if (!model_->isOpen()) return false;
   // The renderer beside this program (as beside mozzi-cli), else where the
   // build put it.
@@ -421,8 +439,7 @@ bool MainWindow::exportReport(const QString& pdfPath) {
   }
   auto* process = new QProcess(this);
   process->setProgram(renderer);
-  // PROJECT PDF HTMLDIR SECTIONS SPECIMEN (app/report/report_main.cpp): every section.
-  process->setArguments({model_->path(), pdfPath, QStringLiteral("-"), QStringLiteral("-"), QStringLiteral("-")});
+  process->setArguments(arguments);
   QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
   environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
   process->setProcessEnvironment(environment);

@@ -9,6 +9,7 @@
 #include <QPointer>
 #include <QStringList>
 
+#include "core/report/report_template.h"
 #include "views/common/page_registry.h"
 
 class QAction;
@@ -53,6 +54,9 @@ class MainWindow : public QMainWindow {
   // background. False when no project is open or the renderer cannot start;
   // reportExported() says how it ended.
   bool exportReport(const QString& pdfPath);
+  // The report the Report dialog chose: PDF and/or HTML (an empty path: not
+  // that one) with the template's sections, specimen and language.
+  bool writeReport(const QString& pdfPath, const QString& htmlDir, const core::report::ReportTemplate& t);
   // Imports a UFF file into the selected specimen (a new specimen named after
   // the file when the project has none), then shows what it brought.
   bool importUff(const QString& path);
@@ -138,6 +142,7 @@ class MainWindow : public QMainWindow {
   QAction* closeProjectAction_ = nullptr;
   QAction* exportImageAction_ = nullptr;
   QAction* exportReportAction_ = nullptr;
+  bool startReport(const QString& what, const QStringList& arguments);
   QAction* importUffAction_ = nullptr;
   QAction* quitAction_ = nullptr;
   QAction* clearRecentAction_ = nullptr;

@@ -2,8 +2,10 @@
 // checks the command line, the project and the outputs, then runs this
 // program, so mozzi-cli itself links no Qt, Qwt or VTK (its start-up stays
 // that of a core program, docs/performance/commands.md). Arguments, already
-// checked: PROJECT PDF HTMLDIR SECTIONS SPECIMEN, "-" for an absent one,
-// SECTIONS comma-separated keys. Output and exit codes as mozzi-cli report
+// checked: PROJECT PDF HTMLDIR SECTIONS SPECIMEN [LANG], "-" for an absent one,
+// SECTIONS comma-separated keys, LANG "en" or "it" (absent: the project's
+// report template, else English). SECTIONS and SPECIMEN "-" with no LANG
+// (the workbench before its Report dialog) take the project's template too. Output and exit codes as mozzi-cli report
 // (docs/cli/report.md).
 #include <QApplication>
 #include <chrono>
@@ -16,7 +18,9 @@
 
 #include "core/io/project_store.h"
 #include "core/report/project_report.h"
+#include "core/report/report_template.h"
 #include "views/report/report_writer.h"
+#include "views/scene/scene_view.h"
 
 namespace {
 
@@ -37,7 +41,7 @@ std::string utcNow() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 6) {
+  if (argc != 6 && argc != 7) {
     std::cerr << "mozzi-report is run by 'mozzi-cli report' (docs/cli/report.md)\n";
     return 2;
   }
@@ -54,12 +58,28 @@ int main(int argc, char** argv) {
 
   auto store = mozzi::core::io::ProjectStore::open(project, mozzi::core::io::ProjectStore::OpenMode::ReadOnly);
   if (!store) return fail(store.error().describe());
+  if (argc == 7) {
+    auto language = mozzi::core::report::parseLanguage(argv[6]);
+    if (!language) return fail(language.error().describe());
+    options.language = *language;
+  } else {
+    auto saved = mozzi::core::report::loadReportTemplate(*store);
+    if (!saved) return fail(saved.error().describe());
+    if (*saved) {
+      options.language = (*saved)->language;
+      if (sections == "-") options.sections = (*saved)->sections;
+      if (specimen == "-") options.specimen = (*saved)->specimen;
+    }
+  }
   auto report = mozzi::core::report::buildProjectReport(*store, options);
   if (!report) return fail(report.error().describe());
 
   // Widgets draw the figures: the offscreen platform unless the caller chose
   // one (a report never needs a screen).
   if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+  // The 3-D scene's figures (meshes, mode shapes) need VTK's surface format
+  // before the application exists.
+  mozzi::views::SceneView::prepareSurfaceFormat();
   int qtArgc = 1;
   QApplication app(qtArgc, argv);
   const std::vector<std::string> inputs{project};

@@ -9,6 +9,7 @@
 #include "core/gap/diagnosis.h"
 #include "core/io/project_records.h"
 #include "core/report/report.h"
+#include "core/report/report_text.h"
 
 namespace mozzi::core::report {
 
@@ -30,10 +31,21 @@ std::string locationText(const gap::Candidate& candidate);
 // record names): verdict and explanation, gap before and where, the ranked
 // effects (size ± standard error, likelihood ratio, threshold, held-out gain,
 // shrink) and a "gap-overlay" figure placeholder.
-Section gapDiagnosisSection(const gap::Diagnosis& diagnosis, const std::string& model, const std::string& test);
+Section gapDiagnosisSection(const gap::Diagnosis& diagnosis, const std::string& model, const std::string& test,
+                            const Texts& texts = Texts());
 
-// The blocks of a gap diagnosis stored in the project (findings table, and
-// the verdict when its result JSON holds one).
-std::vector<Block> storedAnalysisBlocks(const io::StoredAnalysis& analysis);
+// The blocks of a gap diagnosis stored in the project (findings table, the
+// verdict when its result JSON holds one, and a "gap-overlay" figure of the
+// analysis when it holds overlay curves, storedOverlayJson below).
+std::vector<Block> storedAnalysisBlocks(const io::StoredAnalysis& analysis, const Texts& texts = Texts());
+
+// The analysis record of a diagnosis of `problem` (its findings: the verdict's
+// effect, or each flagged band when no effect explains the gap; resultJson:
+// diagnosisToJson plus "overlay", the measured and model curves before and
+// after the best effect with at most `maxPoints` points each, so a report can
+// draw them without the model and test files). specimenId and the record
+// links are the caller's.
+io::StoredAnalysis analysisFromDiagnosis(const gap::GapProblem& problem, const gap::Diagnosis& diagnosis,
+                                         const std::string& name, int maxCurves = 4, int maxPoints = 400);
 
 }  // namespace mozzi::core::report

@@ -37,14 +37,19 @@ struct Heading {  // a sub-heading inside a section
   std::string text;
 };
 
-// What a renderer draws. `view` names the widget that renders it
-// ("frf-overlay": views/plots FrfPlot of FRF set `recordId`; "gap-overlay":
-// the Model vs Test page's overlay plot); `id` is a file-name stem.
+// What a renderer draws. `view` names the view that renders it (the table of
+// renderers is views/report/report_figures.cpp): "frf-overlay" and
+// "frf-coherence" (FRF set `recordId`), "mesh" (specimen), "stabilization" and
+// "mode-shape" (modal result; `index` the mode, from 0), "twist-axes" (rig
+// test), "tyre-steady-state" (tyre test), "tyre-relaxation" (specimen),
+// "gap-overlay" (stored analysis, or 0: the Model vs Test page's diagnosis).
+// `id` is a file-name stem.
 struct Figure {
   std::string id;
   std::string view;
   std::int64_t recordId = 0;
   std::string caption;
+  int index = 0;
 };
 
 using Block = std::variant<Paragraph, Heading, Table, Figure>;
@@ -57,6 +62,7 @@ struct Section {
 
 struct Report {
   std::string title;
+  std::string language = "en";  // ISO 639-1 code of the text (report_text.h)
   std::vector<Section> sections;
 
   const Section* section(const std::string& key) const {

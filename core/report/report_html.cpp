@@ -43,7 +43,8 @@ std::string escapeHtml(const std::string& text) {
 
 std::string toHtml(const Report& report, const std::function<std::string(const Figure&)>& figureSource,
                    int figureWidth) {
-  std::string html = "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>" + escapeHtml(report.title) +
+  std::string html = "<!DOCTYPE html><html lang=\"" + escapeHtml(report.language) +
+                     "\"><head><meta charset=\"utf-8\"><title>" + escapeHtml(report.title) +
                      "</title><style>body{font-family:sans-serif} table{border-collapse:collapse;margin-bottom:1em} "
                      "caption{text-align:left;font-style:italic} th{background:#e8e8e8}</style></head><body>";
   html += "<h1>" + escapeHtml(report.title) + "</h1>";

@@ -4,6 +4,7 @@
 #include "core/io/project_store.h"
 #include "devices/campaign/demo_campaigns.h"
 #include "devices/rigtests/virtual_rigs.h"
+#include "devices/sim/demo_gap.h"
 #include "devices/sim/demo_stability.h"
 
 namespace mozzi::devices::sim {
@@ -131,9 +132,14 @@ core::Result<void> addStability(DemoContext& demo) {
   return addDemoStability(demo.store);
 }
 
+// Step 6: a design model of fork A with wheel and its gap diagnosis against the campaign's FRFs.
+core::Result<void> addModelAndGapDiagnosis(DemoContext& demo) {
+  return addDemoGapDiagnosis(demo.store);
+}
+
 // The demo, in order; append a step to extend it.
-const DemoStep kDemoSteps[] = {addSpecimensWithMeshes, addRigAndTyreTests, addHammerCampaigns, addIdentifiedModes,
-                               addStability};
+const DemoStep kDemoSteps[] = {addSpecimensWithMeshes, addRigAndTyreTests, addHammerCampaigns,
+                               addIdentifiedModes,     addStability,       addModelAndGapDiagnosis};
 
 }  // namespace
 

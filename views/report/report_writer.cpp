@@ -20,7 +20,7 @@
 #include "views/plots/frf_plot.h"
 #include "views/plots/interactive_plot.h"
 #include "views/plots/plot_export.h"
-#include "views/report/stability_figures.h"
+#include "views/report/report_figures.h"
 
 namespace mozzi {
 namespace views {
@@ -28,43 +28,27 @@ namespace {
 
 constexpr double kMmPerInch = 25.4;
 
-// The widget that draws `figure`, ready to render (nullptr and *error when it
-// cannot be drawn here). `owner` keeps the widget alive.
-QwtPlot* figurePlot(const core::report::Figure& figure, const core::io::ProjectStore& store,
-                    std::unique_ptr<QWidget>& owner, QString* error) {
-  if (isStabilityFigure(figure.view)) return stabilityFigurePlot(figure, store, owner, error);  // stability_figures.cpp
-  if (figure.view == "frf-overlay") {
-    auto frf = store.frfSet(figure.recordId);
-    if (!frf) {
-      if (error) *error = QString::fromStdString(frf.error().describe());
-      return nullptr;
-    }
-    auto plot = std::make_unique<FrfPlot>();
-    plot->resize(1000, 700);
-    plot->setFrfs(std::make_shared<const core::FrfMatrix>(std::move(*frf)));
-    plot->setView(FrfPlot::View::Magnitude);
-    plot->setFilter(core::FrfFilter{});  // every FRF of the set
-    plot->autoscale();
-    QwtPlot* main = plot->mainPlot();
-    // On screen the coherence plot below carries the frequency axis; the
-    // figure is the magnitude alone, so it carries it.
-    main->enableAxis(QwtPlot::xBottom, true);
-    owner = std::move(plot);
-    return main;
+// What draws `figure` (false and *error when its view cannot draw it here).
+bool drawFigure(const core::report::Figure& figure, const core::io::ProjectStore& store,
+                const ReportRenderOptions& options, FigureDrawing& out, QString* error) {
+  const auto& renderers = figureRenderers();
+  const auto it = renderers.find(figure.view);
+  if (it == renderers.end()) {
+    if (error)
+      *error = QCoreApplication::translate("ReportWriter", "the %1 view does not render in a project report")
+                   .arg(QString::fromStdString(figure.view));
+    return false;
   }
-  if (error)
-    *error = QCoreApplication::translate("ReportWriter", "the %1 view does not render in a project report")
-                 .arg(QString::fromStdString(figure.view));
-  return nullptr;
+  return it->second(FigureRequest{figure, store, options}, out, error) && out.ok();
 }
 
 }  // namespace
 
 QImage renderReportFigure(const core::report::Figure& figure, const core::io::ProjectStore& store,
                           const ReportRenderOptions& options, QString* error) {
-  std::unique_ptr<QWidget> owner;
-  QwtPlot* plot = figurePlot(figure, store, owner, error);
-  if (!plot) return {};
+  FigureDrawing drawing;
+  if (!drawFigure(figure, store, options, drawing, error)) return {};
+  if (!drawing.plot) return drawing.image;  // raster already (the 3-D scene)
   // As QwtPlotRenderer::renderDocument does for a raster file: the image's
   // resolution set, so fonts and pens scale to print size.
   const QSizeF sizeMm(options.figureWidthMm, options.figureHeightMm);
@@ -75,11 +59,15 @@ QImage renderReportFigure(const core::report::Figure& figure, const core::io::Pr
   image.setDotsPerMeterY(dotsPerMetre);
   image.fill(Qt::white);
   QPainter painter(&image);
-  QwtPlotRenderer renderer;
-  renderer.setDiscardFlag(QwtPlotRenderer::DiscardBackground, false);
-  renderer.render(plot, &painter, QRectF(QPointF(0, 0), QSizeF(pixels)));
+  renderPlot(drawing.plot, painter, QRectF(QPointF(0, 0), QSizeF(pixels)));
   painter.end();
   return image;
+}
+
+void renderPlot(QwtPlot* plot, QPainter& painter, const QRectF& rect) {
+  QwtPlotRenderer renderer;
+  renderer.setDiscardFlag(QwtPlotRenderer::DiscardBackground, false);
+  renderer.render(plot, &painter, rect);
 }
 
 QString writeHtmlReport(const core::report::Report& report, const core::io::ProjectStore& store, const QString& dir,
@@ -87,10 +75,15 @@ QString writeHtmlReport(const core::report::Report& report, const core::io::Proj
   if (!QDir().mkpath(dir)) return QCoreApplication::translate("ReportWriter", "Cannot create the folder %1").arg(dir);
   QString failure;
   const auto figureSource = [&](const core::report::Figure& f) -> std::string {
-    std::unique_ptr<QWidget> owner;
-    QwtPlot* plot = figurePlot(f, store, owner, nullptr);
-    if (!plot) return {};
+    FigureDrawing drawing;
+    if (!drawFigure(f, store, options, drawing, nullptr)) return {};
     const QString stem = QDir(dir).filePath(QString::fromStdString(f.id));
+    if (!drawing.plot) {  // raster: PNG only
+      if (!drawing.image.save(stem + QStringLiteral(".png")) && failure.isEmpty())
+        failure = QCoreApplication::translate("ReportWriter", "Cannot write %1").arg(stem + QStringLiteral(".png"));
+      return f.id + ".png";
+    }
+    QwtPlot* plot = drawing.plot;
     PlotExportOptions exportOptions;
     exportOptions.sizeMm = QSizeF(options.figureWidthMm, options.figureHeightMm);
     exportOptions.pngDpi = options.dpi;

@@ -5,18 +5,22 @@
 // content is core's; this file only draws it. Needs a QApplication (the
 // offscreen platform is enough). docs/cli/report.md.
 //
-// Figures rendered today: "frf-overlay" (views/plots FrfPlot, every FRF of the
-// set, magnitude); "stability-real", "stability-imaginary", "wheelchair-trajectory"
-// (stability_figures.h). Others ("gap-overlay" outside the Model vs Test page) are
-// left as a placeholder naming the view.
+// Figures: the table of renderers keyed by view name (report_figures.h). A
+// figure its view cannot draw here (a 3-D scene without OpenGL) is left as a
+// placeholder naming the view. Plots are vector in the HTML report (SVG beside
+// the PNG) and raster at `dpi` in the PDF.
 
 #include <QImage>
+#include <QRectF>
 #include <QString>
 #include <string>
 #include <vector>
 
 #include "core/io/project_store.h"
 #include "core/report/report.h"
+
+class QPainter;
+class QwtPlot;
 
 namespace mozzi {
 namespace views {
@@ -31,6 +35,9 @@ struct ReportRenderOptions {
 // cannot render here (then *error says why when given).
 QImage renderReportFigure(const core::report::Figure& figure, const core::io::ProjectStore& store,
                           const ReportRenderOptions& options = {}, QString* error = nullptr);
+
+// Draws `plot` into `rect` of `painter` (QwtPlotRenderer, background kept).
+void renderPlot(QwtPlot* plot, QPainter& painter, const QRectF& rect);
 
 // Writes `dir`/index.html and the figures (<id>.svg, <id>.png); creates `dir`.
 // index.html is never written over one of `inputs` (the project). Returns an

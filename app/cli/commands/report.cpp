@@ -21,6 +21,7 @@
 #include "app/cli/output.h"
 #include "core/io/project_store.h"
 #include "core/report/project_report.h"
+#include "core/report/report_template.h"
 
 extern char** environ;
 
@@ -29,9 +30,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kSynopsis = "PROJECT.mozzi [--out REPORT.pdf] [--html DIR] [--sections LIST] [--specimen NAME]";
+constexpr const char* kSynopsis =
+    "PROJECT.mozzi [--out REPORT.pdf] [--html DIR] [--sections LIST] [--specimen NAME] [--lang en|it]";
 
-const OptionSpec kSpec{{"--out", "--html", "--sections", "--specimen"}, {}, {}, {"--out"}};
+const OptionSpec kSpec{{"--out", "--html", "--sections", "--specimen", "--lang"}, {}, {}, {"--out"}};
 
 int usage(std::ostream& err, const std::string& why) {
   err << "mozzi-cli report: " << why << "\nUsage: mozzi-cli report " << kSynopsis << "\n";
@@ -94,6 +96,11 @@ int reportCommand(const std::vector<std::string>& args, std::ostream& out, std::
     sections = *list;
   }
   if (auto specimen = parsed->value("--specimen")) options.specimen = *specimen;
+  if (auto lang = parsed->value("--lang")) {
+    auto language = core::report::parseLanguage(*lang);
+    if (!language) return usage(err, language.error().message);
+    options.language = *language;
+  }
 
   // The project is never an output: compared as files (device and inode), so
   // a link or another spelling of its path is refused too.
@@ -108,14 +115,33 @@ int reportCommand(const std::vector<std::string>& args, std::ostream& out, std::
   // or specimen or an unreadable project is said before the renderer starts.
   auto store = core::io::ProjectStore::open(project, core::io::ProjectStore::OpenMode::ReadOnly);
   if (!store) return fail(err, store.error().describe());
+  // The project's report template fills what the command line leaves out:
+  // the sections (without --sections), the specimen (without --specimen) and
+  // the language (without --lang).
+  auto saved = core::report::loadReportTemplate(*store);
+  if (!saved) return fail(err, saved.error().describe());
+  if (*saved) {
+    if (!parsed->value("--sections") && !(*saved)->sections.empty()) {
+      options.sections = (*saved)->sections;
+      sections.clear();
+      for (const auto& key : options.sections) sections += (sections.empty() ? "" : ",") + key;
+    }
+    if (!parsed->value("--specimen")) options.specimen = (*saved)->specimen;
+    if (!parsed->value("--lang")) options.language = (*saved)->language;
+  }
   auto report = core::report::buildProjectReport(*store, options);
   if (!report) return fail(err, report.error().describe());
 
   const std::string renderer = rendererPath();
   if (renderer.empty())
     return fail(err, "the report renderer mozzi-report is not beside mozzi-cli (a build without the GUI layer?)");
-  std::vector<std::string> childArgs{renderer,           project,  pdf ? *pdf : "-",
-                                     html ? *html : "-", sections, options.specimen.empty() ? "-" : options.specimen};
+  std::vector<std::string> childArgs{renderer,
+                                     project,
+                                     pdf ? *pdf : "-",
+                                     html ? *html : "-",
+                                     sections,
+                                     options.specimen.empty() ? "-" : options.specimen,
+                                     core::report::languageCode(options.language)};
   std::vector<char*> argv;
   for (auto& a : childArgs) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -134,7 +160,7 @@ int reportCommand(const std::vector<std::string>& args, std::ostream& out, std::
 
 const CommandRegistrar kRegistrar({"report", kSynopsis,
                                    "The project's report (title block, FRFs, modes, stiffness, tyres, gap) as PDF "
-                                   "and/or HTML",
+                                   "and/or HTML, in English or Italian, by the project's report template",
                                    reportCommand, &kSpec});
 
 }  // namespace

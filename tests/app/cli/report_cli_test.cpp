@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -21,6 +22,7 @@
 #include "core/common/text.h"
 #include "core/io/project_store.h"
 #include "core/report/project_report.h"
+#include "core/report/report_template.h"
 #include "devices/sim/virtual_specimens.h"
 
 namespace mozzi::cli {
@@ -127,7 +129,11 @@ TEST_F(ReportCliTest, DemoReportAsPdfAndHtml) {
   ASSERT_EQ(info.code, 0) << info.out;
   std::smatch m;
   ASSERT_TRUE(std::regex_search(info.out, m, std::regex("Pages:\\s+(\\d+)"))) << info.out;
-  EXPECT_GT(std::stoi(m[1]), 0);
+  // The demo's content: title block with two meshes, two FRF sets (overlay
+  // and coherence each), three modal results, four stiffness tests, the tyre
+  // tests and two gap diagnoses fill well over ten A4 pages; fewer means a
+  // section or its figures went missing.
+  EXPECT_GE(std::stoi(m[1]), 12) << info.out;
 
   auto text = shell(std::string(MOZZI_PDFTOTEXT) + " -layout " + quoted(pdf) + " -");
   ASSERT_EQ(text.code, 0);
@@ -152,10 +158,18 @@ TEST_F(ReportCliTest, DemoReportAsPdfAndHtml) {
   // 2007: 4.29238253634110 m/s) and the Stability page's plots as figures.
   EXPECT_NE(text.out.find("4.292383"), std::string::npos);
   EXPECT_NE(index.find("src=\"stability-"), std::string::npos);
-  // The FRF overlays, vector and raster.
+  // The FRF overlays, vector and raster; the other figures of the views.
   EXPECT_TRUE(fs::file_size(html / "frf-set-1.svg") > 1000);
   EXPECT_TRUE(fs::file_size(html / "frf-set-1.png") > 1000);
   EXPECT_NE(index.find("src=\"frf-set-1.svg\""), std::string::npos);
+  for (const char* figure :
+       {"frf-coherence-1.svg", "stabilization-1.svg", "stabilization-2.svg", "twist-axes-1.svg", "tyre-steady-2.svg"}) {
+    EXPECT_TRUE(fs::exists(html / figure) && fs::file_size(html / figure) > 1000) << figure;
+    EXPECT_NE(index.find(std::string("src=\"") + figure + "\""), std::string::npos) << figure;
+  }
+  // The demo's stored gap diagnosis (demo step 6) with its overlay.
+  EXPECT_NE(index.find("Fork A design model against campaign"), std::string::npos);
+  EXPECT_NE(index.find("src=\"gap-overlay-"), std::string::npos);
 
   // One page to PNG (poppler's renderer reads what we wrote).
   const auto png =
@@ -236,6 +250,72 @@ TEST_F(ReportCliTest, DemoReportAsPdfAndHtml) {
     }
   }
   EXPECT_GT(stepCells, 0);
+}
+
+// --lang it: the Italian headings in the PDF and the HTML, numbers with a
+// decimal comma (a stored modal frequency written by the catalogue's rule).
+TEST_F(ReportCliTest, ItalianReport) {
+  const fs::path pdf = dir_ / "it.pdf", html = dir_ / "it-html";
+  const auto made = shell("env -u DISPLAY QT_QPA_PLATFORM=offscreen " + std::string(MOZZI_CLI_PATH) + " report " +
+                          quoted(project_) + " --out " + quoted(pdf) + " --html " + quoted(html) +
+                          " --lang it --sections title,modal,stiffness,tyre,gap");
+  ASSERT_EQ(made.code, 0) << made.out;
+  auto text = shell(std::string(MOZZI_PDFTOTEXT) + " " + quoted(pdf) + " -");
+  ASSERT_EQ(text.code, 0);
+  text.out = withoutLigatures(text.out);
+  std::ifstream in(html / "index.html");
+  std::stringstream page;
+  page << in.rdbuf();
+  for (const char* heading : {"Progetto e provini", "Parametri modali", "Prove di rigidezza", "Prove sugli pneumatici",
+                              "Diagnosi dello scarto modello-prova"}) {
+    EXPECT_NE(text.out.find(heading), std::string::npos) << "PDF lacks " << heading;
+    EXPECT_NE(page.str().find(std::string("<h2>") + heading + "</h2>"), std::string::npos) << heading;
+  }
+  EXPECT_EQ(text.out.find("Modal parameters"), std::string::npos);
+  EXPECT_NE(page.str().find("lang=\"it\""), std::string::npos);
+  std::string frequency = core::formatNumber(kModes[0].first, 6);  // 23.4567 -> 23,4567
+  std::replace(frequency.begin(), frequency.end(), '.', ',');
+  EXPECT_NE(text.out.find(frequency), std::string::npos) << frequency;
+}
+
+// The project's template chooses sections, specimen and language when the
+// command line does not; the command line still wins where it speaks.
+TEST_F(ReportCliTest, TemplateFromTheProject) {
+  const fs::path copy = dir_ / "templated.mozzi";
+  fs::copy_file(project_, copy, fs::copy_options::overwrite_existing);
+  {
+    auto store = core::io::ProjectStore::open(copy.string());
+    ASSERT_TRUE(store.ok());
+    core::report::ReportTemplate t;
+    t.sections = {"title", "tyre"};
+    t.specimen = "Tyre 120/70 R17 radial (front)";
+    t.language = core::report::Language::Italian;
+    ASSERT_TRUE(core::report::saveReportTemplate(*store, t).ok());
+  }
+  const fs::path html = dir_ / "templated-html";
+  auto made = shell("env -u DISPLAY QT_QPA_PLATFORM=offscreen " + std::string(MOZZI_CLI_PATH) + " report " +
+                    quoted(copy) + " --html " + quoted(html));
+  ASSERT_EQ(made.code, 0) << made.out;
+  std::ifstream in(html / "index.html");
+  std::stringstream page;
+  page << in.rdbuf();
+  EXPECT_NE(page.str().find("<h2>Prove sugli pneumatici</h2>"), std::string::npos);
+  EXPECT_EQ(page.str().find("<h2>Prove di rigidezza</h2>"), std::string::npos);
+  EXPECT_EQ(page.str().find("Frame A"), std::string::npos);  // another specimen
+  // --sections and --lang override the template.
+  const fs::path html2 = dir_ / "templated-html-2";
+  made = shell("env -u DISPLAY QT_QPA_PLATFORM=offscreen " + std::string(MOZZI_CLI_PATH) + " report " + quoted(copy) +
+               " --html " + quoted(html2) + " --sections stiffness --lang en --specimen 'Frame A'");
+  ASSERT_EQ(made.code, 0) << made.out;
+  std::ifstream in2(html2 / "index.html");
+  std::stringstream page2;
+  page2 << in2.rdbuf();
+  EXPECT_NE(page2.str().find("<h2>Stiffness tests</h2>"), std::string::npos);
+  EXPECT_EQ(page2.str().find("<h2>Tyre tests</h2>"), std::string::npos);
+
+  auto r = run({"report", copy.string(), "--out", (dir_ / "x.pdf").string(), "--lang", "de"});
+  EXPECT_EQ(r.code, kExitUsage);
+  EXPECT_NE(r.err.find("unknown report language 'de'"), std::string::npos) << r.err;
 }
 
 TEST_F(ReportCliTest, SectionsAndSpecimenChooseTheContent) {

@@ -7,6 +7,8 @@
 #include <vtkVersion.h>
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
@@ -14,6 +16,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
 #include <QSettings>
 #include <QTabWidget>
 #include <QTableWidget>
@@ -27,6 +30,7 @@
 
 #include "app/gui/main_window.h"
 #include "core/io/uff/uff.h"
+#include "core/report/report_template.h"
 #include "devices/sim/virtual_specimens.h"
 #include "views/common/job_runner.h"
 #include "views/common/job_status_widget.h"
@@ -36,6 +40,7 @@
 #include "views/gap/model_test_view.h"
 #include "views/panels/project_overview.h"
 #include "views/plots/frf_plot.h"
+#include "views/report/report_dialog.h"
 #include "views/scene/scene_view.h"
 
 using mozzi::app::MainWindow;
@@ -64,6 +69,7 @@ class MainWindowTest : public QObject {
   void treeOpensItemsInTheirPages();
   void runningJobsShowInTheStatusBar();
   void reportExportWritesThePdfAndRefusesTheProject();
+  void reportDialogChoiceIsSavedAndWritten();
   void screenshot();
 
  private:
@@ -570,6 +576,59 @@ void MainWindowTest::reportExportWritesThePdfAndRefusesTheProject() {
   QVERIFY2(spy.at(0).at(1).toString().contains(QStringLiteral("menus.mozzi")), qPrintable(spy.at(0).at(1).toString()));
   QCOMPARE(QFileInfo(project).size(), size);
   QVERIFY(window_->openProject(project));
+}
+
+// File > Export > Report...: the dialog's choice (one section, Italian, HTML
+// only) is saved as the project's template and written by the renderer;
+// picture of the dialog over the window at 1280x800 (report_dialog_window.png,
+// @2x under QT_SCALE_FACTOR=2, on an Xvfb screen of at least 2560x1600).
+void MainWindowTest::reportDialogChoiceIsSavedAndWritten() {
+  const QString project = file(QStringLiteral("dialog.mozzi"));
+  {
+    auto store = mozzi::core::io::ProjectStore::create(project.toStdString(), "test");
+    QVERIFY(store.ok());
+    QVERIFY(store->addSpecimen("Frame X", "frame", "a test frame").ok());
+  }
+  QVERIFY(window_->openProject(project));
+  window_->showNormal();
+  window_->resize(1280, 800);
+  mozzi::views::ReportDialog dialog(window_->model(), window_.get());
+  for (const auto& key : mozzi::core::report::reportSectionKeys()) dialog.sectionBox(key)->setChecked(key == "title");
+  dialog.languageBox()->setCurrentIndex(1);  // Italiano
+  dialog.setPdfPath(QString());
+  dialog.setHtmlDir(file(QStringLiteral("dialog-html")));
+  auto t = dialog.reportTemplate();
+  t.pdf = false;
+  t.html = true;
+  dialog.setReportTemplate(t);
+  dialog.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+  QTest::qWait(100);
+  const QString folder = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR", QDir::tempPath());
+  QDir().mkpath(folder);
+  const bool hiDpi = window_->devicePixelRatioF() > 1.0;
+  const QString shot = QDir(folder).filePath(hiDpi ? QStringLiteral("report_dialog_window@2x.png")
+                                                   : QStringLiteral("report_dialog_window.png"));
+  QVERIFY(window_->screen()
+              ->grabWindow(0, window_->x(), window_->y(), window_->frameGeometry().width(),
+                           window_->frameGeometry().height())
+              .save(shot));
+  dialog.accept();
+  auto saved = mozzi::core::report::loadReportTemplate(*window_->model()->store());
+  QVERIFY(saved.ok() && saved->has_value());
+  QCOMPARE((*saved)->sections, std::vector<std::string>{"title"});
+  QCOMPARE((*saved)->language, mozzi::core::report::Language::Italian);
+
+  QSignalSpy spy(window_.get(), &MainWindow::reportExported);
+  QVERIFY(window_->writeReport(dialog.pdfPath(), dialog.htmlDir(), dialog.reportTemplate()));
+  QVERIFY(spy.wait(120000));
+  QVERIFY2(spy.at(0).at(0).toBool(), qPrintable(spy.at(0).at(1).toString()));
+  QFile index(file(QStringLiteral("dialog-html/index.html")));
+  QVERIFY(index.open(QIODevice::ReadOnly));
+  const QString html = QString::fromUtf8(index.readAll());
+  QVERIFY(html.contains(QStringLiteral("<h2>Progetto e provini</h2>")));
+  QVERIFY(html.contains(QStringLiteral("Frame X")));
+  QVERIFY(!html.contains(QStringLiteral("<h2>Prove di rigidezza</h2>")));
 }
 
 void MainWindowTest::screenshot() {

@@ -9,8 +9,10 @@
 
 #include <filesystem>
 
+#include "core/io/project_meta.h"
 #include "core/report/gap_report.h"
 #include "core/report/report_html.h"
+#include "core/report/report_template.h"
 
 namespace mozzi::core::report {
 namespace {
@@ -152,6 +154,106 @@ TEST_F(ProjectReportTest, SpecimenAndSectionsFilter) {
   report = buildProjectReport(*store, options);
   ASSERT_FALSE(report.ok());
   EXPECT_EQ(report.error().code, ErrorCode::NotFound);
+}
+
+// The Italian report: headings, captions and table headers from the
+// catalogue, the stored numbers with a decimal comma (56099.25 -> "56099,2",
+// six significant digits as in English), symbols unchanged.
+TEST_F(ProjectReportTest, ItalianTextAndNumbers) {
+  auto store = io::ProjectStore::open(path_, io::ProjectStore::OpenMode::ReadOnly);
+  ASSERT_TRUE(store.ok());
+  ReportOptions options;
+  options.language = Language::Italian;
+  options.generatedUtc = "2026-11-28T03:28:10Z";
+  auto report = buildProjectReport(*store, options);
+  ASSERT_TRUE(report.ok()) << report.error().describe();
+  EXPECT_EQ(report->language, "it");
+  std::vector<std::string> headings;
+  for (const auto& s : report->sections) headings.push_back(s.heading);
+  EXPECT_EQ(headings, (std::vector<std::string>{"Progetto e provini", "Parametri modali", "Prove di rigidezza",
+                                                "Diagnosi dello scarto modello-prova"}));
+  for (const auto& s : report->sections) EXPECT_EQ(s.heading, sectionHeading(s.key, Language::Italian));
+  const Table* stiffness = firstTable(*report->section("stiffness"));
+  ASSERT_NE(stiffness, nullptr);
+  EXPECT_EQ(stiffness->headers, (std::vector<std::string>{"Grandezza", "Valore", "Unità"}));
+  EXPECT_EQ(stiffness->rows[0][0].text, "k_lat");
+  EXPECT_EQ(stiffness->rows[0][1].text, "56099,2 \u00b1 1,1");
+  EXPECT_EQ(*stiffness->rows[0][1].value, 56099.25);  // the value itself is the stored one
+  const Table* modes = firstTable(*report->section("modal"));
+  ASSERT_NE(modes, nullptr);
+  EXPECT_EQ(modes->headers[1], "Frequenza");
+  EXPECT_EQ(modes->rows[1][1].text, "117,25");
+  const std::string html = toHtml(*report, {});
+  EXPECT_NE(html.find("lang=\"it\""), std::string::npos);
+  EXPECT_NE(html.find("Relazione generata il 28/11/2026 03:28 UTC."), std::string::npos);
+  EXPECT_NE(html.find("Verdetto: effect (mass_loading)"), std::string::npos);
+  // No English caption left in the Italian report's tables.
+  for (const auto& s : report->sections)
+    for (const auto& b : s.blocks)
+      if (const auto* t = std::get_if<Table>(&b)) {
+        EXPECT_EQ(t->caption.find("Results of"), std::string::npos) << t->caption;
+        EXPECT_EQ(t->caption.find("Modes of"), std::string::npos) << t->caption;
+      }
+}
+
+TEST(ReportText, LanguagesPlaceholdersAndDates) {
+  EXPECT_EQ(*parseLanguage("it"), Language::Italian);
+  EXPECT_EQ(*parseLanguage("EN"), Language::English);
+  auto bad = parseLanguage("fr");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().message.find("unknown report language 'fr'"), std::string::npos);
+  const Texts it(Language::Italian), en;
+  EXPECT_EQ(it("Campaign %1 (%2)", {"hammer 1", "Frame A"}), "Campagna hammer 1 (Frame A)");
+  EXPECT_EQ(en("Campaign %1 (%2)", {"%2", "x"}), "Campaign %2 (x)");  // an argument is not expanded again
+  EXPECT_EQ(it.number(0.0412, 3), "0,0412");
+  EXPECT_EQ(en.number(0.0412, 3), "0.0412");
+  EXPECT_EQ(it.date("2026-01-05T07:08:09Z"), "05/01/2026 07:08 UTC");
+  EXPECT_EQ(en.date("2026-01-05 07:08 UTC"), "2026-01-05 07:08 UTC");
+  EXPECT_EQ(it.date("yesterday"), "yesterday");
+  // Every section has an Italian heading different from the English one.
+  for (const auto& key : reportSectionKeys())
+    EXPECT_NE(sectionHeading(key, Language::Italian), sectionHeading(key, Language::English)) << key;
+}
+
+TEST_F(ProjectReportTest, TemplateRoundTripInTheProject) {
+  auto store = io::ProjectStore::open(path_);
+  ASSERT_TRUE(store.ok());
+  auto none = loadReportTemplate(*store);
+  ASSERT_TRUE(none.ok());
+  EXPECT_FALSE(none->has_value());
+  ReportTemplate t;
+  t.sections = {"title", "stiffness"};
+  t.specimen = "Frame X";
+  t.language = Language::Italian;
+  t.pdf = false;
+  t.html = true;
+  ASSERT_TRUE(saveReportTemplate(*store, t).ok());
+  t.sections = {"modal"};  // saved again: replaced, not added
+  ASSERT_TRUE(saveReportTemplate(*store, t).ok());
+  store = io::ProjectStore::open(path_, io::ProjectStore::OpenMode::ReadOnly);  // reopened from the file
+  ASSERT_TRUE(store.ok());
+  auto loaded = loadReportTemplate(*store);
+  ASSERT_TRUE(loaded.ok()) << loaded.error().describe();
+  ASSERT_TRUE(loaded->has_value());
+  EXPECT_EQ(**loaded, t);
+  // The store's own keys are untouched and refused.
+  auto summary = store->summary();
+  ASSERT_TRUE(summary.ok());
+  EXPECT_FALSE(summary->createdUtc.empty());
+  auto writable = io::ProjectStore::open(path_);
+  ASSERT_TRUE(writable.ok());
+  EXPECT_FALSE(io::setMetaValue(*writable, "mozzi_version", "0").ok());
+  // A read-only project cannot keep a template.
+  EXPECT_FALSE(saveReportTemplate(*store, t).ok());
+  // A malformed template says which field.
+  auto bad = templateFromJson(R"({"sections":["title","stifness"]})");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().message.find("unknown report section 'stifness' in sections[1]"), std::string::npos);
+  bad = templateFromJson(R"({"language":"de"})");
+  ASSERT_FALSE(bad.ok());
+  bad = templateFromJson(R"({"pdf":"yes"})");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().message.find("\"pdf\""), std::string::npos);
 }
 
 TEST(BestEffect, VerdictFirstElseTopRankedPairWhenBothNamed) {

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "core/geometry/mesh_templates.h"
 #include "core/io/project_store.h"
@@ -121,6 +122,56 @@ TEST(VirtualSpecimens, TheDemoProjectStoresEveryMeshQuickly) {
       EXPECT_GT(nearest->dampingRatio, 0.0) << specimenName;
     }
   }
+
+  // Step 6: the design model of fork A with wheel and its stored gap
+  // diagnosis against the campaign's FRF set. The overlay's measured curve is
+  // the stored FRF set read back here (|H| at the same lines, to the 1e-9
+  // relative of the JSON's 17 digits), so the report draws what was measured.
+  auto analyses = store->analyses();
+  ASSERT_TRUE(analyses.ok());
+  std::vector<core::io::StoredAnalysis> diagnoses;
+  for (const auto& a : *analyses)
+    if (a.kind == "gap-diagnosis") diagnoses.push_back(a);
+  ASSERT_EQ(diagnoses.size(), 1u);
+  const auto& gap = diagnoses.front();
+  EXPECT_EQ(gap.kind, "gap-diagnosis");
+  ASSERT_TRUE(gap.modelId && gap.frfSetId && gap.modalResultId);
+  EXPECT_FALSE(gap.findings.empty());
+  for (const auto& f : gap.findings) {
+    EXPECT_GE(f.remainingGap, 0.0);
+    EXPECT_LE(f.remainingGap, 1.0);
+    EXPECT_LT(f.bandLowHz, f.bandHighHz);
+  }
+  const auto json = nlohmann::json::parse(gap.resultJson);
+  ASSERT_TRUE(json.contains("verdict") && json["verdict"].is_string());
+  ASSERT_TRUE(json["overlay"].is_array() && !json["overlay"].empty());
+  auto frf = store->frfSet(*gap.frfSetId);
+  ASSERT_TRUE(frf.ok());
+  const auto& curve = json["overlay"][0];
+  const auto x = curve["x"].get<std::vector<double>>();
+  const auto measured = curve["measured"].get<std::vector<double>>();
+  ASSERT_EQ(x.size(), measured.size());
+  ASSERT_LE(x.size(), 401u);  // thinned to at most 400 points (+ the last)
+  // The curve is one FRF "response / reference" of the set: find the column
+  // whose |H| matches at the first line, then check every point.
+  int matched = -1;
+  for (std::size_t i = 0; i < frf->h.size() && matched < 0; ++i)
+    for (Eigen::Index o = 0; o < frf->responseCount(); ++o) {
+      bool all = true;
+      for (std::size_t k = 0; k < x.size() && all; ++k) {
+        Eigen::Index line = 0;
+        while (line < frf->lineCount() && std::abs(frf->frequencyHz[line] - x[k]) > 1e-9 * (1 + x[k])) ++line;
+        all = line < frf->lineCount() &&
+              std::abs(std::abs(frf->h[i](line, o)) - measured[k]) <= 1e-9 * std::abs(measured[k]);
+      }
+      if (all) matched = static_cast<int>(o);
+    }
+  EXPECT_GE(matched, 0) << "the overlay's measured curve is not an FRF of the stored set";
+  bool modelStored = false;
+  for (const auto& s : summary->specimens)
+    if (s.id == gap.specimenId) modelStored = s.name == "Fork A (enduro) with wheel";
+  EXPECT_TRUE(modelStored);
+
   std::filesystem::remove(path);
   std::filesystem::remove(path.string() + "-wal");
   std::filesystem::remove(path.string() + "-shm");
