@@ -1107,8 +1107,13 @@ Result<DatasetData> parse58(DatasetContext& ctx, const Binary58& bin) {
       skip -= n;
     }
     // Non-finite values in the block (NaN, inf) make the record unusable.
+    // x * 0 is 0 for a finite x and NaN otherwise, so the (vectorised) sum of
+    // the products is NaN exactly when a value is not finite: one fast pass,
+    // the scalar search for the value only then (the scalar check alone was
+    // 3% of `mozzi-cli frf`, issue 19).
     const Eigen::Index total = static_cast<Eigen::Index>(points * ordPerPoint);
-    for (Eigen::Index i = 0; i < total; ++i) {
+    const bool allFinite = std::isfinite((Eigen::Map<const Vector>(ord, total).array() * 0.0).sum());
+    for (Eigen::Index i = 0; !allFinite && i < total; ++i) {
       if (!std::isfinite(ord[i])) {
         return ctx.error("binary data value " + std::to_string(i / static_cast<Eigen::Index>(ordPerPoint)) +
                          " of the ordinate is not a finite number");
