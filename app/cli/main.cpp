@@ -1,7 +1,7 @@
 // mozzi-cli: the batch face of Mozzi. Links core and devices only.
 #include <cerrno>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
