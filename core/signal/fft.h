@@ -47,7 +47,8 @@ extern template class AlignedBuffer<std::complex<double>>;
 
 class RealFft {
  public:
-  // The shared plan for length n (created on first use, FFTW_ESTIMATE). n >= 2.
+  // The shared plan for length n (created on first use, FFTW_ESTIMATE; for the
+  // lengths of core/signal/fftw_wisdom.h from the measured plans kept there). n >= 2.
   static Result<std::shared_ptr<const RealFft>> forLength(Eigen::Index n);
 
   Eigen::Index length() const { return n_; }
