@@ -16,13 +16,13 @@
 
 namespace mozzi::core::gap::structural {
 
-using detail::ChannelMap;
-using detail::mapDof;
-using detail::nominalTheta;
-using detail::Effect;
 using detail::CandidateDef;
+using detail::ChannelMap;
+using detail::Effect;
 using detail::hzLabel;
+using detail::mapDof;
 using detail::ModalSystem;
+using detail::nominalTheta;
 using detail::StructuralCore;
 using detail::times;
 
@@ -570,43 +570,11 @@ std::vector<OverlayCurve> FrfProblem::overlayFor(const double* theta, const std:
   return curves;
 }
 
-}  // namespace
-
-Result<std::unique_ptr<GapProblem>> makeFrfProblem(const StructuralModel& model, const FrfMatrix& measured,
-                                                   const StructuralOptions& options) {
-  if (auto v = measured.validate(); !v) return v.error();
-  if (measured.lineCount() == 0 || measured.responseCount() == 0 || measured.referenceCount() == 0) {
-    return makeError(ErrorCode::InvalidArgument, "the measured FRF set is empty", "measured FRFs");
-  }
-  std::vector<ChannelMap> resp, refs;
-  for (const auto& d : measured.responses) {
-    auto c = mapDof(model, d, "response");
-    if (!c) return c.error();
-    resp.push_back(*c);
-  }
-  for (const auto& d : measured.references) {
-    auto c = mapDof(model, d, "reference");
-    if (!c) return c.error();
-    refs.push_back(*c);
-  }
-  if (options.noise == NoiseSource::Stated && !(options.relativeFloor > 0) && !(options.additiveFloor > 0)) {
-    return makeError(ErrorCode::InvalidArgument, "a stated noise needs a positive relative or additive sigma",
-                     "noise floor");
-  }
-  if (!(options.relativeFloor >= 0) || !(options.additiveFloor >= 0) || !std::isfinite(options.relativeFloor) ||
-      !std::isfinite(options.additiveFloor)) {
-    return makeError(ErrorCode::InvalidArgument, "noise floors must be finite and not negative", "noise floor");
-  }
-  // The fitted band: lines inside [lo, hi] and above 0 Hz (the type
-  // conversion and the lower residual divide by s).
-  const double bandLow = std::max(options.bandLowHz, std::nextafter(0.0, 1.0));
-  auto banded = signal::selectBand(measured, bandLow, options.bandHighHz);
-  if (!banded.ok() || banded->lineCount() < 4) {
-    return makeError(ErrorCode::InvalidArgument,
-                     "fewer than 4 frequency lines in the band " + hzLabel(options.bandLowHz, options.bandHighHz),
-                     "--band");
-  }
-  FrfMatrix data = std::move(banded).value();
+// The noise model of the measured set `data` (already cut to the fitted band
+// from bandLow): stated, from the coherence or from replicates; an estimated
+// one is left empty here (the problem estimates it from its own lines).
+Result<FrfNoise> initialNoise(const StructuralModel& model, const FrfMatrix& data, const std::vector<ChannelMap>& resp,
+                              const std::vector<ChannelMap>& refs, const StructuralOptions& options, double bandLow) {
   const Eigen::Index nf = data.lineCount();
   const Eigen::Index no = data.responseCount(), ni = data.referenceCount();
   NoiseSource source = options.noise;
@@ -707,6 +675,50 @@ Result<std::unique_ptr<GapProblem>> makeFrfProblem(const StructuralModel& model,
       noise.sigma.push_back(s);
     }
   }
+  return noise;
+}
+
+}  // namespace
+
+Result<std::unique_ptr<GapProblem>> makeFrfProblem(const StructuralModel& model, const FrfMatrix& measured,
+                                                   const StructuralOptions& options) {
+  if (auto v = measured.validate(); !v) return v.error();
+  if (measured.lineCount() == 0 || measured.responseCount() == 0 || measured.referenceCount() == 0) {
+    return makeError(ErrorCode::InvalidArgument, "the measured FRF set is empty", "measured FRFs");
+  }
+  std::vector<ChannelMap> resp, refs;
+  for (const auto& d : measured.responses) {
+    auto c = mapDof(model, d, "response");
+    if (!c) return c.error();
+    resp.push_back(*c);
+  }
+  for (const auto& d : measured.references) {
+    auto c = mapDof(model, d, "reference");
+    if (!c) return c.error();
+    refs.push_back(*c);
+  }
+  if (options.noise == NoiseSource::Stated && !(options.relativeFloor > 0) && !(options.additiveFloor > 0)) {
+    return makeError(ErrorCode::InvalidArgument, "a stated noise needs a positive relative or additive sigma",
+                     "noise floor");
+  }
+  if (!(options.relativeFloor >= 0) || !(options.additiveFloor >= 0) || !std::isfinite(options.relativeFloor) ||
+      !std::isfinite(options.additiveFloor)) {
+    return makeError(ErrorCode::InvalidArgument, "noise floors must be finite and not negative", "noise floor");
+  }
+  // The fitted band: lines inside [lo, hi] and above 0 Hz (the type
+  // conversion and the lower residual divide by s).
+  const double bandLow = std::max(options.bandLowHz, std::nextafter(0.0, 1.0));
+  auto banded = signal::selectBand(measured, bandLow, options.bandHighHz);
+  if (!banded.ok() || banded->lineCount() < 4) {
+    return makeError(ErrorCode::InvalidArgument,
+                     "fewer than 4 frequency lines in the band " + hzLabel(options.bandLowHz, options.bandHighHz),
+                     "--band");
+  }
+  FrfMatrix data = std::move(banded).value();
+  const Eigen::Index nf = data.lineCount();
+  auto initial = initialNoise(model, data, resp, refs, options, bandLow);
+  if (!initial) return initial.error();
+  FrfNoise noise = std::move(initial).value();
   // Estimated: left empty here, the problem estimates it from its own lines.
   auto core = std::make_shared<StructuralCore>(model);
   std::vector<int> measuredDofs, responseDofs;

@@ -15,8 +15,8 @@ namespace mozzi::core::gap::structural {
 
 using detail::ChannelMap;
 using detail::mapDof;
-using detail::nominalTheta;
 using detail::ModalSystem;
+using detail::nominalTheta;
 using detail::StructuralCore;
 
 namespace {

@@ -12,7 +12,6 @@
 namespace mozzi::core::gap::structural::detail {
 namespace {
 
-
 // Coordinates up to which non-proportional damping is solved directly per line.
 constexpr Eigen::Index kDirectSolveLimit = 24;
 
@@ -64,7 +63,8 @@ double StructuralCore::effectiveMass(int d) const {
 }
 
 void StructuralCore::buildCandidates(const std::vector<int>& measured, const std::vector<int>& responses,
-                     const std::vector<int>& references, bool frfData, double bandHighHz, const Vector& nominalW2) {
+                                     const std::vector<int>& references, bool frfData, double bandHighHz,
+                                     const Vector& nominalW2) {
   std::vector<int> unique;
   for (int d : measured)
     if (std::find(unique.begin(), unique.end(), d) == unique.end()) unique.push_back(d);
@@ -183,7 +183,8 @@ Matrix StructuralCore::pseudoFlexibility(const Vector& w2) const {
   return g;
 }
 
-bool StructuralCore::solve(const double* theta, const std::vector<int>& combo, const double* phi, ModalSystem& sys) const {
+bool StructuralCore::solve(const double* theta, const std::vector<int>& combo, const double* phi,
+                           ModalSystem& sys) const {
   Matrix m = model.m, k = model.k;
   double dampingScale = 1.0;
   for (std::size_t p = 0; p < model.parameters.size(); ++p) {
@@ -309,7 +310,8 @@ void StructuralCore::stateSpaceModes(ModalSystem& sys) {
   sys.ssRight = right * sys.a.transpose().cast<Complex>();
 }
 
-StructuralCore::Receptance::Receptance(const ModalSystem& sys, const std::vector<int>& resp, const std::vector<int>& refs)
+StructuralCore::Receptance::Receptance(const ModalSystem& sys, const std::vector<int>& resp,
+                                       const std::vector<int>& refs)
     : sys_(sys), resp_(resp), refs_(refs) {
   const auto no = static_cast<Eigen::Index>(resp.size()), ni = static_cast<Eigen::Index>(refs.size());
   if (sys.cfull.size() > 0 && sys.ssPoles.size() == 0) {
