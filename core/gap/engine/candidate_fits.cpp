@@ -106,10 +106,10 @@ Result<void> firstFits(Pass& s) {
   return {};
 }
 
-  // 4b. Random restarts (multistarts - 2 seeded draws of phi in its box, 20
-  // iterations each, the best polished) for the leading candidates that are
-  // not locally linear: they decide the verdict, and restarts cost most of the
-  // fitting time on large FRF problems.
+// 4b. Random restarts (multistarts - 2 seeded draws of phi in its box, 20
+// iterations each, the best polished) for the leading candidates that are
+// not locally linear: they decide the verdict, and restarts cost most of the
+// fitting time on large FRF problems.
 Result<void> restartLeaders(Pass& s) {
   const GapProblem& problem = s.problem;
   const DiagnosisOptions& options = s.options;

@@ -159,8 +159,7 @@ Result<void> describePair(Pass& s, const PairFit& bp, const std::map<int, std::s
   ep.shrinkOnePct = d.ranking[ia].shrinkPct;
   ep.gapAfterBoth = problem.combinedMetrics(ep.theta.data(), {bp.a, bp.b}, phi.data());
   applyHolmFlags(ep.gapAfterBoth, options.alpha);
-  ep.shrinkBothPct =
-      d.gapBefore.overall != 0.0 ? 100.0 * (1.0 - ep.gapAfterBoth.overall / d.gapBefore.overall) : 0.0;
+  ep.shrinkBothPct = d.gapBefore.overall != 0.0 ? 100.0 * (1.0 - ep.gapAfterBoth.overall / d.gapBefore.overall) : 0.0;
   return {};
 }
 
