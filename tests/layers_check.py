@@ -7,7 +7,17 @@ This check reads every #include of a file under core/, devices/, views/ and
 app/ and fails, naming file, line and the two units, on an include the table
 does not allow. Run by ctest (test layers_include_graph):
 
-    tests/layers_check.py SOURCE_DIR
+    tests/layers_check.py SOURCE_DIR [STAMP]
+
+(with STAMP, the file is touched when the check passes: core/CMakeLists.txt
+runs it so, before any core/ library is built, and a forbidden include fails
+the build). The same table is core/'s CMake link graph:
+
+    tests/layers_check.py --core-links
+
+prints one line per core/ domain, "domain,dependency,...", and
+core/CMakeLists.txt links each domain's library to the libraries of the
+domains it may include, and to no others.
 
 To allow a new dependency, add it to ALLOWED here: the table is the rule.
 """
@@ -88,5 +98,19 @@ def main(root):
     return 0
 
 
+def core_links():
+    """core/ domains with the domains each may include, for CMake."""
+    for d in CORE:
+        deps = [x for x in CORE if "core/" + x in ALLOWED["core/" + d]]
+        print(",".join([d] + deps))
+    return 0
+
+
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1] if len(sys.argv) > 1 else "."))
+    if len(sys.argv) > 1 and sys.argv[1] == "--core-links":
+        sys.exit(core_links())
+    status = main(sys.argv[1] if len(sys.argv) > 1 else ".")
+    if status == 0 and len(sys.argv) > 2:
+        with open(sys.argv[2], "w", encoding="utf-8") as stamp:
+            stamp.write("layers: ok\n")
+    sys.exit(status)

@@ -89,17 +89,4 @@ Result<std::unique_ptr<GapProblem>> makeFrfProblem(const StructuralModel& model,
 Result<std::unique_ptr<GapProblem>> makeModesProblem(const StructuralModel& model, const io::uff::ModalData& measured,
                                                      const StructuralOptions& options = {});
 
-// Hungarian assignment (minimum total cost) of rows to columns of a cost
-// matrix; result[row] = column or -1 (more rows than columns).
-std::vector<int> hungarianAssignment(const Matrix& cost);
-
-// Pairs measured modes (columns of `measured`) with model modes (columns of
-// `model`) on the same DOFs by Hungarian assignment on 1 - MAC; a pair with
-// MAC below `minMac` is left unpaired. result[model mode] = measured mode or -1.
-// With frequencies given, 0.01 |ln(f_model / f_measured)| is added to the cost:
-// it only breaks ties (with one or two DOFs every MAC is near 1) and never
-// outweighs a MAC difference of 0.01 below a 2.7x frequency ratio.
-std::vector<int> pairModesByMac(const ComplexMatrix& model, const ComplexMatrix& measured, double minMac,
-                                const Vector& modelHz = Vector(), const Vector& measuredHz = Vector());
-
 }  // namespace mozzi::core::gap::structural

@@ -314,33 +314,5 @@ TEST(StructuralProblem, ResidualModeMovesNoMode) {
   }
 }
 
-TEST(StructuralProblem, HungarianAndMacPairing) {
-  Matrix cost(3, 3);
-  cost << 4, 1, 3, 2, 0, 5, 3, 2, 2;  // optimum 1 + 2 + 2 = 5: (0,1), (1,0), (2,2)
-  EXPECT_EQ(hungarianAssignment(cost), (std::vector<int>{1, 0, 2}));
-  Matrix rect(2, 3);
-  rect << 5, 1, 9, 1, 2, 9;
-  EXPECT_EQ(hungarianAssignment(rect), (std::vector<int>{1, 0}));
-  // Measured modes in swapped order, the third unlike any model mode.
-  ComplexMatrix model = ComplexMatrix::Zero(4, 3), meas = ComplexMatrix::Zero(4, 3);
-  model(0, 0) = 1;
-  model(1, 1) = 1;
-  model(2, 2) = 1;
-  meas(1, 0) = 1;
-  meas(0, 1) = 1;
-  meas(0, 2) = 0.5;
-  meas(3, 2) = 1;  // MAC with model mode 3 is 0
-  EXPECT_EQ(pairModesByMac(model, meas, 0.6), (std::vector<int>{1, 0, -1}));
-  // One DOF: every MAC is 1, the frequencies decide (measured 31 Hz is the
-  // model's 30 Hz mode, not its 80 Hz one).
-  const ComplexMatrix oneModel = ComplexMatrix::Ones(1, 2), oneMeas = ComplexMatrix::Ones(1, 1);
-  Vector modelHz(2), measHz(1);
-  modelHz << 30.0, 80.0;
-  measHz << 31.0;
-  EXPECT_EQ(pairModesByMac(oneModel, oneMeas, 0.6, modelHz, measHz), (std::vector<int>{0, -1}));
-  modelHz << 80.0, 30.0;
-  EXPECT_EQ(pairModesByMac(oneModel, oneMeas, 0.6, modelHz, measHz), (std::vector<int>{-1, 0}));
-}
-
 }  // namespace
 }  // namespace mozzi::core::gap::structural
