@@ -22,17 +22,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Overview</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>The open project: file, schema, specimens</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>3-D View</source>
         <translation type="unfinished"></translation>
     </message>
@@ -167,12 +162,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-251"/>
+        <location line="-253"/>
         <source>Could not read the FRF set: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+31"/>
+        <source>The open project: where to start, its specimens and what each holds</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>The FRFs of a stored set: Bode, real and imaginary, Nyquist, coherence, sum and CMIF, with a cursor</source>
         <translation type="unfinished"></translation>
     </message>
@@ -611,7 +611,7 @@
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../views/rigs/rig_test_page.cpp" line="+600"/>
+        <location filename="../views/rigs/rig_test_setup.cpp" line="+172"/>
         <source>Constrained end u</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1588,22 +1588,71 @@
     </message>
 </context>
 <context>
+    <name>ReportDialog</name>
+    <message>
+        <location filename="../views/report/report_dialog.cpp" line="+28"/>
+        <source>Project and specimens</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frequency response functions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Modal parameters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stiffness tests</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Tyre tests</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gap diagnoses</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stability against speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wheelchair manoeuvres</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>ReportWriter</name>
     <message>
-        <location filename="../views/report/report_writer.cpp" line="+54"/>
+        <location filename="../views/report/report_writer.cpp" line="+38"/>
+        <location filename="../views/report/stability_figures.cpp" line="+36"/>
         <source>the %1 view does not render in a project report</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+37"/>
         <source>Cannot create the folder %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cannot write %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
     <name>RigResults</name>
     <message>
-        <location filename="../views/rigs/rig_test_page.cpp" line="-453"/>
+        <location filename="../views/rigs/rig_test_page.cpp" line="+109"/>
         <source>lateral stiffness k_lat</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1798,7 +1847,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>laser %1 amplitude</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1958,7 +2007,7 @@
 <context>
     <name>mozzi::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+295"/>
+        <location filename="../app/gui/main_window.cpp" line="+296"/>
         <source>&amp;File</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2008,12 +2057,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>&amp;Report (PDF)...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;Universal File (UFF)...</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2113,12 +2157,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+68"/>
         <source>Cannot write the report: the renderer mozzi-report is not installed.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+16"/>
         <source>Report written: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2143,8 +2187,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-324"/>
-        <location line="+373"/>
+        <location line="-340"/>
+        <location line="+389"/>
         <source>Open Project</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2164,8 +2208,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-384"/>
-        <location line="+390"/>
+        <location line="-400"/>
+        <location line="+406"/>
         <source>New Project</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2195,13 +2239,18 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-393"/>
-        <location line="+399"/>
+        <location line="-409"/>
+        <location line="+415"/>
         <source>Save Project As</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-248"/>
+        <source>&amp;Report...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+248"/>
         <source>Could not save the project as %1.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2248,7 +2297,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-439"/>
+        <location line="-455"/>
         <source>Import Universal File</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2258,7 +2307,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+352"/>
+        <location line="+368"/>
         <source>Mozzi projects (*.mozzi)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2268,7 +2317,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-408"/>
+        <location line="-424"/>
         <source>A job stopped before its end; see its page</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2283,17 +2332,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>Export Report</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>PDF documents (*.pdf)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+21"/>
+        <location line="+29"/>
         <source>Create Demo Project</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2303,7 +2342,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+215"/>
+        <location line="+231"/>
         <source>Check Project Integrity</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2330,6 +2369,115 @@
     <message>
         <location line="+21"/>
         <source>About Mozzi</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>mozzi::views</name>
+    <message>
+        <location filename="../views/report/report_figures_pages.cpp" line="+78"/>
+        <source>the 3-D scene needs a display with OpenGL (Xvfb is enough); the %1 platform has none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <location line="+97"/>
+        <source>the 3-D scene has no OpenGL context on this display</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-92"/>
+        <source>the 3-D scene gave no picture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+77"/>
+        <source>no such mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Mode %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>the mode shape does not fit the mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/report/report_figures_plots.cpp" line="+40"/>
+        <source>the FRF set has no coherence</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>the diagnosis is not stored in the project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the stored diagnosis holds no overlay curves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>measured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>after: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the tyre test has no measured points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Slip angle [deg]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lateral force Fy [N]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Aligning moment Mz [N m]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Mz</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>the modal result names no FRF set</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>the method draws no stabilization diagram</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>|sum of FRFs| [dB]</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2797,7 +2945,7 @@
 <context>
     <name>mozzi::views::HammerStationPage</name>
     <message>
-        <location filename="../views/campaign/hammer_station_page.cpp" line="+55"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="+56"/>
         <source>Idle: press A to arm</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2832,27 +2980,27 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+129"/>
         <source>New Campaign...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>Start</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Stop</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+154"/>
+        <location line="+163"/>
         <source>Arm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Disarm</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2872,18 +3020,18 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Skip Point</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+122"/>
-        <location line="+397"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="+230"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+101"/>
         <source>%1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-352"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+45"/>
         <source>Next: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2953,7 +3101,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="-185"/>
         <source>TRIGGERED</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4006,7 +4154,7 @@
 <context>
     <name>mozzi::views::MeshEditor</name>
     <message>
-        <location filename="../views/editors/mesh_editor.cpp" line="+47"/>
+        <location filename="../views/editors/mesh_table_model.cpp" line="+22"/>
         <source>cartesian</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4021,12 +4169,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location filename="../views/editors/mesh_editor.cpp" line="+67"/>
         <source>Cannot apply the edit: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location filename="../views/editors/mesh_table_model.cpp" line="+42"/>
         <source>Coordinates in the node&apos;s definition system; in a cylindrical system r [mm], theta [deg], z [mm], in a spherical one r [mm], theta [deg], phi [deg]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4123,7 +4271,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+151"/>
+        <location filename="../views/editors/mesh_editor.cpp" line="+104"/>
         <source>Import a mesh</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4168,7 +4316,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+53"/>
         <source>Cannot place the mesh: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4505,7 +4653,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ModeAnimationView</name>
     <message>
-        <location filename="../views/scene/mode_animation_view.cpp" line="+212"/>
+        <location filename="../views/scene/mode_animation_view.cpp" line="+229"/>
         <source>Export a frame</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4562,7 +4710,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+54"/>
         <source>No MAC: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4582,7 +4730,12 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+35"/>
+        <source>Mozzi axis, pitch %1 m/rad</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>MAC %1 (%2 shared DOFs)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4636,7 +4789,22 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
+        <source>Mozzi (screw) axis: pitch %1 m/rad, direction (%2, %3, %4), through (%5, %6, %7) m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>(low confidence: %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No Mozzi axis: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Choose a mode to animate.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4712,6 +4880,16 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location line="+1"/>
+        <source>Mozzi (screw) axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The screw axis of the rigid motion fitted to the shape&apos;s measured translations, with its pitch (thesis §1.5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Pause (Space)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5036,7 +5214,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::PageTabs</name>
     <message>
-        <location filename="../views/common/page_tabs.cpp" line="+147"/>
+        <location filename="../views/common/page_tabs.cpp" line="+150"/>
         <source>%1 %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5123,7 +5301,45 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ProjectOverview</name>
     <message>
-        <location filename="../views/panels/project_overview.cpp" line="+97"/>
+        <location filename="../views/panels/project_overview.cpp" line="+249"/>
+        <source>needs a record this project does not hold yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>opens on its own (Pages or Tools menu)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>%1: mesh of %n nodes</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Setting up a specimen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>At the rig</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reviewing results</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+70"/>
         <source>Specimen</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5134,11 +5350,81 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location line="+0"/>
+        <source>Mesh nodes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Campaigns</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>FRF sets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Modal results</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Rig tests</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Tyre tests</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Analyses</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Description</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
+        <source>Page</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>What it shows</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Opens on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start here: double-click a page to open it on this project&apos;s data</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Open Page</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>To leave with a document: File &gt; Export &gt; Report (PDF).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Specimens and what each holds</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>No project open</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5554,9 +5840,78 @@ Schema version %2, created %3 by Mozzi %4</source>
     </message>
 </context>
 <context>
+    <name>mozzi::views::ReportDialog</name>
+    <message>
+        <location filename="../views/report/report_dialog.cpp" line="+55"/>
+        <source>Report PDF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>PDF documents (*.pdf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Report HTML folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>The project&apos;s report template cannot be read: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+67"/>
+        <source>The report template was not saved: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sections (each is left out when the project has no data for it):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Specimen:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Every specimen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Report language:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PDF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>HTML folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>Browse...</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>mozzi::views::RigTestPage</name>
     <message>
-        <location filename="../views/rigs/rig_test_page.cpp" line="+250"/>
+        <location filename="../views/rigs/rig_test_page.cpp" line="+213"/>
         <source>Stiffness rig (simulated Motostiffmeter)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5716,7 +6071,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+48"/>
+        <location filename="../views/rigs/rig_test_setup.cpp" line="-46"/>
         <source>Plate (u, v) [mm]: %n laser(s) at %1; load point at (%2, %3); the other end locked.</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -5750,7 +6105,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+114"/>
+        <location filename="../views/rigs/rig_test_plots.cpp" line="+138"/>
         <source>Time [s]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5910,7 +6265,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location filename="../views/rigs/rig_test_run.cpp" line="+71"/>
         <source>Open or create a project first: the test is stored in it.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5952,7 +6307,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+41"/>
         <source>Complete: stored as &apos;%1&apos;.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5968,7 +6323,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+8"/>
         <source>Stopping: the sequence keeps the finished steps...</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5998,7 +6353,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location filename="../views/rigs/rig_test_plots.cpp" line="+100"/>
         <source>Cannot read the rig test: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6038,7 +6393,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+41"/>
         <source>Cannot read the rig test&apos;s twist axes: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6064,22 +6419,22 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::StabilityPage</name>
     <message>
-        <location filename="../views/stability/stability_page.cpp" line="+293"/>
+        <location filename="../views/stability/stability_page.cpp" line="+276"/>
         <source>Computing the eigenvalues against speed...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+14"/>
         <source>Stability against speed</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+96"/>
         <source>Cannot compute: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+81"/>
         <source>%1 %2 at %3 m/s</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6089,12 +6444,17 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-55"/>
+        <location line="-59"/>
         <source>No real part crosses zero in this speed range.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-142"/>
+        <location line="-246"/>
+        <source>built-in (Sharp 1971 standard machine)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>built-in (benchmark bicycle, Meijaard et al. 2007)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6109,7 +6469,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+27"/>
         <source>thesis (Table 12)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6124,7 +6484,24 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+87"/>
+        <location line="+2"/>
+        <location line="+7"/>
+        <source>Not kept: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Kept in the project as analysis %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 (analysis %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+98"/>
         <source>Critical speeds: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6139,12 +6516,17 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+1"/>
+        <source>Stored: %1. %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>%1 (rigid fork)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+30"/>
         <source>rigid: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6236,6 +6618,21 @@ Schema version %2, created %3 by Mozzi %4</source>
     <message>
         <location line="+1"/>
         <source>Compute</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Kept results:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stability sweeps the project keeps (this page, mozzi-cli stability --project)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -6445,7 +6842,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::TwistAxesPage</name>
     <message>
-        <location filename="../views/scene/twist_axes_page.cpp" line="+252"/>
+        <location filename="../views/scene/twist_axes_page.cpp" line="+268"/>
         <source>Specimen</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6476,12 +6873,12 @@ Schema version %2, created %3 by Mozzi %4</source>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+348"/>
+        <location line="+441"/>
         <source>Dynamic</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-347"/>
+        <location line="-440"/>
         <source>u [m] (plate plane)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6512,17 +6909,47 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+28"/>
+        <source>%1 (imported)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Open a project to keep the imported tests in.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Cannot add a specimen: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cannot keep %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Choose an imported static or dynamic test to keep.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Kept in the project: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>Cannot read the rig test: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+32"/>
         <source>Cannot read &apos;%1&apos;: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+17"/>
         <source>No dynamic axis to trace: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6558,12 +6985,12 @@ Schema version %2, created %3 by Mozzi %4</source>
     </message>
     <message>
         <location line="+9"/>
-        <location line="+102"/>
+        <location line="+114"/>
         <source>a_tw</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-79"/>
+        <location line="-91"/>
         <source>%1 Hz</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6573,7 +7000,17 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+6"/>
+        <source>bending axis (modal, %1 Hz)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>torsion axis (modal, %1 Hz)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>bending axis (set-up)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6583,7 +7020,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>dynamic twist axis, %1 Hz</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6649,9 +7086,149 @@ Schema version %2, created %3 by Mozzi %4</source>
     </message>
 </context>
 <context>
+    <name>mozzi::views::TwistCsvImport</name>
+    <message>
+        <location filename="../views/scene/twist_csv_import.cpp" line="+98"/>
+        <source>Open a twist CSV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV files (*.csv *.txt);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Plate CSV files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open CSV…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Read a plate CSV as mozzi-cli twist static, dynamic or modal reads it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>as</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keep imported tests in the project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Store the imported static and dynamic tests shown as rig tests of the specimen (a new specimen when none is chosen)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>kind from the columns</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>static (force, displacements)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dynamic (amplitude, phase)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>modal (FRF Re, Im)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Modal FRFs are</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>receptance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>mobility</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>accelerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bending mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torsion mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frequency of the bending mode: the modal twist axis there is drawn (§1.4, §1.7)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frequency of the torsion mode: the modal twist axis there is drawn (§1.4, §1.7)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>Cannot import %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>Some frequencies of %1 give no axis: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <location line="+18"/>
+        <source>bending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-17"/>
+        <location line="+18"/>
+        <source>torsion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-13"/>
+        <source>no %1 axis at %2 Hz: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Modal FRFs: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 at %2 Hz (%3): β %4 ± %5°, foot (%6, %7) m</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>mozzi::views::WheelchairPage</name>
     <message>
-        <location filename="../views/wheelchair/wheelchair_page.cpp" line="+171"/>
+        <location filename="../views/wheelchair/wheelchair_page.cpp" line="+176"/>
         <source>Correct the marked values first.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6661,17 +7238,34 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+15"/>
         <source>Wheelchair manoeuvre</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+19"/>
+        <location line="+4"/>
+        <location line="+3"/>
+        <source>Not kept: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Kept in the project as analysis %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 (analysis %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+55"/>
         <source>Cannot simulate: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+15"/>
         <source>chair</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6696,8 +7290,23 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>Simulate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Kept results:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Manoeuvres the project keeps (this page, mozzi-cli wheelchair slalom --project)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

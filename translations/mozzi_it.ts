@@ -22,17 +22,12 @@
         <translation>Colpi (tempo)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Overview</source>
         <translation>Panoramica</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>The open project: file, schema, specimens</source>
-        <translation>Il progetto aperto: file, schema, provini</translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>3-D View</source>
         <translation>Vista 3D</translation>
     </message>
@@ -167,12 +162,17 @@
         <translation>Traiettorie in slalom e in curva stazionaria e angoli di deriva posteriori del modello di carrozzina, con gli studi sulla rigidezza degli pneumatici</translation>
     </message>
     <message>
-        <location line="-251"/>
+        <location line="-253"/>
         <source>Could not read the FRF set: %1</source>
         <translation>Impossibile leggere l&apos;insieme di FRF: %1</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+31"/>
+        <source>The open project: where to start, its specimens and what each holds</source>
+        <translation>Il progetto aperto: da dove iniziare, i suoi provini e cosa contiene ciascuno</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>The FRFs of a stored set: Bode, real and imaginary, Nyquist, coherence, sum and CMIF, with a cursor</source>
         <translation>Le FRF di un insieme memorizzato: Bode, parte reale e immaginaria, Nyquist, coerenza, somma e CMIF, con un cursore</translation>
     </message>
@@ -611,7 +611,7 @@
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../views/rigs/rig_test_page.cpp" line="+600"/>
+        <location filename="../views/rigs/rig_test_setup.cpp" line="+172"/>
         <source>Constrained end u</source>
         <translation>Estremità vincolata u</translation>
     </message>
@@ -1588,22 +1588,71 @@
     </message>
 </context>
 <context>
+    <name>ReportDialog</name>
+    <message>
+        <location filename="../views/report/report_dialog.cpp" line="+28"/>
+        <source>Project and specimens</source>
+        <translation>Progetto e provini</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frequency response functions</source>
+        <translation>Funzioni di risposta in frequenza</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Modal parameters</source>
+        <translation>Parametri modali</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stiffness tests</source>
+        <translation>Prove di rigidezza</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Tyre tests</source>
+        <translation>Prove sugli pneumatici</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gap diagnoses</source>
+        <translation>Diagnosi dello scarto modello-prova</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stability against speed</source>
+        <translation>Stabilità in funzione della velocità</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wheelchair manoeuvres</source>
+        <translation>Manovre della carrozzina</translation>
+    </message>
+</context>
+<context>
     <name>ReportWriter</name>
     <message>
-        <location filename="../views/report/report_writer.cpp" line="+54"/>
+        <location filename="../views/report/report_writer.cpp" line="+38"/>
+        <location filename="../views/report/stability_figures.cpp" line="+36"/>
         <source>the %1 view does not render in a project report</source>
         <translation>la vista %1 non si disegna in un rapporto di progetto</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+37"/>
         <source>Cannot create the folder %1</source>
         <translation>Impossibile creare la cartella %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cannot write %1</source>
+        <translation>Impossibile scrivere %1</translation>
     </message>
 </context>
 <context>
     <name>RigResults</name>
     <message>
-        <location filename="../views/rigs/rig_test_page.cpp" line="-453"/>
+        <location filename="../views/rigs/rig_test_page.cpp" line="+109"/>
         <source>lateral stiffness k_lat</source>
         <translation>rigidezza laterale k_lat</translation>
     </message>
@@ -1798,7 +1847,7 @@
         <translation>carico verticale F_z</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>laser %1 amplitude</source>
         <translation>ampiezza del laser %1</translation>
     </message>
@@ -1958,7 +2007,7 @@
 <context>
     <name>mozzi::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+295"/>
+        <location filename="../app/gui/main_window.cpp" line="+296"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -2008,12 +2057,7 @@
         <translation>Area di lavoro come &amp;immagine...</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>&amp;Report (PDF)...</source>
-        <translation>&amp;Rapporto (PDF)...</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;Universal File (UFF)...</source>
         <translation>File &amp;Universal (UFF)...</translation>
     </message>
@@ -2113,12 +2157,12 @@
         <translation> [sola lettura]</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+68"/>
         <source>Cannot write the report: the renderer mozzi-report is not installed.</source>
         <translation>Impossibile scrivere il rapporto: il programma mozzi-report non è installato.</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+16"/>
         <source>Report written: %1</source>
         <translation>Rapporto scritto: %1</translation>
     </message>
@@ -2143,8 +2187,8 @@
         <translation>Dove: %1</translation>
     </message>
     <message>
-        <location line="-324"/>
-        <location line="+373"/>
+        <location line="-340"/>
+        <location line="+389"/>
         <source>Open Project</source>
         <translation>Apri progetto</translation>
     </message>
@@ -2164,8 +2208,8 @@
         <translation>Sola lettura: %1</translation>
     </message>
     <message>
-        <location line="-384"/>
-        <location line="+390"/>
+        <location line="-400"/>
+        <location line="+406"/>
         <source>New Project</source>
         <translation>Nuovo progetto</translation>
     </message>
@@ -2195,13 +2239,18 @@
         <translation>Creato il progetto dimostrativo %1</translation>
     </message>
     <message>
-        <location line="-393"/>
-        <location line="+399"/>
+        <location line="-409"/>
+        <location line="+415"/>
         <source>Save Project As</source>
         <translation>Salva progetto come</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-248"/>
+        <source>&amp;Report...</source>
+        <translation>&amp;Relazione...</translation>
+    </message>
+    <message>
+        <location line="+248"/>
         <source>Could not save the project as %1.</source>
         <translation>Impossibile salvare il progetto come %1.</translation>
     </message>
@@ -2248,7 +2297,7 @@
         <translation>Importato %1: %2 nodi, %3 linee, %4 FRF, %5 modi</translation>
     </message>
     <message>
-        <location line="-439"/>
+        <location line="-455"/>
         <source>Import Universal File</source>
         <translation>Importa file Universal</translation>
     </message>
@@ -2258,7 +2307,7 @@
         <translation>File Universal (*.uff *.unv);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location line="+352"/>
+        <location line="+368"/>
         <source>Mozzi projects (*.mozzi)</source>
         <translation>Progetti Mozzi (*.mozzi)</translation>
     </message>
@@ -2268,7 +2317,7 @@
         <translation>Progetti Mozzi (*.mozzi);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location line="-408"/>
+        <location line="-424"/>
         <source>A job stopped before its end; see its page</source>
         <translation>Un&apos;attività si è interrotta prima della fine; vedi la sua pagina</translation>
     </message>
@@ -2283,17 +2332,7 @@
         <translation>Immagini PNG (*.png);;Immagini JPEG (*.jpg)</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>Export Report</source>
-        <translation>Esporta rapporto</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>PDF documents (*.pdf)</source>
-        <translation>Documenti PDF (*.pdf)</translation>
-    </message>
-    <message>
-        <location line="+21"/>
+        <location line="+29"/>
         <source>Create Demo Project</source>
         <translation>Crea progetto dimostrativo</translation>
     </message>
@@ -2303,7 +2342,7 @@
         <translation>Apri in %1</translation>
     </message>
     <message>
-        <location line="+215"/>
+        <location line="+231"/>
         <source>Check Project Integrity</source>
         <translation>Verifica integrità del progetto</translation>
     </message>
@@ -2331,6 +2370,115 @@
         <location line="+21"/>
         <source>About Mozzi</source>
         <translation>Informazioni su Mozzi</translation>
+    </message>
+</context>
+<context>
+    <name>mozzi::views</name>
+    <message>
+        <location filename="../views/report/report_figures_pages.cpp" line="+78"/>
+        <source>the 3-D scene needs a display with OpenGL (Xvfb is enough); the %1 platform has none</source>
+        <translation>la scena 3D richiede uno schermo con OpenGL (basta Xvfb); la piattaforma %1 non lo ha</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <location line="+97"/>
+        <source>the 3-D scene has no OpenGL context on this display</source>
+        <translation>la scena 3D non ha un contesto OpenGL su questo schermo</translation>
+    </message>
+    <message>
+        <location line="-92"/>
+        <source>the 3-D scene gave no picture</source>
+        <translation>la scena 3D non ha prodotto alcuna immagine</translation>
+    </message>
+    <message>
+        <location line="+77"/>
+        <source>no such mode</source>
+        <translation>modo inesistente</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Mode %1</source>
+        <translation>Modo %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>the mode shape does not fit the mesh</source>
+        <translation>la forma modale non corrisponde alla griglia</translation>
+    </message>
+    <message>
+        <location filename="../views/report/report_figures_plots.cpp" line="+40"/>
+        <source>the FRF set has no coherence</source>
+        <translation>l&apos;insieme di FRF non ha la coerenza</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>the diagnosis is not stored in the project</source>
+        <translation>la diagnosi non è conservata nel progetto</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the stored diagnosis holds no overlay curves</source>
+        <translation>la diagnosi conservata non contiene curve da sovrapporre</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>measured</source>
+        <translation>misura</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>model</source>
+        <translation>modello</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>after: %1</source>
+        <translation>dopo: %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>the tyre test has no measured points</source>
+        <translation>la prova sullo pneumatico non ha punti misurati</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Slip angle [deg]</source>
+        <translation>Angolo di deriva [gradi]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lateral force Fy [N]</source>
+        <translation>Forza laterale Fy [N]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Aligning moment Mz [N m]</source>
+        <translation>Momento autoallineante Mz [N m]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fy</source>
+        <translation>Fy</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Mz</source>
+        <translation>Mz</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>the modal result names no FRF set</source>
+        <translation>il risultato modale non indica alcun insieme di FRF</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>the method draws no stabilization diagram</source>
+        <translation>il metodo non traccia un diagramma di stabilizzazione</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>|sum of FRFs| [dB]</source>
+        <translation>|somma delle FRF| [dB]</translation>
     </message>
 </context>
 <context>
@@ -2797,7 +2945,7 @@
 <context>
     <name>mozzi::views::HammerStationPage</name>
     <message>
-        <location filename="../views/campaign/hammer_station_page.cpp" line="+55"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="+56"/>
         <source>Idle: press A to arm</source>
         <translation>Inattivo: premi A per armare</translation>
     </message>
@@ -2832,27 +2980,27 @@
         <translation>Campagna terminata</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+129"/>
         <source>New Campaign...</source>
         <translation>Nuova campagna...</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>Start</source>
         <translation>Avvia</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Stop</source>
         <translation>Arresta</translation>
     </message>
     <message>
-        <location line="+154"/>
+        <location line="+163"/>
         <source>Arm</source>
         <translation>Arma</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Disarm</source>
         <translation>Disarma</translation>
     </message>
@@ -2872,18 +3020,18 @@
         <translation>Ripeti punto</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Skip Point</source>
         <translation>Salta punto</translation>
     </message>
     <message>
-        <location line="+122"/>
-        <location line="+397"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="+230"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+101"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="-352"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+45"/>
         <source>Next: %1</source>
         <translation>Prossimo: %1</translation>
     </message>
@@ -2953,7 +3101,7 @@
         <translation>Stazione martello: %1</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="-185"/>
         <source>TRIGGERED</source>
         <translation>TRIGGER SCATTATO</translation>
     </message>
@@ -4006,7 +4154,7 @@
 <context>
     <name>mozzi::views::MeshEditor</name>
     <message>
-        <location filename="../views/editors/mesh_editor.cpp" line="+47"/>
+        <location filename="../views/editors/mesh_table_model.cpp" line="+22"/>
         <source>cartesian</source>
         <translation>cartesiano</translation>
     </message>
@@ -4021,12 +4169,12 @@
         <translation>sferico</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location filename="../views/editors/mesh_editor.cpp" line="+67"/>
         <source>Cannot apply the edit: %1</source>
         <translation>Impossibile applicare la modifica: %1</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location filename="../views/editors/mesh_table_model.cpp" line="+42"/>
         <source>Coordinates in the node&apos;s definition system; in a cylindrical system r [mm], theta [deg], z [mm], in a spherical one r [mm], theta [deg], phi [deg]</source>
         <translation>Coordinate nel sistema di definizione del nodo; in un sistema cilindrico r [mm], theta [gradi], z [mm], in uno sferico r [mm], theta [gradi], phi [gradi]</translation>
     </message>
@@ -4123,7 +4271,7 @@
         <translation>Assi x | y | z</translation>
     </message>
     <message>
-        <location line="+151"/>
+        <location filename="../views/editors/mesh_editor.cpp" line="+104"/>
         <source>Import a mesh</source>
         <translation>Importa una mesh</translation>
     </message>
@@ -4168,7 +4316,7 @@
         <translation>Nuovo numero del nodo %1:</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+53"/>
         <source>Cannot place the mesh: %1</source>
         <translation>Impossibile posizionare la mesh: %1</translation>
     </message>
@@ -4509,7 +4657,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ModeAnimationView</name>
     <message>
-        <location filename="../views/scene/mode_animation_view.cpp" line="+212"/>
+        <location filename="../views/scene/mode_animation_view.cpp" line="+229"/>
         <source>Export a frame</source>
         <translation>Esporta un fotogramma</translation>
     </message>
@@ -4566,7 +4714,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Nessuna forma %1.</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+54"/>
         <source>No MAC: %1</source>
         <translation>Nessun MAC: %1</translation>
     </message>
@@ -4586,7 +4734,12 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>ODS a %1 Hz (%2)</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+35"/>
+        <source>Mozzi axis, pitch %1 m/rad</source>
+        <translation>Asse di Mozzi, passo %1 m/rad</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>MAC %1 (%2 shared DOFs)</source>
         <translation>MAC %1 (%2 GDL in comune)</translation>
     </message>
@@ -4640,7 +4793,22 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>nodi: %1 misurati, %2 dipendenti, %3 interpolati, %4 fermi</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
+        <source>Mozzi (screw) axis: pitch %1 m/rad, direction (%2, %3, %4), through (%5, %6, %7) m</source>
+        <translation>Asse di Mozzi (elicoidale): passo %1 m/rad, direzione (%2, %3, %4), passante per (%5, %6, %7) m</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>(low confidence: %1)</source>
+        <translation>(bassa affidabilità: %1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No Mozzi axis: %1</source>
+        <translation>Nessun asse di Mozzi: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Choose a mode to animate.</source>
         <translation>Scegli un modo da animare.</translation>
     </message>
@@ -4716,6 +4884,16 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location line="+1"/>
+        <source>Mozzi (screw) axis</source>
+        <translation>Asse di Mozzi (asse di moto elicoidale)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The screw axis of the rigid motion fitted to the shape&apos;s measured translations, with its pitch (thesis §1.5)</source>
+        <translation>L&apos;asse elicoidale del moto rigido adattato alle traslazioni misurate della forma, con il suo passo (tesi §1.5)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Pause (Space)</source>
         <translation>Pausa (Space)</translation>
     </message>
@@ -5040,7 +5218,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::PageTabs</name>
     <message>
-        <location filename="../views/common/page_tabs.cpp" line="+147"/>
+        <location filename="../views/common/page_tabs.cpp" line="+150"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -5127,7 +5305,45 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ProjectOverview</name>
     <message>
-        <location filename="../views/panels/project_overview.cpp" line="+97"/>
+        <location filename="../views/panels/project_overview.cpp" line="+249"/>
+        <source>needs a record this project does not hold yet</source>
+        <translation>richiede un dato che questo progetto non contiene ancora</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>opens on its own (Pages or Tools menu)</source>
+        <translation>si apre da sola (menu Pagine o Strumenti)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>%1: mesh of %n nodes</source>
+        <translation>
+            <numerusform>%1: mesh di %n nodo</numerusform>
+            <numerusform>%1: mesh di %n nodi</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Setting up a specimen</source>
+        <translation>Preparazione di un provino</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>At the rig</source>
+        <translation>Al banco</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reviewing results</source>
+        <translation>Analisi dei risultati</translation>
+    </message>
+    <message>
+        <location line="+70"/>
         <source>Specimen</source>
         <translation>Provino</translation>
     </message>
@@ -5138,11 +5354,81 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location line="+0"/>
+        <source>Mesh nodes</source>
+        <translation>Nodi della mesh</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Campaigns</source>
+        <translation>Campagne</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>FRF sets</source>
+        <translation>Insiemi di FRF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Modal results</source>
+        <translation>Risultati modali</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Rig tests</source>
+        <translation>Prove al banco</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Tyre tests</source>
+        <translation>Prove sugli pneumatici</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Analyses</source>
+        <translation>Analisi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Description</source>
         <translation>Descrizione</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
+        <source>Page</source>
+        <translation>Pagina</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>What it shows</source>
+        <translation>Cosa mostra</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Opens on</source>
+        <translation>Si apre su</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start here: double-click a page to open it on this project&apos;s data</source>
+        <translation>Da dove iniziare: doppio clic su una pagina per aprirla sui dati di questo progetto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Open Page</source>
+        <translation>&amp;Apri pagina</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>To leave with a document: File &gt; Export &gt; Report (PDF).</source>
+        <translation>Per uscire con un documento: File &gt; Esporta &gt; Rapporto (PDF).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Specimens and what each holds</source>
+        <translation>Provini e cosa contiene ciascuno</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>No project open</source>
         <translation>Nessun progetto aperto</translation>
     </message>
@@ -5559,9 +5845,78 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     </message>
 </context>
 <context>
+    <name>mozzi::views::ReportDialog</name>
+    <message>
+        <location filename="../views/report/report_dialog.cpp" line="+55"/>
+        <source>Report PDF</source>
+        <translation>PDF della relazione</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>PDF documents (*.pdf)</source>
+        <translation>Documenti PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Report HTML folder</source>
+        <translation>Cartella HTML della relazione</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>The project&apos;s report template cannot be read: %1</source>
+        <translation>Impossibile leggere il modello di relazione del progetto: %1</translation>
+    </message>
+    <message>
+        <location line="+67"/>
+        <source>The report template was not saved: %1</source>
+        <translation>Il modello di relazione non è stato salvato: %1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Report</source>
+        <translation>Relazione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sections (each is left out when the project has no data for it):</source>
+        <translation>Sezioni (ognuna è omessa quando il progetto non ha dati per essa):</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Specimen:</source>
+        <translation>Provino:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Every specimen</source>
+        <translation>Tutti i provini</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Report language:</source>
+        <translation>Lingua della relazione:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PDF</source>
+        <translation>PDF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>HTML folder</source>
+        <translation>Cartella HTML</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>Browse...</source>
+        <translation>Sfoglia...</translation>
+    </message>
+</context>
+<context>
     <name>mozzi::views::RigTestPage</name>
     <message>
-        <location filename="../views/rigs/rig_test_page.cpp" line="+250"/>
+        <location filename="../views/rigs/rig_test_page.cpp" line="+213"/>
         <source>Stiffness rig (simulated Motostiffmeter)</source>
         <translation>Banco di rigidezza (Motostiffmeter simulato)</translation>
     </message>
@@ -5721,7 +6076,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Scansioni di deriva e di campanatura: le caratteristiche e la Magic Formula</translation>
     </message>
     <message numerus="yes">
-        <location line="+48"/>
+        <location filename="../views/rigs/rig_test_setup.cpp" line="-46"/>
         <source>Plate (u, v) [mm]: %n laser(s) at %1; load point at (%2, %3); the other end locked.</source>
         <translation>
             <numerusform>Piastra (u, v) [mm]: %n laser in %1; punto di carico in (%2, %3); l&apos;altra estremità bloccata.</numerusform>
@@ -5755,7 +6110,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Contorno: %1, approssimato (non in scala di un disegno).</translation>
     </message>
     <message>
-        <location line="+114"/>
+        <location filename="../views/rigs/rig_test_plots.cpp" line="+138"/>
         <source>Time [s]</source>
         <translation>Tempo [s]</translation>
     </message>
@@ -5915,7 +6270,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Angolo d&apos;imbardata [gradi]</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location filename="../views/rigs/rig_test_run.cpp" line="+71"/>
         <source>Open or create a project first: the test is stored in it.</source>
         <translation>Apri o crea prima un progetto: la prova viene memorizzata lì.</translation>
     </message>
@@ -5957,7 +6312,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>%1 su %2</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+41"/>
         <source>Complete: stored as &apos;%1&apos;.</source>
         <translation>Completata: memorizzata come &apos;%1&apos;.</translation>
     </message>
@@ -5973,7 +6328,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Non riuscita: %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+8"/>
         <source>Stopping: the sequence keeps the finished steps...</source>
         <translation>Arresto in corso: la sequenza conserva i passi completati...</translation>
     </message>
@@ -6003,7 +6358,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Passo %1 (%2) conservato senza risultato: %3</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location filename="../views/rigs/rig_test_plots.cpp" line="+100"/>
         <source>Cannot read the rig test: %1</source>
         <translation>Impossibile leggere la prova al banco: %1</translation>
     </message>
@@ -6043,7 +6398,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>&apos;%1&apos; (%2)</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+41"/>
         <source>Cannot read the rig test&apos;s twist axes: %1</source>
         <translation>Impossibile leggere gli assi di torsione della prova: %1</translation>
     </message>
@@ -6069,22 +6424,22 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::StabilityPage</name>
     <message>
-        <location filename="../views/stability/stability_page.cpp" line="+293"/>
+        <location filename="../views/stability/stability_page.cpp" line="+276"/>
         <source>Computing the eigenvalues against speed...</source>
         <translation>Calcolo degli autovalori in funzione della velocità...</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+14"/>
         <source>Stability against speed</source>
         <translation>Stabilità in funzione della velocità</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+96"/>
         <source>Cannot compute: %1</source>
         <translation>Impossibile calcolare: %1</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+81"/>
         <source>%1 %2 at %3 m/s</source>
         <translation>%1 %2 a %3 m/s</translation>
     </message>
@@ -6094,12 +6449,17 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>%1 %2 m/s</translation>
     </message>
     <message>
-        <location line="-55"/>
+        <location line="-59"/>
         <source>No real part crosses zero in this speed range.</source>
         <translation>Nessuna parte reale attraversa lo zero in questo intervallo di velocità.</translation>
     </message>
     <message>
-        <location line="-142"/>
+        <location line="-246"/>
+        <source>built-in (Sharp 1971 standard machine)</source>
+        <translation>integrati (macchina standard di Sharp 1971)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>built-in (benchmark bicycle, Meijaard et al. 2007)</source>
         <translation>incorporati (bicicletta di riferimento, Meijaard et al. 2007)</translation>
     </message>
@@ -6114,7 +6474,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>File dei parametri (*.csv);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+27"/>
         <source>thesis (Table 12)</source>
         <translation>tesi (Tabella 12)</translation>
     </message>
@@ -6129,7 +6489,24 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>conservata: %1 (analisi %2)</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+87"/>
+        <location line="+2"/>
+        <location line="+7"/>
+        <source>Not kept: %1</source>
+        <translation>Non conservato: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Kept in the project as analysis %1.</source>
+        <translation>Conservato nel progetto come analisi %1.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 (analysis %2)</source>
+        <translation>%1 (analisi %2)</translation>
+    </message>
+    <message>
+        <location line="+98"/>
         <source>Critical speeds: %1</source>
         <translation>Velocità critiche: %1</translation>
     </message>
@@ -6144,12 +6521,17 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Forcella rigida: %1</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+1"/>
+        <source>Stored: %1. %2</source>
+        <translation>Conservato: %1. %2</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>%1 (rigid fork)</source>
         <translation>%1 (forcella rigida)</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+30"/>
         <source>rigid: %1</source>
         <translation>rigida: %1</translation>
     </message>
@@ -6242,6 +6624,21 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <location line="+1"/>
         <source>Compute</source>
         <translation>Calcola</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Kept results:</source>
+        <translation>Risultati conservati:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stability sweeps the project keeps (this page, mozzi-cli stability --project)</source>
+        <translation>Analisi di stabilità al variare della velocità conservate nel progetto (questa pagina, mozzi-cli stability --project)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show</source>
+        <translation>Mostra</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6450,7 +6847,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::TwistAxesPage</name>
     <message>
-        <location filename="../views/scene/twist_axes_page.cpp" line="+252"/>
+        <location filename="../views/scene/twist_axes_page.cpp" line="+268"/>
         <source>Specimen</source>
         <translation>Provino</translation>
     </message>
@@ -6481,12 +6878,12 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+348"/>
+        <location line="+441"/>
         <source>Dynamic</source>
         <translation>Dinamica</translation>
     </message>
     <message>
-        <location line="-347"/>
+        <location line="-440"/>
         <source>u [m] (plate plane)</source>
         <translation>u [m] (piano della piastra)</translation>
     </message>
@@ -6517,17 +6914,47 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>(nessuna)</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+28"/>
+        <source>%1 (imported)</source>
+        <translation>%1 (importato)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Open a project to keep the imported tests in.</source>
+        <translation>Apri un progetto in cui conservare le prove importate.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Cannot add a specimen: %1</source>
+        <translation>Impossibile aggiungere un provino: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cannot keep %1: %2</source>
+        <translation>Impossibile conservare %1: %2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Choose an imported static or dynamic test to keep.</source>
+        <translation>Scegli una prova statica o dinamica importata da conservare.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Kept in the project: %1</source>
+        <translation>Conservate nel progetto: %1</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>Cannot read the rig test: %1</source>
         <translation>Impossibile leggere la prova al banco: %1</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+32"/>
         <source>Cannot read &apos;%1&apos;: %2</source>
         <translation>Impossibile leggere &apos;%1&apos;: %2</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+17"/>
         <source>No dynamic axis to trace: %1</source>
         <translation>Nessun asse dinamico da tracciare: %1</translation>
     </message>
@@ -6563,12 +6990,12 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location line="+102"/>
+        <location line="+114"/>
         <source>a_tw</source>
         <translation>a_tw</translation>
     </message>
     <message>
-        <location line="-79"/>
+        <location line="-91"/>
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
@@ -6578,7 +7005,17 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>asse di torsione statico</translation>
     </message>
     <message>
+        <location line="+6"/>
+        <source>bending axis (modal, %1 Hz)</source>
+        <translation>asse flessionale (modale, %1 Hz)</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>torsion axis (modal, %1 Hz)</source>
+        <translation>asse torsionale (modale, %1 Hz)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>bending axis (set-up)</source>
         <translation>asse flessionale (allestimento)</translation>
     </message>
@@ -6588,7 +7025,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>asse torsionale (allestimento)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>dynamic twist axis, %1 Hz</source>
         <translation>asse di torsione dinamico, %1 Hz</translation>
     </message>
@@ -6654,9 +7091,149 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     </message>
 </context>
 <context>
+    <name>mozzi::views::TwistCsvImport</name>
+    <message>
+        <location filename="../views/scene/twist_csv_import.cpp" line="+98"/>
+        <source>Open a twist CSV</source>
+        <translation>Apri un CSV di svergolamento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV files (*.csv *.txt);;All files (*)</source>
+        <translation>File CSV (*.csv *.txt);;Tutti i file (*)</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Plate CSV files</source>
+        <translation>File CSV della piastra</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open CSV…</source>
+        <translation>Apri CSV…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Read a plate CSV as mozzi-cli twist static, dynamic or modal reads it</source>
+        <translation>Legge un CSV della piastra come lo leggono mozzi-cli twist static, dynamic o modal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>as</source>
+        <translation>come</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keep imported tests in the project</source>
+        <translation>Conserva nel progetto le prove importate</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Store the imported static and dynamic tests shown as rig tests of the specimen (a new specimen when none is chosen)</source>
+        <translation>Memorizza le prove statiche e dinamiche importate mostrate come prove al banco del provino (un nuovo provino se non ne è scelto alcuno)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>kind from the columns</source>
+        <translation>tipo dalle colonne</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>static (force, displacements)</source>
+        <translation>statico (forza, spostamenti)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dynamic (amplitude, phase)</source>
+        <translation>dinamico (ampiezza, fase)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>modal (FRF Re, Im)</source>
+        <translation>modale (FRF Re, Im)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Modal FRFs are</source>
+        <translation>Le FRF modali sono</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>receptance</source>
+        <translation>recettanza</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>mobility</source>
+        <translation>mobilità</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>accelerance</source>
+        <translation>acceleranza</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bending mode</source>
+        <translation>Modo flessionale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Torsion mode</source>
+        <translation>Modo torsionale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frequency of the bending mode: the modal twist axis there is drawn (§1.4, §1.7)</source>
+        <translation>Frequenza del modo flessionale: vi si disegna l&apos;asse di svergolamento modale (§1.4, §1.7)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frequency of the torsion mode: the modal twist axis there is drawn (§1.4, §1.7)</source>
+        <translation>Frequenza del modo torsionale: vi si disegna l&apos;asse di svergolamento modale (§1.4, §1.7)</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>Cannot import %1: %2</source>
+        <translation>Impossibile importare %1: %2</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>Some frequencies of %1 give no axis: %2</source>
+        <translation>Alcune frequenze di %1 non danno un asse: %2</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <location line="+18"/>
+        <source>bending</source>
+        <translation>flessionale</translation>
+    </message>
+    <message>
+        <location line="-17"/>
+        <location line="+18"/>
+        <source>torsion</source>
+        <translation>torsionale</translation>
+    </message>
+    <message>
+        <location line="-13"/>
+        <source>no %1 axis at %2 Hz: %3</source>
+        <translation>nessun asse %1 a %2 Hz: %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Modal FRFs: %1</source>
+        <translation>FRF modali: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 at %2 Hz (%3): β %4 ± %5°, foot (%6, %7) m</source>
+        <translation>%1 a %2 Hz (%3): β %4 ± %5°, piede (%6, %7) m</translation>
+    </message>
+</context>
+<context>
     <name>mozzi::views::WheelchairPage</name>
     <message>
-        <location filename="../views/wheelchair/wheelchair_page.cpp" line="+171"/>
+        <location filename="../views/wheelchair/wheelchair_page.cpp" line="+176"/>
         <source>Correct the marked values first.</source>
         <translation>Correggere prima i valori segnalati.</translation>
     </message>
@@ -6666,17 +7243,34 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Simulazione della manovra...</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+15"/>
         <source>Wheelchair manoeuvre</source>
         <translation>Manovra della carrozzina</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+19"/>
+        <location line="+4"/>
+        <location line="+3"/>
+        <source>Not kept: %1</source>
+        <translation>Non conservato: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Kept in the project as analysis %1.</source>
+        <translation>Conservato nel progetto come analisi %1.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 (analysis %2)</source>
+        <translation>%1 (analisi %2)</translation>
+    </message>
+    <message>
+        <location line="+55"/>
         <source>Cannot simulate: %1</source>
         <translation>Impossibile simulare: %1</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+15"/>
         <source>chair</source>
         <translation>carrozzina</translation>
     </message>
@@ -6701,9 +7295,24 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>%1: raggio %2 m alla fine, deriva posteriore destra %3°, sinistra %4°</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>Simulate</source>
         <translation>Simula</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Kept results:</source>
+        <translation>Risultati conservati:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Manoeuvres the project keeps (this page, mozzi-cli wheelchair slalom --project)</source>
+        <translation>Manovre conservate nel progetto (questa pagina, mozzi-cli wheelchair slalom --project)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show</source>
+        <translation>Mostra</translation>
     </message>
     <message>
         <location line="+1"/>

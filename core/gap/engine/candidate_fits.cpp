@@ -220,7 +220,9 @@ Result<void> collectAndRank(Pass& s) {
     for (std::size_t j = 0; j < sc.phi.size(); ++j) {
       // LR of a size-delta effect ~ (delta |B_j|)^2: the threshold is reached at
       // delta = sqrt(T) / |B_j| (detected about half the time).
-      const double bj = sc.projectedNorm[j];
+      // A candidate the screen could not evaluate has no projected norms:
+      // nothing is detectable through it.
+      const double bj = j < sc.projectedNorm.size() ? sc.projectedNorm[j] : 0.0;
       e.smallestDetectable.push_back(bj > 0.0 ? std::sqrt(std::max(d.threshold, 0.0)) / bj * sc.phi[j].scale
                                               : std::numeric_limits<double>::infinity());
     }
