@@ -76,8 +76,7 @@ core::Result<void> addDemoGapDiagnosis(core::io::ProjectStore& store) {
   // hammer test; fixed seed (the default), fewer bootstrap samples than the
   // page's default to keep the demo quick. Not mass_loading: on this
   // three-mode model an added mass at a DOF several modes leave still cannot
-  // be evaluated, and core/gap's ranking then reads past the screen's
-  // per-parameter norms (diagnosis.cpp, smallestDetectable; reported to the lead).
+  // be evaluated, and with it the verdict is "not identifiable" at a size of 0.
   diagnosis.effects = {"residual_mode", "hysteretic_damping", "exponential_window"};
   diagnosis.bootstrapSamples = 60;
   diagnosis.multistarts = 4;
