@@ -2,6 +2,14 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US" sourcelanguage="en_US">
 <context>
+    <name>KeptAnalyses</name>
+    <message>
+        <location filename="../views/common/kept_analyses.cpp" line="+20"/>
+        <source>%1 (analysis %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>Pages</name>
     <message numerus="yes">
         <location filename="../app/gui/builtin_pages.cpp" line="+63"/>
@@ -6419,7 +6427,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::StabilityPage</name>
     <message>
-        <location filename="../views/stability/stability_page.cpp" line="+276"/>
+        <location filename="../views/stability/stability_page.cpp" line="+277"/>
         <source>Computing the eigenvalues against speed...</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6429,7 +6437,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+81"/>
         <source>Cannot compute: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6449,7 +6457,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-246"/>
+        <location line="-231"/>
         <source>built-in (Sharp 1971 standard machine)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6496,12 +6504,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>%1 (analysis %2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+98"/>
+        <location line="+94"/>
         <source>Critical speeds: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7228,7 +7231,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::WheelchairPage</name>
     <message>
-        <location filename="../views/wheelchair/wheelchair_page.cpp" line="+176"/>
+        <location filename="../views/wheelchair/wheelchair_page.cpp" line="+177"/>
         <source>Correct the marked values first.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7255,12 +7258,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>%1 (analysis %2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+55"/>
+        <location line="+51"/>
         <source>Cannot simulate: %1</source>
         <translation type="unfinished"></translation>
     </message>

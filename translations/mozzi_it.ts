@@ -2,6 +2,14 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="it_IT" sourcelanguage="en_US">
 <context>
+    <name>KeptAnalyses</name>
+    <message>
+        <location filename="../views/common/kept_analyses.cpp" line="+20"/>
+        <source>%1 (analysis %2)</source>
+        <translation>%1 (analisi %2)</translation>
+    </message>
+</context>
+<context>
     <name>Pages</name>
     <message numerus="yes">
         <location filename="../app/gui/builtin_pages.cpp" line="+63"/>
@@ -6424,7 +6432,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::StabilityPage</name>
     <message>
-        <location filename="../views/stability/stability_page.cpp" line="+276"/>
+        <location filename="../views/stability/stability_page.cpp" line="+277"/>
         <source>Computing the eigenvalues against speed...</source>
         <translation>Calcolo degli autovalori in funzione della velocità...</translation>
     </message>
@@ -6434,7 +6442,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Stabilità in funzione della velocità</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+81"/>
         <source>Cannot compute: %1</source>
         <translation>Impossibile calcolare: %1</translation>
     </message>
@@ -6454,7 +6462,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Nessuna parte reale attraversa lo zero in questo intervallo di velocità.</translation>
     </message>
     <message>
-        <location line="-246"/>
+        <location line="-231"/>
         <source>built-in (Sharp 1971 standard machine)</source>
         <translation>integrati (macchina standard di Sharp 1971)</translation>
     </message>
@@ -6501,12 +6509,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Conservato nel progetto come analisi %1.</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>%1 (analysis %2)</source>
-        <translation>%1 (analisi %2)</translation>
-    </message>
-    <message>
-        <location line="+98"/>
+        <location line="+94"/>
         <source>Critical speeds: %1</source>
         <translation>Velocità critiche: %1</translation>
     </message>
@@ -7233,7 +7236,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::WheelchairPage</name>
     <message>
-        <location filename="../views/wheelchair/wheelchair_page.cpp" line="+176"/>
+        <location filename="../views/wheelchair/wheelchair_page.cpp" line="+177"/>
         <source>Correct the marked values first.</source>
         <translation>Correggere prima i valori segnalati.</translation>
     </message>
@@ -7260,12 +7263,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Conservato nel progetto come analisi %1.</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>%1 (analysis %2)</source>
-        <translation>%1 (analisi %2)</translation>
-    </message>
-    <message>
-        <location line="+55"/>
+        <location line="+51"/>
         <source>Cannot simulate: %1</source>
         <translation>Impossibile simulare: %1</translation>
     </message>

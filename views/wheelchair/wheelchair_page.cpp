@@ -14,6 +14,7 @@
 
 #include "core/common/text.h"
 #include "views/common/job_runner.h"
+#include "views/common/kept_analyses.h"
 #include "views/common/project_model.h"
 #include "views/panels/parameter_form.h"
 #include "views/plots/interactive_plot.h"
@@ -226,26 +227,11 @@ QString WheelchairPage::keep(const Outcome& outcome) {
 }
 
 void WheelchairPage::refreshStored() {
-  const qint64 previous = stored_->currentData().toLongLong();
-  const QSignalBlocker block(stored_);
-  stored_->clear();
-  if (project_ && project_->store()) {
-    if (auto analyses = project_->store()->analyses())
-      for (const auto& a : *analyses)
-        if (a.kind == st::kWheelchairAnalysisKind)
-          stored_->addItem(tr("%1 (analysis %2)").arg(QString::fromStdString(a.name)).arg(a.id),
-                           QVariant::fromValue<qint64>(a.id));
-  }
-  const int at = stored_->findData(QVariant::fromValue<qint64>(previous));
-  stored_->setCurrentIndex(at >= 0 ? at : stored_->count() - 1);
-  stored_->setEnabled(stored_->count() > 0);
-  showStored_->setEnabled(stored_->count() > 0);
+  showStored_->setEnabled(fillKeptAnalyses(stored_, project_, st::kWheelchairAnalysisKind) > 0);
 }
 
 std::vector<qint64> WheelchairPage::storedResults() const {
-  std::vector<qint64> ids;
-  for (int i = 0; i < stored_->count(); ++i) ids.push_back(stored_->itemData(i).toLongLong());
-  return ids;
+  return keptAnalysisIds(stored_);
 }
 
 bool WheelchairPage::showStored(qint64 analysisId) {
