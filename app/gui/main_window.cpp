@@ -446,7 +446,14 @@ bool MainWindow::startReport(const QString& pdfPath, const QStringList& argument
   connect(process, QOverload<int, QProcess::ExitStatus>::of(&QProcess::finished), this,
           [this, process, pdfPath](int code, QProcess::ExitStatus status) {
             const bool ok = status == QProcess::NormalExit && code == 0;
-            const QString detail = QString::fromUtf8(process->readAllStandardError()).trimmed();
+            // The renderer's own message; Qt's start-up warnings (a missing
+            // XDG_RUNTIME_DIR, platform plugin notes) are not the user's concern.
+            QStringList lines;
+            for (const QString& line : QString::fromUtf8(process->readAllStandardError()).split(QLatin1Char('\n')))
+              if (!line.startsWith(QLatin1String("QStandardPaths:")) && !line.startsWith(QLatin1String("qt.")) &&
+                  !line.trimmed().isEmpty())
+                lines << line;
+            const QString detail = lines.join(QLatin1Char('\n')).trimmed();
             const QString message =
                 ok ? tr("Report written: %1").arg(pdfPath) : tr("The report was not written: %1").arg(detail);
             log(message);
