@@ -2170,7 +2170,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+23"/>
         <source>Report written: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2195,8 +2195,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-340"/>
-        <location line="+389"/>
+        <location line="-347"/>
+        <location line="+396"/>
         <source>Open Project</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2216,8 +2216,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-400"/>
-        <location line="+406"/>
+        <location line="-407"/>
+        <location line="+413"/>
         <source>New Project</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2247,18 +2247,18 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-409"/>
-        <location line="+415"/>
+        <location line="-416"/>
+        <location line="+422"/>
         <source>Save Project As</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-248"/>
+        <location line="-255"/>
         <source>&amp;Report...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+248"/>
+        <location line="+255"/>
         <source>Could not save the project as %1.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2305,7 +2305,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-455"/>
+        <location line="-462"/>
         <source>Import Universal File</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2315,7 +2315,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+368"/>
+        <location line="+375"/>
         <source>Mozzi projects (*.mozzi)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2325,7 +2325,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-424"/>
+        <location line="-431"/>
         <source>A job stopped before its end; see its page</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2350,7 +2350,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+231"/>
+        <location line="+238"/>
         <source>Check Project Integrity</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5423,7 +5423,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location line="+1"/>
-        <source>To leave with a document: File &gt; Export &gt; Report (PDF).</source>
+        <source>To leave with a document: File &gt; Export &gt; Report...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -2170,7 +2170,7 @@
         <translation>Impossibile scrivere il rapporto: il programma mozzi-report non è installato.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+23"/>
         <source>Report written: %1</source>
         <translation>Rapporto scritto: %1</translation>
     </message>
@@ -2195,8 +2195,8 @@
         <translation>Dove: %1</translation>
     </message>
     <message>
-        <location line="-340"/>
-        <location line="+389"/>
+        <location line="-347"/>
+        <location line="+396"/>
         <source>Open Project</source>
         <translation>Apri progetto</translation>
     </message>
@@ -2216,8 +2216,8 @@
         <translation>Sola lettura: %1</translation>
     </message>
     <message>
-        <location line="-400"/>
-        <location line="+406"/>
+        <location line="-407"/>
+        <location line="+413"/>
         <source>New Project</source>
         <translation>Nuovo progetto</translation>
     </message>
@@ -2247,18 +2247,18 @@
         <translation>Creato il progetto dimostrativo %1</translation>
     </message>
     <message>
-        <location line="-409"/>
-        <location line="+415"/>
+        <location line="-416"/>
+        <location line="+422"/>
         <source>Save Project As</source>
         <translation>Salva progetto come</translation>
     </message>
     <message>
-        <location line="-248"/>
+        <location line="-255"/>
         <source>&amp;Report...</source>
         <translation>&amp;Relazione...</translation>
     </message>
     <message>
-        <location line="+248"/>
+        <location line="+255"/>
         <source>Could not save the project as %1.</source>
         <translation>Impossibile salvare il progetto come %1.</translation>
     </message>
@@ -2305,7 +2305,7 @@
         <translation>Importato %1: %2 nodi, %3 linee, %4 FRF, %5 modi</translation>
     </message>
     <message>
-        <location line="-455"/>
+        <location line="-462"/>
         <source>Import Universal File</source>
         <translation>Importa file Universal</translation>
     </message>
@@ -2315,7 +2315,7 @@
         <translation>File Universal (*.uff *.unv);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location line="+368"/>
+        <location line="+375"/>
         <source>Mozzi projects (*.mozzi)</source>
         <translation>Progetti Mozzi (*.mozzi)</translation>
     </message>
@@ -2325,7 +2325,7 @@
         <translation>Progetti Mozzi (*.mozzi);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location line="-424"/>
+        <location line="-431"/>
         <source>A job stopped before its end; see its page</source>
         <translation>Un&apos;attività si è interrotta prima della fine; vedi la sua pagina</translation>
     </message>
@@ -2350,7 +2350,7 @@
         <translation>Apri in %1</translation>
     </message>
     <message>
-        <location line="+231"/>
+        <location line="+238"/>
         <source>Check Project Integrity</source>
         <translation>Verifica integrità del progetto</translation>
     </message>
@@ -5427,8 +5427,8 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location line="+1"/>
-        <source>To leave with a document: File &gt; Export &gt; Report (PDF).</source>
-        <translation>Per uscire con un documento: File &gt; Esporta &gt; Rapporto (PDF).</translation>
+        <source>To leave with a document: File &gt; Export &gt; Report...</source>
+        <translation>Per uscire con un documento: File &gt; Esporta &gt; Relazione...</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -346,7 +346,7 @@ void ProjectOverview::retranslate() {
   start_->setHeaderLabels({tr("Page"), tr("What it shows"), tr("Opens on")});
   startHeading_->setText(tr("Start here: double-click a page to open it on this project's data"));
   open_->setText(tr("&Open Page"));
-  reportHint_->setText(tr("To leave with a document: File > Export > Report (PDF)."));
+  reportHint_->setText(tr("To leave with a document: File > Export > Report..."));
   specimensHeading_->setText(tr("Specimens and what each holds"));
   startHeading_->setVisible(hasProject_ && registry_);
   start_->setVisible(hasProject_ && registry_);
