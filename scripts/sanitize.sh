@@ -2,9 +2,9 @@
 # The sanitizer stage (issues 17 and 24): AddressSanitizer and
 # UndefinedBehaviorSanitizer (gcc; -O1 -g1 -fno-omit-frame-pointer, every
 # undefined-behaviour report fatal) over the fuzz corpora replayed with their
-# bounded mutations (tests/fuzz/replay_main.cpp) and the tests of mozzi-cli
-# (the robustness test's every command and option among them); with
-# MOZZI_SANITIZE_UNIT=1 also over the unit tests of core/ and devices/. Any
+# bounded mutations (tests/fuzz/replay_main.cpp), the tests of mozzi-cli
+# (the robustness test's every command and option among them) and the unit
+# tests of core/ and devices/. Any
 # sanitizer report fails the test, and a failed test fails this script (and
 # so scripts/test.sh and .ci/run).
 #
@@ -40,13 +40,20 @@ jobs=$(nproc)
 #   *_kill*: SIGKILL a child mozzi-cli at timed moments; they test what a
 #     killed process leaves on disk, not memory, and run in the Release stage;
 #   devices_campaign_campaign_memory: measures the engine's resident memory,
-#     which ASan's shadow memory and quarantine change by design.
-excluded='_kill|^devices_campaign_campaign_memory$'
-# The tests run: the fuzz targets, the CLI's tests and the house-rule checks;
-# MOZZI_SANITIZE_UNIT=1 adds core's and devices' unit tests (about 100 more
-# programs to build; not in CI until they have run green, see docs/building.md).
-selected='(_fuzz$|^app_cli_|^cli_|^layers_)'
-if [ "${MOZZI_SANITIZE_UNIT:-0}" = 1 ]; then selected='.'; fi
+#     which ASan's shadow memory and quarantine change by design;
+#   devices_campaign_campaign_umockdev: times an unplug against a real-time
+#     model of the DAQ; slowed down under ASan on a loaded machine the model
+#     runs pulses ahead and the test's expected pulse order fails (seen once at
+#     load 15-19, not a memory error); it runs in the Release stage.
+excluded='_kill|^devices_campaign_campaign_memory$|^devices_campaign_campaign_umockdev$'
+# The tests run: every unit test of core/ and devices/, the CLI's tests, the
+# fuzz targets and the house-rule checks (all tests labelled unit or
+# fuzz-smoke; the GUI and validation tests carry other labels).
+# MOZZI_SANITIZE_UNIT=0 keeps only the fuzz targets, the CLI's tests and the
+# house checks (the stage before 2026-11-28: 32 tests, about 100 fewer
+# programs to build).
+selected='.'
+if [ "${MOZZI_SANITIZE_UNIT:-1}" = 0 ]; then selected='(_fuzz$|^app_cli_|^cli_|^layers_)'; fi
 
 scope='^(core/(common|io)/|core/tire/tire_csv|core/stability/parameter_file|core/gap/(problem_loader|structural/model_file)|core/geometry/mesh_edit|devices/(usbtmc/|sim/(replay_driver|sim_drivers|tyre_tester)|campaign/campaign_definition)|app/cli/args)'
 if [ "${MOZZI_SANITIZE_FULL:-0}" = 1 ]; then scope=''; fi

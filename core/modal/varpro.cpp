@@ -81,7 +81,9 @@ Result<ModalVarpro> ModalVarpro::create(const FrfMatrix& frf, std::vector<LineSe
   v.r_.resize(v.p_, v.p_);
   v.rTmp_.resize(v.p_, v.p_);
   v.gram_.resize(v.p_, v.p_);
-  v.llt_ = Eigen::LLT<Matrix>(v.p_);
+  // Sized by a factorisation, not by LLT(size): that constructor leaves the
+  // status unset, and moving it in is a load of an invalid enum (UBSan).
+  v.llt_.compute(Matrix::Identity(v.p_, v.p_));
   v.hWork_.resize(v.p_ + nd);
   // Blocks of at most about 4 MB of model values (Q Z, rows x no): few
   // matrix products (each sets up its own packing), none of the data's size.
