@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "core/io/project_store.h"
+#include "core/stability/stability_record.h"
+#include "core/stability/wheelchair_record.h"
 #include "views/campaign/campaign_session.h"
 #include "views/campaign/hammer_station_page.h"
 #include "views/common/page_registry.h"
@@ -49,6 +51,12 @@ bool isKind(const ProjectItem& item, std::initializer_list<RecordKind> kinds) {
     if (item.kind == kind) return true;
   }
   return false;
+}
+
+// A stored analysis of one kind (the pages that keep their results as analyses).
+std::function<bool(const ProjectItem&)> isAnalysisOf(const char* kind) {
+  const QString wanted = QString::fromLatin1(kind);
+  return [wanted](const ProjectItem& item) { return item.kind == RecordKind::Analysis && item.analysisKind == wanted; };
 }
 
 // --- 3-D view: the selected specimen's mesh ---------------------------------------
@@ -186,15 +194,22 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                         QT_TRANSLATE_NOOP("Pages",
                                           "Eigenvalues of a bicycle model against speed, its modes named and "
                                           "its critical speeds marked"),
-                        QString(), PageMenu::Tools, nullptr,
+                        QString(), PageMenu::Tools, isAnalysisOf(core::stability::kStabilityAnalysisKind),
                         [](const PageContext& ctx) -> QWidget* {
                           auto* page = new views::StabilityPage(ctx.parent, ctx.jobs);
                           page->setObjectName(QStringLiteral("stabilityTab"));
                           page->setProjectModel(ctx.model);  // the forks and sweeps the project keeps
-                          page->openShowing();  // the last kept sweep, or the benchmark bicycle 0 to 10 m/s
+                          // The kept sweep it was opened on; else the last kept
+                          // one, or the benchmark bicycle 0 to 10 m/s.
+                          if (ctx.item.kind != RecordKind::Analysis || !page->showStored(ctx.item.id))
+                            page->openShowing();
                           return page;
                         },
-                        /*singleton=*/true, /*openAtStart=*/false, nullptr});
+                        /*singleton=*/true, /*openAtStart=*/false,
+                        [](QWidget* page, const PageContext& ctx) {
+                          if (ctx.item.kind == RecordKind::Analysis)
+                            static_cast<views::StabilityPage*>(page)->showStored(ctx.item.id);
+                        }});
 
   // Mesh editor (views/editors): one tab per specimen.
   registry.add(PageSpec{QStringLiteral("mesh-editor"), QT_TRANSLATE_NOOP("Pages", "Mesh Editor"),
@@ -359,15 +374,22 @@ void registerBuiltinPages(views::PageRegistry& registry) {
                         QT_TRANSLATE_NOOP("Pages",
                                           "Slalom and steady-turning trajectories and rear slip angles of the "
                                           "wheelchair model, with the tyre stiffness studies"),
-                        QString(), PageMenu::Tools, nullptr,
+                        QString(), PageMenu::Tools, isAnalysisOf(core::stability::kWheelchairAnalysisKind),
                         [](const PageContext& ctx) -> QWidget* {
                           auto* page = new views::WheelchairPage(ctx.parent, ctx.jobs);
                           page->setObjectName(QStringLiteral("wheelchairTab"));
                           page->setProjectModel(ctx.model);  // the manoeuvres the project keeps
-                          page->openShowing();  // the last kept one, or the cornering-stiffness slalom of Figure 58
+                          // The kept manoeuvre it was opened on; else the last kept
+                          // one, or the cornering-stiffness slalom of Figure 58.
+                          if (ctx.item.kind != RecordKind::Analysis || !page->showStored(ctx.item.id))
+                            page->openShowing();
                           return page;
                         },
-                        /*singleton=*/true, /*openAtStart=*/false, nullptr});
+                        /*singleton=*/true, /*openAtStart=*/false,
+                        [](QWidget* page, const PageContext& ctx) {
+                          if (ctx.item.kind == RecordKind::Analysis)
+                            static_cast<views::WheelchairPage*>(page)->showStored(ctx.item.id);
+                        }});
 }
 
 }  // namespace app

@@ -25,9 +25,16 @@ class PageRegistry;
 
 // A record of the open project a page can be opened on.
 struct ProjectItem {
+  ProjectItem() = default;
+  ProjectItem(RecordKind recordKind, qint64 recordId, qint64 specimen, QString kindOfAnalysis = {})
+      : kind(recordKind), id(recordId), specimenId(specimen), analysisKind(std::move(kindOfAnalysis)) {}
+
   RecordKind kind = RecordKind::None;  // None: a page opened from a menu
   qint64 id = 0;                       // the record's id (the specimen's for Specimen and Mesh)
   qint64 specimenId = 0;               // the specimen the record belongs to (0 if none or unknown)
+  // Analysis only: the stored analysis's kind ("stability", "wheelchair",
+  // "gap-diagnosis"), so that the page of that kind claims it.
+  QString analysisKind;
 
   bool operator==(const ProjectItem& o) const { return kind == o.kind && id == o.id && specimenId == o.specimenId; }
   bool operator!=(const ProjectItem& o) const { return !(*this == o); }

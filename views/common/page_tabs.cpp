@@ -14,11 +14,13 @@ const char* const kPropPage = "mozziPageId";
 const char* const kPropKind = "mozziItemKind";
 const char* const kPropId = "mozziItemId";
 const char* const kPropSpecimen = "mozziItemSpecimen";
+const char* const kPropAnalysisKind = "mozziItemAnalysisKind";
 
 void setItem(QWidget* page, const ProjectItem& item) {
   page->setProperty(kPropKind, static_cast<int>(item.kind));
   page->setProperty(kPropId, QVariant::fromValue<qlonglong>(item.id));
   page->setProperty(kPropSpecimen, QVariant::fromValue<qlonglong>(item.specimenId));
+  page->setProperty(kPropAnalysisKind, item.analysisKind);
 }
 }  // namespace
 
@@ -66,7 +68,7 @@ const PageSpec* PageTabs::specOf(const QWidget* page) const {
 ProjectItem PageTabs::itemOf(const QWidget* page) const {
   if (!page) return {};
   return ProjectItem{static_cast<RecordKind>(page->property(kPropKind).toInt()), page->property(kPropId).toLongLong(),
-                     page->property(kPropSpecimen).toLongLong()};
+                     page->property(kPropSpecimen).toLongLong(), page->property(kPropAnalysisKind).toString()};
 }
 
 QWidget* PageTabs::findPage(const QString& pageId, const ProjectItem& item) const {

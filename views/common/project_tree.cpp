@@ -15,9 +15,18 @@ constexpr int kRoleKind = Qt::UserRole + 1;
 constexpr int kRoleId = Qt::UserRole + 2;
 constexpr int kRoleSpecimen = Qt::UserRole + 3;
 constexpr int kRoleProperties = Qt::UserRole + 4;  // QStringList: name, value, name, value, ...
+constexpr int kRoleAnalysisKind = Qt::UserRole + 5;
 
 QString text(const std::string& s) {
   return QString::fromStdString(s);
+}
+
+// What a stored analysis is, in the user's words (its kind as stored otherwise).
+QString analysisKindText(const std::string& kind) {
+  if (kind == "stability") return ProjectTree::tr("stability sweep");
+  if (kind == "wheelchair") return ProjectTree::tr("wheelchair manoeuvre");
+  if (kind == "gap-diagnosis") return ProjectTree::tr("gap diagnosis");
+  return text(kind);
 }
 
 }  // namespace
@@ -50,7 +59,7 @@ ProjectTree::ProjectTree(ProjectModel* model, QWidget* parent) : QTreeWidget(par
 ProjectItem ProjectTree::itemOf(const QTreeWidgetItem* row) {
   if (!row) return {};
   return ProjectItem{static_cast<RecordKind>(row->data(0, kRoleKind).toInt()), row->data(0, kRoleId).toLongLong(),
-                     row->data(0, kRoleSpecimen).toLongLong()};
+                     row->data(0, kRoleSpecimen).toLongLong(), row->data(0, kRoleAnalysisKind).toString()};
 }
 
 QTreeWidgetItem* ProjectTree::addRow(QTreeWidgetItem* parent, const QStringList& texts, const ProjectItem& item) {
@@ -59,6 +68,7 @@ QTreeWidgetItem* ProjectTree::addRow(QTreeWidgetItem* parent, const QStringList&
   row->setData(0, kRoleKind, static_cast<int>(item.kind));
   row->setData(0, kRoleId, QVariant::fromValue<qlonglong>(item.id));
   row->setData(0, kRoleSpecimen, QVariant::fromValue<qlonglong>(item.specimenId));
+  if (!item.analysisKind.isEmpty()) row->setData(0, kRoleAnalysisKind, item.analysisKind);
   return row;
 }
 
@@ -179,6 +189,19 @@ void ProjectTree::refresh() {
   if (auto tests = store->rigTests(); tests && !tests->empty()) addTests(tr("Rig tests"), RecordKind::RigTest, *tests);
   if (auto tests = store->tyreTests(); tests && !tests->empty())
     addTests(tr("Tyre tests"), RecordKind::TyreTest, *tests);
+  // Stored analyses (stability sweeps, wheelchair manoeuvres, gap diagnoses):
+  // double-clicked, each opens on the page of its kind.
+  if (auto analyses = store->analyses(); analyses && !analyses->empty()) {
+    auto* group = addRow(root, {tr("Analyses"), QString::number(analyses->size())}, {});
+    for (const auto& a : *analyses) {
+      auto* row = addRow(group, {text(a.name), analysisKindText(a.kind)},
+                         {RecordKind::Analysis, a.id, a.specimenId, text(a.kind)});
+      row->setData(0, kRoleProperties,
+                   QStringList{tr("Name"), text(a.name), tr("Kind"), analysisKindText(a.kind), tr("Analysis id"),
+                               QString::number(a.id)});
+    }
+    expandItem(group);
+  }
   auto* data = addRow(root, {tr("Data")}, {});
   for (const auto& count : summary->counts) {
     if (count.table == "specimen") continue;

@@ -223,7 +223,13 @@ void ProjectOverview::buildStartEntries() {
   add(RecordKind::RigTest, &core::io::SpecimenContents::staticRigTests);
   add(RecordKind::RigTest, &core::io::SpecimenContents::dynamicRigTests);
   add(RecordKind::TyreTest, &core::io::SpecimenContents::tyreTests);
-  add(RecordKind::Analysis, &core::io::SpecimenContents::analyses);
+  // Analyses carry their kind, so that the page of that kind claims them.
+  if (model_ && model_->store()) {
+    if (auto analyses = model_->store()->analyses()) {
+      for (const auto& a : *analyses)
+        candidates.push_back(ProjectItem{RecordKind::Analysis, a.id, a.specimenId, QString::fromStdString(a.kind)});
+    }
+  }
   for (const auto& c : contents_)
     if (c.meshNodes > 0) candidates.push_back(ProjectItem{RecordKind::Mesh, c.specimenId, c.specimenId});
   for (const auto& c : contents_) candidates.push_back(ProjectItem{RecordKind::Specimen, c.specimenId, c.specimenId});
