@@ -37,21 +37,19 @@ bool wantsSecondNoisePass(const Diagnosis& d) {
 Result<Diagnosis> diagnoseOnce(const GapProblem& problem, const DiagnosisOptions& options, const Diagnosis* warm,
                                bool firstOfTwo) {
   engine::Pass s(problem, options, warm, firstOfTwo);
-  if (auto r = engine::prepare(s); !r) return r.error();
-  if (auto r = engine::calibrate(s); !r) return r.error();
-  if (auto r = engine::screenAndNull(s); !r) return r.error();
-  if (auto r = engine::fitCandidates(s); !r) return r.error();
+  MOZZI_TRY(engine::prepare(s));
+  MOZZI_TRY(engine::calibrate(s));
+  MOZZI_TRY(engine::screenAndNull(s));
+  MOZZI_TRY(engine::fitCandidates(s));
   // Steps 7 and 9: held-out checks, gap after and shrink for the top few.
   if (!s.keepGoing(0.85, "held-out checks")) return s.cancelled();
-  if (auto r = engine::checkHeldOut(s, static_cast<std::size_t>(std::max(0, s.reportTop))); !r) return r.error();
-  if (auto r = engine::profileTop(s); !r) return r.error();
-  if (auto r = engine::ambiguity(s); !r) return r.error();
-  if (auto r = engine::fitPairStep(s); !r) return r.error();
+  MOZZI_TRY(engine::checkHeldOut(s, static_cast<std::size_t>(std::max(0, s.reportTop))));
+  MOZZI_TRY(engine::profileTop(s));
+  MOZZI_TRY(engine::ambiguity(s));
+  MOZZI_TRY(engine::fitPairStep(s));
   engine::decideVerdict(s);
   if (firstOfTwo && !wantsSecondNoisePass(s.d)) {
-    if (auto r = engine::checkHeldOut(s, static_cast<std::size_t>(std::max(0, options.reportTop))); !r) {
-      return r.error();
-    }
+    MOZZI_TRY(engine::checkHeldOut(s, static_cast<std::size_t>(std::max(0, options.reportTop))));
   }
   if (!s.keepGoing(1.0, "done")) return s.cancelled();
   return std::move(s.d);

@@ -105,6 +105,16 @@ struct NoiseModel {
   double chiSquareVariance = 0.0;
 };
 
+// Where a GapProblem is evaluated: calibration parameters theta (in the order
+// of calibrationParameters()) and, when candidate >= 0, that candidate effect
+// of candidates() with its parameters phi; candidate -1 and phi null for the
+// calibrated model alone.
+struct ModelPoint {
+  const double* theta = nullptr;
+  int candidate = -1;
+  const double* phi = nullptr;
+};
+
 class GapProblem {
  public:
   virtual ~GapProblem() = default;
@@ -115,23 +125,21 @@ class GapProblem {
   virtual std::vector<Candidate> candidates() const = 0;
   virtual int residualCount() const = 0;
 
-  // Whitened residuals for calibration parameters theta and, when candidate >= 0,
-  // that candidate's parameters phi. Returns false where the model cannot be
+  // Whitened residuals at `at`. Returns false where the model cannot be
   // evaluated (e.g. a singular matrix): the fitter treats it as infeasible.
-  virtual bool residuals(const double* theta, int candidate, const double* phi, double* r) const = 0;
+  virtual bool residuals(const ModelPoint& at, double* r) const = 0;
 
   // Group of each residual for held-out checks (frequency bands, conditions);
   // all zero when the data cannot be split.
   virtual std::vector<int> folds() const { return std::vector<int>(static_cast<size_t>(residualCount()), 0); }
 
   // The same problem with the measured data replaced by the prediction at
-  // (theta, candidate, phi) plus noise drawn from the problem's noise model:
-  // the parametric bootstrap and the ambiguity check simulate from it.
-  virtual std::unique_ptr<GapProblem> simulated(const double* theta, int candidate, const double* phi,
-                                                std::mt19937_64& rng) const = 0;
+  // `at` plus noise drawn from the problem's noise model: the parametric
+  // bootstrap and the ambiguity check simulate from it.
+  virtual std::unique_ptr<GapProblem> simulated(const ModelPoint& at, std::mt19937_64& rng) const = 0;
 
-  // The gap as a user reads it (step 2 of GAP.md), for the given parameters.
-  virtual GapMetrics metrics(const double* theta, int candidate, const double* phi) const = 0;
+  // The gap as a user reads it (step 2 of GAP.md), at `at`.
+  virtual GapMetrics metrics(const ModelPoint& at) const = 0;
 
   // The noise model behind the whitened residuals.
   virtual NoiseModel noiseModel() const { return {}; }
@@ -160,25 +168,23 @@ class GapProblem {
   }
   virtual bool combinedResiduals(const double* theta, const std::vector<int>& combo, const double* phi,
                                  double* r) const {
-    if (combo.size() == 1) return residuals(theta, combo[0], phi, r);
+    if (combo.size() == 1) return residuals({theta, combo[0], phi}, r);
     return false;
   }
   virtual GapMetrics combinedMetrics(const double* theta, const std::vector<int>& combo, const double* phi) const {
-    if (combo.size() == 1) return metrics(theta, combo[0], phi);
+    if (combo.size() == 1) return metrics({theta, combo[0], phi});
     return {};
   }
   virtual std::vector<OverlayCurve> combinedOverlay(const double* theta, const std::vector<int>& combo,
                                                     const double* phi) const {
-    if (combo.size() == 1) return overlay(theta, combo[0], phi);
+    if (combo.size() == 1) return overlay({theta, combo[0], phi});
     return {};
   }
 
   // Curves for the overlay (one per measured FRF, mode set or condition
   // series); empty when the problem has nothing to plot.
-  virtual std::vector<OverlayCurve> overlay(const double* theta, int candidate, const double* phi) const {
-    (void)theta;
-    (void)candidate;
-    (void)phi;
+  virtual std::vector<OverlayCurve> overlay(const ModelPoint& at) const {
+    (void)at;
     return {};
   }
 };

@@ -45,20 +45,19 @@ Result<std::unique_ptr<GapProblem>> loadStructural(const structural::StructuralM
                      "unknown noise model '" + options.noise + "' (auto, estimated, coherence, stated)", "--noise");
   }
   so.averages = options.averages;
-  auto file = io::uff::readFile(measuredPath);
-  if (!file) return file.error();
+  MOZZI_TRY_ASSIGN(const io::uff::UffFile file, io::uff::readFile(measuredPath));
   const bool hasFrf = [&] {
-    for (const auto* f : file->all<io::uff::Function58>())
+    for (const auto* f : file.all<io::uff::Function58>())
       if (f->functionType == io::uff::FunctionType::Frf) return true;
     return false;
   }();
   if (hasFrf) {
-    auto frf = io::uff::toFrfMatrix(*file);
+    auto frf = io::uff::toFrfMatrix(file);
     if (!frf) return Error{frf.error().code, frf.error().message, measuredPath + ": " + frf.error().where};
     return structural::makeFrfProblem(model, *frf, so);
   }
-  if (!file->all<io::uff::ModalData55>().empty()) {
-    auto modes = io::uff::toModalData(*file);
+  if (!file.all<io::uff::ModalData55>().empty()) {
+    auto modes = io::uff::toModalData(file);
     if (!modes) return Error{modes.error().code, modes.error().message, measuredPath + ": " + modes.error().where};
     return structural::makeModesProblem(model, *modes, so);
   }
@@ -69,10 +68,9 @@ Result<std::unique_ptr<GapProblem>> loadStructural(const structural::StructuralM
 }  // namespace
 
 Result<std::string> modelFileKind(const std::string& modelPath) {
-  auto text = readText(modelPath, "model");
-  if (!text) return text.error();
-  if (looksLikeJson(*text)) {
-    const auto root = nlohmann::json::parse(*text, nullptr, false);
+  MOZZI_TRY_ASSIGN(const std::string text, readText(modelPath, "model"));
+  if (looksLikeJson(text)) {
+    const auto root = nlohmann::json::parse(text, nullptr, false);
     if (root.is_discarded() || !root.is_object()) return makeError(ErrorCode::ParseError, "not valid JSON", modelPath);
     if (!root.contains("schema") || !root["schema"].is_string()) {
       return makeError(ErrorCode::ParseError, "schema: missing (expected e.g. \"mozzi-model/1\")", modelPath);
@@ -87,31 +85,27 @@ Result<std::unique_ptr<GapProblem>> loadGapProblem(const std::string& modelPath,
   if (!(options.bandHighHz > options.bandLowHz)) {
     return makeError(ErrorCode::InvalidArgument, "the band must have LO < HI", "--band");
   }
-  auto kind = modelFileKind(modelPath);
-  if (!kind) return kind.error();
-  if (*kind == "mozzi-tire-gap/1") return loadTireGapProblem(modelPath, measuredPath);
-  if (*kind == "mozzi-stability-gap/1") return loadStabilityGapProblem(modelPath, measuredPath);
-  if (*kind == structural::kModelSchema) {
-    auto model = structural::readModelFile(modelPath);
-    if (!model) return model.error();
-    return loadStructural(*model, measuredPath, options);
+  MOZZI_TRY_ASSIGN(const std::string kind, modelFileKind(modelPath));
+  if (kind == "mozzi-tire-gap/1") return loadTireGapProblem(modelPath, measuredPath);
+  if (kind == "mozzi-stability-gap/1") return loadStabilityGapProblem(modelPath, measuredPath);
+  if (kind == structural::kModelSchema) {
+    MOZZI_TRY_ASSIGN(const structural::StructuralModel model, structural::readModelFile(modelPath));
+    return loadStructural(model, measuredPath, options);
   }
-  if (*kind == "uff") {
-    auto file = io::uff::readFile(modelPath);
-    if (!file) return file.error();
-    auto modes = io::uff::toModalData(*file);
+  if (kind == "uff") {
+    MOZZI_TRY_ASSIGN(const io::uff::UffFile file, io::uff::readFile(modelPath));
+    auto modes = io::uff::toModalData(file);
     if (!modes) {
       return makeError(
           ErrorCode::ParseError,
           "the model is neither a JSON model file nor a UFF modal model (dataset 55): " + modes.error().message,
           modelPath);
     }
-    auto model = structural::modelFromModalData(*modes, modelPath);
-    if (!model) return model.error();
-    return loadStructural(*model, measuredPath, options);
+    MOZZI_TRY_ASSIGN(const structural::StructuralModel model, structural::modelFromModalData(*modes, modelPath));
+    return loadStructural(model, measuredPath, options);
   }
   return makeError(ErrorCode::Unsupported,
-                   "unknown model schema '" + *kind +
+                   "unknown model schema '" + kind +
                        "' (known: mozzi-model/1, mozzi-tire-gap/1, mozzi-stability-gap/1, UFF 55 modal models)",
                    modelPath);
 }

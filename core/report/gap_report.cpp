@@ -157,7 +157,7 @@ io::StoredAnalysis analysisFromDiagnosis(const gap::GapProblem& problem, const g
 
   // The overlay as the Model vs Test page draws it: before at the calibrated
   // baseline; after with the verdict's pair, else its (or the top) effect.
-  const auto before = problem.overlay(d.calibrated.data(), -1, nullptr);
+  const auto before = problem.overlay({d.calibrated.data(), -1, nullptr});
   std::vector<gap::OverlayCurve> after;
   std::string afterLabel;
   const BestEffect best = bestEffect(d);
@@ -168,7 +168,7 @@ io::StoredAnalysis analysisFromDiagnosis(const gap::GapProblem& problem, const g
                                     {d.pair.effects[0].candidateIndex, d.pair.effects[1].candidateIndex}, phi.data());
     afterLabel = "model + " + d.pair.effects[0].candidate.effect + " + " + d.pair.effects[1].candidate.effect;
   } else if (best.single && best.single->candidateIndex >= 0 && best.single->theta.size() == d.calibrated.size()) {
-    after = problem.overlay(best.single->theta.data(), best.single->candidateIndex, best.single->parameters.data());
+    after = problem.overlay({best.single->theta.data(), best.single->candidateIndex, best.single->parameters.data()});
     afterLabel = "model + " + best.single->candidate.effect;
   }
   // The curves with the largest measured level first (the driving point and

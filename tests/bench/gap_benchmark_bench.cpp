@@ -33,7 +33,7 @@ void residuals(benchmark::State& state, bool viscous) {
   const double dm = 0.2;
   std::vector<double> r(static_cast<std::size_t>((*p)->residualCount()));
   for (auto _ : state) {
-    benchmark::DoNotOptimize((*p)->residuals(theta.data(), 0, &dm, r.data()));
+    benchmark::DoNotOptimize((*p)->residuals({theta.data(), 0, &dm}, r.data()));
   }
   state.counters["residuals"] = static_cast<double>(r.size());
 }

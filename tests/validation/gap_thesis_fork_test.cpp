@@ -49,13 +49,13 @@ TEST(GapThesisForkA, TheCandidatesReproduceModels1To3) {
   ASSERT_TRUE(p) << p.error().describe();
   // Model 1: 18.4 Hz (§4.2). sqrt(28000 / 2.0823) / 2 pi = 18.455 Hz: the
   // thesis truncates (reference/notes.md reproduces Table 12), so 0.1 Hz.
-  const auto base = (*p)->predict(nullptr, -1, nullptr);
+  const auto base = (*p)->predict({nullptr, -1, nullptr});
   EXPECT_NEAR(base[0], 18.4, 0.1);
   // Static lateral stiffness of model 1 with the torsion part: 57.2 kN/m, 2% from 56.1.
   EXPECT_NEAR(base[1] / 56.1e3, 1.0, 0.03);
   // Model 2 (stiffness at the dynamic axis): 78.4 kNm/rad = 2.8 k_1 gives 22.3 Hz.
   const double s2 = 78.4 / 28.0;
-  const auto m2 = (*p)->predict(nullptr, indexOf(**p, "stiffness_location"), &s2);
+  const auto m2 = (*p)->predict({nullptr, indexOf(**p, "stiffness_location"), &s2});
   EXPECT_NEAR(m2[0], 22.3, 0.05);
   // Its static lateral stiffness: bending alone k_2 / L_2^2 = 109.5 kN/m
   // (GAP.md), 94.5 kN/m with Table 10's torsion part in series: both far above 56.1.
@@ -63,13 +63,13 @@ TEST(GapThesisForkA, TheCandidatesReproduceModels1To3) {
   EXPECT_NEAR(m2[1], 1.0 / (1.0 / 109.54e3 + 0.066 * 0.066 / 3e3), 0.2e3);
   // Model 3: pure moment -0.67 kg m^2 (J_3 = 1.426) gives 22.3 Hz, static unchanged.
   const double dJ = 1.426 - 2.085;
-  const auto m3 = (*p)->predict(nullptr, indexOf(**p, "inertia"), &dJ);
+  const auto m3 = (*p)->predict({nullptr, indexOf(**p, "inertia"), &dJ});
   EXPECT_NEAR(m3[0], 22.3, 0.05);
   EXPECT_DOUBLE_EQ(m3[1], base[1]);
   // Residual compliance: 1 - (18.4/22.3)^2 = 32% of the static bending
   // compliance not in the mode gives 22.3 Hz, static unchanged.
   const double rho = 1.0 - std::pow(base[0] / 22.3, 2);
-  const auto rc = (*p)->predict(nullptr, indexOf(**p, "residual_compliance"), &rho);
+  const auto rc = (*p)->predict({nullptr, indexOf(**p, "residual_compliance"), &rho});
   EXPECT_NEAR(rc[0], 22.3, 1e-9);
   EXPECT_DOUBLE_EQ(rc[1], base[1]);
   std::printf("fork A: model 1 %.2f Hz, %.1f kN/m; model 2 %.2f Hz, %.1f kN/m; model 3 %.2f Hz; rho %.3f\n", base[0],

@@ -66,8 +66,8 @@ HeldOut heldOut(const TireGapProblem& test, const Diagnosis& train, const std::s
   const auto* r = find(train, effect);
   EXPECT_TRUE(r && r->fitted) << effect;
   if (!r || !r->fitted) return h;
-  const auto b = test.metrics(train.calibrated.data(), -1, nullptr);
-  const auto a = test.metrics(r->theta.data(), r->candidateIndex, r->parameters.data());
+  const auto b = test.metrics({train.calibrated.data(), -1, nullptr});
+  const auto a = test.metrics({r->theta.data(), r->candidateIndex, r->parameters.data()});
   for (const auto& e : b.entries) h.before.push_back(e.value);
   for (const auto& e : a.entries) h.after.push_back(e.value);
   h.rmsBefore = b.overall;

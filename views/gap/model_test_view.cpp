@@ -522,7 +522,7 @@ void ModelTestView::computeOverlays() {
   afterLabel_.clear();
   if (!diagnosis_ || !diagnosed_) return;
   const auto& d = *diagnosis_;
-  before_ = diagnosed_->overlay(d.calibrated.data(), -1, nullptr);
+  before_ = diagnosed_->overlay({d.calibrated.data(), -1, nullptr});
   // "After": the verdict's pair, else its first effect, else the top-ranked one.
   const core::gap::RankedEffect* best = core::report::bestEffect(d).single;
   if (twoEffects(d) && d.pair.theta.size() == d.calibrated.size()) {
@@ -534,7 +534,7 @@ void ModelTestView::computeOverlays() {
                       .arg(QString::fromStdString(d.pair.effects[0].candidate.effect),
                            QString::fromStdString(d.pair.effects[1].candidate.effect));
   } else if (best && best->candidateIndex >= 0 && best->theta.size() == d.calibrated.size()) {
-    after_ = diagnosed_->overlay(best->theta.data(), best->candidateIndex, best->parameters.data());
+    after_ = diagnosed_->overlay({best->theta.data(), best->candidateIndex, best->parameters.data()});
     afterLabel_ = tr("model + %1").arg(QString::fromStdString(best->candidate.effect));
   }
   const QSignalBlocker block(overlayChoice_);

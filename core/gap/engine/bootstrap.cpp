@@ -116,7 +116,7 @@ Result<NullCalibration> calibrateNull(const Model& baseline, const Eigen::Vector
       return;
     }
     auto rng = seededRng(options.seed, 1, static_cast<unsigned long long>(b));
-    const auto sim = problem.simulated(theta0.data(), -1, nullptr, rng);
+    const auto sim = problem.simulated({theta0.data(), -1, nullptr}, rng);
     if (!sim) {
       status[b] = NoSimulation;
       return;

@@ -313,8 +313,8 @@ Result<void> fitCandidates(Pass& s) {
     return makeError(ErrorCode::NumericalFailure, "the calibrated baseline cannot be evaluated", where);
   }
   s.p = base.parameterCount();
-  if (auto r = firstFits(s); !r) return r.error();
-  if (auto r = restartLeaders(s); !r) return r.error();
+  MOZZI_TRY(firstFits(s));
+  MOZZI_TRY(restartLeaders(s));
   return collectAndRank(s);
 }
 

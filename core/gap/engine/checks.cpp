@@ -48,7 +48,7 @@ Result<double> flipProbability(const GapProblem& problem, const std::vector<Scal
     for (int i = 0; i < samples; ++i) {
       if (keepGoing && !keepGoing()) return makeError(ErrorCode::Cancelled, "cancelled", where);
       auto rng = seededRng(seed, 2 + static_cast<unsigned long long>(side), static_cast<unsigned long long>(i));
-      const auto sim = problem.simulated(thetaX.data(), truth.candidate, phiX.empty() ? nullptr : phiX.data(), rng);
+      const auto sim = problem.simulated({thetaX.data(), truth.candidate, phiX.empty() ? nullptr : phiX.data()}, rng);
       if (!sim) return makeError(ErrorCode::NumericalFailure, "the problem could not simulate data", where);
       Model mt(*sim, theta, truth.candidate, truth.phi), mo(*sim, theta, other.candidate, other.phi);
       const FitResult ft = fitModel(mt, {truth.u}, warmFit());
@@ -110,11 +110,11 @@ Result<HeldOutBaseline> heldOutBaseline(const GapProblem& problem, const std::ve
   if (distinct.size() < 2 || static_cast<int>(folds.size()) != problem.residualCount()) return out;
   const std::vector<int> foldIds(distinct.begin(), distinct.end());
   const Model full(problem, theta, -1, {});
-  auto sums = foldSums(problem, foldIds, [&](const std::vector<int>& in) { return Model(problem, theta, -1, {}, in); },
-                       full, {uBaseline});
-  if (!sums) return sums.error();
+  MOZZI_TRY_ASSIGN(
+      out.sumOfSquares,
+      foldSums(problem, foldIds, [&](const std::vector<int>& in) { return Model(problem, theta, -1, {}, in); }, full,
+               {uBaseline}));
   out.foldIds = foldIds;
-  out.sumOfSquares = std::move(sums).value();
   return out;
 }
 
@@ -124,15 +124,15 @@ Result<double> heldOutImprovement(const GapProblem& problem, const std::vector<S
   if (baseline.foldIds.empty()) return std::numeric_limits<double>::quiet_NaN();
   const auto p = static_cast<Eigen::Index>(theta.size());
   const Model full(problem, theta, effect.candidate, effect.phi);
-  auto sums =
+  MOZZI_TRY_ASSIGN(
+      const std::vector<double> sums,
       foldSums(problem, baseline.foldIds,
                [&](const std::vector<int>& in) { return Model(problem, theta, effect.candidate, effect.phi, in); },
-               full, {effect.u, withPhi(uBaseline, Eigen::VectorXd::Zero(effect.u.size() - p))});
-  if (!sums) return sums.error();
+               full, {effect.u, withPhi(uBaseline, Eigen::VectorXd::Zero(effect.u.size() - p))}));
   double ss0 = 0.0, ss1 = 0.0;
   for (std::size_t i = 0; i < baseline.foldIds.size(); ++i) {
     ss0 += baseline.sumOfSquares[i];
-    ss1 += (*sums)[i];
+    ss1 += sums[i];
   }
   return ss0 > 0.0 ? 1.0 - ss1 / ss0 : 0.0;
 }

@@ -25,13 +25,10 @@ Result<void> checkHeldOut(Pass& s, std::size_t count) {
   for (std::size_t i : unchecked) {
     RankedEffect& e = d.ranking[i];
     if (!s.heldBaseline) {
-      auto b = engine::heldOutBaseline(s.problem, s.theta, s.u0);
-      if (!b) return b.error();
-      s.heldBaseline = std::move(b).value();
+      MOZZI_TRY_ASSIGN(s.heldBaseline, engine::heldOutBaseline(s.problem, s.theta, s.u0));
     }
-    auto held = engine::heldOutImprovement(s.problem, s.theta, s.u0, s.alt[i], *s.heldBaseline);
-    if (!held) return held.error();
-    e.heldOutImprovement = *held;
+    MOZZI_TRY_ASSIGN(e.heldOutImprovement,
+                     engine::heldOutImprovement(s.problem, s.theta, s.u0, s.alt[i], *s.heldBaseline));
     gapAfter(s, e);
   }
   return {};
@@ -68,18 +65,18 @@ Result<void> ambiguity(Pass& s) {
     d.flipProbability = 0.5 * std::erfc(std::sqrt(margin) / 2.0 / std::sqrt(2.0));
     d.flipEstimated = true;
   } else if (significant && fittedCount > 1) {
-    auto flip = engine::flipProbability(
-        problem, s.theta, s.alt[0], s.alt[1], d.ranking[0].likelihoodRatio - d.ranking[1].likelihoodRatio,
-        options.ambiguitySamples, options.seed, [&] { return s.keepGoing(0.95, "ambiguity check"); });
-    if (!flip) return flip.error();
-    d.flipProbability = *flip;
+    MOZZI_TRY_ASSIGN(
+        d.flipProbability,
+        engine::flipProbability(problem, s.theta, s.alt[0], s.alt[1],
+                                d.ranking[0].likelihoodRatio - d.ranking[1].likelihoodRatio, options.ambiguitySamples,
+                                options.seed, [&] { return s.keepGoing(0.95, "ambiguity check"); }));
     if (d.flipProbability > options.flipLimit) {
-      const auto ma =
-          d.ranking[0].gapAfter.entries.empty()
-              ? problem.metrics(d.ranking[0].theta.data(), d.ranking[0].candidateIndex, d.ranking[0].parameters.data())
-              : d.ranking[0].gapAfter;
+      const auto ma = d.ranking[0].gapAfter.entries.empty()
+                          ? problem.metrics({d.ranking[0].theta.data(), d.ranking[0].candidateIndex,
+                                             d.ranking[0].parameters.data()})
+                          : d.ranking[0].gapAfter;
       const auto mb =
-          problem.metrics(d.ranking[1].theta.data(), d.ranking[1].candidateIndex, d.ranking[1].parameters.data());
+          problem.metrics({d.ranking[1].theta.data(), d.ranking[1].candidateIndex, d.ranking[1].parameters.data()});
       d.separatingMeasurement = separating(ma, mb, d.ranking[0].candidate.effect, d.ranking[1].candidate.effect);
     }
   }

@@ -63,10 +63,10 @@ bool Model::residuals(const double* u, double* r) const {
   const int candidate = phi_.empty() ? -1 : candidate_;
   bool ok;
   if (rows_.empty()) {
-    ok = problem_.residuals(theta_buf_.data(), candidate, phi, r);
+    ok = problem_.residuals({theta_buf_.data(), candidate, phi}, r);
     return ok && Eigen::Map<const Eigen::VectorXd>(r, problem_.residualCount()).allFinite();
   }
-  ok = problem_.residuals(theta_buf_.data(), candidate, phi, full_buf_.data());
+  ok = problem_.residuals({theta_buf_.data(), candidate, phi}, full_buf_.data());
   for (std::size_t j = 0; ok && j < rows_.size(); ++j) {
     r[j] = full_buf_[static_cast<std::size_t>(rows_[j])];
     ok = std::isfinite(r[j]);

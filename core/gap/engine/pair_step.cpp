@@ -144,13 +144,10 @@ Result<void> describePair(Pass& s, const PairFit& bp, const std::map<int, std::s
   // The combination's baseline is the problem's own (ComboProblem's
   // candidate -1): the fold fits already made serve.
   if (!s.heldBaseline) {
-    auto b = engine::heldOutBaseline(problem, theta, u0);
-    if (!b) return b.error();
-    s.heldBaseline = std::move(b).value();
+    MOZZI_TRY_ASSIGN(s.heldBaseline, engine::heldOutBaseline(problem, theta, u0));
   }
-  auto held = engine::heldOutImprovement(combo, theta, u0, {0, bp.phi, u}, *s.heldBaseline);
-  if (!held) return held.error();
-  ep.heldOutImprovement = *held;
+  MOZZI_TRY_ASSIGN(ep.heldOutImprovement,
+                   engine::heldOutImprovement(combo, theta, u0, {0, bp.phi, u}, *s.heldBaseline));
   for (std::size_t m : {ia, ib}) {
     RankedEffect& e = d.ranking[m];
     if (e.gapAfter.entries.empty() && e.gapAfter.overall == 0.0) gapAfter(s, e);
@@ -188,12 +185,12 @@ Result<void> fitPairStep(Pass& s) {
       singles.push_back({alt[i].candidate, alt[i].phi, alt[i].u, fit0.nll - 0.5 * d.ranking[i].likelihoodRatio});
     }
     std::vector<engine::PairStart> pairStarts = warmPairStarts(s);
-    auto pairs = engine::fitPairs(problem, theta, singles, options.pairLeaders, pairStarts,
-                                  [&](double f) { return s.keepGoing(0.96 + 0.03 * f, "pair fits"); });
-    if (!pairs) return pairs.error();
+    MOZZI_TRY_ASSIGN(const std::vector<engine::PairFit> pairs,
+                     engine::fitPairs(problem, theta, singles, options.pairLeaders, pairStarts,
+                                      [&](double f) { return s.keepGoing(0.96 + 0.03 * f, "pair fits"); }));
     d.pairFitted = true;
-    d.pair.pairsFitted = static_cast<int>(pairs->size());
-    if (!pairs->empty()) return describePair(s, pairs->front(), rankOf);
+    d.pair.pairsFitted = static_cast<int>(pairs.size());
+    if (!pairs.empty()) return describePair(s, pairs.front(), rankOf);
   }
   return {};
 }

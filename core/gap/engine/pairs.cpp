@@ -19,26 +19,23 @@ ComboProblem::ComboProblem(const GapProblem& base, std::vector<int> combo) : bas
   }
 }
 
-bool ComboProblem::residuals(const double* theta, int candidate, const double* phi, double* r) const {
-  if (candidate < 0) return base_.residuals(theta, -1, nullptr, r);
-  return base_.combinedResiduals(theta, combo_, phi, r);
+bool ComboProblem::residuals(const ModelPoint& at, double* r) const {
+  if (at.candidate < 0) return base_.residuals({at.theta, -1, nullptr}, r);
+  return base_.combinedResiduals(at.theta, combo_, at.phi, r);
 }
 
-std::unique_ptr<GapProblem> ComboProblem::simulated(const double* theta, int candidate, const double* phi,
-                                                    std::mt19937_64& rng) const {
-  (void)candidate;
-  (void)phi;
-  return base_.simulated(theta, -1, nullptr, rng);
+std::unique_ptr<GapProblem> ComboProblem::simulated(const ModelPoint& at, std::mt19937_64& rng) const {
+  return base_.simulated({at.theta, -1, nullptr}, rng);
 }
 
-GapMetrics ComboProblem::metrics(const double* theta, int candidate, const double* phi) const {
-  if (candidate < 0) return base_.metrics(theta, -1, nullptr);
-  return base_.combinedMetrics(theta, combo_, phi);
+GapMetrics ComboProblem::metrics(const ModelPoint& at) const {
+  if (at.candidate < 0) return base_.metrics({at.theta, -1, nullptr});
+  return base_.combinedMetrics(at.theta, combo_, at.phi);
 }
 
-std::vector<OverlayCurve> ComboProblem::overlay(const double* theta, int candidate, const double* phi) const {
-  if (candidate < 0) return base_.overlay(theta, -1, nullptr);
-  return base_.combinedOverlay(theta, combo_, phi);
+std::vector<OverlayCurve> ComboProblem::overlay(const ModelPoint& at) const {
+  if (at.candidate < 0) return base_.overlay({at.theta, -1, nullptr});
+  return base_.combinedOverlay(at.theta, combo_, at.phi);
 }
 
 namespace {

@@ -27,13 +27,12 @@ class ComboProblem final : public GapProblem {
   std::vector<Parameter> calibrationParameters() const override { return base_.calibrationParameters(); }
   std::vector<Candidate> candidates() const override { return {combined_}; }
   int residualCount() const override { return base_.residualCount(); }
-  bool residuals(const double* theta, int candidate, const double* phi, double* r) const override;
+  bool residuals(const ModelPoint& at, double* r) const override;
   std::vector<int> folds() const override { return base_.folds(); }
   // Simulation from the baseline only (pairs are not bootstrapped).
-  std::unique_ptr<GapProblem> simulated(const double* theta, int candidate, const double* phi,
-                                        std::mt19937_64& rng) const override;
-  GapMetrics metrics(const double* theta, int candidate, const double* phi) const override;
-  std::vector<OverlayCurve> overlay(const double* theta, int candidate, const double* phi) const override;
+  std::unique_ptr<GapProblem> simulated(const ModelPoint& at, std::mt19937_64& rng) const override;
+  GapMetrics metrics(const ModelPoint& at) const override;
+  std::vector<OverlayCurve> overlay(const ModelPoint& at) const override;
   NoiseModel noiseModel() const override { return base_.noiseModel(); }
 
  private:

@@ -80,7 +80,7 @@ Eigen::VectorXd scaledPoint(const std::vector<Scaled>& theta, const std::vector<
 }
 
 void gapAfter(const Pass& s, RankedEffect& e) {
-  e.gapAfter = s.problem.metrics(e.theta.data(), e.candidateIndex, e.parameters.data());
+  e.gapAfter = s.problem.metrics({e.theta.data(), e.candidateIndex, e.parameters.data()});
   applyHolmFlags(e.gapAfter, s.options.alpha);
   e.shrinkPct = s.d.gapBefore.overall != 0.0 ? 100.0 * (1.0 - e.gapAfter.overall / s.d.gapBefore.overall) : 0.0;
 }
@@ -123,9 +123,8 @@ Result<void> prepare(Pass& s) {
   d.dataKind = problem.dataKind();
   d.calibration = problem.calibrationParameters();
   for (const auto& p : d.calibration) {
-    auto scaled = engine::scaleParameter(p, "calibration");
-    if (!scaled) return scaled.error();
-    s.theta.push_back(*scaled);
+    MOZZI_TRY_ASSIGN(const Scaled scaled, engine::scaleParameter(p, "calibration"));
+    s.theta.push_back(scaled);
   }
   s.candidates = problem.candidates();
   const auto& candidates = s.candidates;
@@ -148,9 +147,8 @@ Result<void> prepare(Pass& s) {
     }
     std::vector<Scaled> phi;
     for (const auto& p : c.parameters) {
-      auto sp = engine::scaleParameter(p, "effect '" + label(c) + "'");
-      if (!sp) return sp.error();
-      phi.push_back(*sp);
+      MOZZI_TRY_ASSIGN(const Scaled sp, engine::scaleParameter(p, "effect '" + label(c) + "'"));
+      phi.push_back(sp);
     }
     selected.emplace_back(static_cast<int>(i), std::move(phi));
   }
@@ -190,7 +188,7 @@ Result<void> calibrate(Pass& s) {
   d.noise = problem.noiseModel();
 
   // Step 2: where (Holm over the rows of each kind).
-  d.gapBefore = problem.metrics(d.calibrated.data(), -1, nullptr);
+  d.gapBefore = problem.metrics({d.calibrated.data(), -1, nullptr});
   applyHolmFlags(d.gapBefore, options.alpha);
   for (const auto& e : d.gapBefore.entries) {
     if (e.flagged) d.where.push_back(e);
@@ -212,9 +210,7 @@ Result<void> screenAndNull(Pass& s) {
   auto keepGoing = [&](double fraction, const std::string& step) { return s.keepGoing(fraction, step); };
   // Step 3: linear screen.
   if (!keepGoing(0.05, "screen")) return s.cancelled();
-  auto screened = engine::screenCandidates(base, u0, s.selected);
-  if (!screened) return screened.error();
-  const engine::Screen& screen = *screened;
+  MOZZI_TRY_ASSIGN(engine::Screen screen, engine::screenCandidates(base, u0, s.selected));
   std::vector<int> identifiable;
   for (std::size_t c = 0; c < screen.candidates.size(); ++c) {
     if (screen.candidates[c].identifiable) identifiable.push_back(static_cast<int>(c));
@@ -230,13 +226,12 @@ Result<void> screenAndNull(Pass& s) {
                       (options.nullMethod == NullMethod::Auto && work > kFullRefitBudget);
   no.mode = linear ? engine::NullMode::Linearised : engine::NullMode::FullRefit;
   no.progress = [&](double f) { return keepGoing(0.1 + 0.6 * f, "bootstrap"); };
-  auto null = engine::calibrateNull(base, u0, screen, identifiable, no);
-  if (!null) return null.error();
-  d.threshold = null->threshold;
+  MOZZI_TRY_ASSIGN(const engine::NullCalibration null, engine::calibrateNull(base, u0, screen, identifiable, no));
+  d.threshold = null.threshold;
   d.thresholdLinearised = linear;
   d.bootstrapSamples = options.bootstrapSamples;
-  if (d.noise.estimated && null->baselineChiSquares.size() >= 2) {
-    const auto& c = null->baselineChiSquares;
+  if (d.noise.estimated && null.baselineChiSquares.size() >= 2) {
+    const auto& c = null.baselineChiSquares;
     double mean = 0, var = 0;
     for (double x : c) mean += x / static_cast<double>(c.size());
     for (double x : c) var += (x - mean) * (x - mean) / static_cast<double>(c.size() - 1);
@@ -245,10 +240,10 @@ Result<void> screenAndNull(Pass& s) {
     d.nullChiSquareSd = std::sqrt(std::max(var, 2.0 * d.dof) + d.noise.chiSquareVariance);
     d.fitPValue = s.fitP(d.chiSquare, 0);
   }
-  s.screen.emplace(std::move(screened).value());
+  s.screen.emplace(std::move(screen));
   s.identifiable = std::move(identifiable);
   s.linear = linear;
-  s.nullFromCache = null->fromCache;
+  s.nullFromCache = null.fromCache;
   return {};
 }
 

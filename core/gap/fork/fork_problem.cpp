@@ -22,8 +22,7 @@ bool positive(double v) {
 Result<std::unique_ptr<ForkLumpedGapProblem>> ForkLumpedGapProblem::create(const ForkLumpedGapInput& in) {
   const char* where = "fork lumped gap problem (§4.2)";
   // forkLumpedModels validates the shared inputs (and model 1 is the baseline).
-  auto models = stiffness::forkLumpedModels(in.fork);
-  if (!models) return models.error();
+  MOZZI_TRY(stiffness::forkLumpedModels(in.fork));
   if (!positive(in.frequencySigmaHz))
     return makeError(ErrorCode::InvalidArgument, "the frequency uncertainty must be positive", where);
   if (!(in.torsionCompliance >= 0.0) || !std::isfinite(in.torsionCompliance))
@@ -62,9 +61,9 @@ std::vector<Candidate> ForkLumpedGapProblem::candidates() const {
   };
 }
 
-std::vector<double> ForkLumpedGapProblem::predict(const double* theta, int candidate, const double* phi) const {
+std::vector<double> ForkLumpedGapProblem::predict(const ModelPoint& at) const {
   const auto& f = in_.fork;
-  const double mass = f.vibratingMass + (theta ? theta[0] - in_.unsprungMass : 0.0);
+  const double mass = f.vibratingMass + (at.theta ? at.theta[0] - in_.unsprungMass : 0.0);
   auto inertia = [&](double arm) {  // wheel + unsprung mass M at the wheel centre, J_wheel about its own diameter
     const double d = arm - f.wheelCentreHeight;
     return f.wheelInertia + mass * d * d;
@@ -73,16 +72,16 @@ std::vector<double> ForkLumpedGapProblem::predict(const double* theta, int candi
   double kModal = f.staticBendStiffness;   // the stiffness the mode deforms
   double kStatic = f.staticBendStiffness;  // the bending stiffness the static test sees at that arm
   double J = inertia(arm);
-  switch (candidate) {
+  switch (at.candidate) {
     case -1: break;
     case kStiffnessLocation:
       arm = f.dynamicAxisArm;
-      kModal = kStatic = phi[0] * f.staticBendStiffness;
+      kModal = kStatic = at.phi[0] * f.staticBendStiffness;
       J = inertia(arm);
       break;
-    case kBendingStiffness: kModal = kStatic = phi[0] * f.staticBendStiffness; break;
-    case kInertia: J += phi[0]; break;
-    case kResidualCompliance: kModal = f.staticBendStiffness / (1.0 - phi[0]); break;
+    case kBendingStiffness: kModal = kStatic = at.phi[0] * f.staticBendStiffness; break;
+    case kInertia: J += at.phi[0]; break;
+    case kResidualCompliance: kModal = f.staticBendStiffness / (1.0 - at.phi[0]); break;
     default: return std::vector<double>(points_.size(), kNaN);
   }
   std::vector<double> out;
@@ -95,8 +94,8 @@ std::unique_ptr<GapProblem> ForkLumpedGapProblem::withPoints(std::vector<Conditi
   return std::unique_ptr<GapProblem>(new ForkLumpedGapProblem(in_, std::move(points)));
 }
 
-GapMetrics ForkLumpedGapProblem::metrics(const double* theta, int candidate, const double* phi) const {
-  auto m = ConditionSeriesProblem::metrics(theta, candidate, phi);
+GapMetrics ForkLumpedGapProblem::metrics(const ModelPoint& at) const {
+  auto m = ConditionSeriesProblem::metrics(at);
   m.entries[0].kind = "mode";  // the lateral mode; the static stiffness stays a "condition"
   return m;
 }
@@ -136,15 +135,15 @@ std::vector<Candidate> StiffnessEstimatesGapProblem::candidates() const {
   return c;
 }
 
-std::vector<double> StiffnessEstimatesGapProblem::predict(const double* theta, int candidate, const double* phi) const {
+std::vector<double> StiffnessEstimatesGapProblem::predict(const ModelPoint& at) const {
   const int n = static_cast<int>(points_.size());
-  std::vector<double> out(points_.size(), theta[0] * reference_);
-  if (candidate >= 0 && candidate < n) {
+  std::vector<double> out(points_.size(), at.theta[0] * reference_);
+  if (at.candidate >= 0 && at.candidate < n) {
     // k_hat = (2 pi f)^2 I_assumed with (2 pi f)^2 = k / I_true: k / s.
-    out[static_cast<std::size_t>(candidate)] /= phi[0];
-  } else if (candidate == n) {
-    for (auto& v : out) v /= 1.0 + phi[0];  // series clamp: 1/k_hat = 1/k + rho/k
-  } else if (candidate != -1) {
+    out[static_cast<std::size_t>(at.candidate)] /= at.phi[0];
+  } else if (at.candidate == n) {
+    for (auto& v : out) v /= 1.0 + at.phi[0];  // series clamp: 1/k_hat = 1/k + rho/k
+  } else if (at.candidate != -1) {
     out.assign(points_.size(), kNaN);
   }
   return out;

@@ -58,19 +58,18 @@ class ForkLumpedGapProblem : public ConditionSeriesProblem {
   std::string dataKind() const override { return "modes"; }
   std::vector<Parameter> calibrationParameters() const override;
   std::vector<Candidate> candidates() const override;
-  GapMetrics metrics(const double* theta, int candidate, const double* phi) const override;
+  GapMetrics metrics(const ModelPoint& at) const override;
 
   // [frequency Hz, (static lateral stiffness N/m)] for the given effect;
-  // theta = nullptr means the nominal unsprung mass.
-  std::vector<double> predict(const double* theta, int candidate, const double* phi) const override;
+  // at.theta = nullptr means the nominal unsprung mass.
+  std::vector<double> predict(const ModelPoint& at) const override;
 
  protected:
   std::unique_ptr<GapProblem> withPoints(std::vector<ConditionPoint> points) const override;
-  std::string residualName() const override { return "relative_residual"; }
 
  private:
   ForkLumpedGapProblem(ForkLumpedGapInput in, std::vector<ConditionPoint> points)
-      : ConditionSeriesProblem(std::move(points)), in_(std::move(in)) {}
+      : ConditionSeriesProblem(std::move(points), "relative_residual"), in_(std::move(in)) {}
   ForkLumpedGapInput in_;
 };
 
@@ -89,16 +88,15 @@ class StiffnessEstimatesGapProblem : public ConditionSeriesProblem {
   std::vector<Parameter> calibrationParameters() const override;
   std::vector<Candidate> candidates() const override;
 
-  std::vector<double> predict(const double* theta, int candidate, const double* phi) const override;
+  std::vector<double> predict(const ModelPoint& at) const override;
   double reference() const { return reference_; }
 
  protected:
   std::unique_ptr<GapProblem> withPoints(std::vector<ConditionPoint> points) const override;
-  std::string residualName() const override { return "relative_residual"; }
 
  private:
   StiffnessEstimatesGapProblem(std::vector<ConditionPoint> points, std::string unit, double reference)
-      : ConditionSeriesProblem(std::move(points)), unit_(std::move(unit)), reference_(reference) {}
+      : ConditionSeriesProblem(std::move(points), "relative_residual"), unit_(std::move(unit)), reference_(reference) {}
   std::string unit_;
   double reference_ = 1.0;  // theta = 1 is this stiffness (the first estimate)
 };

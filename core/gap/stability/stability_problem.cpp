@@ -38,7 +38,9 @@ std::vector<ConditionPoint> speedPoints(const std::vector<ModeFrequency>& modes,
 }  // namespace
 
 StabilityGapProblem::StabilityGapProblem(StabilityGapModel model, std::vector<ModeFrequency> modes)
-    : ConditionSeriesProblem(speedPoints(modes, model.speedFolds)), model_(std::move(model)), modes_(std::move(modes)) {
+    : ConditionSeriesProblem(speedPoints(modes, model.speedFolds), "frequency_residual"),
+      model_(std::move(model)),
+      modes_(std::move(modes)) {
   std::set<double> speeds;
   for (const auto& m : modes_) speeds.insert(m.speed);
   speeds_.assign(speeds.begin(), speeds.end());
@@ -61,10 +63,10 @@ Result<std::unique_ptr<StabilityGapProblem>> StabilityGapProblem::create(Stabili
   }
   auto problem = std::unique_ptr<StabilityGapProblem>(new StabilityGapProblem(std::move(model), std::move(measured)));
   const double theta = 1.0;
-  const auto pred = problem->predict(&theta, -1, nullptr);
+  const auto pred = problem->predict({&theta, -1, nullptr});
   for (std::size_t j = 0; j < pred.size(); ++j)
     if (!std::isfinite(pred[j])) {
-      auto sys = problem->system(&theta, -1, nullptr);
+      auto sys = problem->system({&theta, -1, nullptr});
       return makeError(ErrorCode::InvalidArgument,
                        sys ? "the nominal model has no oscillating mode of that name at that speed"
                            : "the nominal model cannot be built: " + sys.error().describe(),
@@ -93,17 +95,17 @@ std::vector<Candidate> StabilityGapProblem::candidates() const {
   return out;
 }
 
-Result<stability::StabilitySystem> StabilityGapProblem::system(const double* theta, int candidate,
-                                                               const double* phi) const {
+Result<stability::StabilitySystem> StabilityGapProblem::system(const ModelPoint& at) const {
   const auto names = effectNames();
-  const std::string effect =
-      candidate >= 0 && candidate < static_cast<int>(names.size()) ? names[static_cast<std::size_t>(candidate)] : "";
-  if (candidate >= static_cast<int>(names.size()))
+  const std::string effect = at.candidate >= 0 && at.candidate < static_cast<int>(names.size())
+                                 ? names[static_cast<std::size_t>(at.candidate)]
+                                 : "";
+  if (at.candidate >= static_cast<int>(names.size()))
     return makeError(ErrorCode::InvalidArgument, "no such candidate", "stability gap problem");
-  const double ratio = effect.empty() ? 0.0 : phi[0];
+  const double ratio = effect.empty() ? 0.0 : at.phi[0];
   if (model_.vehicle == StabilityVehicle::Motorcycle) {
     auto p = model_.motorcycle;
-    p.t *= theta[0];
+    p.t *= at.theta[0];
     std::optional<stability::LumpedForkModel> fork;
     if (effect == "fork_bending" && ratio > 0.0) {
       fork = model_.motorcycleFork;
@@ -111,12 +113,11 @@ Result<stability::StabilitySystem> StabilityGapProblem::system(const double* the
       fork->damping /= std::sqrt(ratio);  // c = 2 zeta sqrt(k J): same zeta
     }
     if (effect == "tyre_relaxation") p.sigma *= ratio;
-    auto m = stability::MotorcycleModel::build(p, fork);
-    if (!m) return m.error();
-    return m->system();
+    MOZZI_TRY_ASSIGN(const stability::MotorcycleModel m, stability::MotorcycleModel::build(p, fork));
+    return m.system();
   }
   auto p = model_.bicycle;
-  p.c *= theta[0];
+  p.c *= at.theta[0];
   Result<stability::BicycleModel> m = makeError(ErrorCode::InvalidArgument, "unset");
   if (effect == "fork_bending" && ratio > 0.0) {
     auto f = model_.bicycleBending;
@@ -135,9 +136,9 @@ Result<stability::StabilitySystem> StabilityGapProblem::system(const double* the
   return stability::bicycleSystem(*m);
 }
 
-std::vector<double> StabilityGapProblem::predict(const double* theta, int candidate, const double* phi) const {
+std::vector<double> StabilityGapProblem::predict(const ModelPoint& at) const {
   std::vector<double> out(modes_.size(), kNaN);
-  auto sys = system(theta, candidate, phi);
+  auto sys = system(at);
   if (!sys) return out;
   auto sweep = stability::sweepSpeeds(*sys, speeds_, model_.trackingStep);
   if (!sweep) return out;
@@ -159,16 +160,15 @@ std::unique_ptr<GapProblem> StabilityGapProblem::withPoints(std::vector<Conditio
   return std::unique_ptr<GapProblem>(new StabilityGapProblem(model_, std::move(modes)));
 }
 
-std::vector<std::vector<std::pair<std::string, double>>> StabilityGapProblem::details(const double*, int,
-                                                                                      const double*) const {
+std::vector<std::vector<std::pair<std::string, double>>> StabilityGapProblem::details(const ModelPoint&) const {
   std::vector<std::vector<std::pair<std::string, double>>> extra;
   for (const auto& m : modes_) extra.push_back({{"speed_m_s", m.speed}});
   return extra;
 }
 
-GapMetrics StabilityGapProblem::metrics(const double* theta, int candidate, const double* phi) const {
-  GapMetrics m = ConditionSeriesProblem::metrics(theta, candidate, phi);
-  auto sys = system(theta, candidate, phi);
+GapMetrics StabilityGapProblem::metrics(const ModelPoint& at) const {
+  GapMetrics m = ConditionSeriesProblem::metrics(at);
+  auto sys = system(at);
   if (!sys) return m;
   auto grid = stability::speedGrid(0.5 * speeds_.front(), 1.5 * speeds_.back(), model_.trackingStep);
   if (!grid) return m;
@@ -189,8 +189,8 @@ GapMetrics StabilityGapProblem::metrics(const double* theta, int candidate, cons
   return m;
 }
 
-std::vector<OverlayCurve> StabilityGapProblem::overlay(const double* theta, int candidate, const double* phi) const {
-  const auto pred = predict(theta, candidate, phi);
+std::vector<OverlayCurve> StabilityGapProblem::overlay(const ModelPoint& at) const {
+  const auto pred = predict(at);
   std::vector<OverlayCurve> curves;
   for (std::size_t j = 0; j < modes_.size(); ++j) {
     auto it =
@@ -227,9 +227,7 @@ Result<void> readOptionalObject(const Json& j, const char* key, const std::strin
   const std::string where = source + ": " + key;
   if (!o.is_object()) return makeError(ErrorCode::ParseError, "must be an object", where);
   for (const auto& [name, value] : fields) {
-    auto v = optionalNumber(o, name, *value, where);
-    if (!v) return v.error();
-    *value = *v;
+    MOZZI_TRY_ASSIGN(*value, optionalNumber(o, name, *value, where));
   }
   return {};
 }
@@ -256,9 +254,7 @@ Result<StabilityGapModel> parseStabilityGapModel(const std::string& jsonText, co
     m.vehicle = StabilityVehicle::Motorcycle;
     if (paramPath.empty())
       return makeError(ErrorCode::ParseError, "a motorcycle needs \"parameters\" (Sharp 1971 CSV)", source);
-    auto p = stability::loadSharpParameters(paramPath);
-    if (!p) return p.error();
-    m.motorcycle = *p;
+    MOZZI_TRY_ASSIGN(m.motorcycle, stability::loadSharpParameters(paramPath));
     int forkModel = 1;
     if (j.contains("fork_model")) {
       if (!j["fork_model"].is_number_integer())
@@ -274,21 +270,17 @@ Result<StabilityGapModel> parseStabilityGapModel(const std::string& jsonText, co
     if (paramPath.empty()) {
       m.bicycle = stability::meijaard2007Parameters();
     } else {
-      auto p = stability::loadBenchmarkParameters(paramPath);
-      if (!p) return p.error();
-      m.bicycle = *p;
+      MOZZI_TRY_ASSIGN(m.bicycle, stability::loadBenchmarkParameters(paramPath));
     }
     m.bicycleBending = stability::thesisSteelForkBending();
     m.bicycleTorsion = stability::thesisSteelForkTorsion();
-    auto bending = readOptionalObject(j, "fork_bending", source,
-                                      {{"stiffness_n_m_per_rad", &m.bicycleBending.stiffness},
-                                       {"damping_n_m_s_per_rad", &m.bicycleBending.damping},
-                                       {"h_w_m", &m.bicycleBending.hW}});
-    if (!bending) return bending.error();
-    auto torsion = readOptionalObject(
-        j, "fork_torsion", source,
-        {{"stiffness_n_m_per_rad", &m.bicycleTorsion.stiffness}, {"damping_n_m_s_per_rad", &m.bicycleTorsion.damping}});
-    if (!torsion) return torsion.error();
+    MOZZI_TRY(readOptionalObject(j, "fork_bending", source,
+                                 {{"stiffness_n_m_per_rad", &m.bicycleBending.stiffness},
+                                  {"damping_n_m_s_per_rad", &m.bicycleBending.damping},
+                                  {"h_w_m", &m.bicycleBending.hW}}));
+    MOZZI_TRY(readOptionalObject(j, "fork_torsion", source,
+                                 {{"stiffness_n_m_per_rad", &m.bicycleTorsion.stiffness},
+                                  {"damping_n_m_s_per_rad", &m.bicycleTorsion.damping}}));
     if (!(m.bicycleBending.stiffness > 0.0) || !(m.bicycleTorsion.stiffness > 0.0))
       return makeError(ErrorCode::ParseError, "reference fork stiffnesses must be positive", source);
     m.label = "benchmark bicycle (Meijaard et al. 2007), fork joints of thesis appendix 3";
@@ -296,9 +288,7 @@ Result<StabilityGapModel> parseStabilityGapModel(const std::string& jsonText, co
     return makeError(ErrorCode::ParseError, "\"vehicle\" must be \"motorcycle\" or \"bicycle\", not '" + vehicle + "'",
                      source);
   }
-  auto sigma = optionalNumber(j, "trail_rel_sigma", m.trailRelSigma, source);
-  if (!sigma) return sigma.error();
-  m.trailRelSigma = *sigma;
+  MOZZI_TRY_ASSIGN(m.trailRelSigma, optionalNumber(j, "trail_rel_sigma", m.trailRelSigma, source));
   if (j.contains("speed_folds")) {
     if (!j["speed_folds"].is_number_integer() || j["speed_folds"].get<int>() < 1 || j["speed_folds"].get<int>() > 50)
       return makeError(ErrorCode::ParseError, "\"speed_folds\" must be an integer from 1 to 50", source);
@@ -346,14 +336,15 @@ Result<std::vector<ModeFrequency>> parseModeFrequencyCsv(const std::string& csvT
     }
     numeric << line << "\n";
   }
-  auto table = tire::parseNumericTable(numeric.str(), source, {"speed_m_s", "mode", "frequency_hz", "uncertainty_hz"});
-  if (!table) return table.error();
-  const int cs = table->column("speed_m_s"), cm = table->column("mode"), cf = table->column("frequency_hz"),
-            cu = table->column("uncertainty_hz");
+  MOZZI_TRY_ASSIGN(
+      const tire::NumericTable table,
+      tire::parseNumericTable(numeric.str(), source, {"speed_m_s", "mode", "frequency_hz", "uncertainty_hz"}));
+  const int cs = table.column("speed_m_s"), cm = table.column("mode"), cf = table.column("frequency_hz"),
+            cu = table.column("uncertainty_hz");
   std::vector<ModeFrequency> out;
-  for (std::size_t i = 0; i < table->rows.size(); ++i) {
-    const auto& r = table->rows[i];
-    const std::string where = source + ":" + std::to_string(table->lines[i]);
+  for (std::size_t i = 0; i < table.rows.size(); ++i) {
+    const auto& r = table.rows[i];
+    const std::string where = source + ":" + std::to_string(table.lines[i]);
     ModeFrequency m{names[static_cast<std::size_t>(r[cm])], r[cs], r[cf], r[cu]};
     for (const auto& [v, name] :
          {std::pair{m.speed, "speed_m_s"}, {m.frequencyHz, "frequency_hz"}, {m.sigmaHz, "uncertainty_hz"}})
@@ -369,24 +360,12 @@ Result<std::vector<ModeFrequency>> parseModeFrequencyCsv(const std::string& csvT
 Result<std::unique_ptr<GapProblem>> loadStabilityGapProblem(const std::string& modelPath,
                                                             const std::string& measuredPath,
                                                             const StabilityLoadOptions& options) {
-  auto text = readTextFile(modelPath);
-  if (!text) return text.error();
   const auto slash = modelPath.find_last_of('/');
   const std::string dir = slash == std::string::npos ? std::string(".") : modelPath.substr(0, slash);
-  auto model = parseStabilityGapModel(*text, modelPath, dir);
-  if (!model) return model.error();
-  auto csv = readTextFile(measuredPath);
-  if (!csv) return csv.error();
-  auto modes = parseModeFrequencyCsv(*csv, measuredPath);
-  if (!modes) return modes.error();
-  std::vector<ModeFrequency> kept;
-  for (const auto& m : *modes)
-    if (m.speed >= options.minSpeed && m.speed <= options.maxSpeed) kept.push_back(m);
-  if (kept.empty())
-    return makeError(ErrorCode::InvalidArgument, "no measured speed inside the selected range", measuredPath);
-  auto problem = StabilityGapProblem::create(std::move(*model), std::move(kept));
-  if (!problem) return problem.error();
-  return std::unique_ptr<GapProblem>(std::move(*problem));
+  return loadConditionSeriesProblem<StabilityGapProblem, ModeFrequency>(
+      modelPath, [&](const std::string& text) { return parseStabilityGapModel(text, modelPath, dir); }, measuredPath,
+      parseModeFrequencyCsv, [](const ModeFrequency& m) { return m.speed; }, options.minSpeed, options.maxSpeed,
+      "speed");
 }
 
 }  // namespace mozzi::core::gap

@@ -66,27 +66,25 @@ class StabilityGapProblem : public ConditionSeriesProblem {
   std::string dataKind() const override { return "stability"; }
   std::vector<Parameter> calibrationParameters() const override;
   std::vector<Candidate> candidates() const override;
-  std::vector<OverlayCurve> overlay(const double* theta, int candidate, const double* phi) const override;
+  std::vector<OverlayCurve> overlay(const ModelPoint& at) const override;
   // The condition rows, plus the downstream figures a user reads from the
   // model (GAP.md step 9): one "prediction" row per measured mode with the
   // first speed in [0.5 min, 1.5 max] of the measured speeds where its real part
   // crosses zero (value in m/s, detail "found" 0 when none; z = 0, not tested).
-  GapMetrics metrics(const double* theta, int candidate, const double* phi) const override;
+  GapMetrics metrics(const ModelPoint& at) const override;
 
   // Predicted frequency [Hz] of every measured (mode, speed); NaN where the
   // model cannot be built or the mode is not oscillating there.
-  std::vector<double> predict(const double* theta, int candidate, const double* phi) const override;
+  std::vector<double> predict(const ModelPoint& at) const override;
   const std::vector<ModeFrequency>& measured() const { return modes_; }
 
  protected:
   std::unique_ptr<GapProblem> withPoints(std::vector<ConditionPoint> points) const override;
-  std::string residualName() const override { return "frequency_residual"; }
-  std::vector<std::vector<std::pair<std::string, double>>> details(const double* theta, int candidate,
-                                                                   const double* phi) const override;
+  std::vector<std::vector<std::pair<std::string, double>>> details(const ModelPoint& at) const override;
 
  private:
   StabilityGapProblem(StabilityGapModel model, std::vector<ModeFrequency> modes);
-  Result<stability::StabilitySystem> system(const double* theta, int candidate, const double* phi) const;
+  Result<stability::StabilitySystem> system(const ModelPoint& at) const;
   std::vector<std::string> effectNames() const;
 
   StabilityGapModel model_;

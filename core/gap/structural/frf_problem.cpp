@@ -149,8 +149,8 @@ class FrfProblem final : public GapProblem {
   }
   NoiseModel noiseModel() const override { return noise_.report; }
 
-  bool residuals(const double* theta, int candidate, const double* phi, double* r) const override {
-    return residualsFor(theta, comboOf(candidate), phi, r);
+  bool residuals(const ModelPoint& at, double* r) const override {
+    return residualsFor(at.theta, comboOf(at.candidate), at.phi, r);
   }
 
   bool combinable(const std::vector<int>& combo) const override {
@@ -199,11 +199,10 @@ class FrfProblem final : public GapProblem {
   // noise model estimated from the data is estimated again from the simulated
   // data, one from the coherence re-derived from the simulated reading (the
   // bootstrap then carries their own error); a replicate or stated one is kept.
-  std::unique_ptr<GapProblem> simulated(const double* theta, int candidate, const double* phi,
-                                        std::mt19937_64& rng) const override {
+  std::unique_ptr<GapProblem> simulated(const ModelPoint& at, std::mt19937_64& rng) const override {
     std::vector<ComplexMatrix> h;
     FrfMatrix sim = data_;
-    if (!predict(theta, comboOf(candidate), phi, h)) h = data_.h;
+    if (!predict(at.theta, comboOf(at.candidate), at.phi, h)) h = data_.h;
     std::normal_distribution<double> nd(0.0, 1.0);
     const Eigen::Index nf = data_.lineCount(), no = data_.responseCount();
     const double tiny = tinySigma();
@@ -259,11 +258,11 @@ class FrfProblem final : public GapProblem {
     return std::make_unique<FrfProblem>(core_, data_, resp_, refs_, std::move(noise), options_);
   }
 
-  GapMetrics metrics(const double* theta, int candidate, const double* phi) const override {
-    return metricsFor(theta, comboOf(candidate), phi);
+  GapMetrics metrics(const ModelPoint& at) const override {
+    return metricsFor(at.theta, comboOf(at.candidate), at.phi);
   }
-  std::vector<OverlayCurve> overlay(const double* theta, int candidate, const double* phi) const override {
-    return overlayFor(theta, comboOf(candidate), phi);
+  std::vector<OverlayCurve> overlay(const ModelPoint& at) const override {
+    return overlayFor(at.theta, comboOf(at.candidate), at.phi);
   }
 
   // Predicted FRFs in the measured layout and type: h[i] is nf x no.
@@ -682,20 +681,18 @@ Result<FrfNoise> initialNoise(const StructuralModel& model, const FrfMatrix& dat
 
 Result<std::unique_ptr<GapProblem>> makeFrfProblem(const StructuralModel& model, const FrfMatrix& measured,
                                                    const StructuralOptions& options) {
-  if (auto v = measured.validate(); !v) return v.error();
+  MOZZI_TRY(measured.validate());
   if (measured.lineCount() == 0 || measured.responseCount() == 0 || measured.referenceCount() == 0) {
     return makeError(ErrorCode::InvalidArgument, "the measured FRF set is empty", "measured FRFs");
   }
   std::vector<ChannelMap> resp, refs;
   for (const auto& d : measured.responses) {
-    auto c = mapDof(model, d, "response");
-    if (!c) return c.error();
-    resp.push_back(*c);
+    MOZZI_TRY_ASSIGN(const ChannelMap c, mapDof(model, d, "response"));
+    resp.push_back(c);
   }
   for (const auto& d : measured.references) {
-    auto c = mapDof(model, d, "reference");
-    if (!c) return c.error();
-    refs.push_back(*c);
+    MOZZI_TRY_ASSIGN(const ChannelMap c, mapDof(model, d, "reference"));
+    refs.push_back(c);
   }
   if (options.noise == NoiseSource::Stated && !(options.relativeFloor > 0) && !(options.additiveFloor > 0)) {
     return makeError(ErrorCode::InvalidArgument, "a stated noise needs a positive relative or additive sigma",
@@ -716,9 +713,7 @@ Result<std::unique_ptr<GapProblem>> makeFrfProblem(const StructuralModel& model,
   }
   FrfMatrix data = std::move(banded).value();
   const Eigen::Index nf = data.lineCount();
-  auto initial = initialNoise(model, data, resp, refs, options, bandLow);
-  if (!initial) return initial.error();
-  FrfNoise noise = std::move(initial).value();
+  MOZZI_TRY_ASSIGN(FrfNoise noise, initialNoise(model, data, resp, refs, options, bandLow));
   // Estimated: left empty here, the problem estimates it from its own lines.
   auto core = std::make_shared<StructuralCore>(model);
   std::vector<int> measuredDofs, responseDofs;
@@ -729,7 +724,7 @@ Result<std::unique_ptr<GapProblem>> makeFrfProblem(const StructuralModel& model,
   for (const auto& c : refs) measuredDofs.push_back(c.dof);
   ModalSystem nominal;
   const auto theta = nominalTheta(model);
-  if (!core->solve(theta.data(), -1, nullptr, nominal)) {
+  if (!core->solve({theta.data(), -1, nullptr}, nominal)) {
     return makeError(ErrorCode::NumericalFailure, "the model cannot be solved at its nominal parameters", model.name);
   }
   std::vector<int> referenceDofs;

@@ -44,9 +44,8 @@ Result<Matrix> squareMatrix(const json& root, const char* key, int n, const std:
       return parseError(where, rowName, "expected " + std::to_string(n) + " numbers");
     }
     for (int j = 0; j < n; ++j) {
-      auto x = finiteNumber(row[static_cast<std::size_t>(j)], where, rowName + "[" + std::to_string(j) + "]");
-      if (!x) return x.error();
-      out(i, j) = *x;
+      MOZZI_TRY_ASSIGN(out(i, j),
+                       finiteNumber(row[static_cast<std::size_t>(j)], where, rowName + "[" + std::to_string(j) + "]"));
     }
   }
   return out;
@@ -111,77 +110,69 @@ Result<std::string> elementName(const json& item, const std::string& where, cons
   return name;
 }
 
-Result<void> parseElements(const json& root, StructuralModel& model, const std::string& where) {
-  std::set<std::string> names;
-  if (root.contains("springs")) {
-    const json& list = root["springs"];
-    if (!list.is_array()) return parseError(where, "springs", "expected an array");
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      const std::string field = "springs[" + std::to_string(i) + "]";
-      const json& s = list[i];
-      if (!s.is_object()) return parseError(where, field, "expected an object");
-      Spring spring;
-      auto name = elementName(s, where, field, names);
-      if (!name) return name.error();
-      spring.name = *name;
-      if (!s.contains("a")) return parseError(where, field + ".a", "missing");
-      auto a = dofIndex(s["a"], model, where, field + ".a");
-      if (!a) return a.error();
-      spring.a = *a;
-      if (!s.contains("b")) return parseError(where, field + ".b", "missing (a DOF label or \"ground\")");
-      if (s["b"].is_string() && s["b"].get<std::string>() == "ground") {
-        spring.b = -1;
-      } else {
-        auto b = dofIndex(s["b"], model, where, field + ".b");
-        if (!b) return b.error();
-        if (*b == spring.a) return parseError(where, field + ".b", "spring joins a DOF to itself");
-        spring.b = *b;
-      }
-      if (!s.contains("stiffness")) return parseError(where, field + ".stiffness", "missing");
-      auto k = finiteNumber(s["stiffness"], where, field + ".stiffness");
-      if (!k) return k.error();
-      if (!(*k > 0)) return parseError(where, field + ".stiffness", "must be positive");
-      spring.stiffness = *k;
-      model.springs.push_back(spring);
-    }
-  }
-  if (root.contains("masses")) {
-    const json& list = root["masses"];
-    if (!list.is_array()) return parseError(where, "masses", "expected an array");
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      const std::string field = "masses[" + std::to_string(i) + "]";
-      const json& s = list[i];
-      if (!s.is_object()) return parseError(where, field, "expected an object");
-      LumpedMass mass;
-      auto name = elementName(s, where, field, names);
-      if (!name) return name.error();
-      mass.name = *name;
-      if (!s.contains("dof")) return parseError(where, field + ".dof", "missing");
-      auto d = dofIndex(s["dof"], model, where, field + ".dof");
-      if (!d) return d.error();
-      mass.dof = *d;
-      if (!s.contains("mass")) return parseError(where, field + ".mass", "missing");
-      auto m = finiteNumber(s["mass"], where, field + ".mass");
-      if (!m) return m.error();
-      if (!(*m > 0)) return parseError(where, field + ".mass", "must be positive");
-      mass.mass = *m;
-      model.masses.push_back(mass);
-    }
+// A required member of the element at `field`: the index of its DOF label.
+Result<int> requiredDof(const json& item, const char* key, const StructuralModel& model, const std::string& where,
+                        const std::string& field) {
+  if (!item.contains(key)) return parseError(where, field + "." + key, "missing");
+  return dofIndex(item[key], model, where, field + "." + key);
+}
+
+// A required member of the element at `field`: a finite positive number.
+Result<double> requiredPositive(const json& item, const char* key, const std::string& where, const std::string& field) {
+  const std::string member = field + "." + key;
+  if (!item.contains(key)) return parseError(where, member, "missing");
+  MOZZI_TRY_ASSIGN(const double x, finiteNumber(item[key], where, member));
+  if (!(x > 0)) return parseError(where, member, "must be positive");
+  return x;
+}
+
+// parseObject(item, field) for every object of the optional array root[key]
+// ("springs", "masses", "parameters"), field = "key[i]"; the first error stops.
+template <class ParseObject>
+Result<void> forEachObject(const json& root, const char* key, const std::string& where, ParseObject parseObject) {
+  if (!root.contains(key)) return {};
+  const json& list = root[key];
+  if (!list.is_array()) return parseError(where, key, "expected an array");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string field = std::string(key) + "[" + std::to_string(i) + "]";
+    if (!list[i].is_object()) return parseError(where, field, "expected an object");
+    MOZZI_TRY(parseObject(list[i], field));
   }
   return {};
 }
 
+Result<void> parseElements(const json& root, StructuralModel& model, const std::string& where) {
+  std::set<std::string> names;
+  MOZZI_TRY(forEachObject(root, "springs", where, [&](const json& s, const std::string& field) -> Result<void> {
+    Spring spring;
+    MOZZI_TRY_ASSIGN(spring.name, elementName(s, where, field, names));
+    MOZZI_TRY_ASSIGN(spring.a, requiredDof(s, "a", model, where, field));
+    if (!s.contains("b")) return parseError(where, field + ".b", "missing (a DOF label or \"ground\")");
+    if (s["b"].is_string() && s["b"].get<std::string>() == "ground") {
+      spring.b = -1;
+    } else {
+      MOZZI_TRY_ASSIGN(spring.b, dofIndex(s["b"], model, where, field + ".b"));
+      if (spring.b == spring.a) return parseError(where, field + ".b", "spring joins a DOF to itself");
+    }
+    MOZZI_TRY_ASSIGN(spring.stiffness, requiredPositive(s, "stiffness", where, field));
+    model.springs.push_back(spring);
+    return {};
+  }));
+  return forEachObject(root, "masses", where, [&](const json& s, const std::string& field) -> Result<void> {
+    LumpedMass mass;
+    MOZZI_TRY_ASSIGN(mass.name, elementName(s, where, field, names));
+    MOZZI_TRY_ASSIGN(mass.dof, requiredDof(s, "dof", model, where, field));
+    MOZZI_TRY_ASSIGN(mass.mass, requiredPositive(s, "mass", where, field));
+    model.masses.push_back(mass);
+    return {};
+  });
+}
+
 Result<void> parseParameters(const json& root, StructuralModel& model, const std::string& where) {
-  if (!root.contains("parameters")) return {};
-  const json& list = root["parameters"];
-  if (!list.is_array()) return parseError(where, "parameters", "expected an array");
   std::set<std::string> elements, names;
   for (const auto& s : model.springs) elements.insert(s.name);
   for (const auto& m : model.masses) elements.insert(m.name);
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    const std::string field = "parameters[" + std::to_string(i) + "]";
-    const json& p = list[i];
-    if (!p.is_object()) return parseError(where, field, "expected an object");
+  return forEachObject(root, "parameters", where, [&](const json& p, const std::string& field) -> Result<void> {
     ModelParameter param;
     if (!p.contains("name") || !p["name"].is_string() || p["name"].get<std::string>().empty()) {
       return parseError(where, field + ".name", "expected a non-empty string");
@@ -207,26 +198,24 @@ Result<void> parseParameters(const json& root, StructuralModel& model, const std
         out = fallback;
         return {};
       }
-      auto x = finiteNumber(p[key], where, field + "." + key);
-      if (!x) return x.error();
-      out = *x;
+      MOZZI_TRY_ASSIGN(out, finiteNumber(p[key], where, field + "." + key));
       return {};
     };
-    if (auto r = number("nominal", 1.0, param.nominal); !r) return r.error();
+    MOZZI_TRY(number("nominal", 1.0, param.nominal));
     if (!p.contains("lower") || !p.contains("upper")) {
       return parseError(where, field, "needs bounds \"lower\" and \"upper\" (scale factors)");
     }
-    if (auto r = number("lower", 0.0, param.lower); !r) return r.error();
-    if (auto r = number("upper", 0.0, param.upper); !r) return r.error();
-    if (auto r = number("prior_sigma", 0.0, param.priorSigma); !r) return r.error();
+    MOZZI_TRY(number("lower", 0.0, param.lower));
+    MOZZI_TRY(number("upper", 0.0, param.upper));
+    MOZZI_TRY(number("prior_sigma", 0.0, param.priorSigma));
     if (param.lower < 0) return parseError(where, field + ".lower", "a scale factor cannot be negative");
     if (!(param.lower <= param.nominal && param.nominal <= param.upper && param.lower < param.upper)) {
       return parseError(where, field, "bounds must satisfy lower <= nominal <= upper, lower < upper");
     }
     if (param.priorSigma < 0) return parseError(where, field + ".prior_sigma", "must not be negative");
     model.parameters.push_back(param);
-  }
-  return {};
+    return {};
+  });
 }
 
 }  // namespace
@@ -284,21 +273,15 @@ Result<StructuralModel> parseModelJson(std::string_view text, const std::string&
   for (const char* key : {"M", "K"}) {
     if (!root.contains(key)) return parseError(where, key, "missing");
   }
-  auto m = squareMatrix(root, "M", n, where);
-  if (!m) return m.error();
-  auto k = squareMatrix(root, "K", n, where);
-  if (!k) return k.error();
-  if (auto r = checkSymmetricDefinite(*m, "M", true, where); !r) return r.error();
-  if (auto r = checkSymmetricDefinite(*k, "K", false, where); !r) return r.error();
-  model.m = *m;
-  model.k = *k;
+  MOZZI_TRY_ASSIGN(model.m, squareMatrix(root, "M", n, where));
+  MOZZI_TRY_ASSIGN(model.k, squareMatrix(root, "K", n, where));
+  MOZZI_TRY(checkSymmetricDefinite(model.m, "M", true, where));
+  MOZZI_TRY(checkSymmetricDefinite(model.k, "K", false, where));
   const bool hasC = root.contains("C"), hasModal = root.contains("modal_damping");
   if (hasC == hasModal) return parseError(where, "C", "give exactly one of \"C\" and \"modal_damping\"");
   if (hasC) {
-    auto c = squareMatrix(root, "C", n, where);
-    if (!c) return c.error();
-    if (auto r = checkSymmetricDefinite(*c, "C", false, where); !r) return r.error();
-    model.c = *c;
+    MOZZI_TRY_ASSIGN(model.c, squareMatrix(root, "C", n, where));
+    MOZZI_TRY(checkSymmetricDefinite(model.c, "C", false, where));
   } else {
     const json& z = root["modal_damping"];
     if (!z.is_array() || static_cast<int>(z.size()) != n) {
@@ -307,15 +290,14 @@ Result<StructuralModel> parseModelJson(std::string_view text, const std::string&
     model.modalDamping.resize(n);
     for (int i = 0; i < n; ++i) {
       const std::string field = "modal_damping[" + std::to_string(i) + "]";
-      auto x = finiteNumber(z[static_cast<std::size_t>(i)], where, field);
-      if (!x) return x.error();
-      if (!(*x >= 0 && *x < 1)) return parseError(where, field, "viscous ratio must be in [0, 1)");
-      model.modalDamping[i] = *x;
+      MOZZI_TRY_ASSIGN(const double x, finiteNumber(z[static_cast<std::size_t>(i)], where, field));
+      if (!(x >= 0 && x < 1)) return parseError(where, field, "viscous ratio must be in [0, 1)");
+      model.modalDamping[i] = x;
     }
   }
   model.t = Matrix::Identity(n, n);
-  if (auto r = parseElements(root, model, where); !r) return r.error();
-  if (auto r = parseParameters(root, model, where); !r) return r.error();
+  MOZZI_TRY(parseElements(root, model, where));
+  MOZZI_TRY(parseParameters(root, model, where));
   return model;
 }
 

@@ -71,9 +71,9 @@ class ModesProblem final : public GapProblem {
     Matrix shapes;  // channels x model modes
   };
 
-  bool predict(const double* theta, int candidate, const double* phi, Predicted& p) const {
+  bool predict(const ModelPoint& at, Predicted& p) const {
     ModalSystem sys;
-    if (!core_->solve(theta, candidate, phi, sys)) return false;
+    if (!core_->solve(at, sys)) return false;
     const Eigen::Index nq = sys.w2.size();
     p.f.resize(static_cast<std::size_t>(nq));
     p.zeta.resize(static_cast<std::size_t>(nq));
@@ -110,9 +110,9 @@ class ModesProblem final : public GapProblem {
     return mm > 0 ? Vector(model * (model.dot(meas) / mm)) : model;
   }
 
-  bool residuals(const double* theta, int candidate, const double* phi, double* r) const override {
+  bool residuals(const ModelPoint& at, double* r) const override {
     Predicted p;
-    if (!predict(theta, candidate, phi, p)) return false;
+    if (!predict(at, p)) return false;
     std::size_t k = 0;
     for (int m : paired_) {
       const int j = pairs_[static_cast<std::size_t>(m)];
@@ -138,12 +138,11 @@ class ModesProblem final : public GapProblem {
     return f;
   }
 
-  std::unique_ptr<GapProblem> simulated(const double* theta, int candidate, const double* phi,
-                                        std::mt19937_64& rng) const override {
+  std::unique_ptr<GapProblem> simulated(const ModelPoint& at, std::mt19937_64& rng) const override {
     Predicted p;
     ModeData sim = data_;
     std::normal_distribution<double> nd(0.0, 1.0);
-    if (predict(theta, candidate, phi, p)) {
+    if (predict(at, p)) {
       for (int m : paired_) {
         const int j = pairs_[static_cast<std::size_t>(m)];
         sim.f[j] = p.f[static_cast<std::size_t>(m)] + sigmaF(j) * nd(rng);
@@ -156,16 +155,16 @@ class ModesProblem final : public GapProblem {
     return std::make_unique<ModesProblem>(core_, std::move(sim), ch_, pairs_, options_);
   }
 
-  GapMetrics metrics(const double* theta, int candidate, const double* phi) const override {
+  GapMetrics metrics(const ModelPoint& at) const override {
     GapMetrics out;
     out.residualName = "mode_residual";
     Predicted p;
-    if (!predict(theta, candidate, phi, p)) {
+    if (!predict(at, p)) {
       out.overall = std::numeric_limits<double>::quiet_NaN();
       return out;
     }
     std::vector<double> r(static_cast<std::size_t>(residualCount()));
-    if (!residuals(theta, candidate, phi, r.data())) {
+    if (!residuals(at, r.data())) {
       out.overall = std::numeric_limits<double>::quiet_NaN();
       return out;
     }
@@ -297,7 +296,7 @@ Result<std::unique_ptr<GapProblem>> makeModesProblem(const StructuralModel& mode
   auto core = std::make_shared<StructuralCore>(model);
   const auto theta = nominalTheta(model);
   ModalSystem nominal;
-  if (!core->solve(theta.data(), -1, nullptr, nominal)) {
+  if (!core->solve({theta.data(), -1, nullptr}, nominal)) {
     return makeError(ErrorCode::NumericalFailure, "the model cannot be solved at its nominal parameters", model.name);
   }
   std::vector<int> dofs;

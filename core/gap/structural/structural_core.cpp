@@ -173,7 +173,7 @@ Matrix StructuralCore::pseudoFlexibility(const Vector& w2) const {
   ModalSystem sys;
   std::vector<double> none(model.parameters.size());
   for (std::size_t p = 0; p < none.size(); ++p) none[p] = model.parameters[p].nominal;
-  if (!solve(none.data(), -1, nullptr, sys)) return Matrix::Zero(model.dofCount(), model.dofCount());
+  if (!solve({none.data(), -1, nullptr}, sys)) return Matrix::Zero(model.dofCount(), model.dofCount());
   (void)w2;
   const double tol = 1e-8 * std::max(sys.w2.maxCoeff(), 1e-300);
   Matrix g = Matrix::Zero(model.dofCount(), model.dofCount());

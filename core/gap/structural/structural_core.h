@@ -110,9 +110,10 @@ class StructuralCore {
     return q;
   }
 
-  bool solve(const double* theta, int candidate, const double* phi, ModalSystem& sys) const {
+  bool solve(const ModelPoint& at, ModalSystem& sys) const {
     static const std::vector<int> none;
-    return candidate < 0 ? solve(theta, none, phi, sys) : solve(theta, std::vector<int>{candidate}, phi, sys);
+    return at.candidate < 0 ? solve(at.theta, none, at.phi, sys)
+                            : solve(at.theta, std::vector<int>{at.candidate}, at.phi, sys);
   }
 
   // Builds and solves the augmented model with the candidates in `combo` all

@@ -57,8 +57,8 @@ std::vector<ConditionPoint> simulatedPoints(const std::vector<ConditionPoint>& p
   return out;
 }
 
-bool ConditionSeriesProblem::residuals(const double* theta, int candidate, const double* phi, double* r) const {
-  return whitenedResiduals(points_, predict(theta, candidate, phi), r);
+bool ConditionSeriesProblem::residuals(const ModelPoint& at, double* r) const {
+  return whitenedResiduals(points_, predict(at), r);
 }
 
 std::vector<int> ConditionSeriesProblem::folds() const {
@@ -67,17 +67,15 @@ std::vector<int> ConditionSeriesProblem::folds() const {
   return f;
 }
 
-std::unique_ptr<GapProblem> ConditionSeriesProblem::simulated(const double* theta, int candidate, const double* phi,
-                                                              std::mt19937_64& rng) const {
-  return withPoints(simulatedPoints(points_, predict(theta, candidate, phi), rng));
+std::unique_ptr<GapProblem> ConditionSeriesProblem::simulated(const ModelPoint& at, std::mt19937_64& rng) const {
+  return withPoints(simulatedPoints(points_, predict(at), rng));
 }
 
-GapMetrics ConditionSeriesProblem::metrics(const double* theta, int candidate, const double* phi) const {
-  return conditionMetrics(points_, predict(theta, candidate, phi), residualName(), details(theta, candidate, phi));
+GapMetrics ConditionSeriesProblem::metrics(const ModelPoint& at) const {
+  return conditionMetrics(points_, predict(at), residualName_, details(at));
 }
 
-std::vector<std::vector<std::pair<std::string, double>>> ConditionSeriesProblem::details(const double*, int,
-                                                                                         const double*) const {
+std::vector<std::vector<std::pair<std::string, double>>> ConditionSeriesProblem::details(const ModelPoint&) const {
   return {};
 }
 

@@ -50,27 +50,54 @@ std::vector<ConditionPoint> simulatedPoints(const std::vector<ConditionPoint>& p
 class ConditionSeriesProblem : public GapProblem {
  public:
   int residualCount() const override { return static_cast<int>(points_.size()); }
-  bool residuals(const double* theta, int candidate, const double* phi, double* r) const override;
+  bool residuals(const ModelPoint& at, double* r) const override;
   std::vector<int> folds() const override;
-  std::unique_ptr<GapProblem> simulated(const double* theta, int candidate, const double* phi,
-                                        std::mt19937_64& rng) const override;
-  GapMetrics metrics(const double* theta, int candidate, const double* phi) const override;
+  std::unique_ptr<GapProblem> simulated(const ModelPoint& at, std::mt19937_64& rng) const override;
+  GapMetrics metrics(const ModelPoint& at) const override;
 
   // The prediction at every point, in the points' unit; NaN where the model
   // cannot be evaluated (residuals() then returns false).
-  virtual std::vector<double> predict(const double* theta, int candidate, const double* phi) const = 0;
+  virtual std::vector<double> predict(const ModelPoint& at) const = 0;
   const std::vector<ConditionPoint>& points() const { return points_; }
 
  protected:
-  explicit ConditionSeriesProblem(std::vector<ConditionPoint> points) : points_(std::move(points)) {}
+  // residualName: what the metrics' `overall` measures ("relaxation_residual").
+  ConditionSeriesProblem(std::vector<ConditionPoint> points, std::string residualName)
+      : points_(std::move(points)), residualName_(std::move(residualName)) {}
   // The same problem with other measured values (same layout).
   virtual std::unique_ptr<GapProblem> withPoints(std::vector<ConditionPoint> points) const = 0;
-  virtual std::string residualName() const = 0;
   // Extra named figures per point for the metrics rows; empty for none.
-  virtual std::vector<std::vector<std::pair<std::string, double>>> details(const double* theta, int candidate,
-                                                                           const double* phi) const;
+  virtual std::vector<std::vector<std::pair<std::string, double>>> details(const ModelPoint& at) const;
 
   std::vector<ConditionPoint> points_;
+
+ private:
+  std::string residualName_;
 };
+
+// A condition-series problem from its two files (the tyre and stability
+// loaders): the model file's text parsed by parseModel(text); the measured
+// file's rows parsed by parseRows(text, measuredPath) and kept where
+// conditionOf(row) (pressure, speed) lies in [lo, hi], an InvalidArgument
+// naming the file when none is; then Problem::create(model, rows).
+template <class Problem, class Row, class ParseModel, class ParseRows, class ConditionOf>
+Result<std::unique_ptr<GapProblem>> loadConditionSeriesProblem(const std::string& modelPath, ParseModel parseModel,
+                                                               const std::string& measuredPath, ParseRows parseRows,
+                                                               ConditionOf conditionOf, double lo, double hi,
+                                                               const std::string& conditionName) {
+  MOZZI_TRY_ASSIGN(const std::string modelText, readTextFile(modelPath));
+  MOZZI_TRY_ASSIGN(auto model, parseModel(modelText));
+  MOZZI_TRY_ASSIGN(const std::string measuredText, readTextFile(measuredPath));
+  MOZZI_TRY_ASSIGN(const std::vector<Row> rows, parseRows(measuredText, measuredPath));
+  std::vector<Row> kept;
+  for (const Row& row : rows)
+    if (conditionOf(row) >= lo && conditionOf(row) <= hi) kept.push_back(row);
+  if (kept.empty()) {
+    return makeError(ErrorCode::InvalidArgument, "no measured " + conditionName + " inside the selected range",
+                     measuredPath);
+  }
+  MOZZI_TRY_ASSIGN(auto problem, Problem::create(std::move(model), std::move(kept)));
+  return std::unique_ptr<GapProblem>(std::move(problem));
+}
 
 }  // namespace mozzi::core::gap

@@ -36,7 +36,7 @@ tire::RingModel withDamping(const tire::RingModel& ring, double zeta) {
 }  // namespace
 
 TireGapProblem::TireGapProblem(TireGapModel model, std::vector<ConditionPoint> points)
-    : ConditionSeriesProblem(std::move(points)), model_(std::move(model)) {}
+    : ConditionSeriesProblem(std::move(points), "relaxation_residual"), model_(std::move(model)) {}
 
 Result<std::unique_ptr<TireGapProblem>> TireGapProblem::create(TireGapModel model,
                                                                std::vector<ConditionPoint> measured) {
@@ -99,7 +99,7 @@ Result<std::unique_ptr<TireGapProblem>> TireGapProblem::create(TireGapModel mode
   const double theta = 1.0;
   TireGapProblem::Terms t;
   for (const auto& pt : problem->points_)
-    if (!problem->predictOne(pt.x * 1e5, &theta, -1, nullptr, t)) {
+    if (!problem->predictOne(pt.x * 1e5, {&theta, -1, nullptr}, t)) {
       auto m =
           tire::adhesionFraction({problem->halfLength(pt.x * 1e5), problem->model_.corneringStiffness,
                                   problem->model_.verticalLoad, problem->model_.friction, problem->model_.slipAngle});
@@ -139,10 +139,9 @@ std::vector<Candidate> TireGapProblem::candidates() const {
   };
 }
 
-bool TireGapProblem::predictOne(double pressurePa, const double* theta, int candidate, const double* phi,
-                                Terms& out) const {
+bool TireGapProblem::predictOne(double pressurePa, const ModelPoint& at, Terms& out) const {
   const double a = halfLength(pressurePa);
-  const double C = theta[0] * model_.corneringStiffness;
+  const double C = at.theta[0] * model_.corneringStiffness;
   const tire::ContactPatchInputs in{a, C, model_.verticalLoad, model_.friction, model_.slipAngle};
   auto p = tire::predictRelaxationLength(model_.ring, in);  // eq. 48-50
   if (!p) return false;
@@ -162,40 +161,40 @@ bool TireGapProblem::predictOne(double pressurePa, const double* theta, int cand
     return true;
   };
   double sigma = contact + carcass;
-  switch (candidate) {
+  switch (at.candidate) {
     case -1: break;
     case kBeltModes:
       // One more ring mode in series: C_bFalpha / C_4 with 1/C_4 = rho / C_yg.
-      carcass += C * phi[0] * model_.ring.staticLateralCompliance();
+      carcass += C * at.phi[0] * model_.ring.staticLateralCompliance();
       sigma = contact + carcass;
       break;
     case kCarcassDamping:
-      if (!implied(withDamping(model_.ring, phi[0]), 0.0, tire::RingFrfVariant::NoTrail, sigma)) return false;
+      if (!implied(withDamping(model_.ring, at.phi[0]), 0.0, tire::RingFrfVariant::NoTrail, sigma)) return false;
       break;
     case kTrailFeedback:
-      if (!implied(withDamping(model_.ring, 0.0), phi[0], tire::RingFrfVariant::Full, sigma)) return false;
+      if (!implied(withDamping(model_.ring, 0.0), at.phi[0], tire::RingFrfVariant::Full, sigma)) return false;
       break;
     case kContactPatchFraction:
-      contact *= phi[0];
+      contact *= at.phi[0];
       sigma = contact + carcass;
       break;
     case kRingPressureStiffening:
-      carcass *= std::pow(pressurePa / model_.nominalPressure, -phi[0]);
+      carcass *= std::pow(pressurePa / model_.nominalPressure, -at.phi[0]);
       sigma = contact + carcass;
       break;
     default: return false;
   }
   // For the FRF-based effects the carcass part is what the phase adds beyond a m.
-  if (candidate == kCarcassDamping || candidate == kTrailFeedback) carcass = sigma - contact;
+  if (at.candidate == kCarcassDamping || at.candidate == kTrailFeedback) carcass = sigma - contact;
   out = {sigma, contact, carcass};
   return std::isfinite(sigma);
 }
 
-std::vector<double> TireGapProblem::predict(const double* theta, int candidate, const double* phi) const {
+std::vector<double> TireGapProblem::predict(const ModelPoint& at) const {
   std::vector<double> out(points_.size(), kNaN);
   Terms t;
   for (std::size_t j = 0; j < points_.size(); ++j)
-    if (predictOne(points_[j].x * 1e5, theta, candidate, phi, t)) out[j] = t.sigma;
+    if (predictOne(points_[j].x * 1e5, at, t)) out[j] = t.sigma;
   return out;
 }
 
@@ -203,13 +202,12 @@ std::unique_ptr<GapProblem> TireGapProblem::withPoints(std::vector<ConditionPoin
   return std::unique_ptr<GapProblem>(new TireGapProblem(model_, std::move(points)));
 }
 
-std::vector<std::vector<std::pair<std::string, double>>> TireGapProblem::details(const double* theta, int candidate,
-                                                                                 const double* phi) const {
+std::vector<std::vector<std::pair<std::string, double>>> TireGapProblem::details(const ModelPoint& at) const {
   std::vector<std::vector<std::pair<std::string, double>>> extra(points_.size());
   Terms t;
   for (std::size_t j = 0; j < points_.size(); ++j) {
     const double pa = points_[j].x * 1e5;
-    if (!predictOne(pa, theta, candidate, phi, t)) continue;
+    if (!predictOne(pa, at, t)) continue;
     extra[j] = {{"pressure_bar", points_[j].x},
                 {"half_length", halfLength(pa)},
                 {"contact_patch_term", t.contactPatch},
@@ -218,12 +216,12 @@ std::vector<std::vector<std::pair<std::string, double>>> TireGapProblem::details
   return extra;
 }
 
-std::vector<OverlayCurve> TireGapProblem::overlay(const double* theta, int candidate, const double* phi) const {
+std::vector<OverlayCurve> TireGapProblem::overlay(const ModelPoint& at) const {
   OverlayCurve c;
   c.label = "relaxation length";
   c.xLabel = "Pressure [bar]";
   c.yLabel = "sigma [m]";
-  c.predicted = predict(theta, candidate, phi);
+  c.predicted = predict(at);
   for (const auto& pt : points_) {
     c.x.push_back(pt.x);
     c.measured.push_back(pt.measured);
@@ -285,13 +283,10 @@ Result<TireGapModel> parseTireGapModel(const std::string& jsonText, const std::s
     const Json& r = j["ring"];
     const std::string where = source + ": ring";
     if (!r.is_object()) return makeError(ErrorCode::ParseError, "\"ring\" must be an object", where);
-    auto mass = num(r, "tyre_mass_kg", where, settings.tyreMass, !thesis);
-    auto share = num(r, "belt_share", where, settings.beltShare, false);
-    auto radius = num(r, "ring_radius_m", where, settings.ringRadius, !thesis);
-    if (!mass) return mass.error();
-    if (!share) return share.error();
-    if (!radius) return radius.error();
-    settings = {*mass, *share, *radius};
+    MOZZI_TRY_ASSIGN(const double mass, num(r, "tyre_mass_kg", where, settings.tyreMass, !thesis));
+    MOZZI_TRY_ASSIGN(const double share, num(r, "belt_share", where, settings.beltShare, false));
+    MOZZI_TRY_ASSIGN(const double radius, num(r, "ring_radius_m", where, settings.ringRadius, !thesis));
+    settings = {mass, share, radius};
     if (!r.contains("modes") || !r["modes"].is_array() || r["modes"].empty())
       return makeError(ErrorCode::ParseError, "\"modes\" must be a non-empty array", where);
     std::vector<tire::RingStiffnessInput> stiff;
@@ -303,19 +298,16 @@ Result<TireGapModel> parseTireGapModel(const std::string& jsonText, const std::s
       if (!e.contains("k") || !e["k"].is_number_integer())
         return makeError(ErrorCode::ParseError, "\"k\" must be an integer", w);
       const int k = e["k"].get<int>();
-      auto zeta = num(e, "damping_ratio", w, 0.0, false);
-      if (!zeta) return zeta.error();
+      MOZZI_TRY_ASSIGN(const double zeta, num(e, "damping_ratio", w, 0.0, false));
       const bool byStiffness = e.contains("stiffness_n_per_m"), byFrequency = e.contains("frequency_hz");
       if (byStiffness == byFrequency)
         return makeError(ErrorCode::ParseError, "give exactly one of \"stiffness_n_per_m\" and \"frequency_hz\"", w);
       if (byStiffness) {
-        auto c = num(e, "stiffness_n_per_m", w, 0.0, true);
-        if (!c) return c.error();
-        stiff.push_back({k, *c, *zeta});
+        MOZZI_TRY_ASSIGN(const double c, num(e, "stiffness_n_per_m", w, 0.0, true));
+        stiff.push_back({k, c, zeta});
       } else {
-        auto f = num(e, "frequency_hz", w, 0.0, true);
-        if (!f) return f.error();
-        freq.push_back({k, *f, *zeta});
+        MOZZI_TRY_ASSIGN(const double f, num(e, "frequency_hz", w, 0.0, true));
+        freq.push_back({k, f, zeta});
       }
     }
     if (!stiff.empty() && !freq.empty())
@@ -324,13 +316,11 @@ Result<TireGapModel> parseTireGapModel(const std::string& jsonText, const std::s
     if (!ring) return makeError(ring.error().code, ring.error().message, where + " (" + ring.error().where + ")");
     m.ring = *ring;
   } else {
-    auto ring = tire::ringModelFromStiffness({{0, thesis->lateralStiffness, 0.0},
-                                              {1, thesis->camberStiffness, 0.0},
-                                              {2, thesis->cShapedStiffness, 0.0},
-                                              {3, thesis->sShapedStiffness, 0.0}},
-                                             settings);
-    if (!ring) return ring.error();
-    m.ring = *ring;
+    MOZZI_TRY_ASSIGN(m.ring, tire::ringModelFromStiffness({{0, thesis->lateralStiffness, 0.0},
+                                                           {1, thesis->camberStiffness, 0.0},
+                                                           {2, thesis->cShapedStiffness, 0.0},
+                                                           {3, thesis->sShapedStiffness, 0.0}},
+                                                          settings));
   }
   // Contact patch: explicit table wins; otherwise Table 17.
   if (j.contains("contact_patch")) {
@@ -340,11 +330,9 @@ Result<TireGapModel> parseTireGapModel(const std::string& jsonText, const std::s
     for (std::size_t i = 0; i < c.size(); ++i) {
       const std::string w = where + "[" + std::to_string(i) + "]";
       if (!c[i].is_object()) return makeError(ErrorCode::ParseError, "entry must be an object", w);
-      auto p = num(c[i], "pressure_bar", w, 0.0, true);
-      auto a = num(c[i], "half_length_m", w, 0.0, true);
-      if (!p) return p.error();
-      if (!a) return a.error();
-      m.contactPatch.push_back({*p * 1e5, *a});
+      MOZZI_TRY_ASSIGN(const double p, num(c[i], "pressure_bar", w, 0.0, true));
+      MOZZI_TRY_ASSIGN(const double a, num(c[i], "half_length_m", w, 0.0, true));
+      m.contactPatch.push_back({p * 1e5, a});
     }
   } else if (thesis) {
     for (std::size_t i = 0; i < tire::kThesisPressures.size(); ++i)
@@ -352,24 +340,17 @@ Result<TireGapModel> parseTireGapModel(const std::string& jsonText, const std::s
   } else {
     return makeError(ErrorCode::ParseError, "missing \"contact_patch\"", source);
   }
-  auto load = num(j, "vertical_load_n", source, thesis ? thesis->testLoad : 0.0, !thesis);
-  if (!load) return load.error();
-  m.verticalLoad = *load;
-  auto cAlpha = num(j, "cornering_stiffness_n_per_rad", source,
-                    thesis ? tire::kAssumedNormalisedCorneringStiffness * m.verticalLoad : 0.0, !thesis);
-  auto cSigma = num(j, "cornering_stiffness_rel_sigma", source, 0.1, false);
-  auto friction = num(j, "friction", source, tire::kAssumedFriction, false);
-  auto slip = num(j, "slip_angle_deg", source, 1.5, false);
-  auto speed = num(j, "speed_m_s", source, 5.0 / 3.6, false);
-  auto pNom = num(j, "nominal_pressure_bar", source, 2.0, false);
-  for (const auto* r : {&cAlpha, &cSigma, &friction, &slip, &speed, &pNom})
-    if (!*r) return r->error();
-  m.corneringStiffness = *cAlpha;
-  m.corneringStiffnessRelSigma = *cSigma;
-  m.friction = *friction;
-  m.slipAngle = *slip * kPi / 180.0;
-  m.speed = *speed;
-  m.nominalPressure = *pNom * 1e5;
+  MOZZI_TRY_ASSIGN(m.verticalLoad, num(j, "vertical_load_n", source, thesis ? thesis->testLoad : 0.0, !thesis));
+  MOZZI_TRY_ASSIGN(m.corneringStiffness,
+                   num(j, "cornering_stiffness_n_per_rad", source,
+                       thesis ? tire::kAssumedNormalisedCorneringStiffness * m.verticalLoad : 0.0, !thesis));
+  MOZZI_TRY_ASSIGN(m.corneringStiffnessRelSigma, num(j, "cornering_stiffness_rel_sigma", source, 0.1, false));
+  MOZZI_TRY_ASSIGN(m.friction, num(j, "friction", source, tire::kAssumedFriction, false));
+  MOZZI_TRY_ASSIGN(const double slipDeg, num(j, "slip_angle_deg", source, 1.5, false));
+  MOZZI_TRY_ASSIGN(m.speed, num(j, "speed_m_s", source, 5.0 / 3.6, false));
+  MOZZI_TRY_ASSIGN(const double nominalBar, num(j, "nominal_pressure_bar", source, 2.0, false));
+  m.slipAngle = slipDeg * kPi / 180.0;
+  m.nominalPressure = nominalBar * 1e5;
   if (j.contains("excitation_hz")) {
     const Json& e = j["excitation_hz"];
     if (!e.is_array() || e.empty())
@@ -386,13 +367,13 @@ Result<TireGapModel> parseTireGapModel(const std::string& jsonText, const std::s
 }
 
 Result<std::vector<ConditionPoint>> parseRelaxationCsv(const std::string& csvText, const std::string& source) {
-  auto t = tire::parseNumericTable(csvText, source, {"pressure_bar", "sigma_m", "uncertainty_m"});
-  if (!t) return t.error();
-  const int cp = t->column("pressure_bar"), cs = t->column("sigma_m"), cu = t->column("uncertainty_m");
+  MOZZI_TRY_ASSIGN(const tire::NumericTable t,
+                   tire::parseNumericTable(csvText, source, {"pressure_bar", "sigma_m", "uncertainty_m"}));
+  const int cp = t.column("pressure_bar"), cs = t.column("sigma_m"), cu = t.column("uncertainty_m");
   std::vector<ConditionPoint> out;
-  for (std::size_t i = 0; i < t->rows.size(); ++i) {
-    const auto& r = t->rows[i];
-    const std::string where = source + ":" + std::to_string(t->lines[i]);
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    const auto& r = t.rows[i];
+    const std::string where = source + ":" + std::to_string(t.lines[i]);
     if (!(r[cp] > 0.0)) return makeError(ErrorCode::ParseError, "pressure_bar must be positive", where);
     if (!(r[cs] > 0.0)) return makeError(ErrorCode::ParseError, "sigma_m must be positive", where);
     if (!(r[cu] > 0.0)) return makeError(ErrorCode::ParseError, "uncertainty_m must be positive", where);
@@ -406,22 +387,10 @@ Result<std::vector<ConditionPoint>> parseRelaxationCsv(const std::string& csvTex
 
 Result<std::unique_ptr<GapProblem>> loadTireGapProblem(const std::string& modelPath, const std::string& measuredPath,
                                                        const TireLoadOptions& options) {
-  auto modelText = readTextFile(modelPath);
-  if (!modelText) return modelText.error();
-  auto model = parseTireGapModel(*modelText, modelPath);
-  if (!model) return model.error();
-  auto csv = readTextFile(measuredPath);
-  if (!csv) return csv.error();
-  auto points = parseRelaxationCsv(*csv, measuredPath);
-  if (!points) return points.error();
-  std::vector<ConditionPoint> kept;
-  for (const auto& p : *points)
-    if (p.x >= options.minPressureBar && p.x <= options.maxPressureBar) kept.push_back(p);
-  if (kept.empty())
-    return makeError(ErrorCode::InvalidArgument, "no measured pressure inside the selected range", measuredPath);
-  auto problem = TireGapProblem::create(std::move(*model), std::move(kept));
-  if (!problem) return problem.error();
-  return std::unique_ptr<GapProblem>(std::move(*problem));
+  return loadConditionSeriesProblem<TireGapProblem, ConditionPoint>(
+      modelPath, [&](const std::string& text) { return parseTireGapModel(text, modelPath); }, measuredPath,
+      parseRelaxationCsv, [](const ConditionPoint& p) { return p.x; }, options.minPressureBar, options.maxPressureBar,
+      "pressure");
 }
 
 }  // namespace mozzi::core::gap

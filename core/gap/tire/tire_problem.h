@@ -70,24 +70,22 @@ class TireGapProblem : public ConditionSeriesProblem {
   std::string dataKind() const override { return "relaxation"; }
   std::vector<Parameter> calibrationParameters() const override;
   std::vector<Candidate> candidates() const override;
-  std::vector<OverlayCurve> overlay(const double* theta, int candidate, const double* phi) const override;
+  std::vector<OverlayCurve> overlay(const ModelPoint& at) const override;
 
   // Predicted sigma [m] at every measured pressure; NaN where not evaluable.
-  std::vector<double> predict(const double* theta, int candidate, const double* phi) const override;
+  std::vector<double> predict(const ModelPoint& at) const override;
   const TireGapModel& model() const { return model_; }
 
  protected:
   std::unique_ptr<GapProblem> withPoints(std::vector<ConditionPoint> points) const override;
-  std::string residualName() const override { return "relaxation_residual"; }
-  std::vector<std::vector<std::pair<std::string, double>>> details(const double* theta, int candidate,
-                                                                   const double* phi) const override;
+  std::vector<std::vector<std::pair<std::string, double>>> details(const ModelPoint& at) const override;
 
  private:
   TireGapProblem(TireGapModel model, std::vector<ConditionPoint> points);
   struct Terms {
     double sigma = 0.0, contactPatch = 0.0, carcass = 0.0;
   };
-  bool predictOne(double pressurePa, const double* theta, int candidate, const double* phi, Terms& out) const;
+  bool predictOne(double pressurePa, const ModelPoint& at, Terms& out) const;
   double halfLength(double pressurePa) const;
 
   TireGapModel model_;

@@ -136,9 +136,9 @@ TEST(EngineBootstrap, LinearisedTracksFullRefitsOnANonlinearProblem) {
   testing::NonlinearGapProblem problem(40, {0.2, 0.5, 0.8}, 0.05);
   std::mt19937_64 rng(3);
   const double theta[] = {2.0, 1.5};
-  problem.setMeasured(static_cast<testing::NonlinearGapProblem*>(problem.simulated(theta, -1, nullptr, rng).get())
+  problem.setMeasured(static_cast<testing::NonlinearGapProblem*>(problem.simulated({theta, -1, nullptr}, rng).get())
                           ->prediction(theta, -1, nullptr));
-  auto data = problem.simulated(theta, -1, nullptr, rng);
+  auto data = problem.simulated({theta, -1, nullptr}, rng);
   const Paired r = paired(*data, 200);
   // Under no effect the fitted log-factor is noise-sized (sd ~ sigma / (theta0
   // |b|) ~ 0.01), where the exponential's second-order term changes the

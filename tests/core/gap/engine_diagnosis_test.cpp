@@ -98,7 +98,7 @@ TEST(EngineDiagnosis, NonlinearEffectIsFoundWithItsSize) {
   testing::NonlinearGapProblem model(40, {0.2, 0.5, 0.8}, 0.05);
   std::mt19937_64 rng(21);
   const double theta[] = {2.0, 1.5}, phi[] = {0.3};
-  const auto problem = model.simulated(theta, 1, phi, rng);
+  const auto problem = model.simulated({theta, 1, phi}, rng);
   const auto d = diagnose(*problem, fastOptions());
   ASSERT_TRUE(d.ok()) << d.error().describe();
   EXPECT_EQ(d->verdict, Verdict::Effect) << d->explanation;

@@ -144,16 +144,13 @@ class MovedResonance final : public GapProblem {
     return {{"boundary_stiffness", {"1+X"}, {{"scale", "", 1.0, 0.05, 20.0, 0.0}}}};
   }
   int residualCount() const override { return kLines; }
-  bool residuals(const double* theta, int candidate, const double* phi, double* r) const override {
-    (void)theta;
-    const double scale = candidate >= 0 ? phi[0] : 1.0;
+  bool residuals(const ModelPoint& at, double* r) const override {
+    const double scale = at.candidate >= 0 ? at.phi[0] : 1.0;
     for (int k = 0; k < kLines; ++k) r[k] = (magnitude(scale, 1.0 + 0.02 * k) - measured_[k]) / 0.01;
     return true;
   }
-  std::unique_ptr<GapProblem> simulated(const double*, int, const double*, std::mt19937_64&) const override {
-    return nullptr;
-  }
-  GapMetrics metrics(const double*, int, const double*) const override { return {}; }
+  std::unique_ptr<GapProblem> simulated(const ModelPoint&, std::mt19937_64&) const override { return nullptr; }
+  GapMetrics metrics(const ModelPoint&) const override { return {}; }
 
  private:
   static constexpr int kLines = 200;

@@ -72,8 +72,8 @@ class LinearGapProblem : public GapProblem {
     return out;
   }
   int residualCount() const override { return static_cast<int>(y_.size()); }
-  bool residuals(const double* theta, int k, const double* phi, double* r) const override {
-    Eigen::Map<Eigen::VectorXd>(r, y_.size()) = (prediction(theta, k, phi) - y_) / sigma_;
+  bool residuals(const ModelPoint& at, double* r) const override {
+    Eigen::Map<Eigen::VectorXd>(r, y_.size()) = (prediction(at.theta, at.candidate, at.phi) - y_) / sigma_;
     return true;
   }
   std::vector<int> folds() const override {
@@ -81,20 +81,19 @@ class LinearGapProblem : public GapProblem {
     for (std::size_t i = 0; i < f.size(); ++i) f[i] = static_cast<int>(i % static_cast<std::size_t>(folds_));
     return f;
   }
-  std::unique_ptr<GapProblem> simulated(const double* theta, int k, const double* phi,
-                                        std::mt19937_64& rng) const override {
+  std::unique_ptr<GapProblem> simulated(const ModelPoint& at, std::mt19937_64& rng) const override {
     auto p = std::make_unique<LinearGapProblem>(*this);
-    p->y_ = prediction(theta, k, phi);
+    p->y_ = prediction(at.theta, at.candidate, at.phi);
     std::normal_distribution<double> noise(0.0, sigma_);
     for (Eigen::Index i = 0; i < p->y_.size(); ++i) p->y_[i] += noise(rng);
     return p;
   }
   // overall: relative residual |pred - y| / |y|; one "band" row per block of
   // eight residuals with z = (sum r^2 - m) / sqrt(2 m) (standardised chi-square).
-  GapMetrics metrics(const double* theta, int k, const double* phi) const override {
+  GapMetrics metrics(const ModelPoint& at) const override {
     GapMetrics m;
     m.residualName = "residual";
-    const Eigen::VectorXd d = prediction(theta, k, phi) - y_;
+    const Eigen::VectorXd d = prediction(at.theta, at.candidate, at.phi) - y_;
     m.overall = d.norm() / y_.norm();
     for (Eigen::Index b = 0; b * 8 < d.size(); ++b) {
       const Eigen::Index len = std::min<Eigen::Index>(8, d.size() - b * 8);
@@ -178,21 +177,20 @@ class NonlinearGapProblem : public GapProblem {
     return out;
   }
   int residualCount() const override { return n_; }
-  bool residuals(const double* theta, int k, const double* phi, double* r) const override {
-    Eigen::Map<Eigen::VectorXd>(r, n_) = (prediction(theta, k, phi) - y_) / sigma_;
+  bool residuals(const ModelPoint& at, double* r) const override {
+    Eigen::Map<Eigen::VectorXd>(r, n_) = (prediction(at.theta, at.candidate, at.phi) - y_) / sigma_;
     return true;
   }
-  std::unique_ptr<GapProblem> simulated(const double* theta, int k, const double* phi,
-                                        std::mt19937_64& rng) const override {
+  std::unique_ptr<GapProblem> simulated(const ModelPoint& at, std::mt19937_64& rng) const override {
     auto p = std::make_unique<NonlinearGapProblem>(*this);
-    p->y_ = prediction(theta, k, phi);
+    p->y_ = prediction(at.theta, at.candidate, at.phi);
     std::normal_distribution<double> noise(0.0, sigma_);
     for (int i = 0; i < n_; ++i) p->y_[i] += noise(rng);
     return p;
   }
-  GapMetrics metrics(const double* theta, int k, const double* phi) const override {
+  GapMetrics metrics(const ModelPoint& at) const override {
     GapMetrics m;
-    m.overall = (prediction(theta, k, phi) - y_).norm() / y_.norm();
+    m.overall = (prediction(at.theta, at.candidate, at.phi) - y_).norm() / y_.norm();
     return m;
   }
 

@@ -55,7 +55,7 @@ TEST(StabilityGapProblem, MotorcycleBaselineIsTheRigidForkSweep) {
   auto p = StabilityGapProblem::create(motorcycleModel(), sharpPublished());
   ASSERT_TRUE(p) << p.error().describe();
   const double theta = 1.0;
-  const auto pred = (*p)->predict(&theta, -1, nullptr);
+  const auto pred = (*p)->predict({&theta, -1, nullptr});
   // Independent path: the model built and swept directly, named by mode tracking.
   auto built = stability::MotorcycleModel::build(motorcycleModel().motorcycle, std::nullopt);
   ASSERT_TRUE(built);
@@ -74,7 +74,7 @@ TEST(StabilityGapProblem, MotorcycleBaselineIsTheRigidForkSweep) {
   // Downstream figures (GAP.md step 9): the rigid machine's weave stabilises
   // near 6 m/s (published Re +2.01 at 3.05 and -0.18 at 6.10 m/s), inside the
   // searched 4.6-73 m/s range; its wobble stays stable (stability_motorcycle_test).
-  const auto m = (*p)->metrics(&theta, -1, nullptr);
+  const auto m = (*p)->metrics({&theta, -1, nullptr});
   int predictions = 0;
   for (const auto& e : m.entries) {
     if (e.kind != "prediction") continue;
@@ -89,7 +89,7 @@ TEST(StabilityGapProblem, MotorcycleBaselineIsTheRigidForkSweep) {
   }
   EXPECT_EQ(predictions, 2);
   // Overlay: one curve per mode, against speed.
-  const auto curves = (*p)->overlay(&theta, -1, nullptr);
+  const auto curves = (*p)->overlay({&theta, -1, nullptr});
   ASSERT_EQ(curves.size(), 2u);
   EXPECT_EQ(curves[0].label, "weave");
   EXPECT_EQ(curves[1].label, "wobble");
@@ -105,12 +105,12 @@ TEST(StabilityGapProblem, ForkBendingAndRelaxationMoveTheWobble) {
   auto p = StabilityGapProblem::create(motorcycleModel(), sharpPublished());
   ASSERT_TRUE(p);
   const double theta = 1.0;
-  const auto base = (*p)->predict(&theta, -1, nullptr);
+  const auto base = (*p)->predict({&theta, -1, nullptr});
   const double absent = 0.0, one = 1.0, longer = 1.5;
-  EXPECT_EQ((*p)->predict(&theta, indexOf(**p, "fork_bending"), &absent), base);
-  EXPECT_EQ((*p)->predict(&theta, indexOf(**p, "tyre_relaxation"), &one), base);
-  const auto bend = (*p)->predict(&theta, indexOf(**p, "fork_bending"), &one);  // thesis model 1 fork
-  const auto relax = (*p)->predict(&theta, indexOf(**p, "tyre_relaxation"), &longer);
+  EXPECT_EQ((*p)->predict({&theta, indexOf(**p, "fork_bending"), &absent}), base);
+  EXPECT_EQ((*p)->predict({&theta, indexOf(**p, "tyre_relaxation"), &one}), base);
+  const auto bend = (*p)->predict({&theta, indexOf(**p, "fork_bending"), &one});  // thesis model 1 fork
+  const auto relax = (*p)->predict({&theta, indexOf(**p, "tyre_relaxation"), &longer});
   const auto& meas = (*p)->measured();
   double maxBend = 0.0, maxRelax = 0.0;
   for (std::size_t j = 0; j < meas.size(); ++j) {
@@ -136,12 +136,12 @@ TEST(StabilityGapProblem, BicycleForkJointsMoveTheWeave) {
   auto p = StabilityGapProblem::create(bicycleModel(), meas);
   ASSERT_TRUE(p) << p.error().describe();
   const double theta = 1.0, one = 1.0, soft = 3.0;
-  const auto base = (*p)->predict(&theta, -1, nullptr);
+  const auto base = (*p)->predict({&theta, -1, nullptr});
   // Independent: eigenvalues of the benchmark at 5 m/s, weave is the
   // oscillating pair (Meijaard et al. 2007 Table 2 at 5 m/s: -0.7755 +- 4.4649i).
   EXPECT_NEAR(base[0], 4.4649 / kTwoPi, 1e-3);
-  const auto bend = (*p)->predict(&theta, indexOf(**p, "fork_bending"), &soft);
-  const auto tors = (*p)->predict(&theta, indexOf(**p, "fork_torsion"), &one);
+  const auto bend = (*p)->predict({&theta, indexOf(**p, "fork_bending"), &soft});
+  const auto tors = (*p)->predict({&theta, indexOf(**p, "fork_torsion"), &one});
   for (std::size_t j = 0; j < base.size(); ++j) {
     ASSERT_TRUE(std::isfinite(bend[j]) && std::isfinite(tors[j]));
     EXPECT_NE(bend[j], base[j]);
@@ -152,7 +152,7 @@ TEST(StabilityGapProblem, BicycleForkJointsMoveTheWeave) {
   // Metrics: one row per (mode, speed), then the weave's critical speed: the
   // benchmark's weave speed 4.2924 m/s (Meijaard et al. 2007), inside the
   // searched 2.5-12 m/s; the sweep refines crossings by Brent's method (1e-3).
-  const auto m = (*p)->metrics(&theta, -1, nullptr);
+  const auto m = (*p)->metrics({&theta, -1, nullptr});
   ASSERT_EQ(m.entries.size(), 5u);
   EXPECT_EQ(m.entries[0].label, "weave 5 m/s");
   EXPECT_EQ(m.entries[4].kind, "prediction");
@@ -160,9 +160,9 @@ TEST(StabilityGapProblem, BicycleForkJointsMoveTheWeave) {
   EXPECT_EQ(m.residualName, "frequency_residual");
   // Simulation keeps the layout and draws around the prediction.
   std::mt19937_64 rng(3);
-  auto sim = (*p)->simulated(&theta, -1, nullptr, rng);
+  auto sim = (*p)->simulated({&theta, -1, nullptr}, rng);
   std::vector<double> r(4);
-  ASSERT_TRUE(sim->residuals(&theta, -1, nullptr, r.data()));
+  ASSERT_TRUE(sim->residuals({&theta, -1, nullptr}, r.data()));
   for (double x : r) EXPECT_LT(std::abs(x), 5.0);  // N(0,1): |z| > 5 has probability 6e-7
 }
 
@@ -176,7 +176,7 @@ TEST(StabilityGapProblem, DiagnosisFindsAPlantedForkBending) {
   ASSERT_TRUE(nominal);
   const double theta = 1.0, truth = 2.0;
   const int bending = indexOf(**nominal, "fork_bending");
-  const auto clean = (*nominal)->predict(&theta, bending, &truth);
+  const auto clean = (*nominal)->predict({&theta, bending, &truth});
   std::mt19937_64 rng(11);
   std::normal_distribution<double> noise(0.0, 1.0);
   for (std::size_t j = 0; j < meas.size(); ++j) {

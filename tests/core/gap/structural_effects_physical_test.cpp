@@ -85,7 +85,7 @@ double worstRelative(const FrfMatrix& truth, const std::vector<std::string>& eff
   }
   const std::vector<double> theta{1.0, 1.0};
   std::vector<double> r(static_cast<std::size_t>((*p)->residualCount()));
-  const bool ok = combo.size() == 1 ? (*p)->residuals(theta.data(), combo[0], phi.data(), r.data())
+  const bool ok = combo.size() == 1 ? (*p)->residuals({theta.data(), combo[0], phi.data()}, r.data())
                                     : (*p)->combinedResiduals(theta.data(), combo, phi.data(), r.data());
   EXPECT_TRUE(ok);
   double worst = 0;
@@ -240,13 +240,13 @@ TEST(StructuralEffectsPhysical, WindowDecayRateFromTheTimeDomain) {
   ASSERT_GE(cand, 0);
   const std::vector<double> theta{1.0, 1.0};
   std::vector<double> r(static_cast<std::size_t>((*p)->residualCount()));
-  ASSERT_TRUE((*p)->residuals(theta.data(), cand, &decay, r.data()));
+  ASSERT_TRUE((*p)->residuals({theta.data(), cand, &decay}, r.data()));
   double worst = 0;
   for (double x : r) worst = std::max(worst, std::abs(x));
   EXPECT_LT(worst, 1e-5);
   // Without the window the prediction is off by far more (the decay is
   // 6 /s against the first pole's ~3 /s).
-  ASSERT_TRUE((*p)->residuals(theta.data(), -1, nullptr, r.data()));
+  ASSERT_TRUE((*p)->residuals({theta.data(), -1, nullptr}, r.data()));
   worst = 0;
   for (double x : r) worst = std::max(worst, std::abs(x));
   EXPECT_GT(worst, 0.1);

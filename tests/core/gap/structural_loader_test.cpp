@@ -82,7 +82,7 @@ TEST(GapLoader, Uff55ModelPredictsTheSpatialFrfs) {
   EXPECT_EQ((*p)->dataKind(), "frf");
   EXPECT_TRUE((*p)->calibrationParameters().empty());
   std::vector<double> r(static_cast<std::size_t>((*p)->residualCount()));
-  ASSERT_TRUE((*p)->residuals(nullptr, -1, nullptr, r.data()));
+  ASSERT_TRUE((*p)->residuals({nullptr, -1, nullptr}, r.data()));
   double worst = 0, sum2 = 0;
   for (double x : r) {
     worst = std::max(worst, std::abs(x));

@@ -118,7 +118,7 @@ TEST(StructuralNoise, ProblemSaysWhichNoiseModel) {
   const std::vector<double> theta{1.0, 1.0};
   auto chi2 = [&](const GapProblem& q) {
     std::vector<double> r(static_cast<std::size_t>(q.residualCount()));
-    EXPECT_TRUE(q.residuals(theta.data(), -1, nullptr, r.data()));
+    EXPECT_TRUE(q.residuals({theta.data(), -1, nullptr}, r.data()));
     double c = 0;
     for (double x : r) c += x * x;
     return c / static_cast<double>(r.size());
@@ -141,7 +141,7 @@ TEST(StructuralNoise, ProblemSaysWhichNoiseModel) {
     // chi2 per residual within 5% of 1 (each FRF's level to ~4%, averaged).
     EXPECT_NEAR(chi2(**p), 1.0, 0.05);
     // Simulated data refit the level.
-    const auto sim = (*p)->simulated(theta.data(), -1, nullptr, rng);
+    const auto sim = (*p)->simulated({theta.data(), -1, nullptr}, rng);
     EXPECT_EQ(sim->noiseModel().source, "estimated");
     EXPECT_NEAR(chi2(*sim), 1.0, 0.05);
   }
@@ -211,7 +211,7 @@ TEST(StructuralNoise, ZeroFrfsGiveNoNaNRows) {
     auto p = makeFrfProblem(m, frf, o);
     ASSERT_TRUE(p.ok()) << p.error().describe();
     const std::vector<double> theta{1.0, 1.0};
-    GapMetrics metrics = (*p)->metrics(theta.data(), -1, nullptr);
+    GapMetrics metrics = (*p)->metrics({theta.data(), -1, nullptr});
     for (const auto& e : metrics.entries) {
       EXPECT_TRUE(std::isfinite(e.z)) << e.kind << " " << e.label;
       EXPECT_TRUE(std::isfinite(e.value)) << e.kind << " " << e.label;

@@ -35,7 +35,7 @@ int findCandidate(const GapProblem& p, const std::string& effect, const std::vec
 
 double maxAbsResidual(const GapProblem& p, const std::vector<double>& theta, int cand, const std::vector<double>& phi) {
   std::vector<double> r(static_cast<std::size_t>(p.residualCount()));
-  EXPECT_TRUE(p.residuals(theta.data(), cand, phi.empty() ? nullptr : phi.data(), r.data()));
+  EXPECT_TRUE(p.residuals({theta.data(), cand, phi.empty() ? nullptr : phi.data()}, r.data()));
   double m = 0;
   for (double x : r) m = std::max(m, std::abs(x));
   return m;
@@ -153,20 +153,20 @@ TEST(StructuralProblem, ChiSquareMatchesResidualCountWithNoise) {
   const std::vector<double> theta{1.0, 1.0};
   auto chi2 = [&](const GapProblem& q) {
     std::vector<double> r(static_cast<std::size_t>(q.residualCount()));
-    EXPECT_TRUE(q.residuals(theta.data(), -1, nullptr, r.data()));
+    EXPECT_TRUE(q.residuals({theta.data(), -1, nullptr}, r.data()));
     double c = 0;
     for (double x : r) c += x * x;
     return c;
   };
   const double n = (*p)->residualCount();
   EXPECT_NEAR(chi2(**p), n, 4 * std::sqrt(2 * n));
-  const auto sim = (*p)->simulated(theta.data(), -1, nullptr, rng);
+  const auto sim = (*p)->simulated({theta.data(), -1, nullptr}, rng);
   EXPECT_NEAR(chi2(*sim), n, 4 * std::sqrt(2 * n));
   // metrics: the raw relative residual at truth is the noise, 1% on each of
   // two components (0.0141); the gap in excess of it is near 0: the mean of
   // |dH/H|^2 over 6000 lines scatters by 2e-4 sqrt(2 / 6000), so the excess
   // stays below sqrt(4 x 2e-4 x 0.018) = 0.004.
-  const auto m = (*p)->metrics(theta.data(), -1, nullptr);
+  const auto m = (*p)->metrics({theta.data(), -1, nullptr});
   EXPECT_LT(m.overall, 0.004);
   for (const auto& e : m.entries) {
     if (e.kind != "band") continue;
@@ -221,7 +221,7 @@ TEST(StructuralProblem, ModeSignaturesFollowPerturbationTheory) {
   ASSERT_TRUE(p.ok()) << p.error().describe();
   const std::vector<double> theta{1.0, 1.0};
   const Modes modes = nominalModes(s.model);
-  const auto base = (*p)->metrics(theta.data(), -1, nullptr);
+  const auto base = (*p)->metrics({theta.data(), -1, nullptr});
   EXPECT_NEAR(base.overall, 0.0, 1e-6);  // the model against its own modes
 
   auto modeRows = [](const GapMetrics& m) {
@@ -233,7 +233,7 @@ TEST(StructuralProblem, ModeSignaturesFollowPerturbationTheory) {
   const double dm = 0.01 * s.model.m(2, 2);
   const int massCand = findCandidate(**p, "mass_loading", {"2+X"});
   ASSERT_GE(massCand, 0);
-  const auto rowsMass = modeRows((*p)->metrics(theta.data(), massCand, &dm));
+  const auto rowsMass = modeRows((*p)->metrics({theta.data(), massCand, &dm}));
   ASSERT_EQ(rowsMass.size(), 8u);
   double largestShift = 0;
   int largestMode = -1;
@@ -254,7 +254,7 @@ TEST(StructuralProblem, ModeSignaturesFollowPerturbationTheory) {
   const double scale = 1.01;
   const int elemCand = findCandidate(**p, "element_stiffness", {"2+X", "3+X"});
   ASSERT_GE(elemCand, 0);
-  const auto rowsElem = modeRows((*p)->metrics(theta.data(), elemCand, &scale));
+  const auto rowsElem = modeRows((*p)->metrics({theta.data(), elemCand, &scale}));
   std::vector<double> expectedElem;
   for (std::size_t r = 0; r < rowsElem.size(); ++r) {
     const auto i = static_cast<Eigen::Index>(r);
@@ -269,7 +269,7 @@ TEST(StructuralProblem, ModeSignaturesFollowPerturbationTheory) {
   }
 
   const double eta = 0.02;
-  const auto rowsHyst = modeRows((*p)->metrics(theta.data(), findCandidate(**p, "hysteretic_damping", {}), &eta));
+  const auto rowsHyst = modeRows((*p)->metrics({theta.data(), findCandidate(**p, "hysteretic_damping", {}), &eta}));
   for (std::size_t r = 0; r < rowsHyst.size(); ++r) {
     EXPECT_NEAR(detail(rowsHyst[r], "predicted_zeta"), data.dampingRatio[static_cast<Eigen::Index>(r)] + eta / 2,
                 1e-12);
@@ -277,7 +277,7 @@ TEST(StructuralProblem, ModeSignaturesFollowPerturbationTheory) {
   }
 
   const double a = 3.0;
-  const auto rowsWin = modeRows((*p)->metrics(theta.data(), findCandidate(**p, "exponential_window", {}), &a));
+  const auto rowsWin = modeRows((*p)->metrics({theta.data(), findCandidate(**p, "exponential_window", {}), &a}));
   for (std::size_t r = 0; r < rowsWin.size(); ++r) {
     const auto i = static_cast<Eigen::Index>(r);
     const double w = 2 * M_PI * modes.f[i], z = data.dampingRatio[i];
@@ -305,8 +305,8 @@ TEST(StructuralProblem, ResidualModeMovesNoMode) {
   const auto candidates = (*p)->candidates();
   const auto& par = candidates[static_cast<std::size_t>(cand)].parameters;
   const std::vector<double> phi{0.3 * par[0].upper, 0.1 * par[1].upper, 0.0};
-  const auto before = (*p)->metrics(theta.data(), -1, nullptr);
-  const auto after = (*p)->metrics(theta.data(), cand, phi.data());
+  const auto before = (*p)->metrics({theta.data(), -1, nullptr});
+  const auto after = (*p)->metrics({theta.data(), cand, phi.data()});
   EXPECT_GT(after.overall, 10 * before.overall);
   for (std::size_t i = 0; i < after.entries.size(); ++i) {
     if (after.entries[i].kind != "mode") continue;

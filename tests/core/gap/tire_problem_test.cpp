@@ -65,14 +65,14 @@ TEST(TireGapProblem, BaselineIsEquation48AtEveryPressure) {
   for (const auto& t : tire::thesisTyres()) {
     auto p = problemFor(t, 1.0);
     const double theta = 1.0;
-    const auto pred = p->predict(&theta, -1, nullptr);
+    const auto pred = p->predict({&theta, -1, nullptr});
     for (std::size_t i = 0; i < pred.size(); ++i)
       EXPECT_NEAR(pred[i], handSigma(t, t.halfLength[i]), 1e-12) << t.size << " " << i;  // same formula: rounding
     // The cornering-stiffness scale multiplies C in both terms of eq. 48.
     const double theta2 = 1.1;
-    EXPECT_NEAR(p->predict(&theta2, -1, nullptr)[4], handSigma(t, t.halfLength[4], 1.1), 1e-12);
+    EXPECT_NEAR(p->predict({&theta2, -1, nullptr})[4], handSigma(t, t.halfLength[4], 1.1), 1e-12);
     std::vector<double> r(pred.size());
-    ASSERT_TRUE(p->residuals(&theta, -1, nullptr, r.data()));
+    ASSERT_TRUE(p->residuals({&theta, -1, nullptr}, r.data()));
     for (double x : r) EXPECT_NEAR(x, 0.0, 1e-9);
   }
 }
@@ -85,7 +85,7 @@ TEST(TireGapProblem, HalfLengthIsInterpolatedLinearlyInTable17) {
   auto p = TireGapProblem::create(*model, {{"", 2.5, 0.15, 0.005, 0}});
   ASSERT_TRUE(p) << p.error().describe();
   const double theta = 1.0;
-  EXPECT_NEAR((*p)->predict(&theta, -1, nullptr)[0], handSigma(t, 0.057), 1e-12);
+  EXPECT_NEAR((*p)->predict({&theta, -1, nullptr})[0], handSigma(t, 0.057), 1e-12);
   // Outside the table: refused rather than extrapolated.
   auto out = TireGapProblem::create(*model, {{"", 5.0, 0.15, 0.005, 0}});
   ASSERT_FALSE(out);
@@ -97,15 +97,15 @@ TEST(TireGapProblem, BeltModesRaiseSigmaByTheSameAmountAtEveryPressure) {
   auto p = problemFor(t, 1.0);
   const int k = effectIndex(*p, "belt_modes");
   const double theta = 1.0, rho = 0.25;
-  const auto base = p->predict(&theta, -1, nullptr);
-  const auto with = p->predict(&theta, k, &rho);
+  const auto base = p->predict({&theta, -1, nullptr});
+  const auto with = p->predict({&theta, k, &rho});
   const double C = tire::kAssumedNormalisedCorneringStiffness * t.testLoad;
   const double compliance =
       1.0 / t.lateralStiffness + 1.0 / t.camberStiffness + 1.0 / t.cShapedStiffness + 1.0 / t.sShapedStiffness;
   for (std::size_t i = 0; i < base.size(); ++i)  // GAP.md: "relaxation length up at every pressure", by C rho / C_yg
     EXPECT_NEAR(with[i] - base[i], C * rho * compliance, 1e-12) << i;
   const double absent = 0.0;
-  EXPECT_EQ(p->predict(&theta, k, &absent), base);
+  EXPECT_EQ(p->predict({&theta, k, &absent}), base);
 }
 
 TEST(TireGapProblem, ContactPatchFractionScalesWithTheHalfLength) {
@@ -113,13 +113,13 @@ TEST(TireGapProblem, ContactPatchFractionScalesWithTheHalfLength) {
   auto p = problemFor(t, 1.0);
   const int k = effectIndex(*p, "contact_patch_fraction");
   const double theta = 1.0, s = 1.3;
-  const auto base = p->predict(&theta, -1, nullptr);
-  const auto with = p->predict(&theta, k, &s);
+  const auto base = p->predict({&theta, -1, nullptr});
+  const auto with = p->predict({&theta, k, &s});
   // The change is 0.3 a(p) m, so its ratio between pressures is the ratio of a(p).
   for (std::size_t i = 1; i < base.size(); ++i)
     EXPECT_NEAR((with[i] - base[i]) / (with[0] - base[0]), t.halfLength[i] / t.halfLength[0], 1e-9) << i;
   const double absent = 1.0;
-  EXPECT_EQ(p->predict(&theta, k, &absent), base);
+  EXPECT_EQ(p->predict({&theta, k, &absent}), base);
 }
 
 TEST(TireGapProblem, RingStiffeningLeavesTheNominalPressureAlone) {
@@ -127,8 +127,8 @@ TEST(TireGapProblem, RingStiffeningLeavesTheNominalPressureAlone) {
   auto p = problemFor(t, 1.0);
   const int k = effectIndex(*p, "ring_pressure_stiffening");
   const double theta = 1.0, beta = 0.5;
-  const auto base = p->predict(&theta, -1, nullptr);
-  const auto with = p->predict(&theta, k, &beta);
+  const auto base = p->predict({&theta, -1, nullptr});
+  const auto with = p->predict({&theta, k, &beta});
   EXPECT_NEAR(with[4], base[4], 1e-12);  // 2 bar: Table 16's pressure
   EXPECT_GT(with[0] - base[0], 0.0);     // softer carcass below it
   EXPECT_LT(with[6] - base[6], 0.0);     // stiffer above
@@ -145,13 +145,13 @@ TEST(TireGapProblem, DampingAndTrailChangeSigmaOnlyAFewPercent) {
   const auto& t = tyre110();
   auto p = problemFor(t, 1.0);
   const double theta = 1.0;
-  const auto base = p->predict(&theta, -1, nullptr);
+  const auto base = p->predict({&theta, -1, nullptr});
   const int kd = effectIndex(*p, "carcass_damping"), kt = effectIndex(*p, "trail_feedback");
   const double zero = 0.0, zeta = 0.03, trail = 0.015;
-  const auto d0 = p->predict(&theta, kd, &zero);
-  const auto t0 = p->predict(&theta, kt, &zero);
-  const auto d = p->predict(&theta, kd, &zeta);
-  const auto tr = p->predict(&theta, kt, &trail);
+  const auto d0 = p->predict({&theta, kd, &zero});
+  const auto t0 = p->predict({&theta, kt, &zero});
+  const auto d = p->predict({&theta, kd, &zeta});
+  const auto tr = p->predict({&theta, kt, &trail});
   for (std::size_t i = 0; i < base.size(); ++i) {
     // Without damping and trail the appendix-1 FRF is the first-order system:
     // its phase gives eq. 48 back to solver rounding (1e-9 m, ring_model_test).
@@ -167,7 +167,7 @@ TEST(TireGapProblem, MetricsFlagTheGapPerPressure) {
   const auto& t = tyre110();
   auto p = problemFor(t, 1.3);  // measured 30% above the prediction, 3% uncertainty
   const double theta = 1.0;
-  const auto m = p->metrics(&theta, -1, nullptr);
+  const auto m = p->metrics({&theta, -1, nullptr});
   EXPECT_EQ(m.residualName, "relaxation_residual");
   ASSERT_EQ(m.entries.size(), 7u);
   for (const auto& e : m.entries) {
@@ -180,15 +180,15 @@ TEST(TireGapProblem, MetricsFlagTheGapPerPressure) {
   EXPECT_NEAR(m.overall, 1.0 - 1.0 / 1.3, 1e-9);  // RMS relative error: every row off by the same fraction
   // A prediction within noise: nothing flagged (|z| = 0).
   auto exact = problemFor(t, 1.0);
-  for (const auto& e : exact->metrics(&theta, -1, nullptr).entries) EXPECT_FALSE(e.flagged);
+  for (const auto& e : exact->metrics({&theta, -1, nullptr}).entries) EXPECT_FALSE(e.flagged);
   const auto folds = p->folds();
   for (int i = 0; i < 7; ++i) EXPECT_EQ(folds[static_cast<std::size_t>(i)], i);  // one held-out group per pressure
   // Overlay for the workbench: measured and predicted against pressure.
-  const auto curves = p->overlay(&theta, -1, nullptr);
+  const auto curves = p->overlay({&theta, -1, nullptr});
   ASSERT_EQ(curves.size(), 1u);
   EXPECT_EQ(curves[0].x.size(), 7u);
   EXPECT_DOUBLE_EQ(curves[0].x[0], 0.5);
-  EXPECT_EQ(curves[0].predicted, p->predict(&theta, -1, nullptr));
+  EXPECT_EQ(curves[0].predicted, p->predict({&theta, -1, nullptr}));
   EXPECT_DOUBLE_EQ(curves[0].measured[6], p->points()[6].measured);
 }
 
@@ -203,9 +203,9 @@ TEST(TireGapProblem, SimulatedDataScatterAsTheNoiseModelSays) {
   double sum = 0.0;
   int n = 0;
   for (int s = 0; s < 300; ++s) {
-    auto sim = p->simulated(&theta, k, &rho, rng);
+    auto sim = p->simulated({&theta, k, &rho}, rng);
     std::vector<double> r(7);
-    ASSERT_TRUE(sim->residuals(&theta, k, &rho, r.data()));
+    ASSERT_TRUE(sim->residuals({&theta, k, &rho}, r.data()));
     for (double x : r) sum += x * x, ++n;
   }
   EXPECT_NEAR(sum / n, 1.0, 4 * std::sqrt(2.0 / n));
@@ -227,7 +227,7 @@ TEST(TireGapLoader, ReadsAModelWithItsOwnRingAndContactTable) {
   ASSERT_TRUE(p) << p.error().describe();
   const double theta = 1.0;
   const double mAdh = 1.0 - 19500 * std::tan(1.5 * kPi / 180) / (3 * 1500);
-  EXPECT_NEAR((*p)->predict(&theta, -1, nullptr)[0],
+  EXPECT_NEAR((*p)->predict({&theta, -1, nullptr})[0],
               0.07 * mAdh + 19500 * (1 / (ring * w0 * w0) + 1 / (0.5 * ring * w1 * w1)), 1e-12);
 }
 
