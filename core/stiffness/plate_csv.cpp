@@ -162,7 +162,7 @@ Result<PlateCsvKind> guessPlateCsvKind(const PlateCsv& csv) {
     for (std::size_t k = 1; k < csv.header.size(); ++k) {
       const std::string h = lower(csv.header[k]);
       if (h.rfind("re", 0) == 0 || h.rfind("im", 0) == 0) modal = true;
-      if (h.rfind("a", 0) == 0 || h.rfind("phi", 0) == 0 || h.find("phase") != std::string::npos ||
+      if (h.rfind('a', 0) == 0 || h.rfind("phi", 0) == 0 || h.find("phase") != std::string::npos ||
           h.find("deg") != std::string::npos)
         dynamic = true;
     }

@@ -120,7 +120,8 @@ Result<RingModel> ringModelFromStiffness(const std::vector<RingStiffnessInput>& 
                         });
 }
 
-Result<ComplexVector> ringFrf(const RingModel& ring, const RingFrfInputs& in, VectorRef omega, RingFrfVariant variant) {
+Result<ComplexVector> ringFrf(const RingModel& ring, const RingFrfInputs& in, const VectorRef& omega,
+                              RingFrfVariant variant) {
   const char* where = "ring-model FRF (thesis appendix 1)";
   if (!std::isfinite(in.speed) || in.speed <= 0.0)
     return makeError(ErrorCode::InvalidArgument, "forward speed V must be positive", where);
@@ -157,8 +158,8 @@ Result<ComplexVector> ringFrf(const RingModel& ring, const RingFrfInputs& in, Ve
   return h;
 }
 
-Result<ImpliedRelaxation> impliedRelaxationLength(const RingModel& ring, const RingFrfInputs& in, VectorRef omega,
-                                                  RingFrfVariant variant) {
+Result<ImpliedRelaxation> impliedRelaxationLength(const RingModel& ring, const RingFrfInputs& in,
+                                                  const VectorRef& omega, RingFrfVariant variant) {
   MOZZI_TRY_ASSIGN(auto h, ringFrf(ring, in, omega, variant));
   ImpliedRelaxation out;
   out.omega = omega;

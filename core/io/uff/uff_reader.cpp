@@ -171,7 +171,8 @@ using parsing::Source;
 
 // ---------------------------------------------------------------------------
 struct DatasetReader::Impl {
-  Impl(std::unique_ptr<Source> s, std::string w, ReadOptions o) : src(std::move(s)), where(std::move(w)), options(o) {}
+  Impl(std::unique_ptr<Source> s, std::string w, ReadOptions o)
+      : src(std::move(s)), where(std::move(w)), options(std::move(o)) {}
 
   std::unique_ptr<Source> src;
   std::string where;
@@ -358,11 +359,11 @@ Result<DatasetReader> DatasetReader::open(const std::string& path, ReadOptions o
     std::fclose(f);
     return makeError(ErrorCode::IoError, "is a directory, not a universal file", path);
   }
-  return DatasetReader(std::make_unique<Impl>(std::make_unique<Source>(f, size), path, options));
+  return DatasetReader(std::make_unique<Impl>(std::make_unique<Source>(f, size), path, std::move(options)));
 }
 
 DatasetReader DatasetReader::fromBytes(std::string_view bytes, ReadOptions options) {
-  return DatasetReader(std::make_unique<Impl>(std::make_unique<Source>(bytes), "<memory>", options));
+  return DatasetReader(std::make_unique<Impl>(std::make_unique<Source>(bytes), "<memory>", std::move(options)));
 }
 
 Result<std::optional<Dataset>> DatasetReader::next() {
@@ -379,10 +380,9 @@ namespace {
 Result<UffFile> readAll(DatasetReader& reader) {
   UffFile file;
   for (;;) {
-    auto d = reader.next();
-    if (!d) return d.error();
-    if (!d->has_value()) break;
-    file.datasets.push_back(std::move(**d));
+    MOZZI_TRY_ASSIGN(std::optional<Dataset> d, reader.next());
+    if (!d) break;
+    file.datasets.push_back(std::move(*d));
   }
   file.warnings = reader.warnings();
   return file;
@@ -390,12 +390,12 @@ Result<UffFile> readAll(DatasetReader& reader) {
 }  // namespace
 
 Result<UffFile> readFile(const std::string& path, ReadOptions options) {
-  MOZZI_TRY_ASSIGN(auto reader, DatasetReader::open(path, options));
+  MOZZI_TRY_ASSIGN(auto reader, DatasetReader::open(path, std::move(options)));
   return readAll(reader);
 }
 
 Result<UffFile> readBytes(std::string_view bytes, ReadOptions options) {
-  DatasetReader reader = DatasetReader::fromBytes(bytes, options);
+  DatasetReader reader = DatasetReader::fromBytes(bytes, std::move(options));
   return readAll(reader);
 }
 
