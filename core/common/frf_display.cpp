@@ -75,14 +75,14 @@ Result<void> checkPicks(const FrfMatrix& frf, const std::vector<FrfPick>& picks,
 }  // namespace
 
 Result<ComplexVector> frfSum(const FrfMatrix& frf, const std::vector<FrfPick>& picks) {
-  if (auto ok = checkPicks(frf, picks, "FRF sum"); !ok) return ok.error();
+  MOZZI_TRY(checkPicks(frf, picks, "FRF sum"));
   ComplexVector sum = ComplexVector::Zero(frf.lineCount());
   for (const auto& p : picks) sum += frf.h[static_cast<std::size_t>(p.reference)].col(p.response);
   return sum;
 }
 
 Result<FrfMatrix> frfSubset(const FrfMatrix& frf, const std::vector<FrfPick>& picks) {
-  if (auto ok = checkPicks(frf, picks, "FRF selection"); !ok) return ok.error();
+  MOZZI_TRY(checkPicks(frf, picks, "FRF selection"));
   std::vector<Eigen::Index> rsp, ref;
   auto slot = [](std::vector<Eigen::Index>& v, Eigen::Index k) {
     for (std::size_t q = 0; q < v.size(); ++q) {

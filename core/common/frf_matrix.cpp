@@ -87,7 +87,7 @@ Result<void> FrfMatrix::validate() const {
 }
 
 Result<FrfMatrix> FrfMatrix::convertedTo(FrfType target) const {
-  if (auto ok = validate(); !ok) return ok.error();
+  MOZZI_TRY(validate());
   FrfMatrix out = *this;
   out.type = target;
   if (target == type) return out;

@@ -2,15 +2,17 @@
 
 #include <limits>
 
+#include "core/common/enum_names.h"
+
 namespace mozzi::core {
 
+namespace {
+constexpr auto kFrfTypeNames = enumTable<FrfType>(
+    {{FrfType::Receptance, "receptance"}, {FrfType::Mobility, "mobility"}, {FrfType::Accelerance, "accelerance"}}, "?");
+}  // namespace
+
 const char* frfTypeName(FrfType type) {
-  switch (type) {
-    case FrfType::Receptance: return "receptance";
-    case FrfType::Mobility: return "mobility";
-    case FrfType::Accelerance: return "accelerance";
-  }
-  return "?";
+  return kFrfTypeNames.of(type);
 }
 
 std::complex<double> frfConversionFactor(FrfType from, FrfType to, double omega) {

@@ -3,20 +3,21 @@
 #include <algorithm>
 #include <string>
 
+#include "core/common/enum_names.h"
 #include "core/gap/engine/pass.h"
 
 namespace mozzi::core::gap {
 
+namespace {
+constexpr EnumEntry<Verdict, const char*> kVerdictEntries[] = {
+    {Verdict::Effect, "effect"},           {Verdict::None, "none"},
+    {Verdict::Ambiguous, "ambiguous"},     {Verdict::Partial, "partial"},
+    {Verdict::Unexplained, "unexplained"}, {Verdict::NotIdentifiable, "not_identifiable"}};
+constexpr auto kVerdictNames = enumTable(kVerdictEntries, "none");
+}  // namespace
+
 const char* verdictName(Verdict verdict) {
-  switch (verdict) {
-    case Verdict::Effect: return "effect";
-    case Verdict::None: return "none";
-    case Verdict::Ambiguous: return "ambiguous";
-    case Verdict::Partial: return "partial";
-    case Verdict::Unexplained: return "unexplained";
-    case Verdict::NotIdentifiable: return "not_identifiable";
-  }
-  return "none";
+  return kVerdictNames.of(verdict);
 }
 
 namespace {

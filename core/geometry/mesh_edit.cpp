@@ -241,6 +241,24 @@ Result<void> checkSlaveRules(const MeshDocument& d) {
   return {};
 }
 
+// Deletes the rows at `indices` (0-based, repeats ignored) of a list of the
+// mesh (lines, faces), the last first so that each removal's index holds when
+// the ops run in order; an index past the end is an error naming it 1-based.
+template <class Row>
+Result<MeshEdit> planDeleteRows(const std::vector<Row>& rows, std::vector<std::size_t> indices, const char* noun) {
+  std::sort(indices.begin(), indices.end());
+  indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+  MeshEdit e;
+  e.description = "delete " + std::to_string(indices.size()) + " " + noun + "(s)";
+  for (auto it = indices.rbegin(); it != indices.rend(); ++it) {
+    if (*it >= rows.size()) {
+      return makeError(ErrorCode::NotFound, std::string("no such ") + noun, noun + (" " + std::to_string(*it + 1)));
+    }
+    e.ops.push_back(removal(*it, rows[*it]));
+  }
+  return e;
+}
+
 }  // namespace
 
 // GCC 12 at -O3 reports the optionals copied here as maybe-uninitialized
@@ -445,17 +463,7 @@ Result<MeshEdit> planAddLine(const MeshDocument& document, int nodeA, int nodeB)
 }
 
 Result<MeshEdit> planDeleteLines(const MeshDocument& document, std::vector<std::size_t> indices) {
-  std::sort(indices.begin(), indices.end());
-  indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
-  MeshEdit e;
-  e.description = "delete " + std::to_string(indices.size()) + " line(s)";
-  for (auto it = indices.rbegin(); it != indices.rend(); ++it) {
-    if (*it >= document.mesh.lines.size()) {
-      return makeError(ErrorCode::NotFound, "no such line", "line " + std::to_string(*it + 1));
-    }
-    e.ops.push_back(removal(*it, document.mesh.lines[*it]));
-  }
-  return e;
+  return planDeleteRows(document.mesh.lines, std::move(indices), "line");
 }
 
 Result<MeshEdit> planAddFace(const MeshDocument& document, const StoredFace& face) {
@@ -474,17 +482,7 @@ Result<MeshEdit> planAddFace(const MeshDocument& document, const StoredFace& fac
 }
 
 Result<MeshEdit> planDeleteFaces(const MeshDocument& document, std::vector<std::size_t> indices) {
-  std::sort(indices.begin(), indices.end());
-  indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
-  MeshEdit e;
-  e.description = "delete " + std::to_string(indices.size()) + " face(s)";
-  for (auto it = indices.rbegin(); it != indices.rend(); ++it) {
-    if (*it >= document.mesh.faces.size()) {
-      return makeError(ErrorCode::NotFound, "no such face", "face " + std::to_string(*it + 1));
-    }
-    e.ops.push_back(removal(*it, document.mesh.faces[*it]));
-  }
-  return e;
+  return planDeleteRows(document.mesh.faces, std::move(indices), "face");
 }
 
 Result<MeshEdit> planSetNodeDofs(const MeshDocument& document, int label, const std::vector<Dof>& dofs) {

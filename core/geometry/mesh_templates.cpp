@@ -31,6 +31,14 @@ class Builder {
     t_.notes = std::move(notes);
     t_.approximateCoordinates = true;
   }
+  // A variant of `base` (the frame with its engine, the fork with its wheel):
+  // its nodes, lines, faces and groups, to which the variant adds, and its
+  // notes followed by `moreNotes`. The DOFs come from take().
+  Builder(const MeshTemplate& base, std::string key, std::string name, std::string source, const std::string& moreNotes)
+      : Builder(std::move(key), std::move(name), std::move(source), base.notes + moreNotes) {
+    t_.mesh = base.mesh;
+    t_.groups = base.groups;
+  }
   Builder& node(int label, double x, double y, double z) {
     io::StoredNode n;
     n.label = label;
@@ -55,13 +63,25 @@ class Builder {
     t_.groups.push_back(NodeGroup{name, std::move(nodes)});
     return *this;
   }
-  // Measurement DOFs in node order: the given directions at every node.
-  Builder& dofsAtEveryNode(std::initializer_list<Direction> dirs) {
+  // `count` nodes labelled from `first` on a circle of radius r [m] in the x-y
+  // plane, from the lowest point (-r, 0, 0) going forward and up, joined by a
+  // closed line (a wheel rim, a tyre belt); their labels.
+  std::vector<int> ring(int first, int count, double r) {
+    std::vector<int> labels;
+    for (int k = 0; k < count; ++k) {
+      const double a = k * 2.0 * kPi / count;
+      node(first + k, -r * std::cos(a), r * std::sin(a), 0.0);
+      labels.push_back(first + k);
+    }
+    for (int k = 0; k < count; ++k) t_.mesh.lines.push_back(io::StoredLine{labels[k], labels[(k + 1) % count]});
+    return labels;
+  }
+  // The template, measured in the given directions at every node (DOFs in node order).
+  MeshTemplate take(std::initializer_list<Direction> dirs) {
     for (const auto& n : t_.mesh.nodes)
       for (Direction d : dirs) t_.measurementDofs.push_back(Dof{n.label, d, false});
-    return *this;
+    return std::move(t_);
   }
-  MeshTemplate take() { return std::move(t_); }
   const MeshTemplate& peek() const { return t_; }
 
  private:
@@ -87,8 +107,7 @@ MeshTemplate plate3() {
   b.node(1, 0.20, 0.0, -0.15).node(2, 0.0, 0.0, -0.15).node(3, 0.0, 0.0, 0.0);
   b.lines({1, 2, 3, 1}).face(1, 2, 3);
   b.group("sensors", {1, 2, 3});
-  b.dofsAtEveryNode({Direction::Y});
-  return b.take();
+  return b.take({Direction::Y});
 }
 
 MeshTemplate plate4() {
@@ -103,8 +122,7 @@ MeshTemplate plate4() {
   b.node(1, -0.10, 0.0, -0.075).node(2, 0.10, 0.0, -0.075).node(3, 0.10, 0.0, 0.075).node(4, -0.10, 0.0, 0.075);
   b.lines({1, 2, 3, 4, 1}).face(1, 2, 3, 4);
   b.group("sensors", {1, 2, 3, 4});
-  b.dofsAtEveryNode({Direction::Y});
-  return b.take();
+  return b.take({Direction::Y});
 }
 
 // ---------------------------------------------------------------- motorcycle frames
@@ -153,8 +171,7 @@ MeshTemplate frame20() {
   frameSkeleton(b);
   b.lines({7, 9, 11}).lines({8, 10, 12}).lines({9, 10}).lines({11, 12});
   b.group("upper", {1, 3, 4, 5, 6}).group("lower", {9, 10, 11, 12, 13, 14});
-  b.dofsAtEveryNode(kTriaxial);
-  return b.take();
+  return b.take(kTriaxial);
 }
 
 MeshTemplate frame26() {
@@ -174,8 +191,7 @@ MeshTemplate frame26() {
   b.lines({1, 21, 5}).lines({21, 6}).lines({7, 9, 22, 11}).lines({8, 10, 23, 12}).lines({9, 10}).lines({11, 12});
   b.lines({22, 23}).lines({17, 24, 26, 25, 18});
   b.group("upper", {1, 3, 4, 5, 6, 21}).group("lower", {9, 10, 11, 12, 13, 14, 22, 23}).group("tail", {24, 25, 26});
-  b.dofsAtEveryNode(kTriaxial);
-  return b.take();
+  return b.take(kTriaxial);
 }
 
 // Frame C (§2.2): aluminium, "metal plates instead of tubes", two long
@@ -210,27 +226,22 @@ void frameCSkeleton(Builder& b) {
   b.group("lower", {11, 12, 13, 14, 22}).group("subframe", {17, 18, 19, 20});
 }
 
-const char* kFrameCNotes =
-    "22 points as measured on frame C: steering head (1, 2), the two lateral beams (3-8), swing-arm pivot (9, 10), "
-    "pivot plates and cross members (11, 12, 21, 22), engine mounts and beam flanges (13-16), subframe (17-20). "
-    "Positions are approximate, drawn from Figure 19 and typical dimensions of a sport twin-beam frame; the thesis "
-    "prints no coordinates.";
-
 MeshTemplate frame22() {
   Builder b("motorcycle-frame-22", "Motorcycle frame, 22 points (frame C)", "thesis §2.2, Figure 19",
-            std::string(kFrameAxes) + kFrameCNotes);
+            std::string(kFrameAxes) +
+                "22 points as measured on frame C: steering head (1, 2), the two lateral beams (3-8), swing-arm pivot "
+                "(9, 10), pivot plates and cross members (11, 12, 21, 22), engine mounts and beam flanges (13-16), "
+                "subframe (17-20). Positions are approximate, drawn from Figure 19 and typical dimensions of a sport "
+                "twin-beam frame; the thesis prints no coordinates.");
   frameCSkeleton(b);
-  b.dofsAtEveryNode(kTriaxial);
-  return b.take();
+  return b.take(kTriaxial);
 }
 
 MeshTemplate frame22Engine10() {
-  Builder b("motorcycle-frame-22-engine-10", "Motorcycle frame with engine, 22 + 10 points (frame C)",
+  Builder b(frame22(), "motorcycle-frame-22-engine-10", "Motorcycle frame with engine, 22 + 10 points (frame C)",
             "thesis §2.2, Figure 19",
-            std::string(kFrameAxes) + kFrameCNotes +
-                " With the engine: 10 more points on it (101-110: the crankcase corners and the cylinder head), "
-                "an in-line engine of about 0.4 m x 0.4 m x 0.26 m hung in the cradle; approximate.");
-  frameCSkeleton(b);
+            " With the engine: 10 more points on it (101-110: the crankcase corners and the cylinder head), "
+            "an in-line engine of about 0.4 m x 0.4 m x 0.26 m hung in the cradle; approximate.");
   b.node(101, -0.24, 0.10, 0.13)
       .node(102, -0.24, 0.10, -0.13)
       .node(103, -0.24, 0.50, 0.13)
@@ -245,8 +256,7 @@ MeshTemplate frame22Engine10() {
   b.lines({105, 106}).lines({107, 108}).lines({107, 109, 110, 108}).lines({107, 13}).lines({108, 14});
   b.lines({105, 11}).lines({106, 12});
   b.group("engine", {101, 102, 103, 104, 105, 106, 107, 108, 109, 110});
-  b.dofsAtEveryNode(kTriaxial);
-  return b.take();
+  return b.take(kTriaxial);
 }
 
 // ---------------------------------------------------------------- swing-arms
@@ -269,8 +279,7 @@ MeshTemplate swingArm6() {
   b.lines({1, 3, 5}).lines({2, 4, 6}).lines({1, 2}).lines({3, 4});
   b.group("swing-arm pivot", {1, 2}).group("left stem", {1, 3, 5}).group("right stem", {2, 4, 6});
   b.group("axle", {5, 6});
-  b.dofsAtEveryNode(kTriaxial);
-  return b.take();
+  return b.take(kTriaxial);
 }
 
 MeshTemplate swingArm18() {
@@ -298,8 +307,7 @@ MeshTemplate swingArm18() {
   b.group("swing-arm pivot", {1, 2, 3, 4});
   b.group("left stem", {1, 3, 5, 7, 9, 11, 13, 15, 17}).group("right stem", {2, 4, 6, 8, 10, 12, 14, 16, 18});
   b.group("axle", {9, 10, 11, 12});
-  b.dofsAtEveryNode(kTriaxial);
-  return b.take();
+  return b.take(kTriaxial);
 }
 
 // ---------------------------------------------------------------- motorcycle forks
@@ -326,36 +334,25 @@ void forkPoints(Builder& b) {
   b.group("fork feet", {9, 10});
 }
 
-const char* kForkNotes =
-    "Fork: steering stem at the upper and lower clamps (1, 2), four stations on each leg from the lower clamp to the "
-    "fork foot (odd labels left, 3-10). Leg length 0.66 m below the lower clamp, legs 0.21 m apart, clamp offset "
-    "0.03 m: typical enduro-fork dimensions (fork A), approximate; the thesis prints no coordinates.";
-
 MeshTemplate fork10() {
   Builder b("motorcycle-fork-10", "Motorcycle front fork, 10 points", "thesis chapter 4, §4.1, Figures 27, 32",
-            std::string(kForkAxes) + kForkNotes);
+            std::string(kForkAxes) +
+                "Fork: steering stem at the upper and lower clamps (1, 2), four stations on each leg from the lower "
+                "clamp to the fork foot (odd labels left, 3-10). Leg length 0.66 m below the lower clamp, legs 0.21 m "
+                "apart, clamp offset 0.03 m: typical enduro-fork dimensions (fork A), approximate; the thesis prints "
+                "no coordinates.");
   forkPoints(b);
-  b.dofsAtEveryNode(kTriaxial);
-  return b.take();
+  return b.take(kTriaxial);
 }
 
 MeshTemplate fork10Wheel8() {
-  Builder b("motorcycle-fork-10-wheel-8", "Motorcycle front fork with wheel, 10 + 8 points",
+  Builder b(fork10(), "motorcycle-fork-10-wheel-8", "Motorcycle front fork with wheel, 10 + 8 points",
             "thesis chapter 4, §4.1, Figures 27, 28, 32",
-            std::string(kForkAxes) + kForkNotes +
-                " Wheel: 8 points on the rim, 45 degrees apart in the x-y plane, radius 0.34 m (a 21-inch enduro "
-                "wheel; the super-sport 17-inch wheel of fork B is a little smaller), node 11 the lowest point "
-                "(where the static load and the hammer were applied), 12-18 going forward and up.");
-  forkPoints(b);
-  const double r = 0.34;
-  for (int k = 0; k < 8; ++k) {
-    const double a = k * kPi / 4.0;  // from the lowest point, forward
-    b.node(11 + k, -r * std::cos(a), r * std::sin(a), 0.0);
-  }
-  b.lines({11, 12, 13, 14, 15, 16, 17, 18, 11});
-  b.group("wheel", {11, 12, 13, 14, 15, 16, 17, 18}).group("wheel lowest point", {11});
-  b.dofsAtEveryNode(kTriaxial);
-  return b.take();
+            " Wheel: 8 points on the rim, 45 degrees apart in the x-y plane, radius 0.34 m (a 21-inch enduro "
+            "wheel; the super-sport 17-inch wheel of fork B is a little smaller), node 11 the lowest point "
+            "(where the static load and the hammer were applied), 12-18 going forward and up.");
+  b.group("wheel", b.ring(11, 8, 0.34)).group("wheel lowest point", {11});
+  return b.take(kTriaxial);
 }
 
 // ---------------------------------------------------------------- tyre
@@ -368,15 +365,8 @@ MeshTemplate tyre6() {
             "cos(k phi) "
             "(eq. 42) depend on the angle only, so the template serves every tyre of the catalogue. The rim is "
             "fixed to the rig; the belt's lateral DOFs are measured.");
-  const double r = 0.30;
-  for (int k = 0; k < 6; ++k) {
-    const double a = k * kPi / 3.0;
-    b.node(100 + k, -r * std::cos(a), r * std::sin(a), 0.0);
-  }
-  b.lines({100, 101, 102, 103, 104, 105, 100});
-  b.group("belt", {100, 101, 102, 103, 104, 105}).group("point 100", {100});
-  b.dofsAtEveryNode({Direction::Z});
-  return b.take();
+  b.group("belt", b.ring(100, 6, 0.30)).group("point 100", {100});
+  return b.take({Direction::Z});
 }
 
 // ---------------------------------------------------------------- bicycle
@@ -407,8 +397,7 @@ MeshTemplate bicycle9Fork12() {
   b.group("frame", {100, 1, 2, 3, 4, 5, 6, 7, 8}).group("rear hub", {100});
   b.group("fork", {11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22});
   b.group("left blade", {11, 12, 13, 14, 15, 16}).group("right blade", {17, 18, 19, 20, 21, 22});
-  b.dofsAtEveryNode(kTriaxial);
-  return b.take();
+  return b.take(kTriaxial);
 }
 
 // ---------------------------------------------------------------- bicycle forks
@@ -437,8 +426,7 @@ MeshTemplate bicycleFork9() {
   Builder b("bicycle-fork-9", "Bicycle fork, 9 points", "thesis chapter 6 introduction, §6.2, §6.3, Figures 48, 49",
             std::string(kBicycleForkNotes) + " Without the wheel a fake hub joins the dropouts.");
   bicycleForkPoints(b);
-  b.dofsAtEveryNode(kTriaxial);
-  return b.take();
+  return b.take(kTriaxial);
 }
 
 MeshTemplate bicycleFork9Wheel8() {
@@ -448,15 +436,8 @@ MeshTemplate bicycleFork9Wheel8() {
                 " Wheel: 8 equidistant points on the rim, radius 0.35 m (Table 21), node 10 the lowest point, "
                 "11-17 going forward and up.");
   bicycleForkPoints(b);
-  const double r = 0.35;  // Table 21
-  for (int k = 0; k < 8; ++k) {
-    const double a = k * kPi / 4.0;
-    b.node(10 + k, -r * std::cos(a), r * std::sin(a), 0.0);
-  }
-  b.lines({10, 11, 12, 13, 14, 15, 16, 17, 10});
-  b.group("wheel", {10, 11, 12, 13, 14, 15, 16, 17});
-  b.dofsAtEveryNode(kTriaxial);
-  return b.take();
+  b.group("wheel", b.ring(10, 8, 0.35));  // radius: Table 21
+  return b.take(kTriaxial);
 }
 
 std::vector<MeshTemplate> buildTemplates() {

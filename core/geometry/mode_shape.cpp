@@ -58,10 +58,9 @@ struct Key {
 }  // namespace
 
 Result<NodePoints> nodePoints(const io::StoredMesh& mesh) {
-  auto global = globalNodePositions(mesh);
-  if (!global) return global.error();
-  NodePoints p(static_cast<Eigen::Index>(global->size()), 3);
-  for (std::size_t i = 0; i < global->size(); ++i) p.row(static_cast<Eigen::Index>(i)) = (*global)[i].transpose();
+  MOZZI_TRY_ASSIGN(auto global, globalNodePositions(mesh));
+  NodePoints p(static_cast<Eigen::Index>(global.size()), 3);
+  for (std::size_t i = 0; i < global.size(); ++i) p.row(static_cast<Eigen::Index>(i)) = global[i].transpose();
   return p;
 }
 
@@ -78,8 +77,7 @@ Result<ShapeField> shapeField(const io::MeshDocument& document, const std::vecto
     }
   }
   const auto& mesh = document.mesh;
-  auto points = nodePoints(mesh);
-  if (!points) return points.error();
+  MOZZI_TRY_ASSIGN(auto points, nodePoints(mesh));
   const Eigen::Index n = static_cast<Eigen::Index>(mesh.nodes.size());
   std::unordered_map<int, Eigen::Index> row;
   for (Eigen::Index i = 0; i < n; ++i) row[mesh.nodes[i].label] = i;
@@ -136,7 +134,7 @@ Result<ShapeField> shapeField(const io::MeshDocument& document, const std::vecto
   }
 
   // Node vectors in global axes.
-  const auto globalRow = [&](Eigen::Index i) { return Vector3((*points)(i, 0), (*points)(i, 1), (*points)(i, 2)); };
+  const auto globalRow = [&](Eigen::Index i) { return Vector3(points(i, 0), points(i, 1), points(i, 2)); };
   std::vector<bool> fixed(static_cast<std::size_t>(n), false);
   for (Eigen::Index i = 0; i < n; ++i) {
     const auto& node = mesh.nodes[static_cast<std::size_t>(i)];
@@ -163,7 +161,7 @@ Result<ShapeField> shapeField(const io::MeshDocument& document, const std::vecto
   if (options.interpolate) {
     // Graph of trace lines and face edges, weight 1/length.
     double diag = 0.0;
-    if (n > 0) diag = (points->colwise().maxCoeff() - points->colwise().minCoeff()).norm();
+    if (n > 0) diag = (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm();
     const double minLength = std::max(diag * 1e-9, 1e-15);
     std::vector<std::vector<std::pair<Eigen::Index, double>>> adjacent(static_cast<std::size_t>(n));
     auto connect = [&](int a, int b) {

@@ -6,18 +6,22 @@
 #include <set>
 #include <string>
 
+#include "core/common/enum_names.h"
 #include "core/modal/varpro.h"
 
 namespace mozzi::core::modal {
 
+namespace {
+constexpr EnumEntry<IdentificationStage, const char*> kStageEntries[] = {
+    {IdentificationStage::Diagram, "stabilization diagram"},
+    {IdentificationStage::Selection, "pole selection"},
+    {IdentificationStage::Lsfd, "LSFD"},
+    {IdentificationStage::Refinement, "refinement"}};
+constexpr auto kStageNames = enumTable(kStageEntries, "identification");
+}  // namespace
+
 const char* identificationStageName(IdentificationStage stage) {
-  switch (stage) {
-    case IdentificationStage::Diagram: return "stabilization diagram";
-    case IdentificationStage::Selection: return "pole selection";
-    case IdentificationStage::Lsfd: return "LSFD";
-    case IdentificationStage::Refinement: return "refinement";
-  }
-  return "identification";
+  return kStageNames.of(stage);
 }
 
 namespace {
@@ -37,10 +41,9 @@ Result<void> fitSelection(const FrfMatrix& frf, const IdentificationOptions& opt
   lo2.bandLowHz = est.bandLowHz;
   lo2.bandHighHz = est.bandHighHz;
   auto bandLsfd = [&]() -> Result<void> {
-    auto model = lsfd(frf, poles, lo2);
-    if (!model) return model.error();
-    for (std::size_t r = 0; r < poles.size(); ++r) model->modes[r].participation = out.selected[r].participation;
-    out.lsfdModel = std::move(model).value();
+    MOZZI_TRY_ASSIGN(auto model, lsfd(frf, poles, lo2));
+    for (std::size_t r = 0; r < poles.size(); ++r) model.modes[r].participation = out.selected[r].participation;
+    out.lsfdModel = std::move(model);
     return {};
   };
   if (!options.refine) return bandLsfd();
@@ -70,13 +73,13 @@ Result<void> fitSelection(const FrfMatrix& frf, const IdentificationOptions& opt
   if (!refined) {
     if (refined.error().code == ErrorCode::Cancelled) return refined.error();
     // The LSFD's own error where it fails too (rank-deficient basis, band).
-    if (auto ok = bandLsfd(); !ok) return ok.error();
+    MOZZI_TRY(bandLsfd());
     return refined.error();
   }
   if (refined->fittedLines == refined->bandLines) {
     out.lsfdModel = std::move(refined->startModel);
-  } else if (auto ok = bandLsfd(); !ok) {
-    return ok.error();
+  } else {
+    MOZZI_TRY(bandLsfd());
   }
   refined->startModel = ModalModel{};
   out.refined = std::move(refined).value();
@@ -98,18 +101,13 @@ Result<IdentificationResult> identifyModes(const FrfMatrix& frf, const Identific
                   std::clamp(static_cast<double>(order - lo) / static_cast<double>(hi - lo), 0.0, 1.0));
   };
   if (!report(IdentificationStage::Diagram, 0.0)) return makeError(ErrorCode::Cancelled, "cancelled", where);
-  auto diagram =
-      options.method == IdentificationMethod::Lsce ? lsceStabilization(frf, est) : plscfStabilization(frf, est);
-  if (!diagram) return diagram.error();
-
   IdentificationResult out;
+  MOZZI_TRY_ASSIGN(out.diagram, options.method == IdentificationMethod::Lsce ? lsceStabilization(frf, est)
+                                                                             : plscfStabilization(frf, est));
   if (!report(IdentificationStage::Selection, 0.0)) return makeError(ErrorCode::Cancelled, "cancelled", where);
-  auto selected = selectPoles(*diagram, est);
-  if (!selected) return selected.error();
-  out.diagram = std::move(diagram).value();
-  out.selected = std::move(selected).value();
+  MOZZI_TRY_ASSIGN(out.selected, selectPoles(out.diagram, est));
 
-  if (auto ok = fitSelection(frf, options, report, out); !ok) return ok.error();
+  MOZZI_TRY(fitSelection(frf, options, report, out));
   return out;
 }
 
@@ -145,24 +143,22 @@ Result<IdentificationResult> reselectModes(const FrfMatrix& frf, StabilizationDi
   auto report = [&](IdentificationStage stage, double fraction) {
     return !progress || progress(IdentificationProgress{stage, fraction});
   };
-  if (auto ok = fitSelection(frf, options, report, out); !ok) return ok.error();
+  MOZZI_TRY(fitSelection(frf, options, report, out));
   return out;
 }
 
 Result<SelectionFit> fitSelectedPoles(const FrfMatrix& frf, const std::vector<Complex>& poles,
                                       const LsfdOptions& band) {
-  auto fitter = SelectionFitter::create(frf, band);
-  if (!fitter) return fitter.error();
-  auto fit = fitter->fit(poles);
-  if (!fit) return fit.error();
+  MOZZI_TRY_ASSIGN(auto fitter, SelectionFitter::create(frf, band));
+  MOZZI_TRY_ASSIGN(auto fit, fitter.fit(poles));
   SelectionFit out;
-  out.model = std::move(fit->model);
-  out.relativeError = fit->relativeError;
-  out.synthesis.frequencyHz = frf.frequencyHz.segment(fitter->firstLine(), fitter->lineCount());
+  out.model = std::move(fit.model);
+  out.relativeError = fit.relativeError;
+  out.synthesis.frequencyHz = frf.frequencyHz.segment(fitter.firstLine(), fitter.lineCount());
   out.synthesis.responses = frf.responses;
   out.synthesis.references = frf.references;
   out.synthesis.type = frf.type;
-  fitter->synthesis(out.synthesis.h);
+  fitter.synthesis(out.synthesis.h);
   return out;
 }
 
@@ -175,7 +171,7 @@ constexpr std::size_t kKeptWorkspaces = 3;
 }  // namespace
 
 Result<SelectionFitter> SelectionFitter::create(const FrfMatrix& frf, const LsfdOptions& band) {
-  if (auto ok = frf.validate(); !ok) return ok.error();
+  MOZZI_TRY(frf.validate());
   SelectionFitter f;
   f.frf_ = &frf;
   f.band_ = band;

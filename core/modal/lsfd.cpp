@@ -27,7 +27,7 @@ BandLines bandLines(const FrfMatrix& frf, double lo, double hi, bool skipDc) {
 
 Result<ModalModel> lsfd(const FrfMatrix& frf, const std::vector<Complex>& poles, const LsfdOptions& opt) {
   const std::string where = "LSFD";
-  if (auto ok = frf.validate(); !ok) return ok.error();
+  MOZZI_TRY(frf.validate());
   if (poles.empty()) return makeError(ErrorCode::InvalidArgument, "no poles to fit residues for", where);
   for (std::size_t r = 0; r < poles.size(); ++r) {
     if (!(poles[r].imag() > 0.0) || !(poles[r].real() < 0.0) || !std::isfinite(std::abs(poles[r]))) {
@@ -63,8 +63,8 @@ Result<ModalModel> lsfd(const FrfMatrix& frf, const std::vector<Complex>& poles,
 }
 
 Result<double> relativeFitError(const FrfMatrix& frf, const ModalModel& model, double lo, double hi) {
-  if (auto ok = frf.validate(); !ok) return ok.error();
-  if (auto ok = model.validate(); !ok) return ok.error();
+  MOZZI_TRY(frf.validate());
+  MOZZI_TRY(model.validate());
   if (model.responseCount() != frf.responseCount() || model.referenceCount() != frf.referenceCount()) {
     return makeError(ErrorCode::InvalidArgument, "model and FRFs have different DOF counts", "fit error");
   }

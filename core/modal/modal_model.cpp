@@ -86,7 +86,7 @@ Complex synthesize(const ModalModel& model, Eigen::Index o, Eigen::Index i, doub
 }
 
 Result<FrfMatrix> synthesizeFrf(const ModalModel& model, const VectorRef& frequencyHz, FrfType type) {
-  if (auto ok = model.validate(); !ok) return ok.error();
+  MOZZI_TRY(model.validate());
   if (model.lowerResidual.size() != 0 && frfTypeOrder(type) < 2) {
     for (Eigen::Index k = 0; k < frequencyHz.size(); ++k) {
       if (frequencyHz[k] == 0.0) {
@@ -116,7 +116,7 @@ Result<ModalModel> modalFromSpatial(const MatrixRef& m, const MatrixRef& c, cons
   const Eigen::Index n = m.rows();
   if (n == 0) return makeError(ErrorCode::InvalidArgument, "empty mass matrix", "spatial model");
   for (auto [a, name] : {std::pair<const MatrixRef*, const char*>{&m, "M"}, {&c, "C"}, {&k, "K"}}) {
-    if (auto ok = checkSquare(*a, n, name); !ok) return ok.error();
+    MOZZI_TRY(checkSquare(*a, n, name));
   }
   if (static_cast<Eigen::Index>(dofs.size()) != n) {
     return makeError(ErrorCode::InvalidArgument, "need one DOF label per coordinate", "spatial model");
@@ -160,7 +160,7 @@ Result<ModalModel> modalFromSpatial(const MatrixRef& m, const MatrixRef& c, cons
 }
 
 Result<SpatialModel> spatialFromModal(const ModalModel& model) {
-  if (auto ok = model.validate(); !ok) return ok.error();
+  MOZZI_TRY(model.validate());
   const Eigen::Index n = model.responseCount();
   if (model.referenceCount() != n || static_cast<Eigen::Index>(model.modes.size()) != n) {
     return makeError(ErrorCode::InvalidArgument,
@@ -195,7 +195,7 @@ Result<HystereticModalModel> hystereticModalFromSpatial(const MatrixRef& m, cons
   const Eigen::Index n = m.rows();
   if (n == 0) return makeError(ErrorCode::InvalidArgument, "empty mass matrix", "spatial model");
   for (auto [a, name] : {std::pair<const MatrixRef*, const char*>{&m, "M"}, {&k, "K"}, {&d, "D"}}) {
-    if (auto ok = checkSquare(*a, n, name); !ok) return ok.error();
+    MOZZI_TRY(checkSquare(*a, n, name));
   }
   Eigen::LLT<Matrix> mllt(m);
   if (mllt.info() != Eigen::Success) {

@@ -56,8 +56,7 @@ Result<std::vector<ModalTableRow>> modalTableRows(const ModalModel& model, const
                                                   const std::vector<double>& zStd) {
   std::vector<ModalTableRow> rows;
   if (model.modes.empty()) return rows;
-  auto shapes = modeShapes(model, 0);
-  if (!shapes) return shapes.error();
+  MOZZI_TRY_ASSIGN(const auto shapes, modeShapes(model, 0));
   for (std::size_t r = 0; r < model.modes.size(); ++r) {
     ModalTableRow row;
     row.frequencyHz = model.modes[r].frequencyHz();
@@ -68,7 +67,7 @@ Result<std::vector<ModalTableRow>> modalTableRows(const ModalModel& model, const
       row.zetaStd = zStd[r];
       row.etaStd = 2.0 * zStd[r];
     }
-    const auto col = shapes->shapes.col(static_cast<Eigen::Index>(r));
+    const auto col = shapes.shapes.col(static_cast<Eigen::Index>(r));
     row.mpc = mpc(col);
     row.mpdDegrees = mpdDegrees(col);
     row.complexity = 1.0 - row.mpc;
@@ -144,13 +143,12 @@ Result<io::ModalTable> modalTableOf(const ModalModel& model) {
   io::ModalTable table;
   table.dofs = model.responses;
   if (model.modes.empty()) return table;
-  auto shapes = modeShapes(model, 0);
-  if (!shapes) return shapes.error();
+  MOZZI_TRY_ASSIGN(const auto shapes, modeShapes(model, 0));
   for (std::size_t r = 0; r < model.modes.size(); ++r) {
     io::StoredMode m;
     m.frequencyHz = model.modes[r].frequencyHz();
     m.dampingRatio = model.modes[r].zeta();
-    m.shape = shapes->shapes.col(static_cast<Eigen::Index>(r));
+    m.shape = shapes.shapes.col(static_cast<Eigen::Index>(r));
     table.modes.push_back(std::move(m));
   }
   return table;
@@ -173,11 +171,10 @@ Result<signal::PoleEstimate> unwindowed(double frequencyHz, double zeta, double 
 Result<void> removeExponentialWindow(std::vector<ModalTableRow>& rows, double tauS) {
   if (!(tauS > 0.0)) return {};
   for (std::size_t r = 0; r < rows.size(); ++r) {
-    auto c = unwindowed(rows[r].frequencyHz, rows[r].zeta, tauS, r);
-    if (!c) return c.error();
-    rows[r].frequencyHz = c->naturalFrequencyHz;
-    rows[r].zeta = c->zeta;
-    rows[r].eta = 2.0 * c->zeta;
+    MOZZI_TRY_ASSIGN(auto c, unwindowed(rows[r].frequencyHz, rows[r].zeta, tauS, r));
+    rows[r].frequencyHz = c.naturalFrequencyHz;
+    rows[r].zeta = c.zeta;
+    rows[r].eta = 2.0 * c.zeta;
     if (rows[r].zetaStd) rows[r].etaStd = 2.0 * *rows[r].zetaStd;
   }
   return {};
@@ -186,25 +183,22 @@ Result<void> removeExponentialWindow(std::vector<ModalTableRow>& rows, double ta
 Result<void> removeExponentialWindow(io::ModalTable& table, double tauS) {
   if (!(tauS > 0.0)) return {};
   for (std::size_t r = 0; r < table.modes.size(); ++r) {
-    auto c = unwindowed(table.modes[r].frequencyHz, table.modes[r].dampingRatio, tauS, r);
-    if (!c) return c.error();
-    table.modes[r].frequencyHz = c->naturalFrequencyHz;
-    table.modes[r].dampingRatio = c->zeta;
+    MOZZI_TRY_ASSIGN(auto c, unwindowed(table.modes[r].frequencyHz, table.modes[r].dampingRatio, tauS, r));
+    table.modes[r].frequencyHz = c.naturalFrequencyHz;
+    table.modes[r].dampingRatio = c.zeta;
   }
   return {};
 }
 
 Result<std::int64_t> storeModalResult(io::ProjectStore& store, const ModalModel& model, io::ModalResultInfo info,
                                       const std::string& methodKey, double tauS) {
-  auto table = modalTableOf(model);
-  if (!table) return table.error();
-  if (auto c = removeExponentialWindow(*table, tauS); !c) return c.error();
-  auto existing = store.modalResults();
-  if (!existing) return existing.error();
+  MOZZI_TRY_ASSIGN(auto table, modalTableOf(model));
+  MOZZI_TRY(removeExponentialWindow(table, tauS));
+  MOZZI_TRY_ASSIGN(auto existing, store.modalResults());
   info.method = storedMethodName(methodKey);
-  info.name = uniqueModalResultName(*existing, info.specimenId,
+  info.name = uniqueModalResultName(existing, info.specimenId,
                                     defaultModalResultName(methodKey, info.bandLowHz, info.bandHighHz));
-  return store.addModalResult(info, *table);
+  return store.addModalResult(info, table);
 }
 
 }  // namespace mozzi::core::modal

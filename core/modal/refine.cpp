@@ -57,8 +57,8 @@ std::vector<LineSegment> fitLines(const FrfMatrix& frf, Eigen::Index k0, Eigen::
 
 Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& initial, const RefineOptions& opt) {
   const std::string where = "modal refinement";
-  if (auto ok = frf.validate(); !ok) return ok.error();
-  if (auto ok = initial.validate(); !ok) return ok.error();
+  MOZZI_TRY(frf.validate());
+  MOZZI_TRY(initial.validate());
   if (initial.modes.empty()) return makeError(ErrorCode::InvalidArgument, "no modes to refine", where);
   Eigen::Index k0 = 0;
   while (k0 < frf.lineCount() && (frf.frequencyHz[k0] < opt.bandLowHz || frf.frequencyHz[k0] == 0.0)) ++k0;

@@ -35,15 +35,14 @@
 
 #include "core/common/frf_matrix.h"
 #include "core/common/result.h"
+#include "core/modal/lsfd.h"
 #include "core/modal/modal_model.h"
 
 namespace mozzi::core::modal {
 
-struct RefineOptions {
-  double bandLowHz = 0.0;
-  double bandHighHz = 0.0;
-  bool lowerResidual = true;
-  bool upperResidual = true;
+// The band and the residual terms are those of the LSFD that the fit
+// eliminates (lsfd.h); the rest steers the iteration.
+struct RefineOptions : LsfdOptions {
   int maxIterations = 50;
   // More lines than this in the band: fit on the lines carrying the modes
   // (see above). 0 = every line of the band.

@@ -15,7 +15,7 @@ struct Band {
 };
 
 Result<Band> band(const FrfMatrix& frf, Eigen::Index reference, double lo, double hi, const char* who) {
-  if (auto ok = frf.validate(); !ok) return ok.error();
+  MOZZI_TRY(frf.validate());
   if (reference < 0 || reference >= frf.referenceCount()) {
     return makeError(ErrorCode::NotFound, "reference index out of range", who);
   }
@@ -40,18 +40,17 @@ Complex as(const FrfMatrix& frf, Eigen::Index i, Eigen::Index k, Eigen::Index o,
 
 Result<SdofEstimate> peakPicking(const FrfMatrix& frf, Eigen::Index reference, double lo, double hi) {
   const char* who = "peak picking";
-  auto b = band(frf, reference, lo, hi, who);
-  if (!b) return b.error();
+  MOZZI_TRY_ASSIGN(auto b, band(frf, reference, lo, hi, who));
   const auto& h = frf.h[static_cast<std::size_t>(reference)];
-  Vector power = h.middleRows(b->k0, b->nf).cwiseAbs2().rowwise().sum();
+  Vector power = h.middleRows(b.k0, b.nf).cwiseAbs2().rowwise().sum();
   Eigen::Index kp = 0;
   power.maxCoeff(&kp);
-  if (kp == 0 || kp == b->nf - 1) {
+  if (kp == 0 || kp == b.nf - 1) {
     return makeError(ErrorCode::NotFound, "the largest response is on the band edge: the band holds no resonance peak",
                      who);
   }
   const Vector& f = frf.frequencyHz;
-  const Eigen::Index K = b->k0 + kp;
+  const Eigen::Index K = b.k0 + kp;
   // Parabolic interpolation of the peak over lines K-1, K, K+1.
   const double y0 = power[kp - 1], y1 = power[kp], y2 = power[kp + 1];
   const double den = y0 - 2 * y1 + y2;
@@ -62,7 +61,7 @@ Result<SdofEstimate> peakPicking(const FrfMatrix& frf, Eigen::Index reference, d
   h.row(K).cwiseAbs().maxCoeff(&o);
   const double half = std::abs(h(K, o)) / std::sqrt(2.0);
   auto cross = [&](int dir) -> double {
-    for (Eigen::Index k = K; k + dir >= b->k0 && k + dir < b->k0 + b->nf; k += dir) {
+    for (Eigen::Index k = K; k + dir >= b.k0 && k + dir < b.k0 + b.nf; k += dir) {
       const double a0 = std::abs(h(k, o)), a1 = std::abs(h(k + dir, o));
       if (a1 <= half) return f[k] + (f[k + dir] - f[k]) * (a0 - half) / (a0 - a1);
     }
@@ -88,17 +87,16 @@ Result<SdofEstimate> peakPicking(const FrfMatrix& frf, Eigen::Index reference, d
 
 Result<SdofEstimate> circleFit(const FrfMatrix& frf, Eigen::Index reference, double lo, double hi) {
   const char* who = "circle fit";
-  auto b = band(frf, reference, lo, hi, who);
-  if (!b) return b.error();
-  const Eigen::Index nf = b->nf, no = frf.responseCount();
+  MOZZI_TRY_ASSIGN(const Band b, band(frf, reference, lo, hi, who));
+  const Eigen::Index nf = b.nf, no = frf.responseCount();
   Vector w(nf);
-  for (Eigen::Index k = 0; k < nf; ++k) w[k] = kTwoPi * frf.frequencyHz[b->k0 + k];
+  for (Eigen::Index k = 0; k < nf; ++k) w[k] = kTwoPi * frf.frequencyHz[b.k0 + k];
   double sumWeights = 0.0, sumF = 0.0, sumZ = 0.0;
   std::vector<Complex> centres(static_cast<std::size_t>(no));
   std::vector<double> radii(static_cast<std::size_t>(no));
   for (Eigen::Index o = 0; o < no; ++o) {
     ComplexVector y(nf);
-    for (Eigen::Index k = 0; k < nf; ++k) y[k] = as(frf, reference, b->k0 + k, o, FrfType::Mobility);
+    for (Eigen::Index k = 0; k < nf; ++k) y[k] = as(frf, reference, b.k0 + k, o, FrfType::Mobility);
     // Kasa fit: x^2 + y^2 + D x + E y + F = 0 in least squares.
     Matrix a(nf, 3);
     Vector rhs(nf);

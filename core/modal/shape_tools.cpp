@@ -78,7 +78,7 @@ ComplexMatrix normaliseMaxComponent(const ComplexMatrixRef& shapes) {
 }
 
 Result<ShapeSet> modeShapes(const ModalModel& model, Eigen::Index reference) {
-  if (auto ok = model.validate(); !ok) return ok.error();
+  MOZZI_TRY(model.validate());
   if (reference < 0 || reference >= model.referenceCount()) {
     return makeError(ErrorCode::NotFound, "reference index out of range", "mode shapes");
   }
@@ -115,7 +115,7 @@ Result<ShapeSet> modeShapes(const ModalModel& model, Eigen::Index reference) {
 }
 
 Result<Matrix> cmif(const FrfMatrix& frf) {
-  if (auto ok = frf.validate(); !ok) return ok.error();
+  MOZZI_TRY(frf.validate());
   const Eigen::Index nf = frf.lineCount(), no = frf.responseCount(), ni = frf.referenceCount();
   Matrix out(nf, std::min(no, ni));
   ComplexMatrix hk(no, ni);
@@ -128,7 +128,7 @@ Result<Matrix> cmif(const FrfMatrix& frf) {
 }
 
 Result<Vector> mif(const FrfMatrix& frf, Eigen::Index reference) {
-  if (auto ok = frf.validate(); !ok) return ok.error();
+  MOZZI_TRY(frf.validate());
   if (reference < 0 || reference >= frf.referenceCount()) {
     return makeError(ErrorCode::NotFound, "reference index out of range", "MIF");
   }

@@ -228,7 +228,7 @@ Result<StabilizationDiagram> stabilizationOnFewerReferences(const FrfMatrix& frf
                                                             const StabilizationEstimator& estimate) {
   if (frf.referenceCount() <= frf.responseCount()) return estimate(frf);
   // Errors name the DOFs in the caller's orientation.
-  if (auto ok = frf.validate(); !ok) return ok.error();
+  MOZZI_TRY(frf.validate());
   auto diagram = estimate(frf.transposed());
   if (!diagram) return diagram;
   for (auto& p : diagram->poles) std::swap(p.participation, p.shape);

@@ -42,9 +42,7 @@ Result<ReportTemplate> templateFromJson(const std::string& text) {
   }
   if (j.contains("language")) {
     if (!j["language"].is_string()) return makeError(ErrorCode::ParseError, "\"language\" is not text", where);
-    auto language = parseLanguage(j["language"].get<std::string>());
-    if (!language) return language.error();
-    t.language = *language;
+    MOZZI_TRY_ASSIGN(t.language, parseLanguage(j["language"].get<std::string>()));
   }
   for (const char* flag : {"pdf", "html"}) {
     if (!j.contains(flag)) continue;
@@ -56,10 +54,9 @@ Result<ReportTemplate> templateFromJson(const std::string& text) {
 }
 
 Result<std::optional<ReportTemplate>> loadReportTemplate(const io::ProjectStore& store) {
-  auto value = io::metaValue(store, kReportTemplateKey);
-  if (!value) return value.error();
-  if (!*value) return std::optional<ReportTemplate>();
-  auto t = templateFromJson(**value);
+  MOZZI_TRY_ASSIGN(auto value, io::metaValue(store, kReportTemplateKey));
+  if (!value) return std::optional<ReportTemplate>();
+  auto t = templateFromJson(*value);
   if (!t) {
     Error e = t.error();
     e.where = store.path() + ", " + e.where;

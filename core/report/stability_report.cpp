@@ -42,9 +42,8 @@ bool hasOwnStabilitySection(const std::string& analysisKind) {
 Result<bool> stabilitySection(const io::ProjectStore& store, const std::map<std::int64_t, std::string>& specimens,
                               Section& s) {
   std::vector<std::int64_t> unreadable;
-  auto records = st::storedStabilityRecords(store, &unreadable);
-  if (!records) return records.error();
-  for (const auto& r : *records) {
+  MOZZI_TRY_ASSIGN(auto records, st::storedStabilityRecords(store, &unreadable));
+  for (const auto& r : records) {
     if (!specimens.count(r.specimenId)) continue;
     const st::StabilityRecord& rec = r.record;
     s.blocks.push_back(Heading{r.name + " (" + specimenOf(specimens, r.specimenId) + ")"});
@@ -81,9 +80,8 @@ Result<bool> stabilitySection(const io::ProjectStore& store, const std::map<std:
 
 Result<bool> wheelchairSection(const io::ProjectStore& store, const std::map<std::int64_t, std::string>& specimens,
                                Section& s) {
-  auto records = st::storedWheelchairRecords(store);
-  if (!records) return records.error();
-  for (const auto& r : *records) {
+  MOZZI_TRY_ASSIGN(auto records, st::storedWheelchairRecords(store));
+  for (const auto& r : records) {
     if (!specimens.count(r.specimenId)) continue;
     const st::WheelchairStudy& study = r.record.study;
     const bool slalom = study.manoeuvre == "slalom";

@@ -11,27 +11,22 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "core/common/enum_names.h"
 #include "core/common/text.h"
 
 namespace mozzi::core::signal {
 
+namespace {
+constexpr auto kEstimatorNames =
+    enumTable<FrfEstimator>({{FrfEstimator::H1, "H1"}, {FrfEstimator::H2, "H2"}, {FrfEstimator::Hv, "Hv"}}, "H1");
+}  // namespace
+
 const char* frfEstimatorName(FrfEstimator estimator) {
-  switch (estimator) {
-    case FrfEstimator::H1: return "H1";
-    case FrfEstimator::H2: return "H2";
-    case FrfEstimator::Hv: return "Hv";
-  }
-  return "H1";
+  return kEstimatorNames.of(estimator);
 }
 
 Result<FrfEstimator> parseFrfEstimator(std::string_view text) {
-  std::string t(text);
-  std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (t == "h1") return FrfEstimator::H1;
-  if (t == "h2") return FrfEstimator::H2;
-  if (t == "hv") return FrfEstimator::Hv;
-  return makeError(ErrorCode::ParseError, "unknown FRF estimator '" + std::string(text) + "' (expected H1, H2 or Hv)",
-                   "estimator");
+  return parseEnum(kEstimatorNames, text, "FRF estimator", "estimator", NameCase::Ignore);
 }
 
 FrfOptions FrfOptions::hammer(FrfEstimator estimator, std::optional<double> forceWidthS, double forceTaperS,

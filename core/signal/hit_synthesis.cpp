@@ -63,8 +63,7 @@ Result<TimeRecord> synthesizeHammerHit(const LinearMdof& system, const HammerHit
   };
   Matrix forceFine = Matrix::Zero(nFine, n);
   for (Eigen::Index i = 0; i < nFine; ++i) forceFine(i, spec.excitedDof) = pulse(static_cast<double>(i) / fsFine);
-  auto sim = simulateMdof(system, forceFine, fsFine, ForceHold::FirstOrder);
-  if (!sim) return sim.error();
+  MOZZI_TRY_ASSIGN(auto sim, simulateMdof(system, forceFine, fsFine, ForceHold::FirstOrder));
 
   TimeRecord rec;
   rec.sampleRateHz = spec.sampleRateHz;
@@ -75,13 +74,13 @@ Result<TimeRecord> synthesizeHammerHit(const LinearMdof& system, const HammerHit
   force.dof = label(spec.excitedDof);
   force.fullScale = spec.fullScale;
   rec.channels.push_back(force);
-  const Matrix* source = &sim->acceleration;
+  const Matrix* source = &sim.acceleration;
   const char* unit = "m/s^2";
   if (spec.responseKind == TransducerKind::Velocity) {
-    source = &sim->velocity;
+    source = &sim.velocity;
     unit = "m/s";
   } else if (spec.responseKind == TransducerKind::Displacement) {
-    source = &sim->displacement;
+    source = &sim.displacement;
     unit = "m";
   } else if (spec.responseKind != TransducerKind::Acceleration) {
     return makeError(ErrorCode::Unsupported, "responses can be acceleration, velocity or displacement", where);
@@ -101,19 +100,18 @@ Result<TimeRecord> synthesizeHammerHit(const LinearMdof& system, const HammerHit
   for (std::size_t j = 0; j < measured.size(); ++j)
     fine.col(static_cast<Eigen::Index>(j + 1)) = source->col(measured[j]);
   if (spec.oversampling > 1) {
-    auto fft = RealFft::forLength(nFine);
-    if (!fft) return fft.error();
-    ComplexVector spectrum((*fft)->lineCount());
+    MOZZI_TRY_ASSIGN(auto fft, RealFft::forLength(nFine));
+    ComplexVector spectrum(fft->lineCount());
     const double fc = 0.4 * spec.sampleRateHz;
     for (Eigen::Index c = 0; c < fine.cols(); ++c) {
       Vector col = fine.col(c);
-      (*fft)->forward(col.data(), spectrum.data());
+      fft->forward(col.data(), spectrum.data());
       for (Eigen::Index k = 0; k < spectrum.size(); ++k) {
         // |G(f)| = 1 / sqrt(1 + (f / fc)^8): zero-phase 4th-order Butterworth magnitude
         const double r = static_cast<double>(k) * fsFine / static_cast<double>(nFine) / fc;
         spectrum[k] *= 1.0 / std::sqrt(1.0 + std::pow(r, 8)) / static_cast<double>(nFine);
       }
-      if (!(*fft)->inverse(spectrum.data(), col.data())) {
+      if (!fft->inverse(spectrum.data(), col.data())) {
         return makeError(ErrorCode::NumericalFailure, "FFTW could not plan the inverse FFT", "hammer hit synthesis");
       }
       fine.col(c) = col;

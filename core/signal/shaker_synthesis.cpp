@@ -35,8 +35,7 @@ Result<std::vector<TimeRecord>> synthesizeShakerBlocks(const LinearMdof& system,
   }
   const Eigen::Index n = spec.blockSamples, nFine = n * spec.oversampling, nf = n / 2 + 1;
   const Eigen::Index periods = spec.settleBlocks + 1;
-  auto fft = RealFft::forLength(nFine);
-  if (!fft) return fft.error();
+  MOZZI_TRY_ASSIGN(auto fft, RealFft::forLength(nFine));
   std::mt19937_64 rng(spec.seed);
   std::uniform_real_distribution<double> phase(0.0, 2.0 * kPi);
   std::normal_distribution<double> normal;
@@ -85,7 +84,7 @@ Result<std::vector<TimeRecord>> synthesizeShakerBlocks(const LinearMdof& system,
         const bool realLine = k == 0 || (n % 2 == 0 && k == nf - 1);
         spectrum[k] = realLine ? Complex(lineAmp * std::cos(p) * fineN, 0.0) : std::polar(lineAmp * 0.5 * fineN, p);
       }
-      if (!(*fft)->inverse(spectrum.data(), period.data())) {  // unnormalised: n x(t)
+      if (!fft->inverse(spectrum.data(), period.data())) {  // unnormalised: n x(t)
         return makeError(ErrorCode::NumericalFailure, "FFTW could not plan the inverse FFT", "shaker synthesis");
       }
       period /= fineN;
@@ -93,12 +92,11 @@ Result<std::vector<TimeRecord>> synthesizeShakerBlocks(const LinearMdof& system,
         force.col(spec.forcedDofs[static_cast<std::size_t>(i)]).segment(p * nFine, nFine) = period;
       }
     }
-    auto resp =
-        simulateMdof(system, force, spec.sampleRateHz * static_cast<double>(spec.oversampling), ForceHold::FirstOrder);
-    if (!resp) return resp.error();
-    const Matrix& y = spec.responseKind == TransducerKind::Displacement ? resp->displacement
-                      : spec.responseKind == TransducerKind::Velocity   ? resp->velocity
-                                                                        : resp->acceleration;
+    MOZZI_TRY_ASSIGN(auto resp, simulateMdof(system, force, spec.sampleRateHz * static_cast<double>(spec.oversampling),
+                                             ForceHold::FirstOrder));
+    const Matrix& y = spec.responseKind == TransducerKind::Displacement ? resp.displacement
+                      : spec.responseKind == TransducerKind::Velocity   ? resp.velocity
+                                                                        : resp.acceleration;
     TimeRecord rec = layout;
     rec.samples.resize(n, nr + nd);
     const Eigen::Index first = spec.settleBlocks * nFine;

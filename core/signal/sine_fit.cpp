@@ -66,6 +66,21 @@ class SineResidual final : public ceres::SizedCostFunction<1, 4> {
  private:
   double t_, y_;
 };
+// The residual statistics of a least-squares fit of `parameters` values to
+// n samples with residual sum of squares rss: RMS, sigma = sqrt(rss / (n - p))
+// and the 97.5% Student-t quantile for n - p degrees of freedom.
+SineFit residualStatistics(double frequencyHz, double offset, Eigen::Index n, int parameters, double rss) {
+  SineFit fit;
+  fit.frequencyHz = frequencyHz;
+  fit.offset = offset;
+  fit.sampleCount = n;
+  fit.degreesOfFreedom = static_cast<int>(n - parameters);
+  fit.residualRms = std::sqrt(rss / static_cast<double>(n));
+  fit.sigma = std::sqrt(rss / static_cast<double>(n - parameters));
+  fit.tQuantile95 = studentT975(fit.degreesOfFreedom);
+  return fit;
+}
+
 }  // namespace
 
 double wrapPhase(double phi) {
@@ -86,7 +101,7 @@ double studentT975(int dof) {
 
 Result<SineFit> fitSineKnownFrequency(VectorRef y, double fs, double frequencyHz, double t0) {
   const char* where = "sine fit (known frequency)";
-  if (auto ok = checkInput(y, fs, where); !ok) return ok.error();
+  MOZZI_TRY(checkInput(y, fs, where));
   if (!std::isfinite(frequencyHz) || frequencyHz <= 0.0 || frequencyHz >= 0.5 * fs) {
     return makeError(
         ErrorCode::InvalidArgument,
@@ -110,15 +125,7 @@ Result<SineFit> fitSineKnownFrequency(VectorRef y, double fs, double frequencyHz
   }
   const Eigen::Vector3d beta = qr.solve(y);
   const Vector res = y - x * beta;
-  const double rss = res.squaredNorm();
-  SineFit fit;
-  fit.frequencyHz = frequencyHz;
-  fit.offset = beta[2];
-  fit.sampleCount = n;
-  fit.degreesOfFreedom = static_cast<int>(n - 3);
-  fit.residualRms = std::sqrt(rss / static_cast<double>(n));
-  fit.sigma = std::sqrt(rss / static_cast<double>(n - 3));
-  fit.tQuantile95 = studentT975(fit.degreesOfFreedom);
+  SineFit fit = residualStatistics(frequencyHz, beta[2], n, 3, res.squaredNorm());
   // Cov(beta) = s^2 (X'X)^-1
   const Eigen::Matrix3d cov = fit.sigma * fit.sigma * (x.transpose() * x).inverse();
   fit.offsetStdError = std::sqrt(cov(2, 2));
@@ -128,7 +135,7 @@ Result<SineFit> fitSineKnownFrequency(VectorRef y, double fs, double frequencyHz
 
 Result<SineFit> fitSine(VectorRef y, double fs, std::optional<double> guessHz, double t0) {
   const char* where = "sine fit (unknown frequency)";
-  if (auto ok = checkInput(y, fs, where); !ok) return ok.error();
+  MOZZI_TRY(checkInput(y, fs, where));
   const Eigen::Index n = y.size();
   double f0 = 0.0;
   if (guessHz) {
@@ -139,11 +146,9 @@ Result<SineFit> fitSine(VectorRef y, double fs, std::optional<double> guessHz, d
     const Eigen::Index np = 4 * n;
     Vector padded = Vector::Zero(np);
     padded.head(n) = y.array() - y.mean();
-    auto fft = RealFft::forLength(np);
-    if (!fft) return fft.error();
-    auto spec = (*fft)->transform(padded);
-    if (!spec) return spec.error();
-    const Vector mag = spec->cwiseAbs();
+    MOZZI_TRY_ASSIGN(auto fft, RealFft::forLength(np));
+    MOZZI_TRY_ASSIGN(auto spec, fft->transform(padded));
+    const Vector mag = spec.cwiseAbs();
     Eigen::Index k = 1;
     for (Eigen::Index j = 1; j < mag.size() - 1; ++j) {
       if (mag[j] > mag[k]) k = j;
@@ -160,14 +165,13 @@ Result<SineFit> fitSine(VectorRef y, double fs, std::optional<double> guessHz, d
     return makeError(ErrorCode::InvalidArgument, "starting frequency must lie in (0, fs/2)", where);
   }
   // linear start at f0, then all four parameters together
-  auto start = fitSineKnownFrequency(y, fs, f0, t0);
-  if (!start) return start.error();
+  MOZZI_TRY_ASSIGN(auto start, fitSineKnownFrequency(y, fs, f0, t0));
   double p[4];
   {
-    const double A = start->amplitude, ph = start->phaseRad;
+    const double A = start.amplitude, ph = start.phaseRad;
     p[0] = A * std::cos(ph);
     p[1] = -A * std::sin(ph);
-    p[2] = start->offset;
+    p[2] = start.offset;
     p[3] = 2.0 * kPi * f0;
   }
   ceres::Problem problem;
@@ -208,15 +212,7 @@ Result<SineFit> fitSine(VectorRef y, double fs, std::optional<double> guessHz, d
   if (!lu.isInvertible()) {
     return makeError(ErrorCode::NumericalFailure, "fit is singular (no sine in the record?)", where);
   }
-  const double rss = res.squaredNorm();
-  SineFit fit;
-  fit.frequencyHz = w / (2.0 * kPi);
-  fit.offset = p[2];
-  fit.sampleCount = n;
-  fit.degreesOfFreedom = static_cast<int>(n - 4);
-  fit.residualRms = std::sqrt(rss / static_cast<double>(n));
-  fit.sigma = std::sqrt(rss / static_cast<double>(n - 4));
-  fit.tQuantile95 = studentT975(fit.degreesOfFreedom);
+  SineFit fit = residualStatistics(w / (2.0 * kPi), p[2], n, 4, res.squaredNorm());
   const Eigen::Matrix4d cov = fit.sigma * fit.sigma * lu.inverse();
   fit.offsetStdError = std::sqrt(std::max(0.0, cov(2, 2)));
   fit.frequencyStdError = std::sqrt(std::max(0.0, cov(3, 3))) / (2.0 * kPi);

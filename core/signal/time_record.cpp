@@ -2,18 +2,23 @@
 
 #include <cmath>
 
+#include "core/common/enum_names.h"
+
 namespace mozzi::core::signal {
 
+namespace {
+constexpr EnumEntry<TransducerKind, const char*> kTransducerKindEntries[] = {
+    {TransducerKind::Force, "force"},
+    {TransducerKind::Acceleration, "acceleration"},
+    {TransducerKind::Velocity, "velocity"},
+    {TransducerKind::Displacement, "displacement"},
+    {TransducerKind::AngularRate, "angular rate"},
+    {TransducerKind::Other, "other"}};
+constexpr auto kTransducerKindNames = enumTable(kTransducerKindEntries, "other");
+}  // namespace
+
 const char* transducerKindName(TransducerKind kind) {
-  switch (kind) {
-    case TransducerKind::Force: return "force";
-    case TransducerKind::Acceleration: return "acceleration";
-    case TransducerKind::Velocity: return "velocity";
-    case TransducerKind::Displacement: return "displacement";
-    case TransducerKind::AngularRate: return "angular rate";
-    case TransducerKind::Other: return "other";
-  }
-  return "other";
+  return kTransducerKindNames.of(kind);
 }
 
 namespace {

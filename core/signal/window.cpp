@@ -111,7 +111,7 @@ PoleEstimate poleFrom(double sigma, double omegaD) {
 
 Result<PoleEstimate> correctExponentialWindowDamping(const PoleEstimate& measured, double tauS) {
   const char* where = "exponential window damping correction";
-  if (auto ok = checkPole(measured, tauS, where); !ok) return ok.error();
+  MOZZI_TRY(checkPole(measured, tauS, where));
   const double omegaM = 2.0 * kPi * measured.naturalFrequencyHz;
   const double sigma = measured.zeta * omegaM - exponentialWindowAddedDecayRate(tauS);  // sigma_true = sigma_m - 1/tau
   const double omegaD = omegaM * std::sqrt(1.0 - measured.zeta * measured.zeta);        // unchanged by the window
@@ -127,7 +127,7 @@ Result<PoleEstimate> correctExponentialWindowDamping(const PoleEstimate& measure
 
 Result<PoleEstimate> applyExponentialWindowDamping(const PoleEstimate& truePole, double tauS) {
   const char* where = "exponential window damping";
-  if (auto ok = checkPole(truePole, tauS, where); !ok) return ok.error();
+  MOZZI_TRY(checkPole(truePole, tauS, where));
   const double omegaN = 2.0 * kPi * truePole.naturalFrequencyHz;
   const double sigma = truePole.zeta * omegaN + exponentialWindowAddedDecayRate(tauS);
   const double omegaD = omegaN * std::sqrt(1.0 - truePole.zeta * truePole.zeta);

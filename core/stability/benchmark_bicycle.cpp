@@ -43,8 +43,7 @@ BenchmarkParameters meijaard2007Parameters() {
 }
 
 Result<BenchmarkParameters> loadBenchmarkParameters(const std::string& path) {
-  auto file = readParameterFile(path, "benchmark bicycle");
-  if (!file) return file.error();
+  MOZZI_TRY_ASSIGN(auto file, readParameterFile(path, "benchmark bicycle"));
   BenchmarkParameters p;
   const std::vector<std::pair<const char*, double*>> fields = {
       {"w", &p.w},       {"c", &p.c},       {"lambda", &p.lambda}, {"g", &p.g},       {"rR", &p.rR}, {"mR", &p.mR},
@@ -52,8 +51,8 @@ Result<BenchmarkParameters> loadBenchmarkParameters(const std::string& path) {
       {"IBxz", &p.IBxz}, {"IByy", &p.IByy}, {"IBzz", &p.IBzz},     {"xH", &p.xH},     {"zH", &p.zH}, {"mH", &p.mH},
       {"IHxx", &p.IHxx}, {"IHxz", &p.IHxz}, {"IHyy", &p.IHyy},     {"IHzz", &p.IHzz}, {"rF", &p.rF}, {"mF", &p.mF},
       {"IFxx", &p.IFxx}, {"IFyy", &p.IFyy}};
-  if (auto taken = takeParameters(*file, fields, path); !taken) return taken.error();
-  if (auto ok = validate(p); !ok) return ok.error();
+  MOZZI_TRY(takeParameters(file, fields, path));
+  MOZZI_TRY(validate(p));
   return p;
 }
 
@@ -87,7 +86,7 @@ Result<void> validate(const BenchmarkParameters& p) {
 }
 
 Result<BicycleModel> benchmarkModel(const BenchmarkParameters& p) {
-  if (auto ok = validate(p); !ok) return ok.error();
+  MOZZI_TRY(validate(p));
   const double sl = std::sin(p.lambda), cl = std::cos(p.lambda);
   // Appendix A: totals of the whole bicycle T.
   const double mT = p.mR + p.mB + p.mH + p.mF;

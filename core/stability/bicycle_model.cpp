@@ -72,7 +72,7 @@ Result<void> validate(const BicycleModel& model) {
 
 Result<Matrix> BicycleModel::stateMatrix(double v) const {
   if (!std::isfinite(v)) return makeError(ErrorCode::InvalidArgument, "speed is not finite", "v");
-  if (auto ok = validate(*this); !ok) return ok.error();
+  MOZZI_TRY(validate(*this));
   const int n = size();
   const Eigen::LLT<Matrix> llt(M);
   Matrix A = Matrix::Zero(2 * n, 2 * n);
@@ -91,16 +91,15 @@ Result<ComplexVector> BicycleModel::eigenvalues(double v) const {
   if (n == 3 && M.cols() == 3 && C1.rows() == 3 && K0.rows() == 3 && K2.rows() == 3 && C.rows() == 3 && K.rows() == 3) {
     return eigenvaluesFixed<3>(*this, v);
   }
-  auto A = stateMatrix(v);
-  if (!A) return A.error();
-  if (!A->allFinite()) {
+  MOZZI_TRY_ASSIGN(auto A, stateMatrix(v));
+  if (!A.allFinite()) {
     return makeError(ErrorCode::NumericalFailure, "the state matrix is not finite (a parameter out of range)", "v");
   }
-  balanceInPlace(*A);
-  if (!A->allFinite()) {
+  balanceInPlace(A);
+  if (!A.allFinite()) {
     return makeError(ErrorCode::NumericalFailure, "the state matrix is not finite (a parameter out of range)", "v");
   }
-  Eigen::EigenSolver<Matrix> es(*A, false);
+  Eigen::EigenSolver<Matrix> es(A, false);
   if (es.info() != Eigen::Success) return makeError(ErrorCode::NumericalFailure, "eigenvalue iteration failed", "v");
   return ComplexVector(es.eigenvalues());
 }

@@ -12,7 +12,7 @@ ForkTorsion thesisSteelForkTorsion() {
 }  // thesis §6.4, eq. 54-55
 
 Result<VehicleTopology> bicycleTopology(const BenchmarkParameters& p, ForkJoint joint, double jointGeometry) {
-  if (auto ok = validate(p); !ok) return ok.error();
+  MOZZI_TRY(validate(p));
   if (!std::isfinite(jointGeometry)) {
     return makeError(ErrorCode::InvalidArgument, "joint position is not finite", "fork joint");
   }
@@ -56,9 +56,8 @@ Result<VehicleTopology> bicycleTopology(const BenchmarkParameters& p, ForkJoint 
 }
 
 Result<BicycleModel> whippleFromBodies(const BenchmarkParameters& p) {
-  auto t = bicycleTopology(p, ForkJoint::None, 0.0);
-  if (!t) return t.error();
-  return rollingBicycleModel(*t);
+  MOZZI_TRY_ASSIGN(auto t, bicycleTopology(p, ForkJoint::None, 0.0));
+  return rollingBicycleModel(t);
 }
 
 namespace {
@@ -71,9 +70,8 @@ Result<BicycleModel> withJoint(const BenchmarkParameters& p, ForkJoint joint, do
   if (!(c >= 0.0) || !std::isfinite(c)) {
     return makeError(ErrorCode::InvalidArgument, "damping must be non-negative and finite", std::string(what) + " c");
   }
-  auto t = bicycleTopology(p, joint, geometry);
-  if (!t) return t.error();
-  auto m = rollingBicycleModel(*t);
+  MOZZI_TRY_ASSIGN(auto t, bicycleTopology(p, joint, geometry));
+  auto m = rollingBicycleModel(t);
   if (!m) return m.error();
   m->K(2, 2) = k;  // eq. 65, [K^B]
   m->C(2, 2) = c;  // eq. 65, [C^B]

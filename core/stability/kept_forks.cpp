@@ -24,10 +24,8 @@ Result<KeptFork> keptForkFromJson(const std::string& text, const std::string& ki
   KeptFork f;
   if (kind == "lumped-fork") {
     f.motorcycle = true;
-    auto mass = number(j, "inputs", "vibrating_mass_kg");
-    auto wheelCentre = number(j, "inputs", "wheel_centre_height_m");
-    if (!mass) return mass.error();
-    if (!wheelCentre) return wheelCentre.error();
+    MOZZI_TRY_ASSIGN(const double mass, number(j, "inputs", "vibrating_mass_kg"));
+    MOZZI_TRY_ASSIGN(const double wheelCentre, number(j, "inputs", "wheel_centre_height_m"));
     if (!j.contains("models")) return makeError(ErrorCode::InvalidArgument, "no 'models'", "kept fork");
     for (int i = 0; i < 3; ++i) {
       const std::string key = "model" + std::to_string(i + 1);
@@ -38,7 +36,7 @@ Result<KeptFork> keptForkFromJson(const std::string& text, const std::string& ki
       auto L = number(models, key.c_str(), "arm_m");
       if (!k || !c || !J || !L) continue;  // a model the page could not compute
       f.lumped[static_cast<std::size_t>(i)] =
-          LumpedForkModel{"kept " + key, *k, *c, *J, *mass, *L - *wheelCentre, *L};  // arm below the axis
+          LumpedForkModel{"kept " + key, *k, *c, *J, mass, *L - wheelCentre, *L};  // arm below the axis
     }
     if (!f.lumped[0] && !f.lumped[1] && !f.lumped[2])
       return makeError(ErrorCode::InvalidArgument, "no complete lumped model", "kept fork");
@@ -60,10 +58,9 @@ Result<KeptFork> keptForkFromJson(const std::string& text, const std::string& ki
 }
 
 Result<std::vector<KeptFork>> keptForks(const io::ProjectStore& store, std::vector<std::int64_t>* unreadable) {
-  auto analyses = store.analyses();
-  if (!analyses) return analyses.error();
+  MOZZI_TRY_ASSIGN(auto analyses, store.analyses());
   std::vector<KeptFork> out;
-  for (const auto& a : *analyses) {
+  for (const auto& a : analyses) {
     if (a.kind != "lumped-fork" && a.kind != "bicycle-fork") continue;
     auto f = keptForkFromJson(a.resultJson, a.kind);
     if (!f) {

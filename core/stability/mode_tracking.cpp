@@ -26,13 +26,12 @@ Result<void> requireFinite(const Matrix& A, double v) {
 }
 
 Result<ComplexVector> eigenvaluesOnly(const StabilitySystem& s, double v) {
-  auto A = s.stateMatrix(v);
-  if (!A) return A.error();
-  if (auto f = requireFinite(*A, v); !f) return f.error();
-  balanceInPlace(*A);
-  if (auto f = requireFinite(*A, v); !f) return f.error();
+  MOZZI_TRY_ASSIGN(auto A, s.stateMatrix(v));
+  MOZZI_TRY(requireFinite(A, v));
+  balanceInPlace(A);
+  MOZZI_TRY(requireFinite(A, v));
   thread_local Eigen::EigenSolver<Matrix> es;  // its workspaces reused from speed to speed
-  es.compute(*A, false);
+  es.compute(A, false);
   if (es.info() != Eigen::Success || !es.eigenvalues().allFinite()) {
     return makeError(ErrorCode::NumericalFailure, "eigenvalue iteration failed", "v = " + std::to_string(v));
   }
@@ -133,23 +132,22 @@ Result<std::vector<double>> speedGrid(double from, double to, double step) {
 }
 
 Result<SpeedPoint> solveAtSpeed(const StabilitySystem& s, double v) {
-  auto A = s.stateMatrix(v);
-  if (!A) return A.error();
+  MOZZI_TRY_ASSIGN(auto A, s.stateMatrix(v));
   if (s.shapeRows.size() != s.shapeNames.size() || s.shapeIsRate.size() != s.shapeNames.size() ||
       s.shapeNames.empty()) {
     return makeError(ErrorCode::InvalidArgument, "shape rows, names and rate flags differ in length",
                      "stability system");
   }
   for (int row : s.shapeRows)
-    if (row < 0 || row >= A->rows())
+    if (row < 0 || row >= A.rows())
       return makeError(ErrorCode::InvalidArgument, "shape row out of range", "stability system");
-  if (auto f = requireFinite(*A, v); !f) return f.error();
-  const Vector scale = balanceInPlace(*A);
-  if (auto f = requireFinite(*A, v); !f) return f.error();
+  MOZZI_TRY(requireFinite(A, v));
+  const Vector scale = balanceInPlace(A);
+  MOZZI_TRY(requireFinite(A, v));
   // One solver per thread, its workspaces reused from speed to speed (no
   // allocation once warm; issue 22: 10,000 speeds in 50 ms).
   thread_local Eigen::EigenSolver<Matrix> es;
-  es.compute(*A, true);
+  es.compute(A, true);
   const ComplexVector& values = es.eigenvalues();
   // Real Schur vectors: column i of a real root is its eigenvector; for a
   // pair (Im > 0 first, as Eigen orders it) columns i and i + 1 hold the real
@@ -200,12 +198,11 @@ std::vector<ModeEvent> refineEvents(const StabilitySystem& s, const std::vector<
                                     const std::vector<Track>& tracks) {
   // Events, refined with Brent on eigenvalues only.
   auto nearestRoot = [&](double v, Complex target, bool allowConjugates) -> Result<Complex> {
-    auto ev = eigenvaluesOnly(s, v);
-    if (!ev) return ev.error();
-    Complex best = (*ev)(0);
+    MOZZI_TRY_ASSIGN(auto ev, eigenvaluesOnly(s, v));
+    Complex best = ev(0);
     double bestDist = -1.0;
-    for (int i = 0; i < ev->size(); ++i) {
-      const Complex l = (*ev)(i);
+    for (int i = 0; i < ev.size(); ++i) {
+      const Complex l = ev(i);
       if (!allowConjugates && l.imag() < 0.0) continue;
       const double d = std::abs(l - target);
       if (bestDist < 0.0 || d < bestDist) {
@@ -457,12 +454,11 @@ Result<StabilitySweep> sweepSpeeds(const StabilitySystem& s, const std::vector<d
     grid.push_back(speeds[k]);
     requested.push_back(true);
   }
-  auto sweep = sweepOnGrid(s, grid);
-  if (!sweep) return sweep.error();
+  MOZZI_TRY_ASSIGN(auto sweep, sweepOnGrid(s, grid));
   StabilitySweep out;
-  out.events = std::move(sweep->events);
+  out.events = std::move(sweep.events);
   for (size_t k = 0; k < grid.size(); ++k)
-    if (requested[k]) out.points.push_back(std::move(sweep->points[k]));
+    if (requested[k]) out.points.push_back(std::move(sweep.points[k]));
   return out;
 }
 

@@ -12,17 +12,16 @@
 namespace mozzi::core::stability {
 
 Result<SharpParameters> loadSharpParameters(const std::string& path) {
-  auto file = readParameterFile(path, "motorcycle");
-  if (!file) return file.error();
+  MOZZI_TRY_ASSIGN(auto file, readParameterFile(path, "motorcycle"));
   SharpParameters p;
-  p.trust = file->comments;
+  p.trust = file.comments;
   const std::vector<std::pair<const char*, double*>> fields = {
       {"Mf", &p.Mf},     {"Mr", &p.Mr},   {"Zf", &p.Zf},   {"Irx", &p.Irx}, {"Irz", &p.Irz},
       {"Crxz", &p.Crxz}, {"Ifx", &p.Ifx}, {"Ifz", &p.Ifz}, {"ify", &p.ify}, {"iry_plus_lambda_i", &p.iry},
       {"a", &p.a},       {"b", &p.b},     {"e", &p.e},     {"f", &p.f},     {"h", &p.h},
       {"Rf", &p.Rf},     {"Rr", &p.Rr},   {"t", &p.t},     {"eps", &p.eps}, {"Cf1", &p.Cf1},
       {"Cf2", &p.Cf2},   {"Cr1", &p.Cr1}, {"Cr2", &p.Cr2}, {"K", &p.K},     {"sigma", &p.sigma}};
-  if (auto taken = takeParameters(*file, fields, path); !taken) return taken.error();
+  MOZZI_TRY(takeParameters(file, fields, path));
   const std::pair<const char*, double> positive[] = {
       {"Mf", p.Mf}, {"Mr", p.Mr}, {"Irx", p.Irx}, {"Irz", p.Irz}, {"Ifx", p.Ifx}, {"Ifz", p.Ifz},
       {"Rf", p.Rf}, {"Rr", p.Rr}, {"h", p.h},     {"Cf1", p.Cf1}, {"Cr1", p.Cr1}, {"sigma", p.sigma}};
@@ -110,12 +109,10 @@ Result<MotorcycleModel> MotorcycleModel::build(const SharpParameters& p, const s
   for (const Body& b : extra) t.bodies.push_back(b);
   t.rearWheel = 1;
   t.frontWheel = 3;
-  auto lin = linearize(t);
-  if (!lin) return lin.error();
-  m.lin_ = *lin;
+  MOZZI_TRY_ASSIGN(m.lin_, linearize(t));
   m.massLu_ = Eigen::PartialPivLU<Matrix>(m.lin_.Mfull);  // speed-free: factored once for every speed
   m.coordinates_ = t.coordinates;
-  const int n = lin->n, N = n + 2;
+  const int n = m.lin_.n, N = n + 2;
   m.jointDamping_ = Matrix::Zero(N, N);
   m.jointStiffness_ = Matrix::Zero(n, n);
   m.jointDamping_(3, 3) = p.K;  // steering damper on delta'

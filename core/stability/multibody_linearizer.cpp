@@ -171,9 +171,8 @@ Result<Linearization> linearize(const VehicleTopology& t) {
 }
 
 Result<BicycleModel> rollingBicycleModel(const VehicleTopology& topology) {
-  auto lin = linearize(topology);
-  if (!lin) return lin.error();
-  const Linearization& L = *lin;
+  MOZZI_TRY_ASSIGN(auto lin, linearize(topology));
+  const Linearization& L = lin;
   const int n = L.n, N = n + 2;
   const double w = L.front.x - L.rear.x;
   if (!(w > 0.0)) return makeError(ErrorCode::InvalidArgument, "front contact must be ahead of the rear", "wheel base");

@@ -14,9 +14,8 @@ constexpr double kMaxParameterMagnitude = 1e9;
 }  // namespace
 
 Result<ParameterFile> readParameterFile(const std::string& path, const std::string& what) {
-  auto text = io::readTextFile(path, what + " parameter", io::kMaxParameterFileBytes);  // size cap
-  if (!text) return text.error();
-  std::istringstream in(*text);
+  MOZZI_TRY_ASSIGN(const std::string text, io::readTextFile(path, what + " parameter", io::kMaxParameterFileBytes));
+  std::istringstream in(text);
   ParameterFile file;
   std::string line;
   int lineNo = 0;

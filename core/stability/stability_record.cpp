@@ -67,22 +67,18 @@ Result<StabilitySweep> sweepFromJson(const Json& j) {
   for (std::size_t k = 0; k < j.at("speeds").size(); ++k) {
     const Json& p = j.at("speeds").at(k);
     const std::string at = where + ", speeds[" + std::to_string(k) + "]";
-    auto v = numberAt(p, "v", at);
-    if (!v) return v.error();
+    MOZZI_TRY_ASSIGN(const double v, numberAt(p, "v", at));
     if (!p.contains("modes") || !p.at("modes").is_array())
       return makeError(ErrorCode::InvalidArgument, "no 'modes' array", at);
     SpeedPoint point;
-    point.v = *v;
+    point.v = v;
     for (const Json& m : p.at("modes")) {
-      auto name = textAt(m, "name", at);
-      auto re = numberAt(m, "re", at);
-      auto im = numberAt(m, "im", at);
-      if (!name) return name.error();
-      if (!re) return re.error();
-      if (!im) return im.error();
+      MOZZI_TRY_ASSIGN(std::string name, textAt(m, "name", at));
+      MOZZI_TRY_ASSIGN(const double re, numberAt(m, "re", at));
+      MOZZI_TRY_ASSIGN(const double im, numberAt(m, "im", at));
       Root r;
-      r.lambda = Complex(*re, *im);
-      r.name = *name;
+      r.lambda = Complex(re, im);
+      r.name = std::move(name);
       point.roots.push_back(std::move(r));
     }
     s.points.push_back(std::move(point));
@@ -91,13 +87,10 @@ Result<StabilitySweep> sweepFromJson(const Json& j) {
     for (std::size_t k = 0; k < j.at("events").size(); ++k) {
       const Json& e = j.at("events").at(k);
       const std::string at = where + ", events[" + std::to_string(k) + "]";
-      auto mode = textAt(e, "mode", at);
-      auto kind = textAt(e, "kind", at);
-      auto v = numberAt(e, "v", at);
-      if (!mode) return mode.error();
-      if (!kind) return kind.error();
-      if (!v) return v.error();
-      ModeEvent event{*mode, *v, *kind, 0.0, 0.0};
+      MOZZI_TRY_ASSIGN(std::string mode, textAt(e, "mode", at));
+      MOZZI_TRY_ASSIGN(std::string kind, textAt(e, "kind", at));
+      MOZZI_TRY_ASSIGN(const double v, numberAt(e, "v", at));
+      ModeEvent event{std::move(mode), v, std::move(kind), 0.0, 0.0};
       if (e.contains("lambda") && e.at("lambda").is_number()) event.lambda = e.at("lambda").get<double>();
       if (e.contains("im") && e.at("im").is_number()) event.frequency = e.at("im").get<double>();
       s.events.push_back(std::move(event));
@@ -126,38 +119,25 @@ Result<StabilityRecord> stabilityRecordFromJson(const std::string& text) {
   if (j.is_discarded() || !j.is_object())
     return makeError(ErrorCode::InvalidArgument, "the result is not a JSON object", where);
   StabilityRecord r;
-  auto vehicle = textAt(j, "vehicle", where);
-  auto model = textAt(j, "model", where);
-  if (!vehicle) return vehicle.error();
-  if (!model) return model.error();
-  if (*vehicle != "bicycle" && *vehicle != "motorcycle")
-    return makeError(ErrorCode::InvalidArgument, "vehicle '" + *vehicle + "' is neither bicycle nor motorcycle", where);
-  r.vehicle = *vehicle;
-  r.model = *model;
+  MOZZI_TRY_ASSIGN(r.vehicle, textAt(j, "vehicle", where));
+  MOZZI_TRY_ASSIGN(r.model, textAt(j, "model", where));
+  if (r.vehicle != "bicycle" && r.vehicle != "motorcycle")
+    return makeError(ErrorCode::InvalidArgument, "vehicle '" + r.vehicle + "' is neither bicycle nor motorcycle",
+                     where);
   r.fork = optionalText(j, "fork");
   r.forkSource = optionalText(j, "fork_source");
   r.parametersFile = optionalText(j, "parameters_file");
   if (j.contains("speed_grid")) {
     const Json& g = j.at("speed_grid");
-    auto from = numberAt(g, "from_m_s", where + ", speed_grid");
-    auto to = numberAt(g, "to_m_s", where + ", speed_grid");
-    auto step = numberAt(g, "step_m_s", where + ", speed_grid");
-    if (!from) return from.error();
-    if (!to) return to.error();
-    if (!step) return step.error();
-    r.from = *from;
-    r.to = *to;
-    r.step = *step;
+    MOZZI_TRY_ASSIGN(r.from, numberAt(g, "from_m_s", where + ", speed_grid"));
+    MOZZI_TRY_ASSIGN(r.to, numberAt(g, "to_m_s", where + ", speed_grid"));
+    MOZZI_TRY_ASSIGN(r.step, numberAt(g, "step_m_s", where + ", speed_grid"));
   }
   if (!j.contains("sweep")) return makeError(ErrorCode::InvalidArgument, "no 'sweep'", where);
-  auto sweep = sweepFromJson(j.at("sweep"));
-  if (!sweep) return sweep.error();
-  if (sweep->points.empty()) return makeError(ErrorCode::InvalidArgument, "the sweep has no speeds", where);
-  r.sweep = std::move(*sweep);
+  MOZZI_TRY_ASSIGN(r.sweep, sweepFromJson(j.at("sweep")));
+  if (r.sweep.points.empty()) return makeError(ErrorCode::InvalidArgument, "the sweep has no speeds", where);
   if (j.contains("rigid_sweep")) {
-    auto rigid = sweepFromJson(j.at("rigid_sweep"));
-    if (!rigid) return rigid.error();
-    r.rigidSweep = std::move(*rigid);
+    MOZZI_TRY_ASSIGN(r.rigidSweep, sweepFromJson(j.at("rigid_sweep")));
   }
   return r;
 }
@@ -175,85 +155,36 @@ std::string crossingFrequencyText(double imaginary) {
 }
 
 Result<std::int64_t> defaultStabilitySpecimen(const io::ProjectStore& store, const std::string& vehicle) {
-  auto summary = store.summary();
-  if (!summary) return summary.error();
-  if (summary->specimens.empty())
-    return makeError(ErrorCode::NotFound, "the project has no specimen to keep the result under", store.path());
-  const std::string kind = vehicle == "motorcycle" ? "fork" : "bicycle-fork";
-  for (const auto& s : summary->specimens)
-    if (s.kind == kind) return s.id;
-  return summary->specimens.front().id;
+  return defaultSpecimenOfKind(store, vehicle == "motorcycle" ? "fork" : "bicycle-fork");
 }
 
 Result<std::int64_t> specimenNamed(const io::ProjectStore& store, const std::string& name) {
-  auto summary = store.summary();
-  if (!summary) return summary.error();
-  for (const auto& s : summary->specimens)
+  MOZZI_TRY_ASSIGN(const auto summary, store.summary());
+  for (const auto& s : summary.specimens)
     if (s.name == name) return s.id;
   return makeError(ErrorCode::NotFound, "no specimen named '" + name + "'", store.path());
 }
 
-Result<std::string> freeAnalysisName(const io::ProjectStore& store, std::int64_t specimenId, const std::string& base) {
-  auto analyses = store.analyses();
-  if (!analyses) return analyses.error();
-  auto taken = [&](const std::string& name) {
-    for (const auto& a : *analyses)
-      if (a.specimenId == specimenId && a.name == name) return true;
-    return false;
-  };
-  if (!taken(base)) return base;
-  for (int k = 2;; ++k) {
-    const std::string name = base + " (" + std::to_string(k) + ")";
-    if (!taken(name)) return name;
-  }
-}
-
 Result<io::StoredAnalysis> stabilityAnalysis(const io::ProjectStore& store, std::int64_t specimenId,
                                              const std::string& name, const StabilityRecord& record) {
-  if (name.empty()) return makeError(ErrorCode::InvalidArgument, "the name is empty", "stability result name");
-  auto free = freeAnalysisName(store, specimenId, name);
-  if (!free) return free.error();
-  io::StoredAnalysis a;
-  a.specimenId = specimenId;
-  a.kind = kStabilityAnalysisKind;
-  a.name = *free;
-  a.resultJson = stabilityRecordJson(record);
-  return a;
+  return resultAnalysis(store, specimenId, name, kStabilityAnalysisKind, "stability result name",
+                        stabilityRecordJson(record));
 }
 
 Result<std::int64_t> storeStabilityRecord(io::ProjectStore& store, std::int64_t specimenId, const std::string& name,
                                           const StabilityRecord& record) {
-  auto a = stabilityAnalysis(store, specimenId, name, record);
-  if (!a) return a.error();
-  return store.addAnalysis(*a);
+  MOZZI_TRY_ASSIGN(const io::StoredAnalysis a, stabilityAnalysis(store, specimenId, name, record));
+  return store.addAnalysis(a);
 }
 
 Result<std::vector<StoredStability>> storedStabilityRecords(const io::ProjectStore& store,
                                                             std::vector<std::int64_t>* unreadable) {
-  auto analyses = store.analyses();
-  if (!analyses) return analyses.error();
-  std::vector<StoredStability> out;
-  for (const auto& a : *analyses) {
-    if (a.kind != kStabilityAnalysisKind) continue;
-    auto r = stabilityRecordFromJson(a.resultJson);
-    if (!r) {
-      if (unreadable) unreadable->push_back(a.id);
-      continue;
-    }
-    out.push_back({a.id, a.specimenId, a.name, std::move(*r)});
-  }
-  return out;
+  return storedResults<StabilityRecord>(store, kStabilityAnalysisKind, stabilityRecordFromJson, unreadable);
 }
 
 Result<StoredStability> storedStabilityRecord(const io::ProjectStore& store, std::int64_t analysisId) {
-  auto a = store.analysis(analysisId);
-  if (!a) return a.error();
-  const std::string where = "analysis " + std::to_string(analysisId);
-  if (a->kind != kStabilityAnalysisKind)
-    return makeError(ErrorCode::NotFound, "is of kind '" + a->kind + "', not a stability result", where);
-  auto r = stabilityRecordFromJson(a->resultJson);
-  if (!r) return Error{r.error().code, r.error().message, where + ": " + r.error().where};
-  return StoredStability{a->id, a->specimenId, a->name, std::move(*r)};
+  return storedResult<StabilityRecord>(store, analysisId, kStabilityAnalysisKind, "stability result",
+                                       stabilityRecordFromJson);
 }
 
 }  // namespace mozzi::core::stability

@@ -22,10 +22,7 @@
 #include "core/io/project_records.h"
 #include "core/stability/kept_forks.h"
 #include "core/stability/mode_tracking.h"
-
-namespace mozzi::core::io {
-class ProjectStore;
-}
+#include "core/stability/stored_result.h"
 
 namespace mozzi::core::stability {
 
@@ -80,10 +77,6 @@ Result<std::int64_t> defaultStabilitySpecimen(const io::ProjectStore& store, con
 // The id of the specimen named `name`; NotFound naming it otherwise.
 Result<std::int64_t> specimenNamed(const io::ProjectStore& store, const std::string& name);
 
-// `base`, or "base (2)", "base (3)", ... : the first name the specimen has no
-// analysis of (analysis names are unique per specimen).
-Result<std::string> freeAnalysisName(const io::ProjectStore& store, std::int64_t specimenId, const std::string& base);
-
 // The analysis row (kind "stability") holding `record`, under a free name.
 Result<io::StoredAnalysis> stabilityAnalysis(const io::ProjectStore& store, std::int64_t specimenId,
                                              const std::string& name, const StabilityRecord& record);
@@ -91,12 +84,7 @@ Result<io::StoredAnalysis> stabilityAnalysis(const io::ProjectStore& store, std:
 Result<std::int64_t> storeStabilityRecord(io::ProjectStore& store, std::int64_t specimenId, const std::string& name,
                                           const StabilityRecord& record);
 
-struct StoredStability {
-  std::int64_t analysisId = 0;
-  std::int64_t specimenId = 0;
-  std::string name;
-  StabilityRecord record;
-};
+using StoredStability = StoredResult<StabilityRecord>;
 
 // Every readable stability analysis, in id order; unreadable ids in
 // `unreadable` when given.

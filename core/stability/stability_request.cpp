@@ -12,9 +12,7 @@ namespace {
 Result<StabilitySystem> motorcycleSystem(const StabilityRequest& r, bool rigid, std::string* model) {
   SharpParameters p = sharp1971Parameters();
   if (!r.parametersFile.empty()) {
-    auto loaded = loadSharpParameters(r.parametersFile);
-    if (!loaded) return loaded.error();
-    p = *loaded;
+    MOZZI_TRY_ASSIGN(p, loadSharpParameters(r.parametersFile));
   }
   std::optional<LumpedForkModel> fork;
   if (!rigid && r.fork != "rigid") {
@@ -31,35 +29,29 @@ Result<StabilitySystem> motorcycleSystem(const StabilityRequest& r, bool rigid, 
                          "the kept fork '" + r.kept->name + "' has no model " + std::to_string(index), "fork");
       fork = *m;
     } else {
-      auto f = thesisLumpedForkModel(index);
-      if (!f) return f.error();
-      fork = *f;
+      MOZZI_TRY_ASSIGN(fork, thesisLumpedForkModel(index));
     }
   }
-  auto m = MotorcycleModel::build(p, fork);
-  if (!m) return m.error();
+  MOZZI_TRY_ASSIGN(const MotorcycleModel m, MotorcycleModel::build(p, fork));
   if (model) {
     *model = r.parametersFile.empty() ? "motorcycle (Sharp 1971 standard machine, built in)"
                                       : "motorcycle (Sharp 1971 structure) from " + r.parametersFile;
     *model += ", fork " + (fork ? fork->name : std::string("rigid"));
     if (fork && r.kept) *model += " of " + r.kept->name;
   }
-  return m->system();
+  return m.system();
 }
 
 Result<StabilitySystem> bicycleSystemOf(const StabilityRequest& r, bool rigid, std::string* model) {
   BenchmarkParameters p = meijaard2007Parameters();
   if (!r.parametersFile.empty()) {
-    auto loaded = loadBenchmarkParameters(r.parametersFile);
-    if (!loaded) return loaded.error();
-    p = *loaded;
+    MOZZI_TRY_ASSIGN(p, loadBenchmarkParameters(r.parametersFile));
   }
   if (model)
     *model = r.parametersFile.empty() ? "benchmark bicycle (Meijaard et al. 2007)" : "bicycle from " + r.parametersFile;
   if (rigid || r.fork == "rigid") {
-    auto m = benchmarkModel(p);
-    if (!m) return m.error();
-    return bicycleSystem(*m);
+    MOZZI_TRY_ASSIGN(auto m, benchmarkModel(p));
+    return bicycleSystem(m);
   }
   if (r.fork != "bending" && r.fork != "torsion")
     return makeError(ErrorCode::InvalidArgument, "'" + r.fork + "' is not rigid, bending or torsion", "bicycle fork");
@@ -67,11 +59,10 @@ Result<StabilitySystem> bicycleSystemOf(const StabilityRequest& r, bool rigid, s
   if (r.kept && ((bending && !r.kept->bending) || (!bending && !r.kept->torsion)))
     return makeError(ErrorCode::InvalidArgument, "the kept fork '" + r.kept->name + "' has no " + r.fork + " stiffness",
                      "fork");
-  auto m = bending ? forkBendingModel(p, r.kept ? *r.kept->bending : thesisSteelForkBending())
-                   : forkTorsionModel(p, r.kept ? *r.kept->torsion : thesisSteelForkTorsion());
-  if (!m) return m.error();
+  MOZZI_TRY_ASSIGN(auto m, bending ? forkBendingModel(p, r.kept ? *r.kept->bending : thesisSteelForkBending())
+                                   : forkTorsionModel(p, r.kept ? *r.kept->torsion : thesisSteelForkTorsion()));
   if (model) *model += " with fork " + r.fork + (r.kept ? " of " + r.kept->name : std::string());
-  return bicycleSystem(*m);
+  return bicycleSystem(m);
 }
 
 }  // namespace
@@ -83,9 +74,8 @@ Result<StabilitySystem> stabilitySystem(const StabilityRequest& r, bool rigid, s
 }
 
 Result<StabilityRecord> computeStabilityRecord(const StabilityRequest& r) {
-  auto speeds = speedGrid(r.from, r.to, r.step);
-  if (!speeds) return speeds.error();
-  if (r.vehicle == "motorcycle" && !(speeds->front() > 0.0))
+  MOZZI_TRY_ASSIGN(auto speeds, speedGrid(r.from, r.to, r.step));
+  if (r.vehicle == "motorcycle" && !(speeds.front() > 0.0))
     return makeError(ErrorCode::InvalidArgument, "speeds must be positive (tyre slip divides by speed)",
                      "motorcycle speeds");
   StabilityRecord out;
@@ -96,17 +86,11 @@ Result<StabilityRecord> computeStabilityRecord(const StabilityRequest& r) {
   out.from = r.from;
   out.to = r.to;
   out.step = r.step;
-  auto system = stabilitySystem(r, false, &out.model);
-  if (!system) return system.error();
-  auto sweep = sweepSpeeds(*system, *speeds);
-  if (!sweep) return sweep.error();
-  out.sweep = std::move(*sweep);
+  MOZZI_TRY_ASSIGN(auto system, stabilitySystem(r, false, &out.model));
+  MOZZI_TRY_ASSIGN(out.sweep, sweepSpeeds(system, speeds));
   if (r.compareRigid && r.fork != "rigid") {
-    auto rigid = stabilitySystem(r, true);
-    if (!rigid) return rigid.error();
-    auto rigidSweep = sweepSpeeds(*rigid, *speeds);
-    if (!rigidSweep) return rigidSweep.error();
-    out.rigidSweep = std::move(*rigidSweep);
+    MOZZI_TRY_ASSIGN(auto rigid, stabilitySystem(r, true));
+    MOZZI_TRY_ASSIGN(out.rigidSweep, sweepSpeeds(rigid, speeds));
   }
   return out;
 }

@@ -91,6 +91,19 @@ double steadyCaster(const WheelchairParameters& p, double yc, double u, double v
   return d;
 }
 
+// A slalom frequency f [Hz] the simulation's output sampling can follow.
+Result<void> checkSlalomFrequency(double f) {
+  if (!std::isfinite(f) || f <= 0.0)
+    return makeError(ErrorCode::InvalidArgument, "slalom frequency must be positive", kWhere);
+  if (f > kMaxSlalomFrequencyHz) {
+    return makeError(ErrorCode::InvalidArgument,
+                     "slalom frequency " + std::to_string(f) + " Hz is above " + std::to_string(kMaxSlalomFrequencyHz) +
+                         " Hz: the 10 ms output sampling would alias the torque input",
+                     kWhere);
+  }
+  return {};
+}
+
 }  // namespace
 
 Result<void> validate(const WheelchairParameters& p) {
@@ -158,8 +171,8 @@ Result<SteadyTurn> finishSteadyTurn(const WheelchairParameters& p, double u, dou
 }  // namespace
 
 Result<SteadyTurn> steadyTurn(const WheelchairParameters& p, double u, double dT) {
-  if (auto ok = validate(p); !ok) return ok.error();
-  if (auto ok = checkSpeed(u); !ok) return ok.error();
+  MOZZI_TRY(validate(p));
+  MOZZI_TRY(checkSpeed(u));
   if (!std::isfinite(dT)) return makeError(ErrorCode::InvalidArgument, "differential torque must be finite", kWhere);
   const double m = p.mass, b = p.rearAxleBehindCoM, w = p.rearHalfTrack, Rw = p.rearWheelRadius;
   const double Ca = p.rearCorneringStiffness, Cm = p.rearAligningStiffness;
@@ -190,8 +203,8 @@ Result<SteadyTurn> steadyTurn(const WheelchairParameters& p, double u, double dT
 }
 
 Result<SteadyTurn> steadyTurnAtYawRate(const WheelchairParameters& p, double u, double r) {
-  if (auto ok = validate(p); !ok) return ok.error();
-  if (auto ok = checkSpeed(u); !ok) return ok.error();
+  MOZZI_TRY(validate(p));
+  MOZZI_TRY(checkSpeed(u));
   if (!std::isfinite(r)) return makeError(ErrorCode::InvalidArgument, "yaw rate must be finite", kWhere);
   const double w = p.rearHalfTrack, Ca = p.rearCorneringStiffness;
   if (std::abs(r) * w >= u) return innerWheelStopped();
@@ -202,7 +215,7 @@ Result<SteadyTurn> steadyTurnAtYawRate(const WheelchairParameters& p, double u, 
 }
 
 Result<std::vector<WheelchairState>> simulate(const WheelchairParameters& p, const Manoeuvre& m) {
-  if (auto ok = validate(p); !ok) return ok.error();
+  MOZZI_TRY(validate(p));
   const std::string where = std::string(kWhere) + ", manoeuvre";
   if (!std::isfinite(m.speed) || m.speed <= 0.0)
     return makeError(ErrorCode::InvalidArgument, "initial forward speed must be positive", where);
@@ -270,14 +283,7 @@ Manoeuvre steadyTurningManoeuvre(double speed, double torque, double rampTime, d
 }
 
 Result<SlalomSummary> summariseSlalom(const std::vector<WheelchairState>& h, double from, double f) {
-  if (!std::isfinite(f) || f <= 0.0)
-    return makeError(ErrorCode::InvalidArgument, "slalom frequency must be positive", kWhere);
-  if (f > kMaxSlalomFrequencyHz) {
-    return makeError(ErrorCode::InvalidArgument,
-                     "slalom frequency " + std::to_string(f) + " Hz is above " + std::to_string(kMaxSlalomFrequencyHz) +
-                         " Hz: the 10 ms output sampling would alias the torque input",
-                     kWhere);
-  }
+  MOZZI_TRY(checkSlalomFrequency(f));
   SlalomSummary s;
   // The drift of y (a heading offset left by the start transient) is removed
   // as c0 + c1 t fitted together with the slalom's fundamental
@@ -322,14 +328,7 @@ Result<SlalomSummary> summariseSlalom(const std::vector<WheelchairState>& h, dou
 }
 
 Result<SlalomRun> runSlalom(const WheelchairParameters& p, double speed, double torque, double f, double duration) {
-  if (!std::isfinite(f) || f <= 0.0)
-    return makeError(ErrorCode::InvalidArgument, "slalom frequency must be positive", kWhere);
-  if (f > kMaxSlalomFrequencyHz) {
-    return makeError(ErrorCode::InvalidArgument,
-                     "slalom frequency " + std::to_string(f) + " Hz is above " + std::to_string(kMaxSlalomFrequencyHz) +
-                         " Hz: the 10 ms output sampling would alias the torque input",
-                     kWhere);
-  }
+  MOZZI_TRY(checkSlalomFrequency(f));
   if (!std::isfinite(duration) || duration > 3600.0)
     return makeError(ErrorCode::InvalidArgument, "slalom duration must be at most 3600 s", kWhere);
   if (!std::isfinite(duration) || f * duration < 3.0)
@@ -337,12 +336,9 @@ Result<SlalomRun> runSlalom(const WheelchairParameters& p, double speed, double 
                      "the slalom needs at least 3 cycles (2 to settle, 1 to measure): raise the duration or frequency",
                      kWhere);
   SlalomRun run;
-  auto hist = simulate(p, slalomManoeuvre(speed, torque, f, duration));
-  if (!hist) return hist.error();
-  run.history = std::move(*hist);
-  auto sum = summariseSlalom(run.history, 2.0 / f, f);  // after two cycles of start transient
-  if (!sum) return sum.error();
-  run.summary = *sum;
+  MOZZI_TRY_ASSIGN(run.history, simulate(p, slalomManoeuvre(speed, torque, f, duration)));
+  // after two cycles of start transient
+  MOZZI_TRY_ASSIGN(run.summary, summariseSlalom(run.history, 2.0 / f, f));
   return run;
 }
 
@@ -359,12 +355,9 @@ Result<std::vector<SensitivityCase>> stiffnessSensitivity(const WheelchairParame
     if (which != WheelchairStiffness::Cornering) q.rearAligningStiffness *= k;
     SensitivityCase c;
     c.factor = k;
-    auto st = steadyTurn(q, speed, turnTorque);
-    if (!st) return st.error();
-    c.steady = *st;
-    auto slalom = runSlalom(q, speed, slalomTorque, f, duration);
-    if (!slalom) return slalom.error();
-    c.slalom = slalom->summary;
+    MOZZI_TRY_ASSIGN(c.steady, steadyTurn(q, speed, turnTorque));
+    MOZZI_TRY_ASSIGN(const SlalomRun slalom, runSlalom(q, speed, slalomTorque, f, duration));
+    c.slalom = slalom.summary;
     out.push_back(c);
   }
   return out;

@@ -3,7 +3,6 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/project_store.h"
-#include "core/stability/stability_record.h"
 
 namespace mozzi::core::stability {
 
@@ -83,13 +82,11 @@ Result<WheelchairRecord> runWheelchairStudy(const WheelchairStudy& s) {
     if (s.study == "aligning stiffness") p.rearAligningStiffness *= factor;    // thesis Figures 59, 60
     WheelchairRun run{factor, {}};
     if (s.manoeuvre == "slalom") {
-      auto r = runSlalom(p, s.speed, s.torque, s.frequency, s.duration);
-      if (!r) return r.error();
-      run.history = std::move(r->history);
+      MOZZI_TRY_ASSIGN(auto r, runSlalom(p, s.speed, s.torque, s.frequency, s.duration));
+      run.history = std::move(r.history);
     } else {
-      auto r = simulate(p, steadyTurningManoeuvre(s.speed, s.torque, s.ramp, s.duration));
-      if (!r) return r.error();
-      run.history = std::move(*r);
+      MOZZI_TRY_ASSIGN(auto r, simulate(p, steadyTurningManoeuvre(s.speed, s.torque, s.ramp, s.duration)));
+      run.history = std::move(r);
     }
     out.runs.push_back(std::move(run));
   }
@@ -172,60 +169,28 @@ Result<WheelchairRecord> wheelchairRecordFromJson(const std::string& text) {
 
 Result<io::StoredAnalysis> wheelchairAnalysis(const io::ProjectStore& store, std::int64_t specimenId,
                                               const std::string& name, const WheelchairRecord& record) {
-  if (name.empty()) return makeError(ErrorCode::InvalidArgument, "the name is empty", "wheelchair result name");
-  auto free = freeAnalysisName(store, specimenId, name);
-  if (!free) return free.error();
-  io::StoredAnalysis a;
-  a.specimenId = specimenId;
-  a.kind = kWheelchairAnalysisKind;
-  a.name = *free;
-  a.resultJson = wheelchairRecordJson(record);
-  return a;
+  return resultAnalysis(store, specimenId, name, kWheelchairAnalysisKind, "wheelchair result name",
+                        wheelchairRecordJson(record));
 }
 
 Result<std::int64_t> storeWheelchairRecord(io::ProjectStore& store, std::int64_t specimenId, const std::string& name,
                                            const WheelchairRecord& record) {
-  auto a = wheelchairAnalysis(store, specimenId, name, record);
-  if (!a) return a.error();
-  return store.addAnalysis(*a);
+  MOZZI_TRY_ASSIGN(const io::StoredAnalysis a, wheelchairAnalysis(store, specimenId, name, record));
+  return store.addAnalysis(a);
 }
 
 Result<std::int64_t> defaultWheelchairSpecimen(const io::ProjectStore& store) {
-  auto summary = store.summary();
-  if (!summary) return summary.error();
-  if (summary->specimens.empty())
-    return makeError(ErrorCode::NotFound, "the project has no specimen to keep the result under", store.path());
-  for (const auto& s : summary->specimens)
-    if (s.kind == "wheelchair-tyre") return s.id;
-  return summary->specimens.front().id;
+  return defaultSpecimenOfKind(store, "wheelchair-tyre");
 }
 
 Result<std::vector<StoredWheelchair>> storedWheelchairRecords(const io::ProjectStore& store,
                                                               std::vector<std::int64_t>* unreadable) {
-  auto analyses = store.analyses();
-  if (!analyses) return analyses.error();
-  std::vector<StoredWheelchair> out;
-  for (const auto& a : *analyses) {
-    if (a.kind != kWheelchairAnalysisKind) continue;
-    auto r = wheelchairRecordFromJson(a.resultJson);
-    if (!r) {
-      if (unreadable) unreadable->push_back(a.id);
-      continue;
-    }
-    out.push_back({a.id, a.specimenId, a.name, std::move(*r)});
-  }
-  return out;
+  return storedResults<WheelchairRecord>(store, kWheelchairAnalysisKind, wheelchairRecordFromJson, unreadable);
 }
 
 Result<StoredWheelchair> storedWheelchairRecord(const io::ProjectStore& store, std::int64_t analysisId) {
-  auto a = store.analysis(analysisId);
-  if (!a) return a.error();
-  const std::string where = "analysis " + std::to_string(analysisId);
-  if (a->kind != kWheelchairAnalysisKind)
-    return makeError(ErrorCode::NotFound, "is of kind '" + a->kind + "', not a wheelchair result", where);
-  auto r = wheelchairRecordFromJson(a->resultJson);
-  if (!r) return Error{r.error().code, r.error().message, where + ": " + r.error().where};
-  return StoredWheelchair{a->id, a->specimenId, a->name, std::move(*r)};
+  return storedResult<WheelchairRecord>(store, analysisId, kWheelchairAnalysisKind, "wheelchair result",
+                                        wheelchairRecordFromJson);
 }
 
 }  // namespace mozzi::core::stability

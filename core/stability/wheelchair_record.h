@@ -13,11 +13,8 @@
 
 #include "core/common/result.h"
 #include "core/io/project_records.h"
+#include "core/stability/stored_result.h"
 #include "core/stability/wheelchair_model.h"
-
-namespace mozzi::core::io {
-class ProjectStore;
-}
 
 namespace mozzi::core::stability {
 
@@ -55,7 +52,7 @@ Result<WheelchairRecord> runWheelchairStudy(const WheelchairStudy& study);
 std::string wheelchairRecordJson(const WheelchairRecord& record);
 Result<WheelchairRecord> wheelchairRecordFromJson(const std::string& json);
 
-// The analysis row (kind "wheelchair") under a free name (stability_record.h).
+// The analysis row (kind "wheelchair") under a free name (stored_result.h).
 Result<io::StoredAnalysis> wheelchairAnalysis(const io::ProjectStore& store, std::int64_t specimenId,
                                               const std::string& name, const WheelchairRecord& record);
 Result<std::int64_t> storeWheelchairRecord(io::ProjectStore& store, std::int64_t specimenId, const std::string& name,
@@ -64,12 +61,7 @@ Result<std::int64_t> storeWheelchairRecord(io::ProjectStore& store, std::int64_t
 // NotFound when the project has none.
 Result<std::int64_t> defaultWheelchairSpecimen(const io::ProjectStore& store);
 
-struct StoredWheelchair {
-  std::int64_t analysisId = 0;
-  std::int64_t specimenId = 0;
-  std::string name;
-  WheelchairRecord record;
-};
+using StoredWheelchair = StoredResult<WheelchairRecord>;
 
 Result<std::vector<StoredWheelchair>> storedWheelchairRecords(const io::ProjectStore& store,
                                                               std::vector<std::int64_t>* unreadable = nullptr);

@@ -59,10 +59,8 @@ Result<PhasorAxis> phasorTwistAxis(const std::vector<Vector2>& points, const Com
       const double c = std::cos(std::arg(phasors(i)) - phiRef);
       w[static_cast<std::size_t>(i)] = std::abs(phasors(i)) * (c >= 0 ? 1.0 : -1.0);
     }
-    auto axis = staticTwistAxis(points, w, reference, options.plane);
-    if (!axis) return axis.error();
+    MOZZI_TRY_ASSIGN(out.axis, staticTwistAxis(points, w, reference, options.plane));
     out.method = PhasorAxisCase::InPhase;
-    out.axis = std::move(*axis);
     out.lowConfidence = out.axis.lowConfidence;
     out.note = out.axis.note;
     return out;
@@ -170,7 +168,7 @@ Result<std::vector<SweepAxis>> dynamicTwistSweep(const std::vector<Vector2>& poi
 Result<ModalAxis> modalTwistAxis(const FrfMatrix& frf, const std::vector<int>& responses, int reference,
                                  double frequencyHz, const std::vector<Vector2>& points, const Vector2& loadPoint,
                                  const PhasorAxisOptions& options) {
-  if (auto v = frf.validate(); !v) return v.error();
+  MOZZI_TRY(frf.validate());
   if (reference < 0 || reference >= frf.referenceCount()) {
     return makeError(ErrorCode::NotFound, "reference index " + std::to_string(reference) + " out of range",
                      "modal twist axis");

@@ -139,7 +139,7 @@ Result<double> modalDamping(double stiffness, double inertia, double zeta) {
 
 Result<BicycleTorsion> bicycleForkTorsion(const BicycleForkParameters& p, double fWithWheelHz, double etaWithWheel,
                                           double fAloneHz, double fAlone2Hz) {
-  if (auto c = checkParameters(p); !c) return c.error();
+  MOZZI_TRY(checkParameters(p));
   if (!positiveFinite(fWithWheelHz) || !positiveFinite(fAloneHz) || !(etaWithWheel >= 0.0) ||
       !std::isfinite(fAlone2Hz) || !std::isfinite(etaWithWheel)) {
     return makeError(ErrorCode::InvalidArgument, "frequencies must be > 0 and the loss factor >= 0",
@@ -180,7 +180,7 @@ Result<BicycleTorsion> bicycleForkTorsion(const BicycleForkParameters& p, double
 
 Result<BicycleBending> bicycleForkBending(const BicycleForkParameters& p, double fWithWheelHz, double etaWithWheel,
                                           double fAloneHz) {
-  if (auto c = checkParameters(p); !c) return c.error();
+  MOZZI_TRY(checkParameters(p));
   const std::string where = "bicycle fork bending (§6.5, eq. 57 to 59)";
   if (!positiveFinite(fWithWheelHz) || !positiveFinite(fAloneHz) || !(etaWithWheel >= 0.0) ||
       !std::isfinite(etaWithWheel)) {

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "core/common/enum_names.h"
 #include "core/io/text_file.h"
 
 namespace mozzi::core::stiffness {
@@ -91,8 +92,7 @@ Result<PlateCsv> parsePlateCsv(const std::string& text, const std::string& sourc
           !std::isfinite(v)) {
         return makeError(ErrorCode::ParseError, "expected '" + fields[0] + ",u,v' with numbers", where);
       }
-      for (double x : {u, v})
-        if (auto r = checkRange(x, kMaxPlatePosition, fields[0] + " position", "m", where); !r) return r.error();
+      for (double x : {u, v}) MOZZI_TRY(checkRange(x, kMaxPlatePosition, fields[0] + " position", "m", where));
       if (fields[0] == "sensor") {
         csv.sensors.emplace_back(u, v);
       } else {
@@ -115,7 +115,7 @@ Result<PlateCsv> parsePlateCsv(const std::string& text, const std::string& sourc
         return makeError(ErrorCode::ParseError,
                          "column " + std::to_string(k + 1) + " is not a number: '" + f.substr(0, 40) + "'", where);
       }
-      if (auto r = checkRange(v, kMaxPlateValue, "column " + std::to_string(k + 1), "", where); !r) return r.error();
+      MOZZI_TRY(checkRange(v, kMaxPlateValue, "column " + std::to_string(k + 1), "", where));
       row.push_back(v);
     }
     if (!csv.rows.empty() && row.size() != csv.rows.front().size()) {
@@ -137,18 +137,14 @@ Result<PlateCsv> parsePlateCsv(const std::string& text, const std::string& sourc
 }
 
 Result<PlateCsv> readPlateCsv(const std::string& path, bool needSensors, bool needRows) {
-  auto text = io::readTextFile(path, "plate CSV", kMaxPlateFileBytes);
-  if (!text) return text.error();
-  return parsePlateCsv(*text, path, needSensors, needRows);
+  MOZZI_TRY_ASSIGN(auto text, io::readTextFile(path, "plate CSV", kMaxPlateFileBytes));
+  return parsePlateCsv(text, path, needSensors, needRows);
 }
 
 const char* plateCsvKindName(PlateCsvKind kind) {
-  switch (kind) {
-    case PlateCsvKind::Static: return "static";
-    case PlateCsvKind::Dynamic: return "dynamic";
-    case PlateCsvKind::Modal: return "modal";
-  }
-  return "static";
+  static constexpr auto kNames = enumTable<PlateCsvKind>(
+      {{PlateCsvKind::Static, "static"}, {PlateCsvKind::Dynamic, "dynamic"}, {PlateCsvKind::Modal, "modal"}}, "static");
+  return kNames.of(kind);
 }
 
 Result<PlateCsvKind> guessPlateCsvKind(const PlateCsv& csv) {
@@ -166,7 +162,7 @@ Result<PlateCsvKind> guessPlateCsvKind(const PlateCsv& csv) {
     for (std::size_t k = 1; k < csv.header.size(); ++k) {
       const std::string h = lower(csv.header[k]);
       if (h.rfind("re", 0) == 0 || h.rfind("im", 0) == 0) modal = true;
-      if (h.rfind("a", 0) == 0 || h.rfind("phi", 0) == 0 || h.find("phase") != std::string::npos ||
+      if (h.rfind('a', 0) == 0 || h.rfind("phi", 0) == 0 || h.find("phase") != std::string::npos ||
           h.find("deg") != std::string::npos)
         dynamic = true;
     }
@@ -185,7 +181,7 @@ Result<PlateCsvKind> guessPlateCsvKind(const PlateCsv& csv) {
 }
 
 Result<StaticTwistResult> staticTwistFromCsv(const PlateCsv& csv, const StaticTestOptions& options) {
-  if (auto r = needSensors(csv); !r) return r.error();
+  MOZZI_TRY(needSensors(csv));
   if (!csv.hasLoad) return makeError(ErrorCode::ParseError, "no 'load,u,v' row", csv.source);
   const std::size_t ns = csv.sensors.size();
   if (csv.rows.empty()) return makeError(ErrorCode::ParseError, "no data rows", csv.source);
@@ -208,7 +204,7 @@ Result<StaticTwistResult> staticTwistFromCsv(const PlateCsv& csv, const StaticTe
 }
 
 Result<std::vector<SweepPoint>> sweepFromCsv(const PlateCsv& csv) {
-  if (auto r = needSensors(csv); !r) return r.error();
+  MOZZI_TRY(needSensors(csv));
   const std::size_t ns = csv.sensors.size();
   if (csv.rows.empty()) return makeError(ErrorCode::ParseError, "no data rows", csv.source);
   const std::size_t nc = csv.rows.front().size();
@@ -237,7 +233,7 @@ Result<std::vector<SweepPoint>> sweepFromCsv(const PlateCsv& csv) {
 }
 
 Result<FrfMatrix> modalFrfFromCsv(const PlateCsv& csv, FrfType type) {
-  if (auto r = needSensors(csv); !r) return r.error();
+  MOZZI_TRY(needSensors(csv));
   const std::size_t ns = csv.sensors.size();
   if (csv.rows.empty()) return makeError(ErrorCode::ParseError, "no data rows", csv.source);
   if (csv.rows.front().size() != 1 + 2 * ns) {

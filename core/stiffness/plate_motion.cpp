@@ -173,23 +173,19 @@ Result<TwistAxis> axisFromPlane(const PlaneFit& plane, const Vector2& reference,
 
 Result<TwistAxis> staticTwistAxis(const std::vector<Vector2>& points, const std::vector<double>& displacements,
                                   const Vector2& reference, const PlaneFitOptions& options) {
-  auto plane = fitPlane(points, displacements, options);
-  if (!plane) return plane.error();
-  return axisFromPlane(*plane, reference, options);
+  MOZZI_TRY_ASSIGN(auto plane, fitPlane(points, displacements, options));
+  return axisFromPlane(plane, reference, options);
 }
 
 Result<PlanarMozzi> planarMozziAxis(const std::vector<Vector2>& pointsYZ, const std::vector<double>& dx,
                                     const Vector2& reference, const PlaneFitOptions& options) {
-  auto plane = fitPlane(pointsYZ, dx, options);
-  if (!plane) return plane.error();
+  MOZZI_TRY_ASSIGN(auto plane, fitPlane(pointsYZ, dx, options));
   PlanarMozzi m;
   // Eq. 16 with u = y, v = z: dx = dx_Q + (-dtheta_z) y + dtheta_y z.
-  m.dxQ = plane->coefficients(0);
-  m.dThetaZ = -plane->coefficients(1);
-  m.dThetaY = plane->coefficients(2);
-  auto axis = axisFromPlane(*plane, reference, options);
-  if (!axis) return axis.error();
-  m.twist = std::move(*axis);
+  m.dxQ = plane.coefficients(0);
+  m.dThetaZ = -plane.coefficients(1);
+  m.dThetaY = plane.coefficients(2);
+  MOZZI_TRY_ASSIGN(m.twist, axisFromPlane(plane, reference, options));
   return m;
 }
 
@@ -279,10 +275,8 @@ Result<StaticTwistResult> staticTwistTest(const std::vector<Vector2>& points, co
   PlaneFitOptions po = options.plane;
   // A displacement resolution r gives a compliance resolution about r / (F range).
   po.sigmaFloor = std::max(seMax, options.plane.sigmaFloor / (force.maxCoeff() - force.minCoeff()));
-  auto plane = fitPlane(points, compliance, po);
-  if (!plane) return plane.error();
-  auto axis = axisFromPlane(*plane, loadPoint, po);
-  if (!axis) return axis.error();
+  MOZZI_TRY_ASSIGN(const auto plane, fitPlane(points, compliance, po));
+  MOZZI_TRY_ASSIGN(auto axis, axisFromPlane(plane, loadPoint, po));
   // 3. Load-point displacement per sample from each sample's plane (linear in the
   // sensor readings), regressed on the force: x_lat = F / k_lat (eq. 29).
   std::vector<double> xl(static_cast<std::size_t>(nk));
@@ -290,29 +284,27 @@ Result<StaticTwistResult> staticTwistTest(const std::vector<Vector2>& points, co
     std::vector<double> dk(static_cast<std::size_t>(ns));
     for (Eigen::Index i = 0; i < ns; ++i) dk[static_cast<std::size_t>(i)] = displacements(k, i);
     PlaneFitOptions raw = options.plane;
-    auto pk = fitPlane(points, dk, raw);
-    if (!pk) return pk.error();
-    xl[static_cast<std::size_t>(k)] = pk->evaluate(loadPoint);
+    MOZZI_TRY_ASSIGN(auto pk, fitPlane(points, dk, raw));
+    xl[static_cast<std::size_t>(k)] = pk.evaluate(loadPoint);
   }
-  auto reg = linearRegression(fv, xl);
-  if (!reg) return reg.error();
+  MOZZI_TRY_ASSIGN(auto reg, linearRegression(fv, xl));
   StaticTwistResult out;
-  out.loadPoint = *reg;
-  if (!(reg->slope > 0.0)) {
+  out.loadPoint = reg;
+  if (!(reg.slope > 0.0)) {
     return makeError(ErrorCode::NumericalFailure,
-                     "the load point moves against the force (compliance " + formatNumber(reg->slope) +
+                     "the load point moves against the force (compliance " + formatNumber(reg.slope) +
                          " m/N): check the sign convention of the lasers and of the load cell",
                      "static twist test: load point");
   }
-  if (reg->slope < 3.0 * reg->slopeSe) {
+  if (reg.slope < 3.0 * reg.slopeSe) {
     return makeError(ErrorCode::NumericalFailure,
-                     "the load-point displacement is not resolved above the noise (slope " + formatNumber(reg->slope) +
-                         " +- " + formatNumber(reg->slopeSe) + " m/N)",
+                     "the load-point displacement is not resolved above the noise (slope " + formatNumber(reg.slope) +
+                         " +- " + formatNumber(reg.slopeSe) + " m/N)",
                      "static twist test: load point");
   }
-  out.lateralStiffness = 1.0 / reg->slope;
-  out.lateralStiffnessSe = reg->slopeSe / (reg->slope * reg->slope);
-  out.axis = std::move(*axis);
+  out.lateralStiffness = 1.0 / reg.slope;
+  out.lateralStiffnessSe = reg.slopeSe / (reg.slope * reg.slope);
+  out.axis = std::move(axis);
   // a_tw = x_lat / theta: the distance of the load point from the axis.
   const double arm = out.axis.axis.signedArm(loadPoint);
   out.twistArm = std::abs(arm);
@@ -341,9 +333,9 @@ Result<StaticTwistResult> staticTwistTest(const std::vector<Vector2>& points, co
   };
   out.positiveBranchStiffness = branch(true);
   out.negativeBranchStiffness = branch(false);
-  if (reg->rSquared < options.minR2) {
+  if (reg.rSquared < options.minR2) {
     out.linear = false;
-    note += "load-displacement not linear (R^2 = " + formatNumber(reg->rSquared) + "); ";
+    note += "load-displacement not linear (R^2 = " + formatNumber(reg.rSquared) + "); ";
   }
   if (out.positiveBranchStiffness > 0 && out.negativeBranchStiffness > 0) {
     const double rel = std::abs(out.positiveBranchStiffness - out.negativeBranchStiffness) / out.lateralStiffness;
@@ -368,10 +360,9 @@ Result<StaticTwistResult> staticTwistSingleLoad(const std::vector<Vector2>& poin
   if (!std::isfinite(force) || force == 0.0) {
     return makeError(ErrorCode::InvalidArgument, "the load must be finite and non-zero", "static twist: force");
   }
-  auto axis = staticTwistAxis(points, displacements, loadPoint, options);
-  if (!axis) return axis.error();
+  MOZZI_TRY_ASSIGN(auto axis, staticTwistAxis(points, displacements, loadPoint, options));
   StaticTwistResult out;
-  const double xlat = axis->plane.evaluate(loadPoint);
+  const double xlat = axis.plane.evaluate(loadPoint);
   if (!(xlat / force > 0.0)) {
     return makeError(ErrorCode::NumericalFailure,
                      "the load point moves against the force (x_lat = " + formatNumber(xlat) +
@@ -379,14 +370,14 @@ Result<StaticTwistResult> staticTwistSingleLoad(const std::vector<Vector2>& poin
                      "static twist: load point");
   }
   out.lateralStiffness = force / xlat;  // eq. 29
-  const double arm = axis->axis.signedArm(loadPoint);
+  const double arm = axis.axis.signedArm(loadPoint);
   out.twistArm = std::abs(arm);
-  out.twistArmSigma = axis->axis.offsetSigma;
+  out.twistArmSigma = axis.axis.offsetSigma;
   out.twistStiffness = out.lateralStiffness * out.twistArm * out.twistArm;  // eq. 30
   out.twistStiffnessSigma = out.twistArm > 0 ? 2.0 * out.twistStiffness * out.twistArmSigma / out.twistArm : 0.0;
-  out.lowConfidence = axis->lowConfidence;
-  out.note = axis->note;
-  out.axis = std::move(*axis);
+  out.lowConfidence = axis.lowConfidence;
+  out.note = axis.note;
+  out.axis = std::move(axis);
   return out;
 }
 

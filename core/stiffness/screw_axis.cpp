@@ -58,7 +58,7 @@ Result<ScrewAxis> fitScrew(const Matrix& at, const Matrix& along, const Vector& 
     a.block<1, 3>(k, 3) = -e.transpose() * skew(r);  // e . (w x r) = -e . (r x w)
   }
   Eigen::JacobiSVD<Matrix> svd(a, Eigen::ComputeThinU | Eigen::ComputeThinV);
-  const Vector s = svd.singularValues();
+  const Vector& s = svd.singularValues();
   if (s.size() < 6 || !(s(5) > 1e-8 * s(0)))
     return makeError(ErrorCode::NumericalFailure, rankProblem, "screw axis: points");
   const double cond = s(0) / s(5);
@@ -179,7 +179,9 @@ namespace {
 // phi = atan2(2C, A - B) / 2; returns e^{-i phi} D.
 template <class M>
 M alignPhase(const M& d) {
-  const auto re = d.real(), im = d.imag();
+  // Two declarations: real() and imag() are expressions of different types.
+  const auto re = d.real();
+  const auto im = d.imag();
   const double aa = re.squaredNorm(), bb = im.squaredNorm(), cc = (re.array() * im.array()).sum();
   const double phi = 0.5 * std::atan2(2 * cc, aa - bb);
   return d * std::polar(1.0, -phi);

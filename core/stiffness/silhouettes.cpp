@@ -36,12 +36,8 @@ Result<SilhouetteComponent> component(const std::string& key, const nlohmann::js
   if (!j.is_object()) return bad("a component is an object", where);
   SilhouetteComponent c;
   c.key = key;
-  auto name = text(j, "name", where);
-  if (!name) return name.error();
-  c.name = *name;
-  auto source = text(j, "source", where);
-  if (!source) return source.error();
-  c.source = *source;
+  MOZZI_TRY_ASSIGN(c.name, text(j, "name", where));
+  MOZZI_TRY_ASSIGN(c.source, text(j, "source", where));
   if (j.contains("polygons")) {
     if (!j["polygons"].is_array()) return bad("\"polygons\" is a list of point lists", where);
     for (std::size_t i = 0; i < j["polygons"].size(); ++i) {
@@ -50,9 +46,8 @@ Result<SilhouetteComponent> component(const std::string& key, const nlohmann::js
       if (!poly.is_array() || poly.size() < 3) return bad("a polygon needs at least 3 points", pw);
       std::vector<Vector2> pts;
       for (const auto& p : poly) {
-        auto v = point(p, pw);
-        if (!v) return v.error();
-        pts.push_back(*v);
+        MOZZI_TRY_ASSIGN(auto v, point(p, pw));
+        pts.push_back(v);
       }
       c.polygons.push_back(std::move(pts));
     }
@@ -65,14 +60,13 @@ Result<SilhouetteComponent> component(const std::string& key, const nlohmann::js
       if (!circle.is_object() || !circle.contains("centre") || !circle.contains("radius") ||
           !circle["radius"].is_number())
         return bad("a circle is {\"centre\": [x, z], \"radius\": r}", cw);
-      auto centre = point(circle["centre"], cw);
-      if (!centre) return centre.error();
+      MOZZI_TRY_ASSIGN(auto centre, point(circle["centre"], cw));
       const double r = circle["radius"].get<double>();
       if (!(r > 0.0) || !std::isfinite(r)) return bad("the radius must be positive", cw);
       std::vector<Vector2> pts;
       for (int k = 0; k < kCircleSides; ++k) {
         const double a = 2.0 * kPi * k / kCircleSides;
-        pts.push_back(*centre + r * Vector2(std::cos(a), std::sin(a)));
+        pts.push_back(centre + r * Vector2(std::cos(a), std::sin(a)));
       }
       c.polygons.push_back(std::move(pts));
     }
@@ -81,18 +75,13 @@ Result<SilhouetteComponent> component(const std::string& key, const nlohmann::js
   if (j.contains("points")) {
     if (!j["points"].is_object()) return bad("\"points\" maps names to [x, z]", where);
     for (auto it = j["points"].begin(); it != j["points"].end(); ++it) {
-      auto v = point(it.value(), where + ", point " + it.key());
-      if (!v) return v.error();
-      c.points.push_back({it.key(), *v});
+      MOZZI_TRY_ASSIGN(auto v, point(it.value(), where + ", point " + it.key()));
+      c.points.push_back({it.key(), v});
     }
   }
   if (j.contains("centre_of_gravity")) {
-    auto v = point(j["centre_of_gravity"], where + ", centre_of_gravity");
-    if (!v) return v.error();
-    c.centreOfGravity = *v;
-    auto note = text(j, "centre_of_gravity_note", where, false);
-    if (!note) return note.error();
-    c.centreOfGravityNote = *note;
+    MOZZI_TRY_ASSIGN(c.centreOfGravity, point(j["centre_of_gravity"], where + ", centre_of_gravity"));
+    MOZZI_TRY_ASSIGN(c.centreOfGravityNote, text(j, "centre_of_gravity_note", where, false));
   }
   return c;
 }
@@ -121,24 +110,17 @@ Result<SilhouetteCatalogue> parseSilhouettes(const std::string& json) {
   const auto j = nlohmann::json::parse(json, nullptr, false);
   if (j.is_discarded() || !j.is_object()) return bad("not a JSON object", "file");
   SilhouetteCatalogue cat;
-  auto format = text(j, "format", "file");
-  if (!format) return format.error();
-  if (*format != "mozzi-silhouettes 1") return bad("unknown format \"" + *format + "\"", "file");
-  cat.format = *format;
+  MOZZI_TRY_ASSIGN(cat.format, text(j, "format", "file"));
+  if (cat.format != "mozzi-silhouettes 1") return bad("unknown format \"" + cat.format + "\"", "file");
   if (!j.contains("approximate") || !j["approximate"].is_boolean())
     return bad("\"approximate\" (true or false) is required", "file");
   cat.approximate = j["approximate"].get<bool>();
-  auto note = text(j, "note", "file");
-  if (!note) return note.error();
-  cat.note = *note;
-  auto coordinates = text(j, "coordinates", "file");
-  if (!coordinates) return coordinates.error();
-  cat.coordinates = *coordinates;
+  MOZZI_TRY_ASSIGN(cat.note, text(j, "note", "file"));
+  MOZZI_TRY_ASSIGN(cat.coordinates, text(j, "coordinates", "file"));
   if (!j.contains("components") || !j["components"].is_object()) return bad("\"components\" is required", "file");
   for (auto it = j["components"].begin(); it != j["components"].end(); ++it) {
-    auto c = component(it.key(), it.value());
-    if (!c) return c.error();
-    cat.components.push_back(std::move(c).value());
+    MOZZI_TRY_ASSIGN(auto c, component(it.key(), it.value()));
+    cat.components.push_back(std::move(c));
   }
   if (!j.contains("specimens") || !j["specimens"].is_object()) return bad("\"specimens\" is required", "file");
   for (auto it = j["specimens"].begin(); it != j["specimens"].end(); ++it) {
@@ -154,16 +136,14 @@ Result<SilhouetteCatalogue> parseSilhouettes(const std::string& json) {
         return bad("names a component the file does not have", where);
       p.components.push_back(c.get<std::string>());
     }
-    auto load = text(s, "load_point", where);
-    if (!load) return load.error();
-    auto constrained = text(s, "constrained_end", where);
-    if (!constrained) return constrained.error();
+    MOZZI_TRY_ASSIGN(auto load, text(s, "load_point", where));
+    MOZZI_TRY_ASSIGN(auto constrained, text(s, "constrained_end", where));
     const SilhouetteComponent* first = cat.component(p.components.front());
-    if (!first->point(*load)) return bad("load point \"" + *load + "\" is not a point of " + first->key, where);
-    if (!first->point(*constrained))
-      return bad("constrained end \"" + *constrained + "\" is not a point of " + first->key, where);
-    p.loadPoint = *load;
-    p.constrainedEnd = *constrained;
+    if (!first->point(load)) return bad("load point \"" + load + "\" is not a point of " + first->key, where);
+    if (!first->point(constrained))
+      return bad("constrained end \"" + constrained + "\" is not a point of " + first->key, where);
+    p.loadPoint = load;
+    p.constrainedEnd = constrained;
     if (s.contains("u_sign")) {
       if (!s["u_sign"].is_number() || std::abs(std::abs(s["u_sign"].get<double>()) - 1.0) > 0.0)
         return bad("\"u_sign\" is 1 or -1", where);

@@ -185,7 +185,11 @@ DataSpread spread(const std::vector<SteadyStatePoint>& d) {
   return s;
 }
 
-Result<void> checkData(const std::vector<SteadyStatePoint>& d, const char* where) {
+// The spread of a fit's data, once the constants are positive and every point
+// is finite with positive load and pressure.
+Result<DataSpread> checkedSpread(const std::vector<SteadyStatePoint>& d, const MfConstants& c, const char* where) {
+  if (c.nominalLoad <= 0 || c.nominalPressure <= 0 || c.unloadedRadius <= 0)
+    return makeError(ErrorCode::InvalidArgument, "nominal load, pressure and radius must be positive", where);
   for (std::size_t i = 0; i < d.size(); ++i) {
     const auto& x = d[i];
     const std::string at = std::string(where) + ", point " + std::to_string(i + 1);
@@ -196,7 +200,7 @@ Result<void> checkData(const std::vector<SteadyStatePoint>& d, const char* where
     if (!std::isfinite(x.pressure) || x.pressure <= 0.0)
       return makeError(ErrorCode::InvalidArgument, "inflation pressure must be positive", at);
   }
-  return {};
+  return spread(d);
 }
 
 template <std::size_t N>
@@ -331,10 +335,7 @@ double mfAligningTorque(const MfAligningCoefficients& q, const MfLateralCoeffici
 Result<MfLateralFit> fitMfLateral(const std::vector<SteadyStatePoint>& data, const MfConstants& c,
                                   const MfFitOptions& options, std::optional<MfLateralCoefficients> start) {
   const char* where = "Magic Formula lateral force fit";
-  if (c.nominalLoad <= 0 || c.nominalPressure <= 0 || c.unloadedRadius <= 0)
-    return makeError(ErrorCode::InvalidArgument, "nominal load, pressure and radius must be positive", where);
-  if (auto ok = checkData(data, where); !ok) return ok.error();
-  const DataSpread s = spread(data);
+  MOZZI_TRY_ASSIGN(const DataSpread s, checkedSpread(data, c, where));
   std::set<std::string> held;
   if (options.autoFix) {
     if (s.pressures < 2) held.insert({"ppy1", "ppy2", "ppy3", "ppy4"});
@@ -346,8 +347,7 @@ Result<MfLateralFit> fitMfLateral(const std::vector<SteadyStatePoint>& data, con
     if (!s.slipTwoSided) held.insert({"pEy3", "pEy4"});  // sgn(alpha) constant
   }
   std::vector<std::string> heldNames;
-  auto mask = freeMask(mfLateralNames(), options.fixed, held, heldNames, where);
-  if (!mask) return mask.error();
+  MOZZI_TRY_ASSIGN(const auto mask, freeMask(mfLateralNames(), options.fixed, held, heldNames, where));
   MfLateralCoefficients x = start.value_or(mfLateralDefaults());
   if (!start) {  // data-driven start: peak and slope
     double peak = 0, meanLoad = 0;
@@ -361,7 +361,7 @@ Result<MfLateralFit> fitMfLateral(const std::vector<SteadyStatePoint>& data, con
     problem.AddResidualBlock(new ceres::AutoDiffCostFunction<LateralResidual, 1, kMfLateralCount>(
                                  new LateralResidual{c, {d.slip, d.camber, d.load, d.pressure}, d.force}),
                              nullptr, x.data());
-  auto fit = solve(problem, x, *mask, static_cast<int>(data.size()), options.maxIterations, where);
+  auto fit = solve(problem, x, mask, static_cast<int>(data.size()), options.maxIterations, where);
   if (fit) fit->heldByData = heldNames;
   return fit;
 }
@@ -370,10 +370,7 @@ Result<MfAligningFit> fitMfAligning(const std::vector<SteadyStatePoint>& data, c
                                     const MfLateralCoefficients& lat, const MfFitOptions& options,
                                     std::optional<MfAligningCoefficients> start) {
   const char* where = "Magic Formula aligning torque fit";
-  if (c.nominalLoad <= 0 || c.nominalPressure <= 0 || c.unloadedRadius <= 0)
-    return makeError(ErrorCode::InvalidArgument, "nominal load, pressure and radius must be positive", where);
-  if (auto ok = checkData(data, where); !ok) return ok.error();
-  const DataSpread s = spread(data);
+  MOZZI_TRY_ASSIGN(const DataSpread s, checkedSpread(data, c, where));
   std::set<std::string> held;
   if (options.autoFix) {
     if (s.pressures < 2) held.insert({"ppz1", "ppz2"});
@@ -386,8 +383,7 @@ Result<MfAligningFit> fitMfAligning(const std::vector<SteadyStatePoint>& data, c
     if (s.loads < 2 && s.pressures < 2 && s.cambers < 2) held.insert("qBz10");
   }
   std::vector<std::string> heldNames;
-  auto mask = freeMask(mfAligningNames(), options.fixed, held, heldNames, where);
-  if (!mask) return mask.error();
+  MOZZI_TRY_ASSIGN(const auto mask, freeMask(mfAligningNames(), options.fixed, held, heldNames, where));
   MfAligningCoefficients x = start.value_or(mfAligningDefaults());
   if (!start) {  // trail at the origin from the slopes: dM_z/dalpha ~ -t0 K_ya
     const double kf = roughSlope(data, false), km = roughSlope(data, true);
@@ -406,7 +402,7 @@ Result<MfAligningFit> fitMfAligning(const std::vector<SteadyStatePoint>& data, c
                                  new AligningResidual{c, cond, lp, d.torque}),
                              nullptr, x.data());
   }
-  auto fit = solve(problem, x, *mask, static_cast<int>(data.size()), options.maxIterations, where);
+  auto fit = solve(problem, x, mask, static_cast<int>(data.size()), options.maxIterations, where);
   if (fit) fit->heldByData = heldNames;
   return fit;
 }

@@ -78,12 +78,11 @@ Result<MeasuredRelaxation> measuredRelaxation(const io::StoredTyreTest& t) {
 }
 
 Result<RelaxationOverview> relaxationOverview(const io::ProjectStore& store, std::int64_t specimenId) {
-  auto summary = store.summary();
-  if (!summary) return summary.error();
+  MOZZI_TRY_ASSIGN(auto summary, store.summary());
   RelaxationOverview o;
   o.specimenId = specimenId;
   bool found = false;
-  for (const auto& s : summary->specimens)
+  for (const auto& s : summary.specimens)
     if (s.id == specimenId) o.specimenName = s.name, found = true;
   const std::string where = "relaxation overview of specimen " + std::to_string(specimenId);
   if (!found) return makeError(ErrorCode::NotFound, "no such specimen in the project", where);
@@ -96,33 +95,29 @@ Result<RelaxationOverview> relaxationOverview(const io::ProjectStore& store, std
                      where);
   o.tyre = *tyre;
   // Table 16 ring at nominal pressure, eq. 45 to 47 with the assumed mass and damping.
-  auto ring = ringModelFromStiffness({{0, tyre->lateralStiffness, kAssumedDampingRatio},
-                                      {1, tyre->camberStiffness, kAssumedDampingRatio},
-                                      {2, tyre->cShapedStiffness, kAssumedDampingRatio},
-                                      {3, tyre->sShapedStiffness, kAssumedDampingRatio}},
-                                     RingModelSettings{tyre->tyreMass, 0.8, tyre->outerRadius});
-  if (!ring) return ring.error();
-  o.ring = *ring;
+  MOZZI_TRY_ASSIGN(o.ring, ringModelFromStiffness({{0, tyre->lateralStiffness, kAssumedDampingRatio},
+                                                   {1, tyre->camberStiffness, kAssumedDampingRatio},
+                                                   {2, tyre->cShapedStiffness, kAssumedDampingRatio},
+                                                   {3, tyre->sShapedStiffness, kAssumedDampingRatio}},
+                                                  RingModelSettings{tyre->tyreMass, 0.8, tyre->outerRadius}));
 
-  auto infos = store.tyreTests();
-  if (!infos) return infos.error();
+  MOZZI_TRY_ASSIGN(auto infos, store.tyreTests());
   struct Cornering {
     std::int64_t id;
     double pressurePa, loadN, value;
   };
   std::vector<Cornering> cornering;  // the specimen's steady-state results
-  for (const auto& info : *infos) {
+  for (const auto& info : infos) {
     if (info.specimenId != specimenId) continue;
-    auto t = store.tyreTest(info.id);
-    if (!t) return t.error();
-    if (t->kind == "relaxation") {
-      auto m = measuredRelaxation(*t);
+    MOZZI_TRY_ASSIGN(auto t, store.tyreTest(info.id));
+    if (t.kind == "relaxation") {
+      auto m = measuredRelaxation(t);
       if (m)
         o.tests.push_back(std::move(*m));
       else
         o.unreadableTests.push_back(info.id);
-    } else if (const auto* c = wholeTestParameter(*t, "cornering_stiffness"); c && c->value > 0.0) {
-      cornering.push_back({t->id, t->inflationPressurePa, t->verticalLoadN, c->value});
+    } else if (const auto* c = wholeTestParameter(t, "cornering_stiffness"); c && c->value > 0.0) {
+      cornering.push_back({t.id, t.inflationPressurePa, t.verticalLoadN, c->value});
     }
   }
   std::stable_sort(o.tests.begin(), o.tests.end(), [](const MeasuredRelaxation& a, const MeasuredRelaxation& b) {
@@ -156,16 +151,16 @@ Result<RelaxationOverview> relaxationOverview(const io::ProjectStore& store, std
     return c;
   };
   for (std::size_t i = 0; i < kThesisPressures.size(); ++i) {
-    auto c = predict(kThesisPressures[i], tyre->halfLength[i], tyre->testLoad);
-    if (!c) return c.error();
-    o.table17.push_back(*c);
+    MOZZI_TRY_ASSIGN(auto c, predict(kThesisPressures[i], tyre->halfLength[i], tyre->testLoad));
+    o.table17.push_back(c);
   }
   for (const auto& t : o.tests) {
     const double load = t.verticalLoadN > 0.0 ? t.verticalLoadN : tyre->testLoad;
     // A test that stored no half-length: Table 17 at its pressure.
-    auto c = predict(t.pressurePa, t.halfLengthM > 0.0 ? t.halfLengthM : table17HalfLength(*tyre, t.pressurePa), load);
-    if (!c) return c.error();
-    o.atTests.push_back(*c);
+    MOZZI_TRY_ASSIGN(
+        auto c,
+        predict(t.pressurePa, t.halfLengthM > 0.0 ? t.halfLengthM : table17HalfLength(*tyre, t.pressurePa), load));
+    o.atTests.push_back(c);
   }
   return o;
 }

@@ -70,7 +70,7 @@ namespace {
 template <class Input, class Complete>
 Result<RingModel> buildRingModel(const std::vector<Input>& in, const RingModelSettings& s, const char* where,
                                  Complete complete) {
-  if (auto ok = checkSettings(s, where); !ok) return ok.error();
+  MOZZI_TRY(checkSettings(s, where));
   if (in.empty()) return makeError(ErrorCode::InvalidArgument, "no mode given", where);
   RingModel model;
   model.ringMass = s.beltShare * s.tyreMass;
@@ -78,7 +78,7 @@ Result<RingModel> buildRingModel(const std::vector<Input>& in, const RingModelSe
   std::set<int> seen;
   for (const auto& mi : in) {
     const std::string at = std::string(where) + ", mode k=" + std::to_string(mi.k);
-    if (auto ok = checkK(mi.k, seen, at); !ok) return ok.error();
+    MOZZI_TRY(checkK(mi.k, seen, at));
     if (!std::isfinite(mi.dampingRatio) || mi.dampingRatio < 0.0)
       return makeError(ErrorCode::InvalidArgument, "damping ratio must be finite and not negative", at);
     RingMode m;
@@ -120,7 +120,8 @@ Result<RingModel> ringModelFromStiffness(const std::vector<RingStiffnessInput>& 
                         });
 }
 
-Result<ComplexVector> ringFrf(const RingModel& ring, const RingFrfInputs& in, VectorRef omega, RingFrfVariant variant) {
+Result<ComplexVector> ringFrf(const RingModel& ring, const RingFrfInputs& in, const VectorRef& omega,
+                              RingFrfVariant variant) {
   const char* where = "ring-model FRF (thesis appendix 1)";
   if (!std::isfinite(in.speed) || in.speed <= 0.0)
     return makeError(ErrorCode::InvalidArgument, "forward speed V must be positive", where);
@@ -157,17 +158,16 @@ Result<ComplexVector> ringFrf(const RingModel& ring, const RingFrfInputs& in, Ve
   return h;
 }
 
-Result<ImpliedRelaxation> impliedRelaxationLength(const RingModel& ring, const RingFrfInputs& in, VectorRef omega,
-                                                  RingFrfVariant variant) {
-  auto h = ringFrf(ring, in, omega, variant);
-  if (!h) return h.error();
+Result<ImpliedRelaxation> impliedRelaxationLength(const RingModel& ring, const RingFrfInputs& in,
+                                                  const VectorRef& omega, RingFrfVariant variant) {
+  MOZZI_TRY_ASSIGN(auto h, ringFrf(ring, in, omega, variant));
   ImpliedRelaxation out;
   out.omega = omega;
   out.phaseLag.resize(omega.size());
   out.sigma = Vector::Zero(omega.size());
   out.valid.assign(static_cast<std::size_t>(omega.size()), false);
   for (Eigen::Index i = 0; i < omega.size(); ++i) {
-    out.phaseLag[i] = -std::arg((*h)[i]);
+    out.phaseLag[i] = -std::arg(h[i]);
     if (omega[i] <= 0.0) continue;
     auto s = relaxationLengthFromPhaseLag(out.phaseLag[i], omega[i], in.speed, in.halfLength);
     if (s) {

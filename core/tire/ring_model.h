@@ -101,7 +101,8 @@ struct RingFrfInputs {
 // with C_zz = C_1 r^2, K_zz = c_1 r^2 (yaw mode = camber mode by axial
 // symmetry, §5.4). Errors: V not positive, no camber mode while t_0 != 0,
 // negative inputs.
-Result<ComplexVector> ringFrf(const RingModel& ring, const RingFrfInputs& in, VectorRef omega, RingFrfVariant variant);
+Result<ComplexVector> ringFrf(const RingModel& ring, const RingFrfInputs& in, const VectorRef& omega,
+                              RingFrfVariant variant);
 
 // The relaxation length the phase of H implies at each w: eq. (1) of
 // relaxation_length.h applied to lag = -arg H. Points whose lag is outside the
@@ -112,7 +113,7 @@ struct ImpliedRelaxation {
   Vector sigma;     // [m]
   std::vector<bool> valid;
 };
-Result<ImpliedRelaxation> impliedRelaxationLength(const RingModel& ring, const RingFrfInputs& in, VectorRef omega,
-                                                  RingFrfVariant variant);
+Result<ImpliedRelaxation> impliedRelaxationLength(const RingModel& ring, const RingFrfInputs& in,
+                                                  const VectorRef& omega, RingFrfVariant variant);
 
 }  // namespace mozzi::core::tire

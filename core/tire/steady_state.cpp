@@ -6,7 +6,7 @@
 
 namespace mozzi::core::tire {
 
-Result<SlopeEstimate> slopeAtOrigin(VectorRef x, VectorRef y, double halfWindow, int degree) {
+Result<SlopeEstimate> slopeAtOrigin(const VectorRef& x, const VectorRef& y, double halfWindow, int degree) {
   const char* where = "slope at the origin (local regression)";
   if (x.size() != y.size()) return makeError(ErrorCode::InvalidArgument, "angle and value counts differ", where);
   if (degree < 1 || degree > 3)

@@ -28,7 +28,7 @@ struct SlopeEstimate {
 // Errors: sizes differ, NaN, the angle sequence not strictly monotonic in the
 // order given (a sweep), fewer than degree + 2 points in the window, degree
 // outside 1..3, a window that does not reach both sides of zero nor start at it.
-Result<SlopeEstimate> slopeAtOrigin(VectorRef angle, VectorRef value, double halfWindow, int degree = 2);
+Result<SlopeEstimate> slopeAtOrigin(const VectorRef& angle, const VectorRef& value, double halfWindow, int degree = 2);
 
 // One steady-state sweep at fixed load, pressure and speed: angle in rad
 // (side slip or camber), lateral force F_y [N] and yaw torque M_z [N m].

@@ -133,9 +133,9 @@ Result<NumericTable> parseNumericTable(std::string_view text, const std::string&
 }
 
 Result<NumericTable> readNumericTable(const std::string& path, const std::vector<std::string>& required) {
-  auto text = io::readTextFile(path, "tyre test");  // size cap: core/io/text_file.h
-  if (!text) return text.error();
-  return parseNumericTable(*text, path, required);
+  // size cap: core/io/text_file.h
+  MOZZI_TRY_ASSIGN(const std::string text, io::readTextFile(path, "tyre test"));
+  return parseNumericTable(text, path, required);
 }
 
 const std::vector<std::string>& harmonicYawColumns() {

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <map>
 
+#include "core/common/enum_names.h"
 #include "core/io/csv/csv_internal.h"
 #include "core/io/output_file.h"
 
@@ -161,26 +162,21 @@ Result<FrfUnit> frfUnit(const std::string& unit) {
   if (!force || force->quantity != "force" || !response) {
     return makeError(ErrorCode::ParseError, "FRF unit '" + unit + "' is not a translational response per force");
   }
-  FrfType type;
-  if (response->quantity == "displacement")
-    type = FrfType::Receptance;
-  else if (response->quantity == "velocity")
-    type = FrfType::Mobility;
-  else if (response->quantity == "acceleration")
-    type = FrfType::Accelerance;
-  else
+  static constexpr auto kResponseQuantities = enumTable<FrfType>(
+      {{FrfType::Receptance, "displacement"}, {FrfType::Mobility, "velocity"}, {FrfType::Accelerance, "acceleration"}},
+      "");
+  const auto type = kResponseQuantities.find(response->quantity.c_str());
+  if (!type) {
     return makeError(ErrorCode::ParseError,
                      "FRF unit '" + unit + "' is not displacement, velocity or acceleration per force");
-  return FrfUnit{type, response->factor / force->factor};
+  }
+  return FrfUnit{*type, response->factor / force->factor};
 }
 
 const char* frfUnitText(FrfType type) {
-  switch (type) {
-    case FrfType::Receptance: return "m/N";
-    case FrfType::Mobility: return "m/s/N";
-    case FrfType::Accelerance: return "m/s^2/N";
-  }
-  return "m/s^2/N";
+  static constexpr auto kUnits = enumTable<FrfType>(
+      {{FrfType::Receptance, "m/N"}, {FrfType::Mobility, "m/s/N"}, {FrfType::Accelerance, "m/s^2/N"}}, "m/s^2/N");
+  return kUnits.of(type);
 }
 
 Result<std::string> readWholeFile(const std::string& path) {

@@ -254,19 +254,19 @@ Result<void> readLinksSection(const Table& t, const std::string& source, const s
   const bool lines = sectionName == "lines";
   std::vector<std::string> required = {"node a", "node b"};
   if (!lines) required.push_back("node c");
-  auto cols = meshColumns(t, required, lines ? std::vector<std::string>{} : std::vector<std::string>{"node d"},
-                          sectionName, source);
-  if (!cols) return cols.error();
-  for (const auto& [name, index] : cols->index) MOZZI_TRY(checkDimensionless(*cols, name, t, source));
+  MOZZI_TRY_ASSIGN(auto cols,
+                   meshColumns(t, required, lines ? std::vector<std::string>{} : std::vector<std::string>{"node d"},
+                               sectionName, source));
+  for (const auto& [name, index] : cols.index) MOZZI_TRY(checkDimensionless(cols, name, t, source));
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     int v[4] = {0, 0, 0, 0};
     for (int k = 0; k < 4; ++k) {
       const std::string name = std::string("node ") + "abcd"[k];
-      if (!cols->index.count(name)) continue;
-      MOZZI_TRY_ASSIGN(auto x, intAt(t, r, *cols, source, name));
+      if (!cols.index.count(name)) continue;
+      MOZZI_TRY_ASSIGN(auto x, intAt(t, r, cols, source, name));
       if (x < 0 || (x == 0 && k < 3)) {
         return parseError(name + " must be a node label (positive)", source, t.rowLines[r],
-                          static_cast<int>(cols->index.at(name) + 1));
+                          static_cast<int>(cols.index.at(name) + 1));
       }
       v[k] = x;
     }
@@ -297,23 +297,23 @@ Result<void> readDofsSection(const Table& t, const std::string& source, const st
 
 Result<void> readSlavesSection(const Table& t, const std::string& source, const std::string& sectionName,
                                MeshDocument& doc) {
-  auto cols = meshColumns(t, {"slave node", "slave direction", "master node", "master direction", "weight"}, {},
-                          sectionName, source);
-  if (!cols) return cols.error();
+  MOZZI_TRY_ASSIGN(auto cols,
+                   meshColumns(t, {"slave node", "slave direction", "master node", "master direction", "weight"}, {},
+                               sectionName, source));
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     Dof dofs[2];
     for (int k = 0; k < 2; ++k) {
       const std::string who = k == 0 ? "slave" : "master";
-      MOZZI_TRY_ASSIGN(auto node, intAt(t, r, *cols, source, who + " node"));
-      MOZZI_TRY_ASSIGN(auto code, intAt(t, r, *cols, source, who + " direction"));
+      MOZZI_TRY_ASSIGN(auto node, intAt(t, r, cols, source, who + " node"));
+      MOZZI_TRY_ASSIGN(auto code, intAt(t, r, cols, source, who + " direction"));
       auto dof = dofFromUff(node, code);
       if (!dof) {
         return parseError(who + " direction must be a UFF code +/-1..6", source, t.rowLines[r],
-                          static_cast<int>(cols->index.at(who + " direction") + 1));
+                          static_cast<int>(cols.index.at(who + " direction") + 1));
       }
       dofs[k] = *dof;
     }
-    const double weight = t.rows[r][cols->index.at("weight")];
+    const double weight = t.rows[r][cols.index.at("weight")];
     // Rows of one slave are consecutive in files Mozzi writes; any order is read.
     auto it =
         std::find_if(doc.slaves.begin(), doc.slaves.end(), [&](const SlavedDof& s) { return s.slave == dofs[0]; });

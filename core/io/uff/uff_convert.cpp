@@ -7,6 +7,7 @@
 #include <functional>
 #include <map>
 
+#include "core/common/enum_names.h"
 #include "core/io/uff/uff.h"
 
 namespace mozzi::core::io::uff {
@@ -18,32 +19,15 @@ std::string pairName(const Dof& o, const Dof& i) {
   return "response " + formatDof(o) + ", reference " + formatDof(i);
 }
 
-// Record 9 specific data type -> FRF type (numerator displacement 8,
-// velocity 11, acceleration 12 over force).
-std::optional<FrfType> frfTypeOf(const Function58& f) {
-  switch (f.ordinateNumerator.specificDataType) {
-    case 8: return FrfType::Receptance;
-    case 11: return FrfType::Mobility;
-    case 12: return FrfType::Accelerance;
-    default: return std::nullopt;
-  }
-}
+// Record 9 specific data type of the numerator <-> FRF type (displacement 8,
+// velocity 11, acceleration 12 over force), and the numerator's units.
+constexpr auto kNumeratorCodes =
+    enumTable<FrfType>({{FrfType::Receptance, 8}, {FrfType::Mobility, 11}, {FrfType::Accelerance, 12}}, 0);
+constexpr auto kNumeratorUnits = enumTable<FrfType>(
+    {{FrfType::Receptance, "m"}, {FrfType::Mobility, "m/s"}, {FrfType::Accelerance, "m/s^2"}}, "NONE");
 
-int numeratorCode(FrfType t) {
-  switch (t) {
-    case FrfType::Receptance: return 8;
-    case FrfType::Mobility: return 11;
-    case FrfType::Accelerance: return 12;
-  }
-  return 0;
-}
-const char* numeratorUnits(FrfType t) {
-  switch (t) {
-    case FrfType::Receptance: return "m";
-    case FrfType::Mobility: return "m/s";
-    case FrfType::Accelerance: return "m/s^2";
-  }
-  return "NONE";
+std::optional<FrfType> frfTypeOf(const Function58& f) {
+  return kNumeratorCodes.find(f.ordinateNumerator.specificDataType);
 }
 
 // Same abscissa: relative agreement to 1e-9 of the axis span (ASCII records
@@ -165,7 +149,7 @@ Result<FrfMatrix> assemble(const std::vector<const Function58*>& frfs, const std
     }
   }
   if (complete) m.coherence = std::move(coherence);
-  if (auto v = m.validate(); !v) return v.error();
+  MOZZI_TRY(m.validate());
   return m;
 }
 
@@ -218,13 +202,11 @@ Result<FrfMatrix> readFrfMatrix(const std::string& path, const FrfConversionOpti
     lastColumn = used++;
     return reinterpret_cast<double*>(pool.col(lastColumn).data());
   };
-  auto reader = DatasetReader::open(path, std::move(ro));
-  if (!reader) return reader.error();
+  MOZZI_TRY_ASSIGN(auto reader, DatasetReader::open(path, std::move(ro)));
   for (;;) {
-    auto ds = reader->next();
-    if (!ds) return ds.error();
-    if (!*ds) break;
-    Function58* f = (*ds)->get<Function58>();
+    MOZZI_TRY_ASSIGN(auto ds, reader.next());
+    if (!ds) break;
+    Function58* f = ds->get<Function58>();
     if (!f || (f->functionType != FunctionType::Frf && f->functionType != FunctionType::Coherence)) continue;
     columns.push_back(f->functionType == FunctionType::Frf ? lastColumn : -1);
     records.push_back(std::move(*f));
@@ -240,7 +222,7 @@ Result<FrfMatrix> readFrfMatrix(const std::string& path, const FrfConversionOpti
 }
 
 Result<std::vector<Function58>> fromFrfMatrix(const FrfMatrix& frf) {
-  if (auto v = frf.validate(); !v) return v.error();
+  MOZZI_TRY(frf.validate());
   const Eigen::Index nf = frf.lineCount();
   bool even = nf >= 2;
   const double df = nf >= 2 ? (frf.frequencyHz[nf - 1] - frf.frequencyHz[0]) / static_cast<double>(nf - 1) : 0.0;
@@ -271,7 +253,8 @@ Result<std::vector<Function58>> fromFrfMatrix(const FrfMatrix& frf) {
       Function58 f = base(frf.responses[static_cast<std::size_t>(oo)], frf.references[ii], FunctionType::Frf);
       f.ordinateType = OrdinateType::ComplexDouble;
       f.complex = frf.h[ii].col(oo);
-      f.ordinateNumerator = AxisInfo{numeratorCode(frf.type), 0, 0, 0, frfTypeName(frf.type), numeratorUnits(frf.type)};
+      f.ordinateNumerator =
+          AxisInfo{kNumeratorCodes.of(frf.type), 0, 0, 0, frfTypeName(frf.type), kNumeratorUnits.of(frf.type)};
       f.ordinateDenominator = AxisInfo{13, 0, 0, 0, "Force", "N"};
       out.push_back(std::move(f));
     }

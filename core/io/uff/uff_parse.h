@@ -271,6 +271,15 @@ inline bool fitsInt(long long v) {
   return v >= std::numeric_limits<int>::min() && v <= std::numeric_limits<int>::max();
 }
 
+// The error "<record>: value V out of range" at the first value that does not
+// fit an int.
+template <class Values>
+Result<void> checkFitsInt(const DatasetContext& ctx, const char* record, const Values& values) {
+  for (long long v : values)
+    if (!fitsInt(v)) return ctx.error(std::string(record) + ": value " + std::to_string(v) + " out of range");
+  return {};
+}
+
 // Reads text lines of a fixed-count block of records, allowing an early end.
 Line textLine(DatasetContext& ctx, std::string& out);
 

@@ -43,13 +43,8 @@ Result<void> parseRecord6(DatasetContext& ctx, std::string_view line, Function58
     // Columns shifted: blank-separated tokens, names being whatever lies
     // between the 4 leading integers and the node/direction pairs.
     std::vector<std::string_view> tok;
-    std::string_view rest = trim(line);
-    while (!rest.empty()) {
-      std::size_t k = 0;
-      while (k < rest.size() && !detail::isBlankChar(rest[k])) ++k;
-      tok.push_back(rest.substr(0, k));
-      rest = trim(rest.substr(k));
-    }
+    detail::Words words(line);
+    for (std::string_view w; words.next(w);) tok.push_back(w);
     long long x = 0;
     bool ok = tok.size() >= 8;
     for (std::size_t i = 0; ok && i < 4; ++i) ok = parseInt(tok[i], v[i]);
@@ -76,8 +71,7 @@ Result<void> parseRecord6(DatasetContext& ctx, std::string_view line, Function58
     f.reference.entityName = join(pair + 2, tok.size() - 2);
     ctx.warn("record 6: fields not in their columns; read blank-separated");
   }
-  for (long long x : v)
-    if (!fitsInt(x)) return ctx.error("record 6: value " + std::to_string(x) + " out of range");
+  MOZZI_TRY(checkFitsInt(ctx, "record 6", v));
   f.functionType = static_cast<FunctionType>(v[0]);
   f.functionId = static_cast<int>(v[1]);
   f.versionNumber = static_cast<int>(v[2]);
@@ -142,6 +136,19 @@ T loadValue(const unsigned char* p, bool swap) {
   std::memcpy(&v, b, sizeof(T));
   return v;
 }
+// Value k of an unevenly spaced record's data block: every perPoint-th value
+// is an abscissa, the ordPerPoint values after it the ordinate (Re, Im).
+inline void storeUneven(double* xs, double* ord, std::uint64_t perPoint, std::uint64_t ordPerPoint, std::uint64_t k,
+                        double v) {
+  const std::uint64_t point = k / perPoint;
+  const std::uint64_t comp = k % perPoint;
+  if (comp == 0) {
+    xs[point] = v;
+  } else {
+    ord[point * ordPerPoint + comp - 1] = v;
+  }
+}
+
 }  // namespace
 
 Result<DatasetData> parse58(DatasetContext& ctx, const Binary58& bin) {
@@ -153,7 +160,7 @@ Result<DatasetData> parse58(DatasetContext& ctx, const Binary58& bin) {
   }
   std::string_view line;
   if (ctx.nextNonBlank(line) != Line::Ok) return ctx.endedBefore("record 6 (function and DOF identification)");
-  if (auto r = parseRecord6(ctx, line, f); !r) return r.error();
+  MOZZI_TRY(parseRecord6(ctx, line, f));
 
   // Record 7: (3I10,3E13.5): ordinate type, points, spacing, min, increment, z.
   if (ctx.nextNonBlank(line) != Line::Ok) return ctx.endedBefore("record 7 (data form)");
@@ -190,10 +197,10 @@ Result<DatasetData> parse58(DatasetContext& ctx, const Binary58& bin) {
   f.abscissaIncrement = r7[4];
   f.zAxisValue = r7[5];
 
-  if (auto r = parseAxis(ctx, f.abscissaAxis, 8); !r) return r.error();
-  if (auto r = parseAxis(ctx, f.ordinateNumerator, 9); !r) return r.error();
-  if (auto r = parseAxis(ctx, f.ordinateDenominator, 10); !r) return r.error();
-  if (auto r = parseAxis(ctx, f.zAxis, 11); !r) return r.error();
+  MOZZI_TRY(parseAxis(ctx, f.abscissaAxis, 8));
+  MOZZI_TRY(parseAxis(ctx, f.ordinateNumerator, 9));
+  MOZZI_TRY(parseAxis(ctx, f.ordinateDenominator, 10));
+  MOZZI_TRY(parseAxis(ctx, f.zAxis, 11));
 
   const bool cplx = isComplex(f.ordinateType);
   const std::size_t valueBytes = isDouble(f.ordinateType) ? 8 : 4;
@@ -313,13 +320,7 @@ Result<DatasetData> parse58(DatasetContext& ctx, const Binary58& bin) {
               valueBytes == 8 ? loadValue<double>(p, swap) : static_cast<double>(loadValue<float>(p, swap));
           const std::uint64_t k = done + i;
           if (xs) {
-            const std::uint64_t point = k / perPoint;
-            const std::uint64_t comp = k % perPoint;
-            if (comp == 0) {
-              xs[point] = v;
-            } else {
-              ord[point * ordPerPoint + comp - 1] = v;
-            }
+            storeUneven(xs, ord, perPoint, ordPerPoint, k, v);
           } else {
             ord[k] = v;
           }
@@ -377,14 +378,7 @@ Result<DatasetData> parse58(DatasetContext& ctx, const Binary58& bin) {
     if (xs) {
       r = scanNumbers(line, [&](double v) {
         if (k >= capacity) return false;
-        const std::uint64_t point = k / perPoint;
-        const std::uint64_t comp = k % perPoint;
-        if (comp == 0) {
-          xs[point] = v;
-        } else {
-          ord[point * ordPerPoint + comp - 1] = v;
-        }
-        ++k;
+        storeUneven(xs, ord, perPoint, ordPerPoint, k++, v);
         return true;
       });
     } else {

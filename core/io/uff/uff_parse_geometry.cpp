@@ -13,6 +13,18 @@
 namespace mozzi::core::io::uff::parsing {
 
 // --- 15 / 2411 ------------------------------------------------------------
+namespace {
+// Record 1 of a node or a coordinate system (label first) with fewer than
+// `count` columns, as short lines of some writers have: the missing ones are
+// 0, with a warning.
+void padRecord1(DatasetContext& ctx, std::vector<long long>& values, std::size_t count, const char* what) {
+  if (values.size() >= count) return;
+  ctx.warn("record 1 of " + std::string(what) + " " + std::to_string(values[0]) + ": " + std::to_string(values.size()) +
+           " of " + std::to_string(count) + " columns; the missing ones are 0");
+  values.resize(count, 0);
+}
+}  // namespace
+
 Result<DatasetData> parseNodes(DatasetContext& ctx, int type) {
   NodeSet set;
   set.datasetType = type;
@@ -47,31 +59,22 @@ Result<DatasetData> parseNodes(DatasetContext& ctx, int type) {
     } else {
       // (4I10) then (1P3D25.16)
       std::vector<long long> ints;
-      std::string_view rest = trim(line);
-      while (!rest.empty()) {
-        std::size_t k = 0;
-        while (k < rest.size() && !detail::isBlankChar(rest[k])) ++k;
+      detail::Words words(line);
+      for (std::string_view w; words.next(w);) {
         long long x = 0;
-        if (!parseInt(rest.substr(0, k), x) || !fitsInt(x) || ints.size() == 4) {
+        if (!parseInt(w, x) || !fitsInt(x) || ints.size() == 4) {
           return ctx.error("record 1 of a node: expected 4 integers, found '" + detail::excerpt(line) + "'");
         }
         ints.push_back(x);
-        rest = trim(rest.substr(k));
       }
-      if (ints.size() < 4) {
-        if (ints.size() < 1) return ctx.error("record 1 of a node: no node label");
-        ctx.warn("record 1 of node " + std::to_string(ints[0]) + ": " + std::to_string(ints.size()) +
-                 " of 4 columns; the missing ones are 0");
-        ints.resize(4, 0);
-      }
+      if (ints.empty()) return ctx.error("record 1 of a node: no node label");
+      padRecord1(ctx, ints, 4, "node");
       n.label = static_cast<int>(ints[0]);
       n.definitionCs = static_cast<int>(ints[1]);
       n.displacementCs = static_cast<int>(ints[2]);
       n.color = static_cast<int>(ints[3]);
       double xyz[3];
-      if (auto r = readNumbers(ctx, 3, xyz, "record 2 (coordinates) of node " + std::to_string(n.label)); !r) {
-        return r.error();
-      }
+      MOZZI_TRY(readNumbers(ctx, 3, xyz, "record 2 (coordinates) of node " + std::to_string(n.label)));
       n.xyz = Vector3(xyz[0], xyz[1], xyz[2]);
     }
     set.nodes.push_back(n);
@@ -121,11 +124,7 @@ Result<DatasetData> parse18(DatasetContext& ctx) {
     }();
     if (!head) return head.error();
     std::vector<long long> h = *head;
-    if (h.size() < 5) {
-      ctx.warn("record 1 of coordinate system " + std::to_string(h[0]) + ": " + std::to_string(h.size()) +
-               " of 5 columns; the missing ones are 0");
-      h.resize(5, 0);
-    }
+    padRecord1(ctx, h, 5, "coordinate system");
     cs.label = static_cast<int>(h[0]);
     cs.type = static_cast<int>(h[1]);
     cs.referenceCs = static_cast<int>(h[2]);
@@ -136,9 +135,7 @@ Result<DatasetData> parse18(DatasetContext& ctx) {
       return ctx.endedBefore("record 2 (name) of coordinate system " + std::to_string(cs.label));
     cs.name = textField(name);
     double p[9];
-    if (auto r = readNumbers(ctx, 9, p, "records 3-4 (points) of coordinate system " + std::to_string(cs.label)); !r) {
-      return r.error();
-    }
+    MOZZI_TRY(readNumbers(ctx, 9, p, "records 3-4 (points) of coordinate system " + std::to_string(cs.label)));
     cs.origin = Vector3(p[0], p[1], p[2]);
     cs.xPoint = Vector3(p[3], p[4], p[5]);
     cs.xzPoint = Vector3(p[6], p[7], p[8]);
@@ -155,9 +152,8 @@ Result<DatasetData> parse18(DatasetContext& ctx) {
 Result<DatasetData> parse2420(DatasetContext& ctx) {
   CoordinateSystemSet set;
   set.datasetType = 2420;
-  auto uid = readIntLine(ctx, 1, 1, "record 1 (part UID)");
-  if (!uid) return uid.error();
-  set.partUid = static_cast<int>(std::clamp<long long>((*uid)[0], -2147483647, 2147483647));
+  MOZZI_TRY_ASSIGN(auto uid, readIntLine(ctx, 1, 1, "record 1 (part UID)"));
+  set.partUid = static_cast<int>(std::clamp<long long>(uid[0], -2147483647, 2147483647));
   std::string_view partName;
   if (ctx.next(partName) != Line::Ok) return ctx.endedBefore("record 2 (part name)");
   set.partName = textField(partName);
@@ -201,9 +197,8 @@ Result<DatasetData> parse2420(DatasetContext& ctx) {
 // --- 82 ----------------------------------------------------------------------
 Result<DatasetData> parse82(DatasetContext& ctx) {
   TraceLine82 t;
-  auto head = readIntLine(ctx, 2, 3, "record 1 (trace number, node count, color)");
-  if (!head) return head.error();
-  const std::vector<long long>& h = *head;
+  MOZZI_TRY_ASSIGN(const std::vector<long long> h,
+                   readIntLine(ctx, 2, 3, "record 1 (trace number, node count, color)"));
   if (h.size() < 3) ctx.warn("record 1: color column missing; 0 assumed");
   if (!fitsInt(h[0])) return ctx.error("record 1: trace number out of range");
   t.traceNumber = static_cast<int>(h[0]);
@@ -229,13 +224,11 @@ Result<DatasetData> parse82(DatasetContext& ctx) {
       ctx.warn("file ends without the closing -1");
       break;
     }
-    std::string_view rest = trim(line);
-    while (!rest.empty()) {
-      std::size_t k = 0;
-      while (k < rest.size() && !detail::isBlankChar(rest[k])) ++k;
+    detail::Words words(line);
+    for (std::string_view w; words.next(w);) {
       long long v = 0;
-      if (!parseInt(rest.substr(0, k), v) || !fitsInt(v)) {
-        return ctx.error("record 3: '" + detail::excerpt(rest.substr(0, k)) + "' is not a node number");
+      if (!parseInt(w, v) || !fitsInt(v)) {
+        return ctx.error("record 3: '" + detail::excerpt(w) + "' is not a node number");
       }
       if (t.nodes.size() < count) {
         t.nodes.push_back(static_cast<int>(v));
@@ -244,7 +237,6 @@ Result<DatasetData> parse82(DatasetContext& ctx) {
       } else {
         ++extra;
       }
-      rest = trim(rest.substr(k));
     }
   }
   if (extra > 0)

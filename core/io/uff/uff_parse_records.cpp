@@ -48,7 +48,7 @@ Result<DatasetData> parse164(DatasetContext& ctx) {
     ctx.warn("record 1: temperature mode column missing; relative (2) assumed");
   }
   double factors[3] = {1.0, 1.0, 1.0};
-  if (auto r = readNumbers(ctx, 3, factors, "record 2 (unit factors)"); !r) return r.error();
+  MOZZI_TRY(readNumbers(ctx, 3, factors, "record 2 (unit factors)"));
   u.lengthFactor = factors[0];
   u.forceFactor = factors[1];
   u.temperatureFactor = factors[2];
@@ -71,13 +71,11 @@ Result<DatasetData> parse55(DatasetContext& ctx) {
   for (auto& id : m.idLines) {
     if (textLine(ctx, id) != Line::Ok) return ctx.endedBefore("the five ID lines (records 1-5)");
   }
-  auto r6 = readIntLine(ctx, 6, 6,
-                        "record 6 (model type, analysis type, data characteristic, specific type, "
-                        "data type, values per node)");
-  if (!r6) return r6.error();
-  const std::vector<long long>& h = *r6;
-  for (long long v : h)
-    if (!fitsInt(v)) return ctx.error("record 6: value " + std::to_string(v) + " out of range");
+  MOZZI_TRY_ASSIGN(const std::vector<long long> h,
+                   readIntLine(ctx, 6, 6,
+                               "record 6 (model type, analysis type, data characteristic, specific type, "
+                               "data type, values per node)"));
+  MOZZI_TRY(checkFitsInt(ctx, "record 6", h));
   m.modelType = static_cast<int>(h[0]);
   m.analysisType = static_cast<AnalysisType>(h[1]);
   m.dataCharacteristic = static_cast<int>(h[2]);
@@ -97,33 +95,27 @@ Result<DatasetData> parse55(DatasetContext& ctx) {
 
   // Record 7: NINT, NRVAL, then NINT integers (8 per line, may wrap).
   std::string_view r7line;
-  auto r7 = readIntLine(ctx, 2, 8, "record 7 (integer count, real count, ...)", &r7line);
-  if (!r7) return r7.error();
-  const long long nint = (*r7)[0];
-  const long long nrval = (*r7)[1];
+  MOZZI_TRY_ASSIGN(auto r7, readIntLine(ctx, 2, 8, "record 7 (integer count, real count, ...)", &r7line));
+  const long long nint = r7[0];
+  const long long nrval = r7[1];
   if (nint < 0 || nint > 1000 || nrval < 0 || nrval > 1000) {
     return ctx.error("record 7: counts " + std::to_string(nint) + ", " + std::to_string(nrval) +
                      " are not between 0 and 1000");
   }
-  std::vector<long long> ints(r7->begin() + 2, r7->end());
+  std::vector<long long> ints(r7.begin() + 2, r7.end());
   while (static_cast<long long>(ints.size()) < nint) {
-    auto more = readIntLine(ctx, 1, 8, "record 7 (continued)");
-    if (!more) return more.error();
-    ints.insert(ints.end(), more->begin(), more->end());
+    MOZZI_TRY_ASSIGN(auto more, readIntLine(ctx, 1, 8, "record 7 (continued)"));
+    ints.insert(ints.end(), more.begin(), more.end());
   }
   if (static_cast<long long>(ints.size()) > nint) {
     return ctx.error("record 7: " + std::to_string(ints.size()) + " integers where " + std::to_string(nint) +
                      " were declared");
   }
-  for (long long v : ints) {
-    if (!fitsInt(v)) return ctx.error("record 7: value " + std::to_string(v) + " out of range");
-    m.integerValues.push_back(static_cast<int>(v));
-  }
+  MOZZI_TRY(checkFitsInt(ctx, "record 7", ints));
+  for (long long v : ints) m.integerValues.push_back(static_cast<int>(v));
   m.realValues.resize(static_cast<std::size_t>(nrval));
   if (nrval > 0) {
-    if (auto r = readNumbers(ctx, static_cast<std::size_t>(nrval), m.realValues.data(), "record 8 (real values)"); !r) {
-      return r.error();
-    }
+    MOZZI_TRY(readNumbers(ctx, static_cast<std::size_t>(nrval), m.realValues.data(), "record 8 (real values)"));
   }
   const std::size_t perNode = static_cast<std::size_t>(m.valuesPerNode) * (m.complexData ? 2 : 1);
   std::vector<double> values(perNode);
@@ -136,9 +128,7 @@ Result<DatasetData> parse55(DatasetContext& ctx) {
     if (!parseInt(line, node) || !fitsInt(node)) {
       return ctx.error("record 9: expected a node number alone on the line, found '" + detail::excerpt(line) + "'");
     }
-    if (auto r = readNumbers(ctx, perNode, values.data(), "record 10 (data) of node " + std::to_string(node)); !r) {
-      return r.error();
-    }
+    MOZZI_TRY(readNumbers(ctx, perNode, values.data(), "record 10 (data) of node " + std::to_string(node)));
     NodeValues55 nv;
     nv.node = static_cast<int>(node);
     nv.values.resize(m.valuesPerNode);

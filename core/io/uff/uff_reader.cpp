@@ -128,22 +128,17 @@ Result<std::vector<long long>> readIntLine(DatasetContext& ctx, std::size_t minC
   if (l != Line::Ok) return ctx.endedBefore(what);
   if (lineOut) *lineOut = line;
   std::vector<long long> values;
-  std::string_view rest = line;
-  while (true) {
-    rest = trim(rest);
-    if (rest.empty()) break;
-    std::size_t n = 0;
-    while (n < rest.size() && !detail::isBlankChar(rest[n])) ++n;
+  detail::Words words(line);
+  for (std::string_view word; words.next(word);) {
     long long v = 0;
-    if (!parseInt(rest.substr(0, n), v)) {
-      return ctx.error(what + ": '" + detail::excerpt(rest.substr(0, n)) + "' is not an integer (column " +
-                       std::to_string(rest.data() - line.data() + 1) + ")");
+    if (!parseInt(word, v)) {
+      return ctx.error(what + ": '" + detail::excerpt(word) + "' is not an integer (column " +
+                       std::to_string(word.data() - line.data() + 1) + ")");
     }
     if (values.size() == maxCount) {
       return ctx.error(what + ": more than " + std::to_string(maxCount) + " integers on the line");
     }
     values.push_back(v);
-    rest.remove_prefix(n);
   }
   if (values.size() < minCount) {
     return ctx.error(what + ": expected " + std::to_string(minCount) + " integers, found " +
@@ -176,7 +171,8 @@ using parsing::Source;
 
 // ---------------------------------------------------------------------------
 struct DatasetReader::Impl {
-  Impl(std::unique_ptr<Source> s, std::string w, ReadOptions o) : src(std::move(s)), where(std::move(w)), options(o) {}
+  Impl(std::unique_ptr<Source> s, std::string w, ReadOptions o)
+      : src(std::move(s)), where(std::move(w)), options(std::move(o)) {}
 
   std::unique_ptr<Source> src;
   std::string where;
@@ -232,13 +228,8 @@ struct DatasetReader::Impl {
     const std::int64_t startLine = src->lineNumber();
     std::vector<std::string_view> tok;
     {
-      std::string_view rest = trim(line);
-      while (!rest.empty()) {
-        std::size_t k = 0;
-        while (k < rest.size() && !detail::isBlankChar(rest[k])) ++k;
-        tok.push_back(rest.substr(0, k));
-        rest = trim(rest.substr(k));
-      }
+      detail::Words words(line);
+      for (std::string_view w; words.next(w);) tok.push_back(w);
     }
     Binary58 bin;
     std::string_view number = tok.front();
@@ -368,11 +359,11 @@ Result<DatasetReader> DatasetReader::open(const std::string& path, ReadOptions o
     std::fclose(f);
     return makeError(ErrorCode::IoError, "is a directory, not a universal file", path);
   }
-  return DatasetReader(std::make_unique<Impl>(std::make_unique<Source>(f, size), path, options));
+  return DatasetReader(std::make_unique<Impl>(std::make_unique<Source>(f, size), path, std::move(options)));
 }
 
 DatasetReader DatasetReader::fromBytes(std::string_view bytes, ReadOptions options) {
-  return DatasetReader(std::make_unique<Impl>(std::make_unique<Source>(bytes), "<memory>", options));
+  return DatasetReader(std::make_unique<Impl>(std::make_unique<Source>(bytes), "<memory>", std::move(options)));
 }
 
 Result<std::optional<Dataset>> DatasetReader::next() {
@@ -389,10 +380,9 @@ namespace {
 Result<UffFile> readAll(DatasetReader& reader) {
   UffFile file;
   for (;;) {
-    auto d = reader.next();
-    if (!d) return d.error();
-    if (!d->has_value()) break;
-    file.datasets.push_back(std::move(**d));
+    MOZZI_TRY_ASSIGN(std::optional<Dataset> d, reader.next());
+    if (!d) break;
+    file.datasets.push_back(std::move(*d));
   }
   file.warnings = reader.warnings();
   return file;
@@ -400,13 +390,12 @@ Result<UffFile> readAll(DatasetReader& reader) {
 }  // namespace
 
 Result<UffFile> readFile(const std::string& path, ReadOptions options) {
-  auto reader = DatasetReader::open(path, options);
-  if (!reader) return reader.error();
-  return readAll(*reader);
+  MOZZI_TRY_ASSIGN(auto reader, DatasetReader::open(path, std::move(options)));
+  return readAll(reader);
 }
 
 Result<UffFile> readBytes(std::string_view bytes, ReadOptions options) {
-  DatasetReader reader = DatasetReader::fromBytes(bytes, options);
+  DatasetReader reader = DatasetReader::fromBytes(bytes, std::move(options));
   return readAll(reader);
 }
 

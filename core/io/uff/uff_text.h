@@ -28,6 +28,25 @@ inline bool isBlank(std::string_view s) {
   return trim(s).empty();
 }
 
+// The blank-separated words of a line, one at a time:
+//   Words words(line); std::string_view w; while (words.next(w)) ...
+// (views into the line).
+class Words {
+ public:
+  explicit Words(std::string_view line) : rest_(trim(line)) {}
+  bool next(std::string_view& word) {
+    if (rest_.empty()) return false;
+    std::size_t k = 0;
+    while (k < rest_.size() && !isBlankChar(rest_[k])) ++k;
+    word = rest_.substr(0, k);
+    rest_ = trim(rest_.substr(k));
+    return true;
+  }
+
+ private:
+  std::string_view rest_;
+};
+
 // The dataset delimiter: "    -1" in columns 1-6 (any blanks around -1 accepted).
 inline bool isDelimiter(std::string_view s) {
   return trim(s) == "-1";

@@ -356,7 +356,7 @@ Result<std::string> writeBytes(const UffFile& file, const WriteOptions& options)
   std::ostringstream out(std::ios::binary);
   for (const auto& d : file.datasets) {
     if (d.get<SkippedDataset>()) continue;
-    if (auto r = writeDataset(out, d, options); !r) return r.error();
+    MOZZI_TRY(writeDataset(out, d, options));
   }
   return out.str();
 }
@@ -367,7 +367,7 @@ Result<void> writeFile(const std::string& path, const UffFile& file, const Write
   return writeOutputFile(path, [&](std::ostream& out) -> Result<void> {
     for (const auto& d : file.datasets) {
       if (d.get<SkippedDataset>()) continue;  // content not kept; the reader warned
-      if (auto r = writeDataset(out, d, options); !r) return r.error();
+      MOZZI_TRY(writeDataset(out, d, options));
     }
     return {};
   });
