@@ -27,6 +27,8 @@
 
 #include <atomic>
 #include <memory>
+#include <nlohmann/json.hpp>
+#include <utility>
 
 #include "app/gui/main_window.h"
 #include "core/io/uff/uff.h"
@@ -650,6 +652,40 @@ void MainWindowTest::screenshot() {
   QVERIFY(window_->grab().save(path));
   QVERIFY(QFileInfo(path).size() > 10000);
   qInfo("screenshot: %s", qPrintable(path));
+
+  // The demo's Model vs Test page shows the kept diagnosis of fork A as it was
+  // stored (no run): the stored verdict and effect, ranking and overlay.
+  auto* gap = qobject_cast<mozzi::views::ModelTestView*>(window_->openPage(QStringLiteral("model-vs-test")));
+  QVERIFY(gap);
+  const auto analyses = window_->model()->store()->analyses();
+  QVERIFY(analyses.ok());
+  nlohmann::json stored;
+  for (const auto& a : *analyses)
+    if (a.kind == "gap-diagnosis") stored = nlohmann::json::parse(a.resultJson);
+  QVERIFY(stored.is_object());
+  QVERIFY(gap->storedDiagnosis().has_value());
+  QString expected = QStringLiteral("Verdict: %1").arg(QString::fromStdString(stored["verdict"].get<std::string>()));
+  if (stored["best"].is_object())
+    expected += QStringLiteral(" (%1)").arg(QString::fromStdString(stored["best"]["effect"].get<std::string>()));
+  QCOMPARE(gap->verdictText(), expected);
+  // The demo's design model lacks the fork's out-of-band modes: the diagnosis
+  // names the residual mode (devices/sim/demo_gap.cpp).
+  QCOMPARE(QString::fromStdString(stored["verdict"].get<std::string>()), QStringLiteral("effect"));
+  QCOMPARE(QString::fromStdString(stored["best"]["effect"].get<std::string>()), QStringLiteral("residual_mode"));
+  QCOMPARE(gap->rankingTable()->rowCount(), static_cast<int>(stored["ranking"].size()));
+  QCOMPARE(gap->rankingTable()->item(stored["verdict_set"][0].get<int>(), 0)->text(), QStringLiteral("residual_mode"));
+  QCOMPARE(gap->overlayCurveCount(), static_cast<int>(stored["overlay"].size()));
+  auto* results = gap->findChild<QTabWidget*>(QStringLiteral("gapResults"));
+  QVERIFY(results);
+  const QString suffix = scale.isEmpty() ? QString() : QStringLiteral("_scale%1").arg(scale);
+  for (const auto& [tab, shotName] : {std::pair{1, QStringLiteral("model_vs_test_demo")},
+                                      std::pair{2, QStringLiteral("model_vs_test_demo_overlay")}}) {
+    results->setCurrentIndex(tab);
+    QTest::qWait(50);
+    const QString gapShot = QDir(folder).filePath(shotName + suffix + QStringLiteral(".png"));
+    QVERIFY(window_->grab().save(gapShot));
+    qInfo("screenshot: %s", qPrintable(gapShot));
+  }
 }
 
 int main(int argc, char** argv) {
