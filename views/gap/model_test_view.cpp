@@ -448,21 +448,29 @@ void ModelTestView::showDiagnosisText() {
   const auto& d = *diagnosis_;
   // The effects of the verdict; two at once (issue 16): both.
   QStringList effects;
-  for (int r : d.verdictSet)
-    if (r >= 0 && r < static_cast<int>(d.ranking.size()))
-      effects << QString::fromStdString(d.ranking[static_cast<std::size_t>(r)].candidate.effect);
-  showVerdict(QString::fromLatin1(core::gap::verdictName(d.verdict)),
-              twoEffects(d) ? tr("%1 and %2")
-                                  .arg(QString::fromStdString(d.pair.effects[0].candidate.effect),
-                                       QString::fromStdString(d.pair.effects[1].candidate.effect))
-                            : effects.join(QStringLiteral(", ")));
+  if (twoEffects(d)) {
+    for (const auto& e : d.pair.effects) effects << effectText(e.candidate.effect, e.candidate.location);
+  } else {
+    for (int r : d.verdictSet)
+      if (r >= 0 && r < static_cast<int>(d.ranking.size())) {
+        const auto& c = d.ranking[static_cast<std::size_t>(r)].candidate;
+        effects << effectText(c.effect, c.location);
+      }
+  }
+  showVerdict(QString::fromLatin1(core::gap::verdictName(d.verdict)), effects.size() == 2 && twoEffects(d)
+                                                                          ? tr("%1 and %2").arg(effects[0], effects[1])
+                                                                          : effects.join(QStringLiteral(", ")));
   explanation_->setPlainText(QString::fromStdString(d.explanation));
+}
+
+QString ModelTestView::effectText(const std::string& effect, const std::vector<std::string>& location) {
+  if (location.empty()) return QString::fromStdString(effect);
+  return tr("%1 at %2").arg(QString::fromStdString(effect), joined(location));
 }
 
 // "Verdict: effect (residual_mode)", coloured by the verdict.
 void ModelTestView::showVerdict(const QString& verdict, const QString& effects) {
-  verdict_->setText(effects.isEmpty() ? tr("Verdict: %1").arg(verdict)
-                                      : tr("Verdict: %1 (%2)").arg(verdict, effects));
+  verdict_->setText(effects.isEmpty() ? tr("Verdict: %1").arg(verdict) : tr("Verdict: %1 (%2)").arg(verdict, effects));
   QPalette palette = verdict_->palette();
   palette.setColor(QPalette::WindowText, verdictColour(verdict.toStdString()));
   verdict_->setPalette(palette);
@@ -494,8 +502,7 @@ void ModelTestView::fillWhere(const core::gap::GapMetrics* gap) {
     auto* table = new QTableWidget(static_cast<int>(rows.size()), 4 + static_cast<int>(detailNames.size()), whereTabs_);
     table->setObjectName(QStringLiteral("gapWhere_%1").arg(QString::fromStdString(kind)));
     table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    QStringList headers{tr("Item"), QString::fromStdString(gap->residualName), tr("z"),
-                        tr("Significant")};
+    QStringList headers{tr("Item"), QString::fromStdString(gap->residualName), tr("z"), tr("Significant")};
     for (const auto& name : detailNames) headers << QString::fromStdString(name);
     table->setHorizontalHeaderLabels(headers);
     for (int r = 0; r < static_cast<int>(rows.size()); ++r) {

@@ -103,6 +103,8 @@ class ModelTestView : public QWidget {
   void refreshStored();
   void showVerdict(const QString& verdict, const QString& effects);
   void showDiagnosisText();
+  // "residual_mode at 9+Z" (the effect alone when it has no location).
+  static QString effectText(const std::string& effect, const std::vector<std::string>& location);
   void showStoredText();
   void fillWhere(const core::gap::GapMetrics* gap);
   void fillRanking();

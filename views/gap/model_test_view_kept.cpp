@@ -120,8 +120,11 @@ void ModelTestView::showStoredText() {
   const StoredDiagnosis& d = *storedDiagnosis_;
   QStringList effects;
   for (const auto& row : d.ranking)
-    if (row.inVerdict) effects << QString::fromStdString(row.effect);
-  showVerdict(QString::fromStdString(d.verdict), effects.join(QStringLiteral(", ")));
+    if (row.inVerdict) effects << effectText(row.effect, row.location);
+  // Two effects fitted together (the verdict's pair) read as the page's run does.
+  showVerdict(QString::fromStdString(d.verdict), d.pair && effects.size() == 2
+                                                     ? tr("%1 and %2").arg(effects[0], effects[1])
+                                                     : effects.join(QStringLiteral(", ")));
   explanation_->setPlainText(QString::fromStdString(d.explanation));
   QString status =
       tr("Kept diagnosis \"%1\" (analysis %2), as stored.").arg(QString::fromStdString(d.name)).arg(storedId_);

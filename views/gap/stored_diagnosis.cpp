@@ -1,5 +1,6 @@
 #include "views/gap/stored_diagnosis.h"
 
+#include <algorithm>
 #include <limits>
 #include <nlohmann/json.hpp>
 
@@ -23,7 +24,8 @@ std::string textOr(const Json& j, const char* key) {
 std::vector<double> numbers(const Json& j, const char* key) {
   std::vector<double> out;
   if (!j.contains(key) || !j[key].is_array()) return out;
-  for (const auto& v : j[key]) out.push_back(v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN());
+  for (const auto& v : j[key])
+    out.push_back(v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN());
   return out;
 }
 
@@ -103,6 +105,9 @@ core::Result<StoredDiagnosis> parseStoredDiagnosis(const std::string& resultJson
       if (d.best < 0) d.best = r;
     }
   }
+  // A verdict of two effects fitted together (diagnosis_json.cpp pairToJson).
+  d.pair = j.contains("two_effects") && j["two_effects"].is_object() && j["two_effects"].value("significant", false) &&
+           std::count_if(d.ranking.begin(), d.ranking.end(), [](const auto& r) { return r.inVerdict; }) == 2;
   if (j.contains("overlay") && j["overlay"].is_array()) {
     for (const auto& c : j["overlay"]) {
       core::gap::OverlayCurve before;

@@ -36,7 +36,8 @@ struct StoredDiagnosis {
   double threshold = 0.0;
   core::gap::GapMetrics gapBefore;
   std::vector<RankedEffect> ranking;
-  int best = -1;  // the ranking row the verdict puts forward (-1: none)
+  int best = -1;      // the ranking row the verdict puts forward (-1: none)
+  bool pair = false;  // the verdict names two effects fitted together
   std::vector<core::gap::OverlayCurve> before, after;
   std::string afterLabel;
 };

@@ -170,7 +170,7 @@ class ModelTestViewTest : public QObject {
     QVERIFY2(kept.showNewestStored(), qPrintable(kept.statusText()));
     QVERIFY(kept.storedDiagnosis().has_value());
     QVERIFY(!kept.diagnosis().has_value());
-    QCOMPARE(kept.verdictText(), QStringLiteral("Verdict: effect (mass_loading)"));
+    QCOMPARE(kept.verdictText(), QStringLiteral("Verdict: effect (mass_loading at 3+X)"));
     QCOMPARE(kept.verdictText(), view.verdictText());
     QVERIFY2(kept.statusText().contains(QStringLiteral("analysis %1").arg(*id)), qPrintable(kept.statusText()));
     QTableWidget* keptRanking = kept.rankingTable();
