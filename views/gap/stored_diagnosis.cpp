@@ -75,9 +75,12 @@ StoredDiagnosis::RankedEffect effectFrom(const Json& j) {
   }
   e.identifiable = j.value("identifiable", true);
   const Json& criterion = j.contains("criterion") ? j["criterion"] : Json();
-  e.likelihoodRatio = numberOr(criterion, "likelihood_ratio");
-  e.heldOutImprovement = numberOr(criterion, "held_out_improvement");
-  e.shrinkPct = numberOr(j, "shrink_pct");
+  // As diagnosis_json.cpp writes them: a figure null is NaN (e.g. no held-out
+  // fit for a candidate below the threshold), a shrink null is 0 (no gap after).
+  constexpr double kNotAvailable = std::numeric_limits<double>::quiet_NaN();
+  e.likelihoodRatio = numberOr(criterion, "likelihood_ratio", kNotAvailable);
+  e.heldOutImprovement = numberOr(criterion, "held_out_improvement", kNotAvailable);
+  e.shrinkPct = numberOr(j, "shrink_pct", 0.0);
   if (j.contains("gap_after")) e.gapAfter = numberOr(j["gap_after"], "overall");
   return e;
 }
