@@ -209,6 +209,7 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   effects_->setObjectName(QStringLiteral("gapEffects"));
   verdict_ = new QLabel(left);
   verdict_->setObjectName(QStringLiteral("gapVerdict"));
+  verdict_->setWordWrap(true);  // a verdict naming two effects with their locations is long
   QFont big = verdict_->font();
   big.setPointSizeF(big.pointSizeF() * 1.4);
   big.setBold(true);
