@@ -117,20 +117,7 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
     : QWidget(parent), jobs_(jobs ? jobs : new JobRunner(this)) {
   auto* layout = new QVBoxLayout(this);
 
-  // The project's kept diagnoses, shown as stored (no run needed).
-  auto* kept = new QHBoxLayout;
-  storedLabel_ = new QLabel(this);
-  stored_ = new QComboBox(this);
-  stored_->setObjectName(QStringLiteral("gapStored"));
-  stored_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-  stored_->setEnabled(false);
-  showStored_ = new QPushButton(this);
-  showStored_->setObjectName(QStringLiteral("gapShowStored"));
-  showStored_->setEnabled(false);
-  kept->addWidget(storedLabel_);
-  kept->addWidget(stored_, 1);
-  kept->addWidget(showStored_);
-  layout->addLayout(kept);
+  layout->addLayout(makeKeptRow());
 
   auto* inputs = new QGridLayout;
   modelLabel_ = new QLabel(this);
@@ -272,9 +259,6 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
     QString error;
     if (!exportReport(path, &error)) setStatus(error);
   });
-  connect(showStored_, &QPushButton::clicked, this, [this] { showStored(stored_->currentData().toLongLong()); });
-  connect(stored_, QOverload<int>::of(&QComboBox::activated), this,
-          [this](int index) { showStored(stored_->itemData(index).toLongLong()); });
   connect(overlayChoice_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
           [this](int index) { showOverlay(index); });
   retranslate();

@@ -19,6 +19,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QHBoxLayout;
 class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
@@ -100,6 +101,7 @@ class ModelTestView : public QWidget {
   void onProgress(double fraction, const QString& step);
   void onFinished(core::Result<core::gap::Diagnosis> result);
   void showDiagnosis();
+  QHBoxLayout* makeKeptRow();
   void refreshStored();
   void showVerdict(const QString& verdict, const QString& effects);
   void showDiagnosisText();

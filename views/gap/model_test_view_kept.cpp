@@ -4,6 +4,7 @@
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
 #include <QComboBox>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
@@ -27,6 +28,27 @@ QString number(double value) {
 }
 
 }  // namespace
+
+// The row above the inputs: the project's kept diagnoses, shown as stored
+// (no run needed).
+QHBoxLayout* ModelTestView::makeKeptRow() {
+  auto* kept = new QHBoxLayout;
+  storedLabel_ = new QLabel(this);
+  stored_ = new QComboBox(this);
+  stored_->setObjectName(QStringLiteral("gapStored"));
+  stored_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  stored_->setEnabled(false);
+  showStored_ = new QPushButton(this);
+  showStored_->setObjectName(QStringLiteral("gapShowStored"));
+  showStored_->setEnabled(false);
+  kept->addWidget(storedLabel_);
+  kept->addWidget(stored_, 1);
+  kept->addWidget(showStored_);
+  connect(showStored_, &QPushButton::clicked, this, [this] { showStored(stored_->currentData().toLongLong()); });
+  connect(stored_, QOverload<int>::of(&QComboBox::activated), this,
+          [this](int index) { showStored(stored_->itemData(index).toLongLong()); });
+  return kept;
+}
 
 void ModelTestView::setProjectModel(ProjectModel* model) {
   if (project_) disconnect(project_, nullptr, this, nullptr);
