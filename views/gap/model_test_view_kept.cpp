@@ -11,6 +11,9 @@
 #include <QSignalBlocker>
 #include <QTextBrowser>
 
+#include <cmath>
+#include <limits>
+
 #include "core/common/text.h"
 #include "views/common/kept_analyses.h"
 #include "views/common/project_model.h"
@@ -150,12 +153,13 @@ void ModelTestView::showStoredText() {
   explanation_->setPlainText(QString::fromStdString(d.explanation));
   QString status =
       tr("Kept diagnosis \"%1\" (analysis %2), as stored.").arg(QString::fromStdString(d.name)).arg(storedId_);
-  if (d.best >= 0) {
-    const auto& best = d.ranking[static_cast<std::size_t>(d.best)];
-    status += QLatin1Char(' ') + tr("With %1 the held-out residual is %2% lower and the gap shrinks by %3%.")
-                                     .arg(QString::fromStdString(best.effect), number(100.0 * best.heldOutImprovement),
-                                          number(best.shrinkPct));
-  }
+  // The held-out gain of what the verdict names: the pair fitted together, or its effect.
+  const double heldOut = d.pair ? d.pairHeldOutImprovement
+                                : (d.best >= 0 ? d.ranking[static_cast<std::size_t>(d.best)].heldOutImprovement
+                                               : std::numeric_limits<double>::quiet_NaN());
+  if (std::isfinite(heldOut))
+    status += QLatin1Char(' ') +
+              tr("With %1 the held-out residual is %2% lower.").arg(effects.join(tr(" and ")), number(100.0 * heldOut));
   setStatus(status);
 }
 

@@ -111,6 +111,7 @@ core::Result<StoredDiagnosis> parseStoredDiagnosis(const std::string& resultJson
   // A verdict of two effects fitted together (diagnosis_json.cpp pairToJson).
   d.pair = j.contains("two_effects") && j["two_effects"].is_object() && j["two_effects"].value("significant", false) &&
            std::count_if(d.ranking.begin(), d.ranking.end(), [](const auto& r) { return r.inVerdict; }) == 2;
+  if (d.pair) d.pairHeldOutImprovement = numberOr(j["two_effects"], "held_out_improvement", d.pairHeldOutImprovement);
   if (j.contains("overlay") && j["overlay"].is_array()) {
     for (const auto& c : j["overlay"]) {
       core::gap::OverlayCurve before;

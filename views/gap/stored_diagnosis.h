@@ -5,6 +5,7 @@
 // before by kind, the ranked effects, the overlay curves before and after the
 // best effect) without the model and test files it was run on.
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,7 @@ struct StoredDiagnosis {
   std::vector<RankedEffect> ranking;
   int best = -1;      // the ranking row the verdict puts forward (-1: none)
   bool pair = false;  // the verdict names two effects fitted together
+  double pairHeldOutImprovement = std::numeric_limits<double>::quiet_NaN();  // the pair's, when pair
   std::vector<core::gap::OverlayCurve> before, after;
   std::string afterLabel;
 };
