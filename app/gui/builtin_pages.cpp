@@ -180,6 +180,8 @@ void registerBuiltinPages(views::PageRegistry& registry) {
       [](const PageContext& ctx) -> QWidget* {
         auto* view = new views::ModelTestView(ctx.parent, ctx.jobs);
         view->setObjectName(QStringLiteral("modelTestTab"));
+        view->setProjectModel(ctx.model);  // the gap diagnoses the project keeps
+        view->showNewestStored();          // shown as stored; a run on files stays possible
         const auto log = ctx.log;
         QObject::connect(view, &views::ModelTestView::finished, view, [view, log](bool ok) {
           if (log)

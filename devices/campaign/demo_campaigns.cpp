@@ -16,7 +16,7 @@ namespace mozzi::devices::campaign {
 
 const std::vector<DemoCampaign>& demoCampaigns() {
   static const std::vector<DemoCampaign> kCampaigns = {
-      {"fork-a-with-wheel", "Fork A (enduro) with wheel", 41, 2, 2048.0},
+      {"fork-a-with-wheel", "Fork A (enduro) with wheel", 41, 2, 2048.0, 4.0},
       {"frame-a-front-constrained", "Frame A", 26, 2, 2048.0},
   };
   return kCampaigns;
@@ -65,6 +65,7 @@ core::Result<void> addDemoCampaigns(core::io::ProjectStore& store) {
     o.hitsPerPoint = demo.hitsPerPoint;
     o.seed = demo.seed;
     o.sampleRateHz = demo.sampleRateHz;
+    o.recordSeconds = demo.recordSeconds;
     auto def = virtualSpecimenCampaign(demo.specimenKey, o);
     if (!def) return def.error();
     auto id = createCampaign(store, *specimen, demo.specimenKey + " hammer 1", *def,

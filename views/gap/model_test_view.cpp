@@ -84,6 +84,13 @@ QColor verdictColour(core::gap::Verdict verdict) {
   return QColor(Qt::black);
 }
 
+QColor verdictColour(const std::string& name) {
+  for (auto v : {core::gap::Verdict::Effect, core::gap::Verdict::None, core::gap::Verdict::Ambiguous,
+                 core::gap::Verdict::Partial, core::gap::Verdict::Unexplained, core::gap::Verdict::NotIdentifiable})
+    if (name == core::gap::verdictName(v)) return verdictColour(v);
+  return QColor(Qt::black);
+}
+
 QwtPlotCurve* addCurve(QwtPlot* plot, const QColor& colour, Qt::PenStyle style) {
   auto* curve = new QwtPlotCurve;
   curve->setPen(colour, 1.5, style);
@@ -109,6 +116,8 @@ QVector<QPointF> points(const std::vector<double>& x, const std::vector<double>&
 ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
     : QWidget(parent), jobs_(jobs ? jobs : new JobRunner(this)) {
   auto* layout = new QVBoxLayout(this);
+
+  layout->addLayout(makeKeptRow());
 
   auto* inputs = new QGridLayout;
   modelLabel_ = new QLabel(this);
@@ -187,6 +196,7 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   effects_->setObjectName(QStringLiteral("gapEffects"));
   verdict_ = new QLabel(left);
   verdict_->setObjectName(QStringLiteral("gapVerdict"));
+  verdict_->setWordWrap(true);  // a verdict naming two effects with their locations is long
   QFont big = verdict_->font();
   big.setPointSizeF(big.pointSizeF() * 1.4);
   big.setBold(true);
@@ -198,6 +208,7 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   leftLayout->addWidget(explanation_, 2);
 
   results_ = new QTabWidget(splitter);
+  results_->setObjectName(QStringLiteral("gapResults"));
   whereTabs_ = new QTabWidget(results_);
   whereTabs_->setObjectName(QStringLiteral("gapWhere"));
   ranking_ = new QTableWidget(results_);
@@ -396,6 +407,8 @@ void ModelTestView::onFinished(core::Result<core::gap::Diagnosis> result) {
   cancel_->setEnabled(false);
   const bool ok = result.ok();
   if (ok) {
+    storedDiagnosis_.reset();
+    storedId_ = 0;
     diagnosis_ = std::move(result).value();
     diagnosed_ = running_;
     progress_->setValue(1000);
@@ -410,32 +423,52 @@ void ModelTestView::onFinished(core::Result<core::gap::Diagnosis> result) {
 
 void ModelTestView::showDiagnosis() {
   if (!diagnosis_) return;
-  const auto& d = *diagnosis_;
-  verdict_->setText(tr("Verdict: %1").arg(QString::fromLatin1(core::gap::verdictName(d.verdict))));
-  if (twoEffects(d)) {
-    // Two effects at once (issue 16): name both.
-    verdict_->setText(tr("Verdict: %1 (%2 and %3)")
-                          .arg(QString::fromLatin1(core::gap::verdictName(d.verdict)),
-                               QString::fromStdString(d.pair.effects[0].candidate.effect),
-                               QString::fromStdString(d.pair.effects[1].candidate.effect)));
-  }
-  QPalette palette = verdict_->palette();
-  palette.setColor(QPalette::WindowText, verdictColour(d.verdict));
-  verdict_->setPalette(palette);
-  explanation_->setPlainText(QString::fromStdString(d.explanation));
-  fillWhere();
+  showDiagnosisText();
+  fillWhere(&diagnosis_->gapBefore);
   fillRanking();
   computeOverlays();
 }
 
-void ModelTestView::fillWhere() {
+void ModelTestView::showDiagnosisText() {
+  const auto& d = *diagnosis_;
+  // The effects of the verdict; two at once (issue 16): both.
+  QStringList effects;
+  if (twoEffects(d)) {
+    for (const auto& e : d.pair.effects) effects << effectText(e.candidate.effect, e.candidate.location);
+  } else {
+    for (int r : d.verdictSet)
+      if (r >= 0 && r < static_cast<int>(d.ranking.size())) {
+        const auto& c = d.ranking[static_cast<std::size_t>(r)].candidate;
+        effects << effectText(c.effect, c.location);
+      }
+  }
+  showVerdict(QString::fromLatin1(core::gap::verdictName(d.verdict)), effects.size() == 2 && twoEffects(d)
+                                                                          ? tr("%1 and %2").arg(effects[0], effects[1])
+                                                                          : effects.join(QStringLiteral(", ")));
+  explanation_->setPlainText(QString::fromStdString(d.explanation));
+}
+
+QString ModelTestView::effectText(const std::string& effect, const std::vector<std::string>& location) {
+  if (location.empty()) return QString::fromStdString(effect);
+  return tr("%1 at %2").arg(QString::fromStdString(effect), joined(location));
+}
+
+// "Verdict: effect (residual_mode)", coloured by the verdict.
+void ModelTestView::showVerdict(const QString& verdict, const QString& effects) {
+  verdict_->setText(effects.isEmpty() ? tr("Verdict: %1").arg(verdict) : tr("Verdict: %1 (%2)").arg(verdict, effects));
+  QPalette palette = verdict_->palette();
+  palette.setColor(QPalette::WindowText, verdictColour(verdict.toStdString()));
+  verdict_->setPalette(palette);
+}
+
+void ModelTestView::fillWhere(const core::gap::GapMetrics* gap) {
   while (whereTabs_->count() > 0) {
     QWidget* page = whereTabs_->widget(0);
     whereTabs_->removeTab(0);
     delete page;
   }
-  if (!diagnosis_) return;
-  const auto& entries = diagnosis_->gapBefore.entries;
+  if (!gap) return;
+  const auto& entries = gap->entries;
   std::vector<std::string> kinds;
   for (const auto& entry : entries) {
     if (std::find(kinds.begin(), kinds.end(), entry.kind) == kinds.end()) kinds.push_back(entry.kind);
@@ -454,8 +487,7 @@ void ModelTestView::fillWhere() {
     auto* table = new QTableWidget(static_cast<int>(rows.size()), 4 + static_cast<int>(detailNames.size()), whereTabs_);
     table->setObjectName(QStringLiteral("gapWhere_%1").arg(QString::fromStdString(kind)));
     table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    QStringList headers{tr("Item"), QString::fromStdString(diagnosis_->gapBefore.residualName), tr("z"),
-                        tr("Significant")};
+    QStringList headers{tr("Item"), QString::fromStdString(gap->residualName), tr("z"), tr("Significant")};
     for (const auto& name : detailNames) headers << QString::fromStdString(name);
     table->setHorizontalHeaderLabels(headers);
     for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
@@ -477,35 +509,62 @@ void ModelTestView::fillWhere() {
 }
 
 void ModelTestView::fillRanking() {
+  std::vector<StoredDiagnosis::RankedEffect> rows;
+  if (diagnosis_) {
+    const auto& d = *diagnosis_;
+    for (std::size_t r = 0; r < d.ranking.size(); ++r) {
+      const auto& effect = d.ranking[r];
+      StoredDiagnosis::RankedEffect row;
+      row.effect = effect.candidate.effect;
+      row.location = effect.candidate.location;
+      for (std::size_t p = 0; p < effect.parameters.size(); ++p) {
+        StoredDiagnosis::Parameter parameter;
+        if (p < effect.candidate.parameters.size()) {
+          parameter.name = effect.candidate.parameters[p].name;
+          parameter.unit = effect.candidate.parameters[p].unit;
+        }
+        parameter.value = effect.parameters[p];
+        if (p < effect.stdErrors.size()) parameter.stdError = effect.stdErrors[p];
+        row.parameters.push_back(parameter);
+      }
+      row.identifiable = effect.identifiable;
+      row.inVerdict = std::find(d.verdictSet.begin(), d.verdictSet.end(), static_cast<int>(r)) != d.verdictSet.end();
+      row.likelihoodRatio = effect.likelihoodRatio;
+      row.heldOutImprovement = effect.heldOutImprovement;
+      row.shrinkPct = effect.shrinkPct;
+      rows.push_back(std::move(row));
+    }
+  }
+  fillRankingRows(rows, diagnosis_ ? diagnosis_->threshold : 0.0);
+}
+
+// One row per ranked effect, those of the verdict in bold: the same table for
+// a diagnosis just run and for one kept in the project.
+void ModelTestView::fillRankingRows(const std::vector<StoredDiagnosis::RankedEffect>& rows, double threshold) {
   ranking_->clear();
   ranking_->setColumnCount(7);
   ranking_->setHorizontalHeaderLabels({tr("Effect"), tr("Location"), tr("Size ± standard error"),
                                        tr("Likelihood ratio"), tr("Threshold"), tr("Held-out gain"), tr("Shrink")});
-  if (!diagnosis_) return;
-  const auto& d = *diagnosis_;
-  ranking_->setRowCount(static_cast<int>(d.ranking.size()));
-  for (int r = 0; r < static_cast<int>(d.ranking.size()); ++r) {
-    const auto& effect = d.ranking[static_cast<size_t>(r)];
+  ranking_->setRowCount(static_cast<int>(rows.size()));
+  for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
+    const auto& effect = rows[static_cast<size_t>(r)];
     QStringList sizes;
-    for (size_t p = 0; p < effect.parameters.size(); ++p) {
-      const auto& def =
-          effect.candidate.parameters.size() > p ? effect.candidate.parameters[p] : core::gap::Parameter{};
-      QString text = QStringLiteral("%1 = %2").arg(QString::fromStdString(def.name), number(effect.parameters[p]));
-      if (p < effect.stdErrors.size()) text += QStringLiteral(" ± %1").arg(number(effect.stdErrors[p], 2));
-      if (!def.unit.empty()) text += QStringLiteral(" %1").arg(QString::fromStdString(def.unit));
+    for (const auto& p : effect.parameters) {
+      QString text = QStringLiteral("%1 = %2").arg(QString::fromStdString(p.name), number(p.value));
+      if (p.stdError >= 0.0) text += QStringLiteral(" ± %1").arg(number(p.stdError, 2));
+      if (!p.unit.empty()) text += QStringLiteral(" %1").arg(QString::fromStdString(p.unit));
       sizes << text;
     }
     if (!effect.identifiable) sizes << tr("(not identifiable)");
-    ranking_->setItem(r, 0, new QTableWidgetItem(QString::fromStdString(effect.candidate.effect)));
-    ranking_->setItem(r, 1, new QTableWidgetItem(joined(effect.candidate.location)));
+    ranking_->setItem(r, 0, new QTableWidgetItem(QString::fromStdString(effect.effect)));
+    ranking_->setItem(r, 1, new QTableWidgetItem(joined(effect.location)));
     ranking_->setItem(r, 2, new QTableWidgetItem(sizes.join(QStringLiteral("; "))));
     ranking_->setItem(r, 3, new QTableWidgetItem(number(effect.likelihoodRatio)));
-    ranking_->setItem(r, 4, new QTableWidgetItem(number(d.threshold)));
+    ranking_->setItem(r, 4, new QTableWidgetItem(number(threshold)));
     ranking_->setItem(r, 5,
                       new QTableWidgetItem(QStringLiteral("%1 %").arg(number(100.0 * effect.heldOutImprovement, 3))));
     ranking_->setItem(r, 6, new QTableWidgetItem(QStringLiteral("%1 %").arg(number(effect.shrinkPct, 3))));
-    const bool inVerdict = std::find(d.verdictSet.begin(), d.verdictSet.end(), r) != d.verdictSet.end();
-    if (inVerdict) {
+    if (effect.inVerdict) {
       for (int c = 0; c < ranking_->columnCount(); ++c) {
         QFont font = ranking_->item(r, c)->font();
         font.setBold(true);
@@ -629,6 +688,9 @@ void ModelTestView::changeEvent(QEvent* event) {
 }
 
 void ModelTestView::retranslate() {
+  storedLabel_->setText(tr("Kept diagnoses"));
+  stored_->setToolTip(tr("The gap diagnoses this project keeps"));
+  showStored_->setText(tr("Show"));
   modelLabel_->setText(tr("Model"));
   modelPath_->setPlaceholderText(tr("mozzi-model/1 JSON, UFF 55 modes, tyre or stability gap file"));
   testLabel_->setText(tr("Test"));
@@ -653,10 +715,14 @@ void ModelTestView::retranslate() {
   measuredCurve_->setTitle(tr("measured"));
   beforeCurve_->setTitle(tr("model"));
   afterCurve_->setTitle(afterLabel_.isEmpty() ? tr("model + best effect") : afterLabel_);
-  if (!diagnosis_) verdict_->setText(tr("No diagnosis yet"));
   if (diagnosis_) {
-    verdict_->setText(tr("Verdict: %1").arg(QString::fromLatin1(core::gap::verdictName(diagnosis_->verdict))));
+    showDiagnosisText();
     fillRanking();
+  } else if (storedDiagnosis_) {
+    showStoredText();
+    fillRankingRows(storedDiagnosis_->ranking, storedDiagnosis_->threshold);
+  } else {
+    verdict_->setText(tr("No diagnosis yet"));
   }
 }
 

@@ -4,7 +4,9 @@
 // diagnosis off the GUI thread, read the gap by band, DOF, mode or condition,
 // the ranked candidate effects with sizes and standard errors, the verdict, and
 // the measured/model overlay before and after the best effect; export it all as
-// a report (HTML with the figures, plus the JSON the CLI writes).
+// a report (HTML with the figures, plus the JSON the CLI writes). With a
+// project open it also lists the diagnoses the project keeps and shows one as
+// it was stored (verdict, ranking, gap, overlay) without running anything.
 
 #include <QString>
 #include <QWidget>
@@ -13,9 +15,11 @@
 
 #include "core/gap/diagnosis.h"
 #include "core/gap/gap_problem.h"
+#include "views/gap/stored_diagnosis.h"
 
 class QCheckBox;
 class QComboBox;
+class QHBoxLayout;
 class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
@@ -33,6 +37,7 @@ namespace mozzi {
 namespace views {
 
 class JobRunner;
+class ProjectModel;
 
 class ModelTestView : public QWidget {
   Q_OBJECT
@@ -58,6 +63,18 @@ class ModelTestView : public QWidget {
   bool run();
   void cancel();
   bool isRunning() const;
+  // The open project: its kept gap diagnoses are listed ("Kept diagnoses")
+  // and follow its changes.
+  void setProjectModel(ProjectModel* model);
+  // Shows a kept diagnosis (analysis id) as stored; false, with the reason in
+  // the status line, when it is not a readable gap diagnosis.
+  bool showStored(qint64 analysisId);
+  // Shows the newest kept diagnosis, if the project keeps one.
+  bool showNewestStored();
+  QComboBox* storedChoice() const { return stored_; }
+  // The kept diagnosis shown (nullopt while a run's diagnosis, or none, is shown).
+  const std::optional<StoredDiagnosis>& storedDiagnosis() const { return storedDiagnosis_; }
+
   // Writes the report: HTML at `path`, the JSON beside it (same name, .json).
   bool exportReport(const QString& path, QString* error = nullptr) const;
 
@@ -84,12 +101,23 @@ class ModelTestView : public QWidget {
   void onProgress(double fraction, const QString& step);
   void onFinished(core::Result<core::gap::Diagnosis> result);
   void showDiagnosis();
-  void fillWhere();
+  QHBoxLayout* makeKeptRow();
+  void refreshStored();
+  void showVerdict(const QString& verdict, const QString& effects);
+  void showDiagnosisText();
+  // "residual_mode at 9+Z" (the effect alone when it has no location).
+  static QString effectText(const std::string& effect, const std::vector<std::string>& location);
+  void showStoredText();
+  void fillWhere(const core::gap::GapMetrics* gap);
   void fillRanking();
+  void fillRankingRows(const std::vector<StoredDiagnosis::RankedEffect>& rows, double threshold);
   void computeOverlays();
   void setStatus(const QString& text);
   QString htmlReport() const;
 
+  QLabel* storedLabel_ = nullptr;
+  QComboBox* stored_ = nullptr;
+  QPushButton* showStored_ = nullptr;
   QLineEdit* modelPath_ = nullptr;
   QLineEdit* testPath_ = nullptr;
   QPushButton* browseModel_ = nullptr;
@@ -129,6 +157,9 @@ class ModelTestView : public QWidget {
   std::vector<core::gap::OverlayCurve> before_;
   std::vector<core::gap::OverlayCurve> after_;
   QString afterLabel_;
+  ProjectModel* project_ = nullptr;
+  std::optional<StoredDiagnosis> storedDiagnosis_;
+  qint64 storedId_ = 0;
 
   JobRunner* jobs_ = nullptr;
   int jobId_ = 0;  // the diagnosis under way (0: none)

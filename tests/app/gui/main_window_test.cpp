@@ -27,6 +27,8 @@
 
 #include <atomic>
 #include <memory>
+#include <nlohmann/json.hpp>
+#include <utility>
 
 #include "app/gui/main_window.h"
 #include "core/io/uff/uff.h"
@@ -650,6 +652,47 @@ void MainWindowTest::screenshot() {
   QVERIFY(window_->grab().save(path));
   QVERIFY(QFileInfo(path).size() > 10000);
   qInfo("screenshot: %s", qPrintable(path));
+
+  // The demo's Model vs Test page shows the kept diagnosis of fork A as it was
+  // stored (no run): the stored verdict and effect, ranking and overlay.
+  auto* gap = qobject_cast<mozzi::views::ModelTestView*>(window_->openPage(QStringLiteral("model-vs-test")));
+  QVERIFY(gap);
+  const auto analyses = window_->model()->store()->analyses();
+  QVERIFY(analyses.ok());
+  nlohmann::json stored;
+  for (const auto& a : *analyses)
+    if (a.kind == "gap-diagnosis") stored = nlohmann::json::parse(a.resultJson);
+  QVERIFY(stored.is_object());
+  QVERIFY(gap->storedDiagnosis().has_value());
+  // The demo's design model lacks fork A's out-of-band completion modes
+  // (devices/sim/demo_gap.cpp): the diagnosis attributes the gap to two
+  // residual modes fitted together, one seen by the Y accelerometer and one
+  // by the Z accelerometers, and to nothing else.
+  QCOMPARE(QString::fromStdString(stored["verdict"].get<std::string>()), QStringLiteral("effect"));
+  QCOMPARE(stored["verdict_set"].size(), std::size_t{2});
+  QStringList named;
+  for (const auto& r : stored["verdict_set"]) {
+    const auto& effect = stored["ranking"][r.get<std::size_t>()];
+    QCOMPARE(QString::fromStdString(effect["effect"].get<std::string>()), QStringLiteral("residual_mode"));
+    QCOMPARE(gap->rankingTable()->item(r.get<int>(), 0)->text(), QStringLiteral("residual_mode"));
+    QVERIFY(gap->rankingTable()->item(r.get<int>(), 0)->font().bold());
+    named
+        << QStringLiteral("residual_mode at %1").arg(QString::fromStdString(effect["location"][0].get<std::string>()));
+  }
+  QCOMPARE(gap->verdictText(), QStringLiteral("Verdict: effect (%1 and %2)").arg(named[0], named[1]));
+  QCOMPARE(gap->rankingTable()->rowCount(), static_cast<int>(stored["ranking"].size()));
+  QCOMPARE(gap->overlayCurveCount(), static_cast<int>(stored["overlay"].size()));
+  auto* results = gap->findChild<QTabWidget*>(QStringLiteral("gapResults"));
+  QVERIFY(results);
+  const QString suffix = scale.isEmpty() ? QString() : QStringLiteral("_scale%1").arg(scale);
+  for (const auto& [tab, shotName] : {std::pair{1, QStringLiteral("model_vs_test_demo")},
+                                      std::pair{2, QStringLiteral("model_vs_test_demo_overlay")}}) {
+    results->setCurrentIndex(tab);
+    QTest::qWait(50);
+    const QString gapShot = QDir(folder).filePath(shotName + suffix + QStringLiteral(".png"));
+    QVERIFY(window_->grab().save(gapShot));
+    qInfo("screenshot: %s", qPrintable(gapShot));
+  }
 }
 
 int main(int argc, char** argv) {

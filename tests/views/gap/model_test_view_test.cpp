@@ -4,12 +4,14 @@
 // view must show what core found (verdict, ranked effect at its DOF with its
 // size), overlay curves whose "after" is closer to the measurement than
 // "before", a report with the tables and the figure, and clear messages for
-// bad files and a cancelled run.
+// bad files and a cancelled run; kept in a project, the same diagnosis shows
+// again as stored, without a run.
 #include "views/gap/model_test_view.h"
 
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
 #include <QApplication>
+#include <QComboBox>
 #include <QFile>
 #include <QListWidget>
 #include <QSignalSpy>
@@ -20,7 +22,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "core/gap/problem_loader.h"
+#include "core/report/gap_report.h"
 #include "validation/gap/structural_benchmark.h"
+#include "views/common/project_model.h"
 
 namespace {
 
@@ -139,6 +144,60 @@ class ModelTestViewTest : public QObject {
       QDir().mkpath(shots);
       view.grab().save(shots + QStringLiteral("/model_vs_test.png"));
     }
+
+    // Kept in a project (as the demo keeps its diagnosis), the same diagnosis
+    // shows in a new view without a run: the same verdict and ranking, and
+    // the stored overlay with "after" closer to the measurement.
+    const QString projectPath = tempPath(QStringLiteral("kept.mozzi"));
+    QFile::remove(projectPath);
+    mozzi::views::ProjectModel project;
+    QVERIFY(project.create(projectPath).ok());
+    const auto specimen = project.addSpecimen(QStringLiteral("Swing arm"), QStringLiteral("swing-arm"));
+    QVERIFY(specimen.ok());
+    auto problem = mozzi::core::gap::loadGapProblem(files_.model.toStdString(), files_.frf.toStdString(), {});
+    QVERIFY(problem.ok());
+    auto analysis = mozzi::core::report::analysisFromDiagnosis(**problem, *d, "Swing arm against its FRFs");
+    analysis.specimenId = *specimen;
+    const auto id = project.addAnalysis(analysis);
+    QVERIFY(id.ok());
+    mozzi::views::ModelTestView kept;
+    kept.resize(1200, 800);
+    kept.show();
+    kept.setProjectModel(&project);
+    QCOMPARE(kept.storedChoice()->count(), 1);
+    QCOMPARE(kept.storedChoice()->itemData(0).toLongLong(), static_cast<qlonglong>(*id));
+    QVERIFY(kept.verdictText().contains(QStringLiteral("No diagnosis")));
+    QVERIFY2(kept.showNewestStored(), qPrintable(kept.statusText()));
+    QVERIFY(kept.storedDiagnosis().has_value());
+    QVERIFY(!kept.diagnosis().has_value());
+    QCOMPARE(kept.verdictText(), QStringLiteral("Verdict: effect (mass_loading at 3+X)"));
+    QCOMPARE(kept.verdictText(), view.verdictText());
+    QVERIFY2(kept.statusText().contains(QStringLiteral("analysis %1").arg(*id)), qPrintable(kept.statusText()));
+    QTableWidget* keptRanking = kept.rankingTable();
+    QCOMPARE(keptRanking->rowCount(), ranking->rowCount());
+    // The stored JSON keeps every figure the table shows: cell for cell the
+    // same text as the diagnosis just run (the size column's parameters are
+    // in the stored object's name order, the same for one-parameter effects).
+    for (int r = 0; r < ranking->rowCount(); ++r)
+      for (int c : {0, 1, 3, 4, 5, 6}) QCOMPARE(keptRanking->item(r, c)->text(), ranking->item(r, c)->text());
+    QCOMPARE(keptRanking->item(row, 2)->text(), ranking->item(row, 2)->text());
+    QVERIFY(keptRanking->item(row, 0)->font().bold());
+    QCOMPARE(kept.whereTabs()->count(), view.whereTabs()->count());
+    QVERIFY(kept.overlayCurveCount() > 0);
+    const auto keptCurves = kept.overlayPlot()->itemList(QwtPlotItem::Rtti_PlotCurve);
+    QCOMPARE(keptCurves.size(), 3);
+    double keptBefore = 0.0, keptAfter = 0.0;
+    for (int i = 0; i < kept.overlayCurveCount(); ++i) {
+      QVERIFY(kept.showOverlay(i));
+      QVERIFY(static_cast<QwtPlotCurve*>(keptCurves[2])->dataSize() > 0);
+      keptBefore += logDistance(static_cast<QwtPlotCurve*>(keptCurves[1]), static_cast<QwtPlotCurve*>(keptCurves[0]));
+      keptAfter += logDistance(static_cast<QwtPlotCurve*>(keptCurves[2]), static_cast<QwtPlotCurve*>(keptCurves[0]));
+    }
+    QVERIFY2(keptAfter < 0.2 * keptBefore, qPrintable(QStringLiteral("%1 vs %2").arg(keptAfter).arg(keptBefore)));
+    // A run on files stays possible from a view showing a kept diagnosis.
+    kept.setModelPath(files_.model);
+    kept.setTestPath(files_.frf);
+    QVERIFY(kept.loadInputs());
   }
 
   void badFilesGiveAClearMessage() {

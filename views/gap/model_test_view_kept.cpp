@@ -1,0 +1,167 @@
+// The Model vs Test page's kept diagnoses: the project's analyses of kind
+// "gap-diagnosis" (core/report/gap_report.h analysisFromDiagnosis), listed and
+// shown as they were stored, without the model and test files.
+#include <qwt_plot.h>
+#include <qwt_plot_curve.h>
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QTextBrowser>
+
+#include <cmath>
+#include <limits>
+
+#include "core/common/text.h"
+#include "views/common/kept_analyses.h"
+#include "views/common/project_model.h"
+#include "views/gap/model_test_view.h"
+
+namespace mozzi {
+namespace views {
+namespace {
+
+// What analysisFromDiagnosis stores.
+constexpr const char* kGapAnalysisKind = "gap-diagnosis";
+
+QString number(double value) {
+  return QString::fromStdString(core::formatNumber(value, 3));
+}
+
+}  // namespace
+
+// The row above the inputs: the project's kept diagnoses, shown as stored
+// (no run needed).
+QHBoxLayout* ModelTestView::makeKeptRow() {
+  auto* kept = new QHBoxLayout;
+  storedLabel_ = new QLabel(this);
+  stored_ = new QComboBox(this);
+  stored_->setObjectName(QStringLiteral("gapStored"));
+  stored_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  stored_->setEnabled(false);
+  showStored_ = new QPushButton(this);
+  showStored_->setObjectName(QStringLiteral("gapShowStored"));
+  showStored_->setEnabled(false);
+  kept->addWidget(storedLabel_);
+  kept->addWidget(stored_, 1);
+  kept->addWidget(showStored_);
+  connect(showStored_, &QPushButton::clicked, this, [this] { showStored(stored_->currentData().toLongLong()); });
+  connect(stored_, QOverload<int>::of(&QComboBox::activated), this,
+          [this](int index) { showStored(stored_->itemData(index).toLongLong()); });
+  return kept;
+}
+
+void ModelTestView::setProjectModel(ProjectModel* model) {
+  if (project_) disconnect(project_, nullptr, this, nullptr);
+  project_ = model;
+  if (project_) {
+    connect(project_, &ProjectModel::analysesChanged, this, &ModelTestView::refreshStored);
+    // Another project: what it keeps, never a diagnosis of the one closed. A
+    // diagnosis run on files is not the project's and stays.
+    connect(project_, &ProjectModel::projectChanged, this, [this] {
+      if (diagnosis_) {
+        refreshStored();
+        return;
+      }
+      if (storedDiagnosis_) {
+        storedDiagnosis_.reset();
+        storedId_ = 0;
+        fillWhere(nullptr);
+        fillRankingRows({}, 0.0);
+        before_.clear();
+        after_.clear();
+        overlayChoice_->clear();
+        for (QwtPlotCurve* curve : {measuredCurve_, beforeCurve_, afterCurve_}) curve->setSamples(QVector<QPointF>());
+        overlayPlot_->replot();
+        explanation_->clear();
+        verdict_->setText(tr("No diagnosis yet"));
+        setStatus(QString());
+      }
+      showNewestStored();
+    });
+  }
+  refreshStored();
+}
+
+void ModelTestView::refreshStored() {
+  showStored_->setEnabled(fillKeptAnalyses(stored_, project_, kGapAnalysisKind) > 0);
+}
+
+bool ModelTestView::showNewestStored() {
+  refreshStored();
+  const auto ids = keptAnalysisIds(stored_);
+  return !ids.empty() && showStored(ids.back());
+}
+
+bool ModelTestView::showStored(qint64 analysisId) {
+  if (!project_ || !project_->store()) {
+    setStatus(tr("No project is open."));
+    return false;
+  }
+  auto analysis = project_->store()->analysis(analysisId);
+  if (!analysis) {
+    setStatus(QString::fromStdString(analysis.error().describe()));
+    return false;
+  }
+  auto parsed = parseStoredDiagnosis(analysis->resultJson);
+  if (!parsed) {
+    setStatus(tr("Analysis %1: %2").arg(analysisId).arg(QString::fromStdString(parsed.error().describe())));
+    return false;
+  }
+  // The kept one replaces what was shown; a run on files stays possible.
+  diagnosis_.reset();
+  diagnosed_.reset();
+  export_->setEnabled(false);
+  storedDiagnosis_ = std::move(*parsed);
+  storedId_ = analysisId;
+  const int at = stored_->findData(QVariant::fromValue<qint64>(analysisId));
+  if (at >= 0) {
+    const QSignalBlocker block(stored_);
+    stored_->setCurrentIndex(at);
+  }
+  storedDiagnosis_->name = analysis->name;
+  const StoredDiagnosis& d = *storedDiagnosis_;
+  showStoredText();
+  fillWhere(&d.gapBefore);
+  fillRankingRows(d.ranking, d.threshold);
+  before_ = d.before;
+  after_ = d.after;
+  afterLabel_ = QString::fromStdString(d.afterLabel);
+  {
+    const QSignalBlocker block(overlayChoice_);
+    overlayChoice_->clear();
+    for (const auto& curve : before_) overlayChoice_->addItem(QString::fromStdString(curve.label));
+  }
+  if (!before_.empty()) showOverlay(0);
+  progress_->setValue(0);
+  return true;
+}
+
+// Verdict (with the effects it names), explanation and the status line of
+// the kept diagnosis shown.
+void ModelTestView::showStoredText() {
+  const StoredDiagnosis& d = *storedDiagnosis_;
+  QStringList effects;
+  for (const auto& row : d.ranking)
+    if (row.inVerdict) effects << effectText(row.effect, row.location);
+  // Two effects fitted together (the verdict's pair) read as the page's run does.
+  showVerdict(QString::fromStdString(d.verdict), d.pair && effects.size() == 2
+                                                     ? tr("%1 and %2").arg(effects[0], effects[1])
+                                                     : effects.join(QStringLiteral(", ")));
+  explanation_->setPlainText(QString::fromStdString(d.explanation));
+  QString status =
+      tr("Kept diagnosis \"%1\" (analysis %2), as stored.").arg(QString::fromStdString(d.name)).arg(storedId_);
+  // The held-out gain of what the verdict names: the pair fitted together, or its effect.
+  const double heldOut = d.pair ? d.pairHeldOutImprovement
+                                : (d.best >= 0 ? d.ranking[static_cast<std::size_t>(d.best)].heldOutImprovement
+                                               : std::numeric_limits<double>::quiet_NaN());
+  if (std::isfinite(heldOut))
+    status += QLatin1Char(' ') +
+              tr("With %1 the held-out residual is %2% lower.").arg(effects.join(tr(" and ")), number(100.0 * heldOut));
+  setStatus(status);
+}
+
+}  // namespace views
+}  // namespace mozzi
