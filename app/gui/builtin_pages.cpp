@@ -53,6 +53,9 @@ bool isKind(const ProjectItem& item, std::initializer_list<RecordKind> kinds) {
   return false;
 }
 
+// The kind of a stored gap diagnosis (core/io/project_records.h, StoredAnalysis).
+constexpr const char* kGapDiagnosisKind = "gap-diagnosis";
+
 // A stored analysis of one kind (the pages that keep their results as analyses).
 std::function<bool(const ProjectItem&)> isAnalysisOf(const char* kind) {
   const QString wanted = QString::fromLatin1(kind);
@@ -176,12 +179,13 @@ void registerBuiltinPages(views::PageRegistry& registry) {
   registry.add(PageSpec{
       QStringLiteral("model-vs-test"), QT_TRANSLATE_NOOP("Pages", "Model vs Test"),
       QT_TRANSLATE_NOOP("Pages", "Diagnose where a model and a test disagree and which unmodelled effect explains it"),
-      QString(), PageMenu::Tools, nullptr,
+      QString(), PageMenu::Tools, isAnalysisOf(kGapDiagnosisKind),
       [](const PageContext& ctx) -> QWidget* {
         auto* view = new views::ModelTestView(ctx.parent, ctx.jobs);
         view->setObjectName(QStringLiteral("modelTestTab"));
         view->setProjectModel(ctx.model);  // the gap diagnoses the project keeps
-        view->showNewestStored();          // shown as stored; a run on files stays possible
+        // The kept diagnosis it was opened on, else the newest; a run on files stays possible.
+        if (ctx.item.kind != RecordKind::Analysis || !view->showStored(ctx.item.id)) view->showNewestStored();
         const auto log = ctx.log;
         QObject::connect(view, &views::ModelTestView::finished, view, [view, log](bool ok) {
           if (log)
@@ -190,7 +194,10 @@ void registerBuiltinPages(views::PageRegistry& registry) {
         });
         return view;
       },
-      /*singleton=*/true, /*openAtStart=*/false, nullptr});
+      /*singleton=*/true, /*openAtStart=*/false,
+      [](QWidget* page, const PageContext& ctx) {
+        if (ctx.item.kind == RecordKind::Analysis) static_cast<views::ModelTestView*>(page)->showStored(ctx.item.id);
+      }});
 
   registry.add(PageSpec{QStringLiteral("stability"), QT_TRANSLATE_NOOP("Pages", "Stability"),
                         QT_TRANSLATE_NOOP("Pages",
