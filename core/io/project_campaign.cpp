@@ -9,8 +9,6 @@
 
 namespace mozzi::core::io {
 
-using sql::sqliteError;
-
 namespace {
 std::string campaignWhere(const std::string& path, std::int64_t campaignId) {
   return path + ", campaign " + std::to_string(campaignId);
@@ -20,26 +18,14 @@ std::string campaignWhere(const std::string& path, std::int64_t campaignId) {
 Result<StoredCampaign> ProjectStore::campaign(std::int64_t campaignId) const {
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = campaignWhere(path_, campaignId);
-  sql::Statement stmt(db_, (std::string("SELECT ") + sql::kCampaignColumns + " FROM campaign WHERE id = ?1").c_str());
-  if (!stmt.ok()) return sqliteError(db_, "cannot read the campaign", where);
-  stmt.bind(1, campaignId);
-  const int rc = stmt.step();
-  if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, "no such campaign", where);
-  if (rc != SQLITE_ROW) return sqliteError(db_, "cannot read the campaign", where);
+  sql::Statement stmt(db_, std::string("SELECT ") + sql::kCampaignColumns + " FROM campaign WHERE id = ?1");
+  MOZZI_TRY(stmt.bindAll(campaignId).single("cannot read the campaign", "no such campaign", where));
   return sql::campaignFromRow(stmt.get());
 }
 
 StoredCampaign sql::campaignFromRow(sqlite3_stmt* row) {
-  StoredCampaign c;
-  c.id = sqlite3_column_int64(row, 0);
-  c.specimenId = sqlite3_column_int64(row, 1);
-  if (sqlite3_column_type(row, 2) != SQLITE_NULL) c.rigSetupId = sqlite3_column_int64(row, 2);
-  c.name = columnText(row, 3);
-  c.kind = columnText(row, 4);
-  c.notes = columnText(row, 5);
-  c.startedUtc = columnText(row, 6);
-  c.settingsJson = columnText(row, 7);
-  return c;
+  const Row r(row);
+  return {r.int64(0), r.int64(1), r.optionalInt64(2), r.text(3), r.text(4), r.text(5), r.text(6), r.text(7)};
 }
 
 Result<void> sql::insertCampaignPoints(sqlite3* db, std::int64_t campaignId,
@@ -55,25 +41,19 @@ Result<void> sql::insertCampaignPoints(sqlite3* db, std::int64_t campaignId,
                      "INSERT INTO campaign_point(campaign_id, position, node, direction, skipped, skip_reason)"
                      " VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
   for (const auto& p : points) {
-    ins.reset();
-    ins.bind(1, campaignId).bind(2, p.position).bind(3, p.dof.node).bind(4, p.dof.uffCode());
-    ins.bind(5, p.skipped ? 1 : 0).bind(6, p.skipReason);
-    if (ins.step() != SQLITE_DONE) return sqliteError(db, "cannot store point " + formatDof(p.dof), where);
+    MOZZI_TRY(ins.runWith("cannot store point " + formatDof(p.dof), where, campaignId, p.position, p.dof, p.skipped,
+                          p.skipReason));
   }
   return {};
 }
 
 Result<void> ProjectStore::setCampaignPoints(std::int64_t campaignId, const std::vector<StoredCampaignPoint>& points) {
-  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
-  if (auto r = requireWritable(); !r) return r;
   const std::string where = campaignWhere(path_, campaignId) + ", schedule";
-  sql::Transaction tx(db_, where);
-  if (!tx.begun()) return tx.begun();
-  sql::Statement del(db_, "DELETE FROM campaign_point WHERE campaign_id = ?1");
-  del.bind(1, campaignId);
-  if (del.step() != SQLITE_DONE) return sqliteError(db_, "cannot replace the schedule", where);
-  if (auto r = sql::insertCampaignPoints(db_, campaignId, points, where); !r) return r;
-  return tx.commit();
+  return writeInTransaction(where, [&]() -> Result<void> {
+    sql::Statement del(db_, "DELETE FROM campaign_point WHERE campaign_id = ?1");
+    MOZZI_TRY(del.bindAll(campaignId).run("cannot replace the schedule", where));
+    return sql::insertCampaignPoints(db_, campaignId, points, where);
+  });
 }
 
 Result<std::vector<StoredCampaignPoint>> ProjectStore::campaignPoints(std::int64_t campaignId) const {
@@ -82,67 +62,51 @@ Result<std::vector<StoredCampaignPoint>> ProjectStore::campaignPoints(std::int64
   sql::Statement stmt(db_,
                       "SELECT position, node, direction, skipped, skip_reason FROM campaign_point"
                       " WHERE campaign_id = ?1 ORDER BY position");
-  if (!stmt.ok()) return sqliteError(db_, "cannot read the schedule", where);
-  stmt.bind(1, campaignId);
   std::vector<StoredCampaignPoint> out;
-  int rc;
-  while ((rc = stmt.step()) == SQLITE_ROW) {
-    StoredCampaignPoint p;
-    p.position = sqlite3_column_int(stmt.get(), 0);
-    if (p.position != static_cast<int>(out.size()))
-      return makeError(ErrorCode::Corrupt, "schedule positions do not number 0..n-1", where);
-    auto dof = sql::columnDof(stmt.get(), 1, 2, where);
-    if (!dof) return dof.error();
-    p.dof = *dof;
-    p.skipped = sqlite3_column_int(stmt.get(), 3) != 0;
-    p.skipReason = sql::columnText(stmt.get(), 4);
-    out.push_back(std::move(p));
-  }
-  if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read the schedule", where);
+  MOZZI_TRY(
+      stmt.bindAll(campaignId).forEachRow("cannot read the schedule", where, [&](const sql::Row& r) -> Result<void> {
+        if (r.int32(0) != static_cast<int>(out.size()))
+          return makeError(ErrorCode::Corrupt, "schedule positions do not number 0..n-1", where);
+        MOZZI_TRY_ASSIGN(const Dof dof, r.dof(1, 2, where));
+        out.push_back({r.int32(0), dof, r.int32(3) != 0, r.text(4)});
+        return {};
+      }));
   return out;
 }
 
 Result<void> ProjectStore::setCampaignPointSkipped(std::int64_t campaignId, int position, bool skipped,
                                                    const std::string& reason) {
-  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
-  if (auto r = requireWritable(); !r) return r;
   const std::string where = campaignWhere(path_, campaignId) + ", point " + std::to_string(position);
-  sql::Transaction tx(db_, where);
-  if (!tx.begun()) return tx.begun();
-  sql::Statement stmt(
-      db_, "UPDATE campaign_point SET skipped = ?3, skip_reason = ?4 WHERE campaign_id = ?1 AND position = ?2");
-  stmt.bind(1, campaignId).bind(2, position).bind(3, skipped ? 1 : 0).bind(4, skipped ? reason : std::string());
-  if (stmt.step() != SQLITE_DONE) return sqliteError(db_, "cannot update the point", where);
-  if (sqlite3_changes(db_) != 1) return makeError(ErrorCode::NotFound, "no such point in the schedule", where);
-  return tx.commit();
+  return writeInTransaction(where, [&]() -> Result<void> {
+    sql::Statement stmt(
+        db_, "UPDATE campaign_point SET skipped = ?3, skip_reason = ?4 WHERE campaign_id = ?1 AND position = ?2");
+    stmt.bindAll(campaignId, position, skipped, skipped ? reason : std::string());
+    MOZZI_TRY(stmt.run("cannot update the point", where));
+    if (sqlite3_changes(db_) != 1) return makeError(ErrorCode::NotFound, "no such point in the schedule", where);
+    return {};
+  });
 }
 
 Result<int> ProjectStore::redoCampaignPoint(std::int64_t campaignId, int position, const std::string& reason) {
-  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
-  if (auto r = requireWritable(); !r) return r.error();
   const std::string where = campaignWhere(path_, campaignId) + ", point " + std::to_string(position);
-  sql::Transaction tx(db_, where);
-  if (!tx.begun()) return tx.begun().error();
-  sql::Statement point(db_, "SELECT node, direction FROM campaign_point WHERE campaign_id = ?1 AND position = ?2");
-  point.bind(1, campaignId).bind(2, position);
-  const int rc = point.step();
-  if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, "no such point in the schedule", where);
-  if (rc != SQLITE_ROW) return sqliteError(db_, "cannot read the point", where);
-  const std::int64_t node = sqlite3_column_int64(point.get(), 0);
-  const std::int64_t direction = sqlite3_column_int64(point.get(), 1);
-  sql::Statement hits(db_,
-                      "UPDATE hit SET accepted = 0, quality_flags = quality_flags | ?4,"
-                      " quality_reasons = CASE quality_reasons WHEN '' THEN ?5 ELSE quality_reasons || '; ' || ?5 END"
-                      " WHERE campaign_id = ?1 AND point_node = ?2 AND point_direction = ?3 AND accepted = 1");
-  hits.bind(1, campaignId).bind(2, node).bind(3, direction);
-  hits.bind(4, static_cast<std::int64_t>(kHitManualReject)).bind(5, reason);
-  if (hits.step() != SQLITE_DONE) return sqliteError(db_, "cannot set the point's hits aside", where);
-  const int changed = sqlite3_changes(db_);
-  sql::Statement unskip(
-      db_, "UPDATE campaign_point SET skipped = 0, skip_reason = '' WHERE campaign_id = ?1 AND position = ?2");
-  unskip.bind(1, campaignId).bind(2, position);
-  if (unskip.step() != SQLITE_DONE) return sqliteError(db_, "cannot update the point", where);
-  if (auto r = tx.commit(); !r) return r.error();
+  int changed = 0;
+  MOZZI_TRY(writeInTransaction(where, [&]() -> Result<void> {
+    sql::Statement point(db_, "SELECT node, direction FROM campaign_point WHERE campaign_id = ?1 AND position = ?2");
+    MOZZI_TRY(
+        point.bindAll(campaignId, position).single("cannot read the point", "no such point in the schedule", where));
+    const std::int64_t node = sqlite3_column_int64(point.get(), 0);
+    const std::int64_t direction = sqlite3_column_int64(point.get(), 1);
+    sql::Statement hits(db_,
+                        "UPDATE hit SET accepted = 0, quality_flags = quality_flags | ?4,"
+                        " quality_reasons = CASE quality_reasons WHEN '' THEN ?5 ELSE quality_reasons || '; ' || ?5 END"
+                        " WHERE campaign_id = ?1 AND point_node = ?2 AND point_direction = ?3 AND accepted = 1");
+    hits.bindAll(campaignId, node, direction, kHitManualReject, reason);
+    MOZZI_TRY(hits.run("cannot set the point's hits aside", where));
+    changed = sqlite3_changes(db_);
+    sql::Statement unskip(
+        db_, "UPDATE campaign_point SET skipped = 0, skip_reason = '' WHERE campaign_id = ?1 AND position = ?2");
+    return unskip.bindAll(campaignId, position).run("cannot update the point", where);
+  }));
   return changed;
 }
 
@@ -150,12 +114,9 @@ Result<std::vector<std::int64_t>> ProjectStore::frfSetHits(std::int64_t frfSetId
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", FRF set " + std::to_string(frfSetId);
   sql::Statement stmt(db_, "SELECT hit_id FROM frf_hit WHERE frf_set_id = ?1 ORDER BY hit_id");
-  if (!stmt.ok()) return sqliteError(db_, "cannot read the FRF set's hits", where);
-  stmt.bind(1, frfSetId);
   std::vector<std::int64_t> out;
-  int rc;
-  while ((rc = stmt.step()) == SQLITE_ROW) out.push_back(sqlite3_column_int64(stmt.get(), 0));
-  if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read the FRF set's hits", where);
+  MOZZI_TRY(stmt.bindAll(frfSetId).forEachRow("cannot read the FRF set's hits", where,
+                                              [&](const sql::Row& r) { out.push_back(r.int64(0)); }));
   return out;
 }
 

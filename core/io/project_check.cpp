@@ -16,14 +16,10 @@ namespace {
 Result<std::vector<std::pair<std::int64_t, std::int64_t>>> listIds(sqlite3* db, const char* query,
                                                                    const std::string& where) {
   sql::Statement stmt(db, query);
-  if (!stmt.ok()) return sql::sqliteError(db, "cannot list records", where);
   std::vector<std::pair<std::int64_t, std::int64_t>> ids;
-  int rc;
-  while ((rc = stmt.step()) == SQLITE_ROW) {
-    ids.emplace_back(sqlite3_column_int64(stmt.get(), 0),
-                     sqlite3_column_count(stmt.get()) > 1 ? sqlite3_column_int64(stmt.get(), 1) : 0);
-  }
-  if (rc != SQLITE_DONE) return sql::sqliteError(db, "cannot list records", where);
+  MOZZI_TRY(stmt.forEachRow("cannot list records", where, [&](const sql::Row& r) {
+    ids.emplace_back(r.int64(0), r.columnCount() > 1 ? r.int64(1) : 0);
+  }));
   return ids;
 }
 
@@ -32,57 +28,40 @@ Result<std::vector<std::pair<std::int64_t, std::int64_t>>> listIds(sqlite3* db, 
 Result<IntegrityReport> ProjectStore::checkIntegrity() const {
   IntegrityReport report;
   auto problem = [&](const Error& e) { report.problems.push_back({e.where.empty() ? path_ : e.where, e.message}); };
-  {
-    // Full structural check of the database file (b-trees, indexes, free list).
-    sql::Statement stmt(db_, "PRAGMA integrity_check");
-    int rc;
-    while ((rc = stmt.step()) == SQLITE_ROW) {
-      const std::string line = sql::columnText(stmt.get(), 0);
-      if (line != "ok") report.problems.push_back({path_, "SQLite integrity check: " + line});
-    }
-    if (rc != SQLITE_DONE) problem(sql::sqliteError(db_, "SQLite integrity check could not run", path_));
+  // Full structural check of the database file (b-trees, indexes, free list).
+  sql::Statement integrity(db_, "PRAGMA integrity_check");
+  if (auto r = integrity.forEachRow("SQLite integrity check could not run", path_,
+                                    [&](const sql::Row& row) {
+                                      if (row.text(0) != "ok")
+                                        report.problems.push_back({path_, "SQLite integrity check: " + row.text(0)});
+                                    });
+      !r) {
+    problem(r.error());
   }
   // Each kind: the query listing its records, and how to read one.
   struct Kind {
     const char* list;
     std::function<Result<void>(std::int64_t, std::int64_t)> read;
   };
+  // A reader's value is dropped: that it could be read is what counts.
+  auto byId = [this](auto reader) {
+    return [this, reader](std::int64_t id, std::int64_t) -> Result<void> {
+      MOZZI_TRY((this->*reader)(id));
+      return {};
+    };
+  };
   const std::vector<Kind> kinds = {
-      {"SELECT id FROM hit ORDER BY id",
-       [&](std::int64_t id, std::int64_t) -> Result<void> {
-         auto r = hit(id);
-         return r ? Result<void>() : r.error();
-       }},
+      {"SELECT id FROM hit ORDER BY id", byId(&ProjectStore::hit)},
       {"SELECT rig_test_id, step FROM rig_test_record ORDER BY id",
-       [&](std::int64_t id, std::int64_t step) -> Result<void> {
-         auto r = rigTestRecord(id, static_cast<int>(step));
-         return r ? Result<void>() : r.error();
+       [this](std::int64_t id, std::int64_t step) -> Result<void> {
+         MOZZI_TRY(rigTestRecord(id, static_cast<int>(step)));
+         return {};
        }},
-      {"SELECT id FROM frf_set ORDER BY id",
-       [&](std::int64_t id, std::int64_t) -> Result<void> {
-         auto r = frfSet(id);
-         return r ? Result<void>() : r.error();
-       }},
-      {"SELECT id FROM modal_result ORDER BY id",
-       [&](std::int64_t id, std::int64_t) -> Result<void> {
-         auto r = modalResult(id);
-         return r ? Result<void>() : r.error();
-       }},
-      {"SELECT id FROM specimen ORDER BY id",
-       [&](std::int64_t id, std::int64_t) -> Result<void> {
-         auto r = mesh(id);
-         return r ? Result<void>() : r.error();
-       }},
-      {"SELECT id FROM rig_test ORDER BY id",
-       [&](std::int64_t id, std::int64_t) -> Result<void> {
-         auto r = rigTest(id);
-         return r ? Result<void>() : r.error();
-       }},
-      {"SELECT id FROM tyre_test ORDER BY id",
-       [&](std::int64_t id, std::int64_t) -> Result<void> {
-         auto r = tyreTest(id);
-         return r ? Result<void>() : r.error();
-       }},
+      {"SELECT id FROM frf_set ORDER BY id", byId(&ProjectStore::frfSet)},
+      {"SELECT id FROM modal_result ORDER BY id", byId(&ProjectStore::modalResult)},
+      {"SELECT id FROM specimen ORDER BY id", byId(&ProjectStore::mesh)},
+      {"SELECT id FROM rig_test ORDER BY id", byId(&ProjectStore::rigTest)},
+      {"SELECT id FROM tyre_test ORDER BY id", byId(&ProjectStore::tyreTest)},
   };
   for (const auto& kind : kinds) {
     auto ids = listIds(db_, kind.list, path_);

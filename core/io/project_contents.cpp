@@ -16,45 +16,38 @@ SpecimenContents* find(std::vector<SpecimenContents>& all, std::int64_t specimen
 }  // namespace
 
 Result<std::vector<SpecimenContents>> projectContents(const ProjectStore& store) {
-  auto summary = store.summary();
-  if (!summary) return summary.error();
+  MOZZI_TRY_ASSIGN(const auto summary, store.summary());
   std::vector<SpecimenContents> all;
-  all.reserve(summary->specimens.size());
-  for (const auto& sp : summary->specimens) {
+  all.reserve(summary.specimens.size());
+  for (const auto& sp : summary.specimens) {
     SpecimenContents c;
     c.specimenId = sp.id;
     c.name = sp.name;
     c.kind = sp.kind;
-    auto mesh = store.mesh(sp.id);
-    if (!mesh) return mesh.error();
-    c.meshNodes = static_cast<int>(mesh->nodes.size());
-    auto campaigns = store.campaigns(sp.id);
-    if (!campaigns) return campaigns.error();
-    for (const auto& campaign : *campaigns) c.campaigns.push_back(campaign.id);
+    MOZZI_TRY_ASSIGN(const auto mesh, store.mesh(sp.id));
+    c.meshNodes = static_cast<int>(mesh.nodes.size());
+    MOZZI_TRY_ASSIGN(const auto campaigns, store.campaigns(sp.id));
+    for (const auto& campaign : campaigns) c.campaigns.push_back(campaign.id);
     all.push_back(std::move(c));
   }
-  auto frfSets = store.frfSets();
-  if (!frfSets) return frfSets.error();
-  for (const auto& set : *frfSets)
-    if (auto* c = find(all, set.specimenId)) c->frfSets.push_back(set.id);
-  auto modal = store.modalResults();
-  if (!modal) return modal.error();
-  for (const auto& result : *modal)
-    if (auto* c = find(all, result.specimenId)) c->modalResults.push_back(result.id);
-  auto rigTests = store.rigTests();
-  if (!rigTests) return rigTests.error();
-  for (const auto& test : *rigTests) {
+  // Files each record of `records` under its specimen, in `list`.
+  auto file = [&](const auto& records, auto list) {
+    for (const auto& record : records)
+      if (auto* c = find(all, record.specimenId)) (c->*list).push_back(record.id);
+  };
+  MOZZI_TRY_ASSIGN(const auto frfSets, store.frfSets());
+  file(frfSets, &SpecimenContents::frfSets);
+  MOZZI_TRY_ASSIGN(const auto modal, store.modalResults());
+  file(modal, &SpecimenContents::modalResults);
+  MOZZI_TRY_ASSIGN(const auto rigTests, store.rigTests());
+  for (const auto& test : rigTests) {
     if (auto* c = find(all, test.specimenId))
       (test.kind == "static" ? c->staticRigTests : c->dynamicRigTests).push_back(test.id);
   }
-  auto tyreTests = store.tyreTests();
-  if (!tyreTests) return tyreTests.error();
-  for (const auto& test : *tyreTests)
-    if (auto* c = find(all, test.specimenId)) c->tyreTests.push_back(test.id);
-  auto analyses = store.analyses();
-  if (!analyses) return analyses.error();
-  for (const auto& analysis : *analyses)
-    if (auto* c = find(all, analysis.specimenId)) c->analyses.push_back(analysis.id);
+  MOZZI_TRY_ASSIGN(const auto tyreTests, store.tyreTests());
+  file(tyreTests, &SpecimenContents::tyreTests);
+  MOZZI_TRY_ASSIGN(const auto analyses, store.analyses());
+  file(analyses, &SpecimenContents::analyses);
   return all;
 }
 

@@ -79,10 +79,9 @@ Result<Eigen::MatrixXf> columnSamples(sqlite3_stmt* stmt, int first, const std::
   const auto* blob = static_cast<const std::uint8_t*>(sqlite3_column_blob(stmt, first + 3));
   const auto blobSize = static_cast<std::size_t>(sqlite3_column_bytes(stmt, first + 3));
   const auto crc = static_cast<std::uint32_t>(sqlite3_column_int64(stmt, first + 4));
-  auto values = decodeSamples(blob, blobSize, static_cast<SampleEncoding>(encoding),
-                              static_cast<std::uint64_t>(channels * count), crc, where);
-  if (!values) return values.error();
-  return Eigen::MatrixXf(Eigen::Map<const Eigen::MatrixXf>(values->data(), count, channels));
+  MOZZI_TRY_ASSIGN(const auto values, decodeSamples(blob, blobSize, static_cast<SampleEncoding>(encoding),
+                                                    static_cast<std::uint64_t>(channels * count), crc, where));
+  return Eigen::MatrixXf(Eigen::Map<const Eigen::MatrixXf>(values.data(), count, channels));
 }
 
 // Inserts one time record into rig_test_record or tyre_test_record (same
@@ -97,12 +96,11 @@ Result<void> insertRecord(sqlite3* db, const char* table, std::int64_t testId, i
   const std::string text = "INSERT INTO " + std::string(table) + "(" + owner +
                            ", step, sample_rate_hz, channel_count, sample_count,"
                            " encoding, samples, samples_crc32) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)";
-  sql::Statement stmt(db, text.c_str());
-  stmt.bind(1, testId).bind(2, step).bind(3, sampleRateHz).bind(4, static_cast<std::int64_t>(samples.cols()));
-  stmt.bind(5, static_cast<std::int64_t>(samples.rows())).bind(6, static_cast<int>(encoding));
-  stmt.bindBlob(7, blob.data(), blob.size()).bind(8, static_cast<std::int64_t>(crc));
-  MOZZI_TRY(stmt.run("cannot store the record", where));
-  return {};
+  sql::Statement stmt(db, text);
+  return stmt
+      .bindAll(testId, step, sampleRateHz, samples.cols(), samples.rows(), encoding,
+               sql::Blob{blob.data(), blob.size()}, crc)
+      .run("cannot store the record", where);
 }
 
 // Inside a transaction: the status note of a running test (nothing when empty).
@@ -110,10 +108,8 @@ Result<void> setStatusNote(sqlite3* db, const char* table, std::int64_t id, cons
                            const std::string& where) {
   if (note.empty()) return {};
   const std::string text = "UPDATE " + std::string(table) + " SET status_note = ?2 WHERE id = ?1";
-  sql::Statement stmt(db, text.c_str());
-  stmt.bind(1, id).bind(2, note);
-  MOZZI_TRY(stmt.run("cannot update the test's note", where));
-  return {};
+  sql::Statement stmt(db, text);
+  return stmt.bindAll(id, note).run("cannot update the test's note", where);
 }
 
 // Inside a transaction: the final status and note of a test; NotFound when
@@ -121,9 +117,8 @@ Result<void> setStatusNote(sqlite3* db, const char* table, std::int64_t id, cons
 Result<void> setFinalStatus(sqlite3* db, const char* table, std::int64_t id, TestStatus status, const std::string& note,
                             const std::string& where) {
   const std::string text = "UPDATE " + std::string(table) + " SET status = ?2, status_note = ?3 WHERE id = ?1";
-  sql::Statement stmt(db, text.c_str());
-  stmt.bind(1, id).bind(2, std::string(testStatusName(status))).bind(3, note);
-  MOZZI_TRY(stmt.run("cannot set the test's status", where));
+  sql::Statement stmt(db, text);
+  MOZZI_TRY(stmt.bindAll(id, std::string(testStatusName(status)), note).run("cannot set the test's status", where));
   if (sqlite3_changes(db) != 1) return makeError(ErrorCode::NotFound, "no such test", where);
   return {};
 }
@@ -135,9 +130,8 @@ Result<Eigen::MatrixXf> readRecord(sqlite3* db, const char* table, std::int64_t 
   const std::string text =
       "SELECT sample_rate_hz, channel_count, sample_count, encoding, samples, samples_crc32 FROM " +
       std::string(table) + " WHERE " + owner + " = ?1 AND step = ?2";
-  sql::Statement stmt(db, text.c_str());
-  stmt.bind(1, testId).bind(2, step);
-  MOZZI_TRY(stmt.single("cannot read the record", "no such record", where));
+  sql::Statement stmt(db, text);
+  MOZZI_TRY(stmt.bindAll(testId, step).single("cannot read the record", "no such record", where));
   if (sampleRateHz) *sampleRateHz = sqlite3_column_double(stmt.get(), 0);
   return columnSamples(stmt.get(), 1, where);
 }

@@ -62,10 +62,6 @@ Result<void> setFinalStatus(sqlite3* db, const char* table, std::int64_t id, Tes
 Result<Eigen::MatrixXf> readRecord(sqlite3* db, const char* table, std::int64_t testId, int step, double* sampleRateHz,
                                    const std::string& where);
 
-inline sql::Statement& bindStep(sql::Statement& stmt, int index, const std::optional<int>& step) {
-  return step ? stmt.bind(index, *step) : stmt.bindNull(index);
-}
-
 // CRC-32 (zlib) over a record's content as typed values: integers as int64
 // and doubles as their IEEE-754 bits, both little endian; text as its length
 // (int64) then its bytes. -0.0 is hashed as +0.0, because SQLite stores a

@@ -15,35 +15,37 @@ using data::columnDoubles;
 using data::ContentCrc;
 using data::kMaxFrfLines;
 using data::verifyChecksum;
-using sql::sqliteError;
 
 // --- FRFs -------------------------------------------------------------------------------
 
 Result<std::int64_t> ProjectStore::addFrfSet(const FrfSetInfo& info, const FrfMatrix& frf,
                                              const std::vector<std::int64_t>& hitIds) {
-  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
-  MOZZI_TRY(requireWritable());
   const std::string where = path_ + ", FRF set '" + info.name + "'";
-  if (info.name.empty()) return makeError(ErrorCode::InvalidArgument, "an FRF set needs a name", where);
-  if (auto r = frf.validate(); !r) return makeError(r.error().code, r.error().message, where + ": " + r.error().where);
-  if (frf.lineCount() == 0 || frf.responseCount() == 0 || frf.referenceCount() == 0) {
-    return makeError(ErrorCode::InvalidArgument, "an FRF set needs lines, responses and references", where);
-  }
-  sql::Transaction tx(db_, where);
-  MOZZI_TRY(tx.begun());
+  return insertInTransaction(where, [&]() -> Result<std::int64_t> {
+    if (info.name.empty()) return makeError(ErrorCode::InvalidArgument, "an FRF set needs a name", where);
+    // The error keeps the FRF's own place after the set's.
+    if (auto r = frf.validate(); !r)
+      return makeError(r.error().code, r.error().message, where + ": " + r.error().where);
+    if (frf.lineCount() == 0 || frf.responseCount() == 0 || frf.referenceCount() == 0) {
+      return makeError(ErrorCode::InvalidArgument, "an FRF set needs lines, responses and references", where);
+    }
+    return insertFrfSet(info, frf, hitIds, where);
+  });
+}
+
+Result<std::int64_t> ProjectStore::insertFrfSet(const FrfSetInfo& info, const FrfMatrix& frf,
+                                                const std::vector<std::int64_t>& hitIds, const std::string& where) {
   sql::Statement set(db_,
                      "INSERT INTO frf_set(specimen_id, campaign_id, name, source, estimator, frf_type, line_count,"
                      " frequency_hz, created_utc, content_crc32) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10)");
   const std::size_t frequencyBytes = static_cast<std::size_t>(frf.lineCount()) * sizeof(double);
-  set.bind(1, info.specimenId).bind(2, info.campaignId).bind(3, info.name).bind(4, info.source);
-  set.bind(5, info.estimator).bind(6, static_cast<int>(frf.type)).bind(7, static_cast<std::int64_t>(frf.lineCount()));
-  set.bindBlob(8, frf.frequencyHz.data(), frequencyBytes);
-  set.bind(9, sql::nowUtc());
-  set.bind(10, static_cast<std::int64_t>(ContentCrc()
-                                             .add(static_cast<int>(frf.type))
-                                             .add(static_cast<std::int64_t>(frf.lineCount()))
-                                             .bytes(frf.frequencyHz.data(), frequencyBytes)
-                                             .value()));
+  const std::uint32_t setCrc = ContentCrc()
+                                   .add(static_cast<int>(frf.type))
+                                   .add(static_cast<std::int64_t>(frf.lineCount()))
+                                   .bytes(frf.frequencyHz.data(), frequencyBytes)
+                                   .value();
+  set.bindAll(info.specimenId, info.campaignId, info.name, info.source, info.estimator, frf.type, frf.lineCount(),
+              sql::Blob{frf.frequencyHz.data(), frequencyBytes}, sql::nowUtc(), setCrc);
   MOZZI_TRY_ASSIGN(const std::int64_t id, set.insert("cannot store the FRF set", where));
   sql::Statement row(db_,
                      "INSERT INTO frf(frf_set_id, response_node, response_direction, reference_node,"
@@ -54,40 +56,32 @@ Result<std::int64_t> ProjectStore::addFrfSet(const FrfSetInfo& info, const FrfMa
     for (Eigen::Index o = 0; o < frf.responseCount(); ++o) {
       // Column o of h[i] is contiguous (column-major): nf complex<double> = 2 nf doubles.
       const ComplexVector column = frf.h[static_cast<std::size_t>(i)].col(o);
+      const Dof& response = frf.responses[static_cast<std::size_t>(o)];
+      const Dof& reference = frf.references[static_cast<std::size_t>(i)];
       Vector coherence;
-      row.reset();
-      row.bind(1, id).bind(2, frf.responses[static_cast<std::size_t>(o)].node);
-      row.bind(3, frf.responses[static_cast<std::size_t>(o)].uffCode());
-      row.bind(4, frf.references[static_cast<std::size_t>(i)].node);
-      row.bind(5, frf.references[static_cast<std::size_t>(i)].uffCode());
-      row.bind(6, static_cast<std::int64_t>(o)).bind(7, static_cast<std::int64_t>(i));
-      row.bindBlob(8, column.data(), nf * sizeof(Complex));
       ContentCrc crc;
       crc.add(id).add(static_cast<std::int64_t>(o)).add(static_cast<std::int64_t>(i));
-      crc.add(frf.responses[static_cast<std::size_t>(o)].node)
-          .add(frf.responses[static_cast<std::size_t>(o)].uffCode());
-      crc.add(frf.references[static_cast<std::size_t>(i)].node);
-      crc.add(frf.references[static_cast<std::size_t>(i)].uffCode());
+      crc.add(response.node).add(response.uffCode()).add(reference.node).add(reference.uffCode());
       crc.bytes(column.data(), nf * sizeof(Complex));
       if (!frf.coherence.empty()) {
         coherence = frf.coherence[static_cast<std::size_t>(i)].col(o);
-        row.bindBlob(9, coherence.data(), nf * sizeof(double));
         crc.add(1).bytes(coherence.data(), nf * sizeof(double));
       } else {
-        row.bindNull(9);
         crc.add(0);
       }
-      row.bind(10, static_cast<std::int64_t>(crc.value()));
-      MOZZI_TRY(row.run("cannot store an FRF", where));
+      row.reset();
+      row.bindAll(id, response, reference, o, i, sql::Blob{column.data(), nf * sizeof(Complex)});
+      if (frf.coherence.empty()) {
+        row.bindNull(9);
+      } else {
+        row.bindBlob(9, coherence.data(), nf * sizeof(double));
+      }
+      MOZZI_TRY(row.bind(10, static_cast<std::int64_t>(crc.value())).run("cannot store an FRF", where));
     }
   }
   sql::Statement link(db_, "INSERT INTO frf_hit(frf_set_id, hit_id) VALUES (?1, ?2)");
-  for (std::int64_t hitId : hitIds) {
-    link.reset();
-    link.bind(1, id).bind(2, hitId);
-    MOZZI_TRY(link.run("cannot link hit " + std::to_string(hitId), where));
-  }
-  MOZZI_TRY(tx.commit());
+  for (std::int64_t hitId : hitIds)
+    MOZZI_TRY(link.runWith("cannot link hit " + std::to_string(hitId), where, id, hitId));
   return id;
 }
 
@@ -99,23 +93,11 @@ Result<std::vector<FrfSetInfo>> ProjectStore::frfSets() const {
                       " (SELECT count(DISTINCT reference_index) FROM frf WHERE frf_set_id = s.id)"
                       " FROM frf_set s ORDER BY s.id");
   std::vector<FrfSetInfo> out;
-  int rc;
-  while ((rc = stmt.step()) == SQLITE_ROW) {
-    FrfSetInfo s;
-    s.id = sqlite3_column_int64(stmt.get(), 0);
-    s.specimenId = sqlite3_column_int64(stmt.get(), 1);
-    if (sqlite3_column_type(stmt.get(), 2) != SQLITE_NULL) s.campaignId = sqlite3_column_int64(stmt.get(), 2);
-    s.name = sql::columnText(stmt.get(), 3);
-    s.source = sql::columnText(stmt.get(), 4);
-    s.estimator = sql::columnText(stmt.get(), 5);
-    const int type = sqlite3_column_int(stmt.get(), 6);
-    s.type = static_cast<FrfType>(type >= 0 && type <= 2 ? type : 2);
-    s.lineCount = sqlite3_column_int64(stmt.get(), 7);
-    s.responseCount = sqlite3_column_int(stmt.get(), 8);
-    s.referenceCount = sqlite3_column_int(stmt.get(), 9);
-    out.push_back(std::move(s));
-  }
-  if (rc != SQLITE_DONE) return sqliteError(db_, "cannot list FRF sets", path_);
+  MOZZI_TRY(stmt.forEachRow("cannot list FRF sets", path_, [&](const sql::Row& r) {
+    const int type = r.int32(6);  // an unknown type lists as accelerance; frfSet() refuses it
+    out.push_back({r.int64(0), r.int64(1), r.optionalInt64(2), r.text(3), r.text(4), r.text(5),
+                   static_cast<FrfType>(type >= 0 && type <= 2 ? type : 2), r.int64(7), r.int32(8), r.int32(9)});
+  }));
   return out;
 }
 
@@ -125,11 +107,9 @@ Result<FrfMatrix> ProjectStore::frfSet(std::int64_t frfSetId) const {
   FrfMatrix frf;
   std::int64_t lines = 0;
   {
-    sql::Statement stmt(db_, ("SELECT frf_type, line_count, frequency_hz, " + crcColumn("content_crc32") +
-                              " FROM frf_set WHERE id = ?1")
-                                 .c_str());
-    stmt.bind(1, frfSetId);
-    MOZZI_TRY(stmt.single("cannot read the FRF set", "no such FRF set", where));
+    sql::Statement stmt(db_, "SELECT frf_type, line_count, frequency_hz, " + crcColumn("content_crc32") +
+                                 " FROM frf_set WHERE id = ?1");
+    MOZZI_TRY(stmt.bindAll(frfSetId).single("cannot read the FRF set", "no such FRF set", where));
     {
       ContentCrc crc;
       crc.add(sqlite3_column_int64(stmt.get(), 0)).add(sqlite3_column_int64(stmt.get(), 1));
@@ -146,63 +126,56 @@ Result<FrfMatrix> ProjectStore::frfSet(std::int64_t frfSetId) const {
     MOZZI_TRY_ASSIGN(auto f, columnDoubles(stmt.get(), 2, lines, where + ", frequencies"));
     frf.frequencyHz = Eigen::Map<const Vector>(f.data(), lines);
   }
-  sql::Statement stmt(
-      db_, ("SELECT response_index, reference_index, response_node, response_direction, reference_node,"
-            " reference_direction, h, coherence, " +
-            crcColumn("content_crc32") + " FROM frf WHERE frf_set_id = ?1 ORDER BY reference_index, response_index")
-               .c_str());
-  stmt.bind(1, frfSetId);
-  struct Row {
+  sql::Statement stmt(db_,
+                      "SELECT response_index, reference_index, response_node, response_direction, reference_node,"
+                      " reference_direction, h, coherence, " +
+                          crcColumn("content_crc32") +
+                          " FROM frf WHERE frf_set_id = ?1 ORDER BY reference_index, response_index");
+  struct FrfRow {
     std::int64_t o, i;
     Dof response, reference;
     std::vector<double> h, coherence;
   };
-  std::vector<Row> rows;
+  std::vector<FrfRow> rows;
   std::int64_t no = 0, ni = 0;
   bool anyCoherence = false;
-  int rc;
-  while ((rc = stmt.step()) == SQLITE_ROW) {
-    Row r;
+  auto readRow = [&](const sql::Row& row) -> Result<void> {
+    sqlite3_stmt* const s = row.get();
+    FrfRow r;
     {
       ContentCrc crc;
       crc.add(frfSetId);
-      for (int c = 0; c < 6; ++c) crc.add(sqlite3_column_int64(stmt.get(), c));
-      crc.bytes(sqlite3_column_blob(stmt.get(), 6), static_cast<std::size_t>(sqlite3_column_bytes(stmt.get(), 6)));
-      if (sqlite3_column_type(stmt.get(), 7) == SQLITE_NULL) {
+      for (int c = 0; c < 6; ++c) crc.add(row.int64(c));
+      crc.bytes(sqlite3_column_blob(s, 6), static_cast<std::size_t>(sqlite3_column_bytes(s, 6)));
+      if (row.isNull(7)) {
         crc.add(0);
       } else {
-        crc.add(1).bytes(sqlite3_column_blob(stmt.get(), 7),
-                         static_cast<std::size_t>(sqlite3_column_bytes(stmt.get(), 7)));
+        crc.add(1).bytes(sqlite3_column_blob(s, 7), static_cast<std::size_t>(sqlite3_column_bytes(s, 7)));
       }
-      const std::string frfWhere = where + ", FRF row " + std::to_string(sqlite3_column_int64(stmt.get(), 0)) + "/" +
-                                   std::to_string(sqlite3_column_int64(stmt.get(), 1)) + " (response " +
-                                   std::to_string(sqlite3_column_int64(stmt.get(), 2)) + ", reference " +
-                                   std::to_string(sqlite3_column_int64(stmt.get(), 4)) + ")";
-      MOZZI_TRY(verifyChecksum(stmt.get(), 8, crc.value(), "FRF", frfWhere));
+      const std::string frfWhere = where + ", FRF row " + std::to_string(row.int64(0)) + "/" +
+                                   std::to_string(row.int64(1)) + " (response " + std::to_string(row.int64(2)) +
+                                   ", reference " + std::to_string(row.int64(4)) + ")";
+      MOZZI_TRY(verifyChecksum(s, 8, crc.value(), "FRF", frfWhere));
     }
-    r.o = sqlite3_column_int64(stmt.get(), 0);
-    r.i = sqlite3_column_int64(stmt.get(), 1);
+    r.o = row.int64(0);
+    r.i = row.int64(1);
     if (r.o < 0 || r.i < 0 || r.o >= 1 << 20 || r.i >= 1 << 20) {
       return makeError(ErrorCode::Corrupt, "FRF index out of range", where);
     }
-    MOZZI_TRY_ASSIGN(auto response, sql::columnDof(stmt.get(), 2, 3, where));
-    MOZZI_TRY_ASSIGN(auto reference, sql::columnDof(stmt.get(), 4, 5, where));
-    r.response = response;
-    r.reference = reference;
-    auto h = columnDoubles(stmt.get(), 6, 2 * lines,
-                           where + ", FRF " + formatDof(r.response) + "/" + formatDof(r.reference));
-    if (!h) return h.error();
-    r.h = std::move(*h);
-    if (sqlite3_column_type(stmt.get(), 7) != SQLITE_NULL) {
-      MOZZI_TRY_ASSIGN(auto c, columnDoubles(stmt.get(), 7, lines, where + ", coherence"));
-      r.coherence = std::move(c);
+    MOZZI_TRY_ASSIGN(r.response, row.dof(2, 3, where));
+    MOZZI_TRY_ASSIGN(r.reference, row.dof(4, 5, where));
+    MOZZI_TRY_ASSIGN(
+        r.h, columnDoubles(s, 6, 2 * lines, where + ", FRF " + formatDof(r.response) + "/" + formatDof(r.reference)));
+    if (!row.isNull(7)) {
+      MOZZI_TRY_ASSIGN(r.coherence, columnDoubles(s, 7, lines, where + ", coherence"));
       anyCoherence = true;
     }
     no = std::max(no, r.o + 1);
     ni = std::max(ni, r.i + 1);
     rows.push_back(std::move(r));
-  }
-  if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read FRFs", where);
+    return {};
+  };
+  MOZZI_TRY(stmt.bindAll(frfSetId).forEachRow("cannot read FRFs", where, readRow));
   if (rows.empty() || static_cast<std::int64_t>(rows.size()) != no * ni) {
     return makeError(ErrorCode::Corrupt, "the FRF set is not a full responses x references matrix", where);
   }
@@ -210,7 +183,7 @@ Result<FrfMatrix> ProjectStore::frfSet(std::int64_t frfSetId) const {
   frf.references.resize(static_cast<std::size_t>(ni));
   frf.h.assign(static_cast<std::size_t>(ni), ComplexMatrix(lines, no));
   if (anyCoherence) frf.coherence.assign(static_cast<std::size_t>(ni), Matrix(lines, no));
-  for (const Row& r : rows) {
+  for (const FrfRow& r : rows) {
     // Rows are sorted by (i, o) and their count is no * ni, so each (o, i)
     // appears exactly once and in order.
     frf.responses[static_cast<std::size_t>(r.o)] = r.response;

@@ -13,10 +13,8 @@ Result<std::optional<std::string>> metaValue(const ProjectStore& store, const st
   const std::string where = store.path() + ", meta key '" + key + "'";
   sql::Statement stmt(store.connection(), "SELECT value FROM meta WHERE key = ?1");
   if (!stmt.ok()) return sql::sqliteError(store.connection(), "cannot read project metadata", where);
-  stmt.bind(1, key);
-  const int rc = stmt.step();
-  if (rc == SQLITE_DONE) return std::optional<std::string>();
-  if (rc != SQLITE_ROW) return sql::sqliteError(store.connection(), "cannot read project metadata", where);
+  MOZZI_TRY_ASSIGN(const bool found, stmt.bindAll(key).next("cannot read project metadata", where));
+  if (!found) return std::optional<std::string>();
   return std::optional<std::string>(sql::columnText(stmt.get(), 0));
 }
 
@@ -31,9 +29,7 @@ Result<void> setMetaValue(ProjectStore& store, const std::string& key, const std
   sql::Statement stmt(store.connection(),
                       "INSERT INTO meta(key, value) VALUES (?1, ?2) ON CONFLICT(key) DO UPDATE SET value = ?2");
   if (!stmt.ok()) return sql::sqliteError(store.connection(), "cannot write project metadata", where);
-  stmt.bind(1, key).bind(2, value);
-  if (stmt.step() != SQLITE_DONE) return sql::sqliteError(store.connection(), "cannot write project metadata", where);
-  return {};
+  return stmt.bindAll(key, value).run("cannot write project metadata", where);
 }
 
 }  // namespace mozzi::core::io

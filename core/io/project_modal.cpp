@@ -11,14 +11,13 @@ namespace mozzi::core::io {
 using data::ContentCrc;
 using data::finite;
 using data::verifyChecksum;
-using sql::sqliteError;
 
 // --- modal results ---------------------------------------------------------------------
 
-Result<std::int64_t> ProjectStore::addModalResult(const ModalResultInfo& info, const ModalTable& table) {
-  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
-  MOZZI_TRY(requireWritable());
-  const std::string where = path_ + ", modal result '" + info.name + "'";
+namespace {
+
+// Checks every mode of a table before anything is written.
+Result<void> checkModes(const ModalResultInfo& info, const ModalTable& table, const std::string& where) {
   if (info.name.empty()) return makeError(ErrorCode::InvalidArgument, "a modal result needs a name", where);
   for (std::size_t m = 0; m < table.modes.size(); ++m) {
     const auto& mode = table.modes[m];
@@ -36,8 +35,21 @@ Result<std::int64_t> ProjectStore::addModalResult(const ModalResultInfo& info, c
       return makeError(ErrorCode::InvalidArgument, "mode " + std::to_string(m + 1) + " shape is not finite", where);
     }
   }
-  sql::Transaction tx(db_, where);
-  MOZZI_TRY(tx.begun());
+  return {};
+}
+
+}  // namespace
+
+Result<std::int64_t> ProjectStore::addModalResult(const ModalResultInfo& info, const ModalTable& table) {
+  const std::string where = path_ + ", modal result '" + info.name + "'";
+  return insertInTransaction(where, [&]() -> Result<std::int64_t> {
+    MOZZI_TRY(checkModes(info, table, where));
+    return insertModalResult(info, table, where);
+  });
+}
+
+Result<std::int64_t> ProjectStore::insertModalResult(const ModalResultInfo& info, const ModalTable& table,
+                                                     const std::string& where) {
   ContentCrc crc;
   crc.add(info.bandLowHz).add(info.bandHighHz).add(static_cast<std::int64_t>(table.modes.size()));
   for (std::size_t m = 0; m < table.modes.size(); ++m) {
@@ -53,9 +65,8 @@ Result<std::int64_t> ProjectStore::addModalResult(const ModalResultInfo& info, c
   sql::Statement res(db_,
                      "INSERT INTO modal_result(specimen_id, frf_set_id, name, method, band_low_hz, band_high_hz,"
                      " created_utc, content_crc32) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
-  res.bind(1, info.specimenId).bind(2, info.frfSetId).bind(3, info.name).bind(4, info.method);
-  res.bind(5, info.bandLowHz).bind(6, info.bandHighHz).bind(7, sql::nowUtc());
-  res.bind(8, static_cast<std::int64_t>(crc.value()));
+  res.bindAll(info.specimenId, info.frfSetId, info.name, info.method, info.bandLowHz, info.bandHighHz, sql::nowUtc(),
+              crc.value());
   MOZZI_TRY_ASSIGN(const std::int64_t id, res.insert("cannot store the modal result", where));
   sql::Statement mode(
       db_, "INSERT INTO mode(modal_result_id, mode_index, frequency_hz, damping_ratio) VALUES (?1, ?2, ?3, ?4)");
@@ -63,19 +74,14 @@ Result<std::int64_t> ProjectStore::addModalResult(const ModalResultInfo& info, c
                        "INSERT INTO mode_shape(mode_id, dof_index, dof_node, dof_direction, re, im)"
                        " VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
   for (std::size_t m = 0; m < table.modes.size(); ++m) {
-    mode.reset();
-    mode.bind(1, id).bind(2, static_cast<std::int64_t>(m)).bind(3, table.modes[m].frequencyHz);
-    mode.bind(4, table.modes[m].dampingRatio);
-    MOZZI_TRY_ASSIGN(const std::int64_t modeId, mode.insert("cannot store mode " + std::to_string(m + 1), where));
-    for (Eigen::Index d = 0; d < table.modes[m].shape.size(); ++d) {
-      shape.reset();
-      shape.bind(1, modeId).bind(2, static_cast<std::int64_t>(d));
-      shape.bindDof(3, table.dofs[static_cast<std::size_t>(d)]);
-      shape.bind(5, table.modes[m].shape[d].real()).bind(6, table.modes[m].shape[d].imag());
-      MOZZI_TRY(shape.run("cannot store a mode-shape entry", where));
+    const StoredMode& stored = table.modes[m];
+    MOZZI_TRY_ASSIGN(const std::int64_t modeId, mode.insertWith("cannot store mode " + std::to_string(m + 1), where, id,
+                                                                m, stored.frequencyHz, stored.dampingRatio));
+    for (Eigen::Index d = 0; d < stored.shape.size(); ++d) {
+      MOZZI_TRY(shape.runWith("cannot store a mode-shape entry", where, modeId, d,
+                              table.dofs[static_cast<std::size_t>(d)], stored.shape[d].real(), stored.shape[d].imag()));
     }
   }
-  MOZZI_TRY(tx.commit());
   return id;
 }
 
@@ -85,20 +91,9 @@ Result<std::vector<ModalResultInfo>> ProjectStore::modalResults() const {
                       "SELECT r.id, r.specimen_id, r.frf_set_id, r.name, r.method, r.band_low_hz, r.band_high_hz,"
                       " (SELECT count(*) FROM mode WHERE modal_result_id = r.id) FROM modal_result r ORDER BY r.id");
   std::vector<ModalResultInfo> out;
-  int rc;
-  while ((rc = stmt.step()) == SQLITE_ROW) {
-    ModalResultInfo m;
-    m.id = sqlite3_column_int64(stmt.get(), 0);
-    m.specimenId = sqlite3_column_int64(stmt.get(), 1);
-    if (sqlite3_column_type(stmt.get(), 2) != SQLITE_NULL) m.frfSetId = sqlite3_column_int64(stmt.get(), 2);
-    m.name = sql::columnText(stmt.get(), 3);
-    m.method = sql::columnText(stmt.get(), 4);
-    m.bandLowHz = sqlite3_column_double(stmt.get(), 5);
-    m.bandHighHz = sqlite3_column_double(stmt.get(), 6);
-    m.modeCount = sqlite3_column_int(stmt.get(), 7);
-    out.push_back(std::move(m));
-  }
-  if (rc != SQLITE_DONE) return sqliteError(db_, "cannot list modal results", path_);
+  MOZZI_TRY(stmt.forEachRow("cannot list modal results", path_, [&](const sql::Row& r) {
+    out.push_back({r.int64(0), r.int64(1), r.optionalInt64(2), r.text(3), r.text(4), r.real(5), r.real(6), r.int32(7)});
+  }));
   return out;
 }
 
@@ -106,70 +101,55 @@ Result<ModalTable> ProjectStore::modalResult(std::int64_t modalResultId) const {
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", modal result " + std::to_string(modalResultId);
   sql::Statement head(
-      db_,
-      ("SELECT band_low_hz, band_high_hz, " + crcColumn("content_crc32") + " FROM modal_result WHERE id = ?1").c_str());
-  head.bind(1, modalResultId);
-  if (head.step() != SQLITE_ROW) return makeError(ErrorCode::NotFound, "no such modal result", where);
+      db_, "SELECT band_low_hz, band_high_hz, " + crcColumn("content_crc32") + " FROM modal_result WHERE id = ?1");
+  if (head.bindAll(modalResultId).step() != SQLITE_ROW)
+    return makeError(ErrorCode::NotFound, "no such modal result", where);
   ContentCrc crc;
   crc.add(sqlite3_column_double(head.get(), 0)).add(sqlite3_column_double(head.get(), 1));
   ModalTable table;
   std::vector<std::int64_t> modeIds;
   std::vector<std::int64_t> modeIndices;
-  {
-    sql::Statement stmt(db_,
-                        "SELECT id, frequency_hz, damping_ratio, mode_index FROM mode WHERE modal_result_id = ?1"
-                        " ORDER BY mode_index");
-    stmt.bind(1, modalResultId);
-    int rc;
-    while ((rc = stmt.step()) == SQLITE_ROW) {
-      modeIds.push_back(sqlite3_column_int64(stmt.get(), 0));
-      modeIndices.push_back(sqlite3_column_int64(stmt.get(), 3));
-      StoredMode m;
-      m.frequencyHz = sqlite3_column_double(stmt.get(), 1);
-      m.dampingRatio = sqlite3_column_double(stmt.get(), 2);
-      table.modes.push_back(m);
-    }
-    if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read modes", where);
-  }
+  sql::Statement modes(db_,
+                       "SELECT id, frequency_hz, damping_ratio, mode_index FROM mode WHERE modal_result_id = ?1"
+                       " ORDER BY mode_index");
+  MOZZI_TRY(modes.bindAll(modalResultId).forEachRow("cannot read modes", where, [&](const sql::Row& r) {
+    modeIds.push_back(r.int64(0));
+    modeIndices.push_back(r.int64(3));
+    table.modes.push_back({r.real(1), r.real(2), {}});
+  }));
   crc.add(static_cast<std::int64_t>(modeIds.size()));
   sql::Statement shape(db_,
                        "SELECT dof_index, dof_node, dof_direction, re, im FROM mode_shape WHERE mode_id = ?1"
                        " ORDER BY dof_index");
   for (std::size_t m = 0; m < modeIds.size(); ++m) {
-    shape.reset();
-    shape.bind(1, modeIds[m]);
     struct Entry {
       std::int64_t index, node, direction;
       double re, im;
     };
     std::vector<Entry> raw;
-    int rc;
-    while ((rc = shape.step()) == SQLITE_ROW) {
-      raw.push_back({sqlite3_column_int64(shape.get(), 0), sqlite3_column_int64(shape.get(), 1),
-                     sqlite3_column_int64(shape.get(), 2), sqlite3_column_double(shape.get(), 3),
-                     sqlite3_column_double(shape.get(), 4)});
-    }
-    if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read a mode shape", where);
+    shape.reset();
+    MOZZI_TRY(shape.bindAll(modeIds[m]).forEachRow("cannot read a mode shape", where, [&](const sql::Row& r) {
+      raw.push_back({r.int64(0), r.int64(1), r.int64(2), r.real(3), r.real(4)});
+    }));
     crc.add(modeIndices[m]).add(table.modes[m].frequencyHz).add(table.modes[m].dampingRatio);
     crc.add(static_cast<std::int64_t>(raw.size()));
     for (const auto& e : raw) crc.add(e.index).add(e.node).add(e.direction).add(e.re).add(e.im);
   }
   MOZZI_TRY(verifyChecksum(head.get(), 2, crc.value(), "modal result (modes and shapes)", where));
   for (std::size_t m = 0; m < modeIds.size(); ++m) {
-    shape.reset();
-    shape.bind(1, modeIds[m]);
     std::vector<Complex> values;
     std::vector<Dof> dofs;
-    int rc;
-    while ((rc = shape.step()) == SQLITE_ROW) {
-      if (sqlite3_column_int64(shape.get(), 0) != static_cast<std::int64_t>(values.size())) {
+    auto readEntry = [&](const sql::Row& r) -> Result<void> {
+      if (r.int64(0) != static_cast<std::int64_t>(values.size())) {
         return makeError(ErrorCode::Corrupt, "mode-shape DOFs do not number 0..n-1", where);
       }
-      MOZZI_TRY_ASSIGN(auto dof, sql::columnDof(shape.get(), 1, 2, where));
+      MOZZI_TRY_ASSIGN(const Dof dof, r.dof(1, 2, where));
       dofs.push_back(dof);
-      values.emplace_back(sqlite3_column_double(shape.get(), 3), sqlite3_column_double(shape.get(), 4));
-    }
-    if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read a mode shape", where);
+      values.emplace_back(r.real(3), r.real(4));
+      return {};
+    };
+    shape.reset();
+    MOZZI_TRY(shape.bindAll(modeIds[m]).forEachRow("cannot read a mode shape", where, readEntry));
     if (m == 0) table.dofs = dofs;
     if (!values.empty() && dofs != table.dofs) {
       return makeError(ErrorCode::Corrupt, "mode " + std::to_string(m + 1) + " uses other DOFs than mode 1", where);

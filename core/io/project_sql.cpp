@@ -28,11 +28,8 @@ Result<void> exec(sqlite3* db, const char* sql, const std::string& where) {
 Result<std::int64_t> queryInt(sqlite3* db, const char* sql, const std::string& where) {
   Statement stmt(db, sql);
   if (!stmt.ok()) return sqliteError(db, sql, where);
-  std::int64_t value = 0;
-  const int rc = stmt.step();
-  if (rc == SQLITE_ROW) value = sqlite3_column_int64(stmt.get(), 0);
-  if (rc != SQLITE_ROW && rc != SQLITE_DONE) return sqliteError(db, sql, where);
-  return value;
+  MOZZI_TRY_ASSIGN(const bool atRow, stmt.next(sql, where));
+  return atRow ? sqlite3_column_int64(stmt.get(), 0) : std::int64_t{0};
 }
 
 std::string fileUri(const std::string& path) {
@@ -151,10 +148,16 @@ Result<std::int64_t> Statement::insert(const std::string& what, const std::strin
 }
 
 Result<void> Statement::single(const std::string& what, const std::string& absent, const std::string& where) {
-  const int rc = step();
-  if (rc == SQLITE_DONE) return makeError(ErrorCode::NotFound, absent, where);
-  if (rc != SQLITE_ROW) return sqliteError(db_, what, where);
+  MOZZI_TRY_ASSIGN(const bool atRow, next(what, where));
+  if (!atRow) return makeError(ErrorCode::NotFound, absent, where);
   return {};
+}
+
+Result<bool> Statement::next(const std::string& what, const std::string& where) {
+  const int rc = step();
+  if (rc == SQLITE_ROW) return true;
+  if (rc == SQLITE_DONE) return false;
+  return sqliteError(db_, what, where);
 }
 
 Transaction::Transaction(sqlite3* db, std::string where) : db_(db), where_(std::move(where)) {

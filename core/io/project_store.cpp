@@ -4,13 +4,13 @@
 #include "core/io/project_sql.h"
 
 #include <fcntl.h>
-#include <signal.h>
 #include <sqlite3.h>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -39,19 +39,15 @@ Result<void> migrate(sqlite3* db, int fromVersion, const std::string& path, cons
   const auto& migrations = projectMigrations();
   for (int v = fromVersion + 1; v <= schemaVersionCount(); ++v) {
     const std::string where = path + ", migration to schema " + std::to_string(v);
-    sql::Transaction tx(db, where);
-    if (!tx.begun()) return tx.begun();
-    if (auto r = exec(db, migrations[static_cast<std::size_t>(v - 1)], where); !r) return r;
-    if (v == 1) {
-      if (auto r = exec(db, ("PRAGMA application_id = " + std::to_string(kProjectApplicationId)).c_str(), where); !r) {
-        return r;
+    MOZZI_TRY(sql::inTransaction(db, where, [&]() -> Result<void> {
+      MOZZI_TRY(exec(db, migrations[static_cast<std::size_t>(v - 1)], where));
+      if (v == 1) {
+        MOZZI_TRY(exec(db, ("PRAGMA application_id = " + std::to_string(kProjectApplicationId)).c_str(), where));
+        sql::Statement meta(db, "INSERT INTO meta(key, value) VALUES ('created_utc', ?1), ('mozzi_version', ?2)");
+        MOZZI_TRY(meta.bindAll(sql::nowUtc(), mozziVersion).run("cannot write project metadata", where));
       }
-      sql::Statement meta(db, "INSERT INTO meta(key, value) VALUES ('created_utc', ?1), ('mozzi_version', ?2)");
-      meta.bind(1, sql::nowUtc()).bind(2, mozziVersion);
-      if (meta.step() != SQLITE_DONE) return sqliteError(db, "cannot write project metadata", where);
-    }
-    if (auto r = exec(db, ("PRAGMA user_version = " + std::to_string(v)).c_str(), where); !r) return r;
-    if (auto r = tx.commit(); !r) return r;
+      return exec(db, ("PRAGMA user_version = " + std::to_string(v)).c_str(), where);
+    }));
   }
   return {};
 }
@@ -221,9 +217,8 @@ Result<ProjectStore> ProjectStore::create(const std::string& path, const std::st
     }
     return open(path, OpenMode::ReadWrite);
   }
-  auto made =
-      createProjectAtomically(path, [&](const std::string& temp) { return createSchema(temp, path, mozziVersion); });
-  if (!made) return made.error();
+  MOZZI_TRY(
+      createProjectAtomically(path, [&](const std::string& temp) { return createSchema(temp, path, mozziVersion); }));
   return open(path, OpenMode::ReadWrite);
 }
 
@@ -302,38 +297,34 @@ Result<ProjectStore> ProjectStore::open(const std::string& path, OpenMode mode) 
   }
   sqlite3_busy_timeout(store.db_, 2000);
 
-  auto appId = queryInt(store.db_, "PRAGMA application_id", path);
-  if (!appId) return appId.error();
-  if (*appId != kProjectApplicationId) {
+  MOZZI_TRY_ASSIGN(const std::int64_t appId, queryInt(store.db_, "PRAGMA application_id", path));
+  if (appId != kProjectApplicationId) {
     return makeError(ErrorCode::Corrupt, "not a Mozzi project: SQLite database of another application", path);
   }
-  auto check = queryInt(store.db_, "SELECT quick_check = 'ok' FROM pragma_quick_check", path);
-  if (!check) return check.error();
-  if (*check != 1) return makeError(ErrorCode::Corrupt, "the project fails SQLite's integrity check", path);
+  MOZZI_TRY_ASSIGN(const std::int64_t check,
+                   queryInt(store.db_, "SELECT quick_check = 'ok' FROM pragma_quick_check", path));
+  if (check != 1) return makeError(ErrorCode::Corrupt, "the project fails SQLite's integrity check", path);
 
-  auto version = queryInt(store.db_, "PRAGMA user_version", path);
-  if (!version) return version.error();
-  if (*version > schemaVersionCount()) {
+  MOZZI_TRY_ASSIGN(const std::int64_t version, queryInt(store.db_, "PRAGMA user_version", path));
+  if (version > schemaVersionCount()) {
     return makeError(ErrorCode::Unsupported,
-                     "the project was written by a newer Mozzi (schema " + std::to_string(*version) +
+                     "the project was written by a newer Mozzi (schema " + std::to_string(version) +
                          ", this version reads up to " + std::to_string(schemaVersionCount()) + ")",
                      path);
   }
-  if (*version < 1) {
+  if (version < 1) {
     return makeError(ErrorCode::Corrupt, "not a Mozzi project: the file has no schema (an interrupted creation?)",
                      path);
   }
   // synchronous = FULL: in WAL mode every COMMIT fsyncs the WAL, so a
   // committed hit survives a power cut as well as a process crash (measured
   // cost in docs/performance/project.md).
-  if (auto r = exec(store.db_, "PRAGMA foreign_keys = ON; PRAGMA synchronous = FULL;", path); !r) return r.error();
+  MOZZI_TRY(exec(store.db_, "PRAGMA foreign_keys = ON; PRAGMA synchronous = FULL;", path));
   if (!store.readOnly_) {
-    if (auto r = exec(store.db_, "PRAGMA journal_mode = WAL", path); !r) return r.error();
-    if (*version < schemaVersionCount()) {
-      if (auto r = migrate(store.db_, static_cast<int>(*version), path, {}); !r) return r.error();
-    }
-  } else if (*version < schemaVersionCount()) {
-    store.checksums_ = *version >= 4;  // the checksum columns came with migration 4
+    MOZZI_TRY(exec(store.db_, "PRAGMA journal_mode = WAL", path));
+    if (version < schemaVersionCount()) MOZZI_TRY(migrate(store.db_, static_cast<int>(version), path, {}));
+  } else if (version < schemaVersionCount()) {
+    store.checksums_ = version >= 4;  // the checksum columns came with migration 4
     store.readOnlyReason_ += store.readOnlyReason_.empty() ? "" : "; ";
     store.readOnlyReason_ += "older schema, opened read-only without migration";
   }
@@ -350,35 +341,20 @@ Result<ProjectSummary> ProjectStore::summary() const {
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   ProjectSummary s;
   s.schemaVersion = schemaVersion();
-  {
-    sql::Statement stmt(db_, "SELECT key, value FROM meta");
-    if (!stmt.ok()) return sqliteError(db_, "cannot read project metadata", path_);
-    int rc;
-    while ((rc = stmt.step()) == SQLITE_ROW) {
-      const std::string key = sql::columnText(stmt.get(), 0);
-      if (key == "created_utc") s.createdUtc = sql::columnText(stmt.get(), 1);
-      if (key == "mozzi_version") s.mozziVersion = sql::columnText(stmt.get(), 1);
-    }
-    if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read project metadata", path_);
-  }
-  {
-    sql::Statement stmt(db_, "SELECT id, name, kind, description FROM specimen ORDER BY id");
-    if (!stmt.ok()) return sqliteError(db_, "cannot read specimens", path_);
-    int rc;
-    while ((rc = stmt.step()) == SQLITE_ROW) {
-      ProjectSummary::Specimen sp;
-      sp.id = sqlite3_column_int64(stmt.get(), 0);
-      sp.name = sql::columnText(stmt.get(), 1);
-      sp.kind = sql::columnText(stmt.get(), 2);
-      sp.description = sql::columnText(stmt.get(), 3);
-      s.specimens.push_back(std::move(sp));
-    }
-    if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read specimens", path_);
-  }
+  sql::Statement meta(db_, "SELECT key, value FROM meta");
+  MOZZI_TRY(meta.forEachRow("cannot read project metadata", path_, [&](const sql::Row& row) {
+    const std::string key = row.text(0);
+    if (key == "created_utc") s.createdUtc = row.text(1);
+    if (key == "mozzi_version") s.mozziVersion = row.text(1);
+  }));
+  sql::Statement specimens(db_, "SELECT id, name, kind, description FROM specimen ORDER BY id");
+  MOZZI_TRY(specimens.forEachRow("cannot read specimens", path_, [&](const sql::Row& row) {
+    s.specimens.push_back({row.int64(0), row.text(1), row.text(2), row.text(3)});
+  }));
   for (const char* table : projectDataTables()) {
-    auto n = queryInt(db_, (std::string("SELECT count(*) FROM ") + table).c_str(), path_);
-    if (!n) return n.error();
-    s.counts.push_back({table, *n});
+    MOZZI_TRY_ASSIGN(const std::int64_t rows,
+                     queryInt(db_, (std::string("SELECT count(*) FROM ") + table).c_str(), path_));
+    s.counts.push_back({table, rows});
   }
   return s;
 }
@@ -388,25 +364,33 @@ Result<void> ProjectStore::requireWritable() const {
   return {};
 }
 
+Result<void> ProjectStore::writeInTransaction(const std::string& where, const std::function<Result<void>()>& body) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
+  MOZZI_TRY(requireWritable());
+  return sql::inTransaction(db_, where, body);
+}
+
+Result<std::int64_t> ProjectStore::insertInTransaction(const std::string& where,
+                                                       const std::function<Result<std::int64_t>()>& body) {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
+  MOZZI_TRY(requireWritable());
+  return sql::inTransaction(db_, where, body);
+}
+
 Result<std::int64_t> ProjectStore::addSpecimen(const std::string& name, const std::string& kind,
                                                const std::string& description) {
-  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
-  if (auto r = requireWritable(); !r) return r.error();
-  if (name.empty()) return makeError(ErrorCode::InvalidArgument, "a specimen needs a name", path_);
-  sql::Transaction tx(db_, path_ + ", specimen '" + name + "'");
-  if (!tx.begun()) return tx.begun().error();
-  // mesh_crc32: the checksum of the empty mesh (setMesh replaces it).
-  sql::Statement stmt(db_, "INSERT INTO specimen(name, kind, description, mesh_crc32) VALUES (?1, ?2, ?3, ?4)");
-  stmt.bind(1, name).bind(2, kind).bind(3, description).bind(4, static_cast<std::int64_t>(sql::emptyMeshChecksum()));
-  if (stmt.step() != SQLITE_DONE) return sqliteError(db_, "cannot add specimen '" + name + "'", path_);
-  const std::int64_t id = sqlite3_last_insert_rowid(db_);
-  if (auto r = tx.commit(); !r) return r.error();
-  return id;
+  return insertInTransaction(path_ + ", specimen '" + name + "'", [&]() -> Result<std::int64_t> {
+    if (name.empty()) return makeError(ErrorCode::InvalidArgument, "a specimen needs a name", path_);
+    // mesh_crc32: the checksum of the empty mesh (setMesh replaces it).
+    sql::Statement stmt(db_, "INSERT INTO specimen(name, kind, description, mesh_crc32) VALUES (?1, ?2, ?3, ?4)");
+    return stmt.bindAll(name, kind, description, sql::emptyMeshChecksum())
+        .insert("cannot add specimen '" + name + "'", path_);
+  });
 }
 
 Result<void> ProjectStore::checkpoint() {
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
-  if (auto r = requireWritable(); !r) return r;
+  MOZZI_TRY(requireWritable());
   int logFrames = 0, checkpointed = 0;
   if (sqlite3_wal_checkpoint_v2(db_, nullptr, SQLITE_CHECKPOINT_PASSIVE, &logFrames, &checkpointed) != SQLITE_OK) {
     return sqliteError(db_, "cannot checkpoint the write-ahead log", path_);
@@ -415,16 +399,13 @@ Result<void> ProjectStore::checkpoint() {
 }
 
 Result<void> ProjectStore::deleteSpecimen(std::int64_t specimenId) {
-  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
-  if (auto r = requireWritable(); !r) return r.error();
   const std::string where = path_ + ", specimen " + std::to_string(specimenId);
-  sql::Transaction tx(db_, where);
-  if (!tx.begun()) return tx.begun();
-  sql::Statement stmt(db_, "DELETE FROM specimen WHERE id = ?1");
-  stmt.bind(1, specimenId);
-  if (stmt.step() != SQLITE_DONE) return sqliteError(db_, "cannot delete the specimen", where);
-  if (sqlite3_changes(db_) != 1) return makeError(ErrorCode::NotFound, "no such specimen", where);
-  return tx.commit();
+  return writeInTransaction(where, [&]() -> Result<void> {
+    sql::Statement stmt(db_, "DELETE FROM specimen WHERE id = ?1");
+    MOZZI_TRY(stmt.bindAll(specimenId).run("cannot delete the specimen", where));
+    if (sqlite3_changes(db_) != 1) return makeError(ErrorCode::NotFound, "no such specimen", where);
+    return {};
+  });
 }
 
 Result<void> ProjectStore::saveAs(const std::string& path) const {
@@ -461,7 +442,7 @@ Result<void> ProjectStore::saveAs(const std::string& path) const {
 
 Result<void> ProjectStore::setPowerLossDurable(bool durable) {
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
-  if (auto r = requireWritable(); !r) return r.error();
+  MOZZI_TRY(requireWritable());
   return exec(db_, durable ? "PRAGMA synchronous = FULL;" : "PRAGMA synchronous = NORMAL;", path_);
 }
 

@@ -227,6 +227,19 @@ class ProjectStore {
   ProjectStore() = default;
   void close();
   Result<void> requireWritable() const;
+  // The frame of a write: holds the lock, refuses a read-only project, runs
+  // body inside one BEGIN IMMEDIATE ... COMMIT (rolled back when body fails).
+  Result<void> writeInTransaction(const std::string& where, const std::function<Result<void>()>& body);
+  // The same for a write that adds a record: body returns its row id.
+  Result<std::int64_t> insertInTransaction(const std::string& where, const std::function<Result<std::int64_t>()>& body);
+  // Inside an open transaction: an FRF set (checked by addFrfSet), its FRFs and its hit links.
+  Result<std::int64_t> insertFrfSet(const FrfSetInfo& info, const FrfMatrix& frf,
+                                    const std::vector<std::int64_t>& hitIds, const std::string& where);
+  // Inside an open transaction: a modal result (checked by addModalResult), its modes and shapes.
+  Result<std::int64_t> insertModalResult(const ModalResultInfo& info, const ModalTable& table,
+                                         const std::string& where);
+  // Inside an open transaction: replaces the mesh of a specimen.
+  Result<void> insertMesh(std::int64_t specimenId, const StoredMesh& mesh, const std::string& where);
   // Inside an open transaction: a rig test's results, a tyre test's points
   // (indices from firstPoint) and parameters.
   Result<void> insertRigResults(std::int64_t rigTestId, const std::vector<StoredRigTest::Result>& results,

@@ -7,7 +7,6 @@
 
 namespace mozzi::core::io {
 
-using data::bindStep;
 using data::finite;
 using data::insertRecord;
 using data::readRecord;
@@ -21,24 +20,20 @@ using sql::sqliteError;
 // --- rig tests ------------------------------------------------------------------------
 
 Result<std::int64_t> ProjectStore::addRigTest(const StoredRigTest& test) {
-  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
-  MOZZI_TRY(requireWritable());
   const std::string where = path_ + ", rig test '" + test.name + "'";
-  if (test.name.empty()) return makeError(ErrorCode::InvalidArgument, "a rig test needs a name", where);
-  sql::Transaction tx(db_, where);
-  MOZZI_TRY(tx.begun());
-  sql::Statement stmt(db_,
-                      "INSERT INTO rig_test(specimen_id, rig_setup_id, kind, name, parameters_json, recorded_utc,"
-                      " status, status_note, content_crc32) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)");
-  stmt.bind(1, test.specimenId).bind(2, test.rigSetupId);
-  stmt.bind(3, std::string(test.kind == StoredRigTest::Kind::Static ? "static" : "dynamic"));
-  stmt.bind(4, test.name).bind(5, test.parametersJson).bind(6, sql::nowUtc());
-  stmt.bind(7, std::string(testStatusName(test.status))).bind(8, test.statusNote);
-  stmt.bind(9, static_cast<std::int64_t>(rigTestChecksum(test)));
-  MOZZI_TRY_ASSIGN(const std::int64_t id, stmt.insert("cannot store the rig test", where));
-  MOZZI_TRY(insertRigResults(id, test.results, where));
-  MOZZI_TRY(tx.commit());
-  return id;
+  return insertInTransaction(where, [&]() -> Result<std::int64_t> {
+    if (test.name.empty()) return makeError(ErrorCode::InvalidArgument, "a rig test needs a name", where);
+    sql::Statement stmt(db_,
+                        "INSERT INTO rig_test(specimen_id, rig_setup_id, kind, name, parameters_json, recorded_utc,"
+                        " status, status_note, content_crc32) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)");
+    stmt.bindAll(test.specimenId, test.rigSetupId,
+                 std::string(test.kind == StoredRigTest::Kind::Static ? "static" : "dynamic"), test.name,
+                 test.parametersJson, sql::nowUtc(), std::string(testStatusName(test.status)), test.statusNote,
+                 rigTestChecksum(test));
+    MOZZI_TRY_ASSIGN(const std::int64_t id, stmt.insert("cannot store the rig test", where));
+    MOZZI_TRY(insertRigResults(id, test.results, where));
+    return id;
+  });
 }
 
 Result<void> ProjectStore::insertRigResults(std::int64_t rigTestId, const std::vector<StoredRigTest::Result>& results,
@@ -50,18 +45,14 @@ Result<void> ProjectStore::insertRigResults(std::int64_t rigTestId, const std::v
     if (!finite(r.value) || !finite(r.uncertainty) || r.uncertainty < 0) {
       return makeError(ErrorCode::InvalidArgument, "result '" + r.quantity + "' is not finite", where);
     }
-    res.reset();
-    res.bind(1, rigTestId).bind(2, r.quantity).bind(3, r.value).bind(4, r.unit).bind(5, r.uncertainty);
-    bindStep(res, 6, r.step);
-    MOZZI_TRY(res.run("cannot store result '" + r.quantity + "'", where));
+    MOZZI_TRY(res.runWith("cannot store result '" + r.quantity + "'", where, rigTestId, r.quantity, r.value, r.unit,
+                          r.uncertainty, r.step));
   }
   // Results arrive step by step: the checksum covers them all, so it is
   // computed again from what is now stored (inside the caller's transaction).
   MOZZI_TRY_ASSIGN(auto stored, readRigTest(rigTestId, false));
   sql::Statement crc(db_, "UPDATE rig_test SET content_crc32 = ?2 WHERE id = ?1");
-  crc.bind(1, rigTestId).bind(2, static_cast<std::int64_t>(rigTestChecksum(stored)));
-  MOZZI_TRY(crc.run("cannot update the rig test's checksum", where));
-  return {};
+  return crc.bindAll(rigTestId, rigTestChecksum(stored)).run("cannot update the rig test's checksum", where);
 }
 
 Result<StoredRigTest> ProjectStore::rigTest(std::int64_t rigTestId) const {
@@ -71,38 +62,30 @@ Result<StoredRigTest> ProjectStore::rigTest(std::int64_t rigTestId) const {
 Result<StoredRigTest> ProjectStore::readRigTest(std::int64_t rigTestId, bool verify) const {
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", rig test " + std::to_string(rigTestId);
+  sql::Statement head(db_,
+                      "SELECT id, specimen_id, rig_setup_id, kind, name, parameters_json, status, status_note,"
+                      " recorded_utc, " +
+                          crcColumn("content_crc32") + " FROM rig_test WHERE id = ?1");
+  MOZZI_TRY(head.bindAll(rigTestId).single("cannot read the rig test", "no such rig test", where));
+  const sql::Row h(head.get());
   StoredRigTest t;
-  sql::Statement head(db_, ("SELECT id, specimen_id, rig_setup_id, kind, name, parameters_json, status, status_note,"
-                            " recorded_utc, " +
-                            crcColumn("content_crc32") + " FROM rig_test WHERE id = ?1")
-                               .c_str());
-  head.bind(1, rigTestId);
-  {
-    sql::Statement& stmt = head;
-    MOZZI_TRY(stmt.single("cannot read the rig test", "no such rig test", where));
-    t.id = sqlite3_column_int64(stmt.get(), 0);
-    t.specimenId = sqlite3_column_int64(stmt.get(), 1);
-    if (sqlite3_column_type(stmt.get(), 2) != SQLITE_NULL) t.rigSetupId = sqlite3_column_int64(stmt.get(), 2);
-    t.kind = sql::columnText(stmt.get(), 3) == "dynamic" ? StoredRigTest::Kind::Dynamic : StoredRigTest::Kind::Static;
-    t.name = sql::columnText(stmt.get(), 4);
-    t.parametersJson = sql::columnText(stmt.get(), 5);
-    t.status = parseTestStatus(sql::columnText(stmt.get(), 6));
-    t.statusNote = sql::columnText(stmt.get(), 7);
-    t.recordedUtc = sql::columnText(stmt.get(), 8);
-  }
+  t.id = h.int64(0);
+  t.specimenId = h.int64(1);
+  t.rigSetupId = h.optionalInt64(2);
+  const std::string kind = h.text(3);
+  t.kind = kind == "dynamic" ? StoredRigTest::Kind::Dynamic : StoredRigTest::Kind::Static;
+  t.name = h.text(4);
+  t.parametersJson = h.text(5);
+  t.status = parseTestStatus(h.text(6));
+  t.statusNote = h.text(7);
+  t.recordedUtc = h.text(8);
   sql::Statement stmt(
       db_, "SELECT quantity, value, unit, uncertainty, step FROM rig_test_result WHERE rig_test_id = ?1 ORDER BY id");
-  stmt.bind(1, rigTestId);
-  int rc;
-  while ((rc = stmt.step()) == SQLITE_ROW) {
-    StoredRigTest::Result r{sql::columnText(stmt.get(), 0), sqlite3_column_double(stmt.get(), 1),
-                            sql::columnText(stmt.get(), 2), sqlite3_column_double(stmt.get(), 3), std::nullopt};
-    if (sqlite3_column_type(stmt.get(), 4) != SQLITE_NULL) r.step = sqlite3_column_int(stmt.get(), 4);
-    t.results.push_back(r);
-  }
-  if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read rig test results", where);
-  if (sql::columnText(head.get(), 3) != "static" && sql::columnText(head.get(), 3) != "dynamic") {
-    return makeError(ErrorCode::Corrupt, "unknown rig test kind '" + sql::columnText(head.get(), 3) + "'", where);
+  MOZZI_TRY(stmt.bindAll(rigTestId).forEachRow("cannot read rig test results", where, [&](const sql::Row& r) {
+    t.results.push_back({r.text(0), r.real(1), r.text(2), r.real(3), r.optionalInt32(4)});
+  }));
+  if (kind != "static" && kind != "dynamic") {
+    return makeError(ErrorCode::Corrupt, "unknown rig test kind '" + kind + "'", where);
   }
   if (verify) {
     MOZZI_TRY(verifyChecksum(head.get(), 9, rigTestChecksum(t), "rig test (parameters and results)", where));
@@ -112,15 +95,11 @@ Result<StoredRigTest> ProjectStore::readRigTest(std::int64_t rigTestId, bool ver
 
 Result<std::int64_t> ProjectStore::addRigTestRecord(std::int64_t rigTestId, int step, double sampleRateHz,
                                                     const Eigen::MatrixXf& samples) {
-  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
-  MOZZI_TRY(requireWritable());
   const std::string where = path_ + ", rig test " + std::to_string(rigTestId) + ", step " + std::to_string(step);
-  sql::Transaction tx(db_, where);
-  MOZZI_TRY(tx.begun());
-  MOZZI_TRY(insertRecord(db_, "rig_test_record", rigTestId, step, sampleRateHz, samples, hitEncoding_, where));
-  const std::int64_t id = sqlite3_last_insert_rowid(db_);
-  MOZZI_TRY(tx.commit());
-  return id;
+  return insertInTransaction(where, [&]() -> Result<std::int64_t> {
+    MOZZI_TRY(insertRecord(db_, "rig_test_record", rigTestId, step, sampleRateHz, samples, hitEncoding_, where));
+    return static_cast<std::int64_t>(sqlite3_last_insert_rowid(db_));
+  });
 }
 
 Result<Eigen::MatrixXf> ProjectStore::rigTestRecord(std::int64_t rigTestId, int step, double* sampleRateHz) const {
@@ -132,27 +111,24 @@ Result<Eigen::MatrixXf> ProjectStore::rigTestRecord(std::int64_t rigTestId, int 
 // --- tyre tests -------------------------------------------------------------------------
 
 Result<std::int64_t> ProjectStore::addTyreTest(const StoredTyreTest& test) {
-  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
-  MOZZI_TRY(requireWritable());
   const std::string where = path_ + ", tyre test '" + test.name + "'";
-  if (test.name.empty()) return makeError(ErrorCode::InvalidArgument, "a tyre test needs a name", where);
-  if (!finite(test.inflationPressurePa) || !finite(test.verticalLoadN) || !finite(test.speedMps)) {
-    return makeError(ErrorCode::InvalidArgument, "operating condition is not finite", where);
-  }
-  sql::Transaction tx(db_, where);
-  MOZZI_TRY(tx.begun());
-  sql::Statement stmt(db_,
-                      "INSERT INTO tyre_test(specimen_id, rig_setup_id, name, kind, inflation_pressure_pa,"
-                      " vertical_load_n, speed_m_s, recorded_utc, status, status_note, parameters_json, content_crc32)"
-                      " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12)");
-  stmt.bind(1, test.specimenId).bind(2, test.rigSetupId).bind(3, test.name).bind(4, test.kind);
-  stmt.bind(5, test.inflationPressurePa).bind(6, test.verticalLoadN).bind(7, test.speedMps).bind(8, sql::nowUtc());
-  stmt.bind(9, std::string(testStatusName(test.status))).bind(10, test.statusNote).bind(11, test.parametersJson);
-  stmt.bind(12, static_cast<std::int64_t>(tyreTestChecksum(test)));
-  MOZZI_TRY_ASSIGN(const std::int64_t id, stmt.insert("cannot store the tyre test", where));
-  MOZZI_TRY(insertTyreData(id, 0, test.points, test.parameters, where));
-  MOZZI_TRY(tx.commit());
-  return id;
+  return insertInTransaction(where, [&]() -> Result<std::int64_t> {
+    if (test.name.empty()) return makeError(ErrorCode::InvalidArgument, "a tyre test needs a name", where);
+    if (!finite(test.inflationPressurePa) || !finite(test.verticalLoadN) || !finite(test.speedMps)) {
+      return makeError(ErrorCode::InvalidArgument, "operating condition is not finite", where);
+    }
+    sql::Statement stmt(
+        db_,
+        "INSERT INTO tyre_test(specimen_id, rig_setup_id, name, kind, inflation_pressure_pa, vertical_load_n,"
+        " speed_m_s, recorded_utc, status, status_note, parameters_json, content_crc32)"
+        " VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12)");
+    stmt.bindAll(test.specimenId, test.rigSetupId, test.name, test.kind, test.inflationPressurePa, test.verticalLoadN,
+                 test.speedMps, sql::nowUtc(), std::string(testStatusName(test.status)), test.statusNote,
+                 test.parametersJson, tyreTestChecksum(test));
+    MOZZI_TRY_ASSIGN(const std::int64_t id, stmt.insert("cannot store the tyre test", where));
+    MOZZI_TRY(insertTyreData(id, 0, test.points, test.parameters, where));
+    return id;
+  });
 }
 
 Result<void> ProjectStore::insertTyreData(std::int64_t tyreTestId, std::int64_t firstPoint,
@@ -170,10 +146,8 @@ Result<void> ProjectStore::insertTyreData(std::int64_t tyreTestId, std::int64_t 
         !finite(p.overturningMomentNm)) {
       return makeError(ErrorCode::InvalidArgument, "point " + std::to_string(index) + " is not finite", where);
     }
-    pt.reset();
-    pt.bind(1, tyreTestId).bind(2, index).bind(3, p.slipAngleRad).bind(4, p.camberRad);
-    pt.bind(5, p.lateralForceN).bind(6, p.aligningMomentNm).bind(7, p.overturningMomentNm);
-    MOZZI_TRY(pt.run("cannot store point " + std::to_string(index), where));
+    MOZZI_TRY(pt.runWith("cannot store point " + std::to_string(index), where, tyreTestId, index, p.slipAngleRad,
+                         p.camberRad, p.lateralForceN, p.aligningMomentNm, p.overturningMomentNm));
   }
   sql::Statement par(db_,
                      "INSERT INTO tyre_parameter(tyre_test_id, name, value, unit, uncertainty, step)"
@@ -182,18 +156,14 @@ Result<void> ProjectStore::insertTyreData(std::int64_t tyreTestId, std::int64_t 
     if (!finite(p.value) || !finite(p.uncertainty) || p.uncertainty < 0) {
       return makeError(ErrorCode::InvalidArgument, "parameter '" + p.name + "' is not finite", where);
     }
-    par.reset();
-    par.bind(1, tyreTestId).bind(2, p.name).bind(3, p.value).bind(4, p.unit).bind(5, p.uncertainty);
-    bindStep(par, 6, p.step);
-    MOZZI_TRY(par.run("cannot store parameter '" + p.name + "'", where));
+    MOZZI_TRY(par.runWith("cannot store parameter '" + p.name + "'", where, tyreTestId, p.name, p.value, p.unit,
+                          p.uncertainty, p.step));
   }
   // Points and parameters arrive step by step: the checksum is computed again
   // from what is now stored (inside the caller's transaction).
   MOZZI_TRY_ASSIGN(auto stored, readTyreTest(tyreTestId, false));
   sql::Statement crc(db_, "UPDATE tyre_test SET content_crc32 = ?2 WHERE id = ?1");
-  crc.bind(1, tyreTestId).bind(2, static_cast<std::int64_t>(tyreTestChecksum(stored)));
-  MOZZI_TRY(crc.run("cannot update the tyre test's checksum", where));
-  return {};
+  return crc.bindAll(tyreTestId, tyreTestChecksum(stored)).run("cannot update the tyre test's checksum", where);
 }
 
 Result<StoredTyreTest> ProjectStore::tyreTest(std::int64_t tyreTestId) const {
@@ -203,56 +173,36 @@ Result<StoredTyreTest> ProjectStore::tyreTest(std::int64_t tyreTestId) const {
 Result<StoredTyreTest> ProjectStore::readTyreTest(std::int64_t tyreTestId, bool verify) const {
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = path_ + ", tyre test " + std::to_string(tyreTestId);
+  sql::Statement head(db_,
+                      "SELECT id, specimen_id, rig_setup_id, name, kind, inflation_pressure_pa, vertical_load_n,"
+                      " speed_m_s, status, status_note, parameters_json, recorded_utc, " +
+                          crcColumn("content_crc32") + " FROM tyre_test WHERE id = ?1");
+  MOZZI_TRY(head.bindAll(tyreTestId).single("cannot read the tyre test", "no such tyre test", where));
+  const sql::Row h(head.get());
   StoredTyreTest t;
-  sql::Statement head(db_, ("SELECT id, specimen_id, rig_setup_id, name, kind, inflation_pressure_pa, vertical_load_n,"
-                            " speed_m_s, status, status_note, parameters_json, recorded_utc, " +
-                            crcColumn("content_crc32") + " FROM tyre_test WHERE id = ?1")
-                               .c_str());
-  {
-    sql::Statement& stmt = head;
-    stmt.bind(1, tyreTestId);
-    MOZZI_TRY(stmt.single("cannot read the tyre test", "no such tyre test", where));
-    t.id = sqlite3_column_int64(stmt.get(), 0);
-    t.specimenId = sqlite3_column_int64(stmt.get(), 1);
-    if (sqlite3_column_type(stmt.get(), 2) != SQLITE_NULL) t.rigSetupId = sqlite3_column_int64(stmt.get(), 2);
-    t.name = sql::columnText(stmt.get(), 3);
-    t.kind = sql::columnText(stmt.get(), 4);
-    t.inflationPressurePa = sqlite3_column_double(stmt.get(), 5);
-    t.verticalLoadN = sqlite3_column_double(stmt.get(), 6);
-    t.speedMps = sqlite3_column_double(stmt.get(), 7);
-    t.status = parseTestStatus(sql::columnText(stmt.get(), 8));
-    t.statusNote = sql::columnText(stmt.get(), 9);
-    t.parametersJson = sql::columnText(stmt.get(), 10);
-    t.recordedUtc = sql::columnText(stmt.get(), 11);
-  }
-  {
-    sql::Statement stmt(db_,
+  t.id = h.int64(0);
+  t.specimenId = h.int64(1);
+  t.rigSetupId = h.optionalInt64(2);
+  t.name = h.text(3);
+  t.kind = h.text(4);
+  t.inflationPressurePa = h.real(5);
+  t.verticalLoadN = h.real(6);
+  t.speedMps = h.real(7);
+  t.status = parseTestStatus(h.text(8));
+  t.statusNote = h.text(9);
+  t.parametersJson = h.text(10);
+  t.recordedUtc = h.text(11);
+  sql::Statement points(db_,
                         "SELECT slip_angle_rad, camber_rad, lateral_force_n, aligning_moment_nm, overturning_moment_nm"
                         " FROM tyre_test_point WHERE tyre_test_id = ?1 ORDER BY point_index");
-    stmt.bind(1, tyreTestId);
-    int rc;
-    while ((rc = stmt.step()) == SQLITE_ROW) {
-      StoredTyreTest::Point p;
-      p.slipAngleRad = sqlite3_column_double(stmt.get(), 0);
-      p.camberRad = sqlite3_column_double(stmt.get(), 1);
-      p.lateralForceN = sqlite3_column_double(stmt.get(), 2);
-      p.aligningMomentNm = sqlite3_column_double(stmt.get(), 3);
-      p.overturningMomentNm = sqlite3_column_double(stmt.get(), 4);
-      t.points.push_back(p);
-    }
-    if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read tyre test points", where);
-  }
+  MOZZI_TRY(points.bindAll(tyreTestId).forEachRow("cannot read tyre test points", where, [&](const sql::Row& r) {
+    t.points.push_back({r.real(0), r.real(1), r.real(2), r.real(3), r.real(4)});
+  }));
   sql::Statement stmt(
       db_, "SELECT name, value, unit, uncertainty, step FROM tyre_parameter WHERE tyre_test_id = ?1 ORDER BY id");
-  stmt.bind(1, tyreTestId);
-  int rc;
-  while ((rc = stmt.step()) == SQLITE_ROW) {
-    StoredTyreTest::Parameter p{sql::columnText(stmt.get(), 0), sqlite3_column_double(stmt.get(), 1),
-                                sql::columnText(stmt.get(), 2), sqlite3_column_double(stmt.get(), 3), std::nullopt};
-    if (sqlite3_column_type(stmt.get(), 4) != SQLITE_NULL) p.step = sqlite3_column_int(stmt.get(), 4);
-    t.parameters.push_back(p);
-  }
-  if (rc != SQLITE_DONE) return sqliteError(db_, "cannot read tyre parameters", where);
+  MOZZI_TRY(stmt.bindAll(tyreTestId).forEachRow("cannot read tyre parameters", where, [&](const sql::Row& r) {
+    t.parameters.push_back({r.text(0), r.real(1), r.text(2), r.real(3), r.optionalInt32(4)});
+  }));
   if (verify) {
     MOZZI_TRY(verifyChecksum(head.get(), 12, tyreTestChecksum(t), "tyre test (points and parameters)", where));
   }
@@ -265,27 +215,23 @@ Result<void> ProjectStore::commitRigTestStep(std::int64_t rigTestId, int step, d
                                              const Eigen::MatrixXf& samples,
                                              const std::vector<StoredRigTest::Result>& results,
                                              const std::string& runningNote) {
-  MOZZI_TRY(requireWritable());
   const std::string where = path_ + ", rig test " + std::to_string(rigTestId) + ", step " + std::to_string(step);
-  sql::Transaction tx(db_, where);
-  MOZZI_TRY(tx.begun());
-  if (samples.size() > 0) {
-    MOZZI_TRY(insertRecord(db_, "rig_test_record", rigTestId, step, sampleRateHz, samples, hitEncoding_, where));
-  }
-  MOZZI_TRY(insertRigResults(rigTestId, results, where));
-  MOZZI_TRY(setStatusNote(db_, "rig_test", rigTestId, runningNote, where));
-  return tx.commit();
+  return writeInTransaction(where, [&]() -> Result<void> {
+    if (samples.size() > 0) {
+      MOZZI_TRY(insertRecord(db_, "rig_test_record", rigTestId, step, sampleRateHz, samples, hitEncoding_, where));
+    }
+    MOZZI_TRY(insertRigResults(rigTestId, results, where));
+    return setStatusNote(db_, "rig_test", rigTestId, runningNote, where);
+  });
 }
 
 Result<void> ProjectStore::finishRigTest(std::int64_t rigTestId, TestStatus status, const std::string& note,
                                          const std::vector<StoredRigTest::Result>& results) {
-  MOZZI_TRY(requireWritable());
   const std::string where = path_ + ", rig test " + std::to_string(rigTestId);
-  sql::Transaction tx(db_, where);
-  MOZZI_TRY(tx.begun());
-  MOZZI_TRY(setFinalStatus(db_, "rig_test", rigTestId, status, note, where));
-  MOZZI_TRY(insertRigResults(rigTestId, results, where));
-  return tx.commit();
+  return writeInTransaction(where, [&]() -> Result<void> {
+    MOZZI_TRY(setFinalStatus(db_, "rig_test", rigTestId, status, note, where));
+    return insertRigResults(rigTestId, results, where);
+  });
 }
 
 Result<void> ProjectStore::commitTyreTestStep(std::int64_t tyreTestId, int step, double sampleRateHz,
@@ -293,31 +239,25 @@ Result<void> ProjectStore::commitTyreTestStep(std::int64_t tyreTestId, int step,
                                               const std::vector<StoredTyreTest::Point>& points,
                                               const std::vector<StoredTyreTest::Parameter>& parameters,
                                               const std::string& runningNote) {
-  MOZZI_TRY(requireWritable());
   const std::string where = path_ + ", tyre test " + std::to_string(tyreTestId) + ", step " + std::to_string(step);
-  sql::Transaction tx(db_, where);
-  MOZZI_TRY(tx.begun());
-  if (samples.size() > 0) {
-    MOZZI_TRY(insertRecord(db_, "tyre_test_record", tyreTestId, step, sampleRateHz, samples, hitEncoding_, where));
-  }
-  sql::Statement next(db_, "SELECT COALESCE(MAX(point_index) + 1, 0) FROM tyre_test_point WHERE tyre_test_id = ?1");
-  next.bind(1, tyreTestId);
-  if (next.step() != SQLITE_ROW) return sqliteError(db_, "cannot count the test's points", where);
-  const std::int64_t first = sqlite3_column_int64(next.get(), 0);
-  MOZZI_TRY(insertTyreData(tyreTestId, first, points, parameters, where));
-  MOZZI_TRY(setStatusNote(db_, "tyre_test", tyreTestId, runningNote, where));
-  return tx.commit();
+  return writeInTransaction(where, [&]() -> Result<void> {
+    if (samples.size() > 0) {
+      MOZZI_TRY(insertRecord(db_, "tyre_test_record", tyreTestId, step, sampleRateHz, samples, hitEncoding_, where));
+    }
+    sql::Statement next(db_, "SELECT COALESCE(MAX(point_index) + 1, 0) FROM tyre_test_point WHERE tyre_test_id = ?1");
+    if (next.bindAll(tyreTestId).step() != SQLITE_ROW) return sqliteError(db_, "cannot count the test's points", where);
+    MOZZI_TRY(insertTyreData(tyreTestId, sqlite3_column_int64(next.get(), 0), points, parameters, where));
+    return setStatusNote(db_, "tyre_test", tyreTestId, runningNote, where);
+  });
 }
 
 Result<void> ProjectStore::finishTyreTest(std::int64_t tyreTestId, TestStatus status, const std::string& note,
                                           const std::vector<StoredTyreTest::Parameter>& parameters) {
-  MOZZI_TRY(requireWritable());
   const std::string where = path_ + ", tyre test " + std::to_string(tyreTestId);
-  sql::Transaction tx(db_, where);
-  MOZZI_TRY(tx.begun());
-  MOZZI_TRY(setFinalStatus(db_, "tyre_test", tyreTestId, status, note, where));
-  MOZZI_TRY(insertTyreData(tyreTestId, 0, {}, parameters, where));
-  return tx.commit();
+  return writeInTransaction(where, [&]() -> Result<void> {
+    MOZZI_TRY(setFinalStatus(db_, "tyre_test", tyreTestId, status, note, where));
+    return insertTyreData(tyreTestId, 0, {}, parameters, where);
+  });
 }
 
 Result<Eigen::MatrixXf> ProjectStore::tyreTestRecord(std::int64_t tyreTestId, int step, double* sampleRateHz) const {
@@ -329,22 +269,10 @@ namespace {
 Result<std::vector<TestInfo>> listTests(sqlite3* db, const char* text, const std::string& where) {
   sql::Statement stmt(db, text);
   std::vector<TestInfo> out;
-  int rc;
-  while ((rc = stmt.step()) == SQLITE_ROW) {
-    TestInfo t;
-    t.id = sqlite3_column_int64(stmt.get(), 0);
-    t.specimenId = sqlite3_column_int64(stmt.get(), 1);
-    t.specimenName = sql::columnText(stmt.get(), 2);
-    t.kind = sql::columnText(stmt.get(), 3);
-    t.name = sql::columnText(stmt.get(), 4);
-    t.status = parseTestStatus(sql::columnText(stmt.get(), 5));
-    t.statusNote = sql::columnText(stmt.get(), 6);
-    t.recordedUtc = sql::columnText(stmt.get(), 7);
-    t.recordCount = sqlite3_column_int(stmt.get(), 8);
-    t.resultCount = sqlite3_column_int(stmt.get(), 9);
-    out.push_back(t);
-  }
-  if (rc != SQLITE_DONE) return sqliteError(db, "cannot list the tests", where);
+  MOZZI_TRY(stmt.forEachRow("cannot list the tests", where, [&](const sql::Row& r) {
+    out.push_back({r.int64(0), r.int64(1), r.text(2), r.text(3), r.text(4), parseTestStatus(r.text(5)), r.text(6),
+                   r.text(7), r.int32(8), r.int32(9)});
+  }));
   return out;
 }
 }  // namespace

@@ -52,12 +52,10 @@ Table transducerTable(const Texts& t, const std::vector<io::StoredTransducer>& t
 // with a stored mesh and measured data (campaigns, FRF sets or modes).
 Result<std::vector<std::int64_t>> meshSpecimens(const Context& c) {
   std::set<std::int64_t> measured;
-  auto sets = c.store.frfSets();
-  if (!sets) return sets.error();
-  for (const auto& set : *sets) measured.insert(set.specimenId);
-  auto modal = c.store.modalResults();
-  if (!modal) return modal.error();
-  for (const auto& m : *modal) measured.insert(m.specimenId);
+  MOZZI_TRY_ASSIGN(const auto sets, c.store.frfSets());
+  for (const auto& set : sets) measured.insert(set.specimenId);
+  MOZZI_TRY_ASSIGN(const auto modal, c.store.modalResults());
+  for (const auto& m : modal) measured.insert(m.specimenId);
   std::vector<std::int64_t> ids;
   for (const auto& [id, name] : c.specimenNames) {
     if (!measured.count(id)) continue;
@@ -69,26 +67,24 @@ Result<std::vector<std::int64_t>> meshSpecimens(const Context& c) {
 
 Result<bool> titleSection(const Context& c, Section& s) {
   const Texts& t = c.t;
-  auto summary = c.store.summary();
-  if (!summary) return summary.error();
+  MOZZI_TRY_ASSIGN(const auto summary, c.store.summary());
   std::string about = t("Project %1, created %2 by Mozzi %3, schema %4.",
-                        {std::filesystem::path(c.store.path()).filename().string(), t.date(summary->createdUtc),
-                         summary->mozziVersion, std::to_string(summary->schemaVersion)});
+                        {std::filesystem::path(c.store.path()).filename().string(), t.date(summary.createdUtc),
+                         summary.mozziVersion, std::to_string(summary.schemaVersion)});
   if (!c.options.generatedUtc.empty()) about += " " + t("Report generated %1.", {t.date(c.options.generatedUtc)});
   s.blocks.push_back(Paragraph{about});
   Table specimens;
   specimens.caption = t("Specimens");
   specimens.headers = {t("Specimen"), t("Kind"), t("Description")};
   specimens.units = {"", "", ""};
-  for (const auto& sp : summary->specimens)
+  for (const auto& sp : summary.specimens)
     if (c.wanted(sp.id)) specimens.rows.push_back({textCell(sp.name), textCell(sp.kind), textCell(sp.description)});
   s.blocks.push_back(specimens);
 
   // Campaigns: constraint, operator and transducers from their definition.
   for (const auto& [id, name] : c.specimenNames) {
-    auto campaigns = c.store.campaigns(id);
-    if (!campaigns) return campaigns.error();
-    for (const auto& campaign : *campaigns) {
+    MOZZI_TRY_ASSIGN(const auto campaigns, c.store.campaigns(id));
+    for (const auto& campaign : campaigns) {
       s.blocks.push_back(Heading{t("Campaign %1 (%2)", {campaign.name, name})});
       const auto settings = nlohmann::json::parse(campaign.settingsJson, nullptr, false);
       std::string text = t("Kind %1, started %2.", {campaign.kind, t.date(campaign.startedUtc)});
@@ -100,9 +96,8 @@ Result<bool> titleSection(const Context& c, Section& s) {
       if (!campaign.notes.empty()) text += " " + t("Notes: %1", {campaign.notes});
       s.blocks.push_back(Paragraph{text});
       if (campaign.rigSetupId) {
-        auto rig = c.store.rigSetup(*campaign.rigSetupId);
-        if (!rig) return rig.error();
-        if (!rig->transducers.empty()) s.blocks.push_back(transducerTable(t, rig->transducers));
+        MOZZI_TRY_ASSIGN(const auto rig, c.store.rigSetup(*campaign.rigSetupId));
+        if (!rig.transducers.empty()) s.blocks.push_back(transducerTable(t, rig.transducers));
       } else if (settings.is_object() && settings.contains("channels") && settings["channels"].is_array()) {
         Table table;
         table.caption = t("Transducers of %1", {campaign.name});
@@ -129,35 +124,29 @@ Result<bool> titleSection(const Context& c, Section& s) {
 
   // Rig set-ups of the stiffness and tyre tests.
   std::set<std::int64_t> rigIds;
-  auto rigTests = c.store.rigTests();
-  if (!rigTests) return rigTests.error();
-  for (const auto& info : *rigTests) {
+  MOZZI_TRY_ASSIGN(const auto rigTests, c.store.rigTests());
+  for (const auto& info : rigTests) {
     if (!c.wanted(info.specimenId)) continue;
-    auto test = c.store.rigTest(info.id);
-    if (!test) return test.error();
-    if (test->rigSetupId) rigIds.insert(*test->rigSetupId);
+    MOZZI_TRY_ASSIGN(const auto test, c.store.rigTest(info.id));
+    if (test.rigSetupId) rigIds.insert(*test.rigSetupId);
   }
-  auto tyreTests = c.store.tyreTests();
-  if (!tyreTests) return tyreTests.error();
-  for (const auto& info : *tyreTests) {
+  MOZZI_TRY_ASSIGN(const auto tyreTests, c.store.tyreTests());
+  for (const auto& info : tyreTests) {
     if (!c.wanted(info.specimenId)) continue;
-    auto test = c.store.tyreTest(info.id);
-    if (!test) return test.error();
-    if (test->rigSetupId) rigIds.insert(*test->rigSetupId);
+    MOZZI_TRY_ASSIGN(const auto test, c.store.tyreTest(info.id));
+    if (test.rigSetupId) rigIds.insert(*test.rigSetupId);
   }
   for (const auto id : rigIds) {
-    auto rig = c.store.rigSetup(id);
-    if (!rig) return rig.error();
-    s.blocks.push_back(Heading{t("Rig %1 (%2)", {rig->name, c.specimen(rig->specimenId)})});
-    s.blocks.push_back(Paragraph{t("Rig kind %1, driver %2.", {rig->rigKind, rig->driver})});
-    if (!rig->transducers.empty()) s.blocks.push_back(transducerTable(t, rig->transducers));
+    MOZZI_TRY_ASSIGN(const auto rig, c.store.rigSetup(id));
+    s.blocks.push_back(Heading{t("Rig %1 (%2)", {rig.name, c.specimen(rig.specimenId)})});
+    s.blocks.push_back(Paragraph{t("Rig kind %1, driver %2.", {rig.rigKind, rig.driver})});
+    if (!rig.transducers.empty()) s.blocks.push_back(transducerTable(t, rig.transducers));
   }
 
   // The measurement meshes, drawn by the 3-D scene.
-  auto meshes = meshSpecimens(c);
-  if (!meshes) return meshes.error();
-  if (!meshes->empty()) s.blocks.push_back(Heading{t("Measurement meshes")});
-  for (const auto id : *meshes)
+  MOZZI_TRY_ASSIGN(const auto meshes, meshSpecimens(c));
+  if (!meshes.empty()) s.blocks.push_back(Heading{t("Measurement meshes")});
+  for (const auto id : meshes)
     s.blocks.push_back(Figure{"mesh-" + std::to_string(id), "mesh", id,
                               t("Measurement mesh of %1: nodes, trace lines and faces", {c.specimen(id)})});
   return true;
@@ -165,15 +154,14 @@ Result<bool> titleSection(const Context& c, Section& s) {
 
 Result<bool> frfSection(const Context& c, Section& s) {
   const Texts& tx = c.t;
-  auto sets = c.store.frfSets();
-  if (!sets) return sets.error();
+  MOZZI_TRY_ASSIGN(const auto sets, c.store.frfSets());
   Table t;
   t.caption = tx("FRF sets");
   t.headers = {tx("Set"),  tx("Specimen"), tx("Source"),    tx("Estimator"),
                tx("Type"), tx("Lines"),    tx("Responses"), tx("References")};
   t.units = {"", "", "", "", "", "", "", ""};
   std::vector<Figure> figures;
-  for (const auto& set : *sets) {
+  for (const auto& set : sets) {
     if (!c.wanted(set.specimenId)) continue;
     t.rows.push_back({textCell(set.name), textCell(c.specimen(set.specimenId)), textCell(set.source),
                       textCell(set.estimator.empty() ? "-" : set.estimator), textCell(frfTypeName(set.type)),
@@ -183,9 +171,8 @@ Result<bool> frfSection(const Context& c, Section& s) {
                              tx("FRF overlay of %1 (%2, magnitude)", {set.name, frfTypeName(set.type)})});
     // The coherence of the estimate, when the set carries one (the FRF
     // view's coherence plot).
-    auto frf = c.store.frfSet(set.id);
-    if (!frf) return frf.error();
-    if (!frf->coherence.empty())
+    MOZZI_TRY_ASSIGN(const auto frf, c.store.frfSet(set.id));
+    if (!frf.coherence.empty())
       figures.push_back(Figure{"frf-coherence-" + std::to_string(set.id), "frf-coherence", set.id,
                                tx("Coherence of %1", {set.name})});
   }
@@ -197,12 +184,10 @@ Result<bool> frfSection(const Context& c, Section& s) {
 
 Result<bool> modalSection(const Context& c, Section& s) {
   const Texts& tx = c.t;
-  auto results = c.store.modalResults();
-  if (!results) return results.error();
-  for (const auto& info : *results) {
+  MOZZI_TRY_ASSIGN(const auto results, c.store.modalResults());
+  for (const auto& info : results) {
     if (!c.wanted(info.specimenId)) continue;
-    auto table = c.store.modalResult(info.id);
-    if (!table) return table.error();
+    MOZZI_TRY_ASSIGN(const auto table, c.store.modalResult(info.id));
     s.blocks.push_back(Heading{info.name + " (" + c.specimen(info.specimenId) + ")"});
     std::string about =
         tx("Method %1, band %2 to %3 Hz", {info.method, tx.number(info.bandLowHz), tx.number(info.bandHighHz)});
@@ -215,8 +200,8 @@ Result<bool> modalSection(const Context& c, Section& s) {
     t.headers = {tx("Mode"), tx("Frequency"), tx("Damping ratio zeta"), tx("Loss factor eta")};
     t.units = {"", "Hz", "%", "%"};
     bool shapes = false;
-    for (std::size_t m = 0; m < table->modes.size(); ++m) {
-      const auto& mode = table->modes[m];
+    for (std::size_t m = 0; m < table.modes.size(); ++m) {
+      const auto& mode = table.modes[m];
       t.rows.push_back({textCell(std::to_string(m + 1)), tx.numberCell(mode.frequencyHz, 6),
                         tx.numberCell(100.0 * mode.dampingRatio, 4), tx.numberCell(200.0 * mode.dampingRatio, 4)});
       shapes = shapes || mode.shape.size() > 0;
@@ -231,11 +216,11 @@ Result<bool> modalSection(const Context& c, Section& s) {
                                    {info.name, tx.number(info.bandLowHz), tx.number(info.bandHighHz)})});
     // One still per mode from the Mode Animation view, at its largest deflection.
     if (shapes && c.store.mesh(info.specimenId).ok())
-      for (std::size_t m = 0; m < table->modes.size(); ++m)
+      for (std::size_t m = 0; m < table.modes.size(); ++m)
         s.blocks.push_back(Figure{"mode-" + id + "-" + std::to_string(m + 1), "mode-shape", info.id,
                                   tx("Mode %1 of %2: %3 Hz, zeta %4 %",
-                                     {std::to_string(m + 1), info.name, tx.number(table->modes[m].frequencyHz, 5),
-                                      tx.number(100 * table->modes[m].dampingRatio, 3)}),
+                                     {std::to_string(m + 1), info.name, tx.number(table.modes[m].frequencyHz, 5),
+                                      tx.number(100 * table.modes[m].dampingRatio, 3)}),
                                   static_cast<int>(m)});
   }
   return !s.blocks.empty();
@@ -254,12 +239,11 @@ bool isGapAnalysis(const io::StoredAnalysis& a) {
 
 Result<void> forkModelBlocks(const Context& c, Section& s) {
   const Texts& tx = c.t;
-  auto analyses = c.store.analyses();
-  if (!analyses) return analyses.error();
+  MOZZI_TRY_ASSIGN(const auto analyses, c.store.analyses());
   auto number = [](const nlohmann::json& j, const char* key) {
     return j.is_object() && j.contains(key) && j[key].is_number() ? j[key].get<double>() : std::nan("");
   };
-  for (const auto& a : *analyses) {
+  for (const auto& a : analyses) {
     if (!c.wanted(a.specimenId) || !isForkModelAnalysis(a)) continue;
     const auto json = nlohmann::json::parse(a.resultJson, nullptr, false);
     s.blocks.push_back(Heading{a.name.empty() ? tx("Analysis %1", {std::to_string(a.id)}) : a.name});
@@ -339,59 +323,55 @@ void stepTable(const Context& c, const io::StoredRigTest& test, Section& s) {
 
 Result<bool> stiffnessSection(const Context& c, Section& s) {
   const Texts& tx = c.t;
-  auto tests = c.store.rigTests();
-  if (!tests) return tests.error();
-  for (const auto& info : *tests) {
+  MOZZI_TRY_ASSIGN(const auto tests, c.store.rigTests());
+  for (const auto& info : tests) {
     if (!c.wanted(info.specimenId)) continue;
-    auto test = c.store.rigTest(info.id);
-    if (!test) return test.error();
-    const bool isStatic = test->kind == io::StoredRigTest::Kind::Static;
-    s.blocks.push_back(Heading{info.specimenName + " / " + test->name + " (" +
-                               (isStatic ? tx("static") : tx("dynamic")) + ", " + tx(io::testStatusName(test->status)) +
+    MOZZI_TRY_ASSIGN(const auto test, c.store.rigTest(info.id));
+    const bool isStatic = test.kind == io::StoredRigTest::Kind::Static;
+    s.blocks.push_back(Heading{info.specimenName + " / " + test.name + " (" +
+                               (isStatic ? tx("static") : tx("dynamic")) + ", " + tx(io::testStatusName(test.status)) +
                                ")"});
-    if (!test->statusNote.empty()) s.blocks.push_back(Paragraph{test->statusNote});
+    if (!test.statusNote.empty()) s.blocks.push_back(Paragraph{test.statusNote});
     Table whole;
-    whole.caption = tx("Results of %1 (one standard deviation)", {test->name});
+    whole.caption = tx("Results of %1 (one standard deviation)", {test.name});
     whole.headers = {tx("Quantity"), tx("Value"), tx("Unit")};
     whole.units = {"", "", ""};
     bool axis = false;
-    for (const auto& r : test->results) {
+    for (const auto& r : test.results) {
       if (r.step) continue;
       whole.rows.push_back({textCell(r.quantity), tx.numberCell(r.value, 6, r.uncertainty), textCell(r.unit)});
       axis = axis || r.quantity == "a_tw";
     }
     if (!whole.rows.empty()) s.blocks.push_back(whole);
-    stepTable(c, *test, s);
+    stepTable(c, test, s);
     // The twist axis over the specimen's silhouette, as the Twist Axes page draws it.
     if (axis || !isStatic)
       s.blocks.push_back(Figure{"twist-axes-" + std::to_string(info.id), "twist-axes", info.id,
-                                tx("Twist axis of %1 over %2 (plate plane)", {test->name, info.specimenName})});
+                                tx("Twist axis of %1 over %2 (plate plane)", {test.name, info.specimenName})});
   }
-  if (auto r = forkModelBlocks(c, s); !r) return r.error();
+  MOZZI_TRY(forkModelBlocks(c, s));
   return !s.blocks.empty();
 }
 
 Result<bool> tyreSection(const Context& c, Section& s) {
   const Texts& tx = c.t;
-  auto tests = c.store.tyreTests();
-  if (!tests) return tests.error();
+  MOZZI_TRY_ASSIGN(const auto tests, c.store.tyreTests());
   std::set<std::int64_t> relaxationSpecimens;
-  for (const auto& info : *tests) {
+  for (const auto& info : tests) {
     if (!c.wanted(info.specimenId)) continue;
-    auto test = c.store.tyreTest(info.id);
-    if (!test) return test.error();
-    s.blocks.push_back(Heading{info.specimenName + " / " + test->name + " (" + test->kind + ", " +
-                               tx(io::testStatusName(test->status)) + ")"});
+    MOZZI_TRY_ASSIGN(const auto test, c.store.tyreTest(info.id));
+    s.blocks.push_back(Heading{info.specimenName + " / " + test.name + " (" + test.kind + ", " +
+                               tx(io::testStatusName(test.status)) + ")"});
     std::string about = tx("Inflation pressure %1 Pa, vertical load %2 N, speed %3 m/s, %4 measured points.",
-                           {tx.number(test->inflationPressurePa), tx.number(test->verticalLoadN),
-                            tx.number(test->speedMps), std::to_string(test->points.size())});
-    s.blocks.push_back(Paragraph{about + (test->statusNote.empty() ? "" : " " + test->statusNote)});
+                           {tx.number(test.inflationPressurePa), tx.number(test.verticalLoadN),
+                            tx.number(test.speedMps), std::to_string(test.points.size())});
+    s.blocks.push_back(Paragraph{about + (test.statusNote.empty() ? "" : " " + test.statusNote)});
     Table params, mf;
-    params.caption = tx("Results of %1 (one standard deviation)", {test->name});
-    mf.caption = tx("Magic Formula coefficients of %1", {test->name});
+    params.caption = tx("Results of %1 (one standard deviation)", {test.name});
+    mf.caption = tx("Magic Formula coefficients of %1", {test.name});
     params.headers = mf.headers = {tx("Parameter"), tx("Value"), tx("Unit")};
     params.units = mf.units = {"", "", ""};
-    for (const auto& p : test->parameters) {
+    for (const auto& p : test.parameters) {
       if (p.step) continue;
       std::vector<Cell> row{textCell(p.name), tx.numberCell(p.value, 6, p.uncertainty),
                             textCell(p.unit.empty() ? "-" : p.unit)};
@@ -399,10 +379,10 @@ Result<bool> tyreSection(const Context& c, Section& s) {
     }
     if (!params.rows.empty()) s.blocks.push_back(params);
     if (!mf.rows.empty()) s.blocks.push_back(mf);
-    if (test->kind == "relaxation") relaxationSpecimens.insert(info.specimenId);
-    if (!test->points.empty())
+    if (test.kind == "relaxation") relaxationSpecimens.insert(info.specimenId);
+    if (!test.points.empty())
       s.blocks.push_back(Figure{"tyre-steady-" + std::to_string(info.id), "tyre-steady-state", info.id,
-                                tx("Lateral force and aligning moment of %1 against slip angle", {test->name})});
+                                tx("Lateral force and aligning moment of %1 against slip angle", {test.name})});
   }
   // The Tyre Relaxation page's charts, one pair per tyre with relaxation tests.
   for (const auto id : relaxationSpecimens)
@@ -414,9 +394,8 @@ Result<bool> tyreSection(const Context& c, Section& s) {
 }
 
 Result<bool> gapSection(const Context& c, Section& s) {
-  auto analyses = c.store.analyses();
-  if (!analyses) return analyses.error();
-  for (const auto& a : *analyses) {
+  MOZZI_TRY_ASSIGN(const auto analyses, c.store.analyses());
+  for (const auto& a : analyses) {
     if (!c.wanted(a.specimenId) || !isGapAnalysis(a) || hasOwnStabilitySection(a.kind)) continue;
     for (auto& block : storedAnalysisBlocks(a, c.t)) s.blocks.push_back(std::move(block));
   }
@@ -476,10 +455,9 @@ Result<Report> buildProjectReport(const io::ProjectStore& store, const ReportOpt
                        "report of " + store.path());
     }
   }
-  auto summary = store.summary();
-  if (!summary) return summary.error();
+  MOZZI_TRY_ASSIGN(const auto summary, store.summary());
   Context c{store, options, Texts(options.language), {}};
-  for (const auto& sp : summary->specimens)
+  for (const auto& sp : summary.specimens)
     if (options.specimen.empty() || sp.name == options.specimen) c.specimenNames[sp.id] = sp.name;
   if (!options.specimen.empty() && c.specimenNames.empty())
     return makeError(ErrorCode::NotFound, "no specimen named '" + options.specimen + "'", store.path());
@@ -495,9 +473,8 @@ Result<Report> buildProjectReport(const io::ProjectStore& store, const ReportOpt
     Section s;
     s.key = entry.key;
     s.heading = c.t(entry.heading);
-    auto has = entry.build(c, s);
-    if (!has) return has.error();
-    if (*has) report.sections.push_back(std::move(s));
+    MOZZI_TRY_ASSIGN(const auto has, entry.build(c, s));
+    if (has) report.sections.push_back(std::move(s));
   }
   return report;
 }
