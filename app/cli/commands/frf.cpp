@@ -61,8 +61,10 @@ std::string dofList(const std::vector<core::Dof>& dofs) {
 // reading plus checking a hit costs about what its four FFTs and the
 // accumulation cost (issue 19). One hit in flight at a time, averaged in the
 // order handed over, so the sums are those of the sequential loop whatever
-// the timing; UffHitReader keeps a hit valid while the next one is read. On a
-// single core the hits are averaged in submit() itself.
+// the timing; UffHitReader keeps a hit valid while the next one is read. A
+// hit the averaging thread has not started yet when the caller needs the
+// slot (a loaded machine that has not scheduled it) is averaged by the
+// caller itself rather than waited for; on a single core every hit is.
 class AveragingThread {
  public:
   // `options` is read when the first hit is averaged, and must outlive this.
@@ -91,31 +93,38 @@ class AveragingThread {
     }
     wake_.notify_one();
   }
-  // Waits for the hit in flight, then hands `hit` over (it must stay valid
+  // Completes the hit in flight, then hands `hit` over (it must stay valid
   // until the next submit() or finish()); false once a hit has failed.
   bool submit(const core::io::UffHit& hit) {
-    if (!thread_.joinable()) {
-      if (!error_) average(hit);
-      return !error_;
-    }
     std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [this] { return pending_ == nullptr; });
+    complete(lock);
     if (error_) return false;
     pending_ = &hit;
+    if (!thread_.joinable()) complete(lock);
     lock.unlock();
     wake_.notify_one();
     return true;
   }
-  // Waits for the hit in flight; the first failure, "load case N: reason".
+  // Completes the hit in flight; the first failure, "load case N: reason".
   const std::optional<std::string>& finish() {
     std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [this] { return pending_ == nullptr; });
+    complete(lock);
     return error_;
   }
   // The average, after finish() returned no failure.
   sg::SpectralAverager& averager() { return *averager_; }
 
  private:
+  // Waits for the hit the averaging thread is on, or averages the one it has
+  // not taken yet here; either way, one thread at a time on the averager.
+  void complete(std::unique_lock<std::mutex>& lock) {
+    done_.wait(lock, [this] { return !running_; });
+    if (const core::io::UffHit* hit = std::exchange(pending_, nullptr)) {
+      lock.unlock();
+      average(*hit);
+      lock.lock();
+    }
+  }
   void run() {
     std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
@@ -127,17 +136,20 @@ class AveragingThread {
         lock.lock();
         continue;
       }
-      if (pending_ == nullptr) return;  // stopped with nothing in flight
+      const core::io::UffHit* hit = std::exchange(pending_, nullptr);
+      if (hit == nullptr) return;  // stopped with nothing in flight
+      running_ = true;
       lock.unlock();
-      average(*pending_);
+      average(*hit);
       lock.lock();
-      pending_ = nullptr;
+      running_ = false;
       done_.notify_one();
     }
   }
-  // Runs on the averaging thread (in submit() on one core); error_ and
-  // averager_ are read by the caller once pending_ is cleared under the mutex.
+  // Runs on whichever thread took the hit, never on two at once; error_ and
+  // averager_ are read by the caller only after complete().
   void average(const core::io::UffHit& hit) {
+    if (error_) return;
     if (!averager_) {
       auto a = sg::SpectralAverager::create(hit.record, options_);
       if (!a) {
@@ -156,7 +168,8 @@ class AveragingThread {
   std::optional<std::string> error_;
   std::mutex mutex_;
   std::condition_variable wake_, done_;
-  const core::io::UffHit* pending_ = nullptr;
+  const core::io::UffHit* pending_ = nullptr;  // handed over, not taken yet
+  bool running_ = false;                       // the averaging thread is on a hit
   Eigen::Index planLength_ = 0;
   bool stop_ = false;
   std::thread thread_;  // last: started once the members above exist
