@@ -50,6 +50,10 @@ int main(int argc, char** argv) {
   // Keep freed memory in the heap for reuse; it goes back at exit.
   mallopt(M_MMAP_THRESHOLD, 256 << 20);
   mallopt(M_TRIM_THRESHOLD, 512 << 20);
+  // One arena for every thread: `frf` averages on a second thread, whose
+  // buffers would otherwise come from a per-thread arena of fresh 4 kB pages
+  // outside the huge-page heap below.
+  mallopt(M_ARENA_MAX, 1);
   heapOnHugePages();
 #endif
   std::vector<std::string> args(argv + 1, argv + argc);

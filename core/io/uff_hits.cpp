@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <set>
+#include <utility>
 
 #include "core/io/uff/uff.h"
 
@@ -29,25 +30,32 @@ struct UffHitReader::Impl {
   std::string path;
   std::vector<Dof> references;
   std::optional<uff::DatasetReader> reader;
-  UffHit hits[2];
-  Eigen::Index count[2] = {0, 0};  // channels written into each buffer
-  int filling = 0;                 // buffer of the hit being read
-  std::set<int> finished;          // load cases handed out
+  // Three buffers in turn: the hit being read, the one handed out last, and
+  // the one before it, which a consumer may still be working on while the
+  // next hit is read (the header's contract; `mozzi-cli frf` averages hit k
+  // on a second thread while it reads and checks hit k + 1).
+  static constexpr int kBuffers = 3;
+  UffHit hits[kBuffers];
+  Eigen::Index count[kBuffers] = {};  // channels written into each buffer
+  int filling = 0;                    // buffer of the hit being read
+  std::set<int> finished;             // load cases handed out
   bool any = false, ended = false;
+  std::function<void(Eigen::Index)> onFirstLength;  // called once, then cleared
   // what the sink did with the last record
   bool sinkUsed = false, boundary = false;
   Eigen::Index sinkColumn = 0;
 
   // ReadOptions::ordinateSink: a real time-response record goes into the
-  // next column of the hit being read, or into the other buffer's first
+  // next column of the hit being read, or into the next buffer's first
   // column when its load case starts a new hit.
   double* sink(const uff::Function58& f, std::uint64_t points) {
     sinkUsed = boundary = false;
     if (f.functionType != uff::FunctionType::TimeResponse || uff::isComplex(f.ordinateType)) return nullptr;
     const Eigen::Index n = static_cast<Eigen::Index>(points);
+    if (onFirstLength) std::exchange(onFirstLength, nullptr)(n);
     int b = filling;
     if (count[b] > 0 && f.loadCase != hits[b].loadCase) {
-      b = 1 - filling;
+      b = (filling + 1) % kBuffers;
       count[b] = 0;
       boundary = true;
     }
@@ -182,7 +190,7 @@ struct UffHitReader::Impl {
           return ok.error();
         }
         ready = &hits[filling];
-        filling = 1 - filling;
+        filling = (filling + 1) % kBuffers;
       }
       if (auto ok = addChannel(hits[filling], sinkColumn, *f, (*ds)->line); !ok) {
         ended = true;
@@ -210,6 +218,10 @@ UffHitReader::UffHitReader(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) 
 UffHitReader::UffHitReader(UffHitReader&&) noexcept = default;
 UffHitReader& UffHitReader::operator=(UffHitReader&&) noexcept = default;
 UffHitReader::~UffHitReader() = default;
+
+void UffHitReader::onFirstLength(std::function<void(Eigen::Index)> callback) {
+  impl_->onFirstLength = std::move(callback);
+}
 
 Result<const UffHit*> UffHitReader::next() {
   return impl_->next();

@@ -3,12 +3,13 @@
 // records of a file, streamed: one hit per load case (record 6), channels in
 // file order, as `mozzi-cli frf` reads them (docs/cli/frf.md). The samples
 // are read straight from the file into the hit's sample matrix (the reader's
-// ordinate sink), two hits' matrices are reused for the whole file, so
-// memory is two hits whatever the file's length and nothing is copied
+// ordinate sink), three hits' matrices are reused for the whole file, so
+// memory is three hits whatever the file's length and nothing is copied
 // (issue 19). The records of one load case must be consecutive in the file
 // (every writer does so); a load case that comes back after another one is an
 // error naming it.
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -36,9 +37,17 @@ class UffHitReader {
   UffHitReader& operator=(UffHitReader&&) noexcept;
   ~UffHitReader();
 
+  // `callback` is called once, with the sample count of the first time
+  // record, when its header has been read and before its samples are: a
+  // consumer may prepare for that length (plan its FFT on another thread)
+  // while the first hit is read. Set it before the first next().
+  void onFirstLength(std::function<void(Eigen::Index)> callback);
+
   // The next hit, nullptr after the last one. The hit stays valid until the
-  // next call. Errors name the file, load case and channel. NotFound when the
-  // file holds no time-response record at all.
+  // second call after this one starts, so another thread may read it while
+  // the next hit is read (not while the one after that is). Errors name the
+  // file, load case and channel. NotFound when the file holds no
+  // time-response record at all.
   Result<const UffHit*> next();
 
  private:

@@ -12,6 +12,7 @@
 #include "core/common/text.h"
 #include "core/modal/mode_merging.h"
 #include "core/modal/stabilization.h"
+#include "core/signal/fft.h"
 
 namespace mozzi::core::modal {
 
@@ -74,7 +75,9 @@ Result<ImpulseResponses> impulseResponses(const FrfMatrix& frf, const LsceOption
       static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * static_cast<std::size_t>(kTop + 1))));
   std::unique_ptr<double[], FftwFree> time(
       static_cast<double*>(fftw_malloc(sizeof(double) * static_cast<std::size_t>(out.period))));
-  fftw_plan plan = fftw_plan_dft_c2r_1d(static_cast<int>(out.period), in.get(), time.get(), FFTW_ESTIMATE);
+  // Planned under RealFft's planner lock (FFTW's planner is not thread-safe).
+  fftw_plan plan = signal::withFftwPlanner(
+      [&] { return fftw_plan_dft_c2r_1d(static_cast<int>(out.period), in.get(), time.get(), FFTW_ESTIMATE); });
   out.h.resize(half, no * ni);
   for (Eigen::Index a = 0; a < ni; ++a) {
     for (Eigen::Index o = 0; o < no; ++o) {
@@ -87,7 +90,7 @@ Result<ImpulseResponses> impulseResponses(const FrfMatrix& frf, const LsceOption
       out.h.col(o * ni + a) = Eigen::Map<const Vector>(time.get(), half);
     }
   }
-  fftw_destroy_plan(plan);
+  signal::withFftwPlanner([&] { fftw_destroy_plan(plan); });
   return out;
 }
 

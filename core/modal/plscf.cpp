@@ -16,6 +16,7 @@
 #include "core/modal/mode_merging.h"
 #include "core/modal/shape_tools.h"
 #include "core/modal/stabilization.h"
+#include "core/signal/fft.h"
 
 namespace mozzi::core::modal {
 
@@ -101,8 +102,11 @@ ComplexMatrix lagSums(const Series& series, const Vector& f, double dt, long fft
     std::unique_ptr<fftw_complex[], FftwFree> buf(
         static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * static_cast<std::size_t>(N * chunk))));
     int sizes[1] = {static_cast<int>(N)};
-    fftw_plan plan = fftw_plan_many_dft(1, sizes, static_cast<int>(chunk), buf.get(), nullptr, 1, static_cast<int>(N),
-                                        buf.get(), nullptr, 1, static_cast<int>(N), FFTW_BACKWARD, FFTW_ESTIMATE);
+    // Planned under RealFft's planner lock (FFTW's planner is not thread-safe).
+    fftw_plan plan = signal::withFftwPlanner([&] {
+      return fftw_plan_many_dft(1, sizes, static_cast<int>(chunk), buf.get(), nullptr, 1, static_cast<int>(N),
+                                buf.get(), nullptr, 1, static_cast<int>(N), FFTW_BACKWARD, FFTW_ESTIMATE);
+    });
     for (Eigen::Index s0 = 0; s0 < ns; s0 += chunk) {
       const Eigen::Index cs = std::min(chunk, ns - s0);
       for (Eigen::Index c = 0; c < chunk; ++c) {
@@ -128,7 +132,7 @@ ComplexMatrix lagSums(const Series& series, const Vector& f, double dt, long fft
         }
       }
     }
-    fftw_destroy_plan(plan);
+    signal::withFftwPlanner([&] { fftw_destroy_plan(plan); });
     return out;
   }
   out.setZero();

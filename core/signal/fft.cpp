@@ -13,14 +13,12 @@
 
 namespace mozzi::core::signal {
 
-namespace {
 // One lock for every call into FFTW's planner (fftw_plan_*, fftw_destroy_plan):
 // the planner shares global state and is not thread-safe (FFTW manual §5.4).
-std::mutex& plannerMutex() {
+std::mutex& fftwPlannerMutex() {
   static std::mutex m;
   return m;
 }
-}  // namespace
 
 template <class T>
 AlignedBuffer<T>::AlignedBuffer(std::size_t count)
@@ -63,7 +61,7 @@ Result<std::shared_ptr<const RealFft>> RealFft::forLength(Eigen::Index n) {
   AlignedBuffer<std::complex<double>> out(static_cast<std::size_t>(n / 2 + 1));
   fftw_plan plan;
   {
-    std::lock_guard<std::mutex> lock(plannerMutex());
+    std::lock_guard<std::mutex> lock(fftwPlannerMutex());
     // The measured plans kept in core/signal/fftw_wisdom.h (scripts/fftw-wisdom.sh)
     // for the usual lengths: 40% faster transforms than FFTW_ESTIMATE's and
     // half the planning time. The wisdom is forgotten right after, so that no
@@ -87,7 +85,7 @@ Result<std::shared_ptr<const RealFft>> RealFft::forLength(Eigen::Index n) {
 }
 
 RealFft::~RealFft() {
-  std::lock_guard<std::mutex> lock(plannerMutex());
+  std::lock_guard<std::mutex> lock(fftwPlannerMutex());
   fftw_destroy_plan(static_cast<fftw_plan>(plan_));
   if (inversePlan_ != nullptr) fftw_destroy_plan(static_cast<fftw_plan>(inversePlan_));
 }
@@ -96,7 +94,7 @@ bool RealFft::inverse(const std::complex<double>* in, double* out) const {
   std::call_once(inverseOnce_, [this] {
     AlignedBuffer<std::complex<double>> spectrum(static_cast<std::size_t>(lineCount()));
     AlignedBuffer<double> samples(static_cast<std::size_t>(n_));
-    std::lock_guard<std::mutex> lock(plannerMutex());
+    std::lock_guard<std::mutex> lock(fftwPlannerMutex());
     inversePlan_ = fftw_plan_dft_c2r_1d(static_cast<int>(n_), reinterpret_cast<fftw_complex*>(spectrum.data()),
                                         samples.data(), FFTW_ESTIMATE);
   });

@@ -15,6 +15,20 @@
 
 namespace mozzi::core::signal {
 
+// The process-wide lock of FFTW's planner. Code that calls FFTW directly
+// (pLSCF's and LSCE's plans in core/modal) makes and destroys its plans
+// through withFftwPlanner, so that it never plans while RealFft does on
+// another thread (the workbench identifies on a worker thread).
+std::mutex& fftwPlannerMutex();
+
+// Runs `planning` (fftw_plan_* or fftw_destroy_plan calls) under that lock
+// and returns its result.
+template <class Planning>
+auto withFftwPlanner(Planning&& planning) -> decltype(planning()) {
+  std::lock_guard<std::mutex> lock(fftwPlannerMutex());
+  return planning();
+}
+
 // Heap block aligned as FFTW wants it (fftw_malloc), for inputs and outputs of
 // RealFft::forward; move-only. Contents start uninitialised.
 template <class T>

@@ -8,10 +8,14 @@
 // Documented in docs/cli/frf.md.
 #include <algorithm>
 #include <cmath>
+#include <condition_variable>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
 #include <sstream>
+#include <thread>
+#include <utility>
 
 #include "app/cli/args.h"
 #include "app/cli/command.h"
@@ -51,6 +55,125 @@ std::string dofList(const std::vector<core::Dof>& dofs) {
   for (std::size_t i = 0; i < dofs.size(); ++i) s += (i ? ", " : "") + core::formatDof(dofs[i]);
   return s;
 }
+
+// The averaging of the accepted hits on a second thread while the calling
+// thread reads and checks the next hit: the user waits for wall time, and
+// reading plus checking a hit costs about what its four FFTs and the
+// accumulation cost (issue 19). One hit in flight at a time, averaged in the
+// order handed over, so the sums are those of the sequential loop whatever
+// the timing; UffHitReader keeps a hit valid while the next one is read. A
+// hit the averaging thread has not started yet when the caller needs the
+// slot (a loaded machine that has not scheduled it) is averaged by the
+// caller itself rather than waited for; on a single core every hit is.
+class AveragingThread {
+ public:
+  // `options` is read when the first hit is averaged, and must outlive this.
+  explicit AveragingThread(const sg::FrfOptions& options) : options_(options) {
+    if (std::thread::hardware_concurrency() >= 2) thread_ = std::thread([this] { run(); });
+  }
+  ~AveragingThread() {
+    if (!thread_.joinable()) return;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
+  }
+  AveragingThread(const AveragingThread&) = delete;
+  AveragingThread& operator=(const AveragingThread&) = delete;
+
+  // Plans the FFT of length n on the averaging thread (FFTW's planning of
+  // 65,536 samples takes 2 ms), while the first hit is read.
+  void prepare(Eigen::Index n) {
+    if (!thread_.joinable()) return;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      planLength_ = n;
+    }
+    wake_.notify_one();
+  }
+  // Completes the hit in flight, then hands `hit` over (it must stay valid
+  // until the next submit() or finish()); false once a hit has failed.
+  bool submit(const core::io::UffHit& hit) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    complete(lock);
+    if (error_) return false;
+    pending_ = &hit;
+    if (!thread_.joinable()) complete(lock);
+    lock.unlock();
+    wake_.notify_one();
+    return true;
+  }
+  // Completes the hit in flight; the first failure, "load case N: reason".
+  const std::optional<std::string>& finish() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    complete(lock);
+    return error_;
+  }
+  // The average, after finish() returned no failure.
+  sg::SpectralAverager& averager() { return *averager_; }
+
+ private:
+  // Waits for the hit the averaging thread is on, or averages the one it has
+  // not taken yet here; either way, one thread at a time on the averager.
+  void complete(std::unique_lock<std::mutex>& lock) {
+    done_.wait(lock, [this] { return !running_; });
+    if (const core::io::UffHit* hit = std::exchange(pending_, nullptr)) {
+      lock.unlock();
+      average(*hit);
+      lock.lock();
+    }
+  }
+  void run() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (;;) {
+      wake_.wait(lock, [this] { return stop_ || pending_ != nullptr || planLength_ > 0; });
+      if (planLength_ > 0) {
+        const Eigen::Index n = std::exchange(planLength_, 0);
+        lock.unlock();
+        (void)sg::RealFft::forLength(n);  // kept in its cache; a failure is reported where it is used
+        lock.lock();
+        continue;
+      }
+      const core::io::UffHit* hit = std::exchange(pending_, nullptr);
+      if (hit == nullptr) return;  // stopped with nothing in flight
+      running_ = true;
+      lock.unlock();
+      average(*hit);
+      lock.lock();
+      running_ = false;
+      done_.notify_one();
+    }
+  }
+  // Runs on whichever thread took the hit, never on two at once; error_ and
+  // averager_ are read by the caller only after complete().
+  void average(const core::io::UffHit& hit) {
+    if (error_) return;
+    if (!averager_) {
+      auto a = sg::SpectralAverager::create(hit.record, options_);
+      if (!a) {
+        error_ = "load case " + std::to_string(hit.loadCase) + ": " + a.error().describe();
+        return;
+      }
+      averager_.emplace(std::move(*a));
+    }
+    if (auto ok = averager_->add(hit.record); !ok) {
+      error_ = "load case " + std::to_string(hit.loadCase) + ": " + ok.error().describe();
+    }
+  }
+
+  const sg::FrfOptions& options_;
+  std::optional<sg::SpectralAverager> averager_;
+  std::optional<std::string> error_;
+  std::mutex mutex_;
+  std::condition_variable wake_, done_;
+  const core::io::UffHit* pending_ = nullptr;  // handed over, not taken yet
+  bool running_ = false;                       // the averaging thread is on a hit
+  Eigen::Index planLength_ = 0;
+  bool stop_ = false;
+  std::thread thread_;  // last: started once the members above exist
+};
 
 // The option table: a hammer pulse lasts well under a second; the force
 // window must also cover at least one sample (checked against the file).
@@ -117,7 +240,7 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   if (int rc = refuseOutputsOntoInputs(*parsed, kSpec, {path}, "frf", err); rc != kExitOk) return rc;
 
   // Hits stream from the file one at a time, read straight into reused
-  // sample matrices (core/io/uff_hits.h): memory is two hits, not the file.
+  // sample matrices (core/io/uff_hits.h): memory is three hits, not the file.
   auto hitReader = core::io::UffHitReader::open(path, references);
   if (!hitReader) {
     err << "mozzi-cli frf: " << hitReader.error().describe() << "\n";
@@ -130,7 +253,16 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   // Several references: the load cases are blocks of a shaker (random) test,
   // not hammer hits, so only the overload check of the hit assessment applies.
   bool multiReference = false;
-  std::optional<sg::SpectralAverager> averager;
+  AveragingThread averaging(options);
+  hitReader->onFirstLength([&averaging](Eigen::Index n) { averaging.prepare(n); });
+  // An error of this thread is reported after the hits handed over before it
+  // are averaged: if one of those failed, its error comes first, as in a
+  // loop that averages each hit before reading the next.
+  const auto fail = [&](const std::string& message) {
+    const auto& earlier = averaging.finish();
+    err << "mozzi-cli frf: " << (earlier ? *earlier : message) << "\n";
+    return kExitFailure;
+  };
   nlohmann::json jsonHits = nlohmann::json::array();
   std::ostringstream text;
   int accepted = 0, rejected = 0;
@@ -138,10 +270,7 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   bool haveBand = false;
   for (bool firstHit = true;; firstHit = false) {
     auto nextHit = hitReader->next();
-    if (!nextHit) {
-      err << "mozzi-cli frf: " << nextHit.error().describe() << "\n";
-      return kExitFailure;
-    }
+    if (!nextHit) return fail(nextHit.error().describe());
     if (!*nextHit) break;
     const core::io::UffHit& hit = **nextHit;
     if (firstHit) {
@@ -150,9 +279,8 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
         // the FRF would be noise with coherence near 0.
         const double rate = hit.record.sampleRateHz;
         if (**forceWidth * rate < 1.0) {
-          err << "mozzi-cli frf: option --force-window = " << fmt(**forceWidth) << " s is shorter than one sample of "
-              << path << " (1/" << fmt(rate) << " Hz = " << fmt(1.0 / rate) << " s)\n";
-          return kExitFailure;
+          return fail("option --force-window = " + fmt(**forceWidth) + " s is shorter than one sample of " + path +
+                      " (1/" + fmt(rate) + " Hz = " + fmt(1.0 / rate) + " s)");
         }
       }
       options.referenceChannels = forceChannels(hit.record);
@@ -161,10 +289,7 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     sg::HitQualityOptions qo;
     if (!options.referenceChannels.empty()) qo.referenceChannel = options.referenceChannels.front();
     auto q = sg::assessHit(hit.record, qo);
-    if (!q) {
-      err << "mozzi-cli frf: load case " << hit.loadCase << ": " << q.error().describe() << "\n";
-      return kExitFailure;
-    }
+    if (!q) return fail("load case " + std::to_string(hit.loadCase) + ": " + q.error().describe());
     if (multiReference) {
       q->accepted = true;
       q->reasons.clear();
@@ -188,18 +313,7 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
       ++rejected;
       continue;
     }
-    if (!averager) {
-      auto a = sg::SpectralAverager::create(hit.record, options);
-      if (!a) {
-        err << "mozzi-cli frf: load case " << hit.loadCase << ": " << a.error().describe() << "\n";
-        return kExitFailure;
-      }
-      averager.emplace(std::move(*a));
-    }
-    if (auto ok = averager->add(hit.record); !ok) {
-      err << "mozzi-cli frf: load case " << hit.loadCase << ": " << ok.error().describe() << "\n";
-      return kExitFailure;
-    }
+    if (!averaging.submit(hit)) return fail("");  // an earlier hit failed: its error
     ++accepted;
     // usable band of the average: the narrowest accepted hit's (a shaker
     // test's band is the excitation's, unknown here: up to Nyquist)
@@ -210,11 +324,16 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     band20 = haveBand ? std::min(band20, b20) : b20;
     haveBand = true;
   }
+  if (const auto& failed = averaging.finish()) {
+    err << "mozzi-cli frf: " << *failed << "\n";
+    return kExitFailure;
+  }
   if (accepted == 0) {
     err << "mozzi-cli frf: every " << (multiReference ? "block" : "hit") << " was rejected\n" << text.str();
     return kExitFailure;
   }
-  auto frf = averager->frf();
+  sg::SpectralAverager& averager = averaging.averager();
+  auto frf = averager.frf();
   if (!frf) {
     err << "mozzi-cli frf: " << frf.error().describe() << "\n";
     return kExitFailure;
@@ -236,7 +355,7 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   }
   double worstCondition = 1.0, worstConditionHz = 0.0;
   if (multiReference) {
-    const core::Vector cond = averager->referenceConditionNumber();
+    const core::Vector cond = averager.referenceConditionNumber();
     Eigen::Index k = 0;
     worstCondition = cond.maxCoeff(&k);
     worstConditionHz = frf->frequencyHz[k];
