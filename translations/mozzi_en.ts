@@ -12,7 +12,7 @@
 <context>
     <name>Pages</name>
     <message numerus="yes">
-        <location filename="../app/gui/builtin_pages.cpp" line="+63"/>
+        <location filename="../app/gui/builtin_pages.cpp" line="+74"/>
         <source>%n trace line segment(s) name nodes the mesh does not have and are not drawn</source>
         <translation type="unfinished">
             <numerusform>%n trace line segment names nodes the mesh does not have and is not drawn</numerusform>
@@ -50,7 +50,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+31"/>
         <source>Stability</source>
         <translation type="unfinished"></translation>
     </message>
@@ -60,7 +60,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+21"/>
         <source>Mesh Editor</source>
         <translation type="unfinished"></translation>
     </message>
@@ -170,7 +170,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-253"/>
+        <location line="-266"/>
         <source>Could not read the FRF set: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -195,7 +195,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>Model vs test: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4925,7 +4925,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+246"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+257"/>
         <source>Export Diagnosis Report</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4985,7 +4985,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>Diagnosis done.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4995,18 +4995,12 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
-        <location line="+244"/>
+        <location line="+40"/>
         <source>Verdict: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-241"/>
-        <source>Verdict: %1 (%2 and %3)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+40"/>
+        <location line="+32"/>
         <source>Item</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5016,7 +5010,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Significant</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5031,7 +5025,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+48"/>
         <source>Effect</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5066,12 +5060,12 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+11"/>
         <source>(not identifiable)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+34"/>
         <source>model + %1 + %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5082,17 +5076,17 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location line="+38"/>
-        <location line="+79"/>
+        <location line="+82"/>
         <source>model + best effect</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-69"/>
+        <location line="-72"/>
         <source>Model vs test</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+49"/>
         <source>Model</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5107,18 +5101,49 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-45"/>
+        <location line="-48"/>
         <source>Nothing to export: run the diagnosis first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="-219"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+151"/>
+        <source>%1 and %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 at %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+5"/>
+        <source>Verdict: %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+212"/>
         <location line="+8"/>
         <source>Cannot write %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
+        <source>Kept diagnoses</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The gap diagnoses this project keeps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>mozzi-model/1 JSON, UFF 55 modes, tyre or stability gap file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5214,15 +5239,41 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+9"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="-72"/>
         <source>No diagnosis yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+21"/>
+        <source>No project is open.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Analysis %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>Kept diagnosis &quot;%1&quot; (analysis %2), as stored.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>With %1 the held-out residual is %2% lower.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source> and </source>
         <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
     <name>mozzi::views::PageTabs</name>
     <message>
-        <location filename="../views/common/page_tabs.cpp" line="+150"/>
+        <location filename="../views/common/page_tabs.cpp" line="+152"/>
         <source>%1 %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5309,7 +5360,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ProjectOverview</name>
     <message>
-        <location filename="../views/panels/project_overview.cpp" line="+249"/>
+        <location filename="../views/panels/project_overview.cpp" line="+255"/>
         <source>needs a record this project does not hold yet</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5456,7 +5507,22 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::ProjectTree</name>
     <message>
-        <location filename="../views/common/project_tree.cpp" line="+82"/>
+        <location filename="../views/common/project_tree.cpp" line="+26"/>
+        <source>stability sweep</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>wheelchair manoeuvre</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gap diagnosis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+64"/>
         <location line="+20"/>
         <source>Item</source>
         <translation type="unfinished"></translation>
@@ -5513,18 +5579,20 @@ Schema version %2, created %3 by Mozzi %4</source>
         <location line="+10"/>
         <location line="+12"/>
         <location line="+21"/>
+        <location line="+18"/>
         <source>Name</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-48"/>
+        <location line="-66"/>
         <location line="+5"/>
         <location line="+43"/>
+        <location line="+18"/>
         <source>Kind</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-48"/>
+        <location line="-66"/>
         <source>Description</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5639,7 +5707,17 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
+        <source>Analyses</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Analysis id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Data</source>
         <translation type="unfinished"></translation>
     </message>

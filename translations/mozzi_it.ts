@@ -12,7 +12,7 @@
 <context>
     <name>Pages</name>
     <message numerus="yes">
-        <location filename="../app/gui/builtin_pages.cpp" line="+63"/>
+        <location filename="../app/gui/builtin_pages.cpp" line="+74"/>
         <source>%n trace line segment(s) name nodes the mesh does not have and are not drawn</source>
         <translation>
             <numerusform>%n segmento di linea di traccia cita nodi assenti dalla mesh e non viene disegnato</numerusform>
@@ -50,7 +50,7 @@
         <translation>FRF</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+31"/>
         <source>Stability</source>
         <translation>Stabilità</translation>
     </message>
@@ -60,7 +60,7 @@
         <translation>Autovalori di un modello di bicicletta in funzione della velocità, con i modi nominati e le velocità critiche segnate</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+21"/>
         <source>Mesh Editor</source>
         <translation>Editor della mesh</translation>
     </message>
@@ -170,7 +170,7 @@
         <translation>Traiettorie in slalom e in curva stazionaria e angoli di deriva posteriori del modello di carrozzina, con gli studi sulla rigidezza degli pneumatici</translation>
     </message>
     <message>
-        <location line="-253"/>
+        <location line="-266"/>
         <source>Could not read the FRF set: %1</source>
         <translation>Impossibile leggere l&apos;insieme di FRF: %1</translation>
     </message>
@@ -195,7 +195,7 @@
         <translation>Diagnostica dove modello e prova non concordano e quale effetto non modellato lo spiega</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>Model vs test: %1</source>
         <translation>Modello contro prova: %1</translation>
     </message>
@@ -4929,7 +4929,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+246"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+257"/>
         <source>Export Diagnosis Report</source>
         <translation>Esporta rapporto di diagnosi</translation>
     </message>
@@ -4989,7 +4989,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Diagnosi in corso...</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>Diagnosis done.</source>
         <translation>Diagnosi completata.</translation>
     </message>
@@ -4999,18 +4999,12 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>La diagnosi si è interrotta: %1</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <location line="+244"/>
+        <location line="+40"/>
         <source>Verdict: %1</source>
         <translation>Verdetto: %1</translation>
     </message>
     <message>
-        <location line="-241"/>
-        <source>Verdict: %1 (%2 and %3)</source>
-        <translation>Verdetto: %1 (%2 e %3)</translation>
-    </message>
-    <message>
-        <location line="+40"/>
+        <location line="+32"/>
         <source>Item</source>
         <translation>Elemento</translation>
     </message>
@@ -5020,7 +5014,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>z</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Significant</source>
         <translation>Significativo</translation>
     </message>
@@ -5035,7 +5029,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>no</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+48"/>
         <source>Effect</source>
         <translation>Effetto</translation>
     </message>
@@ -5070,12 +5064,12 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Riduzione</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+11"/>
         <source>(not identifiable)</source>
         <translation>(non identificabile)</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+34"/>
         <source>model + %1 + %2</source>
         <translation>modello + %1 + %2</translation>
     </message>
@@ -5086,17 +5080,17 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location line="+38"/>
-        <location line="+79"/>
+        <location line="+82"/>
         <source>model + best effect</source>
         <translation>modello + effetto migliore</translation>
     </message>
     <message>
-        <location line="-69"/>
+        <location line="-72"/>
         <source>Model vs test</source>
         <translation>Modello contro prova</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+49"/>
         <source>Model</source>
         <translation>Modello</translation>
     </message>
@@ -5111,18 +5105,49 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Effetti in classifica</translation>
     </message>
     <message>
-        <location line="-45"/>
+        <location line="-48"/>
         <source>Nothing to export: run the diagnosis first.</source>
         <translation>Niente da esportare: esegui prima la diagnosi.</translation>
     </message>
     <message>
+        <location line="-219"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+151"/>
+        <source>%1 and %2</source>
+        <translation>%1 e %2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 at %2</source>
+        <translation>%1 in %2</translation>
+    </message>
+    <message>
         <location line="+5"/>
+        <source>Verdict: %1 (%2)</source>
+        <translation>Verdetto: %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+212"/>
         <location line="+8"/>
         <source>Cannot write %1: %2</source>
         <translation>Impossibile scrivere %1: %2</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
+        <source>Kept diagnoses</source>
+        <translation>Diagnosi conservate</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The gap diagnoses this project keeps</source>
+        <translation>Le diagnosi del divario che questo progetto conserva</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show</source>
+        <translation>Mostra</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>mozzi-model/1 JSON, UFF 55 modes, tyre or stability gap file</source>
         <translation>JSON mozzi-model/1, modi UFF 55, file di scarto pneumatico o stabilità</translation>
     </message>
@@ -5218,15 +5243,41 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>modello</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+9"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="-72"/>
         <source>No diagnosis yet</source>
         <translation>Nessuna diagnosi</translation>
+    </message>
+    <message>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+21"/>
+        <source>No project is open.</source>
+        <translation>Nessun progetto aperto.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Analysis %1: %2</source>
+        <translation>Analisi %1: %2</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>Kept diagnosis &quot;%1&quot; (analysis %2), as stored.</source>
+        <translation>Diagnosi conservata &quot;%1&quot; (analisi %2), così come è stata salvata.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>With %1 the held-out residual is %2% lower.</source>
+        <translation>Con %1 il residuo sui dati esclusi dal fit è più basso del %2%.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source> and </source>
+        <translation> e </translation>
     </message>
 </context>
 <context>
     <name>mozzi::views::PageTabs</name>
     <message>
-        <location filename="../views/common/page_tabs.cpp" line="+150"/>
+        <location filename="../views/common/page_tabs.cpp" line="+152"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -5313,7 +5364,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ProjectOverview</name>
     <message>
-        <location filename="../views/panels/project_overview.cpp" line="+249"/>
+        <location filename="../views/panels/project_overview.cpp" line="+255"/>
         <source>needs a record this project does not hold yet</source>
         <translation>richiede un dato che questo progetto non contiene ancora</translation>
     </message>
@@ -5461,7 +5512,22 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::ProjectTree</name>
     <message>
-        <location filename="../views/common/project_tree.cpp" line="+82"/>
+        <location filename="../views/common/project_tree.cpp" line="+26"/>
+        <source>stability sweep</source>
+        <translation>analisi di stabilità</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>wheelchair manoeuvre</source>
+        <translation>manovra della carrozzina</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gap diagnosis</source>
+        <translation>diagnosi del divario</translation>
+    </message>
+    <message>
+        <location line="+64"/>
         <location line="+20"/>
         <source>Item</source>
         <translation>Elemento</translation>
@@ -5518,18 +5584,20 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <location line="+10"/>
         <location line="+12"/>
         <location line="+21"/>
+        <location line="+18"/>
         <source>Name</source>
         <translation>Nome</translation>
     </message>
     <message>
-        <location line="-48"/>
+        <location line="-66"/>
         <location line="+5"/>
         <location line="+43"/>
+        <location line="+18"/>
         <source>Kind</source>
         <translation>Tipo</translation>
     </message>
     <message>
-        <location line="-48"/>
+        <location line="-66"/>
         <source>Description</source>
         <translation>Descrizione</translation>
     </message>
@@ -5644,7 +5712,17 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Prove pneumatici</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
+        <source>Analyses</source>
+        <translation>Analisi</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Analysis id</source>
+        <translation>Id dell'analisi</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Data</source>
         <translation>Dati</translation>
     </message>
