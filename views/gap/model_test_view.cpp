@@ -168,10 +168,6 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   options->addWidget(multistartsLabel_);
   options->addWidget(multistarts_);
   options->addStretch(1);
-  options->addWidget(load_);
-  options->addWidget(run_);
-  options->addWidget(cancel_);
-  options->addWidget(export_);
 
   auto* progressRow = new QHBoxLayout;
   progress_ = new QProgressBar(this);
@@ -180,6 +176,12 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   status_ = new QLabel(this);
   status_->setObjectName(QStringLiteral("gapStatus"));
   status_->setWordWrap(true);
+  // The actions beside the progress they start: on the options row they made
+  // the page wider than the tab area of a 1280-pixel window.
+  progressRow->addWidget(load_);
+  progressRow->addWidget(run_);
+  progressRow->addWidget(cancel_);
+  progressRow->addWidget(export_);
   progressRow->addWidget(progress_, 1);
   progressRow->addWidget(status_, 2);
 

@@ -67,6 +67,9 @@ class ModelTestViewTest : public QObject {
     mozzi::views::ModelTestView view;
     view.resize(1200, 800);
     view.show();
+    // It fits the tab area of a 1280 x 800 main window (the project dock
+    // takes about 300 pixels of the width).
+    QVERIFY2(view.minimumSizeHint().width() <= 960, qPrintable(QString::number(view.minimumSizeHint().width())));
     view.setModelPath(files_.model);
     view.setTestPath(files_.frf);
     view.setBootstrapSamples(20);  // the smallest the form allows: enough for a 0.6 kg mass ~10 SE away
