@@ -178,10 +178,7 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   status_->setWordWrap(true);
   // The actions beside the progress they start: on the options row they made
   // the page wider than the tab area of a 1280-pixel window.
-  progressRow->addWidget(load_);
-  progressRow->addWidget(run_);
-  progressRow->addWidget(cancel_);
-  progressRow->addWidget(export_);
+  for (QPushButton* action : {load_, run_, cancel_, export_}) progressRow->addWidget(action);
   progressRow->addWidget(progress_, 1);
   progressRow->addWidget(status_, 2);
 
