@@ -20,6 +20,19 @@ constexpr EnumEntry<IdentificationStage, const char*> kStageEntries[] = {
 constexpr auto kStageNames = enumTable(kStageEntries, "identification");
 }  // namespace
 
+// 2,000 lines: measured on the two benchmark sets of modal_refine_bench and
+// the ModeLAB beam (docs/performance/commands.md, fifth pass), the whole
+// refinement stage (thinned fit and the LSFD over the band) in LSFDs of the
+// band, and the largest ratio of the thinned fit's standard errors to the
+// all-lines fit's, at 1,000 / 2,000 / 3,000 lines:
+//   beam (9 x 47,873 lines, 4 modes of 1-2 lines' width) 1.20 / 1.36 / 1.54 LSFD, 1.08 / 1.06 / 1.06
+//   10 x 4,501 lines (10 modes of 0.4-12 Hz half-width)  4.07 / 4.83 / 6.73, 1.19 / 1.14 / 1.07
+//   100 x 9,000 lines: the modes' windows of 3 half-widths hold 3,210 lines: 2.89, 1.18 at every budget
+// (all lines: 10.1, 8.5, 7.0 LSFDs). Below 2,000 the beam gains little and
+// the small set loses; above it the cost grows with the lines for a few % of
+// standard error.
+const Eigen::Index kRefineLinesCarryingModes = 2000;
+
 const char* identificationStageName(IdentificationStage stage) {
   return kStageNames.of(stage);
 }
@@ -48,8 +61,8 @@ Result<void> fitSelection(const FrfMatrix& frf, const IdentificationOptions& opt
   };
   if (!options.refine) return bandLsfd();
 
-  // The refinement's first evaluation is the LSFD at the selected poles: on
-  // the band's lines (no thinning) it is out.lsfdModel, not computed twice.
+  // The refinement's first evaluation is the LSFD at the selected poles: it
+  // is out.lsfdModel (on the fitted lines when thinned), not computed twice.
   ModalModel start;
   start.responses = frf.responses;
   start.references = frf.references;
@@ -60,33 +73,38 @@ Result<void> fitSelection(const FrfMatrix& frf, const IdentificationOptions& opt
     md.participation = s.participation;
     start.modes.push_back(std::move(md));
   }
-  RefineOptions ro;
-  ro.bandLowHz = est.bandLowHz;
-  ro.bandHighHz = est.bandHighHz;
-  ro.maxIterations = options.maxRefineIterations;
-  ro.maxLines = options.refineMaxLines;
-  ro.progress = [&](int iteration, double) {
-    return report(IdentificationStage::Refinement,
-                  static_cast<double>(iteration) / static_cast<double>(std::max(1, options.maxRefineIterations)));
-  };
-  auto refined = refineModalModel(frf, start, ro);
+  auto refined = refineSelection(frf, start, options, [&](const IdentificationProgress& p) {
+    return report(p.stage, p.fraction);
+  });
   if (!refined) {
     if (refined.error().code == ErrorCode::Cancelled) return refined.error();
     // The LSFD's own error where it fails too (rank-deficient basis, band).
     MOZZI_TRY(bandLsfd());
     return refined.error();
   }
-  if (refined->fittedLines == refined->bandLines) {
-    out.lsfdModel = std::move(refined->startModel);
-  } else {
-    MOZZI_TRY(bandLsfd());
-  }
+  out.lsfdModel = std::move(refined->startModel);
   refined->startModel = ModalModel{};
   out.refined = std::move(refined).value();
   return {};
 }
 
 }  // namespace
+
+Result<RefineResult> refineSelection(const FrfMatrix& frf, const ModalModel& start, const IdentificationOptions& options,
+                                    const IdentificationCallback& progress) {
+  RefineOptions ro;
+  ro.bandLowHz = options.estimator.bandLowHz;
+  ro.bandHighHz = options.estimator.bandHighHz;
+  ro.maxIterations = options.maxRefineIterations;
+  ro.maxLines = options.refineMaxLines;
+  ro.progress = [&](int iteration, double) {
+    return !progress ||
+           progress(IdentificationProgress{IdentificationStage::Refinement,
+                                           static_cast<double>(iteration) /
+                                               static_cast<double>(std::max(1, options.maxRefineIterations))});
+  };
+  return refineModalModel(frf, start, ro);
+}
 
 Result<IdentificationResult> identifyModes(const FrfMatrix& frf, const IdentificationOptions& options,
                                            const IdentificationCallback& progress) {

@@ -38,6 +38,10 @@ struct IdentificationProgress {
 // Returning false cancels: identifyModes returns ErrorCode::Cancelled.
 using IdentificationCallback = std::function<bool(const IdentificationProgress&)>;
 
+// Bands of more lines than this are refined on the lines carrying the modes
+// (refine.h); the measurements behind the figure: identification.cpp.
+extern const Eigen::Index kRefineLinesCarryingModes;
+
 struct IdentificationOptions {
   IdentificationMethod method = IdentificationMethod::Plscf;
   // Band, orders, stability criteria, automatic selection; the LSCE window
@@ -46,14 +50,18 @@ struct IdentificationOptions {
   bool refine = true;
   int maxRefineIterations = 50;
   // Refinement on the lines carrying the modes when the band holds more
-  // (RefineOptions::maxLines); 0 = every line.
-  Eigen::Index refineMaxLines = 0;
+  // (RefineOptions::maxLines); 0 = every line. The default is the one of
+  // `mozzi-cli identify` and the workbench (identification.cpp says why).
+  Eigen::Index refineMaxLines = kRefineLinesCarryingModes;
 };
 
 struct IdentificationResult {
   StabilizationDiagram diagram;
   std::vector<SelectedPole> selected;
-  ModalModel lsfdModel;                 // LSFD for the selected poles, lower and upper residuals
+  // LSFD for the selected poles, lower and upper residuals: over the band's
+  // lines, or over the refinement's fitted lines when it was thinned (the
+  // refined model is then the one used: no LSFD over the band for it).
+  ModalModel lsfdModel;
   std::optional<RefineResult> refined;  // when options.refine
   // The final model: refined when refinement ran, else the LSFD one.
   const ModalModel& model() const { return refined ? refined->model : lsfdModel; }
@@ -63,6 +71,16 @@ struct IdentificationResult {
 // stable mode in band (NotFound), LSFD and refinement failures, Cancelled.
 Result<IdentificationResult> identifyModes(const FrfMatrix& frf, const IdentificationOptions& options,
                                            const IdentificationCallback& progress = {});
+
+// The refinement as identifyModes runs it, from a model of the band (only
+// its poles and participation factors are used): band, iterations and the
+// lines it fits (options.refineMaxLines: on the lines carrying the modes when
+// the band holds more; the model and the standard errors still describe
+// every line of the band, refine.h) from `options`; progress: Refinement
+// stage. The workbench's "refine the selection" runs this too.
+// Errors: refineModalModel's.
+Result<RefineResult> refineSelection(const FrfMatrix& frf, const ModalModel& start, const IdentificationOptions& options,
+                                    const IdentificationCallback& progress = {});
 
 // --- Re-selection -------------------------------------------------------------
 

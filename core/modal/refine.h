@@ -23,12 +23,16 @@
 // real residuals, P every real parameter (nonlinear and linear).
 //
 // Lines carrying the modes: when the band holds more than `maxLines` lines,
-// the fit uses the lines within 8 half-power half-widths (zeta f) of each
-// mode, which hold more than 99.9% of the information on its frequency and
-// damping (for an isolated mode, the integral of |dH/d sigma|^2), plus blocks
-// of 16 lines spread evenly over the rest of the band (for the residues and
-// residual terms), within `maxLines` unless the modes' own windows need more.
-// RefineResult says how many lines were used.
+// the poles are fitted on the lines within a few half-power half-widths
+// (zeta f) of each mode, 3 to 8 as the budget allows (3 hold 98.6% of the
+// information on an isolated mode's frequency and damping: the integral of
+// |dH/d sigma|^2), plus blocks of 16 lines spread evenly over the rest of
+// the band, within `maxLines` unless the modes' own windows need more. The
+// residues and residual terms of the result are then those of an LSFD over
+// every line of the band at the refined poles (one LSFD more), and s^2 of
+// the standard errors is that LSFD's: the standard errors are those of the
+// thinned fit (its J_K^T J_K) on the noise estimate of the whole band
+// (refine.cpp says why). RefineResult says how many lines were fitted.
 
 #include <functional>
 #include <vector>
@@ -53,12 +57,12 @@ struct RefineOptions : LsfdOptions {
 };
 
 struct RefineResult {
-  ModalModel model;                    // refined poles, residues and residual terms
+  ModalModel model;                    // refined poles, residues and residual terms (over the band)
   ModalModel startModel;               // LSFD at the initial poles on the fitted lines (the first evaluation;
                                        // the band's LSFD when fittedLines == bandLines)
   std::vector<double> frequencyStdHz;  // one standard error per mode [Hz]
   std::vector<double> zetaStd;         // one standard error per mode (zeta; eta's is twice)
-  double initialRelativeError = 0.0;   // sqrt(SSR / sum |H|^2) over the fitted lines, before
+  double initialRelativeError = 0.0;   // sqrt(SSR / sum |H|^2) of the fit over its fitted lines, before
   double finalRelativeError = 0.0;     // and after
   int iterations = 0;                  // Levenberg-Marquardt iterations
   int evaluations = 0;                 // evaluations of the projected residual

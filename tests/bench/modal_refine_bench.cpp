@@ -133,6 +133,89 @@ void runRefine(benchmark::State& state, const Case& c) {
   state.counters["zeta_rel_err"] = zErr;
 }
 
+// The all-lines refinement of a case, the reference of the thinned ones.
+const RefineResult& allLines(const Case& c) {
+  static std::vector<std::pair<const Case*, RefineResult>> kept;
+  for (const auto& k : kept)
+    if (k.first == &c) return k.second;
+  RefineOptions opt;
+  opt.bandLowHz = kLowHz;
+  opt.bandHighHz = kHighHz;
+  auto r = refineModalModel(c.frf, c.start, opt);
+  kept.emplace_back(&c, r ? std::move(r).value() : RefineResult{});
+  return kept.back().second;
+}
+
+// Counters of a thinned fit against the all-lines one and the truth:
+// largest |f_thin - f_all| / std_all (and of zeta), largest std_thin / std_all.
+void compareWithAllLines(benchmark::State& state, const Case& c, const RefineResult& thin) {
+  const RefineResult& all = allLines(c);
+  double df = 0.0, dz = 0.0, sf = 0.0, sz = 0.0, fErr = 0.0, zErr = 0.0;
+  for (std::size_t r = 0; r < thin.model.modes.size() && r < all.model.modes.size(); ++r) {
+    const Mode &a = all.model.modes[r], &b = thin.model.modes[r];
+    df = std::max(df, std::abs(a.frequencyHz() - b.frequencyHz()) / all.frequencyStdHz[r]);
+    dz = std::max(dz, std::abs(a.zeta() - b.zeta()) / all.zetaStd[r]);
+    sf = std::max(sf, thin.frequencyStdHz[r] / all.frequencyStdHz[r]);
+    sz = std::max(sz, thin.zetaStd[r] / all.zetaStd[r]);
+    const int k = static_cast<int>(std::lround((b.frequencyHz() - 80.0) / 90.0));
+    fErr = std::max(fErr, std::abs(b.frequencyHz() - bench::syntheticFrequencyHz(k)) / bench::syntheticFrequencyHz(k));
+    zErr = std::max(zErr, std::abs(b.zeta() - bench::syntheticZeta(k)) / bench::syntheticZeta(k));
+  }
+  state.counters["lines"] = static_cast<double>(thin.fittedLines);
+  state.counters["df_per_std"] = df;
+  state.counters["dzeta_per_std"] = dz;
+  state.counters["f_std_ratio"] = sf;
+  state.counters["zeta_std_ratio"] = sz;
+  state.counters["f_rel_err"] = fErr;
+  state.counters["zeta_rel_err"] = zErr;
+  state.counters["iterations"] = thin.iterations;
+}
+
+// The refinement on at most state.range(0) lines (RefineOptions::maxLines).
+void runRefineThinned(benchmark::State& state, const Case& c) {
+  if (c.poles.empty()) {
+    state.SkipWithError("no poles selected");
+    return;
+  }
+  RefineOptions opt;
+  opt.bandLowHz = kLowHz;
+  opt.bandHighHz = kHighHz;
+  opt.maxLines = state.range(0);
+  RefineResult last;
+  for (auto _ : state) {
+    auto r = refineModalModel(c.frf, c.start, opt);
+    if (!r) {
+      state.SkipWithError(r.error().describe().c_str());
+      return;
+    }
+    last = std::move(r).value();
+  }
+  compareWithAllLines(state, c, last);
+}
+
+// The whole refinement stage as identify runs it (refineSelection with the
+// default IdentificationOptions: thinned fit, then the LSFD over the band at
+// the refined poles when thinned).
+void runRefineStage(benchmark::State& state, const Case& c) {
+  if (c.poles.empty()) {
+    state.SkipWithError("no poles selected");
+    return;
+  }
+  IdentificationOptions opt;
+  opt.estimator.bandLowHz = kLowHz;
+  opt.estimator.bandHighHz = kHighHz;
+  RefineResult last;
+  for (auto _ : state) {
+    auto r = refineSelection(c.frf, c.start, opt);
+    if (!r) {
+      state.SkipWithError(r.error().describe().c_str());
+      return;
+    }
+    last = std::move(r).value();
+  }
+  compareWithAllLines(state, c, last);
+}
+
 void BM_Lsfd_100x20000(benchmark::State& state) {
   runLsfd(state, large());
 }
@@ -150,6 +233,15 @@ void BM_Refine_100x20000(benchmark::State& state) {
 }
 BENCHMARK(BM_Refine_100x20000)->Unit(benchmark::kMillisecond);
 
+void BM_RefineThinned_100x20000(benchmark::State& state) {
+  runRefineThinned(state, large());
+}
+BENCHMARK(BM_RefineThinned_100x20000)->Unit(benchmark::kMillisecond)->Arg(1000)->Arg(1500)->Arg(2000)->Arg(3000)->Arg(4500);
+void BM_RefineStage_100x20000(benchmark::State& state) {
+  runRefineStage(state, large());
+}
+BENCHMARK(BM_RefineStage_100x20000)->Unit(benchmark::kMillisecond);
+
 void BM_Lsfd_10x5000(benchmark::State& state) {
   runLsfd(state, small());
 }
@@ -166,6 +258,15 @@ void BM_Refine_10x5000(benchmark::State& state) {
   runRefine(state, small());
 }
 BENCHMARK(BM_Refine_10x5000)->Unit(benchmark::kMillisecond);
+
+void BM_RefineThinned_10x5000(benchmark::State& state) {
+  runRefineThinned(state, small());
+}
+BENCHMARK(BM_RefineThinned_10x5000)->Unit(benchmark::kMillisecond)->Arg(500)->Arg(750)->Arg(1000)->Arg(1500)->Arg(2250);
+void BM_RefineStage_10x5000(benchmark::State& state) {
+  runRefineStage(state, small());
+}
+BENCHMARK(BM_RefineStage_10x5000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace mozzi::core::modal

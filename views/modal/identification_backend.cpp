@@ -114,6 +114,8 @@ core::Result<Outcome> identify(const core::FrfMatrix& frf, const Options& option
   out.refined = true;
   out.frequencyStdHz = refined->frequencyStdHz;
   out.zetaStd = refined->zetaStd;
+  out.refinedLines = refined->fittedLines;
+  out.bandLines = refined->bandLines;
   progress.report(1.0, "done");
   return out;
 }
@@ -157,10 +159,10 @@ bool SelectionFitter::synthesis(Eigen::Index response, Eigen::Index reference, c
 core::Result<md::RefineResult> refine(const core::FrfMatrix& frf, const md::ModalModel& model, double lo, double hi,
                                       JobProgress& progress) {
   if (auto c = cancelledIf(progress); !c) return c.error();
-  md::RefineOptions ro;
-  ro.bandLowHz = lo;
-  ro.bandHighHz = hi;
-  return md::refineModalModel(frf, model, ro);
+  md::IdentificationOptions opt;  // the CLI's refinement: the lines it fits are the core's default
+  opt.estimator.bandLowHz = lo;
+  opt.estimator.bandHighHz = hi;
+  return md::refineSelection(frf, model, opt);
 }
 
 }  // namespace identification

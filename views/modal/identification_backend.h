@@ -53,6 +53,7 @@ struct Outcome {
   core::modal::ModalModel model;                     // model of the automatic selection
   bool refined = false;                              // model refined (the CLI's numbers)
   std::vector<double> frequencyStdHz, zetaStd;       // its standard errors (when refined)
+  Eigen::Index refinedLines = 0, bandLines = 0;      // lines the refinement fitted, of the band's (when refined)
   std::shared_ptr<const core::Vector> backdropDb;    // 20 log10 |sum| or of the first CMIF value, every line
 };
 

@@ -421,11 +421,16 @@ void IdentificationPage::onFinished(core::Result<identification::Outcome> result
   diagram_->repaint();  // drawn now, not at the next event loop turn
   diagramMs_ = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
   diagramCpuMs_ = threadCpuMs() - cpu0;
-  setStatus(tr("%n mode(s) selected automatically in %1 .. %2 Hz; click a pole to add or remove it.", nullptr,
-               static_cast<int>(automatic_.size()))
-                .arg(outcome_->options.bandLowHz)
-                .arg(outcome_->options.bandHighHz),
-            false);
+  QString status = tr("%n mode(s) selected automatically in %1 .. %2 Hz; click a pole to add or remove it.", nullptr,
+                      static_cast<int>(automatic_.size()))
+                       .arg(outcome_->options.bandLowHz)
+                       .arg(outcome_->options.bandHighHz);
+  if (outcome_->refined && outcome_->refinedLines < outcome_->bandLines) {  // as the CLI says it
+    status += QLatin1Char(' ') + tr("Refined on %L1 of %L2 band lines: those carrying the modes.")
+                                     .arg(static_cast<qlonglong>(outcome_->refinedLines))
+                                     .arg(static_cast<qlonglong>(outcome_->bandLines));
+  }
+  setStatus(status, false);
   if (log_)
     log_(tr("Identification of FRF set %1: %n mode(s)", nullptr, static_cast<int>(automatic_.size())).arg(frfSetId_));
   emit finished(true);

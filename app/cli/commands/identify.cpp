@@ -35,12 +35,8 @@ namespace uff = core::io::uff;
 
 constexpr const char* kUsage =
     "Usage: mozzi-cli identify FRF.uff --band LO:HI [--method plscf|lsce|circle|peak] [--max-order N]\n"
-    "                          [--stabilization OUT.csv] [--modes OUT.uff] [--json]\n"
+    "                          [--refine-all-lines] [--stabilization OUT.csv] [--modes OUT.uff] [--json]\n"
     "       mozzi-cli identify PROJECT.mozzi --frf-set ID --band LO:HI [--store] [same options]\n";
-
-// Refinement on the lines carrying the modes when the band holds more lines
-// than this (core/modal/refine.h; docs/cli/identify.md).
-constexpr Eigen::Index kRefineMaxLines = 0;
 
 int usage(std::ostream& err, const std::string& why) {
   err << "mozzi-cli identify: " << why << "\n" << kUsage;
@@ -79,6 +75,16 @@ core::Result<core::FrfMatrix> projectFrf(const core::io::ProjectStore& store, co
   return store.frfSet(id);
 }
 
+// 9000 -> "9,000".
+std::string groupedThousands(Eigen::Index n) {
+  std::string digits = std::to_string(n), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
 struct Row {
   double f = 0, zeta = 0;
   std::optional<double> fStd, zStd;
@@ -89,7 +95,7 @@ struct Row {
 // model order bounds the pLSCF/LSCE solve size.
 const OptionSpec kSpec{
     {"--method", "--stabilization", "--modes", "--frf-set"},
-    {"--json", "--store"},
+    {"--json", "--store", "--refine-all-lines"},
     {{"--band", "band in Hz, LO < HI", {{"LO", closed(0, 1e6, "Hz")}, {"HI", aboveTo(0, 1e6, "Hz")}}, ':'},
      {"--max-order", wholeNumber(8, 400), "largest model order"}},
     {"--stabilization", "--modes"}};
@@ -155,6 +161,7 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
 
   md::ModalModel model;
   std::vector<Row> rows;
+  Eigen::Index fittedLines = 0, bandLines = 0;  // of the refinement (pLSCF, LSCE)
   if (method == "plscf" || method == "lsce") {
     md::IdentificationOptions opt;  // the pLSCF options plus the LSCE window (defaults)
     opt.method = method == "lsce" ? md::IdentificationMethod::Lsce : md::IdentificationMethod::Plscf;
@@ -166,7 +173,9 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     opt.estimator.maxOrder = orderGiven || opt.method != md::IdentificationMethod::Plscf
                                  ? maxOrder
                                  : std::min(maxOrder, std::max(8, md::plscfOrderLimit(*frf, lo, hi)));
-    opt.refineMaxLines = kRefineMaxLines;
+    // The refinement on the lines carrying the modes where the band holds
+    // many (the core's default, the workbench's too), or on every line.
+    if (parsed->flag("--refine-all-lines")) opt.refineMaxLines = 0;
     auto res = md::identifyModes(*frf, opt);
     if (auto csv = parsed->value("--stabilization")) {
       // the diagram is written even when no mode qualifies
@@ -178,6 +187,8 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     }
     if (!res) return fail(err, res.error());
     model = res->model();
+    fittedLines = res->refined->fittedLines;
+    bandLines = res->refined->bandLines;
     for (std::size_t r = 0; r < model.modes.size(); ++r) {
       rows.push_back({model.modes[r].frequencyHz(), model.modes[r].zeta(), res->refined->frequencyStdHz[r],
                       res->refined->zetaStd[r], 0.0});
@@ -253,6 +264,7 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     j["band_hz"] = {lo, hi};
     j["normalisation"] =
         shapes->normalisation == md::Normalisation::UnitModalMass ? "unit modal mass" : "max component";
+    if (bandLines > 0) j["refinement"] = {{"fitted_lines", fittedLines}, {"band_lines", bandLines}};
     j["modes"] = nlohmann::json::array();
     for (const auto& r : rows) {
       nlohmann::json m = {{"frequency_hz", r.f}, {"zeta", r.zeta}, {"eta", 2 * r.zeta}, {"mpc", r.mpc}};
@@ -274,13 +286,17 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
                   2 * row.zeta, fs, zs, row.mpc);
     out << buf;
   }
+  if (fittedLines < bandLines) {
+    out << "refined on " << groupedThousands(fittedLines) << " of " << groupedThousands(bandLines)
+        << " band lines: those carrying the modes (--refine-all-lines fits every line)\n";
+  }
   if (storedId) out << "stored as modal result " << *storedId << "\n";
   return kExitOk;
 }
 
 const CommandRegistrar kRegistrar({"identify",
                                    "FRF.uff|PROJECT.mozzi [--frf-set ID [--store]] --band LO:HI "
-                                   "[--method plscf|lsce|circle|peak] [--max-order N] "
+                                   "[--method plscf|lsce|circle|peak] [--max-order N] [--refine-all-lines] "
                                    "[--stabilization OUT.csv] [--modes OUT.uff] [--json]",
                                    "Modal identification: frequencies, damping (zeta, eta), standard errors, MPC",
                                    identifyCommand, &kSpec});

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <random>
 
+#include "core/modal/identification.h"
+#include "core/modal/lsfd.h"
 #include "core/modal/synthetic_system.h"
 
 namespace mozzi::core::modal {
@@ -122,11 +124,13 @@ TEST(Refine, ConvergesAndStandardErrorsMatchScatter) {
 // pair 83.4 / 84.7 Hz and the 10%-damped mode among them): a band that cuts
 // a mode's skirt leaves a misfit the residual terms cannot take, which
 // s^2 counts as noise (predicted errors 1.8 x the scatter over 60-320 Hz).
-TEST(Refine, StandardErrorsWithinAQuarterOfTheScatterOf200Realisations) {
+void standardErrorsAgainstScatterOf200Realisations(Eigen::Index maxLines) {
   const auto sys = sixModeSystem();
   RefineOptions opt;
   opt.bandLowHz = 20.0;
   opt.bandHighHz = 380.0;
+  opt.maxLines = maxLines;
+  Eigen::Index fitted = 0, band = 0;
   constexpr int runs = 200, nm = 6;
   const ModalModel start = perturbedStart(sys);
   std::vector<std::vector<double>> f(nm), z(nm);
@@ -136,6 +140,8 @@ TEST(Refine, StandardErrorsWithinAQuarterOfTheScatterOf200Realisations) {
     auto res = refineModalModel(frf, start, opt);
     ASSERT_TRUE(res.ok()) << res.error().describe();
     ASSERT_EQ(res->model.modes.size(), static_cast<std::size_t>(nm));
+    fitted = res->fittedLines;
+    band = res->bandLines;
     for (std::size_t r = 0; r < nm; ++r) {
       f[r].push_back(res->model.modes[r].frequencyHz());
       z[r].push_back(res->model.modes[r].zeta());
@@ -160,16 +166,37 @@ TEST(Refine, StandardErrorsWithinAQuarterOfTheScatterOf200Realisations) {
     EXPECT_NEAR(fStd[r] / ef, 1.0, 0.25) << "mode " << r + 1;
     EXPECT_NEAR(zStd[r] / ez, 1.0, 0.25) << "mode " << r + 1;
   }
-  std::printf("pooled predicted / scatter ratio %.3f\n", std::exp(logRatio));
+  std::printf("pooled predicted / scatter ratio %.3f (fitted on %ld of %ld lines)\n", std::exp(logRatio),
+              static_cast<long>(fitted), static_cast<long>(band));
   EXPECT_NEAR(std::exp(logRatio), 1.0, 0.10);
+  if (maxLines > 0) {
+    EXPECT_LE(fitted, maxLines + 16);  // the last block of 16 lines may overrun
+    EXPECT_LT(fitted, band);
+  } else {
+    EXPECT_EQ(fitted, band);
+  }
+}
+
+TEST(Refine, StandardErrorsWithinAQuarterOfTheScatterOf200Realisations) {
+  standardErrorsAgainstScatterOf200Realisations(0);
+}
+
+// The same on the lines carrying the modes (RefineOptions::maxLines: about
+// 1,200 of the band's 1,801 lines, the modes' windows narrowed to fit 3/4 of
+// that and blocks of lines between them): the standard errors are those of
+// the thinned fit (its Jacobian, s^2 of the band's LSFD at its poles), so
+// they must match the scatter of the thinned fit's own estimates, with the
+// same tolerances.
+TEST(Refine, ThinnedStandardErrorsWithinAQuarterOfTheScatterOf200Realisations) {
+  standardErrorsAgainstScatterOf200Realisations(1200);
 }
 
 // Refinement on the lines carrying the modes: band 20-1000 Hz (4901 lines),
-// at most 3000 lines. The windows of 8 half-widths (mode 5, zeta 0.1 at
-// 214 Hz, alone spans 43-385 Hz) keep almost all the information on frequency
-// and damping, blocks of 16 lines cover the rest, so the estimates move by
-// less than one standard error from the all-lines fit and the standard errors
-// grow by less than 30%.
+// at most 3000 lines. The modes' windows, narrowed from 8 half-widths to fit
+// 3/4 of the budget (mode 5, zeta 0.1 at 214 Hz, spans 43-385 Hz at 8), keep
+// almost all the information on frequency and damping, blocks of 16 lines
+// cover the rest, so the estimates move by less than one standard error from
+// the all-lines fit and the standard errors grow by less than 30%.
 TEST(Refine, LinesCarryingTheModesKeepTheEstimates) {
   const auto sys = sixModeSystem();
   const FrfMatrix frf = noisy(sys, 5, 20.0, 1000.0);
@@ -194,6 +221,67 @@ TEST(Refine, LinesCarryingTheModesKeepTheEstimates) {
     EXPECT_LT(thin->frequencyStdHz[r], 1.3 * all->frequencyStdHz[r]) << "mode " << r + 1;
     EXPECT_LT(thin->zetaStd[r], 1.3 * all->zetaStd[r]) << "mode " << r + 1;
   }
+}
+
+// At the budget `mozzi-cli identify` and the workbench use
+// (kRefineLinesCarryingModes, 2,000 lines) on a band of 4,901 lines, for 20
+// noise realisations: the all-lines fit is efficient and the thinned one
+// uses a subset of the same data, so their difference has the spread
+// d = sqrt(std_thin^2 - std_all^2) (0.46 std_all when the thinned standard
+// error is 1.1 x). Every frequency and damping of the thinned fit must be
+// within 4 d of the all-lines fit's (240 quantities: the largest of 240
+// normal deviates exceeds 4 spreads with probability 1.5%) and within 1.5
+// all-lines standard errors; its standard errors at most 25% larger; its
+// residues and residual terms those of the LSFD over the whole band at its
+// poles.
+TEST(Refine, ThinnedAtTheDefaultBudgetAgreesWithTheAllLinesFit) {
+  const auto sys = sixModeSystem();
+  RefineOptions opt;
+  opt.bandLowHz = 20.0;
+  opt.bandHighHz = 1000.0;
+  double worstF = 0.0, worstZ = 0.0, worstRatio = 0.0, worstSpread = 0.0;
+  for (unsigned seed = 0; seed < 20; ++seed) {
+    const FrfMatrix frf = noisy(sys, 300 + seed, 20.0, 1000.0);
+    opt.maxLines = 0;
+    auto all = refineModalModel(frf, perturbedStart(sys), opt);
+    ASSERT_TRUE(all.ok()) << all.error().describe();
+    opt.maxLines = kRefineLinesCarryingModes;
+    auto thin = refineModalModel(frf, perturbedStart(sys), opt);
+    ASSERT_TRUE(thin.ok()) << thin.error().describe();
+    EXPECT_EQ(thin->bandLines, 4901);
+    EXPECT_LE(thin->fittedLines, kRefineLinesCarryingModes + 16);
+    std::vector<Complex> poles;
+    for (std::size_t r = 0; r < 6; ++r) {
+      const Mode &a = all->model.modes[r], &b = thin->model.modes[r];
+      poles.push_back(b.pole);
+      const double df = std::abs(a.frequencyHz() - b.frequencyHz()), dz = std::abs(a.zeta() - b.zeta());
+      const double sf = thin->frequencyStdHz[r], sz = thin->zetaStd[r];
+      const double af = all->frequencyStdHz[r], az = all->zetaStd[r];
+      worstF = std::max(worstF, df / af);
+      worstZ = std::max(worstZ, dz / az);
+      worstSpread = std::max({worstSpread, df / std::sqrt(std::max(sf * sf - af * af, 1e-6 * af * af)),
+                              dz / std::sqrt(std::max(sz * sz - az * az, 1e-6 * az * az))});
+      worstRatio = std::max({worstRatio, thin->frequencyStdHz[r] / all->frequencyStdHz[r],
+                             thin->zetaStd[r] / all->zetaStd[r]});
+    }
+    LsfdOptions band;
+    band.bandLowHz = opt.bandLowHz;
+    band.bandHighHz = opt.bandHighHz;
+    auto whole = lsfd(frf, poles, band);
+    ASSERT_TRUE(whole.ok()) << whole.error().describe();
+    for (std::size_t r = 0; r < 6; ++r) {
+      EXPECT_LT((thin->model.modes[r].residue - whole->modes[r].residue).norm(), 1e-9 * whole->modes[r].residue.norm());
+    }
+    EXPECT_LT((thin->model.upperResidual - whole->upperResidual).norm(), 1e-9 * whole->upperResidual.norm() + 1e-300);
+    EXPECT_LT((thin->model.lowerResidual - whole->lowerResidual).norm(), 1e-9 * whole->lowerResidual.norm() + 1e-300);
+  }
+  std::printf("largest |f_thin - f_all| %.2f, |zeta_thin - zeta_all| %.2f all-lines standard errors (%.2f spreads "
+              "of the difference); largest standard error ratio %.3f\n",
+              worstF, worstZ, worstSpread, worstRatio);
+  EXPECT_LT(worstSpread, 4.0);
+  EXPECT_LT(worstF, 1.5);
+  EXPECT_LT(worstZ, 1.5);
+  EXPECT_LT(worstRatio, 1.25);
 }
 
 TEST(Refine, ProgressCanCancel) {
