@@ -13,7 +13,7 @@ namespace {
 
 // Lines of the band the fit uses (refine.h: the lines carrying the modes when
 // the band holds more than maxLines).
-std::vector<LineSegment> fitLines(const FrfMatrix& frf, Eigen::Index k0, Eigen::Index nf, const ModalModel& initial,
+std::vector<LineSegment> fitLines(const FrfMatrix& frf, Eigen::Index k0, Eigen::Index nf, const Vector& theta,
                                   Eigen::Index maxLines) {
   if (maxLines <= 0 || nf <= maxLines) return {LineSegment{k0, nf}};
   // Each mode's window: 8 half-power half-widths (zeta f) on either side,
@@ -28,8 +28,8 @@ std::vector<LineSegment> fitLines(const FrfMatrix& frf, Eigen::Index k0, Eigen::
   const double* f = frf.frequencyHz.data() + k0;
   auto markModes = [&](double halfWidths) {
     std::fill(keep.begin(), keep.end(), 0);
-    for (const Mode& m : initial.modes) {
-      const double fr = m.frequencyHz(), half = halfWidths * m.zeta() * fr;
+    for (Eigen::Index r = 0; r < theta.size() / 2; ++r) {
+      const double fr = theta[2 * r], half = halfWidths * theta[2 * r + 1] * fr;
       const Eigen::Index c = std::lower_bound(f, f + nf, fr) - f;
       const Eigen::Index lo = std::min(std::lower_bound(f, f + nf, fr - half) - f, c - kMinHalfLines);
       const Eigen::Index hi = std::max(std::upper_bound(f, f + nf, fr + half) - f, c + kMinHalfLines);
@@ -47,11 +47,17 @@ std::vector<LineSegment> fitLines(const FrfMatrix& frf, Eigen::Index k0, Eigen::
   const Eigen::Index rest = nf - marked, budget = maxLines - marked;
   if (budget >= rest) return {LineSegment{k0, nf}};
   if (budget >= kBlock) {
-    // blocks of kBlock lines every `stride` lines over the whole band
-    const double stride = static_cast<double>(kBlock) * static_cast<double>(rest) / static_cast<double>(budget);
-    for (double s = 0.5 * (stride - kBlock); s < static_cast<double>(nf); s += stride) {
-      const Eigen::Index b = std::max<Eigen::Index>(0, static_cast<Eigen::Index>(s));
-      for (Eigen::Index k = b; k < std::min(b + kBlock, nf); ++k) keep[static_cast<std::size_t>(k)] = 1;
+    // blocks of kBlock lines every `stride` lines over the whole band, the
+    // stride a whole number (so that windows a line wider or narrower, poles
+    // a little apart, seldom move the blocks) and lengthened until the
+    // blocks stay within the budget
+    const std::vector<char> modes = keep;
+    for (Eigen::Index stride = (kBlock * rest + budget - 1) / budget;; ++stride) {
+      keep = modes;
+      for (Eigen::Index b = (stride - kBlock) / 2; b < nf; b += stride) {
+        for (Eigen::Index k = b; k < std::min(b + kBlock, nf); ++k) keep[static_cast<std::size_t>(k)] = 1;
+      }
+      if (std::count(keep.begin(), keep.end(), 1) <= maxLines) break;
     }
   }
   std::vector<LineSegment> out;
@@ -68,56 +74,18 @@ std::vector<LineSegment> fitLines(const FrfMatrix& frf, Eigen::Index k0, Eigen::
   return out;
 }
 
-}  // namespace
-
-Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& initial, const RefineOptions& opt) {
+// Levenberg-Marquardt on the projected functional of `vp` from theta, where
+// vp was just evaluated with Derivatives::Kaufman; on return theta is the
+// solution and vp holds its evaluation with J_K^T J_K. `linear`: the linear
+// parameters (p m). Counts iterations and evaluations into `out`.
+Result<void> levenbergMarquardt(ModalVarpro& vpRef, Vector& theta, Eigen::Index linear, const RefineOptions& opt,
+                                RefineResult& out) {
   const std::string where = "modal refinement";
-  MOZZI_TRY(frf.validate());
-  MOZZI_TRY(initial.validate());
-  if (initial.modes.empty()) return makeError(ErrorCode::InvalidArgument, "no modes to refine", where);
-  Eigen::Index k0 = 0;
-  while (k0 < frf.lineCount() && (frf.frequencyHz[k0] < opt.bandLowHz || frf.frequencyHz[k0] == 0.0)) ++k0;
-  Eigen::Index k = k0;
-  while (k < frf.lineCount() && frf.frequencyHz[k] <= opt.bandHighHz) ++k;
-  const Eigen::Index nf = k - k0;
-  const int nm = static_cast<int>(initial.modes.size());
-  const Eigen::Index m = frf.responseCount() * frf.referenceCount();
-  const Eigen::Index p = 2 * nm + (opt.lowerResidual ? 2 : 0) + (opt.upperResidual ? 2 : 0);
-  if (2 * nf * m <= 2 * nm + p * m) {
-    return makeError(
-        ErrorCode::InvalidArgument,
-        "band holds " + std::to_string(nf) + " lines, too few for " + std::to_string(2 * nm + p * m) + " parameters",
-        where + ", band");
-  }
-  auto segments = fitLines(frf, k0, nf, initial, opt.maxLines);
-  auto vp = ModalVarpro::create(frf, std::move(segments), nm, opt.lowerResidual, opt.upperResidual);
-  if (!vp) return makeError(vp.error().code, vp.error().message, where + ", band");
-
-  const Eigen::Index np = 2 * nm;
-  Vector theta(np);
-  for (int r = 0; r < nm; ++r) {
-    theta[2 * r] = initial.modes[static_cast<std::size_t>(r)].frequencyHz();
-    theta[2 * r + 1] = initial.modes[static_cast<std::size_t>(r)].zeta();
-  }
-  RefineResult out;
-  out.bandLines = nf;
-  out.fittedLines = vp->lineCount();
-  if (!vp->evaluate(theta, ModalVarpro::Derivatives::Kaufman)) {
-    return makeError(ErrorCode::NumericalFailure, "LSFD fails for the initial poles (rank-deficient basis)", where);
-  }
-  ++out.evaluations;
-  {
-    std::vector<Complex> start;
-    for (const Mode& md : initial.modes) start.push_back(md.pole);
-    out.startModel = modalModelFromLinear(*vp, frf, start);
-    for (int r = 0; r < nm; ++r) {
-      out.startModel.modes[static_cast<std::size_t>(r)].participation =
-          initial.modes[static_cast<std::size_t>(r)].participation;
-    }
-  }
+  ModalVarpro* vp = &vpRef;
+  const int nm = static_cast<int>(theta.size() / 2);
+  const Eigen::Index np = theta.size();
   const double yn2 = vp->dataNorm2();
   double ssr = vp->ssr();
-  out.initialRelativeError = std::sqrt(ssr / yn2);
   Matrix h = vp->kaufman();
   Vector g = vp->gradient();
   bool atTheta = true;  // vp holds the evaluation at theta
@@ -132,7 +100,7 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
   // Converged when the full Gauss-Newton step would lower SSR by less than
   // 1e-6 s^2 (s^2 = SSR / (N - P)): the step is then below 1e-3 standard
   // errors in every direction (delta^T J^T J delta = 2 x the decrease).
-  const double dof = static_cast<double>(2 * vp->lineCount() * m - (np + p * m));
+  const double dof = static_cast<double>(2 * vp->lineCount() * vp->frfCount() - (np + linear));
   Vector gnStep(np);
   // The last step: Gauss-Newton converges linearly here (the residual is
   // noise), each step's predicted decrease a factor `rate` of the one
@@ -144,7 +112,7 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
   double lastDecrease = 0.0;  // Gauss-Newton decrease predicted at the previous accepted point
   bool finalTrial = false, shortcutFailed = false;
   for (int it = 0; it < opt.maxIterations; ++it) {
-    if (opt.progress && !opt.progress(it, std::sqrt(ssr / yn2))) {
+    if (opt.progress && !opt.progress(out.iterations, std::sqrt(ssr / yn2))) {
       return makeError(ErrorCode::Cancelled, "refinement cancelled", where);
     }
     ldlt.compute(h);
@@ -222,6 +190,82 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
     ++out.evaluations;
   }
 
+  return {};
+}
+
+}  // namespace
+
+Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& initial, const RefineOptions& opt) {
+  const std::string where = "modal refinement";
+  MOZZI_TRY(frf.validate());
+  MOZZI_TRY(initial.validate());
+  if (initial.modes.empty()) return makeError(ErrorCode::InvalidArgument, "no modes to refine", where);
+  Eigen::Index k0 = 0;
+  while (k0 < frf.lineCount() && (frf.frequencyHz[k0] < opt.bandLowHz || frf.frequencyHz[k0] == 0.0)) ++k0;
+  Eigen::Index k = k0;
+  while (k < frf.lineCount() && frf.frequencyHz[k] <= opt.bandHighHz) ++k;
+  const Eigen::Index nf = k - k0;
+  const int nm = static_cast<int>(initial.modes.size());
+  const Eigen::Index m = frf.responseCount() * frf.referenceCount();
+  const Eigen::Index p = 2 * nm + (opt.lowerResidual ? 2 : 0) + (opt.upperResidual ? 2 : 0);
+  if (2 * nf * m <= 2 * nm + p * m) {
+    return makeError(
+        ErrorCode::InvalidArgument,
+        "band holds " + std::to_string(nf) + " lines, too few for " + std::to_string(2 * nm + p * m) + " parameters",
+        where + ", band");
+  }
+  Vector theta(2 * nm);
+  for (int r = 0; r < nm; ++r) {
+    theta[2 * r] = initial.modes[static_cast<std::size_t>(r)].frequencyHz();
+    theta[2 * r + 1] = initial.modes[static_cast<std::size_t>(r)].zeta();
+  }
+  auto vp = ModalVarpro::create(frf, fitLines(frf, k0, nf, theta, opt.maxLines), nm, opt.lowerResidual,
+                                opt.upperResidual);
+  if (!vp) return makeError(vp.error().code, vp.error().message, where + ", band");
+  RefineResult out;
+  out.bandLines = nf;
+  if (!vp->evaluate(theta, ModalVarpro::Derivatives::Kaufman)) {
+    return makeError(ErrorCode::NumericalFailure, "LSFD fails for the initial poles (rank-deficient basis)", where);
+  }
+  ++out.evaluations;
+  {
+    std::vector<Complex> start;
+    for (const Mode& md : initial.modes) start.push_back(md.pole);
+    out.startModel = modalModelFromLinear(*vp, frf, start);
+    for (int r = 0; r < nm; ++r) {
+      out.startModel.modes[static_cast<std::size_t>(r)].participation =
+          initial.modes[static_cast<std::size_t>(r)].participation;
+    }
+  }
+  const double yn2 = vp->dataNorm2();
+  out.initialRelativeError = std::sqrt(vp->ssr() / yn2);
+  MOZZI_TRY(levenbergMarquardt(*vp, theta, p * m, opt, out));
+  // Thinned: the lines are those of the start's poles; chosen again around
+  // the refined poles, and the fit repeated from there on them when they
+  // differ, so that the lines, and the result, depend on the solution, not
+  // on the start (a re-selection of the same modes in the diagram gives the
+  // same refined modes).
+  if (vp->lineCount() < nf) {
+    auto again = fitLines(frf, k0, nf, theta, opt.maxLines);
+    const auto& used = vp->segments();
+    const bool same = again.size() == used.size() &&
+                      std::equal(again.begin(), again.end(), used.begin(), [](const LineSegment& x, const LineSegment& y) {
+                        return x.first == y.first && x.count == y.count;
+                      });
+    if (!same) {
+      vp = ModalVarpro::create(frf, std::move(again), nm, opt.lowerResidual, opt.upperResidual);
+      if (!vp) return makeError(vp.error().code, vp.error().message, where + ", band");
+      if (!vp->evaluate(theta, ModalVarpro::Derivatives::Kaufman)) {
+        return makeError(ErrorCode::NumericalFailure, "LSFD fails on the lines of the refined poles", where);
+      }
+      ++out.evaluations;
+      MOZZI_TRY(levenbergMarquardt(*vp, theta, p * m, opt, out));
+    }
+  }
+  out.fittedLines = vp->lineCount();
+  const double dof = static_cast<double>(2 * vp->lineCount() * m - (2 * nm + p * m));
+  const Eigen::Index np = 2 * nm;
+
   // Model: poles from theta, residues and residual terms from X.
   std::vector<Complex> poles;
   for (int r = 0; r < nm; ++r) poles.push_back(poleFromFrequencyDamping(theta[2 * r], theta[2 * r + 1]));
@@ -236,7 +280,7 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
   // fewer than 10 would be left (an almost exact fit).
   const auto accurateSsr = [](ModalVarpro& v) { return v.ssr() > 1e-6 * v.dataNorm2() ? v.ssr() : v.explicitSsr(); };
   const double finalSsr = accurateSsr(*vp);
-  out.finalRelativeError = std::sqrt(finalSsr / yn2);
+  out.finalRelativeError = std::sqrt(finalSsr / vp->dataNorm2());
   // s^2 of the standard errors: the noise variance, estimated over every
   // line the fit used, or, when thinned, over every line of the band by the
   // LSFD there at the refined poles (one LSFD), which also gives the model's

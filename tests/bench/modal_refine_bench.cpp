@@ -236,7 +236,7 @@ BENCHMARK(BM_Refine_100x20000)->Unit(benchmark::kMillisecond);
 void BM_RefineThinned_100x20000(benchmark::State& state) {
   runRefineThinned(state, large());
 }
-BENCHMARK(BM_RefineThinned_100x20000)->Unit(benchmark::kMillisecond)->Arg(1000)->Arg(1500)->Arg(2000)->Arg(3000)->Arg(4500);
+BENCHMARK(BM_RefineThinned_100x20000)->Unit(benchmark::kMillisecond)->Arg(1000)->Arg(2000)->Arg(3000);
 void BM_RefineStage_100x20000(benchmark::State& state) {
   runRefineStage(state, large());
 }
@@ -262,7 +262,7 @@ BENCHMARK(BM_Refine_10x5000)->Unit(benchmark::kMillisecond);
 void BM_RefineThinned_10x5000(benchmark::State& state) {
   runRefineThinned(state, small());
 }
-BENCHMARK(BM_RefineThinned_10x5000)->Unit(benchmark::kMillisecond)->Arg(500)->Arg(750)->Arg(1000)->Arg(1500)->Arg(2250);
+BENCHMARK(BM_RefineThinned_10x5000)->Unit(benchmark::kMillisecond)->Arg(1000)->Arg(2000)->Arg(3000);
 void BM_RefineStage_10x5000(benchmark::State& state) {
   runRefineStage(state, small());
 }
