@@ -33,8 +33,11 @@ std::vector<LineSegment> fitLines(const FrfMatrix& frf, Eigen::Index k0, Eigen::
       const Eigen::Index c = std::lower_bound(f, f + nf, fr) - f;
       const Eigen::Index lo = std::min(std::lower_bound(f, f + nf, fr - half) - f, c - kMinHalfLines);
       const Eigen::Index hi = std::max(std::upper_bound(f, f + nf, fr + half) - f, c + kMinHalfLines);
-      for (Eigen::Index k = std::max<Eigen::Index>(lo, 0); k < std::min(hi, nf); ++k)
-        keep[static_cast<std::size_t>(k)] = 1;
+      // edges on a grid of kBlock lines: poles a little apart (the start and
+      // the solution) mostly give the same lines
+      const Eigen::Index first = std::max<Eigen::Index>(lo >= 0 ? lo / kBlock * kBlock : 0, 0);
+      const Eigen::Index last = std::min((hi + kBlock - 1) / kBlock * kBlock, nf);
+      for (Eigen::Index k = first; k < last; ++k) keep[static_cast<std::size_t>(k)] = 1;
     }
     return static_cast<Eigen::Index>(std::count(keep.begin(), keep.end(), 1));
   };
