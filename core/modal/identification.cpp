@@ -73,9 +73,8 @@ Result<void> fitSelection(const FrfMatrix& frf, const IdentificationOptions& opt
     md.participation = s.participation;
     start.modes.push_back(std::move(md));
   }
-  auto refined = refineSelection(frf, start, options, [&](const IdentificationProgress& p) {
-    return report(p.stage, p.fraction);
-  });
+  auto refined = refineSelection(frf, start, options,
+                                 [&](const IdentificationProgress& p) { return report(p.stage, p.fraction); });
   if (!refined) {
     if (refined.error().code == ErrorCode::Cancelled) return refined.error();
     // The LSFD's own error where it fails too (rank-deficient basis, band).
@@ -90,8 +89,8 @@ Result<void> fitSelection(const FrfMatrix& frf, const IdentificationOptions& opt
 
 }  // namespace
 
-Result<RefineResult> refineSelection(const FrfMatrix& frf, const ModalModel& start, const IdentificationOptions& options,
-                                    const IdentificationCallback& progress) {
+Result<RefineResult> refineSelection(const FrfMatrix& frf, const ModalModel& start,
+                                     const IdentificationOptions& options, const IdentificationCallback& progress) {
   RefineOptions ro;
   ro.bandLowHz = options.estimator.bandLowHz;
   ro.bandHighHz = options.estimator.bandHighHz;
@@ -99,9 +98,9 @@ Result<RefineResult> refineSelection(const FrfMatrix& frf, const ModalModel& sta
   ro.maxLines = options.refineMaxLines;
   ro.progress = [&](int iteration, double) {
     return !progress ||
-           progress(IdentificationProgress{IdentificationStage::Refinement,
-                                           static_cast<double>(iteration) /
-                                               static_cast<double>(std::max(1, options.maxRefineIterations))});
+           progress(IdentificationProgress{
+               IdentificationStage::Refinement,
+               static_cast<double>(iteration) / static_cast<double>(std::max(1, options.maxRefineIterations))});
   };
   return refineModalModel(frf, start, ro);
 }

@@ -79,8 +79,8 @@ Result<IdentificationResult> identifyModes(const FrfMatrix& frf, const Identific
 // every line of the band, refine.h) from `options`; progress: Refinement
 // stage. The workbench's "refine the selection" runs this too.
 // Errors: refineModalModel's.
-Result<RefineResult> refineSelection(const FrfMatrix& frf, const ModalModel& start, const IdentificationOptions& options,
-                                    const IdentificationCallback& progress = {});
+Result<RefineResult> refineSelection(const FrfMatrix& frf, const ModalModel& start,
+                                     const IdentificationOptions& options, const IdentificationCallback& progress = {});
 
 // --- Re-selection -------------------------------------------------------------
 

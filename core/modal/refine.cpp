@@ -222,8 +222,8 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
     theta[2 * r] = initial.modes[static_cast<std::size_t>(r)].frequencyHz();
     theta[2 * r + 1] = initial.modes[static_cast<std::size_t>(r)].zeta();
   }
-  auto vp = ModalVarpro::create(frf, fitLines(frf, k0, nf, theta, opt.maxLines), nm, opt.lowerResidual,
-                                opt.upperResidual);
+  auto vp =
+      ModalVarpro::create(frf, fitLines(frf, k0, nf, theta, opt.maxLines), nm, opt.lowerResidual, opt.upperResidual);
   if (!vp) return makeError(vp.error().code, vp.error().message, where + ", band");
   RefineResult out;
   out.bandLines = nf;
@@ -251,10 +251,10 @@ Result<RefineResult> refineModalModel(const FrfMatrix& frf, const ModalModel& in
   if (vp->lineCount() < nf) {
     auto again = fitLines(frf, k0, nf, theta, opt.maxLines);
     const auto& used = vp->segments();
-    const bool same = again.size() == used.size() &&
-                      std::equal(again.begin(), again.end(), used.begin(), [](const LineSegment& x, const LineSegment& y) {
-                        return x.first == y.first && x.count == y.count;
-                      });
+    const bool same = again.size() == used.size() && std::equal(again.begin(), again.end(), used.begin(),
+                                                                [](const LineSegment& x, const LineSegment& y) {
+                                                                  return x.first == y.first && x.count == y.count;
+                                                                });
     if (!same) {
       vp = ModalVarpro::create(frf, std::move(again), nm, opt.lowerResidual, opt.upperResidual);
       if (!vp) return makeError(vp.error().code, vp.error().message, where + ", band");

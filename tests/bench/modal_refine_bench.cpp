@@ -7,9 +7,16 @@
 //                      Golub-Pereyra normal equations ([Q, E]^T Y)
 //   BM_VarproKaufman_* one evaluation as the refinement's trials make it:
 //                      gradient and J_K^T J_K (Q^T Y, then Y X^T on the modes' rows)
-//   BM_Refine_*        the whole refinement with standard errors
+//   BM_Refine_*        the whole refinement with standard errors, every line
+//   BM_RefineThinned_*/N  the refinement on at most N lines, those carrying
+//                      the modes (RefineOptions::maxLines), with the LSFD over
+//                      the band at the refined poles
+//   BM_RefineStage_*   the stage as identify runs it (refineSelection with
+//                      the default options, kRefineLinesCarryingModes)
 // Counters: iterations and evaluations of the refinement, and its largest
-// relative frequency and damping errors against the generating modes.
+// relative frequency and damping errors against the generating modes; for
+// the thinned ones also the lines fitted, the largest differences from the
+// all-lines fit in its standard errors and the largest standard error ratio.
 // Figures and commands: docs/performance/commands.md.
 #include <benchmark/benchmark.h>
 

@@ -261,8 +261,8 @@ TEST(Refine, ThinnedAtTheDefaultBudgetAgreesWithTheAllLinesFit) {
       worstZ = std::max(worstZ, dz / az);
       worstSpread = std::max({worstSpread, df / std::sqrt(std::max(sf * sf - af * af, 1e-6 * af * af)),
                               dz / std::sqrt(std::max(sz * sz - az * az, 1e-6 * az * az))});
-      worstRatio = std::max({worstRatio, thin->frequencyStdHz[r] / all->frequencyStdHz[r],
-                             thin->zetaStd[r] / all->zetaStd[r]});
+      worstRatio =
+          std::max({worstRatio, thin->frequencyStdHz[r] / all->frequencyStdHz[r], thin->zetaStd[r] / all->zetaStd[r]});
     }
     LsfdOptions band;
     band.bandLowHz = opt.bandLowHz;
@@ -275,9 +275,10 @@ TEST(Refine, ThinnedAtTheDefaultBudgetAgreesWithTheAllLinesFit) {
     EXPECT_LT((thin->model.upperResidual - whole->upperResidual).norm(), 1e-9 * whole->upperResidual.norm() + 1e-300);
     EXPECT_LT((thin->model.lowerResidual - whole->lowerResidual).norm(), 1e-9 * whole->lowerResidual.norm() + 1e-300);
   }
-  std::printf("largest |f_thin - f_all| %.2f, |zeta_thin - zeta_all| %.2f all-lines standard errors (%.2f spreads "
-              "of the difference); largest standard error ratio %.3f\n",
-              worstF, worstZ, worstSpread, worstRatio);
+  std::printf(
+      "largest |f_thin - f_all| %.2f, |zeta_thin - zeta_all| %.2f all-lines standard errors (%.2f spreads "
+      "of the difference); largest standard error ratio %.3f\n",
+      worstF, worstZ, worstSpread, worstRatio);
   EXPECT_LT(worstSpread, 4.0);
   EXPECT_LT(worstF, 1.5);
   EXPECT_LT(worstZ, 1.5);
