@@ -190,6 +190,9 @@ class IdentificationPageTest : public QObject {
     QVERIFY(page.isRunning());  // off the GUI thread
     QVERIFY(waitFinished(finished, 600));
     QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(page.statusText()));
+    // The band's 47,873 lines are refined on those carrying the modes, and the status says so (as the CLI).
+    QVERIFY2(page.statusText().contains(QStringLiteral("of 47,873 band lines: those carrying the modes")),
+             qPrintable(page.statusText()));
 
     // The automatic selection: the four published modes (0.05%, README), no warning.
     const auto rows = page.tableRows();
