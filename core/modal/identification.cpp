@@ -25,12 +25,13 @@ constexpr auto kStageNames = enumTable(kStageEntries, "identification");
 // refinement stage (thinned fit and the LSFD over the band) in LSFDs of the
 // band, and the largest ratio of the thinned fit's standard errors to the
 // all-lines fit's, at 1,000 / 2,000 / 3,000 lines:
-//   beam (9 x 47,873 lines, 4 modes of 1-2 lines' width) 1.20 / 1.36 / 1.54 LSFD, 1.08 / 1.06 / 1.06
-//   10 x 4,501 lines (10 modes of 0.4-12 Hz half-width)  4.07 / 4.83 / 6.73, 1.19 / 1.14 / 1.07
-//   100 x 9,000 lines: the modes' windows of 3 half-widths hold 3,210 lines: 2.89, 1.18 at every budget
-// (all lines: 10.1, 8.5, 7.0 LSFDs). Below 2,000 the beam gains little and
-// the small set loses; above it the cost grows with the lines for a few % of
-// standard error.
+//   beam (9 x 47,873 lines, 4 modes 1-2 lines wide)    1.18 / 1.32 / 1.51 LSFD, 1.07 / 1.06 / 1.05
+//   10 x 4,501 lines (10 modes, 0.4-12 Hz half-widths) 4.3 / 4.5 / 10.4, 1.15 / 1.13 / 1.06
+//   100 x 9,000 lines: the modes' windows of 3 half-widths hold 3,344 lines: 2.9, 1.17 at every budget
+// (all lines: 9.6, 8.6, 6.9 LSFDs). Below 2,000 the beam gains little and
+// the small set loses standard error; above it the cost grows with the lines
+// for a few % of standard error (at 3,000 the small set's lines also moved
+// with the solution: a second fit).
 const Eigen::Index kRefineLinesCarryingModes = 2000;
 
 const char* identificationStageName(IdentificationStage stage) {
