@@ -28,7 +28,10 @@
 // information on an isolated mode's frequency and damping: the integral of
 // |dH/d sigma|^2), plus blocks of 16 lines spread evenly over the rest of
 // the band, within `maxLines` unless the modes' own windows need more. The
-// residues and residual terms of the result are then those of an LSFD over
+// lines are chosen around the start's poles, then again around the refined
+// ones, and the fit repeated on those when they differ (window edges on a
+// grid of 16 lines make that rare), so the result does not depend on the
+// start beyond the convergence tolerance. The residues and residual terms of the result are then those of an LSFD over
 // every line of the band at the refined poles (one LSFD more), and s^2 of
 // the standard errors is that LSFD's: the standard errors are those of the
 // thinned fit (its J_K^T J_K) on the noise estimate of the whole band
