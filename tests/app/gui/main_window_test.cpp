@@ -695,6 +695,35 @@ void MainWindowTest::screenshot() {
     QVERIFY(window_->grab().save(gapShot));
     qInfo("screenshot: %s", qPrintable(gapShot));
   }
+
+  // The project dock at 260 pixels: the second column holds counts only (the
+  // analyses' kinds are group rows), so the names keep the width.
+  auto* dock = window_->findChild<QDockWidget*>(QStringLiteral("projectDock"));
+  QVERIFY(dock);
+  window_->resizeDocks({dock}, {260}, Qt::Horizontal);
+  QTest::qWait(50);
+  auto* tree = window_->projectTree();
+  tree->expandAll();
+  QVERIFY2(tree->columnWidth(1) < tree->viewport()->width() / 4,
+           qPrintable(QStringLiteral("%1 of %2").arg(tree->columnWidth(1)).arg(tree->viewport()->width())));
+  const QString treeShot = QDir(folder).filePath(QStringLiteral("project_tree_260") + suffix + QStringLiteral(".png"));
+  QVERIFY(dock->grab().save(treeShot));
+  qInfo("screenshot: %s", qPrintable(treeShot));
+
+  // Every page as the Overview's start list opens it on the demo, for a look
+  // at this scale (text fits, plots show data).
+  auto* overview = window_->findChild<mozzi::views::ProjectOverview*>();
+  QVERIFY(overview);
+  const auto entries = overview->startEntries();
+  for (int i = 0; i < static_cast<int>(entries.size()); ++i) {
+    if (!entries[static_cast<std::size_t>(i)].available) continue;
+    QWidget* page = overview->openStartEntry(i);
+    if (!page) continue;
+    QTest::qWait(200);
+    const QString pageShot = QDir(folder).filePath(QStringLiteral("page_%1%2.png").arg(entries[i].pageId, suffix));
+    QVERIFY(window_->grab().save(pageShot));
+    qInfo("screenshot: %s", qPrintable(pageShot));
+  }
 }
 
 int main(int argc, char** argv) {
