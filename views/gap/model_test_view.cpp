@@ -134,25 +134,7 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   inputs->addWidget(testPath_, 1, 1);
   inputs->addWidget(browseTest_, 1, 2);
 
-  auto* options = new QHBoxLayout;
-  bandLabel_ = new QLabel(this);
-  bandLow_ = new QDoubleSpinBox(this);
-  bandHigh_ = new QDoubleSpinBox(this);
-  bandLow_->setObjectName(QStringLiteral("gapBandLow"));
-  bandHigh_->setObjectName(QStringLiteral("gapBandHigh"));
-  for (QDoubleSpinBox* box : {bandLow_, bandHigh_}) {
-    box->setRange(0.0, 1.0e6);
-    box->setDecimals(1);
-    box->setSuffix(QStringLiteral(" Hz"));
-  }
-  bootstrapLabel_ = new QLabel(this);
-  bootstrap_ = new QSpinBox(this);
-  bootstrap_->setRange(20, 5000);
-  bootstrap_->setValue(kBootstrapDefault);
-  multistartsLabel_ = new QLabel(this);
-  multistarts_ = new QSpinBox(this);
-  multistarts_->setRange(1, 100);
-  multistarts_->setValue(core::gap::DiagnosisOptions{}.multistarts);
+  QHBoxLayout* options = makeOptionsRow();
   load_ = new QPushButton(this);
   run_ = new QPushButton(this);
   run_->setObjectName(QStringLiteral("gapRun"));
@@ -160,15 +142,6 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   cancel_->setEnabled(false);
   export_ = new QPushButton(this);
   export_->setEnabled(false);
-  options->addWidget(bandLabel_);
-  options->addWidget(bandLow_);
-  options->addWidget(bandHigh_);
-  options->addSpacing(12);
-  options->addWidget(bootstrapLabel_);
-  options->addWidget(bootstrap_);
-  options->addWidget(multistartsLabel_);
-  options->addWidget(multistarts_);
-  options->addStretch(1);
 
   auto* progressRow = new QHBoxLayout;
   progress_ = new QProgressBar(this);
@@ -266,6 +239,39 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   connect(overlayChoice_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
           [this](int index) { showOverlay(index); });
   retranslate();
+}
+
+// Band, bootstrap samples and multistarts: the options of the next run.
+QHBoxLayout* ModelTestView::makeOptionsRow() {
+  auto* options = new QHBoxLayout;
+  bandLabel_ = new QLabel(this);
+  bandLow_ = new QDoubleSpinBox(this);
+  bandHigh_ = new QDoubleSpinBox(this);
+  bandLow_->setObjectName(QStringLiteral("gapBandLow"));
+  bandHigh_->setObjectName(QStringLiteral("gapBandHigh"));
+  for (QDoubleSpinBox* box : {bandLow_, bandHigh_}) {
+    box->setRange(0.0, 1.0e6);
+    box->setDecimals(1);
+    box->setSuffix(QStringLiteral(" Hz"));
+  }
+  bootstrapLabel_ = new QLabel(this);
+  bootstrap_ = new QSpinBox(this);
+  bootstrap_->setRange(20, 5000);
+  bootstrap_->setValue(kBootstrapDefault);
+  multistartsLabel_ = new QLabel(this);
+  multistarts_ = new QSpinBox(this);
+  multistarts_->setRange(1, 100);
+  multistarts_->setValue(core::gap::DiagnosisOptions{}.multistarts);
+  options->addWidget(bandLabel_);
+  options->addWidget(bandLow_);
+  options->addWidget(bandHigh_);
+  options->addSpacing(12);
+  options->addWidget(bootstrapLabel_);
+  options->addWidget(bootstrap_);
+  options->addWidget(multistartsLabel_);
+  options->addWidget(multistarts_);
+  options->addStretch(1);
+  return options;
 }
 
 ModelTestView::~ModelTestView() {

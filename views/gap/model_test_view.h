@@ -103,6 +103,7 @@ class ModelTestView : public QWidget {
   void onFinished(core::Result<core::gap::Diagnosis> result);
   void showDiagnosis();
   QHBoxLayout* makeKeptRow();
+  QHBoxLayout* makeOptionsRow();
   void refreshStored();
   void showVerdict(const QString& verdict, const QString& effects);
   void showDiagnosisText();

@@ -63,6 +63,42 @@ double logDistance(const QwtPlotCurve* model, const QwtPlotCurve* measured) {
 
 class ModelTestViewTest : public QObject {
   Q_OBJECT
+ private:
+  // The band and the candidate list of a view showing the kept `d` (of `problem`).
+  static void checkKeptSetup(const mozzi::views::ModelTestView& kept, const mozzi::core::gap::GapProblem& problem,
+                             const mozzi::core::gap::Diagnosis& d) {
+    // The band and the candidate list read as the kept diagnosis's, not as the
+    // next run's defaults (0 Hz, nothing listed): the band runs from the first
+    // to the last frequency line the problem fitted (whole file), the list holds
+    // the effects core ranked, ticked, each with the DOFs it was tried at.
+    auto* bandLow = kept.findChild<QDoubleSpinBox*>(QStringLiteral("gapBandLow"));
+    auto* bandHigh = kept.findChild<QDoubleSpinBox*>(QStringLiteral("gapBandHigh"));
+    QVERIFY(bandLow && bandHigh);
+    const auto lines = problem.overlay({d.calibrated.data(), -1, nullptr});
+    QVERIFY(!lines.empty() && lines[0].x.size() > 100);
+    QVERIFY(bandLow->isEnabled() && bandHigh->isEnabled());
+    QVERIFY2(std::abs(bandLow->value() - lines[0].x.front()) <= 0.05,
+             qPrintable(QStringLiteral("%1 vs %2").arg(bandLow->value()).arg(lines[0].x.front())));
+    QVERIFY2(std::abs(bandHigh->value() - lines[0].x.back()) <= 0.05,
+             qPrintable(QStringLiteral("%1 vs %2").arg(bandHigh->value()).arg(lines[0].x.back())));
+    QVERIFY(bandHigh->value() > bandLow->value());
+    QVERIFY(bandHigh->toolTip().contains(QStringLiteral("kept diagnosis")));
+    std::set<std::string> ranked;
+    for (const auto& e : d.ranking) ranked.insert(e.candidate.effect);
+    QVERIFY(ranked.count("mass_loading") == 1);
+    auto* keptEffects = kept.findChild<QListWidget*>(QStringLiteral("gapEffects"));
+    QVERIFY(keptEffects);
+    QCOMPARE(keptEffects->count(), static_cast<int>(ranked.size()));
+    for (int i = 0; i < keptEffects->count(); ++i) {
+      const QListWidgetItem* item = keptEffects->item(i);
+      QVERIFY2(ranked.count(item->text().toStdString()) == 1, qPrintable(item->text()));
+      QCOMPARE(item->checkState(), Qt::Checked);
+      if (item->text() == QStringLiteral("mass_loading")) QVERIFY(item->toolTip().contains(QStringLiteral("3+X")));
+    }
+    auto* effectsLabel = kept.findChild<QLabel*>(QStringLiteral("gapEffectsLabel"));
+    QVERIFY(effectsLabel && effectsLabel->text().contains(QStringLiteral("kept diagnosis")));
+  }
+
  private slots:
   void initTestCase() { files_ = writeFiles(); }
 
@@ -201,36 +237,10 @@ class ModelTestViewTest : public QObject {
     }
     QVERIFY2(keptAfter < 0.2 * keptBefore, qPrintable(QStringLiteral("%1 vs %2").arg(keptAfter).arg(keptBefore)));
 
-    // The band and the candidate list read as the kept diagnosis's, not as the
-    // next run's defaults (0 Hz, nothing listed): the band runs from the first
-    // to the last frequency line the problem fitted (whole file), the list holds
-    // the effects core ranked, ticked, each with the DOFs it was tried at.
-    auto* bandLow = kept.findChild<QDoubleSpinBox*>(QStringLiteral("gapBandLow"));
-    auto* bandHigh = kept.findChild<QDoubleSpinBox*>(QStringLiteral("gapBandHigh"));
-    QVERIFY(bandLow && bandHigh);
-    const auto lines = (*problem)->overlay({d->calibrated.data(), -1, nullptr});
-    QVERIFY(!lines.empty() && lines[0].x.size() > 100);
-    QVERIFY(bandLow->isEnabled() && bandHigh->isEnabled());
-    QVERIFY2(std::abs(bandLow->value() - lines[0].x.front()) <= 0.05,
-             qPrintable(QStringLiteral("%1 vs %2").arg(bandLow->value()).arg(lines[0].x.front())));
-    QVERIFY2(std::abs(bandHigh->value() - lines[0].x.back()) <= 0.05,
-             qPrintable(QStringLiteral("%1 vs %2").arg(bandHigh->value()).arg(lines[0].x.back())));
-    QVERIFY(bandHigh->value() > bandLow->value());
-    QVERIFY(bandHigh->toolTip().contains(QStringLiteral("kept diagnosis")));
-    std::set<std::string> ranked;
-    for (const auto& e : d->ranking) ranked.insert(e.candidate.effect);
-    QVERIFY(ranked.count("mass_loading") == 1);
-    auto* keptEffects = kept.findChild<QListWidget*>(QStringLiteral("gapEffects"));
-    QVERIFY(keptEffects);
-    QCOMPARE(keptEffects->count(), static_cast<int>(ranked.size()));
-    for (int i = 0; i < keptEffects->count(); ++i) {
-      const QListWidgetItem* item = keptEffects->item(i);
-      QVERIFY2(ranked.count(item->text().toStdString()) == 1, qPrintable(item->text()));
-      QCOMPARE(item->checkState(), Qt::Checked);
-      if (item->text() == QStringLiteral("mass_loading")) QVERIFY(item->toolTip().contains(QStringLiteral("3+X")));
-    }
+    checkKeptSetup(kept, **problem, *d);
+    if (QTest::currentTestFailed()) return;
     auto* effectsLabel = kept.findChild<QLabel*>(QStringLiteral("gapEffectsLabel"));
-    QVERIFY(effectsLabel && effectsLabel->text().contains(QStringLiteral("kept diagnosis")));
+    auto* keptEffects = kept.findChild<QListWidget*>(QStringLiteral("gapEffects"));
 
     // A run on files stays possible from a view showing a kept diagnosis; its
     // files' candidates replace the kept ones.
