@@ -197,6 +197,10 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   overlayPlot_ = new QwtPlot(overlay);
   overlayPlot_->setObjectName(QStringLiteral("gapOverlayPlot"));
   overlayPlot_->setCanvasBackground(Qt::white);
+  // QwtPlot's own MinimumExpanding policy makes its size hint (40 px per
+  // major tick of the left axis: a log axis over decades) the least height,
+  // which pushed the page below the tab area; it may shrink to its minimum.
+  overlayPlot_->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
   auto* grid = new QwtPlotGrid;
   grid->setMajorPen(QColor(0, 0, 0, 40), 0.0, Qt::DotLine);
   grid->attach(overlayPlot_);

@@ -64,7 +64,7 @@ double logDistance(const QwtPlotCurve* model, const QwtPlotCurve* measured) {
 class ModelTestViewTest : public QObject {
   Q_OBJECT
  private:
-  // The band and the candidate list of a view showing the kept `d` (of `problem`).
+  // The band, the candidate list and the height of a view showing the kept `d` (of `problem`).
   static void checkKeptSetup(const mozzi::views::ModelTestView& kept, const mozzi::core::gap::GapProblem& problem,
                              const mozzi::core::gap::Diagnosis& d) {
     // The band and the candidate list read as the kept diagnosis's, not as the
@@ -97,6 +97,10 @@ class ModelTestViewTest : public QObject {
     }
     auto* effectsLabel = kept.findChild<QLabel*>(QStringLiteral("gapEffectsLabel"));
     QVERIFY(effectsLabel && effectsLabel->text().contains(QStringLiteral("kept diagnosis")));
+    // Showing a kept diagnosis it still fits the tab area of a 1280 x 800
+    // window in height (menus, tabs and the log dock take about 250 pixels):
+    // the overlay's log axis over decades once made it 718 pixels tall.
+    QVERIFY2(kept.minimumSizeHint().height() <= 550, qPrintable(QString::number(kept.minimumSizeHint().height())));
   }
 
  private slots:
