@@ -74,6 +74,7 @@ class MainWindowTest : public QObject {
   void reportExportWritesThePdfAndRefusesTheProject();
   void reportDialogChoiceIsSavedAndWritten();
   void screenshot();
+  void narrowDockAndEveryPageScreenshots();
 
  private:
   QString file(const QString& name) const { return QDir(dir_.path()).filePath(name); }
@@ -696,6 +697,20 @@ void MainWindowTest::screenshot() {
     QVERIFY(window_->grab().save(gapShot));
     qInfo("screenshot: %s", qPrintable(gapShot));
   }
+}
+
+// On the demo the screenshot above made (making one takes minutes on a loaded
+// machine, more than a test function may take): the project dock at 260
+// pixels and every page, at this scale.
+void MainWindowTest::narrowDockAndEveryPageScreenshots() {
+  const QString demo = file(QStringLiteral("screenshot.mozzi"));
+  QVERIFY(QFileInfo::exists(demo) ? window_->openProject(demo) : window_->createDemoProject(demo));
+  window_->showNormal();
+  window_->resize(1280, 800);
+  QTest::qWait(50);
+  const QString folder = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR", QDir::tempPath());
+  const QString scale = qEnvironmentVariable("QT_SCALE_FACTOR");
+  const QString suffix = scale.isEmpty() ? QString() : QStringLiteral("_scale%1").arg(scale);
 
   // The project dock at 260 pixels: the second column holds counts only (the
   // analyses' kinds are group rows), so the names keep the width.
