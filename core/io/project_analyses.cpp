@@ -59,19 +59,11 @@ Result<StoredAnalysis> ProjectStore::analysis(std::int64_t analysisId) const {
   sql::Statement head(db_,
                       "SELECT id, specimen_id, model_id, frf_set_id, modal_result_id, rig_test_id, tyre_test_id, kind,"
                       " name, result_json FROM analysis WHERE id = ?1");
-  MOZZI_TRY(head.bindAll(analysisId).single("cannot read the analysis", "no such analysis", where));
-  const sql::Row h(head.get());
+  MOZZI_TRY(head.lookup(analysisId, "analysis", where));
   StoredAnalysis a;
-  a.id = h.int64(0);
-  a.specimenId = h.int64(1);
-  a.modelId = h.optionalInt64(2);
-  a.frfSetId = h.optionalInt64(3);
-  a.modalResultId = h.optionalInt64(4);
-  a.rigTestId = h.optionalInt64(5);
-  a.tyreTestId = h.optionalInt64(6);
-  a.kind = h.text(7);
-  a.name = h.text(8);
-  a.resultJson = h.text(9);
+  sql::Row(head.get())
+      .into(a.id, a.specimenId, a.modelId, a.frfSetId, a.modalResultId, a.rigTestId, a.tyreTestId, a.kind, a.name,
+            a.resultJson);
   sql::Statement stmt(db_,
                       "SELECT band_low_hz, band_high_hz, mode_index, dof_node, dof_direction, condition, effect, size,"
                       " unit, uncertainty, remaining_gap FROM gap_finding WHERE analysis_id = ?1 ORDER BY id");
@@ -93,6 +85,20 @@ Result<std::vector<StoredAnalysis>> ProjectStore::analyses() const {
     MOZZI_TRY_ASSIGN(auto a, analysis(id));
     out.push_back(std::move(a));
   }
+  return out;
+}
+
+// One query over the analysis table's header columns: a listing never reads
+// result_json (a diagnosis keeps its overlay curves there) nor the findings.
+Result<std::vector<AnalysisInfo>> ProjectStore::analysisInfos() const {
+  const std::lock_guard<std::recursive_mutex> lock(*mutex_);
+  sql::Statement stmt(db_, "SELECT id, specimen_id, kind, name FROM analysis ORDER BY id");
+  std::vector<AnalysisInfo> out;
+  MOZZI_TRY(stmt.forEachRow("cannot list the analyses", path_, [&](const sql::Row& r) {
+    AnalysisInfo info;
+    r.into(info.id, info.specimenId, info.kind, info.name);
+    out.push_back(std::move(info));
+  }));
   return out;
 }
 

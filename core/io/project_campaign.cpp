@@ -19,7 +19,7 @@ Result<StoredCampaign> ProjectStore::campaign(std::int64_t campaignId) const {
   const std::lock_guard<std::recursive_mutex> lock(*mutex_);
   const std::string where = campaignWhere(path_, campaignId);
   sql::Statement stmt(db_, std::string("SELECT ") + sql::kCampaignColumns + " FROM campaign WHERE id = ?1");
-  MOZZI_TRY(stmt.bindAll(campaignId).single("cannot read the campaign", "no such campaign", where));
+  MOZZI_TRY(stmt.lookup(campaignId, "campaign", where));
   return sql::campaignFromRow(stmt.get());
 }
 

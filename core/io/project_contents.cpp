@@ -46,8 +46,9 @@ Result<std::vector<SpecimenContents>> projectContents(const ProjectStore& store)
   }
   MOZZI_TRY_ASSIGN(const auto tyreTests, store.tyreTests());
   file(tyreTests, &SpecimenContents::tyreTests);
-  MOZZI_TRY_ASSIGN(const auto analyses, store.analyses());
-  file(analyses, &SpecimenContents::analyses);
+  MOZZI_TRY_ASSIGN(const auto analyses, store.analysisInfos());
+  for (const auto& analysis : analyses)
+    if (auto* c = find(all, analysis.specimenId)) c->analyses.push_back(analysis);
   return all;
 }
 

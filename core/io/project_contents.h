@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/common/result.h"
+#include "core/io/project_records.h"
 
 namespace mozzi::core::io {
 
@@ -26,7 +27,9 @@ struct SpecimenContents {
   std::vector<std::int64_t> staticRigTests;   // rig tests of kind "static"
   std::vector<std::int64_t> dynamicRigTests;  // every other rig test (sine sweeps)
   std::vector<std::int64_t> tyreTests;
-  std::vector<std::int64_t> analyses;  // gap diagnoses and other stored analyses
+  // Gap diagnoses and other stored analyses, each with its kind and name (the
+  // page of its kind opens it), in id order; their results are not read.
+  std::vector<AnalysisInfo> analyses;
 };
 
 // One entry per specimen, in the summary's order.

@@ -109,7 +109,7 @@ Result<FrfMatrix> ProjectStore::frfSet(std::int64_t frfSetId) const {
   {
     sql::Statement stmt(db_, "SELECT frf_type, line_count, frequency_hz, " + crcColumn("content_crc32") +
                                  " FROM frf_set WHERE id = ?1");
-    MOZZI_TRY(stmt.bindAll(frfSetId).single("cannot read the FRF set", "no such FRF set", where));
+    MOZZI_TRY(stmt.lookup(frfSetId, "FRF set", where));
     {
       ContentCrc crc;
       crc.add(sqlite3_column_int64(stmt.get(), 0)).add(sqlite3_column_int64(stmt.get(), 1));

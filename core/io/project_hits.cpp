@@ -95,7 +95,7 @@ Result<StoredHit> ProjectStore::hit(std::int64_t hitId) const {
                       "SELECT id, campaign_id, sequence, point_node, point_direction, recorded_utc, sample_rate_hz,"
                       " channel_count, sample_count, encoding, samples, samples_crc32, accepted, quality_flags,"
                       " quality_reasons FROM hit WHERE id = ?1");
-  MOZZI_TRY(head.bindAll(hitId).single("cannot read the hit", "no such hit", where));
+  MOZZI_TRY(head.lookup(hitId, "hit", where));
   const sql::Row r(head.get());
   StoredHit h;
   h.id = r.int64(0);

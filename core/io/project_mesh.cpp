@@ -176,7 +176,7 @@ Result<StoredRigSetup> ProjectStore::rigSetup(std::int64_t rigSetupId) const {
   sql::Statement head(db_,
                       "SELECT id, specimen_id, name, rig_kind, driver, axis_map_json, parameters_json FROM rig_setup"
                       " WHERE id = ?1");
-  MOZZI_TRY(head.bindAll(rigSetupId).single("cannot read the rig set-up", "no such rig set-up", where));
+  MOZZI_TRY(head.lookup(rigSetupId, "rig set-up", where));
   const sql::Row h(head.get());
   StoredRigSetup s{h.int64(0), h.int64(1), h.text(2), h.text(3), h.text(4), h.text(5), h.text(6), {}};
   sql::Statement stmt(db_,

@@ -296,4 +296,13 @@ struct StoredAnalysis {
   std::vector<Finding> findings;
 };
 
+// A stored analysis without its result and findings, for lists (project
+// contents, project tree): read without touching result_json.
+struct AnalysisInfo {
+  std::int64_t id = 0;
+  std::int64_t specimenId = 0;
+  std::string kind;  // "gap-diagnosis", "stability", "wheelchair", ...
+  std::string name;
+};
+
 }  // namespace mozzi::core::io

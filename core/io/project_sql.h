@@ -78,8 +78,32 @@ class Row {
   std::optional<Dof> optionalDof(int nodeColumn, int directionColumn) const {
     return columnOptionalDof(stmt_, nodeColumn, directionColumn);
   }
+  // Reads columns 0, 1, ... into `out` in order, by each one's type: integers,
+  // double, std::string, std::optional<std::int64_t> or std::optional<int>
+  // (NULL: empty). The mirror of Statement::bindAll for a record's header row.
+  template <class... Out>
+  void into(Out&... out) const {
+    int column = 0;
+    (readNext(column, out), ...);
+  }
 
  private:
+  template <class T>
+  void readNext(int& column, T& out) const {
+    if constexpr (std::is_same_v<T, std::string>) {
+      out = text(column++);
+    } else if constexpr (std::is_same_v<T, std::optional<std::int64_t>>) {
+      out = optionalInt64(column++);
+    } else if constexpr (std::is_same_v<T, std::optional<int>>) {
+      out = optionalInt32(column++);
+    } else if constexpr (std::is_floating_point_v<T>) {
+      out = real(column++);
+    } else {
+      static_assert(std::is_integral_v<T>, "Row::into reads integers, doubles, strings and optional integers");
+      out = static_cast<T>(int64(column++));
+    }
+  }
+
   sqlite3_stmt* stmt_;
 };
 
@@ -147,6 +171,12 @@ class Statement {
   // Steps to the one row a lookup by key returns: NotFound "<absent>" when
   // there is none, an error naming `what` when SQLite fails.
   Result<void> single(const std::string& what, const std::string& absent, const std::string& where);
+  // The header row of record `id` (a statement selecting "... WHERE id = ?1"):
+  // binds ?1 and steps to it; "cannot read the <noun>" when SQLite fails,
+  // NotFound "no such <noun>" when there is none.
+  Result<void> lookup(std::int64_t id, const std::string& noun, const std::string& where) {
+    return bindAll(id).single("cannot read the " + noun, "no such " + noun, where);
+  }
   // Steps once: true at a row, false past the last one, an error naming
   // `what` when SQLite fails.
   Result<bool> next(const std::string& what, const std::string& where);

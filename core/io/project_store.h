@@ -203,6 +203,8 @@ class ProjectStore {
   Result<std::int64_t> addAnalysis(const StoredAnalysis& analysis);
   Result<StoredAnalysis> analysis(std::int64_t analysisId) const;
   Result<std::vector<StoredAnalysis>> analyses() const;  // every analysis, in id order
+  // Every analysis's id, specimen, kind and name, in id order (one query; no result JSON, no findings).
+  Result<std::vector<AnalysisInfo>> analysisInfos() const;
 
   // Reads every stored record back (hits, rig-test records, FRF sets, modal
   // results, meshes, rig tests, tyre tests), verifying its checksum, and runs

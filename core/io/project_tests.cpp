@@ -66,19 +66,13 @@ Result<StoredRigTest> ProjectStore::readRigTest(std::int64_t rigTestId, bool ver
                       "SELECT id, specimen_id, rig_setup_id, kind, name, parameters_json, status, status_note,"
                       " recorded_utc, " +
                           crcColumn("content_crc32") + " FROM rig_test WHERE id = ?1");
-  MOZZI_TRY(head.bindAll(rigTestId).single("cannot read the rig test", "no such rig test", where));
-  const sql::Row h(head.get());
+  MOZZI_TRY(head.lookup(rigTestId, "rig test", where));
   StoredRigTest t;
-  t.id = h.int64(0);
-  t.specimenId = h.int64(1);
-  t.rigSetupId = h.optionalInt64(2);
-  const std::string kind = h.text(3);
+  std::string kind, status;
+  sql::Row(head.get())
+      .into(t.id, t.specimenId, t.rigSetupId, kind, t.name, t.parametersJson, status, t.statusNote, t.recordedUtc);
   t.kind = kind == "dynamic" ? StoredRigTest::Kind::Dynamic : StoredRigTest::Kind::Static;
-  t.name = h.text(4);
-  t.parametersJson = h.text(5);
-  t.status = parseTestStatus(h.text(6));
-  t.statusNote = h.text(7);
-  t.recordedUtc = h.text(8);
+  t.status = parseTestStatus(status);
   sql::Statement stmt(
       db_, "SELECT quantity, value, unit, uncertainty, step FROM rig_test_result WHERE rig_test_id = ?1 ORDER BY id");
   MOZZI_TRY(stmt.bindAll(rigTestId).forEachRow("cannot read rig test results", where, [&](const sql::Row& r) {
@@ -177,21 +171,13 @@ Result<StoredTyreTest> ProjectStore::readTyreTest(std::int64_t tyreTestId, bool 
                       "SELECT id, specimen_id, rig_setup_id, name, kind, inflation_pressure_pa, vertical_load_n,"
                       " speed_m_s, status, status_note, parameters_json, recorded_utc, " +
                           crcColumn("content_crc32") + " FROM tyre_test WHERE id = ?1");
-  MOZZI_TRY(head.bindAll(tyreTestId).single("cannot read the tyre test", "no such tyre test", where));
-  const sql::Row h(head.get());
+  MOZZI_TRY(head.lookup(tyreTestId, "tyre test", where));
   StoredTyreTest t;
-  t.id = h.int64(0);
-  t.specimenId = h.int64(1);
-  t.rigSetupId = h.optionalInt64(2);
-  t.name = h.text(3);
-  t.kind = h.text(4);
-  t.inflationPressurePa = h.real(5);
-  t.verticalLoadN = h.real(6);
-  t.speedMps = h.real(7);
-  t.status = parseTestStatus(h.text(8));
-  t.statusNote = h.text(9);
-  t.parametersJson = h.text(10);
-  t.recordedUtc = h.text(11);
+  std::string status;
+  sql::Row(head.get())
+      .into(t.id, t.specimenId, t.rigSetupId, t.name, t.kind, t.inflationPressurePa, t.verticalLoadN, t.speedMps,
+            status, t.statusNote, t.parametersJson, t.recordedUtc);
+  t.status = parseTestStatus(status);
   sql::Statement points(db_,
                         "SELECT slip_angle_rad, camber_rad, lateral_force_n, aligning_moment_nm, overturning_moment_nm"
                         " FROM tyre_test_point WHERE tyre_test_id = ?1 ORDER BY point_index");

@@ -14,7 +14,7 @@ int fillKeptAnalyses(QComboBox* box, const ProjectModel* project, const std::str
   const QSignalBlocker block(box);
   box->clear();
   if (project && project->store()) {
-    if (auto analyses = project->store()->analyses())
+    if (auto analyses = project->store()->analysisInfos())  // the listing: no result JSON read
       for (const auto& a : *analyses)
         if (a.kind == kind)
           box->addItem(QCoreApplication::translate("KeptAnalyses", "%1 (analysis %2)")

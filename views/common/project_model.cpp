@@ -76,6 +76,7 @@ core::Result<void> ProjectModel::replaceStore(core::Result<core::io::ProjectStor
   auto next = std::make_shared<core::io::ProjectStore>(std::move(opened).value());
   if (store_) emit aboutToClose();
   store_ = std::move(next);
+  contents_.reset();
   emit projectChanged();
   return {};
 }
@@ -85,6 +86,7 @@ core::Result<void> ProjectModel::open(const QString& path) {
   // and come back read-only, so just show it again.
   const QString canonical = QFileInfo(path).canonicalFilePath();
   if (store_ && !canonical.isEmpty() && canonical == QFileInfo(this->path()).canonicalFilePath()) {
+    contents_.reset();
     emit projectChanged();
     return {};
   }
@@ -116,7 +118,17 @@ void ProjectModel::close() {
   if (!store_) return;
   emit aboutToClose();
   store_.reset();
+  contents_.reset();
   emit projectChanged();
+}
+
+const std::vector<core::io::SpecimenContents>& ProjectModel::contents() const {
+  if (!contents_) {
+    contents_.emplace();
+    if (store_)
+      if (auto read = core::io::projectContents(*store_)) contents_ = std::move(read).value();
+  }
+  return *contents_;
 }
 
 QString ProjectModel::recordName(RecordKind kind, qint64 id) const {
@@ -277,6 +289,8 @@ void ProjectModel::notifyChanged(RecordKind kind, qint64 id) {
 }
 
 void ProjectModel::emitChanged(RecordKind kind, qint64 id) {
+  // A hit changes no specimen's contents (the campaign is listed, not its hits).
+  if (kind != RecordKind::Hit) contents_.reset();
   switch (kind) {
     case RecordKind::None: return;
     case RecordKind::Project: emit projectChanged(); break;

@@ -14,10 +14,12 @@
 #include <QObject>
 #include <QString>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/common/frf_matrix.h"
 #include "core/common/result.h"
+#include "core/io/project_contents.h"
 #include "core/io/project_records.h"
 #include "core/io/project_store.h"
 #include "core/io/uff_import.h"
@@ -80,6 +82,12 @@ class ProjectModel : public QObject {
 
   // Convenience reads (errors when no project is open).
   core::Result<core::io::ProjectSummary> summary() const;
+  // What each specimen holds (core::io::projectContents: record ids by kind,
+  // each analysis with its kind), read once after each change of the project
+  // and shared by every reader (the Overview, the project tree). Empty when no
+  // project is open or it cannot be read. GUI thread only; valid until the
+  // next change signal.
+  const std::vector<core::io::SpecimenContents>& contents() const;
   // A short display name for a record ("Frame A", "frf.uff"); empty if unknown.
   QString recordName(RecordKind kind, qint64 id) const;
 
@@ -132,6 +140,7 @@ class ProjectModel : public QObject {
 
   std::shared_ptr<core::io::ProjectStore> store_;
   QString mozziVersion_;
+  mutable std::optional<std::vector<core::io::SpecimenContents>> contents_;  // contents(), until the next change
 };
 
 }  // namespace views

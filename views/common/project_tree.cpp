@@ -6,6 +6,9 @@
 #include <QHeaderView>
 #include <QTreeWidgetItemIterator>
 
+#include <algorithm>
+#include <map>
+
 namespace mozzi {
 namespace views {
 
@@ -26,6 +29,14 @@ QString analysisKindText(const std::string& kind) {
   if (kind == "stability") return ProjectTree::tr("stability sweep");
   if (kind == "wheelchair") return ProjectTree::tr("wheelchair manoeuvre");
   if (kind == "gap-diagnosis") return ProjectTree::tr("gap diagnosis");
+  return text(kind);
+}
+
+// The group row of the stored analyses of one kind.
+QString analysisGroupText(const std::string& kind) {
+  if (kind == "stability") return ProjectTree::tr("Stability sweeps");
+  if (kind == "wheelchair") return ProjectTree::tr("Wheelchair manoeuvres");
+  if (kind == "gap-diagnosis") return ProjectTree::tr("Gap diagnoses");
   return text(kind);
 }
 
@@ -189,18 +200,27 @@ void ProjectTree::refresh() {
   if (auto tests = store->rigTests(); tests && !tests->empty()) addTests(tr("Rig tests"), RecordKind::RigTest, *tests);
   if (auto tests = store->tyreTests(); tests && !tests->empty())
     addTests(tr("Tyre tests"), RecordKind::TyreTest, *tests);
-  // Stored analyses (stability sweeps, wheelchair manoeuvres, gap diagnoses):
-  // double-clicked, each opens on the page of its kind.
-  if (auto analyses = store->analyses(); analyses && !analyses->empty()) {
-    auto* group = addRow(root, {tr("Analyses"), QString::number(analyses->size())}, {});
-    for (const auto& a : *analyses) {
-      auto* row = addRow(group, {text(a.name), analysisKindText(a.kind)},
-                         {RecordKind::Analysis, a.id, a.specimenId, text(a.kind)});
+  // Stored analyses (stability sweeps, wheelchair manoeuvres, gap diagnoses),
+  // from the model's listing (no result read), grouped by kind so that the
+  // second column stays a count: double-clicked, each opens on the page of its kind.
+  std::vector<core::io::AnalysisInfo> analyses;
+  for (const auto& c : model_->contents()) analyses.insert(analyses.end(), c.analyses.begin(), c.analyses.end());
+  if (!analyses.empty()) {
+    std::stable_sort(analyses.begin(), analyses.end(), [](const auto& x, const auto& y) { return x.id < y.id; });
+    auto* group = addRow(root, {tr("Analyses"), QString::number(analyses.size())}, {});
+    std::map<std::string, QTreeWidgetItem*> kinds;  // kind -> its row, in order of the first analysis of each
+    for (const auto& a : analyses) {
+      QTreeWidgetItem*& kindRow = kinds[a.kind];
+      if (!kindRow) kindRow = addRow(group, {analysisGroupText(a.kind), QString()}, {});
+      kindRow->setText(1, QString::number(kindRow->childCount() + 1));
+      auto* row = addRow(kindRow, {text(a.name)}, {RecordKind::Analysis, a.id, a.specimenId, text(a.kind)});
+      row->setToolTip(0, tr("%1 (%2)").arg(text(a.name), analysisKindText(a.kind)));
       row->setData(0, kRoleProperties,
                    QStringList{tr("Name"), text(a.name), tr("Kind"), analysisKindText(a.kind), tr("Analysis id"),
                                QString::number(a.id)});
     }
     expandItem(group);
+    for (const auto& [kind, kindRow] : kinds) expandItem(kindRow);
   }
   auto* data = addRow(root, {tr("Data")}, {});
   for (const auto& count : summary->counts) {

@@ -40,7 +40,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 #include "core/common/text.h"
 #include "core/gap/diagnosis_json.h"
@@ -135,23 +134,7 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   inputs->addWidget(testPath_, 1, 1);
   inputs->addWidget(browseTest_, 1, 2);
 
-  auto* options = new QHBoxLayout;
-  bandLabel_ = new QLabel(this);
-  bandLow_ = new QDoubleSpinBox(this);
-  bandHigh_ = new QDoubleSpinBox(this);
-  for (QDoubleSpinBox* box : {bandLow_, bandHigh_}) {
-    box->setRange(0.0, 1.0e6);
-    box->setDecimals(1);
-    box->setSuffix(QStringLiteral(" Hz"));
-  }
-  bootstrapLabel_ = new QLabel(this);
-  bootstrap_ = new QSpinBox(this);
-  bootstrap_->setRange(20, 5000);
-  bootstrap_->setValue(kBootstrapDefault);
-  multistartsLabel_ = new QLabel(this);
-  multistarts_ = new QSpinBox(this);
-  multistarts_->setRange(1, 100);
-  multistarts_->setValue(core::gap::DiagnosisOptions{}.multistarts);
+  QHBoxLayout* options = makeOptionsRow();
   load_ = new QPushButton(this);
   run_ = new QPushButton(this);
   run_->setObjectName(QStringLiteral("gapRun"));
@@ -159,15 +142,6 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   cancel_->setEnabled(false);
   export_ = new QPushButton(this);
   export_->setEnabled(false);
-  options->addWidget(bandLabel_);
-  options->addWidget(bandLow_);
-  options->addWidget(bandHigh_);
-  options->addSpacing(12);
-  options->addWidget(bootstrapLabel_);
-  options->addWidget(bootstrap_);
-  options->addWidget(multistartsLabel_);
-  options->addWidget(multistarts_);
-  options->addStretch(1);
 
   auto* progressRow = new QHBoxLayout;
   progress_ = new QProgressBar(this);
@@ -191,6 +165,7 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   auto* leftLayout = new QVBoxLayout(left);
   leftLayout->setContentsMargins(0, 0, 0, 0);
   effectsLabel_ = new QLabel(left);
+  effectsLabel_->setObjectName(QStringLiteral("gapEffectsLabel"));
   effects_ = new QListWidget(left);
   effects_->setObjectName(QStringLiteral("gapEffects"));
   verdict_ = new QLabel(left);
@@ -222,6 +197,10 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   overlayPlot_ = new QwtPlot(overlay);
   overlayPlot_->setObjectName(QStringLiteral("gapOverlayPlot"));
   overlayPlot_->setCanvasBackground(Qt::white);
+  // QwtPlot's own MinimumExpanding policy makes its size hint (40 px per
+  // major tick of the left axis: a log axis over decades) the least height,
+  // which pushed the page below the tab area; it may shrink to its minimum.
+  overlayPlot_->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
   auto* grid = new QwtPlotGrid;
   grid->setMajorPen(QColor(0, 0, 0, 40), 0.0, Qt::DotLine);
   grid->attach(overlayPlot_);
@@ -244,6 +223,9 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   const auto stale = [this] { problem_.reset(); };
   connect(modelPath_, &QLineEdit::textChanged, this, stale);
   connect(testPath_, &QLineEdit::textChanged, this, stale);
+  // Files chosen: the band and the candidates are the next run's again.
+  for (QLineEdit* path : {modelPath_, testPath_})
+    connect(path, &QLineEdit::textEdited, this, [this] { setSetup(Setup::NextRun); });
   connect(bandLow_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, stale);
   connect(bandHigh_, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, stale);
   connect(browseModel_, &QPushButton::clicked, this, &ModelTestView::browseModel);
@@ -261,6 +243,39 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   connect(overlayChoice_, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
           [this](int index) { showOverlay(index); });
   retranslate();
+}
+
+// Band, bootstrap samples and multistarts: the options of the next run.
+QHBoxLayout* ModelTestView::makeOptionsRow() {
+  auto* options = new QHBoxLayout;
+  bandLabel_ = new QLabel(this);
+  bandLow_ = new QDoubleSpinBox(this);
+  bandHigh_ = new QDoubleSpinBox(this);
+  bandLow_->setObjectName(QStringLiteral("gapBandLow"));
+  bandHigh_->setObjectName(QStringLiteral("gapBandHigh"));
+  for (QDoubleSpinBox* box : {bandLow_, bandHigh_}) {
+    box->setRange(0.0, 1.0e6);
+    box->setDecimals(1);
+    box->setSuffix(QStringLiteral(" Hz"));
+  }
+  bootstrapLabel_ = new QLabel(this);
+  bootstrap_ = new QSpinBox(this);
+  bootstrap_->setRange(20, 5000);
+  bootstrap_->setValue(kBootstrapDefault);
+  multistartsLabel_ = new QLabel(this);
+  multistarts_ = new QSpinBox(this);
+  multistarts_->setRange(1, 100);
+  multistarts_->setValue(core::gap::DiagnosisOptions{}.multistarts);
+  options->addWidget(bandLabel_);
+  options->addWidget(bandLow_);
+  options->addWidget(bandHigh_);
+  options->addSpacing(12);
+  options->addWidget(bootstrapLabel_);
+  options->addWidget(bootstrap_);
+  options->addWidget(multistartsLabel_);
+  options->addWidget(multistarts_);
+  options->addStretch(1);
+  return options;
 }
 
 ModelTestView::~ModelTestView() {
@@ -337,19 +352,18 @@ bool ModelTestView::loadInputs() {
     return false;
   }
   problem_ = std::shared_ptr<const core::gap::GapProblem>(std::move(loaded.value()));
-  std::set<std::string> names;
-  for (const auto& candidate : problem_->candidates()) names.insert(candidate.effect);
+  std::map<std::string, std::vector<std::string>> locations;  // effect -> where it is tried
+  for (const auto& candidate : problem_->candidates()) {
+    auto& where = locations[candidate.effect];
+    if (!candidate.location.empty()) where.push_back(joined(candidate.location).toStdString());
+  }
   // A reload (new files or band) keeps the user's choices for effects still offered.
   QStringList unticked;
   for (int i = 0; i < effects_->count(); ++i) {
     if (effects_->item(i)->checkState() != Qt::Checked) unticked << effects_->item(i)->text();
   }
-  effects_->clear();
-  for (const auto& name : names) {
-    auto* item = new QListWidgetItem(QString::fromStdString(name), effects_);
-    item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
-    item->setCheckState(unticked.contains(item->text()) ? Qt::Unchecked : Qt::Checked);
-  }
+  fillEffects(locations, unticked);
+  setSetup(Setup::NextRun);
   setStatus(tr("%1 data, %2 residuals, %3 candidate effects at their locations.")
                 .arg(QString::fromStdString(problem_->dataKind()))
                 .arg(problem_->residualCount())
@@ -556,7 +570,9 @@ void ModelTestView::fillRankingRows(const std::vector<StoredDiagnosis::RankedEff
     }
     if (!effect.identifiable) sizes << tr("(not identifiable)");
     ranking_->setItem(r, 0, new QTableWidgetItem(QString::fromStdString(effect.effect)));
-    ranking_->setItem(r, 1, new QTableWidgetItem(joined(effect.location)));
+    auto* where = new QTableWidgetItem(joined(effect.location));
+    where->setToolTip(locationsTip(effect.location));  // the cell is elided when the list is long
+    ranking_->setItem(r, 1, where);
     ranking_->setItem(r, 2, new QTableWidgetItem(sizes.join(QStringLiteral("; "))));
     ranking_->setItem(r, 3, new QTableWidgetItem(number(effect.likelihoodRatio)));
     ranking_->setItem(r, 4, new QTableWidgetItem(number(threshold)));
@@ -572,6 +588,8 @@ void ModelTestView::fillRankingRows(const std::vector<StoredDiagnosis::RankedEff
     }
   }
   ranking_->resizeColumnsToContents();
+  // A family of equivalent DOFs would make the location column as wide as the page.
+  ranking_->setColumnWidth(1, std::min(ranking_->columnWidth(1), fontMetrics().averageCharWidth() * 28));
 }
 
 void ModelTestView::computeOverlays() {
@@ -697,13 +715,11 @@ void ModelTestView::retranslate() {
   browseModel_->setText(tr("Browse..."));
   browseTest_->setText(tr("Browse..."));
   bandLabel_->setText(tr("Band"));
-  bandLow_->setToolTip(tr("Lowest frequency used (0 = from the first line)"));
-  bandHigh_->setToolTip(tr("Highest frequency used (0 = to the last line)"));
   bootstrapLabel_->setText(tr("Bootstrap samples"));
   bootstrap_->setToolTip(tr("Simulated data sets that calibrate the false-attribution threshold"));
   multistartsLabel_->setText(tr("Multistarts"));
   multistarts_->setToolTip(tr("Starting points of every nonlinear fit (more are slower and safer)"));
-  effectsLabel_->setText(tr("Candidate effects"));
+  setSetup(setup_);  // the band's tips and the candidates' label
   load_->setText(tr("Load"));
   run_->setText(tr("Run Diagnosis"));
   cancel_->setText(tr("Cancel"));

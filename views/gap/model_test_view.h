@@ -10,6 +10,7 @@
 
 #include <QString>
 #include <QWidget>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -102,12 +103,25 @@ class ModelTestView : public QWidget {
   void onFinished(core::Result<core::gap::Diagnosis> result);
   void showDiagnosis();
   QHBoxLayout* makeKeptRow();
+  QHBoxLayout* makeOptionsRow();
   void refreshStored();
   void showVerdict(const QString& verdict, const QString& effects);
   void showDiagnosisText();
   // "residual_mode at 9+Z" (the effect alone when it has no location).
   static QString effectText(const std::string& effect, const std::vector<std::string>& location);
   void showStoredText();
+  // What the band boxes and the candidate list describe: the next run, or the
+  // kept diagnosis shown (with or without a frequency band of its own).
+  enum class Setup { NextRun, KeptBand, KeptNoBand };
+  // Fills the band and the candidate list from the kept diagnosis shown.
+  void showStoredSetup();
+  // Enables and words the band boxes and the candidate list for `setup`.
+  void setSetup(Setup setup);
+  // One checkable row per effect, its locations in the tooltip; effects in
+  // `unticked` start unticked.
+  void fillEffects(const std::map<std::string, std::vector<std::string>>& locations, const QStringList& unticked);
+  // "Locations: a; b; ..." with at most a screenful, each entry elided.
+  static QString locationsTip(const std::vector<std::string>& locations);
   void fillWhere(const core::gap::GapMetrics* gap);
   void fillRanking();
   void fillRankingRows(const std::vector<StoredDiagnosis::RankedEffect>& rows, double threshold);
@@ -160,6 +174,7 @@ class ModelTestView : public QWidget {
   ProjectModel* project_ = nullptr;
   std::optional<StoredDiagnosis> storedDiagnosis_;
   qint64 storedId_ = 0;
+  Setup setup_ = Setup::NextRun;
 
   JobRunner* jobs_ = nullptr;
   int jobId_ = 0;  // the diagnosis under way (0: none)

@@ -4,13 +4,16 @@
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QListWidget>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QTextBrowser>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -73,6 +76,9 @@ void ModelTestView::setProjectModel(ProjectModel* model) {
         before_.clear();
         after_.clear();
         overlayChoice_->clear();
+        effects_->clear();
+        if (setup_ != Setup::NextRun) setBand(0.0, 0.0);
+        setSetup(Setup::NextRun);
         for (QwtPlotCurve* curve : {measuredCurve_, beforeCurve_, afterCurve_}) curve->setSamples(QVector<QPointF>());
         overlayPlot_->replot();
         explanation_->clear();
@@ -135,8 +141,87 @@ bool ModelTestView::showStored(qint64 analysisId) {
     for (const auto& curve : before_) overlayChoice_->addItem(QString::fromStdString(curve.label));
   }
   if (!before_.empty()) showOverlay(0);
+  showStoredSetup();
   progress_->setValue(0);
   return true;
+}
+
+// The inputs describe the diagnosis shown, not the defaults of a run nobody
+// asked for. The stored result (analysisFromDiagnosis) keeps no band as such:
+// its frequency overlay starts at the first line fitted and ends at the last
+// (thinning keeps both), so that is the band; a diagnosis over another axis
+// (tyre pressure) has none. Its candidates are the effects of its ranking,
+// each at the locations it was fitted.
+void ModelTestView::showStoredSetup() {
+  const StoredDiagnosis& d = *storedDiagnosis_;
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (const auto& curve : d.before) {
+    if (curve.x.empty() || curve.xLabel.find("[Hz]") == std::string::npos) continue;
+    const auto [lo, hi] = std::minmax_element(curve.x.begin(), curve.x.end());
+    low = std::min(low, *lo);
+    high = std::max(high, *hi);
+  }
+  const bool hasBand = std::isfinite(low) && std::isfinite(high) && high > low;
+  if (hasBand) setBand(low, high);
+  std::map<std::string, std::vector<std::string>> locations;
+  for (const auto& row : d.ranking) {
+    auto& where = locations[row.effect];
+    std::string at;
+    for (const auto& dof : row.location) at += (at.empty() ? "" : ", ") + dof;
+    if (!at.empty()) where.push_back(at);
+  }
+  fillEffects(locations, {});
+  setSetup(hasBand ? Setup::KeptBand : Setup::KeptNoBand);
+}
+
+void ModelTestView::setSetup(Setup setup) {
+  setup_ = setup;
+  const bool kept = setup != Setup::NextRun;
+  bandLow_->setEnabled(setup != Setup::KeptNoBand);
+  bandHigh_->setEnabled(setup != Setup::KeptNoBand);
+  switch (setup) {
+    case Setup::NextRun:
+      bandLow_->setToolTip(tr("Lowest frequency used (0 = from the first line)"));
+      bandHigh_->setToolTip(tr("Highest frequency used (0 = to the last line)"));
+      break;
+    case Setup::KeptBand:
+      bandLow_->setToolTip(tr("First line of the kept diagnosis shown; a new run on files uses the value here"));
+      bandHigh_->setToolTip(tr("Last line of the kept diagnosis shown; a new run on files uses the value here"));
+      break;
+    case Setup::KeptNoBand:
+      for (QDoubleSpinBox* box : {bandLow_, bandHigh_})
+        box->setToolTip(tr("The kept diagnosis shown has no frequency band; the band sets up the next run on files"));
+      break;
+  }
+  effectsLabel_->setText(kept ? tr("Candidate effects of the kept diagnosis") : tr("Candidate effects"));
+  effects_->setToolTip(kept ? tr("The effects the kept diagnosis ranked; a run on files lists those its data offer")
+                            : QString());
+}
+
+void ModelTestView::fillEffects(const std::map<std::string, std::vector<std::string>>& locations,
+                                const QStringList& unticked) {
+  effects_->clear();
+  for (const auto& [effect, where] : locations) {
+    auto* item = new QListWidgetItem(QString::fromStdString(effect), effects_);
+    item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+    item->setCheckState(unticked.contains(item->text()) ? Qt::Unchecked : Qt::Checked);
+    if (!where.empty()) item->setToolTip(locationsTip(where));
+  }
+}
+
+// A residual mode may stand at a family of equivalent DOFs and be tried at
+// many: the tip stays a screenful, however long the list.
+QString ModelTestView::locationsTip(const std::vector<std::string>& locations) {
+  constexpr std::size_t kShown = 12;
+  constexpr int kEntryChars = 80;
+  QStringList lines;
+  for (std::size_t i = 0; i < locations.size() && i < kShown; ++i) {
+    QString entry = QString::fromStdString(locations[i]);
+    if (entry.size() > kEntryChars) entry = entry.left(kEntryChars - 1) + QChar(0x2026);
+    lines << entry;
+  }
+  if (locations.size() > kShown) lines << tr("and %n more", nullptr, static_cast<int>(locations.size() - kShown));
+  return tr("Locations:") + QLatin1Char('\n') + lines.join(QLatin1Char('\n'));
 }
 
 // Verdict (with the effects it names), explanation and the status line of

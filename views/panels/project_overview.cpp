@@ -12,6 +12,8 @@
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 #include "views/common/project_model.h"
 
 namespace mozzi {
@@ -106,6 +108,8 @@ ProjectOverview::ProjectOverview(QWidget* parent) : QWidget(parent) {
   specimens_->setSelectionBehavior(QAbstractItemView::SelectRows);
   specimens_->horizontalHeader()->setStretchLastSection(true);
   specimens_->verticalHeader()->setVisible(false);
+  // One line a row (the style's default is nearly two): more specimens above the fold.
+  specimens_->verticalHeader()->setDefaultSectionSize(fontMetrics().lineSpacing() + 8);
   specimens_->setMinimumHeight(fontMetrics().lineSpacing() * 12);
 
   layout->addWidget(title_);
@@ -159,8 +163,7 @@ void ProjectOverview::refresh() {
     return;
   }
   showSummary(model_->path(), *summary, model_->isReadOnly(), model_->readOnlyReason());
-  auto contents = core::io::projectContents(*model_->store());
-  showContents(contents ? *contents : std::vector<core::io::SpecimenContents>{});
+  showContents(model_->contents());
 }
 
 void ProjectOverview::showSummary(const QString& path, const core::io::ProjectSummary& summary, bool readOnly,
@@ -223,13 +226,13 @@ void ProjectOverview::buildStartEntries() {
   add(RecordKind::RigTest, &core::io::SpecimenContents::staticRigTests);
   add(RecordKind::RigTest, &core::io::SpecimenContents::dynamicRigTests);
   add(RecordKind::TyreTest, &core::io::SpecimenContents::tyreTests);
-  // Analyses carry their kind, so that the page of that kind claims them.
-  if (model_ && model_->store()) {
-    if (auto analyses = model_->store()->analyses()) {
-      for (const auto& a : *analyses)
-        candidates.push_back(ProjectItem{RecordKind::Analysis, a.id, a.specimenId, QString::fromStdString(a.kind)});
-    }
-  }
+  // Analyses carry their kind, so that the page of that kind claims them (the
+  // oldest of each kind first, as the store lists them).
+  std::vector<core::io::AnalysisInfo> analyses;
+  for (const auto& c : contents_) analyses.insert(analyses.end(), c.analyses.begin(), c.analyses.end());
+  std::sort(analyses.begin(), analyses.end(), [](const auto& x, const auto& y) { return x.id < y.id; });
+  for (const auto& a : analyses)
+    candidates.push_back(ProjectItem{RecordKind::Analysis, a.id, a.specimenId, QString::fromStdString(a.kind)});
   for (const auto& c : contents_)
     if (c.meshNodes > 0) candidates.push_back(ProjectItem{RecordKind::Mesh, c.specimenId, c.specimenId});
   for (const auto& c : contents_) candidates.push_back(ProjectItem{RecordKind::Specimen, c.specimenId, c.specimenId});

@@ -23,6 +23,7 @@
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QTreeWidget>
+#include <QTreeWidgetItemIterator>
 #include <QtTest>
 
 #include <atomic>
@@ -73,6 +74,7 @@ class MainWindowTest : public QObject {
   void reportExportWritesThePdfAndRefusesTheProject();
   void reportDialogChoiceIsSavedAndWritten();
   void screenshot();
+  void narrowDockAndEveryPageScreenshots();
 
  private:
   QString file(const QString& name) const { return QDir(dir_.path()).filePath(name); }
@@ -694,6 +696,52 @@ void MainWindowTest::screenshot() {
     const QString gapShot = QDir(folder).filePath(shotName + suffix + QStringLiteral(".png"));
     QVERIFY(window_->grab().save(gapShot));
     qInfo("screenshot: %s", qPrintable(gapShot));
+  }
+}
+
+// On the demo the screenshot above made (making one takes minutes on a loaded
+// machine, more than a test function may take): the project dock at 260
+// pixels and every page, at this scale.
+void MainWindowTest::narrowDockAndEveryPageScreenshots() {
+  const QString demo = file(QStringLiteral("screenshot.mozzi"));
+  QVERIFY(QFileInfo::exists(demo) ? window_->openProject(demo) : window_->createDemoProject(demo));
+  window_->showNormal();
+  window_->resize(1280, 800);
+  QTest::qWait(50);
+  const QString folder = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR", QDir::tempPath());
+  const QString scale = qEnvironmentVariable("QT_SCALE_FACTOR");
+  const QString suffix = scale.isEmpty() ? QString() : QStringLiteral("_scale%1").arg(scale);
+
+  // The project dock at 260 pixels: the second column holds counts only (the
+  // analyses' kinds are group rows), so the names keep the width.
+  auto* dock = window_->findChild<QDockWidget*>(QStringLiteral("projectDock"));
+  QVERIFY(dock);
+  window_->resizeDocks({dock}, {260}, Qt::Horizontal);
+  QTest::qWait(50);
+  auto* tree = window_->projectTree();
+  tree->expandAll();
+  // An analysis kind there ("wheelchair manoeuvre") took half the dock.
+  QVERIFY2(tree->columnWidth(1) <= tree->viewport()->width() / 3,
+           qPrintable(QStringLiteral("%1 of %2").arg(tree->columnWidth(1)).arg(tree->viewport()->width())));
+  for (QTreeWidgetItemIterator it(tree); *it; ++it)
+    if (mozzi::views::ProjectTree::itemOf(*it).kind == RecordKind::Analysis) QVERIFY((*it)->text(1).isEmpty());
+  const QString treeShot = QDir(folder).filePath(QStringLiteral("project_tree_260") + suffix + QStringLiteral(".png"));
+  QVERIFY(dock->grab().save(treeShot));
+  qInfo("screenshot: %s", qPrintable(treeShot));
+
+  // Every page as the Overview's start list opens it on the demo, for a look
+  // at this scale (text fits, plots show data).
+  auto* overview = window_->findChild<mozzi::views::ProjectOverview*>();
+  QVERIFY(overview);
+  const auto entries = overview->startEntries();
+  for (int i = 0; i < static_cast<int>(entries.size()); ++i) {
+    if (!entries[static_cast<std::size_t>(i)].available) continue;
+    QWidget* page = overview->openStartEntry(i);
+    if (!page) continue;
+    QTest::qWait(200);
+    const QString pageShot = QDir(folder).filePath(QStringLiteral("page_%1%2.png").arg(entries[i].pageId, suffix));
+    QVERIFY(window_->grab().save(pageShot));
+    qInfo("screenshot: %s", qPrintable(pageShot));
   }
 }
 

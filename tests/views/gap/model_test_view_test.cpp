@@ -12,7 +12,9 @@
 #include <qwt_plot_curve.h>
 #include <QApplication>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFile>
+#include <QLabel>
 #include <QListWidget>
 #include <QSignalSpy>
 #include <QTableWidget>
@@ -21,6 +23,7 @@
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "core/gap/problem_loader.h"
 #include "core/report/gap_report.h"
@@ -60,6 +63,46 @@ double logDistance(const QwtPlotCurve* model, const QwtPlotCurve* measured) {
 
 class ModelTestViewTest : public QObject {
   Q_OBJECT
+ private:
+  // The band, the candidate list and the height of a view showing the kept `d` (of `problem`).
+  static void checkKeptSetup(const mozzi::views::ModelTestView& kept, const mozzi::core::gap::GapProblem& problem,
+                             const mozzi::core::gap::Diagnosis& d) {
+    // The band and the candidate list read as the kept diagnosis's, not as the
+    // next run's defaults (0 Hz, nothing listed): the band runs from the first
+    // to the last frequency line the problem fitted (whole file), the list holds
+    // the effects core ranked, ticked, each with the DOFs it was tried at.
+    auto* bandLow = kept.findChild<QDoubleSpinBox*>(QStringLiteral("gapBandLow"));
+    auto* bandHigh = kept.findChild<QDoubleSpinBox*>(QStringLiteral("gapBandHigh"));
+    QVERIFY(bandLow && bandHigh);
+    const auto lines = problem.overlay({d.calibrated.data(), -1, nullptr});
+    QVERIFY(!lines.empty() && lines[0].x.size() > 100);
+    QVERIFY(bandLow->isEnabled() && bandHigh->isEnabled());
+    QVERIFY2(std::abs(bandLow->value() - lines[0].x.front()) <= 0.05,
+             qPrintable(QStringLiteral("%1 vs %2").arg(bandLow->value()).arg(lines[0].x.front())));
+    QVERIFY2(std::abs(bandHigh->value() - lines[0].x.back()) <= 0.05,
+             qPrintable(QStringLiteral("%1 vs %2").arg(bandHigh->value()).arg(lines[0].x.back())));
+    QVERIFY(bandHigh->value() > bandLow->value());
+    QVERIFY(bandHigh->toolTip().contains(QStringLiteral("kept diagnosis")));
+    std::set<std::string> ranked;
+    for (const auto& e : d.ranking) ranked.insert(e.candidate.effect);
+    QVERIFY(ranked.count("mass_loading") == 1);
+    auto* keptEffects = kept.findChild<QListWidget*>(QStringLiteral("gapEffects"));
+    QVERIFY(keptEffects);
+    QCOMPARE(keptEffects->count(), static_cast<int>(ranked.size()));
+    for (int i = 0; i < keptEffects->count(); ++i) {
+      const QListWidgetItem* item = keptEffects->item(i);
+      QVERIFY2(ranked.count(item->text().toStdString()) == 1, qPrintable(item->text()));
+      QCOMPARE(item->checkState(), Qt::Checked);
+      if (item->text() == QStringLiteral("mass_loading")) QVERIFY(item->toolTip().contains(QStringLiteral("3+X")));
+    }
+    auto* effectsLabel = kept.findChild<QLabel*>(QStringLiteral("gapEffectsLabel"));
+    QVERIFY(effectsLabel && effectsLabel->text().contains(QStringLiteral("kept diagnosis")));
+    // Showing a kept diagnosis it still fits the tab area of a 1280 x 800
+    // window in height (menus, tabs and the log dock take about 250 pixels):
+    // the overlay's log axis over decades once made it 718 pixels tall.
+    QVERIFY2(kept.minimumSizeHint().height() <= 550, qPrintable(QString::number(kept.minimumSizeHint().height())));
+  }
+
  private slots:
   void initTestCase() { files_ = writeFiles(); }
 
@@ -197,10 +240,19 @@ class ModelTestViewTest : public QObject {
       keptAfter += logDistance(static_cast<QwtPlotCurve*>(keptCurves[2]), static_cast<QwtPlotCurve*>(keptCurves[0]));
     }
     QVERIFY2(keptAfter < 0.2 * keptBefore, qPrintable(QStringLiteral("%1 vs %2").arg(keptAfter).arg(keptBefore)));
-    // A run on files stays possible from a view showing a kept diagnosis.
+
+    checkKeptSetup(kept, **problem, *d);
+    if (QTest::currentTestFailed()) return;
+    auto* effectsLabel = kept.findChild<QLabel*>(QStringLiteral("gapEffectsLabel"));
+    auto* keptEffects = kept.findChild<QListWidget*>(QStringLiteral("gapEffects"));
+
+    // A run on files stays possible from a view showing a kept diagnosis; its
+    // files' candidates replace the kept ones.
     kept.setModelPath(files_.model);
     kept.setTestPath(files_.frf);
     QVERIFY(kept.loadInputs());
+    QVERIFY(keptEffects->count() >= 7);
+    QVERIFY(!effectsLabel->text().contains(QStringLiteral("kept diagnosis")));
   }
 
   void badFilesGiveAClearMessage() {
