@@ -3561,6 +3561,11 @@
             <numerusform></numerusform>
         </translation>
     </message>
+    <message>
+        <location line="+5"/>
+        <source>Refined on %L1 of %L2 band lines: those carrying the modes.</source>
+        <translation type="unfinished"></translation>
+    </message>
     <message numerus="yes">
         <location line="+6"/>
         <source>Identification of FRF set %1: %n mode(s)</source>
@@ -4925,7 +4930,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+257"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+238"/>
         <source>Export Diagnosis Report</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4935,7 +4940,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+89"/>
         <source>Choose Model</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4965,7 +4970,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+16"/>
         <source>%1 data, %2 residuals, %3 candidate effects at their locations.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5065,7 +5070,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+38"/>
         <source>model + %1 + %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5076,12 +5081,12 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location line="+38"/>
-        <location line="+82"/>
+        <location line="+80"/>
         <source>model + best effect</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-72"/>
+        <location line="-70"/>
         <source>Model vs test</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5096,18 +5101,18 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+15"/>
         <source>Ranked effects</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-48"/>
+        <location line="-46"/>
         <source>Nothing to export: run the diagnosis first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-219"/>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="+151"/>
+        <location line="-223"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+236"/>
         <source>%1 and %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5122,7 +5127,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+212"/>
+        <location line="+216"/>
         <location line="+8"/>
         <source>Cannot write %1: %2</source>
         <translation type="unfinished"></translation>
@@ -5164,7 +5169,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="-52"/>
         <source>Lowest frequency used (0 = from the first line)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5174,7 +5179,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+1"/>
         <source>Bootstrap samples</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5194,12 +5199,12 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+11"/>
         <source>Candidate effects</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+2"/>
         <source>Load</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5240,7 +5245,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="-72"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="-111"/>
         <source>No diagnosis yet</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5255,7 +5260,45 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+72"/>
+        <source>First line of the kept diagnosis shown; a new run on files uses the value here</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Last line of the kept diagnosis shown; a new run on files uses the value here</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The kept diagnosis shown has no frequency band; the band sets up the next run on files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Candidate effects of the kept diagnosis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The effects the kept diagnosis ranked; a run on files lists those its data offer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+26"/>
+        <source>and %n more</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Locations:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Kept diagnosis &quot;%1&quot; (analysis %2), as stored.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5360,7 +5403,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ProjectOverview</name>
     <message>
-        <location filename="../views/panels/project_overview.cpp" line="+255"/>
+        <location filename="../views/panels/project_overview.cpp" line="+258"/>
         <source>needs a record this project does not hold yet</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5507,7 +5550,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::ProjectTree</name>
     <message>
-        <location filename="../views/common/project_tree.cpp" line="+26"/>
+        <location filename="../views/common/project_tree.cpp" line="+29"/>
         <source>stability sweep</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5519,6 +5562,21 @@ Schema version %2, created %3 by Mozzi %4</source>
     <message>
         <location line="+1"/>
         <source>gap diagnosis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Stability sweeps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wheelchair manoeuvres</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gap diagnoses</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -5579,20 +5637,20 @@ Schema version %2, created %3 by Mozzi %4</source>
         <location line="+10"/>
         <location line="+12"/>
         <location line="+21"/>
-        <location line="+18"/>
+        <location line="+26"/>
         <source>Name</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-74"/>
         <location line="+5"/>
         <location line="+43"/>
-        <location line="+18"/>
+        <location line="+26"/>
         <source>Kind</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-74"/>
         <source>Description</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5707,17 +5765,22 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <source>Analyses</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
+        <source>%1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Analysis id</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Data</source>
         <translation type="unfinished"></translation>
     </message>

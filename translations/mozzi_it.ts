@@ -2741,8 +2741,8 @@
         <location line="+8"/>
         <source>and %n more</source>
         <translation>
-            <numerusform>e %n altra</numerusform>
-            <numerusform>e altre %n</numerusform>
+            <numerusform>e altri %n</numerusform>
+            <numerusform>e altri %n</numerusform>
         </translation>
     </message>
     <message>
@@ -3560,6 +3560,11 @@
             <numerusform>%n modo selezionato automaticamente in %1 .. %2 Hz; fai clic su un polo per aggiungerlo o toglierlo.</numerusform>
             <numerusform>%n modi selezionati automaticamente in %1 .. %2 Hz; fai clic su un polo per aggiungerlo o toglierlo.</numerusform>
         </translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Refined on %L1 of %L2 band lines: those carrying the modes.</source>
+        <translation>Raffinamento su %L1 delle %L2 linee della banda: quelle che portano i modi.</translation>
     </message>
     <message numerus="yes">
         <location line="+6"/>
@@ -4929,7 +4934,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+257"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+238"/>
         <source>Export Diagnosis Report</source>
         <translation>Esporta rapporto di diagnosi</translation>
     </message>
@@ -4939,7 +4944,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Rapporto HTML (*.html)</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+89"/>
         <source>Choose Model</source>
         <translation>Scegli il modello</translation>
     </message>
@@ -4969,7 +4974,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Impossibile usare questi file: %1</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+16"/>
         <source>%1 data, %2 residuals, %3 candidate effects at their locations.</source>
         <translation>Dati %1, %2 residui, %3 effetti candidati nelle loro posizioni.</translation>
     </message>
@@ -5069,7 +5074,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>(non identificabile)</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+38"/>
         <source>model + %1 + %2</source>
         <translation>modello + %1 + %2</translation>
     </message>
@@ -5080,12 +5085,12 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location line="+38"/>
-        <location line="+82"/>
+        <location line="+80"/>
         <source>model + best effect</source>
         <translation>modello + effetto migliore</translation>
     </message>
     <message>
-        <location line="-72"/>
+        <location line="-70"/>
         <source>Model vs test</source>
         <translation>Modello contro prova</translation>
     </message>
@@ -5100,18 +5105,18 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Prova</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+15"/>
         <source>Ranked effects</source>
         <translation>Effetti in classifica</translation>
     </message>
     <message>
-        <location line="-48"/>
+        <location line="-46"/>
         <source>Nothing to export: run the diagnosis first.</source>
         <translation>Niente da esportare: esegui prima la diagnosi.</translation>
     </message>
     <message>
-        <location line="-219"/>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="+151"/>
+        <location line="-223"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+236"/>
         <source>%1 and %2</source>
         <translation>%1 e %2</translation>
     </message>
@@ -5126,7 +5131,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Verdetto: %1 (%2)</translation>
     </message>
     <message>
-        <location line="+212"/>
+        <location line="+216"/>
         <location line="+8"/>
         <source>Cannot write %1: %2</source>
         <translation>Impossibile scrivere %1: %2</translation>
@@ -5168,7 +5173,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Banda</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="-52"/>
         <source>Lowest frequency used (0 = from the first line)</source>
         <translation>Frequenza minima usata (0 = dalla prima riga)</translation>
     </message>
@@ -5178,7 +5183,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Frequenza massima usata (0 = fino all&apos;ultima riga)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+1"/>
         <source>Bootstrap samples</source>
         <translation>Campioni bootstrap</translation>
     </message>
@@ -5198,12 +5203,12 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Punti di partenza di ogni stima non lineare (di più: più lento e più sicuro)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+11"/>
         <source>Candidate effects</source>
         <translation>Effetti candidati</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+2"/>
         <source>Load</source>
         <translation>Carica</translation>
     </message>
@@ -5244,7 +5249,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="-72"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="-111"/>
         <source>No diagnosis yet</source>
         <translation>Nessuna diagnosi</translation>
     </message>
@@ -5259,7 +5264,45 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Analisi %1: %2</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+72"/>
+        <source>First line of the kept diagnosis shown; a new run on files uses the value here</source>
+        <translation>Prima riga della diagnosi conservata mostrata; una nuova esecuzione sui file usa il valore qui</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Last line of the kept diagnosis shown; a new run on files uses the value here</source>
+        <translation>Ultima riga della diagnosi conservata mostrata; una nuova esecuzione sui file usa il valore qui</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The kept diagnosis shown has no frequency band; the band sets up the next run on files</source>
+        <translation>La diagnosi conservata mostrata non ha una banda di frequenza; la banda imposta la prossima esecuzione sui file</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Candidate effects of the kept diagnosis</source>
+        <translation>Effetti candidati della diagnosi conservata</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The effects the kept diagnosis ranked; a run on files lists those its data offer</source>
+        <translation>Gli effetti classificati dalla diagnosi conservata; un'esecuzione sui file elenca quelli offerti dai suoi dati</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+26"/>
+        <source>and %n more</source>
+        <translation>
+            <numerusform>e %n altra</numerusform>
+            <numerusform>e altre %n</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Locations:</source>
+        <translation>Posizioni:</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Kept diagnosis &quot;%1&quot; (analysis %2), as stored.</source>
         <translation>Diagnosi conservata &quot;%1&quot; (analisi %2), così come è stata salvata.</translation>
     </message>
@@ -5364,7 +5407,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ProjectOverview</name>
     <message>
-        <location filename="../views/panels/project_overview.cpp" line="+255"/>
+        <location filename="../views/panels/project_overview.cpp" line="+258"/>
         <source>needs a record this project does not hold yet</source>
         <translation>richiede un dato che questo progetto non contiene ancora</translation>
     </message>
@@ -5512,7 +5555,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::ProjectTree</name>
     <message>
-        <location filename="../views/common/project_tree.cpp" line="+26"/>
+        <location filename="../views/common/project_tree.cpp" line="+29"/>
         <source>stability sweep</source>
         <translation>analisi di stabilità</translation>
     </message>
@@ -5525,6 +5568,21 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <location line="+1"/>
         <source>gap diagnosis</source>
         <translation>diagnosi del divario</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Stability sweeps</source>
+        <translation>Analisi di stabilità</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wheelchair manoeuvres</source>
+        <translation>Manovre della carrozzina</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gap diagnoses</source>
+        <translation>Diagnosi del divario</translation>
     </message>
     <message>
         <location line="+64"/>
@@ -5584,20 +5642,20 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <location line="+10"/>
         <location line="+12"/>
         <location line="+21"/>
-        <location line="+18"/>
+        <location line="+26"/>
         <source>Name</source>
         <translation>Nome</translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-74"/>
         <location line="+5"/>
         <location line="+43"/>
-        <location line="+18"/>
+        <location line="+26"/>
         <source>Kind</source>
         <translation>Tipo</translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-74"/>
         <source>Description</source>
         <translation>Descrizione</translation>
     </message>
@@ -5712,17 +5770,22 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Prove pneumatici</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <source>Analyses</source>
         <translation>Analisi</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>Analysis id</source>
-        <translation>Id dell'analisi</translation>
+        <location line="+7"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+2"/>
+        <source>Analysis id</source>
+        <translation>Id dell&apos;analisi</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Data</source>
         <translation>Dati</translation>
     </message>
