@@ -136,7 +136,7 @@ void RealFft::forward(const double* in, std::complex<double>* out) const {
               sizeof(std::complex<double>) * static_cast<std::size_t>(lineCount()));
 }
 
-Result<ComplexVector> RealFft::transform(VectorRef x) const {
+Result<ComplexVector> RealFft::transform(const VectorRef& x) const {
   if (x.size() != n_) {
     return makeError(ErrorCode::InvalidArgument,
                      "input has " + std::to_string(x.size()) + " samples, plan expects " + std::to_string(n_), "FFT");

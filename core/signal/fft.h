@@ -83,7 +83,7 @@ class RealFft {
   [[nodiscard]] bool inverse(const std::complex<double>* in, double* out) const;
 
   // Convenience for tests and one-off use; x must hold length() values.
-  Result<ComplexVector> transform(VectorRef x) const;
+  Result<ComplexVector> transform(const VectorRef& x) const;
 
   ~RealFft();
   RealFft(const RealFft&) = delete;

@@ -13,7 +13,7 @@ namespace mozzi::core::signal {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-Result<void> checkInput(VectorRef y, double fs, const char* where) {
+Result<void> checkInput(const VectorRef& y, double fs, const char* where) {
   if (!std::isfinite(fs) || fs <= 0.0) {
     return makeError(ErrorCode::InvalidArgument, "sample rate must be finite and positive", where);
   }
@@ -99,7 +99,7 @@ double studentT975(int dof) {
          (79 * z9 + 776 * z7 + 1482 * z5 - 1920 * z3 - 945 * z) / (92160 * v * v * v * v);
 }
 
-Result<SineFit> fitSineKnownFrequency(VectorRef y, double fs, double frequencyHz, double t0) {
+Result<SineFit> fitSineKnownFrequency(const VectorRef& y, double fs, double frequencyHz, double t0) {
   const char* where = "sine fit (known frequency)";
   MOZZI_TRY(checkInput(y, fs, where));
   if (!std::isfinite(frequencyHz) || frequencyHz <= 0.0 || frequencyHz >= 0.5 * fs) {
@@ -133,7 +133,7 @@ Result<SineFit> fitSineKnownFrequency(VectorRef y, double fs, double frequencyHz
   return fit;
 }
 
-Result<SineFit> fitSine(VectorRef y, double fs, std::optional<double> guessHz, double t0) {
+Result<SineFit> fitSine(const VectorRef& y, double fs, std::optional<double> guessHz, double t0) {
   const char* where = "sine fit (unknown frequency)";
   MOZZI_TRY(checkInput(y, fs, where));
   const Eigen::Index n = y.size();

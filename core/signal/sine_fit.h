@@ -40,11 +40,11 @@ struct SineFit {
 
 // y sampled at fs [Hz] from t0 [s]. Errors: fewer than 4 samples, NaN samples,
 // fs <= 0, f outside (0, fs/2), a singular design (f at 0 or Nyquist).
-Result<SineFit> fitSineKnownFrequency(VectorRef y, double sampleRateHz, double frequencyHz, double t0 = 0.0);
+Result<SineFit> fitSineKnownFrequency(const VectorRef& y, double sampleRateHz, double frequencyHz, double t0 = 0.0);
 
 // Frequency free. The start is the FFT peak (zero-padded, parabolic
 // interpolation) unless a guess is given. Errors as above, plus no convergence.
-Result<SineFit> fitSine(VectorRef y, double sampleRateHz, std::optional<double> frequencyGuessHz = std::nullopt,
+Result<SineFit> fitSine(const VectorRef& y, double sampleRateHz, std::optional<double> frequencyGuessHz = std::nullopt,
                         double t0 = 0.0);
 
 // phi wrapped into (-pi, pi].

@@ -71,7 +71,7 @@ Result<void> TimeRecord::validate() const {
   return {};
 }
 
-Result<Vector> engineeringFromVolts(VectorRef volts, const Transducer& transducer) {
+Result<Vector> engineeringFromVolts(const VectorRef& volts, const Transducer& transducer) {
   if (!std::isfinite(transducer.sensitivityMvPerUnit) || transducer.sensitivityMvPerUnit <= 0.0) {
     return makeError(ErrorCode::InvalidArgument, "transducer sensitivity must be positive (mV per unit)",
                      "transducer " + transducer.model + " " + transducer.serial);

@@ -52,7 +52,7 @@ struct TimeRecord {
 };
 
 // Volts from the DAQ into engineering units: EU = 1000 V / sensitivity[mV/EU].
-Result<Vector> engineeringFromVolts(VectorRef volts, const Transducer& transducer);
+Result<Vector> engineeringFromVolts(const VectorRef& volts, const Transducer& transducer);
 
 // Index of the one channel of kind Force; an error when there is none or more
 // than one (then the caller must name the reference).
