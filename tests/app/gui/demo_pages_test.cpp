@@ -20,6 +20,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QDockWidget>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QLabel>
 #include <QScrollArea>
@@ -104,7 +105,10 @@ QWidget* DemoPagesTest::open(const QString& id) {
   const auto entries = overview->startEntries();
   for (int i = 0; i < static_cast<int>(entries.size()); ++i) {
     if (entries[static_cast<std::size_t>(i)].pageId != id) continue;
+    QElapsedTimer clock;
+    clock.start();
     QWidget* page = overview->openStartEntry(i);
+    qInfo("%s opened in %.1f ms (GUI thread)", qPrintable(id), static_cast<double>(clock.nsecsElapsed()) * 1e-6);
     QTest::qWait(200);
     return page;
   }
