@@ -264,6 +264,7 @@ void MainWindow::createDocks() {
   properties_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   properties_->horizontalHeader()->setStretchLastSection(true);
   properties_->verticalHeader()->setVisible(false);
+  properties_->setTextElideMode(Qt::ElideMiddle);  // a path keeps its file name in the narrow dock
   propertiesDock_ = new QDockWidget(this);
   propertiesDock_->setObjectName(QStringLiteral("propertiesDock"));
   propertiesDock_->setWidget(properties_);

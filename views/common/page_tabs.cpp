@@ -2,8 +2,10 @@
 
 #include <QEvent>
 #include <QIcon>
+#include <QLayout>
 #include <QScrollArea>
 #include <QVariant>
+#include <algorithm>
 
 namespace mozzi {
 namespace views {
@@ -22,6 +24,42 @@ void setItem(QWidget* page, const ProjectItem& item) {
   page->setProperty(kPropSpecimen, QVariant::fromValue<qlonglong>(item.specimenId));
   page->setProperty(kPropAnalysisKind, item.analysisKind);
 }
+
+// What a page's scroll area holds: the page, as large as the viewport down to
+// the least size its layout allows (plots at their minimum, wrapped labels at
+// their height for the width). Put in the scroll area directly, a page with a
+// wrapped label would be laid out at its preferred height for the width (Qt's
+// height-for-width rule) and scroll at 1280x800 although its plots could shrink.
+class PageHolder : public QWidget {
+ public:
+  explicit PageHolder(QWidget* page, QWidget* parent) : QWidget(parent), page_(page) {
+    page_->setParent(this);
+    page_->installEventFilter(this);
+  }
+  QWidget* page() const { return page_; }
+  QSize minimumSizeHint() const override {
+    QSize least = page_->minimumSizeHint().expandedTo(page_->minimumSize());
+    if (QLayout* l = page_->layout(); l && l->hasHeightForWidth())
+      least.setHeight(std::max(least.height(), l->minimumHeightForWidth(std::max(width(), least.width()))));
+    return least;
+  }
+  QSize sizeHint() const override { return minimumSizeHint(); }
+
+ protected:
+  void resizeEvent(QResizeEvent*) override { page_->setGeometry(rect()); }
+  bool event(QEvent* e) override {
+    if (e->type() == QEvent::LayoutRequest) updateGeometry();  // the page's least size changed
+    return QWidget::event(e);
+  }
+  bool eventFilter(QObject* watched, QEvent* e) override {
+    if (watched == page_ && e->type() == QEvent::LayoutRequest) updateGeometry();
+    return QWidget::eventFilter(watched, e);
+  }
+
+ private:
+  QWidget* page_;
+};
+
 }  // namespace
 
 PageTabs::PageTabs(const PageRegistry* registry, ProjectModel* model, JobRunner* jobs, QWidget* parent)
@@ -43,7 +81,8 @@ PageTabs::PageTabs(const PageRegistry* registry, ProjectModel* model, JobRunner*
 
 QWidget* PageTabs::page(int index) const {
   auto* holder = qobject_cast<QScrollArea*>(widget(index));
-  return holder ? holder->widget() : nullptr;
+  auto* inner = holder ? dynamic_cast<PageHolder*>(holder->widget()) : nullptr;
+  return inner ? inner->page() : nullptr;
 }
 
 QWidget* PageTabs::currentPage() const {
@@ -108,7 +147,7 @@ QWidget* PageTabs::openPage(const QString& pageId, const ProjectItem& item) {
   holder->setObjectName(spec->id + QStringLiteral("Holder"));
   holder->setFrameShape(QFrame::NoFrame);
   holder->setWidgetResizable(true);
-  holder->setWidget(page);
+  holder->setWidget(new PageHolder(page, holder));
   const int index = addTab(holder, spec->iconPath.isEmpty() ? QIcon() : QIcon(spec->iconPath), tabTitle(*spec, item));
   setTabToolTip(index, PageRegistry::summary(*spec));
   setCurrentIndex(index);

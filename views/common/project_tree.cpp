@@ -1,9 +1,12 @@
 #include "views/common/project_tree.h"
 
+#include <QApplication>
 #include <QDir>
 #include <QEvent>
 #include <QFileInfo>
 #include <QHeaderView>
+#include <QPainter>
+#include <QStyledItemDelegate>
 #include <QTreeWidgetItemIterator>
 
 #include <algorithm>
@@ -40,6 +43,78 @@ QString analysisGroupText(const std::string& kind) {
   return text(kind);
 }
 
+// The first column's names wrapped at spaces to the column's width, the row
+// as tall as they need (the view would keep rows one line high and cut the
+// names). A word longer than the column is cut in the middle.
+class WrappingDelegate : public QStyledItemDelegate {
+ public:
+  explicit WrappingDelegate(QTreeView* view) : QStyledItemDelegate(view), view_(view) {}
+  QSize sizeHint(const QStyleOptionViewItem& option, const QModelIndex& index) const override {
+    QSize size = QStyledItemDelegate::sizeHint(option, index);
+    if (index.column() != 0) return size;
+    int depth = view_->rootIsDecorated() ? 1 : 0;
+    for (QModelIndex up = index.parent(); up.isValid(); up = up.parent()) ++depth;
+    const QRect need =
+        textBounds(option.fontMetrics, view_->columnWidth(0) - view_->indentation() * depth, index.data().toString());
+    size.setHeight(std::max(size.height(), need.height() + 2));
+    return size;
+  }
+  void paint(QPainter* painter, const QStyleOptionViewItem& option, const QModelIndex& index) const override {
+    if (index.column() != 0) {
+      QStyledItemDelegate::paint(painter, option, index);
+      return;
+    }
+    QStyleOptionViewItem opt = option;
+    initStyleOption(&opt, index);
+    const QString text = opt.text;
+    opt.text.clear();  // the background, selection and focus as the style draws them; the text below
+    const QWidget* widget = opt.widget;
+    QStyle* style = widget ? widget->style() : QApplication::style();
+    style->drawControl(QStyle::CE_ItemViewItem, &opt, painter, widget);
+    const QRect room = textRoom(opt.rect);
+    QStringList lines;
+    for (const QString& line : wrapped(opt.fontMetrics, room.width(), text)) lines << line;
+    painter->save();
+    painter->setPen(opt.palette.color(opt.state & QStyle::State_Selected ? QPalette::HighlightedText : QPalette::Text));
+    painter->setFont(opt.font);
+    const int h = opt.fontMetrics.height() * static_cast<int>(lines.size());
+    int y = room.top() + (room.height() - h) / 2;
+    for (const QString& line : lines) {
+      painter->drawText(QRect(room.left(), y, room.width(), opt.fontMetrics.height()), Qt::AlignLeft | Qt::AlignVCenter,
+                        line);
+      y += opt.fontMetrics.height();
+    }
+    painter->restore();
+  }
+
+  // The text's width in a cell of `cellWidth` pixels: a margin each side.
+  static constexpr int kMargin = 4;
+  static QRect textRoom(const QRect& cell) { return cell.adjusted(kMargin, 0, -kMargin, 0); }
+  // `text` in lines no wider than `width`: broken at spaces, a word too long cut in the middle.
+  static std::vector<QString> wrapped(const QFontMetrics& fm, int width, const QString& text) {
+    std::vector<QString> lines;
+    QString line;
+    for (const QString& word : text.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+      const QString longer = line.isEmpty() ? word : line + QLatin1Char(' ') + word;
+      if (line.isEmpty() || fm.horizontalAdvance(longer) <= width) {
+        line = longer;
+      } else {
+        lines.push_back(fm.elidedText(line, Qt::ElideMiddle, width));
+        line = word;
+      }
+    }
+    if (!line.isEmpty() || lines.empty()) lines.push_back(fm.elidedText(line, Qt::ElideMiddle, width));
+    return lines;
+  }
+  static QRect textBounds(const QFontMetrics& fm, int cellWidth, const QString& text) {
+    const int width = std::max(20, textRoom(QRect(0, 0, cellWidth, 1)).width());
+    return QRect(0, 0, width, fm.height() * static_cast<int>(wrapped(fm, width, text).size()));
+  }
+
+ private:
+  QTreeView* view_;
+};
+
 }  // namespace
 
 ProjectTree::ProjectTree(ProjectModel* model, QWidget* parent) : QTreeWidget(parent), model_(model) {
@@ -49,6 +124,17 @@ ProjectTree::ProjectTree(ProjectModel* model, QWidget* parent) : QTreeWidget(par
   header()->setStretchLastSection(false);
   header()->setSectionResizeMode(0, QHeaderView::Stretch);
   header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+  // In the dock's 260 pixels a long name ("Tyre 110/70-16 high-wheel scooter
+  // (front)") wraps onto more lines rather than being cut where names differ
+  // (WrappingDelegate); the whole name is in the tooltip as well. Indented by
+  // a little more than a branch arrow.
+  setUniformRowHeights(false);
+  setItemDelegate(new WrappingDelegate(this));
+  setIndentation(fontMetrics().height());
+  // Wrapped rows take their height for the new width (the view keeps row heights until laid out again).
+  connect(header(), &QHeaderView::sectionResized, this, [this](int section) {
+    if (section == 0) scheduleDelayedItemsLayout();
+  });
   setContextMenuPolicy(Qt::CustomContextMenu);
   connect(this, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* current) {
     if (!rebuilding_) emit currentProjectItemChanged(itemOf(current));
@@ -234,6 +320,18 @@ void ProjectTree::refresh() {
   // Observers hear of the selection only when it moved to another record.
   if (currentProjectItem() != selected || projectReplaced_) emit currentProjectItemChanged(currentProjectItem());
   projectReplaced_ = false;
+}
+
+QStringList ProjectTree::shownLines(const QTreeWidgetItem* row) const {
+  QStringList out;
+  if (!row) return out;
+  int depth = rootIsDecorated() ? 1 : 0;
+  for (const QTreeWidgetItem* up = row->parent(); up; up = up->parent()) ++depth;
+  const int cell = columnWidth(0) - indentation() * depth;
+  const QRect room = WrappingDelegate::textRoom(QRect(0, 0, cell, 1));
+  for (const QString& line : WrappingDelegate::wrapped(fontMetrics(), std::max(20, room.width()), row->text(0)))
+    out << line;
+  return out;
 }
 
 QSize ProjectTree::sizeHint() const {

@@ -28,6 +28,9 @@ class ProjectTree : public QTreeWidget {
   void refresh();
   // Wide enough for a specimen's name (the dock takes its width from this).
   QSize sizeHint() const override;
+  // The lines the first column draws for `row` at the present width: its
+  // name wrapped at spaces, a word wider than the column cut in the middle.
+  QStringList shownLines(const QTreeWidgetItem* row) const;
 
  signals:
   void currentProjectItemChanged(const mozzi::views::ProjectItem& item);

@@ -46,7 +46,9 @@ core::Result<void> cancelledIf(JobProgress& p) {
   return {};
 }
 
-std::shared_ptr<const core::Vector> backdrop(const core::FrfMatrix& frf, Backdrop kind) {
+}  // namespace
+
+std::shared_ptr<const core::Vector> backdropDb(const core::FrfMatrix& frf, Backdrop kind) {
   core::Vector mag;
   if (kind == Backdrop::Cmif) {
     auto sv = md::cmif(frf);
@@ -62,12 +64,10 @@ std::shared_ptr<const core::Vector> backdrop(const core::FrfMatrix& frf, Backdro
   return std::make_shared<const core::Vector>(std::move(db));
 }
 
-}  // namespace
-
 core::Result<Outcome> identify(const core::FrfMatrix& frf, const Options& options, JobProgress& progress) {
   Outcome out;
   out.options = options;
-  out.backdropDb = backdrop(frf, options.backdrop);
+  out.backdropDb = backdropDb(frf, options.backdrop);
   if (options.method == Method::Peak || options.method == Method::CircleFit) {
     progress.report(0.2, "single-mode fit");
     auto est = options.method == Method::Peak ? md::peakPicking(frf, 0, options.bandLowHz, options.bandHighHz)

@@ -57,6 +57,10 @@ struct Outcome {
   std::shared_ptr<const core::Vector> backdropDb;    // 20 log10 |sum| or of the first CMIF value, every line
 };
 
+// The diagram's backdrop of `frf` on every line [dB]: 20 log10 |sum of the
+// FRFs| or of the first CMIF value; null when it cannot be formed.
+std::shared_ptr<const core::Vector> backdropDb(const core::FrfMatrix& frf, Backdrop kind);
+
 // Worker thread. Errors: those of core (band, orders, no stable mode, ...), Cancelled.
 core::Result<Outcome> identify(const core::FrfMatrix& frf, const Options& options, JobProgress& progress);
 

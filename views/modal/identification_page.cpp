@@ -13,6 +13,7 @@
 #include <QLineEdit>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QTabWidget>
@@ -159,7 +160,10 @@ IdentificationPage::IdentificationPage(const PageContext& ctx) : QWidget(ctx.par
   // Small minimum sizes: the splitters share what the window has (1280x800 at
   // scale 1 and 2), the user drags them.
   diagram_->setMinimumSize(200, 160);
-  table_->setMinimumHeight(60);
+  // The table shows three modes at least (header, rows, the scroll bar under them).
+  table_->setMinimumHeight(table_->horizontalHeader()->sizeHint().height() +
+                           3 * table_->verticalHeader()->defaultSectionSize() +
+                           table_->horizontalScrollBar()->sizeHint().height() + 2 * table_->frameWidth());
   left->addWidget(diagram_);
   left->addWidget(tablePane);
   left->setStretchFactor(0, 3);
@@ -214,6 +218,12 @@ IdentificationPage::IdentificationPage(const PageContext& ctx) : QWidget(ctx.par
     if (i >= 0) setFrfSet(setBox_->itemData(i).toLongLong());
   });
   connect(synthesisFrfBox_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] { showSynthesis(); });
+  // Before a run the backdrop follows the choice at once.
+  connect(backdropBox_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
+    if (outcome_ || !frf_) return;
+    showBackdrop();
+    updateSelection();
+  });
   connect(tabs_, &QTabWidget::currentChanged, this, [this] { showTabs(); });
   connect(model_, &ProjectModel::frfSetsChanged, this, &IdentificationPage::reloadSets);
   connect(model_, &ProjectModel::projectChanged, this, &IdentificationPage::reloadSets);
@@ -282,14 +292,22 @@ bool IdentificationPage::setFrfSet(qint64 id) {
     if (i >= 0) setBox_->setCurrentIndex(i);
   }
   if (!same) {
-    // The whole set as the band until the user narrows it (0 Hz excluded: no mode there).
+    // The whole set as the band until the user narrows it (0 Hz excluded: no
+    // mode there), or the kept identification's band.
     const double f0 = frf_->frequencyHz[0] > 0.0 ? frf_->frequencyHz[0] : frf_->frequencyHz[1];
     setBand(f0, frf_->frequencyHz[frf_->lineCount() - 1]);
     outcome_.reset();
     chosen_.clear();
     automatic_.clear();
     fit_.reset();
-    diagram_->setDiagram(nullptr, nullptr, nullptr, QString());
+    kept_.reset();
+    showBackdrop();
+    loadKept();
+    if (kept_) {
+      setBand(kept_->info.bandLowHz, kept_->info.bandHighHz);
+      diagram_->setAxisScale(QwtPlot::xBottom, kept_->info.bandLowHz, kept_->info.bandHighHz);
+      diagram_->replot();
+    }
   }
   const QSignalBlocker block(synthesisFrfBox_);
   synthesisFrfBox_->clear();
@@ -321,6 +339,15 @@ bool IdentificationPage::setFrfSet(qint64 id) {
     text += QLatin1Char(' ') + tr("Measured with an exponential window (tau = %1 s): its damping is removed from the "
                                   "modes.")
                                    .arg(windowTauS_);
+  if (kept_) {
+    text += QLatin1Char(' ') +
+            tr("Shown: the kept identification '%1' (%2, %3 .. %4 Hz), %n mode(s) and their "
+               "synthesis; Run identifies again.",
+               nullptr, static_cast<int>(kept_->table.modes.size()))
+                .arg(QString::fromStdString(kept_->info.name), QString::fromStdString(kept_->info.method))
+                .arg(kept_->info.bandLowHz, 0, 'f', 1)
+                .arg(kept_->info.bandHighHz, 0, 'f', 1);
+  }
   setStatus(text, false);
   updateSelection();
   return true;
@@ -396,6 +423,7 @@ void IdentificationPage::onFinished(core::Result<identification::Outcome> result
   }
   progress_->setValue(1000);
   outcome_ = std::move(result).value();
+  kept_.reset();    // the run replaces the kept identification
   fitter_.reset();  // the band may have changed
   auto frequency = std::make_shared<const core::Vector>(frf_->frequencyHz);
   diagram_->setDiagram(
@@ -495,16 +523,16 @@ void IdentificationPage::updateSelection() {
                                                                  outcome_->diagram->resolutionHz));
   }
   fit_.reset();
-  if (frf_ && outcome_ && !chosen_.empty()) {
-    if (selectionIsAutomatic_ && !outcome_->diagram) {
+  const auto band = selectionBand();
+  if (frf_ && band && !chosen_.empty()) {
+    if (outcome_ && selectionIsAutomatic_ && !outcome_->diagram) {
       // Single-mode methods: the model is the estimate (no LSFD).
       identification::Fit fit;
       fit.model = outcome_->model;
       fit_ = fit;
     } else {
       if (!fitter_) {
-        auto fitter =
-            identification::SelectionFitter::create(frf_, outcome_->options.bandLowHz, outcome_->options.bandHighHz);
+        auto fitter = identification::SelectionFitter::create(frf_, band->first, band->second);
         if (fitter) {
           fitter_ = std::move(fitter).value();
         } else {
@@ -536,10 +564,10 @@ void IdentificationPage::updateSelection() {
 
 void IdentificationPage::showTable() {
   rows_.clear();
-  if (outcome_ && fit_) {
+  if (fit_) {
     // The automatic selection shows the refined model with its standard
-    // errors (the CLI's numbers); a hand-made one its LSFD fit until saved.
-    const bool automatic = selectionIsAutomatic_ && (outcome_->refined || !outcome_->diagram);
+    // errors (the CLI's numbers); a hand-made or kept one its LSFD fit.
+    const bool automatic = outcome_ && selectionIsAutomatic_ && (outcome_->refined || !outcome_->diagram);
     const md::ModalModel& m = automatic ? outcome_->model : fit_->model;
     auto rows = automatic ? md::modalTableRows(m, outcome_->frequencyStdHz, outcome_->zetaStd) : md::modalTableRows(m);
     if (rows) rows_ = std::move(rows).value();

@@ -9,16 +9,20 @@
 // it is shown; budget 50 ms on 100 FRFs x 20,000 lines). Two chosen poles that
 // are one mode (closer than the resolution, or the same shape) raise a
 // warning. Save stores the selection, refined as the CLI refines, as a modal
-// result of the project. All numbers come from core through
-// identification_backend.h.
+// result of the project. Opened on a set, before any run, the diagram shows
+// the set's sum (or CMIF) and, when the project keeps a modal result
+// identified from the set, its modes as the selection with their synthesis.
+// All numbers come from core through identification_backend.h.
 
 #include <QWidget>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/common/frf_matrix.h"
+#include "core/io/project_records.h"
 #include "core/modal/pole_selection.h"
 #include "views/common/page_registry.h"
 #include "views/modal/identification_backend.h"
@@ -84,6 +88,11 @@ class IdentificationPage : public QWidget {
   // Poles of the current selection (diagram order of choosing).
   std::vector<core::Complex> chosenPoles() const;
   const identification::Outcome* outcome() const { return outcome_ ? &*outcome_ : nullptr; }
+  // The kept identification shown until a run replaces it: the project's
+  // latest modal result of this set (null when none). Its modes are the
+  // selection: the poles of their f and zeta (with the set's exponential
+  // window's decay put back, as measured), fitted to the set over its band.
+  const core::io::ModalResultInfo* keptResult() const { return kept_ ? &kept_->info : nullptr; }
   // Milliseconds: result delivered -> diagram drawn; click -> table and
   // synthesis shown. Wall time, and the GUI thread's CPU time (what the work
   // costs, whatever else the machine runs).
@@ -109,6 +118,12 @@ class IdentificationPage : public QWidget {
   };
   void retranslate();
   void reloadSets();
+  // The set's sum or CMIF on the diagram before a run.
+  void showBackdrop();
+  // The latest modal result of the set as the selection (kept_, chosen_).
+  void loadKept();
+  // Band of the fit behind the selection: the run's, else the kept result's.
+  std::optional<std::pair<double, double>> selectionBand() const;
   void onFinished(core::Result<identification::Outcome> result);
   void updateSelection();
   void showTable();
@@ -129,6 +144,11 @@ class IdentificationPage : public QWidget {
   double windowTauS_ = 0.0;
   std::shared_ptr<const core::FrfMatrix> frf_;
   std::optional<identification::Outcome> outcome_;
+  struct Kept {
+    core::io::ModalResultInfo info;
+    core::io::ModalTable table;
+  };
+  std::optional<Kept> kept_;
   std::vector<Chosen> chosen_;
   std::vector<Chosen> automatic_;
   // The pole-click fit over the run's band (made when first needed, dropped

@@ -648,7 +648,10 @@ void FrfPlot::retranslate() {
     case View::Coherence: main_->setAxisTitle(QwtPlot::yLeft, tr("Coherence")); break;
   }
   secondary_->setAxisTitle(QwtPlot::yLeft, view_ == View::RealImaginary ? partTitle(tr("Im H")) : phaseTitle);
-  coherence_->setAxisTitle(QwtPlot::yLeft, tr("Coherence"));
+  // The stacked coherence plot is short (its axis about 80 pixels at
+  // 1280x800): its title is the symbol, which fits, and the word a tooltip.
+  coherence_->setAxisTitle(QwtPlot::yLeft, tr("γ²"));
+  coherence_->axisWidget(QwtPlot::yLeft)->setToolTip(tr("Coherence γ² (0 to 1)"));
   // Stacked plots share one frequency axis, drawn under the lowest: the
   // height goes to the curves (three plots in a 1280x800 window).
   const bool coherenceBelow = stacksCoherence() && !coherence_->isHidden();

@@ -55,6 +55,8 @@ HitTimeView::HitTimeView(QWidget* parent) : QWidget(parent) {
   forceWindow_ = makeCurve(plot_, QColor(29, 53, 87), 1.5, Qt::DashLine, QwtPlot::yLeft);
   responseWindow_ = makeCurve(plot_, QColor(230, 57, 70), 1.5, Qt::DashLine, QwtPlot::yRight);
   plot_->insertLegend(new QwtLegend, QwtPlot::TopLegend);
+  // A small least size: beside the FRFs in one tab, the page fits 1280x800 (at scale 2 too).
+  plot_->setMinimumSize(200, 160);
 
   auto* bar = new QHBoxLayout;
   bar->addWidget(hitLabel_);

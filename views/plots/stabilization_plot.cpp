@@ -99,6 +99,9 @@ void StabilizationPlot::setDiagram(std::shared_ptr<const core::modal::Stabilizat
     setAxisScale(QwtPlot::xBottom, diagram_->bandLowHz, diagram_->bandHighHz);
     const int top = diagram_->orders.empty() ? 1 : diagram_->orders.back();
     setAxisScale(QwtPlot::yLeft, 0.0, top + 2.0);
+  } else if (backdrop_->dataSize() > 1) {
+    const QRectF r = backdrop_->boundingRect();
+    setAxisScale(QwtPlot::xBottom, r.left(), r.right());
   }
   if (backdrop_->dataSize() > 0) {
     const QRectF r = backdrop_->boundingRect();
@@ -148,6 +151,12 @@ int StabilizationPlot::drawnPoleCount() const {
   int n = 0;
   for (auto* c : statusCurves_) n += static_cast<int>(c->dataSize());
   return n;
+}
+
+std::vector<double> StabilizationPlot::modeLineFrequencies() const {
+  std::vector<double> out;
+  for (const auto* m : modeLines_) out.push_back(m->xValue());
+  return out;
 }
 
 void StabilizationPlot::onClicked(QPointF plotPoint, QPoint) {

@@ -26,7 +26,8 @@ class StabilizationPlot : public InteractivePlot {
   explicit StabilizationPlot(QWidget* parent = nullptr);
 
   // The diagram, and the backdrop: |sum| or the first CMIF value on the
-  // frequency lines, drawn in dB on the right axis. Title names it.
+  // frequency lines, drawn in dB on the right axis. Title names it. Without a
+  // diagram (before a run) the backdrop alone spans the frequency axis.
   void setDiagram(std::shared_ptr<const core::modal::StabilizationDiagram> diagram,
                   std::shared_ptr<const core::Vector> frequencyHz, std::shared_ptr<const core::Vector> backdropDb,
                   const QString& backdropTitle);
@@ -37,6 +38,10 @@ class StabilizationPlot : public InteractivePlot {
   QPoint polePixel(int index) const;
   // Points in the status curves (for tests and the time budget).
   int drawnPoleCount() const;
+  // The backdrop curve (its samples: frequency [Hz], value [dB]).
+  const DecimatingCurve* backdropCurve() const { return backdrop_; }
+  // Frequencies [Hz] of the dashed lines at the selected modes.
+  std::vector<double> modeLineFrequencies() const;
 
  signals:
   void poleClicked(int index);

@@ -13,6 +13,8 @@
 #include <QLabel>
 #include <QPainter>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QSplitter>
@@ -155,8 +157,20 @@ ModeAnimationView::ModeAnimationView(QWidget* parent) : QWidget(parent) {
   big.setBold(true);
   macLabel_->setFont(big);
   form->addRow(macLabel_);
-  controls->setMaximumWidth(controls->fontMetrics().averageCharWidth() * 48);
-  layout->addWidget(controls);
+  // The controls scroll on their own: the 3-D view keeps the page's height
+  // (the page fits a 1280x800 window at any scale, the shape stays in view).
+  auto* controlsScroll = new QScrollArea(this);
+  controlsScroll->setObjectName(QStringLiteral("animationControlsScroll"));
+  controlsScroll->setFrameShape(QFrame::NoFrame);
+  controlsScroll->setWidgetResizable(true);
+  controlsScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  controlsScroll->setWidget(controls);
+  const int controlsWidth = controls->fontMetrics().averageCharWidth() * 48;
+  controls->setMaximumWidth(controlsWidth);
+  controlsScroll->setMaximumWidth(controlsWidth + controlsScroll->verticalScrollBar()->sizeHint().width());
+  controlsScroll->setMinimumWidth(controls->minimumSizeHint().width() +
+                                  controlsScroll->verticalScrollBar()->sizeHint().width());
+  layout->addWidget(controlsScroll);
 
   auto* splitter = new QSplitter(Qt::Horizontal, this);
   splitter_ = splitter;

@@ -44,58 +44,10 @@
 
 #include "core/geometry/mesh_placement.h"
 #include "core/io/project_store.h"
+#include "views/scene/scene_view_pipeline.h"
 
 namespace mozzi {
 namespace views {
-
-struct SceneView::Pipeline {
-  vtkNew<vtkGenericOpenGLRenderWindow> window;
-  vtkNew<vtkRenderer> renderer;
-  vtkNew<vtkAxesActor> axes;
-  vtkNew<vtkOrientationMarkerWidget> marker;
-  // mesh layer (undeformed)
-  vtkNew<vtkPolyData> mesh;
-  vtkNew<vtkPolyDataMapper> meshMapper;
-  vtkNew<vtkActor> meshActor;
-  vtkNew<vtkPolyData> nodes;
-  vtkNew<vtkPolyDataMapper> nodeMapper;
-  vtkNew<vtkActor> nodeActor;
-  // selection
-  vtkNew<vtkPolyData> selection;
-  vtkNew<vtkPolyDataMapper> selectionMapper;
-  vtkNew<vtkActor> selectionActor;
-  // labels
-  vtkNew<vtkLabeledDataMapper> labelMapper;
-  vtkNew<vtkActor2D> labelActor;
-  // deformed layer: its own points (written per tick), the mesh's cells
-  vtkNew<vtkPolyData> deformed;
-  vtkNew<vtkPoints> deformedPoints;
-  vtkNew<vtkDoubleArray> deformedCoords;
-  vtkNew<vtkUnsignedCharArray> colours;  // RGB per node, from the peak displacement: set once per shape
-  vtkNew<vtkPolyDataMapper> deformedMapper;
-  vtkNew<vtkActor> deformedActor;
-  vtkNew<vtkLookupTable> lut;
-  vtkNew<vtkScalarBarActor> legend;
-  // arrows at the arrow nodes: undeformed position, vector = displacement now
-  vtkNew<vtkPolyData> arrowInput;
-  vtkNew<vtkDoubleArray> arrowVectors;
-  vtkNew<vtkArrowSource> arrow;
-  vtkNew<vtkGlyph3D> glyphs;
-  vtkNew<vtkPolyDataMapper> arrowMapper;
-  vtkNew<vtkActor> arrowActor;
-  vtkNew<vtkPointPicker> picker;
-  // hit marker: a large node and an arrow ending at it
-  vtkNew<vtkPolyData> hitNode;
-  vtkNew<vtkPolyDataMapper> hitNodeMapper;
-  vtkNew<vtkActor> hitNodeActor;
-  vtkNew<vtkPolyData> hitArrowInput;
-  vtkNew<vtkArrowSource> hitArrow;
-  vtkNew<vtkDoubleArray> hitArrowVector;
-  vtkNew<vtkGlyph3D> hitGlyph;
-  vtkNew<vtkPolyDataMapper> hitArrowMapper;
-  vtkNew<vtkActor> hitArrowActor;
-  vtkNew<vtkBillboardTextActor3D> hitText;  // the point's DOF, beside the node, facing the camera
-};
 
 void SceneView::prepareSurfaceFormat() {
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLStereoWidget::defaultFormat());
@@ -281,6 +233,7 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), pipeline_(new Pipeline)
   p.renderer->GetActiveCamera()->SetPosition(1.0, -1.5, 1.0);
   p.renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
   p.renderer->ResetCamera();
+  framedPose_ = cameraPose();
   retranslate();
 }
 
@@ -364,16 +317,35 @@ void SceneView::showMesh(const core::io::StoredMesh& mesh, const std::vector<cor
   p.selection->Initialize();
   clearShape();
   if (resetCamera) {
-    p.renderer->ResetCamera();
+    this->resetCamera();
   } else {
     p.renderer->ResetCameraClippingRange();  // new nodes far away are not clipped
+    render();
   }
-  render();
+}
+
+std::array<double, 9> SceneView::cameraPose() const {
+  std::array<double, 9> pose{};
+  vtkCamera* camera = pipeline_->renderer->GetActiveCamera();
+  camera->GetPosition(pose.data());
+  camera->GetFocalPoint(pose.data() + 3);
+  camera->GetViewUp(pose.data() + 6);
+  return pose;
 }
 
 void SceneView::resetCamera() {
-  pipeline_->renderer->ResetCamera();
+  std::array<double, 6> b = drawnBounds();
+  if (b[0] <= b[1]) {
+    pipeline_->renderer->ResetCamera(b.data());
+  } else {
+    pipeline_->renderer->ResetCamera();
+  }
+  framedPose_ = cameraPose();
   render();
+}
+
+void SceneView::reframeIfUntouched() {
+  if (!cameraMovedSinceFraming()) resetCamera();
 }
 
 void SceneView::clearMesh() {
@@ -489,67 +461,6 @@ std::optional<int> SceneView::nodeAt(const QPoint& widgetPos) const {
   return labels_[static_cast<std::size_t>(id)];
 }
 
-bool SceneView::setShape(const core::geometry::NodeDisplacements& u, const std::vector<int>& arrowNodes) {
-  Pipeline& p = *pipeline_;
-  vtkPoints* meshPoints = p.mesh->GetPoints();
-  const Eigen::Index n = meshPoints ? meshPoints->GetNumberOfPoints() : 0;
-  if (u.rows() != n || n == 0) return false;
-  // Built once per shape: base points, Re and Im parts, the deformed layer's
-  // arrays, colours and cells. Ticks only write into deformedCoords.
-  base_.resize(n, 3);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    double xyz[3];
-    meshPoints->GetPoint(i, xyz);
-    base_.row(i) << xyz[0], xyz[1], xyz[2];
-  }
-  shape_ = u;
-  re_ = core::geometry::realPart(u);
-  im_ = core::geometry::imagPart(u);
-  shapeRows_ = n;
-  p.deformedCoords->SetNumberOfTuples(n);
-  p.colours->SetNumberOfTuples(n);
-  p.deformed->SetLines(p.mesh->GetLines());
-  p.deformed->SetPolys(p.mesh->GetPolys());
-  // Large meshes: the lines show the nodes; per-node dots would double the
-  // vertex work of every frame under software OpenGL.
-  if (isLarge()) {
-    p.deformed->SetVerts(nullptr);
-  } else {
-    p.deformed->SetVerts(p.nodes->GetVerts());
-  }
-  arrowRows_.clear();
-  for (int row : arrowNodes)
-    if (row >= 0 && row < n) arrowRows_.push_back(row);
-  vtkNew<vtkPoints> arrowPoints;
-  arrowPoints->SetDataTypeToDouble();
-  arrowPoints->SetNumberOfPoints(static_cast<vtkIdType>(arrowRows_.size()));
-  for (std::size_t k = 0; k < arrowRows_.size(); ++k)
-    arrowPoints->SetPoint(static_cast<vtkIdType>(k), base_.row(arrowRows_[k]).data());
-  p.arrowInput->SetPoints(arrowPoints);
-  p.arrowVectors->SetNumberOfTuples(static_cast<vtkIdType>(arrowRows_.size()));
-  p.deformedActor->SetVisibility(1);
-  p.legend->SetVisibility(colourByMagnitude_ ? 1 : 0);
-  p.arrowActor->SetVisibility(arrowsVisible_ && !arrowRows_.empty() ? 1 : 0);
-  applyStyle();
-  updateColourRange();
-  setPhase(phase_);
-  return true;
-}
-
-void SceneView::clearShape() {
-  Pipeline& p = *pipeline_;
-  shapeRows_ = 0;
-  shape_.resize(0, 3);
-  base_.resize(0, 3);
-  re_.resize(0, 3);
-  im_.resize(0, 3);
-  arrowRows_.clear();
-  p.deformedActor->VisibilityOff();
-  p.legend->VisibilityOff();
-  p.arrowActor->VisibilityOff();
-  applyStyle();
-}
-
 bool SceneView::isLarge() const {
   return meshPoints_ > kLargeMeshNodes;
 }
@@ -594,64 +505,6 @@ void SceneView::applyStyle() {
   }
 }
 
-void SceneView::setAmplitude(double amplitude) {
-  amplitude_ = amplitude;
-  if (!hasShape()) return;
-  updateColourRange();
-  setPhase(phase_);
-}
-
-void SceneView::setPhase(double theta) {
-  phase_ = theta;
-  if (!hasShape()) {
-    render();
-    return;
-  }
-  Pipeline& p = *pipeline_;
-  const auto scales = core::geometry::warpScales(amplitude_, theta);
-  // One fused loop into the array VTK draws; the colours stay as they are.
-  core::geometry::deformPoints(base_.data(), re_.data(), im_.data(), shapeRows_, scales,
-                               p.deformedCoords->GetPointer(0));
-  p.deformedCoords->Modified();
-  p.deformedPoints->Modified();
-  if (p.arrowActor->GetVisibility()) {
-    double* v = p.arrowVectors->GetPointer(0);
-    for (std::size_t k = 0; k < arrowRows_.size(); ++k) {
-      const Eigen::Index r = arrowRows_[k];
-      for (int c = 0; c < 3; ++c) v[3 * k + c] = scales.re * re_(r, c) + scales.im * im_(r, c);
-    }
-    p.arrowVectors->Modified();
-    p.arrowInput->Modified();
-  }
-  render();
-}
-
-void SceneView::updateColourRange() {
-  colourRange_ = core::geometry::colourRange(shape_, amplitude_);
-  Pipeline& p = *pipeline_;
-  p.lut->SetTableRange(colourRange_.min, colourRange_.max);
-  // Each node's colour: its peak displacement over the cycle through the
-  // legend's table (once per shape and amplitude, not per tick).
-  const core::Vector values = core::geometry::colourValues(shape_, amplitude_);
-  if (p.colours->GetNumberOfTuples() != values.size()) p.colours->SetNumberOfTuples(values.size());
-  unsigned char* rgb = p.colours->GetPointer(0);
-  for (Eigen::Index i = 0; i < values.size(); ++i) {
-    const unsigned char* c = p.lut->MapValue(values[i]);
-    rgb[3 * i] = c[0];
-    rgb[3 * i + 1] = c[1];
-    rgb[3 * i + 2] = c[2];
-  }
-  p.colours->Modified();
-}
-
-void SceneView::setColourByMagnitude(bool on) {
-  colourByMagnitude_ = on;
-  Pipeline& p = *pipeline_;
-  p.deformedMapper->SetScalarVisibility(on ? 1 : 0);
-  p.legend->SetVisibility(on && hasShape() ? 1 : 0);
-  render();
-}
-
 bool SceneView::undeformedShown() const {
   return pipeline_->meshActor->GetVisibility() != 0;
 }
@@ -678,10 +531,6 @@ void SceneView::setArrowsVisible(bool on) {
 void SceneView::setLegendTitle(const QString& title) {
   pipeline_->legend->SetTitle(title.toUtf8().constData());
   render();
-}
-
-vtkPoints* SceneView::deformedPoints() const {
-  return pipeline_->deformedPoints;
 }
 
 QImage SceneView::grabFrame() {
@@ -713,6 +562,15 @@ void SceneView::render() {
 }
 
 bool SceneView::eventFilter(QObject* watched, QEvent* event) {
+  // A new size changes the view's aspect: framed again (after VTK has taken
+  // the size) while the camera is where the last framing put it.
+  if (watched == vtkWidget_ && event->type() == QEvent::Resize && !reframeQueued_) {
+    reframeQueued_ = true;
+    QTimer::singleShot(0, this, [this] {
+      reframeQueued_ = false;
+      reframeIfUntouched();
+    });
+  }
   if (watched == vtkWidget_ || watched == vtkWidget_->embeddedOpenGLWindow()) {
     if (event->type() == QEvent::MouseButtonPress) {
       auto* me = static_cast<QMouseEvent*>(event);

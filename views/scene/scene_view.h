@@ -15,6 +15,7 @@
 
 #include <QImage>
 #include <QWidget>
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -56,8 +57,15 @@ class SceneView : public QWidget {
   void showMesh(const core::io::StoredMesh& mesh, const std::vector<core::Vector3>& globalPositions,
                 bool resetCamera = true);
   void clearMesh();
-  // Frames everything drawn and renders.
+  // Frames everything drawn and renders: the mesh and, with a shape shown,
+  // every place the shape reaches over the cycle at the current amplitude
+  // (drawnBounds). Done as well when a shape is set or its amplitude changes,
+  // and when the view is resized, as long as the user has not moved the
+  // camera since the last framing.
   void resetCamera();
+  // Bounds (x min, x max, y min, y max, z min, z max; global axes) of the mesh
+  // and of the deformed shape over a whole cycle at the current amplitude.
+  std::array<double, 6> drawnBounds() const;
   int meshPointCount() const { return meshPoints_; }
   int meshLineCount() const { return meshLines_; }
   int meshFaceCount() const { return meshFaces_; }
@@ -127,6 +135,10 @@ class SceneView : public QWidget {
  private:
   void updateColourRange();
   void retranslate();
+  // The camera as the last framing left it (position, focal point, view up).
+  std::array<double, 9> cameraPose() const;
+  bool cameraMovedSinceFraming() const { return cameraPose() != framedPose_; }
+  void reframeIfUntouched();
   void hideHitMarker();
   // Meshes above this many nodes are drawn for speed (thin lines, plain dots,
   // no dots on the deformed shape, opaque overlay shown only while paused):
@@ -162,6 +174,8 @@ class SceneView : public QWidget {
   core::geometry::ColourRange colourRange_;
   QPoint pressPos_;
   bool pressed_ = false;
+  std::array<double, 9> framedPose_{};
+  bool reframeQueued_ = false;
 };
 
 // The stored mesh of a specimen shown in `scene`: read from the project,

@@ -28,6 +28,7 @@
 #include "devices/rigtests/imported_twist.h"
 #include "devices/rigtests/stiffness_results.h"
 #include "views/plots/interactive_plot.h"
+#include "views/plots/marker_labels.h"
 #include "views/scene/plate_sketch.h"
 #include "views/scene/twist_csv_import.h"
 
@@ -622,7 +623,9 @@ void TwistAxesPage::clipAxes() {
   place(sketch_->markers(), sketch_->markerAlignments());
   place(markers_, markerAlign_);
   // `along`: where the label sits, as a fraction of the segment from its upper
-  // end (the four lines' labels apart from each other).
+  // end (the four lines' labels apart from each other); other places along
+  // the line are the label's fallbacks when another label is there.
+  std::vector<LabelChoice> axisLabels;
   auto draw = [&](QwtPlotCurve* curve, QwtPlotMarker* tag, const std::optional<st::PlateAxis>& axis,
                   const QString& text, double along) {
     curve->setSamples(QVector<QPointF>());
@@ -635,6 +638,17 @@ void TwistAxesPage::clipAxes() {
     const core::Vector2 other = seg->to(1) >= seg->from(1) ? seg->from : seg->to;
     const core::Vector2 at = top + along * (other - top);
     tag->setValue(at(0), at(1));
+    LabelChoice choice{tag, {}};
+    for (double step : {0.0, 0.08, -0.08, 0.16, -0.16, 0.24, -0.24, 0.32, -0.32, 0.4, -0.4, 0.5, -0.5, 0.6, -0.6}) {
+      const double f = along + step;
+      if (f < 0.03 || f > 0.97) continue;
+      const core::Vector2 p = top + f * (other - top);
+      const Qt::Alignment away = p(0) > centreU ? Qt::AlignLeft : Qt::AlignRight;
+      const Qt::Alignment towards = away == Qt::AlignLeft ? Qt::AlignRight : Qt::AlignLeft;
+      choice.spots.push_back({QPointF(p(0), p(1)), away | Qt::AlignVCenter});
+      choice.spots.push_back({QPointF(p(0), p(1)), towards | Qt::AlignVCenter});
+    }
+    axisLabels.push_back(std::move(choice));
     QwtText t(text);
     t.setColor(curve->pen().color());
     QColor back(Qt::white);
@@ -669,7 +683,43 @@ void TwistAxesPage::clipAxes() {
     dynText = tr("dynamic twist axis, %1 Hz").arg(at.frequencyHz, 0, 'g', 4);
   }
   draw(dynamicAxis_, dynamicAxisLabel_, dyn, dynText, 0.22);
+  separateLabels(axisLabels);
   plot_->replot();
+}
+
+// The labels apart (thesis figures are crowded near the load point): the
+// points' labels first, each at the first clear spot around its point, then
+// the axes' along their lines; none covers another or a marked point.
+void TwistAxesPage::separateLabels(const std::vector<LabelChoice>& axisLabels) {
+  std::vector<LabelChoice> labels;
+  std::vector<QRectF> obstacles;
+  auto around = [this](QPointF value, QSizeF size) {
+    const QPointF at(plot_->transform(QwtPlot::xBottom, value.x()), plot_->transform(QwtPlot::yLeft, value.y()));
+    return QRectF(at.x() - size.width() / 2.0, at.y() - size.height() / 2.0, size.width(), size.height());
+  };
+  std::vector<QwtPlotMarker*> points = sketch_->markers();
+  points.insert(points.end(), markers_.begin(), markers_.end());
+  for (QwtPlotMarker* m : points) {
+    if (m->symbol()) obstacles.push_back(around(m->value(), m->symbol()->size()));
+    if (m->label().isEmpty()) continue;
+    const Qt::Alignment preferred = m->labelAlignment();
+    const Qt::Alignment h = preferred & Qt::AlignHorizontal_Mask, v = preferred & Qt::AlignVertical_Mask;
+    const Qt::Alignment otherH = h == Qt::AlignLeft ? Qt::AlignRight : Qt::AlignLeft;
+    LabelChoice choice{m, {}};
+    for (Qt::Alignment hh : {h, otherH, Qt::Alignment(Qt::AlignHCenter)})
+      for (Qt::Alignment vv :
+           {v, Qt::Alignment(Qt::AlignBottom), Qt::Alignment(Qt::AlignTop), Qt::Alignment(Qt::AlignVCenter)}) {
+        if (hh == Qt::AlignHCenter && vv == Qt::AlignVCenter) continue;  // over its own point
+        choice.spots.push_back({m->value(), hh | vv});
+      }
+    labels.push_back(std::move(choice));
+  }
+  const QwtSeriesData<QPointF>* lasers = sketch_->laserCurve()->data();
+  for (std::size_t i = 0; i < lasers->size(); ++i)
+    obstacles.push_back(around(lasers->sample(i), QSizeF(4, 4)));  // its label sits 2.5 px off
+  if (dynamicFoot_->isVisible()) obstacles.push_back(around(dynamicFoot_->value(), QSizeF(10, 10)));
+  labels.insert(labels.end(), axisLabels.begin(), axisLabels.end());
+  placeMarkerLabels(plot_, labels, obstacles);
 }
 
 void TwistAxesPage::fillTable() {

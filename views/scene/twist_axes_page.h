@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "views/common/page_registry.h"
+#include "views/plots/marker_labels.h"
 
 class QComboBox;
 class QLabel;
@@ -96,6 +97,7 @@ class TwistAxesPage : public QWidget {
   void drawStatic();
   void drawFrequency();
   void clipAxes();
+  void separateLabels(const std::vector<LabelChoice>& axisLabels);
   void fillTable();
   void setStatus(const QString& text, bool error = false);
   void addImportedTests();

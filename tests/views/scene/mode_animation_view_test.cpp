@@ -10,6 +10,7 @@
 
 #include <qwt_plot_curve.h>
 #include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkPoints.h>
 #include <vtkRenderWindow.h>
@@ -102,6 +103,7 @@ class ModeAnimationViewTest : public QObject {
   void exportsFramesGifAndPngSequence();
   void twentyThousandNodesAnimateFast();
   void odsFollowsThePlotCursor();
+  void theShapeStaysInTheViewport();
 };
 
 void ModeAnimationViewTest::vertexPositionsAtAPhaseAreShapeTimesScale() {
@@ -410,6 +412,65 @@ int main(int argc, char** argv) {
   QApplication app(argc, argv);
   ModeAnimationViewTest test;
   return QTest::qExec(&test, argc, argv);
+}
+
+// Every deformed point over a cycle is projected inside the 3-D viewport
+// (VTK's world to display transform): after the shape is shown, after a
+// resize to a tall narrow view, and at three times the amplitude; once the
+// user has turned the camera, a resize leaves it where the user put it.
+void ModeAnimationViewTest::theShapeStaysInTheViewport() {
+  ModeAnimationView view;
+  view.resize(1280, 800);
+  view.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&view));
+  QTRY_VERIFY(view.scene()->isReady());
+  view.setMesh(fork());
+  view.setShapes(shapes());
+  QVERIFY(view.showShape(1));
+  mozzi::views::SceneView* scene = view.scene();
+  auto outside = [&] {
+    QTest::qWait(50);  // the reframing queued by a resize
+    vtkRenderer* renderer = scene->renderer();
+    const int* size = renderer->GetSize();
+    int out = 0;
+    for (int k = 0; k < 16; ++k) {
+      view.setPhase(k * M_PI / 8.0);
+      vtkPoints* points = scene->deformedPoints();
+      for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i) {
+        double p[3], d[3];
+        points->GetPoint(i, p);
+        renderer->SetWorldPoint(p[0], p[1], p[2], 1.0);
+        renderer->WorldToDisplay();
+        renderer->GetDisplayPoint(d);
+        if (d[0] < 0.0 || d[0] > size[0] || d[1] < 0.0 || d[1] > size[1]) ++out;
+      }
+    }
+    return out;
+  };
+  QCOMPARE(outside(), 0);
+  view.resize(700, 900);  // the scene narrower than tall
+  QCOMPARE(outside(), 0);
+  view.setAmplitudeFactor(3.0);
+  QCOMPARE(outside(), 0);
+  // The box the shape sweeps holds every deformed point.
+  const auto b = scene->drawnBounds();
+  for (int k = 0; k < 8; ++k) {
+    view.setPhase(k * M_PI / 4.0);
+    vtkPoints* points = scene->deformedPoints();
+    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i) {
+      double p[3];
+      points->GetPoint(i, p);
+      for (int c = 0; c < 3; ++c) QVERIFY(p[c] >= b[2 * c] - 1e-12 && p[c] <= b[2 * c + 1] + 1e-12);
+    }
+  }
+  // A camera the user moved stays.
+  scene->renderer()->GetActiveCamera()->Azimuth(30.0);
+  double before[3], after[3];
+  scene->renderer()->GetActiveCamera()->GetPosition(before);
+  view.resize(900, 700);
+  QTest::qWait(50);
+  scene->renderer()->GetActiveCamera()->GetPosition(after);
+  for (int c = 0; c < 3; ++c) QCOMPARE(after[c], before[c]);
 }
 
 #include "mode_animation_view_test.moc"

@@ -17,7 +17,9 @@
 
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
+#include <qwt_plot_marker.h>
 #include <qwt_scale_map.h>
+#include <qwt_text.h>
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
@@ -40,6 +42,7 @@
 #include "views/common/job_runner.h"
 #include "views/common/project_model.h"
 #include "views/plots/interactive_plot.h"
+#include "views/plots/marker_labels.h"
 #include "views/screenshot.h"
 
 using mozzi::views::JobRunner;
@@ -57,6 +60,15 @@ constexpr double kPi = 3.14159265358979323846;
 const char* const kSpecimen = "frame-a-front-constrained";
 constexpr std::uint64_t kSeed = 11;
 const std::vector<double> kFrequencies{1, 5, 10, 15, 20};
+
+// Every pair of label rectangles on the plot apart (markerLabelRect: where
+// Qwt paints them); the pairs that touch are printed.
+bool noLabelOverlaps(TwistAxesPage& page) {
+  const auto pairs = mozzi::views::overlappingMarkerLabels(page.plot());
+  for (const auto& [a, b] : pairs)
+    qWarning("labels overlap: %s / %s", qPrintable(a->label().text()), qPrintable(b->label().text()));
+  return pairs.empty();
+}
 
 void saveShot(QWidget& page, const QString& name) {
   // Results posted just before are laid out first.
@@ -210,6 +222,9 @@ class TwistAxesPageTest : public QObject {
           QStringLiteral("dynamic twist axis, %1 Hz").arg(kFrequencies[static_cast<std::size_t>(k)], 0, 'g', 4)));
       QVERIFY(page.resultsTable()->horizontalHeaderItem(2)->text().contains(
           QString::number(kFrequencies[static_cast<std::size_t>(k)], 'g', 4)));
+      // No label covers another, at every frequency (the axes' labels move with it).
+      QTest::qWait(20);  // the labels are placed once the view has settled
+      QVERIFY2(noLabelOverlaps(page), qPrintable(QString::number(k)));
       if (k == 0) saveShot(page, QStringLiteral("twist_axes"));
     }
     QCOMPARE(page.pathCurve()->dataSize(), kFrequencies.size());
@@ -280,6 +295,8 @@ class TwistAxesPageTest : public QObject {
     QVERIFY(!page.plotLabels().contains(QStringLiteral("centre of gravity (estimated)")));  // none known for forks
     page.frequencySlider()->setValue(page.frequencySlider()->maximum());
     QCOMPARE(*page.shownFrequencyHz(), 15.0);
+    QTest::qWait(20);
+    QVERIFY(noLabelOverlaps(page));
     saveShot(page, QStringLiteral("twist_axes_fork_a"));
   }
 
