@@ -47,6 +47,9 @@ QColor modeColour(const std::string& name) {
 
 using Model = StabilityPage::Model;
 
+// The width a combo box asks for, in characters (its entries are longer).
+constexpr int kComboMinChars = 22;
+
 // The fork of each Model entry, as core::stability::StabilityRequest names it.
 const char* const kForks[] = {"rigid", "bending", "torsion", "rigid", "model 1", "model 2", "model 3"};
 
@@ -70,16 +73,23 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
   model_ = new QComboBox(this);
   model_->setObjectName(QStringLiteral("stabilityModel"));
   for (int i = 0; i < 7; ++i) model_->addItem(QString());
+  // Combo boxes as wide as the row gives them, not as their longest entry
+  // (a kept fork's name, a model's reference): the page fits 1280x800 with
+  // the project dock open; the full text is in the drop-down list.
+  model_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  model_->setMinimumContentsLength(kComboMinChars);
   forkLabel_ = new QLabel(this);
   fork_ = new QComboBox(this);
   fork_->setObjectName(QStringLiteral("stabilityFork"));
-  fork_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+  fork_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  fork_->setMinimumContentsLength(kComboMinChars);
   compare_ = new QCheckBox(this);
   compare_->setObjectName(QStringLiteral("stabilityCompareRigid"));
   paramsLabel_ = new QLabel(this);
   paramsFile_ = new QLabel(this);
   paramsFile_->setObjectName(QStringLiteral("stabilityParameterFile"));
   paramsFile_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  paramsFile_->setWordWrap(true);  // a long file name wraps rather than widen the page
   paramsButton_ = new QPushButton(this);
   paramsButton_->setObjectName(QStringLiteral("stabilityChooseParameters"));
   paramsClear_ = new QPushButton(this);
@@ -107,7 +117,8 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
   storedLabel_ = new QLabel(this);
   stored_ = new QComboBox(this);
   stored_->setObjectName(QStringLiteral("stabilityStored"));
-  stored_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+  stored_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  stored_->setMinimumContentsLength(kComboMinChars);
   showStored_ = new QPushButton(this);
   showStored_->setObjectName(QStringLiteral("stabilityShowStored"));
   real_ = makePlot(this, "stabilityReal");
@@ -128,9 +139,10 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
   params->addWidget(paramsFile_, 1);
   params->addWidget(paramsButton_);
   params->addWidget(paramsClear_);
-  params->addWidget(forkLabel_);
-  params->addWidget(fork_);
-  params->addWidget(compare_);
+  auto* forkRow = new QHBoxLayout;  // the fork on a row of its own: one row was wider than the tab area
+  forkRow->addWidget(forkLabel_);
+  forkRow->addWidget(fork_, 1);
+  forkRow->addWidget(compare_);
   auto* kept = new QHBoxLayout;
   kept->addWidget(storedLabel_);
   kept->addWidget(stored_, 1);
@@ -138,6 +150,7 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(bar);
   layout->addLayout(params);
+  layout->addLayout(forkRow);
   layout->addLayout(kept);
   layout->addWidget(summary_);
   layout->addWidget(real_, 1);
