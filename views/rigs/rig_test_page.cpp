@@ -180,7 +180,10 @@ QwtPlotCurve* addCurve(QwtPlot* plot, const QColor& colour, int yAxis) {
 
 void setAxisText(QwtPlot* plot, int axis, const QString& text) {
   QwtText title(text);
-  title.setRenderFlags(Qt::AlignCenter);  // no Qt::TextWordWrap
+  // A vertical axis's title on one line; a horizontal one may wrap (it
+  // only grows downwards, under the tick labels).
+  const bool horizontal = axis == QwtPlot::xBottom || axis == QwtPlot::xTop;
+  title.setRenderFlags(horizontal ? Qt::AlignCenter | Qt::TextWordWrap : Qt::AlignCenter);
   title.setFont(plot->font());
   plot->setAxisTitle(axis, title);
 }
@@ -345,6 +348,7 @@ void RigTestPage::buildUi() {
   logView_->setObjectName(QStringLiteral("log"));
   logView_->setReadOnly(true);
   logView_->setMaximumBlockCount(2000);
+  logView_->hide();  // shown when a run starts: until then the results take its room
   auto* bottom = new QSplitter(Qt::Horizontal);
   bottom->addWidget(resultsBox_);
   bottom->addWidget(logView_);

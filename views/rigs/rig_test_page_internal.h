@@ -99,9 +99,9 @@ inline QString number(double v) {
 QString resultLabel(const std::string& key);
 
 QwtPlotCurve* addCurve(QwtPlot* plot, const QColor& colour, int yAxis = QwtPlot::yLeft);
-// An axis title on one line in the page's font: Qwt's default (larger, bold,
-// wrapped at word breaks) split a unit over lines and, at scale 2, laid the
-// wrapped title over the tick labels.
+// An axis title in the page's font, on one line for a vertical axis: Qwt's
+// default (larger, bold, wrapped at word breaks) split a unit over lines and,
+// at scale 2, laid the wrapped title over the tick labels.
 void setAxisText(QwtPlot* plot, int axis, const QString& text);
 QwtPlot* makePlot(QWidget* parent);
 

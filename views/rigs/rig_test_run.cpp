@@ -180,6 +180,7 @@ void RigTestPage::start() {
   plotTabs_->setCurrentIndex(0);
   results_->setRowCount(0);
   headline_->clear();
+  logView_->show();
   progress_->setValue(0);
   setRunning(true);
   setStatus([this] { return tr("Running: %1 on %2").arg(test_->currentText(), specimen_->currentText()); });
