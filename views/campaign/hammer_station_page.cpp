@@ -260,7 +260,9 @@ QWidget* HammerStationPage::buildProgressPanel() {
   progressLabel_ = new QLabel(right);
   progressLabel_->setObjectName(QStringLiteral("hammerProgressText"));
   progressLabel_->setWordWrap(true);
-  progressLabel_->setFixedHeight(QFontMetrics(font()).lineSpacing() * 2 + 4);
+  // Three lines: the column is narrow at 1280x800 ("...: 0 done, 0 skipped;
+  // 0 hits accepted, 0 rejected" took three and lost the last).
+  progressLabel_->setFixedHeight(QFontMetrics(font()).lineSpacing() * 3 + 4);
   progress_ = new QProgressBar(right);
   progress_->setObjectName(QStringLiteral("hammerProgress"));
   progress_->setRange(0, 1000);

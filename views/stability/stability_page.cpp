@@ -175,8 +175,8 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
   layout->addLayout(forkRow);
   layout->addLayout(kept);
   layout->addWidget(summary_);
-  layout->addWidget(real_, 1);
-  layout->addWidget(imaginary_, 1);
+  layout->addWidget(real_, 3);  // the sign of the real part is the verdict: the larger plot
+  layout->addWidget(imaginary_, 2);
   connect(runButton_, &QPushButton::clicked, this, &StabilityPage::run);
   connect(model_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this](int) { modelChanged(); });
   connect(paramsButton_, &QPushButton::clicked, this, &StabilityPage::chooseParameterFile);
