@@ -24,6 +24,7 @@
 #include <QProgressBar>
 #include <QSplitter>
 #include <QStackedWidget>
+#include <QStringList>
 #include <QTableWidget>
 #include <QTime>
 #include <QTimer>
@@ -291,6 +292,13 @@ void HammerStationPage::retranslate() {
     const QString key = e.action->shortcut().toString(QKeySequence::NativeText);
     e.action->setText(tr("%1 (%2)").arg(tr(e.text), key));
     e.action->setToolTip(e.action->text());
+    // The point's actions beside the mesh: the key under the name (two
+    // narrower columns; on one line they made the page wider than the tab
+    // area at 1280x800). The action's text keeps one line.
+    static const QStringList kPointActions = {QStringLiteral("arm"),    QStringLiteral("disarm"),
+                                              QStringLiteral("accept"), QStringLiteral("reject"),
+                                              QStringLiteral("redo"),   QStringLiteral("skip")};
+    if (kPointActions.contains(e.name)) e.action->setIconText(QStringLiteral("%1\n(%2)").arg(tr(e.text), key));
   }
   if (scene_ && sceneMesh_) updateHitMarker();  // the marker's "Next: ..." in the new language
   autoArm_->setText(tr("Arm again after each decision"));

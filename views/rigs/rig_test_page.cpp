@@ -11,6 +11,8 @@
 #include <qwt_plot_grid.h>
 #include <qwt_plot_intervalcurve.h>
 #include <qwt_symbol.h>
+#include <qwt_text.h>
+#include <qwt_text_label.h>
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QEvent>
@@ -25,6 +27,7 @@
 #include <QScrollArea>
 #include <QShortcut>
 #include <QSplitter>
+#include <QStyle>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTimer>
@@ -175,6 +178,16 @@ QwtPlotCurve* addCurve(QwtPlot* plot, const QColor& colour, int yAxis) {
   return c;
 }
 
+void setAxisText(QwtPlot* plot, int axis, const QString& text) {
+  QwtText title(text);
+  // A vertical axis's title on one line; a horizontal one may wrap (it
+  // only grows downwards, under the tick labels).
+  const bool horizontal = axis == QwtPlot::xBottom || axis == QwtPlot::xTop;
+  title.setRenderFlags(horizontal ? Qt::AlignCenter | Qt::TextWordWrap : Qt::AlignCenter);
+  title.setFont(plot->font());
+  plot->setAxisTitle(axis, title);
+}
+
 QwtPlot* makePlot(QWidget* parent) {
   auto* plot = new QwtPlot(parent);
   plot->setCanvasBackground(Qt::white);
@@ -182,16 +195,24 @@ QwtPlot* makePlot(QWidget* parent) {
   grid->setMajorPen(QPen(QColor(220, 220, 220), 0.0, Qt::DotLine));
   grid->attach(plot);
   plot->insertLegend(new QwtLegend(), QwtPlot::BottomLegend);
-  plot->setMinimumSize(280, 220);
+  plot->setMinimumSize(kPlotMinWidth, kPlotMinHeight);
+  // Titles at the text's size (bold): Qwt's larger default wrapped over
+  // three lines in a third of the plots' width.
+  QFont title = plot->font();
+  title.setBold(true);
+  plot->titleLabel()->setFont(title);
   installPlotExportAction(plot);
   return plot;
 }
 
 }  // namespace rig_page
 
+using rig_page::kControlsMaxChars;
+using rig_page::kControlsMinChars;
 using rig_page::kRedrawMs;
 using rig_page::makePlot;
 using rig_page::qs;
+using rig_page::setAxisText;
 
 RigTestPage::RigTestPage(Rig rig, const PageContext& ctx)
     : QWidget(ctx.parent), rig_(rig), model_(ctx.model), jobs_(ctx.jobs), log_(ctx.log) {
@@ -205,6 +226,13 @@ RigTestPage::RigTestPage(Rig rig, const PageContext& ctx)
   connect(model_, &ProjectModel::aboutToClose, this, &RigTestPage::stop);
   if (ctx.item.kind == (rig_ == Rig::Stiffness ? RecordKind::RigTest : RecordKind::TyreTest))
     showStoredTest(ctx.item.id);
+  else
+    showLatestStored(true);  // the project's latest test of the specimen, plotted on open
+  connect(model_, &ProjectModel::projectChanged, this, [this] {
+    if (isRunning()) return;
+    resetPlots();
+    showLatestStored(true);
+  });
 }
 
 RigTestPage::~RigTestPage() {
@@ -266,12 +294,14 @@ QWidget* RigTestPage::buildControls() {
   leftLayout->addWidget(status_);
   leftLayout->addStretch(1);
 
+  // The controls scroll on their own (both ways) rather than widen the page
+  // past the tab area: at 1280x800 with the project dock open the page has
+  // about 950 pixels, the plots need most of them.
   auto* scroll = new QScrollArea;
+  scroll->setObjectName(QStringLiteral("controls"));
   scroll->setWidget(left);
   scroll->setWidgetResizable(true);
-  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  scroll->setMinimumWidth(left->sizeHint().width() + 24);
-  scroll->setMaximumWidth(std::max(460, left->sizeHint().width() + 24));
+  scroll->setMinimumWidth(fontMetrics().averageCharWidth() * kControlsMinChars);
   return scroll;
 }
 
@@ -318,6 +348,7 @@ void RigTestPage::buildUi() {
   logView_->setObjectName(QStringLiteral("log"));
   logView_->setReadOnly(true);
   logView_->setMaximumBlockCount(2000);
+  logView_->hide();  // shown when a run starts: until then the results take its room
   auto* bottom = new QSplitter(Qt::Horizontal);
   bottom->addWidget(resultsBox_);
   bottom->addWidget(logView_);
@@ -344,9 +375,18 @@ void RigTestPage::buildUi() {
   vertical->setStretchFactor(1, 2);
   rightLayout->addWidget(vertical, 1);
 
+  // Controls and plots side by side, the split movable; the controls start
+  // as wide as their form (at most kControlsMaxChars), the plots take the rest.
+  auto* split = new QSplitter(Qt::Horizontal);
+  split->setObjectName(QStringLiteral("controlsSplit"));
+  split->setChildrenCollapsible(false);
+  split->addWidget(scroll);
+  split->addWidget(right);
+  split->setStretchFactor(0, 0);
+  split->setStretchFactor(1, 1);
+  controlsSplit_ = split;  // sized in the first showEvent(), when its width is known
   auto* layout = new QHBoxLayout(this);
-  layout->addWidget(scroll);
-  layout->addWidget(right, 1);
+  layout->addWidget(split);
 
   timer_ = new QTimer(this);
   timer_->setInterval(kRedrawMs);
@@ -361,13 +401,19 @@ void RigTestPage::buildUi() {
   connect(stopKey, &QShortcut::activated, this, &RigTestPage::stop);
   connect(rigForm_, &ParameterForm::valuesChanged, this, [this] { showSetup(); });
   if (setupForm_) connect(setupForm_, &ParameterForm::valuesChanged, this, [this] { drawSetup(); });
+  // A specimen or a test picked: its latest stored result, if the project has one.
   connect(specimen_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
     rebuildSetupForm();
     rebuildTestForm();
+    if (isRunning() || showingStored_) return;
+    resetPlots();
+    showLatestStored(false);
   });
   connect(test_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
     rebuildTestForm();
-    if (!isRunning()) resetPlots();
+    if (isRunning()) return;
+    resetPlots();
+    showLatestStored(false);
   });
 }
 
@@ -384,8 +430,8 @@ void RigTestPage::retranslate() {
   if (setupPlot_) {
     plotTabs_->setTabText(1, tr("Set-up view"));
     setupPlot_->setTitle(tr("Set-up over the specimen"));
-    setupPlot_->setAxisTitle(QwtPlot::xBottom, tr("u [m] (plate plane)"));
-    setupPlot_->setAxisTitle(QwtPlot::yLeft, tr("v [m]"));
+    setAxisText(setupPlot_, QwtPlot::xBottom, tr("u [m] (plate plane)"));
+    setAxisText(setupPlot_, QwtPlot::yLeft, tr("v [m]"));
     drawSetup();
   }
   resultsBox_->setTitle(tr("Result stored in the project"));
@@ -395,9 +441,31 @@ void RigTestPage::retranslate() {
   stop_->setToolTip(tr("Stop the test: the finished steps stay in the project"));
   results_->setHorizontalHeaderLabels({tr("Step"), tr("Quantity"), tr("Value"), tr("Std. uncertainty"), tr("Unit")});
   fillTests();
-  if (status_->text().isEmpty()) setStatus(tr("Ready. Pick a test and press Run."));
+  if (statusSource_)
+    setStatus(statusSource_, statusError_);  // said again in the new language
+  else
+    setStatus([] { return tr("Ready. Pick a test and press Run."); });
   showSetup();
-  if (!isRunning()) resetPlots();
+  // The plots' titles in the new language; a stored test shown keeps its
+  // curves and its results table is written again (step and quantity names).
+  resetPlots(false);
+  if (!isRunning() && lastTestId_ && model_->store()) showStoredTest(*lastTestId_);
+}
+
+void RigTestPage::showEvent(QShowEvent* event) {
+  QWidget::showEvent(event);
+  if (controlsSized_) return;
+  // As wide as the filled form needs beside its scroll bar, within bounds;
+  // sizes that add up to the splitter's width (others are scaled to it).
+  auto* controls = static_cast<QScrollArea*>(controlsSplit_->widget(0));
+  const int width = std::clamp(controls->widget()->minimumSizeHint().width() +
+                                   style()->pixelMetric(QStyle::PM_ScrollBarExtent) + 2 * controls->frameWidth() + 4,
+                               fontMetrics().averageCharWidth() * kControlsMinChars,
+                               fontMetrics().averageCharWidth() * kControlsMaxChars);
+  const int rest = controlsSplit_->width() - controlsSplit_->handleWidth() - width;
+  if (rest <= 0) return;
+  controlsSplit_->setSizes({width, rest});
+  controlsSized_ = true;
 }
 
 void RigTestPage::changeEvent(QEvent* event) {
@@ -482,8 +550,10 @@ QString RigTestPage::readoutText() const {
   return readout_->text();
 }
 
-void RigTestPage::setStatus(const QString& text, bool error) {
-  status_->setText(text);
+void RigTestPage::setStatus(std::function<QString()> text, bool error) {
+  statusSource_ = std::move(text);
+  statusError_ = error;
+  status_->setText(statusSource_ ? statusSource_() : QString());
   status_->setStyleSheet(error ? QStringLiteral("color: #b00020; font-weight: bold;") : QString());
 }
 

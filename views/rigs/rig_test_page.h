@@ -34,6 +34,7 @@ class QLabel;
 class QPlainTextEdit;
 class QProgressBar;
 class QPushButton;
+class QSplitter;
 class QTabWidget;
 class QTableWidget;
 class QTimer;
@@ -127,6 +128,7 @@ class RigTestPage : public QWidget {
 
  protected:
   void changeEvent(QEvent* event) override;
+  void showEvent(QShowEvent* event) override;
 
  private:
   void buildUi();
@@ -153,14 +155,21 @@ class RigTestPage : public QWidget {
   };
   void drawStoredFits(qint64 testId, const std::vector<StoredRow>& rows, double tyreLoadN, double tyrePressurePa);
   void onJobFinished(const core::Result<devices::rigtests::Outcome>& result);
-  void onDone(bool ok, const QString& message);
+  void onDone(bool ok, const std::function<QString()>& message);
   // Sine sweep: one frequency's axis point and its sine-fit loop (results of
   // a step report or of the stored step).
   void addAxisPoint(const std::vector<devices::rigtests::Quantity>& results);
   void clearAxisPlot();
-  void resetPlots();
+  // Empties the curves (clearData) and sets the plots' titles and styles for
+  // the selected test; without clearData only titles and styles (a language change).
+  void resetPlots(bool clearData = true);
+  // The latest test the project holds for the selected specimen (of the
+  // selected test's kind, or of any kind), shown as showStoredTest() does.
+  std::optional<qint64> latestStoredTest(bool anyKind) const;
+  void showLatestStored(bool anyKind);
   void replot();
-  void setStatus(const QString& text, bool error = false);
+  // The status line, kept as how to say it: a language change says it again.
+  void setStatus(std::function<QString()> text, bool error = false);
   void setRunning(bool running);
   QString testId() const;
   QString specimenKey() const;
@@ -184,6 +193,8 @@ class RigTestPage : public QWidget {
   QGroupBox* setupFormBox_ = nullptr;
   QWidget* setupScroll_ = nullptr;  // the form's scroll area, as wide as the form
   QTabWidget* plotTabs_ = nullptr;
+  QSplitter* controlsSplit_ = nullptr;  // the controls | the plots
+  bool controlsSized_ = false;          // the split set once, when first shown
   InteractivePlot* setupPlot_ = nullptr;
   QwtPlotCurve* setupExtent_ = nullptr;  // draws nothing: the points the set-up view must hold
   std::unique_ptr<PlateSketch> sketch_;
@@ -193,6 +204,9 @@ class RigTestPage : public QWidget {
   QPushButton* stop_ = nullptr;
   QProgressBar* progress_ = nullptr;
   QLabel* status_ = nullptr;
+  std::function<QString()> statusSource_;
+  bool statusError_ = false;
+  bool showingStored_ = false;  // in showStoredTest(): its test selection shows nothing else
   QLabel* readout_ = nullptr;
   QLabel* setupInfo_ = nullptr;
   QwtPlot* livePlot_ = nullptr;

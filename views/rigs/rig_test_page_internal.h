@@ -56,6 +56,14 @@ constexpr int kRedrawMs = 40;              // 25 Hz
 constexpr double kPlotRateHz = 250.0;      // live curves keep at most this many points per second
 constexpr double kTyreTimeWindowS = 10.0;  // seconds of the tyre tester's time traces shown
 constexpr double kSineTimeWindowS = 2.0;   // seconds of the stiffness rig's sine traces shown
+// Widths at 1280x800 with the project dock open (about 950 pixels for the
+// page): the controls at least 34 characters wide, at first as wide as
+// their form needs (at most 58); a
+// plot at least 200 x 200 pixels (three side by side in a sine sweep).
+constexpr int kControlsMinChars = 34;
+constexpr int kControlsMaxChars = 58;
+constexpr int kPlotMinWidth = 200;
+constexpr int kPlotMinHeight = 200;
 
 inline QString qs(const std::string& s) {
   return QString::fromStdString(s);
@@ -91,6 +99,10 @@ inline QString number(double v) {
 QString resultLabel(const std::string& key);
 
 QwtPlotCurve* addCurve(QwtPlot* plot, const QColor& colour, int yAxis = QwtPlot::yLeft);
+// An axis title in the page's font, on one line for a vertical axis: Qwt's
+// default (larger, bold, wrapped at word breaks) split a unit over lines and,
+// at scale 2, laid the wrapped title over the tick labels.
+void setAxisText(QwtPlot* plot, int axis, const QString& text);
 QwtPlot* makePlot(QWidget* parent);
 
 inline void trimFront(QVector<QPointF>& v, double fromX) {

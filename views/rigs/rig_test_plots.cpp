@@ -21,6 +21,7 @@
 #include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScopeGuard>
 #include <QScrollArea>
 #include <QShortcut>
 #include <QSplitter>
@@ -62,16 +63,19 @@ using rig_page::kTyreTimeWindowS;
 using rig_page::number;
 using rig_page::qs;
 using rig_page::resultLabel;
+using rig_page::setAxisText;
 using rig_page::shown;
 
-void RigTestPage::resetPlots() {
+void RigTestPage::resetPlots(bool clearData) {
   const bool stiff = rig_ == Rig::Stiffness;
   const QString id = testId();
-  timeLeftData_.clear();
-  timeRightData_.clear();
-  xyData_.clear();
-  xySecondData_.clear();
-  liveStep_ = -1;
+  if (clearData) {
+    timeLeftData_.clear();
+    timeRightData_.clear();
+    xyData_.clear();
+    xySecondData_.clear();
+    liveStep_ = -1;
+  }
   if (!timeLeft_) {  // the curves are made once; a reset empties and re-titles them
     timeLeft_ = addCurve(livePlot_, QColor(31, 119, 180));
     timeRight_ = addCurve(livePlot_, QColor(214, 39, 40), QwtPlot::yRight);
@@ -108,10 +112,13 @@ void RigTestPage::resetPlots() {
     inclinationBars_ = bars(incColour, QwtPlot::yLeft);
     armBars_ = bars(armColour, QwtPlot::yRight);
   }
-  clearAxisPlot();
   const bool sine = stiff && id == QLatin1String("dynamic");
   axisPlot_->setVisible(sine);
-  sineFit_->setSamples(QVector<QPointF>());
+  if (clearData) {
+    livePlot_->setVisible(true);
+    clearAxisPlot();
+    sineFit_->setSamples(QVector<QPointF>());
+  }
   sineFit_->setVisible(sine);
   sineFit_->setItemAttribute(QwtPlotItem::Legend, sine);
   const bool steady = id == QLatin1String("steady-state");
@@ -121,8 +128,9 @@ void RigTestPage::resetPlots() {
     const QColor colour = c->pen().color();
     c->setSymbol(steady ? new QwtSymbol(QwtSymbol::Ellipse, QBrush(colour), QPen(colour), QSize(7, 7)) : nullptr);
   }
-  for (QwtPlotCurve* c : {timeLeft_, timeRight_, xyLive_, xySecond_, fitLine_, fitLine2_, mfSlip_, mfCamber_})
-    c->setSamples(QVector<QPointF>());
+  if (clearData)
+    for (QwtPlotCurve* c : {timeLeft_, timeRight_, xyLive_, xySecond_, fitLine_, fitLine2_, mfSlip_, mfCamber_})
+      c->setSamples(QVector<QPointF>());
   // Which curves this test draws (and lists in the legend).
   const bool second = !stiff && steady;
   const bool fit = stiff ? id == QLatin1String("static") : steady;
@@ -135,37 +143,37 @@ void RigTestPage::resetPlots() {
   // A measured line under a stored fit is drawn wide and light, so both show where they agree.
   const bool under = (fit && !steady) || sine;  // a stored line or a sine-fit loop drawn over it
   xyLive_->setPen(QPen(under ? QColor(120, 170, 220) : QColor(31, 119, 180), under ? 5.0 : 1.5));
-  livePlot_->setAxisTitle(QwtPlot::xBottom, tr("Time [s]"));
+  setAxisText(livePlot_, QwtPlot::xBottom, tr("Time [s]"));
   if (stiff) {
     timeWindowS_ = id == QLatin1String("dynamic") ? kSineTimeWindowS : 0.0;
     livePlot_->setTitle(tr("Load cell and load-point displacement"));
-    livePlot_->setAxisTitle(QwtPlot::yLeft, tr("Force [N]"));
-    livePlot_->setAxisTitle(QwtPlot::yRight, tr("Displacement [mm]"));
+    setAxisText(livePlot_, QwtPlot::yLeft, tr("Force [N]"));
+    setAxisText(livePlot_, QwtPlot::yRight, tr("Displacement [mm]"));
     timeLeft_->setTitle(tr("load cell [N]"));
     timeRight_->setTitle(tr("load-point displacement [mm]"));
     resultPlot_->setTitle(tr("Force vs load-point displacement"));
-    resultPlot_->setAxisTitle(QwtPlot::xBottom, tr("Load-point displacement [mm]"));
-    resultPlot_->setAxisTitle(QwtPlot::yLeft, tr("Force [N]"));
+    setAxisText(resultPlot_, QwtPlot::xBottom, tr("Load-point displacement [mm]"));
+    setAxisText(resultPlot_, QwtPlot::yLeft, tr("Force [N]"));
     xyLive_->setTitle(id == QLatin1String("dynamic") ? tr("current frequency") : tr("measured"));
     fitLine_->setTitle(tr("F = k_lat x (stored k_lat)"));
     sineFit_->setTitle(tr("sine fit, last frequency"));
     axisPlot_->setTitle(tr("Dynamic twist axis against frequency"));
-    axisPlot_->setAxisTitle(QwtPlot::xBottom, tr("Frequency [Hz]"));
-    axisPlot_->setAxisTitle(QwtPlot::yLeft, tr("Inclination [deg]"));
-    axisPlot_->setAxisTitle(QwtPlot::yRight, tr("Twist arm a_tw [mm]"));
+    setAxisText(axisPlot_, QwtPlot::xBottom, tr("Frequency [Hz]"));
+    setAxisText(axisPlot_, QwtPlot::yLeft, tr("Inclination [deg]"));
+    setAxisText(axisPlot_, QwtPlot::yRight, tr("Twist arm a_tw [mm]"));
     inclination_->setTitle(tr("inclination ± 1σ"));
     arm_->setTitle(tr("a_tw ± 1σ"));
   } else {
     timeWindowS_ = kTyreTimeWindowS;
     livePlot_->setTitle(tr("Lateral force and aligning moment"));
-    livePlot_->setAxisTitle(QwtPlot::yLeft, tr("F_y [N]"));
-    livePlot_->setAxisTitle(QwtPlot::yRight, tr("M_z [N m]"));
+    setAxisText(livePlot_, QwtPlot::yLeft, tr("F_y [N]"));
+    setAxisText(livePlot_, QwtPlot::yRight, tr("M_z [N m]"));
     timeLeft_->setTitle(tr("F_y [N]"));
     timeRight_->setTitle(tr("M_z [N m]"));
-    resultPlot_->setAxisTitle(QwtPlot::yLeft, tr("F_y [N]"));
+    setAxisText(resultPlot_, QwtPlot::yLeft, tr("F_y [N]"));
     if (steady) {
       resultPlot_->setTitle(tr("Steady-state characteristic"));
-      resultPlot_->setAxisTitle(QwtPlot::xBottom, tr("Side-slip, camber [deg]"));
+      setAxisText(resultPlot_, QwtPlot::xBottom, tr("Side-slip, camber [deg]"));
       xyLive_->setTitle(tr("F_y vs side-slip"));
       xySecond_->setTitle(tr("F_y vs camber"));
       fitLine_->setTitle(tr("cornering stiffness (stored)"));
@@ -174,7 +182,7 @@ void RigTestPage::resetPlots() {
       mfCamber_->setTitle(tr("Magic Formula vs camber"));
     } else {
       resultPlot_->setTitle(tr("Lateral force vs yaw angle"));
-      resultPlot_->setAxisTitle(QwtPlot::xBottom, tr("Yaw angle [deg]"));
+      setAxisText(resultPlot_, QwtPlot::xBottom, tr("Yaw angle [deg]"));
       xyLive_->setTitle(tr("current frequency"));
     }
   }
@@ -262,9 +270,39 @@ double RigTestPage::redrawRateHz() const {
   return (redraws_ - 1) * 1000.0 / static_cast<double>(lastRedrawMs_ - firstRedrawMs_);
 }
 
+std::optional<qint64> RigTestPage::latestStoredTest(bool anyKind) const {
+  core::io::ProjectStore* store = model_->store();
+  if (!store) return std::nullopt;
+  auto tests = rig_ == Rig::Stiffness ? store->rigTests() : store->tyreTests();
+  if (!tests) return std::nullopt;
+  const std::string key = specimenKey().toStdString(), kind = testId().toStdString();
+  std::optional<qint64> latest;
+  for (const auto& t : *tests) {
+    const auto* entry = rt::catalogueEntryForName(t.specimenName);
+    if (!entry || entry->key != key || (!anyKind && t.kind != kind)) continue;
+    if (!latest || t.id > *latest) latest = t.id;  // ids grow with each test stored
+  }
+  return latest;
+}
+
+void RigTestPage::showLatestStored(bool anyKind) {
+  if (isRunning() || showingStored_) return;
+  if (const auto id = latestStoredTest(anyKind)) {
+    showStoredTest(*id);
+    return;
+  }
+  // Nothing stored for this choice: no other specimen's or test's result stays.
+  results_->setRowCount(0);
+  headline_->clear();
+  headline_->setToolTip(QString());
+  lastTestId_.reset();
+}
+
 void RigTestPage::showStoredTest(qint64 id) {
   core::io::ProjectStore* store = model_->store();
   if (!store) return;
+  showingStored_ = true;
+  const auto done = qScopeGuard([this] { showingStored_ = false; });
   using Row = StoredRow;
   std::vector<Row> rows;
   std::vector<core::io::StoredTyreTest::Point> storedPoints;
@@ -274,7 +312,8 @@ void RigTestPage::showStoredTest(qint64 id) {
   if (rig_ == Rig::Stiffness) {
     auto t = store->rigTest(id);
     if (!t) {
-      setStatus(tr("Cannot read the rig test: %1").arg(qs(t.error().describe())), true);
+      const QString why = qs(t.error().describe());
+      setStatus([why] { return tr("Cannot read the rig test: %1").arg(why); }, true);
       return;
     }
     for (const auto& r : t->results) rows.push_back({r.step, r.quantity, r.value, r.uncertainty, r.unit});
@@ -285,7 +324,8 @@ void RigTestPage::showStoredTest(qint64 id) {
   } else {
     auto t = store->tyreTest(id);
     if (!t) {
-      setStatus(tr("Cannot read the tyre test: %1").arg(qs(t.error().describe())), true);
+      const QString why = qs(t.error().describe());
+      setStatus([why] { return tr("Cannot read the tyre test: %1").arg(why); }, true);
       return;
     }
     for (const auto& r : t->parameters) rows.push_back({r.step, r.name, r.value, r.uncertainty, r.unit});
@@ -390,6 +430,9 @@ void RigTestPage::showStoredTest(qint64 id) {
 
   drawStoredFits(id, rows, tyreLoadN, tyrePressurePa);
   lastTestId_ = id;
+  // A stored test opened without its run has no live traces: their plot
+  // gives its room to the stored results until a run starts.
+  livePlot_->setVisible(isRunning() || !timeLeftData_.isEmpty());
   replot();
 }
 
@@ -423,15 +466,26 @@ void RigTestPage::drawStoredFits(qint64 id, const std::vector<StoredRow>& rows, 
         addAxisPoint(results);
       }
     } else {
-      setStatus(tr("Cannot read the rig test's twist axes: %1").arg(qs(view.error().describe())), true);
+      const QString why = qs(view.error().describe());
+      setStatus([why] { return tr("Cannot read the rig test's twist axes: %1").arg(why); }, true);
     }
   }
   if (rig_ == Rig::Stiffness) {
-    if (const Row* k = find("k_lat"); k && !xyData_.isEmpty() && testId() == QLatin1String("static")) {
-      double lo = xyData_.first().x(), hi = lo;
-      for (const auto& p : xyData_) {
-        lo = std::min(lo, p.x());
-        hi = std::max(hi, p.x());
+    const Row* k = find("k_lat");
+    const Row* peak = find("peak_force");
+    if (k && testId() == QLatin1String("static") && (!xyData_.isEmpty() || (peak && k->value > 0.0))) {
+      // Over the measured ramp, or (a stored test without its live data)
+      // over the displacement the stored peak force gives: +-F_peak / k_lat.
+      double lo = 0.0, hi = 0.0;
+      if (!xyData_.isEmpty()) {
+        lo = hi = xyData_.first().x();
+        for (const auto& p : xyData_) {
+          lo = std::min(lo, p.x());
+          hi = std::max(hi, p.x());
+        }
+      } else {
+        hi = std::abs(peak->value) / k->value * 1e3;
+        lo = -hi;
       }
       fitLine_->setSamples(QVector<QPointF>{{lo, k->value * lo * 1e-3}, {hi, k->value * hi * 1e-3}});
     }

@@ -68,16 +68,19 @@ void RigTestPage::start() {
   if (isRunning()) return;
   core::io::ProjectStore* store = model_->store();
   if (!store) {
-    setStatus(tr("Open or create a project first: the test is stored in it."), true);
+    setStatus([] { return tr("Open or create a project first: the test is stored in it."); }, true);
     return;
   }
   if (model_->isReadOnly()) {
-    setStatus(tr("The project is open read-only (%1): the test could not be stored.").arg(model_->readOnlyReason()),
-              true);
+    setStatus(
+        [this] {
+          return tr("The project is open read-only (%1): the test could not be stored.").arg(model_->readOnlyReason());
+        },
+        true);
     return;
   }
   if (testForm_->hasProblems() || rigForm_->hasProblems()) {
-    setStatus(tr("Correct the settings marked in the form first."), true);
+    setStatus([] { return tr("Correct the settings marked in the form first."); }, true);
     return;
   }
   const std::string key = specimenKey().toStdString();
@@ -86,7 +89,8 @@ void RigTestPage::start() {
   const bool realtime = devices::parameterBool(rigValues, "sim.realtime", true);
   const QString id = testId();
   auto refuse = [this](const core::Error& e) {
-    setStatus(tr("Not started: %1").arg(qs(e.describe())), true);
+    const QString why = qs(e.describe());
+    setStatus([why] { return tr("Not started: %1").arg(why); }, true);
     if (log_) log_(tr("Rig test not started: %1").arg(qs(e.describe())));
   };
 
@@ -109,7 +113,7 @@ void RigTestPage::start() {
       if (auto ok = rt::checkPlateGeometry(*setup); !ok) {
         drawSetup();  // marks the field
         plotTabs_->setCurrentIndex(1);
-        setStatus(tr("Not started: %1").arg(geometry_->text()), true);
+        setStatus([this] { return tr("Not started: %1").arg(geometry_->text()); }, true);
         if (log_) log_(tr("Rig test not started: %1").arg(geometry_->text()));
         return;
       }
@@ -176,9 +180,10 @@ void RigTestPage::start() {
   plotTabs_->setCurrentIndex(0);
   results_->setRowCount(0);
   headline_->clear();
+  logView_->show();
   progress_->setValue(0);
   setRunning(true);
-  setStatus(tr("Running: %1 on %2").arg(runningTest_, specimen_->currentText()));
+  setStatus([this] { return tr("Running: %1 on %2").arg(test_->currentText(), specimen_->currentText()); });
   if (log_) log_(tr("Rig test started: %1 on %2").arg(runningTest_, specimen_->currentText()));
   jobId_ = jobs_->run<rt::Outcome>(
       this, tr("%1 on %2").arg(runningTest_, specimen_->currentText()),
@@ -212,7 +217,7 @@ void RigTestPage::onJobFinished(const core::Result<rt::Outcome>& result) {
   }
   if (added) model_->notifyChanged(RecordKind::Specimen);
   bool ok = false;
-  QString message;
+  std::function<QString()> message;
   if (outcome) {
     ok = outcome->status == core::io::TestStatus::Complete;
     if (outcome->testId) {
@@ -220,16 +225,20 @@ void RigTestPage::onJobFinished(const core::Result<rt::Outcome>& result) {
       model_->notifyChanged(rig_ == Rig::Stiffness ? RecordKind::RigTest : RecordKind::TyreTest, *outcome->testId);
       showStoredTest(*outcome->testId);
     }
-    const QString name = qs(outcome->testName);
+    const QString name = qs(outcome->testName), note = qs(outcome->note);
     switch (outcome->status) {
-      case core::io::TestStatus::Complete: message = tr("Complete: stored as '%1'.").arg(name); break;
-      case core::io::TestStatus::Interrupted:
-        message = tr("Interrupted: stored as '%1' with the finished steps (%2).").arg(name, qs(outcome->note));
+      case core::io::TestStatus::Complete:
+        message = [name] { return tr("Complete: stored as '%1'.").arg(name); };
         break;
-      default: message = tr("Failed: %1").arg(qs(outcome->note)); break;
+      case core::io::TestStatus::Interrupted:
+        message = [name, note] {
+          return tr("Interrupted: stored as '%1' with the finished steps (%2).").arg(name, note);
+        };
+        break;
+      default: message = [note] { return tr("Failed: %1").arg(note); }; break;
     }
   } else {
-    message = tr("Failed: %1").arg(error);
+    message = [error] { return tr("Failed: %1").arg(error); };
   }
   onDone(ok, message);
 }
@@ -237,14 +246,14 @@ void RigTestPage::onJobFinished(const core::Result<rt::Outcome>& result) {
 void RigTestPage::stop() {
   if (!isRunning() || !handOver_) return;
   handOver_->cancel.cancel();
-  setStatus(tr("Stopping: the sequence keeps the finished steps..."));
+  setStatus([] { return tr("Stopping: the sequence keeps the finished steps..."); });
 }
 
-void RigTestPage::onDone(bool ok, const QString& message) {
+void RigTestPage::onDone(bool ok, const std::function<QString()>& message) {
   setRunning(false);
   if (ok) progress_->setValue(1000);
   setStatus(message, !ok);
-  if (log_) log_(tr("Rig test: %1").arg(message));
+  if (log_) log_(tr("Rig test: %1").arg(message()));
   emit finished(ok);
 }
 

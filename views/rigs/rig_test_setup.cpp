@@ -83,7 +83,7 @@ QWidget* RigTestPage::buildSetupView() {
   setupPlot_->setObjectName(QStringLiteral("setupPlot"));
   setupPlot_->setCanvasBackground(Qt::white);
   setupPlot_->setCursorOnClick(false);
-  setupPlot_->setMinimumSize(280, 220);
+  setupPlot_->setMinimumSize(rig_page::kPlotMinWidth, rig_page::kPlotMinHeight);
   installPlotExportAction(setupPlot_);
   setupExtent_ = new QwtPlotCurve;
   setupExtent_->setStyle(QwtPlotCurve::NoCurve);

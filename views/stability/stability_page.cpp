@@ -16,6 +16,7 @@
 #include <QLabel>
 #include <QMap>
 #include <QPushButton>
+#include <QResizeEvent>
 #include <QVBoxLayout>
 #include <algorithm>
 
@@ -47,6 +48,31 @@ QColor modeColour(const std::string& name) {
 
 using Model = StabilityPage::Model;
 
+// The width a combo box asks for, in characters (its entries are longer).
+constexpr int kComboMinChars = 22;
+
+// A word-wrapped label that does not make the page height-for-width: the
+// tab's scroll area sizes such a page to its preferred height (the plots'
+// size hints, taller than the tab area at 1280x800: the imaginary-part plot
+// was below the fold) rather than to the viewport. It asks for the height its
+// text takes at its present width and asks again when the width changes.
+class WrappingLabel : public QLabel {
+ public:
+  explicit WrappingLabel(QWidget* parent) : QLabel(parent) { setWordWrap(true); }
+  bool hasHeightForWidth() const override { return false; }
+  QSize minimumSizeHint() const override { return {fontMetrics().averageCharWidth() * 12, heightNow()}; }
+  QSize sizeHint() const override { return {QLabel::sizeHint().width(), heightNow()}; }
+
+ protected:
+  void resizeEvent(QResizeEvent* event) override {
+    QLabel::resizeEvent(event);
+    if (event->size().width() != event->oldSize().width()) updateGeometry();
+  }
+
+ private:
+  int heightNow() const { return QLabel::heightForWidth(std::max(width(), fontMetrics().averageCharWidth() * 40)); }
+};
+
 // The fork of each Model entry, as core::stability::StabilityRequest names it.
 const char* const kForks[] = {"rigid", "bending", "torsion", "rigid", "model 1", "model 2", "model 3"};
 
@@ -70,14 +96,20 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
   model_ = new QComboBox(this);
   model_->setObjectName(QStringLiteral("stabilityModel"));
   for (int i = 0; i < 7; ++i) model_->addItem(QString());
+  // Combo boxes as wide as the row gives them, not as their longest entry
+  // (a kept fork's name, a model's reference): the page fits 1280x800 with
+  // the project dock open; the full text is in the drop-down list.
+  model_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  model_->setMinimumContentsLength(kComboMinChars);
   forkLabel_ = new QLabel(this);
   fork_ = new QComboBox(this);
   fork_->setObjectName(QStringLiteral("stabilityFork"));
-  fork_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+  fork_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  fork_->setMinimumContentsLength(kComboMinChars);
   compare_ = new QCheckBox(this);
   compare_->setObjectName(QStringLiteral("stabilityCompareRigid"));
   paramsLabel_ = new QLabel(this);
-  paramsFile_ = new QLabel(this);
+  paramsFile_ = new WrappingLabel(this);  // a long file name wraps rather than widen the page
   paramsFile_->setObjectName(QStringLiteral("stabilityParameterFile"));
   paramsFile_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   paramsButton_ = new QPushButton(this);
@@ -100,14 +132,15 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
   step_->setRange(0.01, 10.0);
   runButton_ = new QPushButton(this);
   runButton_->setObjectName(QStringLiteral("stabilityRun"));
-  summary_ = new QLabel(this);
+  summary_ = new WrappingLabel(this);
   summary_->setObjectName(QStringLiteral("stabilitySummary"));
   summary_->setWordWrap(true);
   summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   storedLabel_ = new QLabel(this);
   stored_ = new QComboBox(this);
   stored_->setObjectName(QStringLiteral("stabilityStored"));
-  stored_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+  stored_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  stored_->setMinimumContentsLength(kComboMinChars);
   showStored_ = new QPushButton(this);
   showStored_->setObjectName(QStringLiteral("stabilityShowStored"));
   real_ = makePlot(this, "stabilityReal");
@@ -128,9 +161,10 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
   params->addWidget(paramsFile_, 1);
   params->addWidget(paramsButton_);
   params->addWidget(paramsClear_);
-  params->addWidget(forkLabel_);
-  params->addWidget(fork_);
-  params->addWidget(compare_);
+  auto* forkRow = new QHBoxLayout;  // the fork on a row of its own: one row was wider than the tab area
+  forkRow->addWidget(forkLabel_);
+  forkRow->addWidget(fork_, 1);
+  forkRow->addWidget(compare_);
   auto* kept = new QHBoxLayout;
   kept->addWidget(storedLabel_);
   kept->addWidget(stored_, 1);
@@ -138,10 +172,11 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(bar);
   layout->addLayout(params);
+  layout->addLayout(forkRow);
   layout->addLayout(kept);
   layout->addWidget(summary_);
-  layout->addWidget(real_, 1);
-  layout->addWidget(imaginary_, 1);
+  layout->addWidget(real_, 3);  // the sign of the real part is the verdict: the larger plot
+  layout->addWidget(imaginary_, 2);
   connect(runButton_, &QPushButton::clicked, this, &StabilityPage::run);
   connect(model_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this](int) { modelChanged(); });
   connect(paramsButton_, &QPushButton::clicked, this, &StabilityPage::chooseParameterFile);
