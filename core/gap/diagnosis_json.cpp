@@ -55,6 +55,7 @@ nlohmann::json effectToJson(const RankedEffect& e, double threshold) {
       {"shrink_pct",
        e.gapAfter.entries.empty() && e.gapAfter.overall == 0.0 ? nlohmann::json(nullptr) : number(e.shrinkPct)}};
   for (const auto& p : e.candidate.parameters) j["units"][p.name] = p.unit;
+  if (!e.candidate.equivalent.empty()) j["equivalent_locations"] = e.candidate.equivalent;
   // Wald 95% interval (size +- 1.96 se), clipped to the parameter's bounds.
   nlohmann::json interval = nullptr;
   if (e.stdErrors.size() == e.parameters.size() && e.parameters.size() == e.candidate.parameters.size()) {
@@ -104,6 +105,7 @@ nlohmann::json pairToJson(const Diagnosis& d) {
         {"units", nlohmann::json::object()},
         {"std_errors", e.stdErrors.empty() ? nlohmann::json(nullptr) : named(e.candidate.parameters, e.stdErrors)}};
     for (const auto& q : e.candidate.parameters) j["units"][q.name] = q.unit;
+    if (!e.candidate.equivalent.empty()) j["equivalent_locations"] = e.candidate.equivalent;
     effects.push_back(j);
   }
   if (effects.empty()) return {{"pairs_fitted", p.pairsFitted}, {"effects", effects}};

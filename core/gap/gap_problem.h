@@ -15,6 +15,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/common/result.h"
@@ -32,15 +33,43 @@ struct Parameter {
 
 // One candidate of the catalogue at one location.
 struct Candidate {
+  Candidate() = default;
+  // (A constructor rather than aggregate initialisation, so the problems'
+  // catalogues name the three defining fields and leave `equivalent` empty.)
+  Candidate(std::string effect_, std::vector<std::string> location_, std::vector<Parameter> parameters_)
+      : effect(std::move(effect_)), location(std::move(location_)), parameters(std::move(parameters_)) {}
+
   std::string effect;                 // catalogue name, e.g. "mass_loading"
   std::vector<std::string> location;  // DOF labels in the model's own format; empty when global
   std::vector<Parameter> parameters;  // the effect's size(s)
+  // Locations of the other candidates of the same effect that act on the data
+  // exactly as this one (GapProblem::effectShape): the diagnosis fits this
+  // one for the family (core/gap/engine/families.h); empty when alone.
+  std::vector<std::vector<std::string>> equivalent;
 };
+
+// " at 5+X", " at 4+X-5+X"; "" when global.
+inline std::string locationSuffix(const std::vector<std::string>& location) {
+  std::string s;
+  for (std::size_t i = 0; i < location.size(); ++i) s += (i ? "-" : " at ") + location[i];
+  return s;
+}
 
 // "mass_loading at 5+X", "element_stiffness at 4+X-5+X", "exponential_window".
 inline std::string label(const Candidate& c) {
-  std::string s = c.effect;
-  for (std::size_t i = 0; i < c.location.size(); ++i) s += (i ? "-" : " at ") + c.location[i];
+  return c.effect + locationSuffix(c.location);
+}
+
+// label() with its equivalent locations: "residual_mode at 1+Y (equivalent at
+// 2+Y)", "residual_mode at 1+Y (and 24 equivalent locations)".
+inline std::string familyLabel(const Candidate& c) {
+  std::string s = label(c);
+  if (c.equivalent.size() == 1) {
+    const std::string other = locationSuffix(c.equivalent[0]);
+    s += " (equivalent" + (other.empty() ? std::string() : other) + ")";
+  } else if (c.equivalent.size() > 1) {
+    s += " (and " + std::to_string(c.equivalent.size()) + " equivalent locations)";
+  }
   return s;
 }
 
@@ -124,6 +153,18 @@ class GapProblem {
   virtual std::vector<Parameter> calibrationParameters() const = 0;
   virtual std::vector<Candidate> candidates() const = 0;
   virtual int residualCount() const = 0;
+
+  // What candidate `candidate` adds to the whitened residuals' model, as a
+  // vector the engine compares between candidates of the same effect: equal
+  // vectors (to 1e-9 of their largest entry, core/gap/engine/families.h) must
+  // mean equal residuals at equal parameters everywhere, so the problem
+  // normalises away whatever sign or scale its effect does not see and keeps
+  // whatever it does. Equal candidates are fitted once, as a family. Empty
+  // (the default) when the problem does not compare this candidate.
+  virtual std::vector<double> effectShape(int candidate) const {
+    (void)candidate;
+    return {};
+  }
 
   // Whitened residuals at `at`. Returns false where the model cannot be
   // evaluated (e.g. a singular matrix): the fitter treats it as infeasible.

@@ -176,6 +176,12 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   big.setBold(true);
   verdict_->setFont(big);
   explanation_ = new QTextBrowser(left);
+  // Their height hints (192 px each) are ignored as the plot's below: they
+  // share what the verdict leaves, at least a few lines each.
+  effects_->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Ignored);
+  effects_->setMinimumHeight(fontMetrics().height() * 5);
+  explanation_->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Ignored);
+  explanation_->setMinimumHeight(fontMetrics().height() * 6);
   leftLayout->addWidget(effectsLabel_);
   leftLayout->addWidget(effects_, 1);
   leftLayout->addWidget(verdict_);
@@ -199,8 +205,13 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   overlayPlot_->setCanvasBackground(Qt::white);
   // QwtPlot's own MinimumExpanding policy makes its size hint (40 px per
   // major tick of the left axis: a log axis over decades) the least height,
-  // which pushed the page below the tab area; it may shrink to its minimum.
-  overlayPlot_->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+  // which pushed the page below the tab area. Its height hint is ignored
+  // too: the page scroll area sizes a page with word-wrapped labels by its
+  // preferred height for the width (QScrollArea with heightForWidth), and
+  // the plot's hint made that 767 px on the demo's kept diagnosis at 1280 x
+  // 800, a scroll for 606. It takes what the page leaves, at least 14 lines.
+  overlayPlot_->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Ignored);
+  overlayPlot_->setMinimumHeight(fontMetrics().height() * 14);
   auto* grid = new QwtPlotGrid;
   grid->setMajorPen(QColor(0, 0, 0, 40), 0.0, Qt::DotLine);
   grid->attach(overlayPlot_);
@@ -447,12 +458,13 @@ void ModelTestView::showDiagnosisText() {
   // The effects of the verdict; two at once (issue 16): both.
   QStringList effects;
   if (twoEffects(d)) {
-    for (const auto& e : d.pair.effects) effects << effectText(e.candidate.effect, e.candidate.location);
+    for (const auto& e : d.pair.effects)
+      effects << effectText(e.candidate.effect, e.candidate.location, e.candidate.equivalent);
   } else {
     for (int r : d.verdictSet)
       if (r >= 0 && r < static_cast<int>(d.ranking.size())) {
         const auto& c = d.ranking[static_cast<std::size_t>(r)].candidate;
-        effects << effectText(c.effect, c.location);
+        effects << effectText(c.effect, c.location, c.equivalent);
       }
   }
   showVerdict(QString::fromLatin1(core::gap::verdictName(d.verdict)), effects.size() == 2 && twoEffects(d)
@@ -461,9 +473,18 @@ void ModelTestView::showDiagnosisText() {
   explanation_->setPlainText(QString::fromStdString(d.explanation));
 }
 
-QString ModelTestView::effectText(const std::string& effect, const std::vector<std::string>& location) {
+QString ModelTestView::effectText(const std::string& effect, const std::vector<std::string>& location,
+                                  const std::vector<std::vector<std::string>>& equivalent) {
   if (location.empty()) return QString::fromStdString(effect);
-  return tr("%1 at %2").arg(QString::fromStdString(effect), joined(location));
+  const QString name = QString::fromStdString(effect);
+  if (equivalent.size() == 1)
+    return tr("%1 at %2 (equivalent at %3)").arg(name, joined(location), joined(equivalent[0]));
+  if (equivalent.size() > 1) {
+    // Two or more others (one reads "equivalent at"): a plain count.
+    return tr("%1 at %2 (and %3 equivalent locations)")
+        .arg(name, joined(location), QString::number(static_cast<qulonglong>(equivalent.size())));
+  }
+  return tr("%1 at %2").arg(name, joined(location));
 }
 
 // "Verdict: effect (residual_mode)", coloured by the verdict.
@@ -530,6 +551,7 @@ void ModelTestView::fillRanking() {
       StoredDiagnosis::RankedEffect row;
       row.effect = effect.candidate.effect;
       row.location = effect.candidate.location;
+      row.equivalent = effect.candidate.equivalent;
       for (std::size_t p = 0; p < effect.parameters.size(); ++p) {
         StoredDiagnosis::Parameter parameter;
         if (p < effect.candidate.parameters.size()) {
@@ -570,8 +592,16 @@ void ModelTestView::fillRankingRows(const std::vector<StoredDiagnosis::RankedEff
     }
     if (!effect.identifiable) sizes << tr("(not identifiable)");
     ranking_->setItem(r, 0, new QTableWidgetItem(QString::fromStdString(effect.effect)));
-    auto* where = new QTableWidgetItem(joined(effect.location));
-    where->setToolTip(locationsTip(effect.location));  // the cell is elided when the list is long
+    // A family of locations that change the data alike (fitted once): the
+    // first and the count here, every one in the tip.
+    std::vector<std::string> all{joined(effect.location).toStdString()};
+    for (const auto& other : effect.equivalent) all.push_back(joined(other).toStdString());
+    auto* where = new QTableWidgetItem(
+        effect.equivalent.empty()
+            ? joined(effect.location)
+            : tr("%1 (+%2 equivalent)")
+                  .arg(joined(effect.location), QString::number(static_cast<qulonglong>(effect.equivalent.size()))));
+    where->setToolTip(locationsTip(all));  // the cell is elided when the list is long
     ranking_->setItem(r, 1, where);
     ranking_->setItem(r, 2, new QTableWidgetItem(sizes.join(QStringLiteral("; "))));
     ranking_->setItem(r, 3, new QTableWidgetItem(number(effect.likelihoodRatio)));

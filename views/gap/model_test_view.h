@@ -107,8 +107,11 @@ class ModelTestView : public QWidget {
   void refreshStored();
   void showVerdict(const QString& verdict, const QString& effects);
   void showDiagnosisText();
-  // "residual_mode at 9+Z" (the effect alone when it has no location).
-  static QString effectText(const std::string& effect, const std::vector<std::string>& location);
+  // "residual_mode at 9+Z" (the effect alone when it has no location), with a
+  // family of equivalent locations "residual_mode at 9+Z (equivalent at
+  // 10+Z)", "residual_mode at 9+Z (and 24 equivalent locations)".
+  static QString effectText(const std::string& effect, const std::vector<std::string>& location,
+                            const std::vector<std::vector<std::string>>& equivalent);
   void showStoredText();
   // What the band boxes and the candidate list describe: the next run, or the
   // kept diagnosis shown (with or without a frequency band of its own).

@@ -169,6 +169,11 @@ void ModelTestView::showStoredSetup() {
     std::string at;
     for (const auto& dof : row.location) at += (at.empty() ? "" : ", ") + dof;
     if (!at.empty()) where.push_back(at);
+    for (const auto& other : row.equivalent) {
+      std::string also;
+      for (const auto& dof : other) also += (also.empty() ? "" : ", ") + dof;
+      if (!also.empty()) where.push_back(also);
+    }
   }
   fillEffects(locations, {});
   setSetup(hasBand ? Setup::KeptBand : Setup::KeptNoBand);
@@ -230,7 +235,7 @@ void ModelTestView::showStoredText() {
   const StoredDiagnosis& d = *storedDiagnosis_;
   QStringList effects;
   for (const auto& row : d.ranking)
-    if (row.inVerdict) effects << effectText(row.effect, row.location);
+    if (row.inVerdict) effects << effectText(row.effect, row.location, row.equivalent);
   // Two effects fitted together (the verdict's pair) read as the page's run does.
   showVerdict(QString::fromStdString(d.verdict), d.pair && effects.size() == 2
                                                      ? tr("%1 and %2").arg(effects[0], effects[1])

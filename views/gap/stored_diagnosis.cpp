@@ -61,6 +61,15 @@ StoredDiagnosis::RankedEffect effectFrom(const Json& j) {
   if (j.contains("location") && j["location"].is_array())
     for (const auto& part : j["location"])
       if (part.is_string()) e.location.push_back(part.get<std::string>());
+  if (j.contains("equivalent_locations") && j["equivalent_locations"].is_array()) {
+    for (const auto& other : j["equivalent_locations"]) {
+      if (!other.is_array()) continue;
+      std::vector<std::string> at;
+      for (const auto& part : other)
+        if (part.is_string()) at.push_back(part.get<std::string>());
+      if (!at.empty()) e.equivalent.push_back(std::move(at));
+    }
+  }
   const Json& errors = j.contains("std_errors") ? j["std_errors"] : Json();
   const Json& units = j.contains("units") ? j["units"] : Json();
   if (j.contains("parameters") && j["parameters"].is_object()) {

@@ -23,6 +23,9 @@ struct StoredDiagnosis {
   struct RankedEffect {
     std::string effect;
     std::vector<std::string> location;
+    // The other locations of a family that changes the data alike
+    // (diagnosis JSON "equivalent_locations"); empty when alone.
+    std::vector<std::vector<std::string>> equivalent;
     std::vector<Parameter> parameters;
     bool identifiable = true;
     bool inVerdict = false;

@@ -141,7 +141,7 @@ void printPair(std::ostream& out, const gap::Diagnosis& d) {
       if (q < e.stdErrors.size()) sizes += " +/- " + core::formatNumber(e.stdErrors[q], 2);
       if (!def.unit.empty()) sizes += " " + def.unit;
     }
-    out << "  " << e.candidate.effect << " at " << locationText(e.candidate) << ": " << sizes << " (LR given the other "
+    out << "  " << gap::familyLabel(e.candidate) << ": " << sizes << " (LR given the other "
         << core::formatNumber(p.eachRatio[m], 3) << ")\n";
   }
   out << "  gap " << core::formatNumber(d.gapBefore.overall, 3) << " before, "
@@ -170,6 +170,19 @@ void printRanking(std::ostream& out, const gap::Diagnosis& d) {
                   locationText(e.candidate).c_str(), sizes.c_str(), core::formatNumber(e.likelihoodRatio, 3).c_str(),
                   reported ? core::formatNumber(e.shrinkPct, 3).c_str() : "-");
     out << buf;
+  }
+  // A row may stand for a family of candidates that change the data alike
+  // (core/gap/engine/families.h): fitted once, named here.
+  for (std::size_t i = 0; i < d.ranking.size(); ++i) {
+    const auto& c = d.ranking[i].candidate;
+    if (c.equivalent.empty()) continue;
+    std::string others;
+    for (const auto& l : c.equivalent) {
+      std::string at;
+      for (const auto& part : l) at += (at.empty() ? "" : "-") + part;
+      others += (others.empty() ? "" : ", ") + at;
+    }
+    out << "  " << i + 1 << ": " << gap::familyLabel(c) << ", equivalent at " << others << "\n";
   }
 }
 
@@ -279,13 +292,12 @@ int gapCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   const auto best = core::report::bestEffect(*diagnosis);
   if (best.pair) {
     const auto& p = *best.pair;
-    out << " - " << p.effects[0].candidate.effect << " at " << locationText(p.effects[0].candidate) << " and "
-        << p.effects[1].candidate.effect << " at " << locationText(p.effects[1].candidate) << ", gap "
-        << core::formatNumber(diagnosis->gapBefore.overall, 3) << " -> " << core::formatNumber(p.gapAfterOne.overall, 3)
-        << " -> " << core::formatNumber(p.gapAfterBoth.overall, 3) << " (shrink "
-        << core::formatNumber(p.shrinkBothPct, 3) << "%)";
+    out << " - " << gap::familyLabel(p.effects[0].candidate) << " and " << gap::familyLabel(p.effects[1].candidate)
+        << ", gap " << core::formatNumber(diagnosis->gapBefore.overall, 3) << " -> "
+        << core::formatNumber(p.gapAfterOne.overall, 3) << " -> " << core::formatNumber(p.gapAfterBoth.overall, 3)
+        << " (shrink " << core::formatNumber(p.shrinkBothPct, 3) << "%)";
   } else if (best.single && best.inVerdict) {
-    out << " - " << best.single->candidate.effect << " at " << locationText(best.single->candidate) << ", gap "
+    out << " - " << gap::familyLabel(best.single->candidate) << ", gap "
         << core::formatNumber(diagnosis->gapBefore.overall, 3) << " -> "
         << core::formatNumber(best.single->gapAfter.overall, 3) << " (shrink "
         << core::formatNumber(best.single->shrinkPct, 3) << "%)";

@@ -50,7 +50,9 @@ std::string cacheKey(const Model& baseline, const Eigen::VectorXd& u0, const Scr
     const auto& cand = all[static_cast<std::size_t>(screen.candidates[static_cast<std::size_t>(c)].index)];
     s << '#' << screen.candidates[static_cast<std::size_t>(c)].index << ':' << cand.effect << '@';
     for (const auto& l : cand.location) s << l << ',';
-    for (const auto& p : cand.parameters) describe(s, p);
+    // The parameters as screened: a family's representative fits the
+    // union of its members' bounds (families.h).
+    for (const auto& p : screen.candidates[static_cast<std::size_t>(c)].phi) describe(s, p.def);
   }
   s << "#B" << o.samples << "#a" << o.alpha << "#s" << o.seed << "#m" << static_cast<int>(o.mode) << "#i"
     << o.maxIterations;

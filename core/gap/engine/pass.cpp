@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/common/text.h"
+#include "core/gap/engine/families.h"
 #include "core/gap/engine/statistics.h"
 
 namespace mozzi::core::gap::engine {
@@ -138,19 +139,31 @@ Result<void> prepare(Pass& s) {
                        where);
     }
   }
-  std::vector<std::pair<int, std::vector<Scaled>>> selected;
+  std::vector<int> wanted;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const auto& c = candidates[i];
     if (!options.effects.empty() &&
         std::find(options.effects.begin(), options.effects.end(), c.effect) == options.effects.end()) {
       continue;
     }
+    wanted.push_back(static_cast<int>(i));
+  }
+  // Candidates that act on the data alike are fitted once, as a family
+  // (families.h): the representative carries the others' locations.
+  std::vector<int> representatives;
+  for (const auto& family : engine::equalEffectFamilies(problem, s.candidates, wanted)) {
+    s.candidates[static_cast<std::size_t>(family[0])] = engine::familyCandidate(s.candidates, family);
+    representatives.push_back(family[0]);
+  }
+  std::vector<std::pair<int, std::vector<Scaled>>> selected;
+  for (int i : representatives) {
+    const auto& c = candidates[static_cast<std::size_t>(i)];
     std::vector<Scaled> phi;
     for (const auto& p : c.parameters) {
       MOZZI_TRY_ASSIGN(const Scaled sp, engine::scaleParameter(p, "effect '" + label(c) + "'"));
       phi.push_back(sp);
     }
-    selected.emplace_back(static_cast<int>(i), std::move(phi));
+    selected.emplace_back(i, std::move(phi));
   }
   s.selected = std::move(selected);
   return {};

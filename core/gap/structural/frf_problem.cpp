@@ -147,6 +147,26 @@ class FrfProblem final : public GapProblem {
   int residualCount() const override {
     return static_cast<int>(2 * data_.lineCount() * data_.responseCount() * data_.referenceCount());
   }
+
+  // A residual mode adds term(s) u_o u_i to FRF (o, i) (StructuralCore::
+  // Receptance::at), with u its deflection shape, normalised to max |u| = 1
+  // over all DOFs, and term(s) the same function of its sizes for every
+  // residual mode of the problem (one band top). So its shape is the products
+  // u_o u_i (channel signs included) over the measured pairs: u and -u give
+  // the same products and the same FRFs, and a candidate whose u differed at
+  // the measured DOFs by a factor c would need its sizes divided by c^2, so
+  // the products keep that scale and such candidates are never merged. What u
+  // does at DOFs nobody measured reaches no residual, metric or overlay.
+  std::vector<double> effectShape(int candidate) const override {
+    if (candidate < 0 || candidate >= static_cast<int>(core_->defs.size())) return {};
+    const CandidateDef& def = core_->defs[static_cast<std::size_t>(candidate)];
+    if (def.effect != Effect::ResidualMode) return {};
+    std::vector<double> out;
+    out.reserve(resp_.size() * refs_.size());
+    for (const auto& o : resp_)
+      for (const auto& i : refs_) out.push_back(def.shape[o.dof] * o.sign * def.shape[i.dof] * i.sign);
+    return out;
+  }
   NoiseModel noiseModel() const override { return noise_.report; }
 
   bool residuals(const ModelPoint& at, double* r) const override {

@@ -26,6 +26,7 @@
 #include <set>
 
 #include "core/gap/problem_loader.h"
+#include "core/io/project_records.h"
 #include "core/report/gap_report.h"
 #include "validation/gap/structural_benchmark.h"
 #include "views/common/project_model.h"
@@ -253,6 +254,54 @@ class ModelTestViewTest : public QObject {
     QVERIFY(kept.loadInputs());
     QVERIFY(keptEffects->count() >= 7);
     QVERIFY(!effectsLabel->text().contains(QStringLiteral("kept diagnosis")));
+  }
+
+  // A ranked candidate that stands for a family of locations changing the
+  // data alike (diagnosis JSON "equivalent_locations", core/gap/engine/
+  // families.h): the kept diagnosis's verdict names the family and the
+  // ranking's location cell counts it, its tooltip listing every member.
+  void keptFamilyIsNamed() {
+    const char* json = R"({"verdict": "effect", "verdict_set": [0, 1], "explanation": "Two residual modes.",
+      "two_effects": {"significant": true, "held_out_improvement": 0.04},
+      "ranking": [
+        {"effect": "residual_mode", "location": ["1+Y"], "equivalent_locations": [["2+Y"], ["3+Y"]],
+         "parameters": {"upper_residual": 1e-8}, "units": {"upper_residual": "m/N"},
+         "criterion": {"likelihood_ratio": 50}},
+        {"effect": "residual_mode", "location": ["9+Z"], "equivalent_locations": [["10+Z"]],
+         "parameters": {"upper_residual": 2e-8}, "units": {"upper_residual": "m/N"},
+         "criterion": {"likelihood_ratio": 40}},
+        {"effect": "hysteretic_damping", "location": [], "parameters": {"eta": 0},
+         "criterion": {"likelihood_ratio": 0}}]})";
+    const auto parsed = mozzi::views::parseStoredDiagnosis(json);
+    QVERIFY(parsed.ok());
+    QCOMPARE(parsed->ranking.size(), std::size_t{3});
+    QVERIFY((parsed->ranking[0].equivalent == std::vector<std::vector<std::string>>{{"2+Y"}, {"3+Y"}}));
+    QVERIFY((parsed->ranking[1].equivalent == std::vector<std::vector<std::string>>{{"10+Z"}}));
+    QVERIFY(parsed->ranking[2].equivalent.empty());
+
+    const QString projectPath = tempPath(QStringLiteral("family.mozzi"));
+    QFile::remove(projectPath);
+    mozzi::views::ProjectModel project;
+    QVERIFY(project.create(projectPath).ok());
+    const auto specimen = project.addSpecimen(QStringLiteral("Fork"), QStringLiteral("fork"));
+    QVERIFY(specimen.ok());
+    mozzi::core::io::StoredAnalysis analysis;
+    analysis.specimenId = *specimen;
+    analysis.name = "Fork against its FRFs";
+    analysis.resultJson = json;
+    QVERIFY(project.addAnalysis(analysis).ok());
+    mozzi::views::ModelTestView view;
+    view.setProjectModel(&project);
+    QVERIFY2(view.showNewestStored(), qPrintable(view.statusText()));
+    QCOMPARE(view.verdictText(),
+             QStringLiteral("Verdict: effect (residual_mode at 1+Y (and 2 equivalent locations) and "
+                            "residual_mode at 9+Z (equivalent at 10+Z))"));
+    QTableWidget* ranking = view.rankingTable();
+    QCOMPARE(ranking->rowCount(), 3);
+    QCOMPARE(ranking->item(0, 1)->text(), QStringLiteral("1+Y (+2 equivalent)"));
+    QCOMPARE(ranking->item(1, 1)->text(), QStringLiteral("9+Z (+1 equivalent)"));
+    QCOMPARE(ranking->item(2, 1)->text(), QString());
+    for (const char* dof : {"1+Y", "2+Y", "3+Y"}) QVERIFY(ranking->item(0, 1)->toolTip().contains(QLatin1String(dof)));
   }
 
   void badFilesGiveAClearMessage() {
