@@ -1660,7 +1660,7 @@
 <context>
     <name>RigResults</name>
     <message>
-        <location filename="../views/rigs/rig_test_page.cpp" line="+109"/>
+        <location filename="../views/rigs/rig_test_page.cpp" line="+112"/>
         <source>lateral stiffness k_lat</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2015,7 +2015,7 @@
 <context>
     <name>mozzi::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+296"/>
+        <location filename="../app/gui/main_window.cpp" line="+297"/>
         <source>&amp;File</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2195,8 +2195,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-347"/>
-        <location line="+396"/>
+        <location line="-348"/>
+        <location line="+397"/>
         <source>Open Project</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2216,8 +2216,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-407"/>
-        <location line="+413"/>
+        <location line="-408"/>
+        <location line="+414"/>
         <source>New Project</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2247,8 +2247,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-416"/>
-        <location line="+422"/>
+        <location line="-417"/>
+        <location line="+423"/>
         <source>Save Project As</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2305,7 +2305,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-462"/>
+        <location line="-463"/>
         <source>Import Universal File</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2315,7 +2315,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+375"/>
+        <location line="+376"/>
         <source>Mozzi projects (*.mozzi)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2325,7 +2325,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-431"/>
+        <location line="-432"/>
         <source>A job stopped before its end; see its page</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2345,7 +2345,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+208"/>
+        <location line="+209"/>
         <source>Open in %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2858,19 +2858,28 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-13"/>
+        <location line="+3"/>
+        <source>γ²</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Coherence γ² (0 to 1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-17"/>
         <source>Phase [deg]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="-17"/>
         <location line="+28"/>
-        <location line="+3"/>
         <source>Coherence</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-31"/>
+        <location line="-28"/>
         <source>Nyquist</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2953,7 +2962,7 @@
 <context>
     <name>mozzi::views::HammerStationPage</name>
     <message>
-        <location filename="../views/campaign/hammer_station_events.cpp" line="+56"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="+57"/>
         <source>Idle: press A to arm</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2988,7 +2997,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/campaign/hammer_station_page.cpp" line="+129"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+131"/>
         <source>New Campaign...</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3003,7 +3012,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+163"/>
+        <location line="+167"/>
         <source>Arm</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3126,12 +3135,12 @@
     </message>
     <message>
         <location line="+12"/>
-        <location line="+196"/>
+        <location line="+203"/>
         <source>Time since arming [s]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-178"/>
+        <location line="-185"/>
         <source>Time in the hit&apos;s record [s]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3287,7 +3296,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+24"/>
         <source>Arm again after each decision</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3386,7 +3395,7 @@
 <context>
     <name>mozzi::views::HitTimeView</name>
     <message>
-        <location filename="../views/plots/hit_time_view.cpp" line="+96"/>
+        <location filename="../views/plots/hit_time_view.cpp" line="+98"/>
         <source>hit %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3479,7 +3488,7 @@
 <context>
     <name>mozzi::views::IdentificationPage</name>
     <message>
-        <location filename="../views/modal/identification_page.cpp" line="+234"/>
+        <location filename="../views/modal/identification_page.cpp" line="+244"/>
         <source>Cannot list the FRF sets: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3504,7 +3513,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+41"/>
         <source>H %1 / %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3518,8 +3527,16 @@
         <source>Measured with an exponential window (tau = %1 s): its damping is removed from the modes.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>Shown: the kept identification &apos;%1&apos; (%2, %3 .. %4 Hz), %n mode(s) and their synthesis; Run identifies again.</source>
+        <translation type="unfinished">
+            <numerusform>Shown: the kept identification &apos;%1&apos; (%2, %3 .. %4 Hz), %n mode and its synthesis; Run identifies again.</numerusform>
+            <numerusform>Shown: the kept identification &apos;%1&apos; (%2, %3 .. %4 Hz), %n modes and their synthesis; Run identifies again.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+46"/>
+        <location line="+50"/>
         <source>Identifying %1 .. %2 Hz ...</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3544,17 +3561,19 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location filename="../views/modal/identification_kept.cpp" line="+34"/>
+        <location filename="../views/modal/identification_page.cpp" line="+12"/>
         <source>CMIF 1 [dB]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+0"/>
+        <location filename="../views/modal/identification_page.cpp" line="+0"/>
         <source>|sum of FRFs| [dB]</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+21"/>
+        <location filename="../views/modal/identification_page.cpp" line="+21"/>
         <source>%n mode(s) selected automatically in %1 .. %2 Hz; click a pole to add or remove it.</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -4666,7 +4685,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ModeAnimationView</name>
     <message>
-        <location filename="../views/scene/mode_animation_view.cpp" line="+229"/>
+        <location filename="../views/scene/mode_animation_view.cpp" line="+243"/>
         <source>Export a frame</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4930,7 +4949,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+238"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+249"/>
         <source>Export Diagnosis Report</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5000,7 +5019,17 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+39"/>
+        <source>%1 at %2 (equivalent at %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 at %2 (and %3 equivalent locations)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Verdict: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5030,7 +5059,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+49"/>
         <source>Effect</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5070,7 +5099,12 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+9"/>
+        <source>%1 (+%2 equivalent)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>model + %1 + %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5111,13 +5145,13 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="+236"/>
+        <location line="-241"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+241"/>
         <source>%1 and %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+16"/>
         <source>%1 at %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5127,7 +5161,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+216"/>
+        <location line="+225"/>
         <location line="+8"/>
         <source>Cannot write %1: %2</source>
         <translation type="unfinished"></translation>
@@ -5245,7 +5279,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="-111"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="-116"/>
         <source>No diagnosis yet</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5260,7 +5294,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+77"/>
         <source>First line of the kept diagnosis shown; a new run on files uses the value here</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5316,7 +5350,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::PageTabs</name>
     <message>
-        <location filename="../views/common/page_tabs.cpp" line="+152"/>
+        <location filename="../views/common/page_tabs.cpp" line="+191"/>
         <source>%1 %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5550,7 +5584,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::ProjectTree</name>
     <message>
-        <location filename="../views/common/project_tree.cpp" line="+29"/>
+        <location filename="../views/common/project_tree.cpp" line="+32"/>
         <source>stability sweep</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5580,7 +5614,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+147"/>
         <location line="+20"/>
         <source>Item</source>
         <translation type="unfinished"></translation>
@@ -6060,7 +6094,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::RigTestPage</name>
     <message>
-        <location filename="../views/rigs/rig_test_page.cpp" line="+213"/>
+        <location filename="../views/rigs/rig_test_page.cpp" line="+256"/>
         <source>Stiffness rig (simulated Motostiffmeter)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6175,12 +6209,12 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+5"/>
         <source>Ready. Pick a test and press Run.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+46"/>
         <source>Static ramp</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6254,7 +6288,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/rigs/rig_test_plots.cpp" line="+138"/>
+        <location filename="../views/rigs/rig_test_plots.cpp" line="+146"/>
         <source>Time [s]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6419,17 +6453,17 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>The project is open read-only (%1): the test could not be stored.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Correct the settings marked in the form first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <location line="+23"/>
         <source>Not started: %1</source>
         <translation type="unfinished"></translation>
@@ -6441,7 +6475,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+69"/>
         <source>Running: %1 on %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6456,17 +6490,17 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <source>Complete: stored as &apos;%1&apos;.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>Interrupted: stored as &apos;%1&apos; with the finished steps (%2).</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <location line="+3"/>
         <source>Failed: %1</source>
         <translation type="unfinished"></translation>
@@ -6502,12 +6536,12 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/rigs/rig_test_plots.cpp" line="+100"/>
+        <location filename="../views/rigs/rig_test_plots.cpp" line="+131"/>
         <source>Cannot read the rig test: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Cannot read the tyre test: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6542,7 +6576,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+45"/>
         <source>Cannot read the rig test&apos;s twist axes: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6550,7 +6584,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::SceneView</name>
     <message>
-        <location filename="../views/scene/scene_view.cpp" line="+760"/>
+        <location filename="../views/scene/scene_view.cpp" line="+618"/>
         <source>peak |u|</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6568,7 +6602,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::StabilityPage</name>
     <message>
-        <location filename="../views/stability/stability_page.cpp" line="+277"/>
+        <location filename="../views/stability/stability_page.cpp" line="+312"/>
         <source>Computing the eigenvalues against speed...</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6809,7 +6843,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::StabilizationPlot</name>
     <message>
-        <location filename="../views/plots/stabilization_plot.cpp" line="+169"/>
+        <location filename="../views/plots/stabilization_plot.cpp" line="+178"/>
         <source>Frequency [Hz]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6986,7 +7020,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::TwistAxesPage</name>
     <message>
-        <location filename="../views/scene/twist_axes_page.cpp" line="+268"/>
+        <location filename="../views/scene/twist_axes_page.cpp" line="+269"/>
         <source>Specimen</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7017,12 +7051,12 @@ Schema version %2, created %3 by Mozzi %4</source>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+441"/>
+        <location line="+490"/>
         <source>Dynamic</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-440"/>
+        <location line="-489"/>
         <source>u [m] (plate plane)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7129,17 +7163,17 @@ Schema version %2, created %3 by Mozzi %4</source>
     </message>
     <message>
         <location line="+9"/>
-        <location line="+114"/>
+        <location line="+163"/>
         <source>a_tw</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-91"/>
+        <location line="-140"/>
         <source>%1 Hz</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+70"/>
         <source>static twist axis</source>
         <translation type="unfinished"></translation>
     </message>
@@ -7169,7 +7203,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+48"/>
         <source>k_lat</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1660,7 +1660,7 @@
 <context>
     <name>RigResults</name>
     <message>
-        <location filename="../views/rigs/rig_test_page.cpp" line="+109"/>
+        <location filename="../views/rigs/rig_test_page.cpp" line="+112"/>
         <source>lateral stiffness k_lat</source>
         <translation>rigidezza laterale k_lat</translation>
     </message>
@@ -2015,7 +2015,7 @@
 <context>
     <name>mozzi::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+296"/>
+        <location filename="../app/gui/main_window.cpp" line="+297"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -2195,8 +2195,8 @@
         <translation>Dove: %1</translation>
     </message>
     <message>
-        <location line="-347"/>
-        <location line="+396"/>
+        <location line="-348"/>
+        <location line="+397"/>
         <source>Open Project</source>
         <translation>Apri progetto</translation>
     </message>
@@ -2216,8 +2216,8 @@
         <translation>Sola lettura: %1</translation>
     </message>
     <message>
-        <location line="-407"/>
-        <location line="+413"/>
+        <location line="-408"/>
+        <location line="+414"/>
         <source>New Project</source>
         <translation>Nuovo progetto</translation>
     </message>
@@ -2247,8 +2247,8 @@
         <translation>Creato il progetto dimostrativo %1</translation>
     </message>
     <message>
-        <location line="-416"/>
-        <location line="+422"/>
+        <location line="-417"/>
+        <location line="+423"/>
         <source>Save Project As</source>
         <translation>Salva progetto come</translation>
     </message>
@@ -2305,7 +2305,7 @@
         <translation>Importato %1: %2 nodi, %3 linee, %4 FRF, %5 modi</translation>
     </message>
     <message>
-        <location line="-462"/>
+        <location line="-463"/>
         <source>Import Universal File</source>
         <translation>Importa file Universal</translation>
     </message>
@@ -2315,7 +2315,7 @@
         <translation>File Universal (*.uff *.unv);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location line="+375"/>
+        <location line="+376"/>
         <source>Mozzi projects (*.mozzi)</source>
         <translation>Progetti Mozzi (*.mozzi)</translation>
     </message>
@@ -2325,7 +2325,7 @@
         <translation>Progetti Mozzi (*.mozzi);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location line="-431"/>
+        <location line="-432"/>
         <source>A job stopped before its end; see its page</source>
         <translation>Un&apos;attività si è interrotta prima della fine; vedi la sua pagina</translation>
     </message>
@@ -2345,7 +2345,7 @@
         <translation>Crea progetto dimostrativo</translation>
     </message>
     <message>
-        <location line="+208"/>
+        <location line="+209"/>
         <source>Open in %1</source>
         <translation>Apri in %1</translation>
     </message>
@@ -2858,19 +2858,28 @@
         <translation>Im H</translation>
     </message>
     <message>
-        <location line="-13"/>
+        <location line="+3"/>
+        <source>γ²</source>
+        <translation>γ²</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Coherence γ² (0 to 1)</source>
+        <translation>Coerenza γ² (da 0 a 1)</translation>
+    </message>
+    <message>
+        <location line="-17"/>
         <source>Phase [deg]</source>
         <translation>Fase [gradi]</translation>
     </message>
     <message>
         <location line="-17"/>
         <location line="+28"/>
-        <location line="+3"/>
         <source>Coherence</source>
         <translation>Coerenza</translation>
     </message>
     <message>
-        <location line="-31"/>
+        <location line="-28"/>
         <source>Nyquist</source>
         <translation>Nyquist</translation>
     </message>
@@ -2953,7 +2962,7 @@
 <context>
     <name>mozzi::views::HammerStationPage</name>
     <message>
-        <location filename="../views/campaign/hammer_station_events.cpp" line="+56"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="+57"/>
         <source>Idle: press A to arm</source>
         <translation>Inattivo: premi A per armare</translation>
     </message>
@@ -2988,7 +2997,7 @@
         <translation>Campagna terminata</translation>
     </message>
     <message>
-        <location filename="../views/campaign/hammer_station_page.cpp" line="+129"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+131"/>
         <source>New Campaign...</source>
         <translation>Nuova campagna...</translation>
     </message>
@@ -3003,7 +3012,7 @@
         <translation>Arresta</translation>
     </message>
     <message>
-        <location line="+163"/>
+        <location line="+167"/>
         <source>Arm</source>
         <translation>Arma</translation>
     </message>
@@ -3126,12 +3135,12 @@
     </message>
     <message>
         <location line="+12"/>
-        <location line="+196"/>
+        <location line="+203"/>
         <source>Time since arming [s]</source>
         <translation>Tempo dall&apos;armamento [s]</translation>
     </message>
     <message>
-        <location line="-178"/>
+        <location line="-185"/>
         <source>Time in the hit&apos;s record [s]</source>
         <translation>Tempo nella registrazione del colpo [s]</translation>
     </message>
@@ -3287,7 +3296,7 @@
         <translation>Campagna terminata: insieme di FRF %1</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+24"/>
         <source>Arm again after each decision</source>
         <translation>Arma di nuovo dopo ogni decisione</translation>
     </message>
@@ -3386,7 +3395,7 @@
 <context>
     <name>mozzi::views::HitTimeView</name>
     <message>
-        <location filename="../views/plots/hit_time_view.cpp" line="+96"/>
+        <location filename="../views/plots/hit_time_view.cpp" line="+98"/>
         <source>hit %1</source>
         <translation>colpo %1</translation>
     </message>
@@ -3479,7 +3488,7 @@
 <context>
     <name>mozzi::views::IdentificationPage</name>
     <message>
-        <location filename="../views/modal/identification_page.cpp" line="+234"/>
+        <location filename="../views/modal/identification_page.cpp" line="+244"/>
         <source>Cannot list the FRF sets: %1</source>
         <translation>Impossibile elencare gli insiemi di FRF: %1</translation>
     </message>
@@ -3504,7 +3513,7 @@
         <translation>Impossibile leggere le finestre dell&apos;insieme di FRF %1: %2</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+41"/>
         <source>H %1 / %2</source>
         <translation>H %1 / %2</translation>
     </message>
@@ -3518,8 +3527,16 @@
         <source>Measured with an exponential window (tau = %1 s): its damping is removed from the modes.</source>
         <translation>Misurato con una finestra esponenziale (tau = %1 s): il suo smorzamento viene tolto dai modi.</translation>
     </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>Shown: the kept identification &apos;%1&apos; (%2, %3 .. %4 Hz), %n mode(s) and their synthesis; Run identifies again.</source>
+        <translation>
+            <numerusform>Mostrata: l&apos;identificazione conservata &apos;%1&apos; (%2, %3 .. %4 Hz), %n modo e la sua sintesi; Esegui identifica di nuovo.</numerusform>
+            <numerusform>Mostrata: l&apos;identificazione conservata &apos;%1&apos; (%2, %3 .. %4 Hz), %n modi e la loro sintesi; Esegui identifica di nuovo.</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+46"/>
+        <location line="+50"/>
         <source>Identifying %1 .. %2 Hz ...</source>
         <translation>Identificazione %1 .. %2 Hz ...</translation>
     </message>
@@ -3544,17 +3561,19 @@
         <translation>Identificazione non riuscita: %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location filename="../views/modal/identification_kept.cpp" line="+34"/>
+        <location filename="../views/modal/identification_page.cpp" line="+12"/>
         <source>CMIF 1 [dB]</source>
         <translation>CMIF 1 [dB]</translation>
     </message>
     <message>
         <location line="+0"/>
+        <location filename="../views/modal/identification_page.cpp" line="+0"/>
         <source>|sum of FRFs| [dB]</source>
         <translation>|somma delle FRF| [dB]</translation>
     </message>
     <message numerus="yes">
-        <location line="+21"/>
+        <location filename="../views/modal/identification_page.cpp" line="+21"/>
         <source>%n mode(s) selected automatically in %1 .. %2 Hz; click a pole to add or remove it.</source>
         <translation>
             <numerusform>%n modo selezionato automaticamente in %1 .. %2 Hz; fai clic su un polo per aggiungerlo o toglierlo.</numerusform>
@@ -4670,7 +4689,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ModeAnimationView</name>
     <message>
-        <location filename="../views/scene/mode_animation_view.cpp" line="+229"/>
+        <location filename="../views/scene/mode_animation_view.cpp" line="+243"/>
         <source>Export a frame</source>
         <translation>Esporta un fotogramma</translation>
     </message>
@@ -4934,7 +4953,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+238"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+249"/>
         <source>Export Diagnosis Report</source>
         <translation>Esporta rapporto di diagnosi</translation>
     </message>
@@ -5004,7 +5023,17 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>La diagnosi si è interrotta: %1</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+39"/>
+        <source>%1 at %2 (equivalent at %3)</source>
+        <translation>%1 in %2 (equivalente in %3)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 at %2 (and %3 equivalent locations)</source>
+        <translation>%1 in %2 (e altre %3 posizioni equivalenti)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Verdict: %1</source>
         <translation>Verdetto: %1</translation>
     </message>
@@ -5034,7 +5063,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>no</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+49"/>
         <source>Effect</source>
         <translation>Effetto</translation>
     </message>
@@ -5074,7 +5103,12 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>(non identificabile)</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+9"/>
+        <source>%1 (+%2 equivalent)</source>
+        <translation>%1 (+%2 equiv.)</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>model + %1 + %2</source>
         <translation>modello + %1 + %2</translation>
     </message>
@@ -5115,13 +5149,13 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Niente da esportare: esegui prima la diagnosi.</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="+236"/>
+        <location line="-241"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+241"/>
         <source>%1 and %2</source>
         <translation>%1 e %2</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+16"/>
         <source>%1 at %2</source>
         <translation>%1 in %2</translation>
     </message>
@@ -5131,7 +5165,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Verdetto: %1 (%2)</translation>
     </message>
     <message>
-        <location line="+216"/>
+        <location line="+225"/>
         <location line="+8"/>
         <source>Cannot write %1: %2</source>
         <translation>Impossibile scrivere %1: %2</translation>
@@ -5249,7 +5283,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="-111"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="-116"/>
         <source>No diagnosis yet</source>
         <translation>Nessuna diagnosi</translation>
     </message>
@@ -5264,7 +5298,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Analisi %1: %2</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+77"/>
         <source>First line of the kept diagnosis shown; a new run on files uses the value here</source>
         <translation>Prima riga della diagnosi conservata mostrata; una nuova esecuzione sui file usa il valore qui</translation>
     </message>
@@ -5286,7 +5320,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     <message>
         <location line="+1"/>
         <source>The effects the kept diagnosis ranked; a run on files lists those its data offer</source>
-        <translation>Gli effetti classificati dalla diagnosi conservata; un'esecuzione sui file elenca quelli offerti dai suoi dati</translation>
+        <translation>Gli effetti classificati dalla diagnosi conservata; un&apos;esecuzione sui file elenca quelli offerti dai suoi dati</translation>
     </message>
     <message numerus="yes">
         <location line="+26"/>
@@ -5320,7 +5354,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::PageTabs</name>
     <message>
-        <location filename="../views/common/page_tabs.cpp" line="+152"/>
+        <location filename="../views/common/page_tabs.cpp" line="+191"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -5555,7 +5589,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::ProjectTree</name>
     <message>
-        <location filename="../views/common/project_tree.cpp" line="+29"/>
+        <location filename="../views/common/project_tree.cpp" line="+32"/>
         <source>stability sweep</source>
         <translation>analisi di stabilità</translation>
     </message>
@@ -5585,7 +5619,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Diagnosi del divario</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+147"/>
         <location line="+20"/>
         <source>Item</source>
         <translation>Elemento</translation>
@@ -6065,7 +6099,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::RigTestPage</name>
     <message>
-        <location filename="../views/rigs/rig_test_page.cpp" line="+213"/>
+        <location filename="../views/rigs/rig_test_page.cpp" line="+256"/>
         <source>Stiffness rig (simulated Motostiffmeter)</source>
         <translation>Banco di rigidezza (Motostiffmeter simulato)</translation>
     </message>
@@ -6180,12 +6214,12 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Unità</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+5"/>
         <source>Ready. Pick a test and press Run.</source>
         <translation>Pronto. Scegli una prova e premi Esegui.</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+46"/>
         <source>Static ramp</source>
         <translation>Rampa statica</translation>
     </message>
@@ -6259,7 +6293,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Contorno: %1, approssimato (non in scala di un disegno).</translation>
     </message>
     <message>
-        <location filename="../views/rigs/rig_test_plots.cpp" line="+138"/>
+        <location filename="../views/rigs/rig_test_plots.cpp" line="+146"/>
         <source>Time [s]</source>
         <translation>Tempo [s]</translation>
     </message>
@@ -6424,17 +6458,17 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Apri o crea prima un progetto: la prova viene memorizzata lì.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>The project is open read-only (%1): the test could not be stored.</source>
         <translation>Il progetto è aperto in sola lettura (%1): impossibile memorizzare la prova.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Correct the settings marked in the form first.</source>
         <translation>Correggi prima le impostazioni segnalate nel modulo.</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <location line="+23"/>
         <source>Not started: %1</source>
         <translation>Non avviata: %1</translation>
@@ -6446,7 +6480,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Prova al banco non avviata: %1</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+69"/>
         <source>Running: %1 on %2</source>
         <translation>In corso: %1 su %2</translation>
     </message>
@@ -6461,17 +6495,17 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>%1 su %2</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <source>Complete: stored as &apos;%1&apos;.</source>
         <translation>Completata: memorizzata come &apos;%1&apos;.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>Interrupted: stored as &apos;%1&apos; with the finished steps (%2).</source>
         <translation>Interrotta: memorizzata come &apos;%1&apos; con i passi completati (%2).</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <location line="+3"/>
         <source>Failed: %1</source>
         <translation>Non riuscita: %1</translation>
@@ -6507,12 +6541,12 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Passo %1 (%2) conservato senza risultato: %3</translation>
     </message>
     <message>
-        <location filename="../views/rigs/rig_test_plots.cpp" line="+100"/>
+        <location filename="../views/rigs/rig_test_plots.cpp" line="+131"/>
         <source>Cannot read the rig test: %1</source>
         <translation>Impossibile leggere la prova al banco: %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Cannot read the tyre test: %1</source>
         <translation>Impossibile leggere la prova dello pneumatico: %1</translation>
     </message>
@@ -6547,7 +6581,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>&apos;%1&apos; (%2)</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+45"/>
         <source>Cannot read the rig test&apos;s twist axes: %1</source>
         <translation>Impossibile leggere gli assi di torsione della prova: %1</translation>
     </message>
@@ -6555,7 +6589,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::SceneView</name>
     <message>
-        <location filename="../views/scene/scene_view.cpp" line="+760"/>
+        <location filename="../views/scene/scene_view.cpp" line="+618"/>
         <source>peak |u|</source>
         <translation>|u| di picco</translation>
     </message>
@@ -6573,7 +6607,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::StabilityPage</name>
     <message>
-        <location filename="../views/stability/stability_page.cpp" line="+277"/>
+        <location filename="../views/stability/stability_page.cpp" line="+312"/>
         <source>Computing the eigenvalues against speed...</source>
         <translation>Calcolo degli autovalori in funzione della velocità...</translation>
     </message>
@@ -6814,7 +6848,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::StabilizationPlot</name>
     <message>
-        <location filename="../views/plots/stabilization_plot.cpp" line="+169"/>
+        <location filename="../views/plots/stabilization_plot.cpp" line="+178"/>
         <source>Frequency [Hz]</source>
         <translation>Frequenza [Hz]</translation>
     </message>
@@ -6991,7 +7025,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::TwistAxesPage</name>
     <message>
-        <location filename="../views/scene/twist_axes_page.cpp" line="+268"/>
+        <location filename="../views/scene/twist_axes_page.cpp" line="+269"/>
         <source>Specimen</source>
         <translation>Provino</translation>
     </message>
@@ -7022,12 +7056,12 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+441"/>
+        <location line="+490"/>
         <source>Dynamic</source>
         <translation>Dinamica</translation>
     </message>
     <message>
-        <location line="-440"/>
+        <location line="-489"/>
         <source>u [m] (plate plane)</source>
         <translation>u [m] (piano della piastra)</translation>
     </message>
@@ -7134,17 +7168,17 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location line="+114"/>
+        <location line="+163"/>
         <source>a_tw</source>
         <translation>a_tw</translation>
     </message>
     <message>
-        <location line="-91"/>
+        <location line="-140"/>
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+70"/>
         <source>static twist axis</source>
         <translation>asse di torsione statico</translation>
     </message>
@@ -7174,7 +7208,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>asse di torsione dinamico, %1 Hz</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+48"/>
         <source>k_lat</source>
         <translation>k_lat</translation>
     </message>
