@@ -775,7 +775,9 @@ void MainWindowTest::narrowDockAndEveryPageScreenshots() {
       // scroll: the scroll area sizes a page with word-wrapped labels by its
       // preferred height for the width, 767 px in 606 before the overlay
       // plot, the candidate list and the explanation gave up their hints.
-      auto* holder = qobject_cast<QScrollArea*>(page->parentWidget() ? page->parentWidget()->parentWidget() : nullptr);
+      QScrollArea* holder = nullptr;
+      for (QWidget* w = page->parentWidget(); w && !holder; w = w->parentWidget())
+        holder = qobject_cast<QScrollArea*>(w);  // the tab's scroll area, above the page's holder
       QVERIFY(holder);
       QVERIFY2(
           !holder->verticalScrollBar()->isVisible(),
