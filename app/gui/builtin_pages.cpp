@@ -111,7 +111,7 @@ std::vector<double> modeFrequenciesOf(core::io::ProjectStore* store, qint64 frfS
 QWidget* createFrfPage(const PageContext& ctx) {
   core::io::ProjectStore* store = ctx.model->store();
   if (!store) return nullptr;
-  auto frf = store->frfSet(ctx.item.id);
+  auto frf = ctx.model->frfSet(ctx.item.id);
   if (!frf) {
     if (ctx.log)
       ctx.log(QCoreApplication::translate("Pages", "Could not read the FRF set: %1")
@@ -119,7 +119,7 @@ QWidget* createFrfPage(const PageContext& ctx) {
     return nullptr;
   }
   auto* plot = new views::FrfPlot(ctx.parent);
-  plot->setFrfs(std::make_shared<const core::FrfMatrix>(std::move(frf).value()));
+  plot->setFrfs(std::move(frf).value());
   plot->setModeFrequencies(modeFrequenciesOf(store, ctx.item.id));
   views::ProjectModel* model = ctx.model;
   const qint64 id = ctx.item.id;

@@ -1,6 +1,7 @@
 #include "views/common/project_model.h"
 
 #include <QCoreApplication>
+#include <algorithm>
 #include <QFileInfo>
 #include <QThread>
 
@@ -76,7 +77,7 @@ core::Result<void> ProjectModel::replaceStore(core::Result<core::io::ProjectStor
   auto next = std::make_shared<core::io::ProjectStore>(std::move(opened).value());
   if (store_) emit aboutToClose();
   store_ = std::move(next);
-  contents_.reset();
+  forgetReads();
   emit projectChanged();
   return {};
 }
@@ -86,7 +87,7 @@ core::Result<void> ProjectModel::open(const QString& path) {
   // and come back read-only, so just show it again.
   const QString canonical = QFileInfo(path).canonicalFilePath();
   if (store_ && !canonical.isEmpty() && canonical == QFileInfo(this->path()).canonicalFilePath()) {
-    contents_.reset();
+    forgetReads();
     emit projectChanged();
     return {};
   }
@@ -118,7 +119,7 @@ void ProjectModel::close() {
   if (!store_) return;
   emit aboutToClose();
   store_.reset();
-  contents_.reset();
+  forgetReads();
   emit projectChanged();
 }
 
@@ -129,6 +130,25 @@ const std::vector<core::io::SpecimenContents>& ProjectModel::contents() const {
       if (auto read = core::io::projectContents(*store_)) contents_ = std::move(read).value();
   }
   return *contents_;
+}
+
+void ProjectModel::forgetReads() {
+  contents_.reset();
+  frfSets_.clear();
+}
+
+core::Result<std::shared_ptr<const core::FrfMatrix>> ProjectModel::frfSet(qint64 id) const {
+  if (!store_) return noProject();
+  auto kept = std::find_if(frfSets_.begin(), frfSets_.end(), [id](const auto& e) { return e.first == id; });
+  if (kept != frfSets_.end()) {
+    std::rotate(kept, kept + 1, frfSets_.end());  // the most recent last
+    return frfSets_.back().second;
+  }
+  auto read = store_->frfSet(id);
+  if (!read) return read.error();
+  if (frfSets_.size() >= kFrfSetsKept) frfSets_.erase(frfSets_.begin());
+  frfSets_.emplace_back(id, std::make_shared<const core::FrfMatrix>(std::move(read).value()));
+  return frfSets_.back().second;
 }
 
 QString ProjectModel::recordName(RecordKind kind, qint64 id) const {
@@ -289,7 +309,9 @@ void ProjectModel::notifyChanged(RecordKind kind, qint64 id) {
 }
 
 void ProjectModel::emitChanged(RecordKind kind, qint64 id) {
-  // A hit changes no specimen's contents (the campaign is listed, not its hits).
+  // A hit changes no specimen's contents (the campaign is listed, not its
+  // hits), but it may come with its FRF set's new average.
+  frfSets_.clear();
   if (kind != RecordKind::Hit) contents_.reset();
   switch (kind) {
     case RecordKind::None: return;

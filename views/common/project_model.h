@@ -15,6 +15,7 @@
 #include <QString>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/common/frf_matrix.h"
@@ -90,6 +91,13 @@ class ProjectModel : public QObject {
   const std::vector<core::io::SpecimenContents>& contents() const;
   // A short display name for a record ("Frame A", "frf.uff"); empty if unknown.
   QString recordName(RecordKind kind, qint64 id) const;
+  // The FRF set `id` as stored (ProjectStore::frfSet), read once and shared
+  // by the pages that show it (the FRF plot, Identification, Mode Animation
+  // open the same set one after the other: a demo set takes about 20 ms to
+  // read and check) until the next change of the project. The last
+  // kFrfSetsKept sets read are kept. GUI thread only.
+  core::Result<std::shared_ptr<const core::FrfMatrix>> frfSet(qint64 id) const;
+  static constexpr std::size_t kFrfSetsKept = 3;
 
   // Convenience writes: write through the store, then notify. Errors when no
   // project is open or the store refuses (read-only, unknown id, ...).
@@ -136,11 +144,15 @@ class ProjectModel : public QObject {
 
  private:
   void emitChanged(RecordKind kind, qint64 id);
+  // Drops what contents() and frfSet() keep (the project changed).
+  void forgetReads();
   core::Result<void> replaceStore(core::Result<core::io::ProjectStore> opened);
 
   std::shared_ptr<core::io::ProjectStore> store_;
   QString mozziVersion_;
   mutable std::optional<std::vector<core::io::SpecimenContents>> contents_;  // contents(), until the next change
+  // frfSet(): the sets read since the last change, the most recent last
+  mutable std::vector<std::pair<qint64, std::shared_ptr<const core::FrfMatrix>>> frfSets_;
 };
 
 }  // namespace views

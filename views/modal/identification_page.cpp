@@ -259,12 +259,12 @@ void IdentificationPage::reloadSets() {
 bool IdentificationPage::setFrfSet(qint64 id) {
   core::io::ProjectStore* store = model_->store();
   if (!store) return false;
-  auto frf = store->frfSet(id);
+  auto frf = model_->frfSet(id);
   if (!frf) {
     setStatus(tr("Cannot read FRF set %1: %2").arg(id).arg(QString::fromStdString(frf.error().describe())), true);
     return false;
   }
-  if (frf->lineCount() < 2 || frf->referenceCount() < 1) {
+  if ((*frf)->lineCount() < 2 || (*frf)->referenceCount() < 1) {
     setStatus(tr("FRF set %1 holds no FRF to identify").arg(id), true);
     return false;
   }
@@ -284,7 +284,7 @@ bool IdentificationPage::setFrfSet(qint64 id) {
   }
   const bool same = id == frfSetId_;
   frfSetId_ = id;
-  frf_ = std::make_shared<const core::FrfMatrix>(std::move(frf).value());
+  frf_ = std::move(frf).value();
   fitter_.reset();  // over the set it replaces
   {
     const QSignalBlocker block(setBox_);

@@ -78,7 +78,7 @@ void ModeAnimationPage::reload() {
   }
   view_->setShapes(std::move(shapes));
   if (chosen->frfSetId) {
-    auto frf = store->frfSet(*chosen->frfSetId);
+    auto frf = model_->frfSet(*chosen->frfSetId);
     if (frf) view_->setFrfSet(*frf, tr("FRF set %1").arg(*chosen->frfSetId));
   }
   if (first >= 0) view_->showShape(first);

@@ -293,9 +293,11 @@ void ModeAnimationView::fillCombos() {
   filling_ = false;
 }
 
-void ModeAnimationView::setFrfSet(const core::FrfMatrix& frf, const QString& name) {
-  frf_ = frf;
+void ModeAnimationView::setFrfSet(std::shared_ptr<const core::FrfMatrix> set, const QString& name) {
+  frf_ = std::move(set);
   frfName_ = name;
+  if (!frf_) return;
+  const core::FrfMatrix& frf = *frf_;
   if (frf.lineCount() > 0) {
     odsSpin_->setRange(frf.frequencyHz[0], frf.frequencyHz[frf.lineCount() - 1]);
     odsSpin_->setValue(frf.frequencyHz[frf.lineCount() / 2]);

@@ -59,8 +59,9 @@ class ModeAnimationView : public QWidget {
   void setMesh(const core::io::MeshDocument& mesh);
   void setShapes(std::vector<Shape> shapes);
   const std::vector<Shape>& shapes() const { return shapes_; }
-  // FRF set for the operating deflection shape (reference 0 of the set).
-  void setFrfSet(const core::FrfMatrix& frf, const QString& name);
+  // FRF set for the operating deflection shape (reference 0 of the set);
+  // shared, not copied (ProjectModel::frfSet keeps it for other pages).
+  void setFrfSet(std::shared_ptr<const core::FrfMatrix> set, const QString& name);
 
   // Shows shape `index` (left scene); false with message() when it cannot.
   bool showShape(int index);
@@ -133,7 +134,7 @@ class ModeAnimationView : public QWidget {
 
   core::io::MeshDocument mesh_;
   std::vector<Shape> shapes_;
-  std::optional<core::FrfMatrix> frf_;
+  std::shared_ptr<const core::FrfMatrix> frf_;
   QString frfName_;
   std::optional<Shape> current_;
   std::optional<Shape> other_;

@@ -334,6 +334,11 @@ std::array<double, 9> SceneView::cameraPose() const {
 }
 
 void SceneView::resetCamera() {
+  frameDrawn();
+  render();
+}
+
+void SceneView::frameDrawn() {
   std::array<double, 6> b = drawnBounds();
   if (b[0] <= b[1]) {
     pipeline_->renderer->ResetCamera(b.data());
@@ -341,7 +346,6 @@ void SceneView::resetCamera() {
     pipeline_->renderer->ResetCamera();
   }
   framedPose_ = cameraPose();
-  render();
 }
 
 void SceneView::reframeIfUntouched() {

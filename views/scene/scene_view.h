@@ -139,6 +139,8 @@ class SceneView : public QWidget {
   std::array<double, 9> cameraPose() const;
   bool cameraMovedSinceFraming() const { return cameraPose() != framedPose_; }
   void reframeIfUntouched();
+  // resetCamera() without the render, for callers that render next.
+  void frameDrawn();
   void hideHitMarker();
   // Meshes above this many nodes are drawn for speed (thin lines, plain dots,
   // no dots on the deformed shape, opaque overlay shown only while paused):

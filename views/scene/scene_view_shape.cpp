@@ -61,11 +61,7 @@ bool SceneView::setShape(const core::geometry::NodeDisplacements& u, const std::
   updateColourRange();
   // The whole cycle in view: framed when the shape comes (the mesh was framed
   // alone when it was drawn), unless the user has moved the camera since.
-  if (!cameraMovedSinceFraming()) {
-    const std::array<double, 6> b = drawnBounds();
-    pipeline_->renderer->ResetCamera(b.data());
-    framedPose_ = cameraPose();
-  }
+  if (!cameraMovedSinceFraming()) frameDrawn();
   setPhase(phase_);
   return true;
 }
@@ -104,11 +100,7 @@ void SceneView::setAmplitude(double amplitude) {
   amplitude_ = amplitude;
   if (!hasShape()) return;
   updateColourRange();
-  if (!cameraMovedSinceFraming()) {
-    const std::array<double, 6> b = drawnBounds();
-    pipeline_->renderer->ResetCamera(b.data());
-    framedPose_ = cameraPose();
-  }
+  if (!cameraMovedSinceFraming()) frameDrawn();
   setPhase(phase_);
 }
 

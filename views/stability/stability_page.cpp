@@ -16,7 +16,6 @@
 #include <QLabel>
 #include <QMap>
 #include <QPushButton>
-#include <QResizeEvent>
 #include <QVBoxLayout>
 #include <algorithm>
 
@@ -50,28 +49,6 @@ using Model = StabilityPage::Model;
 
 // The width a combo box asks for, in characters (its entries are longer).
 constexpr int kComboMinChars = 22;
-
-// A word-wrapped label that does not make the page height-for-width: the
-// tab's scroll area sizes such a page to its preferred height (the plots'
-// size hints, taller than the tab area at 1280x800: the imaginary-part plot
-// was below the fold) rather than to the viewport. It asks for the height its
-// text takes at its present width and asks again when the width changes.
-class WrappingLabel : public QLabel {
- public:
-  explicit WrappingLabel(QWidget* parent) : QLabel(parent) { setWordWrap(true); }
-  bool hasHeightForWidth() const override { return false; }
-  QSize minimumSizeHint() const override { return {fontMetrics().averageCharWidth() * 12, heightNow()}; }
-  QSize sizeHint() const override { return {QLabel::sizeHint().width(), heightNow()}; }
-
- protected:
-  void resizeEvent(QResizeEvent* event) override {
-    QLabel::resizeEvent(event);
-    if (event->size().width() != event->oldSize().width()) updateGeometry();
-  }
-
- private:
-  int heightNow() const { return QLabel::heightForWidth(std::max(width(), fontMetrics().averageCharWidth() * 40)); }
-};
 
 // The fork of each Model entry, as core::stability::StabilityRequest names it.
 const char* const kForks[] = {"rigid", "bending", "torsion", "rigid", "model 1", "model 2", "model 3"};
@@ -109,7 +86,8 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
   compare_ = new QCheckBox(this);
   compare_->setObjectName(QStringLiteral("stabilityCompareRigid"));
   paramsLabel_ = new QLabel(this);
-  paramsFile_ = new WrappingLabel(this);  // a long file name wraps rather than widen the page
+  paramsFile_ = new QLabel(this);  // a long file name wraps rather than widen the page
+  paramsFile_->setWordWrap(true);
   paramsFile_->setObjectName(QStringLiteral("stabilityParameterFile"));
   paramsFile_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   paramsButton_ = new QPushButton(this);
@@ -132,7 +110,7 @@ StabilityPage::StabilityPage(QWidget* parent, JobRunner* jobs) : QWidget(parent)
   step_->setRange(0.01, 10.0);
   runButton_ = new QPushButton(this);
   runButton_->setObjectName(QStringLiteral("stabilityRun"));
-  summary_ = new WrappingLabel(this);
+  summary_ = new QLabel(this);
   summary_->setObjectName(QStringLiteral("stabilitySummary"));
   summary_->setWordWrap(true);
   summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);

@@ -2,7 +2,7 @@
 // of its kind of record (and recordsChanged) with the right id; notifyChanged
 // from a worker thread reaches GUI-thread receivers queued, in the GUI thread;
 // failed opens leave the open project untouched; a job's store handle outlives
-// close().
+// close(); an FRF set is read once and shared until the project changes.
 #include "views/common/project_model.h"
 
 #include <QApplication>
@@ -161,6 +161,44 @@ class ProjectModelTest : public QObject {
     QCOMPARE(analyses.count(), 2);
     QCOMPARE(all.count(), 9);
     QVERIFY(model_->store()->summary()->specimens.empty());
+  }
+
+  void frfSetIsReadOnceUntilTheProjectChanges() {
+    auto sp = model_->addSpecimen(QStringLiteral("Fork A"), QStringLiteral("fork"));
+    QVERIFY(sp.ok());
+    io::FrfSetInfo info;
+    info.specimenId = *sp;
+    std::vector<qint64> ids;
+    for (int k = 0; k < 4; ++k) {
+      info.name = "run " + std::to_string(k + 1);
+      auto set = model_->addFrfSet(info, smallFrf());
+      QVERIFY(set.ok());
+      ids.push_back(*set);
+    }
+    auto first = model_->frfSet(ids[0]);
+    QVERIFY(first.ok());
+    // As stored: the values smallFrf() wrote.
+    QCOMPARE((*first)->lineCount(), Eigen::Index(8));
+    QCOMPARE((*first)->h[0](3, 0), mozzi::core::Complex(1.0, -0.5));
+    auto again = model_->frfSet(ids[0]);
+    QVERIFY(again.ok());
+    QCOMPARE(again->get(), first->get());  // shared, not read again
+    // Three more sets read: the first drops out of the kept ones and is read again.
+    for (int k = 1; k < 4; ++k) QVERIFY(model_->frfSet(ids[static_cast<std::size_t>(k)]).ok());
+    QCOMPARE(ProjectModel::kFrfSetsKept, std::size_t(3));
+    auto reread = model_->frfSet(ids[0]);
+    QVERIFY(reread.ok());
+    QVERIFY(reread->get() != first->get());
+    QCOMPARE((*reread)->h[0], (*first)->h[0]);
+    // A change drops them all: the deleted specimen's sets are gone, not served from memory.
+    auto kept = model_->frfSet(ids[3]);
+    QVERIFY(kept.ok());
+    QVERIFY(model_->deleteSpecimen(*sp).ok());
+    auto gone = model_->frfSet(ids[3]);
+    QVERIFY(!gone.ok());
+    QCOMPARE(gone.error().code, mozzi::core::ErrorCode::NotFound);
+    model_->close();
+    QVERIFY(!model_->frfSet(ids[0]).ok());
   }
 
   void failedWritesEmitNothing() {

@@ -211,7 +211,7 @@ void ModeAnimationViewTest::odsIsTheFrfColumnAtTheNearestLine() {
   view.setMesh(fork());
   const mozzi::core::FrfMatrix frf = forkFrf();
   const mozzi::core::ComplexMatrix& h = frf.h[0];
-  view.setFrfSet(frf, QStringLiteral("fork-a.uff"));
+  view.setFrfSet(std::make_shared<const mozzi::core::FrfMatrix>(frf), QStringLiteral("fork-a.uff"));
   QVERIFY(view.showOds(41.4));  // nearest line 41 Hz
   const double amplitude = view.amplitude();
   view.setPhase(M_PI / 2);  // sin = 1, cos = 0: displacement = A Re(u)
@@ -381,7 +381,7 @@ void ModeAnimationViewTest::odsFollowsThePlotCursor() {
   view.setMesh(fork());
   QVERIFY(view.odsPlot()->isHidden());  // no FRF set yet
   const mozzi::core::FrfMatrix frf = forkFrf();
-  view.setFrfSet(frf, QStringLiteral("fork-a.uff"));
+  view.setFrfSet(std::make_shared<const mozzi::core::FrfMatrix>(frf), QStringLiteral("fork-a.uff"));
   QVERIFY(view.odsPlot()->isVisible());
   QVERIFY(!view.scene()->hasShape());  // the set alone shows nothing yet
   // The curve is |sum over the responses to reference 0| in dB, line by line.
