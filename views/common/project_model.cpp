@@ -1,9 +1,9 @@
 #include "views/common/project_model.h"
 
 #include <QCoreApplication>
-#include <algorithm>
 #include <QFileInfo>
 #include <QThread>
+#include <algorithm>
 
 #include "devices/sim/virtual_specimens.h"
 
