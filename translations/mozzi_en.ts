@@ -3012,7 +3012,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+167"/>
+        <location line="+13"/>
         <source>Arm</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3042,8 +3042,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/campaign/hammer_station_events.cpp" line="+230"/>
-        <location filename="../views/campaign/hammer_station_page.cpp" line="+101"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="+240"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+265"/>
         <source>%1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3118,7 +3118,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/campaign/hammer_station_events.cpp" line="-185"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="-195"/>
         <source>TRIGGERED</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3135,12 +3135,12 @@
     </message>
     <message>
         <location line="+12"/>
-        <location line="+203"/>
+        <location line="+213"/>
         <source>Time since arming [s]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-185"/>
+        <location line="-195"/>
         <source>Time in the hit&apos;s record [s]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3170,17 +3170,22 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+14"/>
         <source>REJECT: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Backspace rejects, Space keeps it anyway. %1</source>
+        <location line="+0"/>
+        <source>REJECT</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+1"/>
+        <source>%1. Backspace rejects, Space keeps it anyway. %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>ACCEPTED</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3620,7 +3625,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+34"/>
         <location line="+7"/>
         <source>%1 Hz</source>
         <translation type="unfinished"></translation>
@@ -4685,7 +4690,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ModeAnimationView</name>
     <message>
-        <location filename="../views/scene/mode_animation_view.cpp" line="+243"/>
+        <location filename="../views/scene/mode_animation_view.cpp" line="+246"/>
         <source>Export a frame</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4720,7 +4725,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+60"/>
         <location line="+5"/>
         <location line="+5"/>
         <source>Cannot show %1: %2</source>
@@ -4758,7 +4763,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location line="+4"/>
-        <source>ODS at %1 Hz (%2)</source>
+        <source>ODS at %1 Hz, driven at %2 (%3)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -6584,7 +6589,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::SceneView</name>
     <message>
-        <location filename="../views/scene/scene_view.cpp" line="+618"/>
+        <location filename="../views/scene/scene_view.cpp" line="+622"/>
         <source>peak |u|</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6602,7 +6607,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::StabilityPage</name>
     <message>
-        <location filename="../views/stability/stability_page.cpp" line="+312"/>
+        <location filename="../views/stability/stability_page.cpp" line="+290"/>
         <source>Computing the eigenvalues against speed...</source>
         <translation type="unfinished"></translation>
     </message>

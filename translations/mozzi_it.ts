@@ -3012,7 +3012,7 @@
         <translation>Arresta</translation>
     </message>
     <message>
-        <location line="+167"/>
+        <location line="+13"/>
         <source>Arm</source>
         <translation>Arma</translation>
     </message>
@@ -3042,8 +3042,8 @@
         <translation>Salta punto</translation>
     </message>
     <message>
-        <location filename="../views/campaign/hammer_station_events.cpp" line="+230"/>
-        <location filename="../views/campaign/hammer_station_page.cpp" line="+101"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="+240"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+265"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -3118,7 +3118,7 @@
         <translation>Stazione martello: %1</translation>
     </message>
     <message>
-        <location filename="../views/campaign/hammer_station_events.cpp" line="-185"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="-195"/>
         <source>TRIGGERED</source>
         <translation>TRIGGER SCATTATO</translation>
     </message>
@@ -3135,12 +3135,12 @@
     </message>
     <message>
         <location line="+12"/>
-        <location line="+203"/>
+        <location line="+213"/>
         <source>Time since arming [s]</source>
         <translation>Tempo dall&apos;armamento [s]</translation>
     </message>
     <message>
-        <location line="-185"/>
+        <location line="-195"/>
         <source>Time in the hit&apos;s record [s]</source>
         <translation>Tempo nella registrazione del colpo [s]</translation>
     </message>
@@ -3170,17 +3170,22 @@
         <translation>COLPO VALIDO — Space accetta</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+14"/>
         <source>REJECT: %1</source>
         <translation>DA SCARTARE: %1</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Backspace rejects, Space keeps it anyway. %1</source>
-        <translation>Backspace lo scarta, Space lo tiene comunque. %1</translation>
+        <location line="+0"/>
+        <source>REJECT</source>
+        <translation>DA SCARTARE</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+1"/>
+        <source>%1. Backspace rejects, Space keeps it anyway. %2</source>
+        <translation>%1. Backspace scarta, Spazio lo tiene comunque. %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>ACCEPTED</source>
         <translation>ACCETTATO</translation>
     </message>
@@ -3620,7 +3625,7 @@
         <translation>sintesi</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+34"/>
         <location line="+7"/>
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
@@ -4689,7 +4694,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ModeAnimationView</name>
     <message>
-        <location filename="../views/scene/mode_animation_view.cpp" line="+243"/>
+        <location filename="../views/scene/mode_animation_view.cpp" line="+246"/>
         <source>Export a frame</source>
         <translation>Esporta un fotogramma</translation>
     </message>
@@ -4724,7 +4729,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>%1 (%2 Hz)</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+60"/>
         <location line="+5"/>
         <location line="+5"/>
         <source>Cannot show %1: %2</source>
@@ -4762,8 +4767,8 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location line="+4"/>
-        <source>ODS at %1 Hz (%2)</source>
-        <translation>ODS a %1 Hz (%2)</translation>
+        <source>ODS at %1 Hz, driven at %2 (%3)</source>
+        <translation>ODS a %1 Hz, forzata in %2 (%3)</translation>
     </message>
     <message>
         <location line="+35"/>
@@ -6589,7 +6594,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::SceneView</name>
     <message>
-        <location filename="../views/scene/scene_view.cpp" line="+618"/>
+        <location filename="../views/scene/scene_view.cpp" line="+622"/>
         <source>peak |u|</source>
         <translation>|u| di picco</translation>
     </message>
@@ -6607,7 +6612,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::StabilityPage</name>
     <message>
-        <location filename="../views/stability/stability_page.cpp" line="+312"/>
+        <location filename="../views/stability/stability_page.cpp" line="+290"/>
         <source>Computing the eigenvalues against speed...</source>
         <translation>Calcolo degli autovalori in funzione della velocità...</translation>
     </message>

@@ -326,11 +326,18 @@ Result<SharedMac> macOnCommonDofs(const std::vector<Dof>& dofsA, const ComplexVe
   return SharedMac{modal::mac(ma, mb), static_cast<int>(va.size())};
 }
 
-Result<Ods> operatingDeflectionShape(const FrfMatrix& frf, double frequencyHz, Eigen::Index referenceIndex) {
+Result<Ods> operatingDeflectionShape(const FrfMatrix& frf, double frequencyHz, Eigen::Index drivenIndex) {
   if (frf.lineCount() == 0) return makeError(ErrorCode::InvalidArgument, "the FRF set has no lines", "ODS");
-  if (referenceIndex < 0 || referenceIndex >= frf.referenceCount() ||
-      static_cast<std::size_t>(referenceIndex) >= frf.h.size()) {
-    return makeError(ErrorCode::NotFound, "the FRF set has no reference " + std::to_string(referenceIndex + 1), "ODS");
+  if (frf.h.size() != frf.references.size()) {
+    return makeError(ErrorCode::InvalidArgument, "FRF blocks do not match the references", "ODS");
+  }
+  const bool alongReferences = frf.referenceCount() > frf.responseCount();
+  const Eigen::Index heldCount = alongReferences ? frf.responseCount() : frf.referenceCount();
+  if (drivenIndex < 0 || drivenIndex >= heldCount) {
+    return makeError(ErrorCode::NotFound,
+                     std::string("the FRF set has no ") + (alongReferences ? "response " : "reference ") +
+                         std::to_string(drivenIndex + 1),
+                     "ODS");
   }
   if (!std::isfinite(frequencyHz)) return makeError(ErrorCode::InvalidArgument, "frequency is not finite", "ODS");
   const auto& f = frf.frequencyHz;
@@ -343,15 +350,27 @@ Result<Ods> operatingDeflectionShape(const FrfMatrix& frf, double frequencyHz, E
   } else if (line > 0 && frequencyHz - f[line - 1] <= f[line] - frequencyHz) {
     --line;
   }
-  const ComplexMatrix& h = frf.h[static_cast<std::size_t>(referenceIndex)];
-  if (h.rows() != frf.lineCount() || h.cols() != frf.responseCount()) {
-    return makeError(ErrorCode::InvalidArgument, "FRF block size does not match the set", "ODS");
+  for (const ComplexMatrix& h : frf.h) {
+    if (h.rows() != frf.lineCount() || h.cols() != frf.responseCount()) {
+      return makeError(ErrorCode::InvalidArgument, "FRF block size does not match the set", "ODS");
+    }
   }
   Ods ods;
-  ods.dofs = frf.responses;
-  ods.values = h.row(line).transpose();
+  ods.alongReferences = alongReferences;
   ods.lineHz = f[line];
   ods.line = line;
+  const auto held = static_cast<std::size_t>(drivenIndex);
+  if (alongReferences) {
+    ods.dofs = frf.references;
+    ods.drivenAt = frf.responses[held];
+    ods.values.resize(frf.referenceCount());
+    for (std::size_t i = 0; i < frf.h.size(); ++i)
+      ods.values[static_cast<Eigen::Index>(i)] = frf.h[i](line, drivenIndex);
+  } else {
+    ods.dofs = frf.responses;
+    ods.drivenAt = frf.references[held];
+    ods.values = frf.h[held].row(line).transpose();
+  }
   return ods;
 }
 

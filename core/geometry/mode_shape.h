@@ -83,14 +83,23 @@ struct SharedMac {
 Result<SharedMac> macOnCommonDofs(const std::vector<Dof>& dofsA, const ComplexVectorRef& a,
                                   const std::vector<Dof>& dofsB, const ComplexVectorRef& b);
 
-// Operating deflection shape: the column of responses to reference
-// `referenceIndex` at the frequency line nearest `frequencyHz`.
+// Operating deflection shape at the line nearest `frequencyHz`: how the
+// measured DOFs move under a harmonic force at one DOF, `drivenAt`.
+// With at least as many responses as references (accelerometers roved or
+// many, a shaker or a fixed hammer) it is the column of the responses to
+// reference `drivenIndex`. With more references than responses (a roving
+// hammer read by a few fixed accelerometers) the set's shapes lie along the
+// references, and the ODS is the row of response `drivenIndex` over them: by
+// Maxwell-Betti reciprocity H_{o,i} = H_{i,o}, the response at each hammer DOF
+// i to a force at the accelerometer's DOF o.
 struct Ods {
-  std::vector<Dof> dofs;  // the FRF set's responses
-  ComplexVector values;   // H(f_line) per response, in the set's FRF type
-  double lineHz = 0.0;    // the line used
+  std::vector<Dof> dofs;         // the DOFs that move: the responses, or the references
+  ComplexVector values;          // H(f_line) per DOF, in the set's FRF type
+  Dof drivenAt;                  // the reference (column) or the response (row) held
+  bool alongReferences = false;  // true for the row over the references
+  double lineHz = 0.0;           // the line used
   Eigen::Index line = 0;
 };
-Result<Ods> operatingDeflectionShape(const FrfMatrix& frf, double frequencyHz, Eigen::Index referenceIndex = 0);
+Result<Ods> operatingDeflectionShape(const FrfMatrix& frf, double frequencyHz, Eigen::Index drivenIndex = 0);
 
 }  // namespace mozzi::core::geometry

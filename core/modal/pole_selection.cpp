@@ -56,7 +56,8 @@ Result<std::vector<ModalTableRow>> modalTableRows(const ModalModel& model, const
                                                   const std::vector<double>& zStd) {
   std::vector<ModalTableRow> rows;
   if (model.modes.empty()) return rows;
-  MOZZI_TRY_ASSIGN(const auto shapes, modeShapes(model, 0));
+  MOZZI_TRY_ASSIGN(const auto measured, measuredShapes(model));
+  const ShapeSet& shapes = measured.set;
   for (std::size_t r = 0; r < model.modes.size(); ++r) {
     ModalTableRow row;
     row.frequencyHz = model.modes[r].frequencyHz();
@@ -141,9 +142,13 @@ std::string uniqueModalResultName(const std::vector<io::ModalResultInfo>& existi
 
 Result<io::ModalTable> modalTableOf(const ModalModel& model) {
   io::ModalTable table;
-  table.dofs = model.responses;
-  if (model.modes.empty()) return table;
-  MOZZI_TRY_ASSIGN(const auto shapes, modeShapes(model, 0));
+  if (model.modes.empty()) {
+    table.dofs = model.referenceCount() > model.responseCount() ? model.references : model.responses;
+    return table;
+  }
+  MOZZI_TRY_ASSIGN(const auto measured, measuredShapes(model));
+  table.dofs = measured.dofs;
+  const ShapeSet& shapes = measured.set;
   for (std::size_t r = 0; r < model.modes.size(); ++r) {
     io::StoredMode m;
     m.frequencyHz = model.modes[r].frequencyHz();

@@ -114,6 +114,39 @@ Result<ShapeSet> modeShapes(const ModalModel& model, Eigen::Index reference) {
   return set;
 }
 
+Result<MeasuredShapes> measuredShapes(const ModalModel& model) {
+  MOZZI_TRY(model.validate());
+  MeasuredShapes out;
+  out.alongReferences = model.referenceCount() > model.responseCount();
+  // The model seen from the side the shapes lie along: its "responses" are the
+  // shape's DOFs, its "references" the DOFs that may be held.
+  ModalModel along;
+  if (out.alongReferences) {
+    along.responses = model.references;
+    along.references = model.responses;
+    for (const Mode& m : model.modes) along.modes.push_back({m.pole, m.residue.transpose(), ComplexVector()});
+  }
+  const ModalModel& view = out.alongReferences ? along : model;
+  out.dofs = view.responses;
+  for (Eigen::Index held = 0; held < view.referenceCount(); ++held) {
+    const Dof& dof = view.references[static_cast<std::size_t>(held)];
+    if (std::find(view.responses.begin(), view.responses.end(), dof) == view.responses.end()) continue;
+    MOZZI_TRY_ASSIGN(out.set, modeShapes(view, held));
+    return out;
+  }
+  const Eigen::Index nm = static_cast<Eigen::Index>(view.modes.size());
+  out.set.shapes.resize(view.responseCount(), nm);
+  for (Eigen::Index r = 0; r < nm; ++r) {
+    const Mode& md = view.modes[static_cast<std::size_t>(r)];
+    Eigen::Index held = 0;
+    md.residue.colwise().squaredNorm().maxCoeff(&held);
+    out.set.shapes.col(r) = Complex(0.0, 2.0 * md.pole.imag()) * md.residue.col(held);  // A = 2 i omega_d R
+  }
+  out.set.normalisation = Normalisation::MaxComponent;
+  out.set.shapes = normaliseMaxComponent(out.set.shapes);
+  return out;
+}
+
 Result<Matrix> cmif(const FrfMatrix& frf) {
   MOZZI_TRY(frf.validate());
   const Eigen::Index nf = frf.lineCount(), no = frf.responseCount(), ni = frf.referenceCount();

@@ -46,6 +46,23 @@ struct ShapeSet {
 // else max-component. A driving-point residue of zero is a NumericalFailure.
 Result<ShapeSet> modeShapes(const ModalModel& model, Eigen::Index reference);
 
+// The shapes a modal result keeps, shows and checks (MPC, MPD, AutoMAC): along
+// the longer side of the residue matrices. Along the responses when they are
+// at least as many as the references (accelerometers roved or many, a shaker);
+// along the references when those outnumber the responses (a roving hammer
+// read by a few fixed accelerometers), where by reciprocity R_{r,oi} = R_{r,io}
+// (thesis §1.6) the residues of one response over the references are the shape
+// at the hammer DOFs. The DOF held is a driving point when one is measured
+// (unit modal mass, modeShapes); else each mode takes the held DOF where its
+// residues are largest (one on a node of that mode would give noise) and is
+// scaled to max-component.
+struct MeasuredShapes {
+  std::vector<Dof> dofs;         // the responses, or the references
+  ShapeSet set;                  // dofs x modes
+  bool alongReferences = false;  // a roving-hammer orientation
+};
+Result<MeasuredShapes> measuredShapes(const ModalModel& model);
+
 // Scale each column so its largest |component| is 1 (real, positive).
 ComplexMatrix normaliseMaxComponent(const ComplexMatrixRef& shapes);
 

@@ -168,10 +168,20 @@ void HammerStationPage::onVerdict(const cp::HitVerdictEvent& v) {
     setVerdict(tr("GOOD HIT — Space accepts"), details.join(QStringLiteral("; ")), QStringLiteral("#2a7f3f"));
     QApplication::beep();
   } else {
-    QStringList reasons;
-    for (const auto& reason : v.verdict.reasons) reasons << QString::fromStdString(reason);
-    setVerdict(tr("REJECT: %1").arg(reasons.join(QStringLiteral(", "))),
-               tr("Backspace rejects, Space keeps it anyway. %1").arg(details.join(QStringLiteral("; "))),
+    // The headline names the faults ("double hit", "overload on acc 5:+Z"),
+    // readable across the room, when they are short enough for its two
+    // lines; their measures go to the lines below it.
+    QStringList faults, reasons;
+    for (const auto& reason : v.verdict.reasons) {
+      const QString text = QString::fromStdString(reason);
+      reasons << text;
+      faults << text.section(QStringLiteral(": "), 0, 0).section(QStringLiteral(" ("), 0, 0).trimmed();
+    }
+    const QString named = faults.join(QStringLiteral(", "));
+    constexpr int kHeadlineChars = 30;  // two lines of the headline's font in its column at 1280x800
+    setVerdict(named.size() <= kHeadlineChars ? tr("REJECT: %1").arg(named) : tr("REJECT"),
+               tr("%1. Backspace rejects, Space keeps it anyway. %2")
+                   .arg(reasons.join(QStringLiteral("; ")), details.join(QStringLiteral("; "))),
                QStringLiteral("#b3261e"));
     QApplication::beep();
     QTimer::singleShot(180, this, [] { QApplication::beep(); });  // two beeps: look at the screen

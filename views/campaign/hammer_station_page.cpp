@@ -139,11 +139,50 @@ QHBoxLayout* HammerStationPage::buildTopBar() {
 }
 
 // --- verdict row --------------------------------------------------------------
+// The technician's actions beside the verdict they answer (arming, the
+// hit's decision, the point), so that the page fits a 1280x800 window: in the
+// progress column they took the page to 928 px in a 606 px tab.
+QGridLayout* HammerStationPage::buildActionGrid() {
+  auto* buttons = new QGridLayout;
+  buttons->addWidget(
+      addActionButton(QStringLiteral("arm"), QT_TR_NOOP("Arm"), QKeySequence(Qt::Key_A), [this] { session_->arm(); }),
+      0, 0);
+  buttons->addWidget(addActionButton(QStringLiteral("disarm"), QT_TR_NOOP("Disarm"), QKeySequence(Qt::Key_Escape),
+                                     [this] { session_->disarm(); }),
+                     1, 0);
+  buttons->addWidget(addActionButton(QStringLiteral("accept"), QT_TR_NOOP("Accept"), QKeySequence(Qt::Key_Space),
+                                     [this] { session_->accept(); }),
+                     0, 1);
+  buttons->addWidget(addActionButton(QStringLiteral("reject"), QT_TR_NOOP("Reject"), QKeySequence(Qt::Key_Backspace),
+                                     [this] { session_->reject(); }),
+                     1, 1);
+  buttons->addWidget(
+      addActionButton(QStringLiteral("redo"), QT_TR_NOOP("Redo Point"), QKeySequence(Qt::Key_R), [this] { doRedo(); }),
+      0, 2);
+  buttons->addWidget(
+      addActionButton(QStringLiteral("skip"), QT_TR_NOOP("Skip Point"), QKeySequence(Qt::Key_S), [this] { doSkip(); }),
+      1, 2);
+  for (auto& e : actions_) {
+    if (e.name == QLatin1String("accept") || e.name == QLatin1String("reject")) {
+      QFont f = e.button->font();
+      f.setPointSizeF(f.pointSizeF() * 1.4);
+      f.setBold(true);
+      e.button->setFont(f);
+    }
+  }
+  skipReason_ = new QLineEdit(this);
+  skipReason_->setObjectName(QStringLiteral("hammerSkipReason"));
+  skipReason_->setClearButtonEnabled(true);
+  connect(skipReason_, &QLineEdit::returnPressed, this, [this] { doSkip(); });
+  buttons->addWidget(skipReason_, 2, 0, 1, 3);
+  return buttons;
+}
+
 QHBoxLayout* HammerStationPage::buildVerdictRow() {
   verdict_ = new QLabel(this);
   verdict_->setObjectName(QStringLiteral("hammerVerdict"));
   QFont big = verdict_->font();
-  big.setPointSizeF(big.pointSizeF() * 2.4);
+  big.setPointSizeF(big.pointSizeF() * 2.1);
   big.setBold(true);
   verdict_->setFont(big);
   verdict_->setAlignment(Qt::AlignCenter);
@@ -156,7 +195,7 @@ QHBoxLayout* HammerStationPage::buildVerdictRow() {
   verdictDetail_->setObjectName(QStringLiteral("hammerVerdictDetail"));
   verdictDetail_->setAlignment(Qt::AlignCenter);
   verdictDetail_->setWordWrap(true);
-  verdictDetail_->setFixedHeight(QFontMetrics(font()).lineSpacing() * 2 + 4);
+  verdictDetail_->setFixedHeight(QFontMetrics(font()).lineSpacing() * 3 + 4);  // a rejection's measures and keys
   trigger_ = new QLabel(this);
   trigger_->setObjectName(QStringLiteral("hammerTrigger"));
   trigger_->setAlignment(Qt::AlignCenter);
@@ -176,20 +215,21 @@ QHBoxLayout* HammerStationPage::buildVerdictRow() {
   banner_->setStyleSheet(QStringLiteral("QLabel { background: #fde2c8; color: #5a2d00; padding: 4px; }"));
   banner_->hide();
 
+  // The lamp above the state: beside it the state had a third of its column
+  // and took three lines in two.
   auto* status = new QVBoxLayout;
-  auto* lampRow = new QHBoxLayout;
-  lampRow->addWidget(trigger_);
-  lampRow->addWidget(stateLabel_, 1);
-  status->addLayout(lampRow);
+  status->addWidget(trigger_);
+  status->addWidget(stateLabel_);
   status->addWidget(station_);
   auto* verdictBox = new QVBoxLayout;
   verdictBox->addWidget(verdict_);
   verdictBox->addWidget(verdictDetail_);
   auto* verdictRow = new QHBoxLayout;
-  // 2:1: at 1280x800 with the project dock open a quarter of the row left
-  // the state ("Not started: choose a campaign, press F5") three lines in two.
-  verdictRow->addLayout(verdictBox, 2);
-  verdictRow->addLayout(status, 1);
+  // 3:2:3: at 1280x800 with the project dock open the state ("Not started:
+  // choose a campaign, press F5") needs a quarter of the row for two lines.
+  verdictRow->addLayout(verdictBox, 3);
+  verdictRow->addLayout(status, 2);
+  verdictRow->addLayout(buildActionGrid(), 3);
   return verdictRow;
 }
 
@@ -216,7 +256,7 @@ QWidget* HammerStationPage::buildTracePanel() {
   traces_->setObjectName(QStringLiteral("hammerTraces"));
   traces_->setCanvasBackground(Qt::white);
   traces_->enableAxis(QwtPlot::yRight, true);
-  traces_->setMinimumHeight(190);
+  traces_->setMinimumHeight(160);
   auto* grid = new QwtPlotGrid;
   grid->setMajorPen(QColor(0, 0, 0, 40), 0.0, Qt::DotLine);
   grid->attach(traces_);
@@ -236,8 +276,8 @@ QWidget* HammerStationPage::buildTracePanel() {
   // their text later; Qwt keeps the font).
   for (QwtPlot* plot : std::initializer_list<QwtPlot*>{frf_->magnitudePlot(), frf_->coherencePlot()})
     for (int axis : {QwtPlot::yLeft, QwtPlot::xBottom}) setAxisText(plot, axis, plot->axisTitle(axis).text());
-  frf_->setMinimumHeight(220);
-  leftLayout->addWidget(traces_, 2);
+  frf_->setMinimumHeight(190);
+  leftLayout->addWidget(traces_, 1);
   // The FRF and a hint in one stack: switching between them does not
   // relayout the page.
   frfHint_ = new QLabel(left);
@@ -247,8 +287,8 @@ QWidget* HammerStationPage::buildTracePanel() {
   frfStack_ = new QStackedWidget(left);
   frfStack_->addWidget(frfHint_);
   frfStack_->addWidget(frf_);
-  leftLayout->addWidget(frfStack_, 3);
-  frfStack_->setMinimumHeight(280);  // magnitude and coherence readable at 1280x800
+  leftLayout->addWidget(frfStack_, 1);
+  frfStack_->setMinimumHeight(200);  // magnitude and coherence readable at 1280x800
   return left;
 }
 
@@ -279,12 +319,12 @@ QWidget* HammerStationPage::buildProgressPanel() {
   points_->setWordWrap(false);
   points_->setTextElideMode(Qt::ElideRight);
   points_->setFocusPolicy(Qt::NoFocus);
-  points_->setMinimumHeight(140);
+  points_->setMinimumHeight(100);
   // The mesh above the table: the point to hit next is marked on it, the
   // arrow giving the hammer's direction.
   scene_ = new SceneView(right);
   scene_->setObjectName(QStringLiteral("hammerScene"));
-  scene_->setMinimumHeight(170);
+  scene_->setMinimumHeight(130);
   scene_->setLabelsVisible(true);
   auto* meshAndPoints = new QSplitter(Qt::Vertical, right);
   meshAndPoints->setObjectName(QStringLiteral("hammerMeshSplit"));
@@ -297,39 +337,6 @@ QWidget* HammerStationPage::buildProgressPanel() {
   rightLayout->addWidget(progress_);
   rightLayout->addWidget(meshAndPoints, 3);
 
-  auto* buttons = new QGridLayout;
-  buttons->addWidget(
-      addActionButton(QStringLiteral("arm"), QT_TR_NOOP("Arm"), QKeySequence(Qt::Key_A), [this] { session_->arm(); }),
-      0, 0);
-  buttons->addWidget(addActionButton(QStringLiteral("disarm"), QT_TR_NOOP("Disarm"), QKeySequence(Qt::Key_Escape),
-                                     [this] { session_->disarm(); }),
-                     0, 1);
-  buttons->addWidget(addActionButton(QStringLiteral("accept"), QT_TR_NOOP("Accept"), QKeySequence(Qt::Key_Space),
-                                     [this] { session_->accept(); }),
-                     1, 0);
-  buttons->addWidget(addActionButton(QStringLiteral("reject"), QT_TR_NOOP("Reject"), QKeySequence(Qt::Key_Backspace),
-                                     [this] { session_->reject(); }),
-                     1, 1);
-  buttons->addWidget(
-      addActionButton(QStringLiteral("redo"), QT_TR_NOOP("Redo Point"), QKeySequence(Qt::Key_R), [this] { doRedo(); }),
-      2, 0);
-  buttons->addWidget(
-      addActionButton(QStringLiteral("skip"), QT_TR_NOOP("Skip Point"), QKeySequence(Qt::Key_S), [this] { doSkip(); }),
-      2, 1);
-  for (auto& e : actions_) {
-    if (e.name == QLatin1String("accept") || e.name == QLatin1String("reject")) {
-      QFont f = e.button->font();
-      f.setPointSizeF(f.pointSizeF() * 1.4);
-      f.setBold(true);
-      e.button->setFont(f);
-    }
-  }
-  skipReason_ = new QLineEdit(right);
-  skipReason_->setObjectName(QStringLiteral("hammerSkipReason"));
-  skipReason_->setClearButtonEnabled(true);
-  connect(skipReason_, &QLineEdit::returnPressed, this, [this] { doSkip(); });
-  rightLayout->addLayout(buttons);
-  rightLayout->addWidget(skipReason_);
   log_ = new QListWidget(right);
   log_->setObjectName(QStringLiteral("hammerLog"));
   log_->setFocusPolicy(Qt::NoFocus);
@@ -395,6 +402,9 @@ qint64 HammerStationPage::selectedCampaign() const {
 
 QString HammerStationPage::verdictText() const {
   return verdict_->text();
+}
+QString HammerStationPage::verdictDetailText() const {
+  return verdictDetail_->text();
 }
 QString HammerStationPage::stateText() const {
   return stateLabel_->text();

@@ -29,6 +29,7 @@
 class QAction;
 class QCheckBox;
 class QComboBox;
+class QGridLayout;
 class QHBoxLayout;
 class QKeySequence;
 class QLabel;
@@ -70,6 +71,7 @@ class HammerStationPage : public QWidget {
   CampaignSession* session() const { return session_; }
   qint64 selectedCampaign() const;
   QString verdictText() const;
+  QString verdictDetailText() const;  // the line under the headline
   QString stateText() const;
   QString bannerText() const;
   std::optional<devices::campaign::EngineState> engineState() const { return state_; }
@@ -91,6 +93,7 @@ class HammerStationPage : public QWidget {
                                const std::function<void()>& slot);
   QHBoxLayout* buildTopBar();
   QHBoxLayout* buildVerdictRow();
+  QGridLayout* buildActionGrid();
   QWidget* buildTracePanel();
   QWidget* buildProgressPanel();
   void wire();

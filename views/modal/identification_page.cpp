@@ -654,18 +654,19 @@ void IdentificationPage::showMac() {
     mac_->setMatrix(core::Matrix(), {}, {});
     return;
   }
-  auto shapes = md::modeShapes(*m, 0);
-  if (!shapes) return;
+  auto measured = md::measuredShapes(*m);
+  if (!measured) return;
+  const md::ShapeSet* shapes = &measured->set;
   QStringList labels;
   for (const auto& md : m->modes) labels << tr("%1 Hz").arg(md.frequencyHz(), 0, 'f', 1);
   autoMac_->setMatrix(md::macMatrix(shapes->shapes, shapes->shapes), labels, labels);
   // Against the automatic selection's refined shapes.
   if (outcome_ && !outcome_->model.modes.empty()) {
-    auto ref = md::modeShapes(outcome_->model, 0);
+    auto ref = md::measuredShapes(outcome_->model);
     if (ref) {
       QStringList refLabels;
       for (const auto& md : outcome_->model.modes) refLabels << tr("%1 Hz").arg(md.frequencyHz(), 0, 'f', 1);
-      mac_->setMatrix(md::macMatrix(shapes->shapes, ref->shapes), labels, refLabels);
+      mac_->setMatrix(md::macMatrix(shapes->shapes, ref->set.shapes), labels, refLabels);
     }
   }
 }

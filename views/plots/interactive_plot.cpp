@@ -11,6 +11,7 @@
 #include <qwt_scale_engine.h>
 #include <qwt_scale_widget.h>
 #include <QKeyEvent>
+#include <QResizeEvent>
 #include <cmath>
 #include <limits>
 
@@ -151,6 +152,10 @@ void InteractivePlot::autoscale() {
 }
 
 void InteractivePlot::autoscaleY() {
+  // setAxisScale stores the range and Qwt applies it at the next replot; the
+  // interval read here must be the one just set (autoscale, zoom, callers), not
+  // the one shown before it.
+  updateAxes();
   const QwtInterval x = axisInterval(QwtPlot::xBottom);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const QwtPlotCurve* c : visibleCurves(this, true)) {
@@ -267,20 +272,65 @@ void InteractivePlot::emitRange() {
   emit xRangeChanged(x.minValue(), x.maxValue());
 }
 
-void alignLeftAxes(const std::vector<QwtPlot*>& plots) {
-  double extent = 0.0;
-  for (QwtPlot* p : plots) {
-    QwtScaleWidget* w = p->axisWidget(QwtPlot::yLeft);
-    w->scaleDraw()->setMinimumExtent(0.0);
-    if (!p->isHidden()) extent = std::max(extent, w->scaleDraw()->extent(w->font()));
+namespace {
+
+// Aligns again when an axis changes length: its title wraps by the length, and
+// a title on one line more widens that axis by a line.
+class LeftAxesAligner : public QObject {
+ public:
+  LeftAxesAligner(std::vector<QwtPlot*> plots, QObject* parent) : QObject(parent), plots_(std::move(plots)) {
+    setObjectName(QStringLiteral("leftAxesAligner"));
+    for (QwtPlot* p : plots_) p->axisWidget(QwtPlot::yLeft)->installEventFilter(this);
   }
-  for (QwtPlot* p : plots) {
-    QwtScaleWidget* w = p->axisWidget(QwtPlot::yLeft);
+  const std::vector<QwtPlot*>& plots() const { return plots_; }
+  bool eventFilter(QObject* watched, QEvent* event) override {
+    if (event->type() == QEvent::Resize && !aligning_) {
+      const auto* resize = static_cast<QResizeEvent*>(event);
+      if (resize->size().height() != resize->oldSize().height()) {
+        aligning_ = true;
+        alignLeftAxes(plots_);
+        aligning_ = false;
+      }
+    }
+    return QObject::eventFilter(watched, event);
+  }
+
+ private:
+  std::vector<QwtPlot*> plots_;
+  bool aligning_ = false;
+};
+
+}  // namespace
+
+void alignLeftAxes(const std::vector<QwtPlot*>& plots) {
+  if (plots.empty()) return;
+  // The whole axis takes the same width - labels, spacing and title, whose
+  // wrapping depends on the axis length - not only the labels: a title wrapped
+  // to two lines on the shorter plot shifted its canvas, and the curve against
+  // the shared frequency axis below it, by a line's height (17 Hz on the demo's
+  // FRF page).
+  std::vector<double> own(plots.size(), 0.0);
+  std::vector<int> dims(plots.size(), 0);
+  int widest = 0;
+  for (std::size_t k = 0; k < plots.size(); ++k) {
+    QwtScaleWidget* w = plots[k]->axisWidget(QwtPlot::yLeft);
+    w->scaleDraw()->setMinimumExtent(0.0);
+    if (plots[k]->isHidden()) continue;
+    own[k] = w->scaleDraw()->extent(w->font());
+    const int length = w->height() > 0 ? w->height() : w->sizeHint().height();
+    dims[k] = w->dimForLength(length, w->font());
+    widest = std::max(widest, dims[k]);
+  }
+  for (std::size_t k = 0; k < plots.size(); ++k) {
+    QwtScaleWidget* w = plots[k]->axisWidget(QwtPlot::yLeft);
+    const double extent = plots[k]->isHidden() ? 0.0 : own[k] + (widest - dims[k]);
     if (w->scaleDraw()->minimumExtent() == extent) continue;
     w->scaleDraw()->setMinimumExtent(extent);
     w->updateGeometry();
-    p->updateLayout();
+    plots[k]->updateLayout();
   }
+  if (!plots.front()->findChild<LeftAxesAligner*>(QStringLiteral("leftAxesAligner"), Qt::FindDirectChildrenOnly))
+    new LeftAxesAligner(plots, plots.front());
 }
 
 }  // namespace views

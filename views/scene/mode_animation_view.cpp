@@ -22,6 +22,7 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <qwt_plot_curve.h>
 #include <qwt_text.h>
@@ -32,6 +33,7 @@
 #include "core/common/plot_math.h"
 #include "core/geometry/animation.h"
 #include "core/io/gif_writer.h"
+#include "views/common/dof_text.h"
 #include "views/plots/interactive_plot.h"
 #include "views/plots/vector_series.h"
 #include "views/scene/scene_view.h"
@@ -168,8 +170,9 @@ ModeAnimationView::ModeAnimationView(QWidget* parent) : QWidget(parent) {
   const int controlsWidth = controls->fontMetrics().averageCharWidth() * 48;
   controls->setMaximumWidth(controlsWidth);
   controlsScroll->setMaximumWidth(controlsWidth + controlsScroll->verticalScrollBar()->sizeHint().width());
-  controlsScroll->setMinimumWidth(controls->minimumSizeHint().width() +
-                                  controlsScroll->verticalScrollBar()->sizeHint().width());
+  // The width is set, not the minimum hint: the labels get their texts in
+  // retranslate(), after this, and a hint taken now clipped the controls.
+  controlsScroll->setMinimumWidth(controlsScroll->maximumWidth());
   layout->addWidget(controlsScroll);
 
   auto* splitter = new QSplitter(Qt::Horizontal, this);
@@ -296,33 +299,48 @@ void ModeAnimationView::fillCombos() {
 void ModeAnimationView::setFrfSet(std::shared_ptr<const core::FrfMatrix> set, const QString& name) {
   frf_ = std::move(set);
   frfName_ = name;
-  if (!frf_) return;
-  const core::FrfMatrix& frf = *frf_;
-  if (frf.lineCount() > 0) {
-    odsSpin_->setRange(frf.frequencyHz[0], frf.frequencyHz[frf.lineCount() - 1]);
-    odsSpin_->setValue(frf.frequencyHz[frf.lineCount() / 2]);
-  }
-  odsButton_->setEnabled(frf.lineCount() > 0);
-  odsSpin_->setEnabled(frf.lineCount() > 0);
-  // The guide curve: |sum of the responses to reference 0| in dB, where the
-  // peaks (the modes) show which frequencies are worth a look.
+  const bool hasLines = frf_ && frf_->lineCount() > 0;
+  odsButton_->setEnabled(hasLines);
+  odsSpin_->setEnabled(hasLines);
   odsPlot_->hide();
-  if (frf.lineCount() > 0 && !frf.references.empty()) {
-    core::FrfFilter filter;
-    filter.reference = frf.references.front();
-    auto sum = core::frfSum(frf, core::pickFrfs(frf, filter));
-    if (sum) {
-      auto x = std::make_shared<const core::Vector>(frf.frequencyHz);
-      auto y = std::make_shared<const core::Vector>(core::frfViewValues(*sum, core::FrfView::MagnitudeDb));
-      odsCurve_->setData(new VectorSeries(x, y));
-      odsPlot_->setYFloor(core::kMagnitudeFloorDb);
-      odsPlot_->show();
-      odsPlot_->autoscale();
-      filling_ = true;  // the cursor marks the spin box's frequency; no ODS yet
-      odsPlot_->setCursor(odsSpin_->value());
-      filling_ = false;
-    }
+  if (!hasLines) return;
+  const core::FrfMatrix& frf = *frf_;
+  odsSpin_->setRange(frf.frequencyHz[0], frf.frequencyHz[frf.lineCount() - 1]);
+  // The modes of the set's specimen (the shapes without a mesh of their own):
+  // the guide opens on them, the spin box on the first; Home shows the whole
+  // set.
+  double firstMode = std::numeric_limits<double>::infinity(), lastMode = -firstMode;
+  for (const Shape& s : shapes_) {
+    if (s.mesh || !(s.frequencyHz >= frf.frequencyHz[0] && s.frequencyHz <= frf.frequencyHz[frf.lineCount() - 1]))
+      continue;
+    firstMode = std::min(firstMode, s.frequencyHz);
+    lastMode = std::max(lastMode, s.frequencyHz);
   }
+  const bool modesInSet = firstMode <= lastMode;
+  odsSpin_->setValue(modesInSet ? firstMode : frf.frequencyHz[frf.lineCount() / 2]);
+  // The guide curve: |sum of every FRF of the set| in dB, the Identification
+  // page's backdrop, whose peaks (the modes) show which frequencies are worth a
+  // look. Not the FRFs of one reference alone: on a roving-hammer set that is
+  // one hammer point, perhaps one that barely moves.
+  auto sum = core::frfSum(frf, core::pickFrfs(frf, {}));
+  if (!sum) return;
+  auto x = std::make_shared<const core::Vector>(frf.frequencyHz);
+  auto y = std::make_shared<const core::Vector>(core::frfViewValues(*sum, core::FrfView::MagnitudeDb));
+  odsCurve_->setData(new VectorSeries(x, y));
+  odsPlot_->setYFloor(core::kMagnitudeFloorDb);
+  odsPlot_->show();
+  odsPlot_->autoscale();
+  if (modesInSet) {
+    // A quarter of the modes' span on either side (at least 10 % of the first
+    // mode's frequency), within the set.
+    const double margin = std::max(0.25 * (lastMode - firstMode), 0.1 * firstMode);
+    odsPlot_->setAxisScale(QwtPlot::xBottom, std::max(frf.frequencyHz[0], firstMode - margin),
+                           std::min(frf.frequencyHz[frf.lineCount() - 1], lastMode + margin));
+    odsPlot_->autoscaleY();
+  }
+  filling_ = true;  // the cursor marks the spin box's frequency; no ODS yet
+  odsPlot_->setCursor(odsSpin_->value());
+  filling_ = false;
 }
 
 bool ModeAnimationView::present(SceneView* scene, const Shape& shape, std::optional<geo::ShapeField>& field,
@@ -441,7 +459,7 @@ bool ModeAnimationView::showOds(double frequencyHz) {
     return false;
   }
   Shape shape;
-  shape.name = tr("ODS at %1 Hz (%2)").arg(ods->lineHz, 0, 'f', 2).arg(frfName_);
+  shape.name = tr("ODS at %1 Hz, driven at %2 (%3)").arg(ods->lineHz, 0, 'f', 2).arg(dofText(ods->drivenAt), frfName_);
   if (!odsPlot_->isHidden()) {
     filling_ = true;  // the cursor on the line used, without showing the ODS twice
     odsPlot_->setCursor(ods->lineHz);

@@ -213,13 +213,14 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
       r.zeta = corrected->zeta;
     }
   }
-  auto shapes = md::modeShapes(model, 0);
-  if (!shapes) return fail(err, shapes.error());
+  auto measured = md::measuredShapes(model);  // along the hammer points of a roving-hammer set
+  if (!measured) return fail(err, measured.error());
+  const md::ShapeSet* shapes = &measured->set;
   for (std::size_t r = 0; r < rows.size(); ++r) rows[r].mpc = md::mpc(shapes->shapes.col(static_cast<Eigen::Index>(r)));
 
   if (auto modesPath = parsed->value("--modes")) {
     uff::ModalData data;
-    data.dofs = model.responses;
+    data.dofs = measured->dofs;
     const auto nm = static_cast<Eigen::Index>(rows.size());
     data.frequencyHz.resize(nm);
     data.dampingRatio.resize(nm);

@@ -169,6 +169,39 @@ TEST(ModeShape, OdsTakesTheNearestLine) {
   EXPECT_FALSE(operatingDeflectionShape(frf, 50.0, 1).ok());
 }
 
+// A roving hammer read by one accelerometer: 4 hammer points, 1 response. The
+// set's shapes lie along the references; the ODS is the row of the response
+// over them (reciprocity, H_{o,i} = H_{i,o}), driven at the accelerometer's DOF.
+TEST(ModeShape, OdsOfARovingHammerSetIsTheRowOverTheHammerPoints) {
+  FrfMatrix frf;
+  frf.frequencyHz = Vector::LinSpaced(11, 0.0, 100.0);
+  frf.responses = {dof(9, Direction::Y)};
+  for (int n = 1; n <= 4; ++n) frf.references.push_back(dof(n, Direction::Z, n == 3));
+  for (int i = 0; i < 4; ++i) {
+    ComplexMatrix h(11, 1);
+    for (int k = 0; k < 11; ++k) h(k, 0) = Complex(k * (i + 1), -i);
+    frf.h.push_back(h);
+  }
+  auto ods = operatingDeflectionShape(frf, 71.0);
+  ASSERT_TRUE(ods.ok());
+  EXPECT_TRUE(ods->alongReferences);
+  EXPECT_EQ(ods->line, 7);
+  EXPECT_EQ(ods->drivenAt, dof(9, Direction::Y));
+  ASSERT_EQ(ods->dofs.size(), 4u);
+  EXPECT_EQ(ods->dofs[2], dof(3, Direction::Z, true));  // the hammer's DOF, sign kept
+  ASSERT_EQ(ods->values.size(), 4);
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(ods->values[i], Complex(7 * (i + 1), -i));
+  EXPECT_FALSE(operatingDeflectionShape(frf, 71.0, 1).ok());  // one response only
+  // The same set transposed (the hammer fixed, four accelerometers) gives the
+  // same shape as a column.
+  auto column = operatingDeflectionShape(frf.transposed(), 71.0);
+  ASSERT_TRUE(column.ok());
+  EXPECT_FALSE(column->alongReferences);
+  EXPECT_EQ(column->dofs, ods->dofs);
+  EXPECT_EQ(column->drivenAt, ods->drivenAt);
+  EXPECT_EQ((column->values - ods->values).norm(), 0.0);
+}
+
 // A rigid screw motion about a known axis, measured as a mode on a mesh whose
 // nodes report in a turned cartesian and in a cylindrical displacement system
 // and with some negative DOFs: the readings give back the screw axis of the

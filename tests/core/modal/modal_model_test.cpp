@@ -90,6 +90,65 @@ TEST(ModalModel, ProportionalSystemPolesAreTheChosenModes) {
   }
 }
 
+// A roving hammer over the six DOFs read by one accelerometer at DOF 4 (the
+// rows of the complete model's residues for that response): the shapes lie
+// along the hammer points. With the accelerometer's DOF among them (a driving
+// point) they are the mass-normalised shapes themselves; without it, the same
+// shapes at the five others (MAC 1). A held DOF on a node of a mode (its
+// residues zeroed here) gives way to one that moves.
+TEST(ModalModel, RovingHammerShapesLieAlongTheHammerPoints) {
+  const auto sys = sixModeSystem();
+  auto full = modalFromSpatial(sys.m, sys.c, sys.k, sixDofs());
+  ASSERT_TRUE(full.ok());
+  auto subModel = [&](std::vector<int> rows, std::vector<int> cols) {
+    ModalModel m;
+    for (int o : rows) m.responses.push_back(full->responses[static_cast<std::size_t>(o)]);
+    for (int i : cols) m.references.push_back(full->references[static_cast<std::size_t>(i)]);
+    for (const Mode& md : full->modes) {
+      Mode cut{md.pole, ComplexMatrix(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size())),
+               ComplexVector()};
+      for (std::size_t a = 0; a < rows.size(); ++a)
+        for (std::size_t b = 0; b < cols.size(); ++b)
+          cut.residue(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = md.residue(rows[a], cols[b]);
+      m.modes.push_back(cut);
+    }
+    return m;
+  };
+  const ModalModel withDrivingPoint = subModel({3}, {0, 1, 2, 3, 4, 5});
+  auto shapes = measuredShapes(withDrivingPoint);
+  ASSERT_TRUE(shapes.ok()) << shapes.error().describe();
+  EXPECT_TRUE(shapes->alongReferences);
+  EXPECT_EQ(shapes->dofs, sixDofs());
+  EXPECT_EQ(shapes->set.normalisation, Normalisation::UnitModalMass);
+  for (int r = 0; r < 6; ++r) {
+    for (int i = 0; i < 6; ++i) EXPECT_NEAR(std::abs(shapes->set.shapes(i, r)), std::abs(sys.phi(i, r)), 1e-9);
+  }
+  const ModalModel noDrivingPoint = subModel({3}, {0, 1, 2, 4, 5});
+  shapes = measuredShapes(noDrivingPoint);
+  ASSERT_TRUE(shapes.ok());
+  EXPECT_EQ(shapes->set.normalisation, Normalisation::MaxComponent);
+  ASSERT_EQ(shapes->dofs.size(), 5u);
+  const std::vector<int> hammer{0, 1, 2, 4, 5};
+  for (int r = 0; r < 6; ++r) {
+    ComplexVector phi(5);
+    for (int i = 0; i < 5; ++i) phi[i] = sys.phi(hammer[static_cast<std::size_t>(i)], r);
+    EXPECT_GT(mac(shapes->set.shapes.col(r), phi), 1 - 1e-12) << "mode " << r + 1;
+  }
+  ModalModel twoAccelerometers = subModel({0, 3}, {1, 2, 4, 5});
+  twoAccelerometers.modes[2].residue.row(0).setZero();  // accelerometer 1 on a node of mode 3
+  shapes = measuredShapes(twoAccelerometers);
+  ASSERT_TRUE(shapes.ok());
+  ComplexVector phi3(4);
+  for (int i = 0; i < 4; ++i) phi3[i] = sys.phi(std::vector<int>{1, 2, 4, 5}[static_cast<std::size_t>(i)], 2);
+  EXPECT_GT(mac(shapes->set.shapes.col(2), phi3), 1 - 1e-12);
+  // At least as many responses as references: the column, as before.
+  shapes = measuredShapes(subModel({0, 1, 2, 3, 4, 5}, {1}));
+  ASSERT_TRUE(shapes.ok());
+  EXPECT_FALSE(shapes->alongReferences);
+  EXPECT_EQ(shapes->dofs, sixDofs());
+  EXPECT_EQ(shapes->set.normalisation, Normalisation::UnitModalMass);
+}
+
 // Thesis eq. 1 and 2 (hysteretic damping): Phi^T M Phi = I,
 // Phi^T (K + iD) Phi = diag(w^2 (1 + i eta)), and back to M, K, D.
 TEST(ModalModel, HystereticEquationsOneAndTwo) {
