@@ -3493,7 +3493,7 @@
 <context>
     <name>mozzi::views::IdentificationPage</name>
     <message>
-        <location filename="../views/modal/identification_page.cpp" line="+244"/>
+        <location filename="../views/modal/identification_page.cpp" line="+245"/>
         <source>Cannot list the FRF sets: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3625,7 +3625,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+50"/>
         <location line="+7"/>
         <source>%1 Hz</source>
         <translation type="unfinished"></translation>
@@ -3837,6 +3837,16 @@
     <message>
         <location line="+0"/>
         <source>Residual [%]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Level [dB]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RMS of the FRF over the band against the strongest FRF&apos;s (0 dB): a high residual far down is noise</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -3493,7 +3493,7 @@
 <context>
     <name>mozzi::views::IdentificationPage</name>
     <message>
-        <location filename="../views/modal/identification_page.cpp" line="+244"/>
+        <location filename="../views/modal/identification_page.cpp" line="+245"/>
         <source>Cannot list the FRF sets: %1</source>
         <translation>Impossibile elencare gli insiemi di FRF: %1</translation>
     </message>
@@ -3625,7 +3625,7 @@
         <translation>sintesi</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+50"/>
         <location line="+7"/>
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
@@ -3838,6 +3838,16 @@
         <location line="+0"/>
         <source>Residual [%]</source>
         <translation>Residuo [%]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Level [dB]</source>
+        <translation>Livello [dB]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RMS of the FRF over the band against the strongest FRF&apos;s (0 dB): a high residual far down is noise</source>
+        <translation>RMS della FRF nella banda rispetto a quella della FRF più forte (0 dB): un residuo alto molto più in basso è rumore</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -176,10 +176,11 @@ IdentificationPage::IdentificationPage(const PageContext& ctx) : QWidget(ctx.par
   synthesisFrfBox_->setObjectName(QStringLiteral("identificationSynthesisFrf"));
   synthesis_ = new InteractivePlot(synthPane);
   synthesis_->setObjectName(QStringLiteral("identificationSynthesis"));
-  residuals_ = new QTableWidget(0, 2, synthPane);
+  residuals_ = new QTableWidget(0, 3, synthPane);
   residuals_->setObjectName(QStringLiteral("identificationResiduals"));
   residuals_->verticalHeader()->setVisible(false);
   residuals_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+  residuals_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
   residuals_->horizontalHeader()->setStretchLastSection(true);
   residuals_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   synthesis_->setMinimumSize(160, 120);
@@ -629,19 +630,35 @@ void IdentificationPage::showSynthesis() {
   synth->setVectors(x, db(synthesised));
   synth->attach(synthesis_);
   synthesis_->autoscale();
-  // Residual per FRF, worst first; each FRF named as in the FRF box.
-  std::vector<std::pair<double, QString>> items;
+  // Residual per FRF, worst first; each FRF named as in the FRF box, with its
+  // level in the band against the strongest FRF's: a residual near 100 % on
+  // an FRF 60 dB down is its noise (a DOF the modes barely move, by a
+  // constraint), not a mode the fit missed.
+  struct Row {
+    double residual;
+    double rms;
+    QString name;
+  };
+  std::vector<Row> items;
+  double strongest = 0.0;
   for (Eigen::Index ii = 0; ii < fit_->residual.cols(); ++ii) {
-    for (Eigen::Index oo = 0; oo < fit_->residual.rows(); ++oo)
-      items.push_back({fit_->residual(oo, ii), synthesisFrfBox_->itemText(static_cast<int>(ii * no + oo))});
+    for (Eigen::Index oo = 0; oo < fit_->residual.rows(); ++oo) {
+      const core::ComplexVectorRef h = fitter_->measured(oo, ii);
+      const double rms = h.size() ? h.norm() / std::sqrt(static_cast<double>(h.size())) : 0.0;
+      strongest = std::max(strongest, rms);
+      items.push_back({fit_->residual(oo, ii), rms, synthesisFrfBox_->itemText(static_cast<int>(ii * no + oo))});
+    }
   }
-  std::sort(items.begin(), items.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::sort(items.begin(), items.end(), [](const Row& a, const Row& b) { return a.residual > b.residual; });
   residuals_->setRowCount(static_cast<int>(items.size()));
   for (int r = 0; r < static_cast<int>(items.size()); ++r) {
-    auto* name = new QTableWidgetItem(items[static_cast<std::size_t>(r)].second);
+    const Row& row = items[static_cast<std::size_t>(r)];
+    auto* name = new QTableWidgetItem(row.name);
     name->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
     residuals_->setItem(r, 0, name);
-    residuals_->setItem(r, 1, cell(QString::number(100.0 * items[static_cast<std::size_t>(r)].first, 'f', 2)));
+    residuals_->setItem(r, 1, cell(QString::number(100.0 * row.residual, 'f', 2)));
+    const double levelDb = strongest > 0.0 && row.rms > 0.0 ? 20.0 * std::log10(row.rms / strongest) : -999.0;
+    residuals_->setItem(r, 2, cell(levelDb > -999.0 ? QString::number(levelDb, 'f', 1) : QStringLiteral("-")));
   }
 }
 
@@ -785,7 +802,9 @@ void IdentificationPage::retranslate() {
   saveButton_->setToolTip(tr("Refine the chosen poles and store them as a modal result of the project"));
   table_->setHorizontalHeaderLabels({tr("Mode"), tr("f [Hz]"), tr("std f [Hz]"), tr("zeta"), tr("std zeta"), tr("eta"),
                                      tr("MPC"), tr("MPD [deg]"), tr("Complexity")});
-  residuals_->setHorizontalHeaderLabels({tr("FRF"), tr("Residual [%]")});
+  residuals_->setHorizontalHeaderLabels({tr("FRF"), tr("Residual [%]"), tr("Level [dB]")});
+  residuals_->horizontalHeaderItem(2)->setToolTip(
+      tr("RMS of the FRF over the band against the strongest FRF's (0 dB): a high residual far down is noise"));
   tabs_->setTabText(0, tr("Synthesis"));
   tabs_->setTabText(1, tr("MAC"));
   autoMacLabel_->setText(tr("AutoMAC of the chosen modes"));
