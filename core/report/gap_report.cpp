@@ -29,6 +29,12 @@ BestEffect bestEffect(const gap::Diagnosis& d) {
   return best;
 }
 
+std::string effectAtLocation(const gap::Candidate& c) {
+  std::string s = c.effect;
+  for (std::size_t k = 0; k < c.location.size(); ++k) s += (k == 0 ? " at " : ", ") + c.location[k];
+  return s;
+}
+
 std::string locationText(const gap::Candidate& c) {
   if (c.location.empty()) return "(global)";
   std::string s;
@@ -166,10 +172,11 @@ io::StoredAnalysis analysisFromDiagnosis(const gap::GapProblem& problem, const g
     for (const auto& e : d.pair.effects) phi.insert(phi.end(), e.parameters.begin(), e.parameters.end());
     after = problem.combinedOverlay(d.pair.theta.data(),
                                     {d.pair.effects[0].candidateIndex, d.pair.effects[1].candidateIndex}, phi.data());
-    afterLabel = "model + " + d.pair.effects[0].candidate.effect + " + " + d.pair.effects[1].candidate.effect;
+    afterLabel = "model + " + effectAtLocation(d.pair.effects[0].candidate) + " + " +
+                 effectAtLocation(d.pair.effects[1].candidate);
   } else if (best.single && best.single->candidateIndex >= 0 && best.single->theta.size() == d.calibrated.size()) {
     after = problem.overlay({best.single->theta.data(), best.single->candidateIndex, best.single->parameters.data()});
-    afterLabel = "model + " + best.single->candidate.effect;
+    afterLabel = "model + " + effectAtLocation(best.single->candidate);
   }
   // The curves with the largest measured level first (the driving point and
   // the strongest transfers; a cross-direction FRF the model leaves at zero

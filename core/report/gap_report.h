@@ -26,6 +26,10 @@ BestEffect bestEffect(const gap::Diagnosis& diagnosis);
 
 // "(global)" or the location parts joined by " - ".
 std::string locationText(const gap::Candidate& candidate);
+// "residual_mode at 1+Y": the effect and its location (parts joined by ", "),
+// as the overlay's legend names it; the effect alone when it is global. Two
+// residual modes read "model + residual_mode + residual_mode" without it.
+std::string effectAtLocation(const gap::Candidate& candidate);
 
 // Section "gap" for a diagnosis of `model` against `test` (file names or
 // record names): verdict and explanation, gap before and where, the ranked

@@ -10,9 +10,7 @@
 #include <qwt_legend.h>
 #include <qwt_plot.h>
 #include <qwt_plot_curve.h>
-#include <qwt_plot_grid.h>
 #include <qwt_plot_renderer.h>
-#include <qwt_scale_engine.h>
 #include <qwt_symbol.h>
 #include <QBuffer>
 #include <QComboBox>
@@ -47,6 +45,7 @@
 #include "core/report/gap_report.h"
 #include "core/report/report_html.h"
 #include "views/common/job_runner.h"
+#include "views/plots/interactive_plot.h"
 #include "views/plots/plot_export.h"
 
 namespace mozzi {
@@ -200,9 +199,10 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   auto* overlayLayout = new QVBoxLayout(overlay);
   overlayChoice_ = new QComboBox(overlay);
   overlayChoice_->setObjectName(QStringLiteral("gapOverlayChoice"));
-  overlayPlot_ = new QwtPlot(overlay);
+  // The workbench's plot adapter: zoom, pan, Home and the export like every
+  // other plot; autoscale on the curves' own range (not from 0 Hz).
+  overlayPlot_ = new InteractivePlot(overlay);
   overlayPlot_->setObjectName(QStringLiteral("gapOverlayPlot"));
-  overlayPlot_->setCanvasBackground(Qt::white);
   // QwtPlot's own MinimumExpanding policy makes its size hint (40 px per
   // major tick of the left axis: a log axis over decades) the least height,
   // which pushed the page below the tab area. Its height hint is ignored
@@ -212,14 +212,10 @@ ModelTestView::ModelTestView(QWidget* parent, JobRunner* jobs)
   // 800, a scroll for 606. It takes what the page leaves, at least 14 lines.
   overlayPlot_->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Ignored);
   overlayPlot_->setMinimumHeight(fontMetrics().height() * 14);
-  auto* grid = new QwtPlotGrid;
-  grid->setMajorPen(QColor(0, 0, 0, 40), 0.0, Qt::DotLine);
-  grid->attach(overlayPlot_);
   overlayPlot_->insertLegend(new QwtLegend, QwtPlot::BottomLegend);
   measuredCurve_ = addCurve(overlayPlot_, QColor(29, 53, 87), Qt::SolidLine);
   beforeCurve_ = addCurve(overlayPlot_, QColor(230, 57, 70), Qt::DashLine);
   afterCurve_ = addCurve(overlayPlot_, QColor(42, 157, 143), Qt::SolidLine);
-  installPlotExportAction(overlayPlot_);
   overlayLayout->addWidget(overlayChoice_);
   overlayLayout->addWidget(overlayPlot_, 1);
   results_->addTab(whereTabs_, QString());
@@ -636,12 +632,15 @@ void ModelTestView::computeOverlays() {
     for (const auto& e : d.pair.effects) phi.insert(phi.end(), e.parameters.begin(), e.parameters.end());
     after_ = diagnosed_->combinedOverlay(
         d.pair.theta.data(), {d.pair.effects[0].candidateIndex, d.pair.effects[1].candidateIndex}, phi.data());
+    // The legend names each effect with its location (two residual modes
+    // read "model + residual_mode + residual_mode" without them).
+    const auto& e = d.pair.effects;
     afterLabel_ = tr("model + %1 + %2")
-                      .arg(QString::fromStdString(d.pair.effects[0].candidate.effect),
-                           QString::fromStdString(d.pair.effects[1].candidate.effect));
+                      .arg(effectText(e[0].candidate.effect, e[0].candidate.location, {}),
+                           effectText(e[1].candidate.effect, e[1].candidate.location, {}));
   } else if (best && best->candidateIndex >= 0 && best->theta.size() == d.calibrated.size()) {
     after_ = diagnosed_->overlay({best->theta.data(), best->candidateIndex, best->parameters.data()});
-    afterLabel_ = tr("model + %1").arg(QString::fromStdString(best->candidate.effect));
+    afterLabel_ = tr("model + %1").arg(effectText(best->candidate.effect, best->candidate.location, {}));
   }
   const QSignalBlocker block(overlayChoice_);
   overlayChoice_->clear();
@@ -656,13 +655,7 @@ bool ModelTestView::showOverlay(int index) {
     const QSignalBlocker block(overlayChoice_);
     overlayChoice_->setCurrentIndex(index);
   }
-  if (curve.logY) {
-    overlayPlot_->setAxisScaleEngine(QwtPlot::yLeft, new QwtLogScaleEngine);
-  } else {
-    overlayPlot_->setAxisScaleEngine(QwtPlot::yLeft, new QwtLinearScaleEngine);
-  }
-  overlayPlot_->setAxisAutoScale(QwtPlot::yLeft, true);
-  overlayPlot_->setAxisAutoScale(QwtPlot::xBottom, true);
+  overlayPlot_->setLogY(curve.logY);
   overlayPlot_->setAxisTitle(QwtPlot::xBottom, QString::fromStdString(curve.xLabel));
   overlayPlot_->setAxisTitle(QwtPlot::yLeft, QString::fromStdString(curve.yLabel));
   measuredCurve_->setSamples(points(curve.x, curve.measured, curve.logY));
@@ -680,7 +673,7 @@ bool ModelTestView::showOverlay(int index) {
       sparse ? new QwtSymbol(QwtSymbol::Ellipse, QBrush(QColor(29, 53, 87)), QPen(QColor(29, 53, 87)), QSize(7, 7))
              : nullptr);
   afterCurve_->setTitle(afterLabel_.isEmpty() ? tr("model + best effect") : afterLabel_);
-  overlayPlot_->replot();
+  overlayPlot_->autoscale();
   return true;
 }
 

@@ -17,6 +17,7 @@
 #include "core/gap/diagnosis.h"
 #include "core/gap/gap_problem.h"
 #include "views/gap/stored_diagnosis.h"
+#include "views/plots/interactive_plot.h"
 
 class QCheckBox;
 class QComboBox;
@@ -84,7 +85,7 @@ class ModelTestView : public QWidget {
   QString verdictText() const;
   QTableWidget* rankingTable() const { return ranking_; }
   QTabWidget* whereTabs() const { return whereTabs_; }
-  QwtPlot* overlayPlot() const { return overlayPlot_; }
+  InteractivePlot* overlayPlot() const { return overlayPlot_; }
   int overlayCurveCount() const;
   // Selects the overlay curve (FRF or series) shown; false when out of range.
   bool showOverlay(int index);
@@ -162,7 +163,7 @@ class ModelTestView : public QWidget {
   QTabWidget* whereTabs_ = nullptr;
   QTableWidget* ranking_ = nullptr;
   QComboBox* overlayChoice_ = nullptr;
-  QwtPlot* overlayPlot_ = nullptr;
+  InteractivePlot* overlayPlot_ = nullptr;
   QwtPlotCurve* measuredCurve_ = nullptr;
   QwtPlotCurve* beforeCurve_ = nullptr;
   QwtPlotCurve* afterCurve_ = nullptr;

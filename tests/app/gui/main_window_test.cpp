@@ -694,6 +694,16 @@ void MainWindowTest::screenshot() {
     named << text;
   }
   QCOMPARE(gap->verdictText(), QStringLiteral("Verdict: effect (%1 and %2)").arg(named[0], named[1]));
+  {  // the overlay's legend names both effects with their locations, not "residual_mode + residual_mode"
+    const auto curves = gap->overlayPlot()->itemList(QwtPlotItem::Rtti_PlotCurve);
+    QCOMPARE(curves.size(), 3);  // measured, model, model with the effects
+    QString expected = QStringLiteral("model");
+    for (const auto& r : stored["verdict_set"])
+      expected +=
+          QStringLiteral(" + residual_mode at %1")
+              .arg(QString::fromStdString(stored["ranking"][r.get<std::size_t>()]["location"][0].get<std::string>()));
+    QCOMPARE(curves[2]->title().text(), expected);
+  }
   // The families share no reference, and the demo has some: fewer ranked
   // rows than residual-mode references.
   std::set<std::string> references;
