@@ -4964,7 +4964,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+249"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+245"/>
         <source>Export Diagnosis Report</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5119,7 +5119,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+40"/>
         <source>model + %1 + %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5129,7 +5129,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+32"/>
         <location line="+80"/>
         <source>model + best effect</source>
         <translation type="unfinished"></translation>
@@ -5160,7 +5160,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-241"/>
+        <location line="-238"/>
         <location filename="../views/gap/model_test_view_kept.cpp" line="+241"/>
         <source>%1 and %2</source>
         <translation type="unfinished"></translation>
@@ -5176,7 +5176,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+225"/>
+        <location line="+222"/>
         <location line="+8"/>
         <source>Cannot write %1: %2</source>
         <translation type="unfinished"></translation>
@@ -6561,12 +6561,12 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+68"/>
         <source>whole test</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+25"/>
         <source>running</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6590,8 +6590,16 @@ Schema version %2, created %3 by Mozzi %4</source>
         <source>&apos;%1&apos; (%2)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>… %n more in the table</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+45"/>
+        <location line="+47"/>
         <source>Cannot read the rig test&apos;s twist axes: %1</source>
         <translation type="unfinished"></translation>
     </message>

@@ -4968,7 +4968,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+249"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+245"/>
         <source>Export Diagnosis Report</source>
         <translation>Esporta rapporto di diagnosi</translation>
     </message>
@@ -5123,7 +5123,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>%1 (+%2 equiv.)</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+40"/>
         <source>model + %1 + %2</source>
         <translation>modello + %1 + %2</translation>
     </message>
@@ -5133,7 +5133,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>modello + %1</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+32"/>
         <location line="+80"/>
         <source>model + best effect</source>
         <translation>modello + effetto migliore</translation>
@@ -5164,7 +5164,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Niente da esportare: esegui prima la diagnosi.</translation>
     </message>
     <message>
-        <location line="-241"/>
+        <location line="-238"/>
         <location filename="../views/gap/model_test_view_kept.cpp" line="+241"/>
         <source>%1 and %2</source>
         <translation>%1 e %2</translation>
@@ -5180,7 +5180,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Verdetto: %1 (%2)</translation>
     </message>
     <message>
-        <location line="+225"/>
+        <location line="+222"/>
         <location line="+8"/>
         <source>Cannot write %1: %2</source>
         <translation>Impossibile scrivere %1: %2</translation>
@@ -6566,12 +6566,12 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Impossibile leggere la prova dello pneumatico: %1</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+68"/>
         <source>whole test</source>
         <translation>intera prova</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+25"/>
         <source>running</source>
         <translation>in corso</translation>
     </message>
@@ -6595,8 +6595,16 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <source>&apos;%1&apos; (%2)</source>
         <translation>&apos;%1&apos; (%2)</translation>
     </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>… %n more in the table</source>
+        <translation>
+            <numerusform>… %n altra nella tabella</numerusform>
+            <numerusform>… altre %n nella tabella</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+45"/>
+        <location line="+47"/>
         <source>Cannot read the rig test&apos;s twist axes: %1</source>
         <translation>Impossibile leggere gli assi di torsione della prova: %1</translation>
     </message>

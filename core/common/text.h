@@ -2,6 +2,8 @@
 // Numbers in error messages and reports: short, with enough significant digits
 // to recognise the value ("0.0412", "1.67e+05").
 
+#include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 
@@ -12,6 +14,34 @@ inline std::string formatNumber(double value, int significantDigits = 4) {
   s.precision(significantDigits);
   s << value;
   return s.str();
+}
+
+// A measured value and its standard uncertainty as a reader takes them in:
+// the uncertainty to two significant digits and the value to the same decimal
+// place (GUM, JCGM 100:2008 7.2.6): 55996.04 +- 6.1756 -> "55996.0", "6.2";
+// 121337 +- 3421 -> "121300", "3400". Without a positive, finite uncertainty
+// the value alone to 5 significant digits and an empty uncertainty.
+struct MeasuredText {
+  std::string value, uncertainty;
+};
+inline MeasuredText formatMeasured(double value, double uncertainty) {
+  if (!(uncertainty > 0.0) || !std::isfinite(uncertainty) || !std::isfinite(value)) return {formatNumber(value, 5), {}};
+  // Decimal places of the uncertainty's second significant digit (negative:
+  // tens, hundreds ...), taken after rounding (9.96 rounds to 10, not 9.96).
+  int places = 1 - static_cast<int>(std::floor(std::log10(uncertainty)));
+  const double rounded = std::round(uncertainty * std::pow(10.0, places)) / std::pow(10.0, places);
+  places = 1 - static_cast<int>(std::floor(std::log10(rounded)));
+  places = std::min(places, 15);
+  char v[64], u[64];
+  if (places >= 0) {
+    std::snprintf(v, sizeof v, "%.*f", places, value);
+    std::snprintf(u, sizeof u, "%.*f", places, uncertainty);
+  } else {
+    const double unit = std::pow(10.0, -places);
+    std::snprintf(v, sizeof v, "%.0f", std::round(value / unit) * unit);
+    std::snprintf(u, sizeof u, "%.0f", std::round(uncertainty / unit) * unit);
+  }
+  return {v, u};
 }
 
 }  // namespace mozzi::core

@@ -35,6 +35,7 @@
 #include <nlohmann/json.hpp>
 #include <variant>
 
+#include "core/common/text.h"
 #include "core/io/project_store.h"
 #include "core/tire/magic_formula.h"
 #include "devices/rigtests/rig_sequence.h"
@@ -60,7 +61,6 @@ using rig_page::addCurve;
 using rig_page::kPi;
 using rig_page::kSineTimeWindowS;
 using rig_page::kTyreTimeWindowS;
-using rig_page::number;
 using rig_page::qs;
 using rig_page::resultLabel;
 using rig_page::setAxisText;
@@ -389,14 +389,17 @@ void RigTestPage::showStoredTest(qint64 id) {
   for (int i = 0; i < static_cast<int>(rows.size()); ++i) {
     const Row& r = rows[static_cast<std::size_t>(i)];
     const auto s = shown(r.value, r.uncertainty, r.unit);
+    // Value and uncertainty to the uncertainty's second digit (not 55996 ±
+    // 6.1756 N/m); the value alone to 5 digits without one.
+    const core::MeasuredText m = core::formatMeasured(s.value, s.uncertainty);
+    const QString value = qs(m.value), uncertainty = m.uncertainty.empty() ? QStringLiteral("-") : qs(m.uncertainty);
     QString step = tr("whole test");
     if (r.step) {
       const auto k = static_cast<std::size_t>(*r.step);
       step = k < labels.size() && !labels[k].isEmpty() ? QStringLiteral("%1: %2").arg(*r.step).arg(labels[k])
                                                        : QString::number(*r.step);
     }
-    const QString items[] = {step, resultLabel(r.key), number(s.value),
-                             r.uncertainty > 0 ? number(s.uncertainty) : QStringLiteral("-"), s.unit};
+    const QString items[] = {step, resultLabel(r.key), value, uncertainty, s.unit};
     for (int c = 0; c < 5; ++c) {
       auto* item = new QTableWidgetItem(items[c]);
       if (c == 2 || c == 3) item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
@@ -407,11 +410,9 @@ void RigTestPage::showStoredTest(qint64 id) {
     if (!r.step)
       for (const auto& k : headlineKeys)
         if (r.key == k)
-          headline << QStringLiteral("%1 = %2 ± %3 %4")
-                          .arg(resultLabel(r.key), number(s.value), number(s.uncertainty), s.unit);
+          headline << QStringLiteral("%1 = %2 ± %3 %4").arg(resultLabel(r.key), value, uncertainty, s.unit);
     if (r.step && r.key == "k_lat")  // a sine sweep: the dynamic stiffness per frequency
-      stepHeadline << QStringLiteral("%1: %2 = %3 ± %4 %5")
-                          .arg(step, resultLabel(r.key), number(s.value), number(s.uncertainty), s.unit);
+      stepHeadline << QStringLiteral("%1: %2 = %3 ± %4 %5").arg(step, resultLabel(r.key), value, uncertainty, s.unit);
   }
   results_->resizeColumnsToContents();
   results_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);
@@ -424,7 +425,15 @@ void RigTestPage::showStoredTest(qint64 id) {
   }
   QString head = tr("'%1' (%2)").arg(qs(name), word);
   headline_->setToolTip(qs(note));  // the status line shows it too
-  if (headline.isEmpty()) headline = stepHeadline.mid(0, 4);
+  // A sweep of more frequencies than four lines hold: the first two, the
+  // last, and how many more the table lists (the trend, not the first four).
+  if (headline.isEmpty() && stepHeadline.size() > 4) {
+    headline = stepHeadline.mid(0, 2);
+    headline << tr("… %n more in the table", nullptr, static_cast<int>(stepHeadline.size() - 3));
+    headline << stepHeadline.back();
+  } else if (headline.isEmpty()) {
+    headline = stepHeadline;
+  }
   if (!headline.isEmpty()) head += QStringLiteral("\n") + headline.join(QStringLiteral("\n"));
   headline_->setText(head);
 
