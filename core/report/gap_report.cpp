@@ -99,8 +99,20 @@ Section gapDiagnosisSection(const gap::Diagnosis& d, const std::string& model, c
   for (const auto& effect : d.ranking) {
     std::string sizes = sizesText(effect);
     if (tx.language() == Language::Italian) std::replace(sizes.begin(), sizes.end(), '.', ',');
-    ranking.rows.push_back({textCell(effect.candidate.effect), textCell(locationText(effect.candidate)),
-                            textCell(sizes), tx.numberCell(effect.likelihoodRatio, 4), tx.numberCell(d.threshold, 4),
+    // A family of locations whose effect changes the data alike
+    // (core/gap/engine/families.h) is one row: it names the others, as the
+    // workbench's ranking does.
+    std::string location = locationText(effect.candidate);
+    const auto& others = effect.candidate.equivalent;
+    if (others.size() == 1) {
+      std::string other;
+      for (const auto& l : others[0]) other += (other.empty() ? "" : " - ") + l;
+      location += " " + tx("(equivalent at %1)", {other});
+    } else if (others.size() > 1) {
+      location += " " + tx("(and %1 equivalent locations)", {std::to_string(others.size())});
+    }
+    ranking.rows.push_back({textCell(effect.candidate.effect), textCell(location), textCell(sizes),
+                            tx.numberCell(effect.likelihoodRatio, 4), tx.numberCell(d.threshold, 4),
                             tx.numberCell(100.0 * effect.heldOutImprovement, 3), tx.numberCell(effect.shrinkPct, 3)});
   }
   s.blocks.push_back(ranking);

@@ -123,6 +123,8 @@ const char* italianText(const std::string& english) {
        "Effetti in ordine (in grassetto nel banco di lavoro: quelli del verdetto)"},
       {"Effect", "Effetto"},
       {"Location", "Posizione"},
+      {"(equivalent at %1)", "(equivalente in %1)"},
+      {"(and %1 equivalent locations)", "(e altre %1 posizioni equivalenti)"},
       {"Size \u00b1 standard error", "Entità \u00b1 errore standard"},
       {"Likelihood ratio", "Rapporto di verosimiglianza"},
       {"Threshold", "Soglia"},

@@ -278,5 +278,37 @@ TEST(BestEffect, VerdictFirstElseTopRankedPairWhenBothNamed) {
   EXPECT_EQ(bestEffect(d).pair, nullptr);
 }
 
+// The ranking table names a family's other locations (one: "equivalent at";
+// more: a count), in the report's language; the overlay's legend names an
+// effect with its location.
+TEST(GapReport, RankingNamesFamiliesAndTheLegendLocations) {
+  gap::Diagnosis d;
+  d.ranking.resize(3);
+  d.ranking[0].candidate.effect = "residual_mode";
+  d.ranking[0].candidate.location = {"9+Z"};
+  d.ranking[0].candidate.equivalent = {{"10+Z"}};
+  d.ranking[1].candidate.effect = "residual_mode";
+  d.ranking[1].candidate.location = {"1+Y"};
+  d.ranking[1].candidate.equivalent = {{"2+Y"}, {"3+Y"}, {"4+Y"}};
+  d.ranking[2].candidate.effect = "hysteretic_damping";
+  auto locations = [&](Language language) {
+    const Section s = gapDiagnosisSection(d, "model.json", "test.uff", Texts(language));
+    std::vector<std::string> out;
+    for (const Block& b : s.blocks) {
+      const auto* t = std::get_if<Table>(&b);
+      if (!t || t->headers.size() < 2 || t->rows.size() != 3) continue;
+      for (const auto& row : t->rows) out.push_back(row[1].text);
+    }
+    return out;
+  };
+  EXPECT_EQ(locations(Language::English),
+            (std::vector<std::string>{"9+Z (equivalent at 10+Z)", "1+Y (and 3 equivalent locations)", "(global)"}));
+  EXPECT_EQ(
+      locations(Language::Italian),
+      (std::vector<std::string>{"9+Z (equivalente in 10+Z)", "1+Y (e altre 3 posizioni equivalenti)", "(global)"}));
+  EXPECT_EQ(effectAtLocation(d.ranking[1].candidate), "residual_mode at 1+Y");
+  EXPECT_EQ(effectAtLocation(d.ranking[2].candidate), "hysteretic_damping");
+}
+
 }  // namespace
 }  // namespace mozzi::core::report
