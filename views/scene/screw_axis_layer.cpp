@@ -39,7 +39,7 @@ ScrewAxisLayer::ScrewAxisLayer(SceneView* scene) : scene_(scene) {
   style->SetFontSize(15);  // VTK scales text with the window's DPI itself
   style->SetBackgroundColor(1.0, 1.0, 1.0);
   style->SetBackgroundOpacity(0.85);
-  style->SetJustificationToLeft();
+  style->SetJustificationToCentered();
   style->SetVerticalJustificationToBottom();
   label_->PickableOff();
   label_->VisibilityOff();
@@ -63,10 +63,12 @@ void ScrewAxisLayer::show(const core::Vector3& from, const core::Vector3& to, co
   line_->Update();
   // VTK draws line widths in device pixels: as thick on a high-DPI screen.
   actor_->GetProperty()->SetLineWidth(4.0 * std::max(1.0, scene_->devicePixelRatioF()));
-  // The label beside the line near its upper end (+z, the screen's usual up),
-  // inside the view the camera frames.
+  // The label on the line, centred over it a third of the way from its middle
+  // towards the upper end (+z, the screen's usual up): the segment spans the
+  // drawn mesh, and at 80 % of the way a nearly level axis put the label's
+  // text past the view's edge.
   const core::Vector3& top = to.z() >= from.z() ? to : from;
-  const core::Vector3 at = 0.5 * (from + to) + 0.8 * (top - 0.5 * (from + to));
+  const core::Vector3 at = 0.5 * (from + to) + 0.35 * (top - 0.5 * (from + to));
   label_->SetPosition(at.x(), at.y(), at.z());
   text_ = text;
   label_->SetInput(text.toUtf8().constData());
