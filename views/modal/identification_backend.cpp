@@ -1,6 +1,8 @@
 #include "views/modal/identification_backend.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/common/frf_display.h"
 #include "core/modal/identification.h"
@@ -154,6 +156,27 @@ core::ComplexVectorRef SelectionFitter::measured(Eigen::Index response, Eigen::I
 
 bool SelectionFitter::synthesis(Eigen::Index response, Eigen::Index reference, core::ComplexVector& out) const {
   return fitter_.synthesis(response, reference, out);
+}
+
+std::vector<FrfResidual> residualsWorstFirst(const SelectionFitter& fitter, const core::Matrix& residual) {
+  std::vector<FrfResidual> rows;
+  std::vector<double> rms;
+  double strongest = 0.0;
+  for (Eigen::Index i = 0; i < residual.cols(); ++i) {
+    for (Eigen::Index o = 0; o < residual.rows(); ++o) {
+      const core::ComplexVectorRef h = fitter.measured(o, i);
+      rms.push_back(h.size() ? h.norm() / std::sqrt(static_cast<double>(h.size())) : 0.0);
+      strongest = std::max(strongest, rms.back());
+      rows.push_back({o, i, residual(o, i), 0.0});
+    }
+  }
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    rows[k].levelDb = rms[k] > 0.0 && strongest > 0.0 ? 20.0 * std::log10(rms[k] / strongest)
+                                                      : -std::numeric_limits<double>::infinity();
+  }
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const FrfResidual& a, const FrfResidual& b) { return a.residual > b.residual; });
+  return rows;
 }
 
 core::Result<md::RefineResult> refine(const core::FrfMatrix& frf, const md::ModalModel& model, double lo, double hi,

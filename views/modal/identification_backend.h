@@ -94,6 +94,17 @@ class SelectionFitter {
   std::shared_ptr<const core::Vector> lines_;
 };
 
+// The residual of every FRF of a fit, worst first, with the FRF's level: the
+// RMS of its band lines against the strongest FRF's [dB] (-inf for a zero
+// FRF). A residual near 100 % on an FRF 60 dB down is that FRF's noise (a
+// DOF the modes barely move, by a constraint), not a mode the fit missed.
+struct FrfResidual {
+  Eigen::Index response = 0, reference = 0;
+  double residual = 0.0;  // relative, as Fit::residual
+  double levelDb = 0.0;
+};
+std::vector<FrfResidual> residualsWorstFirst(const SelectionFitter& fitter, const core::Matrix& residual);
+
 // Refinement of a model (worker thread), as the CLI refines the automatic selection.
 core::Result<core::modal::RefineResult> refine(const core::FrfMatrix& frf, const core::modal::ModalModel& model,
                                                double bandLowHz, double bandHighHz, JobProgress& progress);

@@ -630,35 +630,17 @@ void IdentificationPage::showSynthesis() {
   synth->setVectors(x, db(synthesised));
   synth->attach(synthesis_);
   synthesis_->autoscale();
-  // Residual per FRF, worst first; each FRF named as in the FRF box, with its
-  // level in the band against the strongest FRF's: a residual near 100 % on
-  // an FRF 60 dB down is its noise (a DOF the modes barely move, by a
-  // constraint), not a mode the fit missed.
-  struct Row {
-    double residual;
-    double rms;
-    QString name;
-  };
-  std::vector<Row> items;
-  double strongest = 0.0;
-  for (Eigen::Index ii = 0; ii < fit_->residual.cols(); ++ii) {
-    for (Eigen::Index oo = 0; oo < fit_->residual.rows(); ++oo) {
-      const core::ComplexVectorRef h = fitter_->measured(oo, ii);
-      const double rms = h.size() ? h.norm() / std::sqrt(static_cast<double>(h.size())) : 0.0;
-      strongest = std::max(strongest, rms);
-      items.push_back({fit_->residual(oo, ii), rms, synthesisFrfBox_->itemText(static_cast<int>(ii * no + oo))});
-    }
-  }
-  std::sort(items.begin(), items.end(), [](const Row& a, const Row& b) { return a.residual > b.residual; });
-  residuals_->setRowCount(static_cast<int>(items.size()));
-  for (int r = 0; r < static_cast<int>(items.size()); ++r) {
-    const Row& row = items[static_cast<std::size_t>(r)];
-    auto* name = new QTableWidgetItem(row.name);
+  // Residual per FRF, worst first, and its level; each FRF named as in the FRF box.
+  const auto rows = identification::residualsWorstFirst(*fitter_, fit_->residual);
+  residuals_->setRowCount(static_cast<int>(rows.size()));
+  for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
+    const auto& row = rows[static_cast<std::size_t>(r)];
+    auto* name = new QTableWidgetItem(synthesisFrfBox_->itemText(static_cast<int>(row.reference * no + row.response)));
     name->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
     residuals_->setItem(r, 0, name);
     residuals_->setItem(r, 1, cell(QString::number(100.0 * row.residual, 'f', 2)));
-    const double levelDb = strongest > 0.0 && row.rms > 0.0 ? 20.0 * std::log10(row.rms / strongest) : -999.0;
-    residuals_->setItem(r, 2, cell(levelDb > -999.0 ? QString::number(levelDb, 'f', 1) : QStringLiteral("-")));
+    residuals_->setItem(r, 2,
+                        cell(std::isfinite(row.levelDb) ? QString::number(row.levelDb, 'f', 1) : QStringLiteral("-")));
   }
 }
 
