@@ -128,9 +128,22 @@ Result<MeasuredShapes> measuredShapes(const ModalModel& model) {
   }
   const ModalModel& view = out.alongReferences ? along : model;
   out.dofs = view.responses;
+  // A driving point scales to unit modal mass only where it moves in every
+  // mode: its residue at least 1 % of the largest of its column (a node of a
+  // mode would divide that mode's shape by the square root of noise).
+  constexpr double kDrivingPointShare = 0.01;
   for (Eigen::Index held = 0; held < view.referenceCount(); ++held) {
     const Dof& dof = view.references[static_cast<std::size_t>(held)];
-    if (std::find(view.responses.begin(), view.responses.end(), dof) == view.responses.end()) continue;
+    const auto at = std::find(view.responses.begin(), view.responses.end(), dof);
+    if (at == view.responses.end()) continue;
+    const auto row = static_cast<Eigen::Index>(at - view.responses.begin());
+    bool movesInEveryMode = true;
+    for (const Mode& md : view.modes) {
+      const double largest = md.residue.col(held).cwiseAbs().maxCoeff();
+      movesInEveryMode =
+          movesInEveryMode && std::abs(md.residue(row, held)) >= kDrivingPointShare * largest && largest > 0.0;
+    }
+    if (!movesInEveryMode) continue;
     MOZZI_TRY_ASSIGN(out.set, modeShapes(view, held));
     return out;
   }

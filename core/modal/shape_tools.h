@@ -53,7 +53,8 @@ Result<ShapeSet> modeShapes(const ModalModel& model, Eigen::Index reference);
 // read by a few fixed accelerometers), where by reciprocity R_{r,oi} = R_{r,io}
 // (thesis §1.6) the residues of one response over the references are the shape
 // at the hammer DOFs. The DOF held is a driving point when one is measured
-// (unit modal mass, modeShapes); else each mode takes the held DOF where its
+// and moves in every mode (its residue at least 1 % of its column's largest;
+// unit modal mass, modeShapes); else each mode takes the held DOF where its
 // residues are largest (one on a node of that mode would give noise) and is
 // scaled to max-component.
 struct MeasuredShapes {

@@ -11,7 +11,9 @@
 #include <qwt_scale_engine.h>
 #include <qwt_scale_widget.h>
 #include <QKeyEvent>
+#include <QPointer>
 #include <QResizeEvent>
+#include <QTimer>
 #include <cmath>
 #include <limits>
 
@@ -275,29 +277,39 @@ void InteractivePlot::emitRange() {
 namespace {
 
 // Aligns again when an axis changes length: its title wraps by the length, and
-// a title on one line more widens that axis by a line.
+// a title on one line more widens that axis by a line. Once per burst of
+// resizes, after the layout that sent them has finished (aligning inside it
+// would re-enter QwtPlot::updateLayout half-way); plots destroyed in the
+// meantime are left out.
 class LeftAxesAligner : public QObject {
  public:
-  LeftAxesAligner(std::vector<QwtPlot*> plots, QObject* parent) : QObject(parent), plots_(std::move(plots)) {
+  LeftAxesAligner(const std::vector<QwtPlot*>& plots, QObject* parent) : QObject(parent) {
     setObjectName(QStringLiteral("leftAxesAligner"));
-    for (QwtPlot* p : plots_) p->axisWidget(QwtPlot::yLeft)->installEventFilter(this);
+    for (QwtPlot* p : plots) {
+      plots_.push_back(p);
+      p->axisWidget(QwtPlot::yLeft)->installEventFilter(this);
+    }
   }
-  const std::vector<QwtPlot*>& plots() const { return plots_; }
   bool eventFilter(QObject* watched, QEvent* event) override {
-    if (event->type() == QEvent::Resize && !aligning_) {
+    if (event->type() == QEvent::Resize && !queued_) {
       const auto* resize = static_cast<QResizeEvent*>(event);
       if (resize->size().height() != resize->oldSize().height()) {
-        aligning_ = true;
-        alignLeftAxes(plots_);
-        aligning_ = false;
+        queued_ = true;
+        QTimer::singleShot(0, this, [this] {
+          queued_ = false;
+          std::vector<QwtPlot*> alive;
+          for (const QPointer<QwtPlot>& p : plots_)
+            if (p) alive.push_back(p);
+          alignLeftAxes(alive);
+        });
       }
     }
     return QObject::eventFilter(watched, event);
   }
 
  private:
-  std::vector<QwtPlot*> plots_;
-  bool aligning_ = false;
+  std::vector<QPointer<QwtPlot>> plots_;
+  bool queued_ = false;
 };
 
 }  // namespace

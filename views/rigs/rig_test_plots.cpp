@@ -393,6 +393,7 @@ void RigTestPage::showStoredTest(qint64 id) {
     // 6.1756 N/m); the value alone to 5 digits without one.
     const core::MeasuredText m = core::formatMeasured(s.value, s.uncertainty);
     const QString value = qs(m.value), uncertainty = m.uncertainty.empty() ? QStringLiteral("-") : qs(m.uncertainty);
+    const QString withUncertainty = m.uncertainty.empty() ? value : QStringLiteral("%1 ± %2").arg(value, uncertainty);
     QString step = tr("whole test");
     if (r.step) {
       const auto k = static_cast<std::size_t>(*r.step);
@@ -409,10 +410,9 @@ void RigTestPage::showStoredTest(qint64 id) {
     }
     if (!r.step)
       for (const auto& k : headlineKeys)
-        if (r.key == k)
-          headline << QStringLiteral("%1 = %2 ± %3 %4").arg(resultLabel(r.key), value, uncertainty, s.unit);
+        if (r.key == k) headline << QStringLiteral("%1 = %2 %3").arg(resultLabel(r.key), withUncertainty, s.unit);
     if (r.step && r.key == "k_lat")  // a sine sweep: the dynamic stiffness per frequency
-      stepHeadline << QStringLiteral("%1: %2 = %3 ± %4 %5").arg(step, resultLabel(r.key), value, uncertainty, s.unit);
+      stepHeadline << QStringLiteral("%1: %2 = %3 %4").arg(step, resultLabel(r.key), withUncertainty, s.unit);
   }
   results_->resizeColumnsToContents();
   results_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);

@@ -29,6 +29,7 @@ ModeAnimationPage::ModeAnimationPage(ProjectModel* model, qint64 modalResultId, 
 void ModeAnimationPage::reload() {
   core::io::ProjectStore* store = model_->store();
   view_->setShapes({});
+  view_->setFrfSet(nullptr, {});
   if (!store) return;
   auto results = store->modalResults();
   if (!results || results->empty()) {
@@ -77,10 +78,13 @@ void ModeAnimationPage::reload() {
     }
   }
   view_->setShapes(std::move(shapes));
+  // The chosen result's own FRF set, or none: never the set of a result shown
+  // before (another specimen's, on this mesh).
+  std::shared_ptr<const core::FrfMatrix> set;
   if (chosen->frfSetId) {
-    auto frf = model_->frfSet(*chosen->frfSetId);
-    if (frf) view_->setFrfSet(*frf, tr("FRF set %1").arg(*chosen->frfSetId));
+    if (auto frf = model_->frfSet(*chosen->frfSetId)) set = *frf;
   }
+  view_->setFrfSet(set, set ? tr("FRF set %1").arg(*chosen->frfSetId) : QString());
   if (first >= 0) view_->showShape(first);
 }
 

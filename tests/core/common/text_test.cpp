@@ -24,6 +24,16 @@ TEST(Text, MeasuredValueToTheUncertaintysSecondDigit) {
   m = formatMeasured(-0.004567, 0.000996);  // 0.000996 rounds to 0.0010: one place fewer
   EXPECT_EQ(m.value, "-0.0046");
   EXPECT_EQ(m.uncertainty, "0.0010");
+  m = formatMeasured(0.1, 0.125);  // the uncertainty rounded once, up: 0.13
+  EXPECT_EQ(m.uncertainty, "0.13");
+  m = formatMeasured(-0.004, 0.3);  // rounds to zero: no sign
+  EXPECT_EQ(m.value, "0.00");
+  m = formatMeasured(3e-17, 1e-18);  // past 1e-9: significant digits, not zeros
+  EXPECT_EQ(m.value, "3e-17");
+  EXPECT_EQ(m.uncertainty, "1e-18");
+  m = formatMeasured(1e70, 1.0);  // a diverged fit: its magnitude, not a cut string
+  EXPECT_EQ(m.value, "1e+70");
+  EXPECT_EQ(m.uncertainty, "1");
   m = formatMeasured(53485.2, 0.0);
   EXPECT_EQ(m.value, "53485");
   EXPECT_EQ(m.uncertainty, "");

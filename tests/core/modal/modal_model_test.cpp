@@ -121,8 +121,25 @@ TEST(ModalModel, RovingHammerShapesLieAlongTheHammerPoints) {
   EXPECT_EQ(shapes->dofs, sixDofs());
   EXPECT_EQ(shapes->set.normalisation, Normalisation::UnitModalMass);
   for (int r = 0; r < 6; ++r) {
-    for (int i = 0; i < 6; ++i) EXPECT_NEAR(std::abs(shapes->set.shapes(i, r)), std::abs(sys.phi(i, r)), 1e-9);
+    // phi itself up to one sign per mode (the root of the driving point's
+    // modal constant): relative signs and phases too, not only magnitudes.
+    const double sign = shapes->set.shapes(3, r).real() * sys.phi(3, r) > 0.0 ? 1.0 : -1.0;
+    for (int i = 0; i < 6; ++i) EXPECT_NEAR(std::abs(shapes->set.shapes(i, r) - sign * sys.phi(i, r)), 0.0, 1e-9);
   }
+  // The driving point on a node of mode 2 (its residues there zeroed): no unit
+  // modal mass from it, the max-component shapes instead, mode 2 whole.
+  ModalModel onNode = withDrivingPoint;
+  onNode.modes[1].residue(0, 3) = 0.0;
+  shapes = measuredShapes(onNode);
+  ASSERT_TRUE(shapes.ok()) << shapes.error().describe();
+  EXPECT_EQ(shapes->set.normalisation, Normalisation::MaxComponent);
+  ComplexVector phi2(5);
+  for (int i = 0, k = 0; i < 6; ++i)
+    if (i != 3) phi2[k++] = sys.phi(i, 1);
+  ComplexVector shape2(5);
+  for (int i = 0, k = 0; i < 6; ++i)
+    if (i != 3) shape2[k++] = shapes->set.shapes(i, 1);
+  EXPECT_GT(mac(shape2, phi2), 1 - 1e-12);
   const ModalModel noDrivingPoint = subModel({3}, {0, 1, 2, 4, 5});
   shapes = measuredShapes(noDrivingPoint);
   ASSERT_TRUE(shapes.ok());
