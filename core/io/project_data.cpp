@@ -23,9 +23,7 @@ namespace data {
 using sql::sqliteError;
 
 // Copies a blob of doubles out of a column, checking its size.
-Result<std::vector<double>> columnDoubles(sqlite3_stmt* stmt, int column, std::int64_t count,
-                                          const std::string& where) {
-  const void* data = sqlite3_column_blob(stmt, column);
+Result<void> checkDoublesBlob(sqlite3_stmt* stmt, int column, std::int64_t count, const std::string& where) {
   const std::int64_t bytes = sqlite3_column_bytes(stmt, column);
   if (count < 0 || count > kMaxFrfLines * 2 || bytes != count * static_cast<std::int64_t>(sizeof(double))) {
     return makeError(
@@ -33,8 +31,14 @@ Result<std::vector<double>> columnDoubles(sqlite3_stmt* stmt, int column, std::i
         "blob of " + std::to_string(bytes) + " bytes where " + std::to_string(count) + " float64 values were expected",
         where);
   }
+  return {};
+}
+
+Result<std::vector<double>> columnDoubles(sqlite3_stmt* stmt, int column, std::int64_t count,
+                                          const std::string& where) {
+  MOZZI_TRY(checkDoublesBlob(stmt, column, count, where));
   std::vector<double> values(static_cast<std::size_t>(count));
-  if (count > 0) std::memcpy(values.data(), data, static_cast<std::size_t>(bytes));
+  if (count > 0) std::memcpy(values.data(), sqlite3_column_blob(stmt, column), values.size() * sizeof(double));
   return values;
 }
 

@@ -33,6 +33,8 @@ inline std::string hitWhere(const std::string& path, std::int64_t id) {
   return path + ", hit " + std::to_string(id);
 }
 
+// Corrupt unless the blob in `column` holds `count` float64 values.
+Result<void> checkDoublesBlob(sqlite3_stmt* stmt, int column, std::int64_t count, const std::string& where);
 // Copies a blob of doubles out of a column, checking its size.
 Result<std::vector<double>> columnDoubles(sqlite3_stmt* stmt, int column, std::int64_t count, const std::string& where);
 

@@ -104,16 +104,6 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), pipeline_(new Pipeline)
   p.selectionActor->PickableOff();
   p.renderer->AddActor(p.selectionActor);
 
-  p.labelMapper->SetInputData(p.nodes);
-  p.labelMapper->SetLabelModeToLabelFieldData();
-  p.labelMapper->SetFieldDataName("label");
-  p.labelMapper->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
-  p.labelMapper->GetLabelTextProperty()->SetFontSize(12);
-  p.labelMapper->GetLabelTextProperty()->ShadowOff();
-  p.labelMapper->GetLabelTextProperty()->BoldOff();
-  p.labelActor->SetMapper(p.labelMapper);
-  p.labelActor->VisibilityOff();
-  p.renderer->AddActor2D(p.labelActor);
 
   p.deformedCoords->SetNumberOfComponents(3);
   p.deformedPoints->SetDataTypeToDouble();
@@ -448,7 +438,22 @@ void SceneView::setHitMarker(std::optional<int> label, const core::Vector3& stri
 }
 
 void SceneView::setLabelsVisible(bool visible) {
-  pipeline_->labelActor->SetVisibility(visible ? 1 : 0);
+  Pipeline& p = *pipeline_;
+  if (!p.labelActor) {
+    if (!visible) return;
+    p.labelMapper = vtkSmartPointer<vtkLabeledDataMapper>::New();
+    p.labelMapper->SetInputData(p.nodes);
+    p.labelMapper->SetLabelModeToLabelFieldData();
+    p.labelMapper->SetFieldDataName("label");
+    p.labelMapper->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+    p.labelMapper->GetLabelTextProperty()->SetFontSize(12);
+    p.labelMapper->GetLabelTextProperty()->ShadowOff();
+    p.labelMapper->GetLabelTextProperty()->BoldOff();
+    p.labelActor = vtkSmartPointer<vtkActor2D>::New();
+    p.labelActor->SetMapper(p.labelMapper);
+    p.renderer->AddActor2D(p.labelActor);
+  }
+  p.labelActor->SetVisibility(visible ? 1 : 0);
   render();
 }
 

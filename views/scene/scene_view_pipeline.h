@@ -20,6 +20,7 @@
 #include <vtkLabeledDataMapper.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
+#include <vtkSmartPointer.h>
 #include <vtkOrientationMarkerWidget.h>
 #include <vtkPointData.h>
 #include <vtkPointPicker.h>
@@ -57,8 +58,10 @@ struct SceneView::Pipeline {
   vtkNew<vtkPolyDataMapper> selectionMapper;
   vtkNew<vtkActor> selectionActor;
   // labels
-  vtkNew<vtkLabeledDataMapper> labelMapper;
-  vtkNew<vtkActor2D> labelActor;
+  // Node labels, made when first shown (SceneView::setLabelsVisible): the
+  // mapper allocates its text mappers up front, a few ms of a page's opening.
+  vtkSmartPointer<vtkLabeledDataMapper> labelMapper;
+  vtkSmartPointer<vtkActor2D> labelActor;
   // deformed layer: its own points (written per tick), the mesh's cells
   vtkNew<vtkPolyData> deformed;
   vtkNew<vtkPoints> deformedPoints;
