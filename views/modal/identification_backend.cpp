@@ -125,6 +125,19 @@ core::Result<Outcome> identify(const core::FrfMatrix& frf, const Options& option
 SelectionFitter::SelectionFitter(std::shared_ptr<const core::FrfMatrix> frf, md::SelectionFitter fitter)
     : frf_(std::move(frf)), fitter_(std::move(fitter)) {
   lines_ = std::make_shared<const core::Vector>(frf_->frequencyHz.segment(fitter_.firstLine(), fitter_.lineCount()));
+  const auto no = static_cast<Eigen::Index>(frf_->responseCount());
+  const auto ni = static_cast<Eigen::Index>(frf_->referenceCount());
+  core::Matrix rms(no, ni);
+  for (Eigen::Index i = 0; i < ni; ++i) {
+    for (Eigen::Index o = 0; o < no; ++o) {
+      const core::ComplexVectorRef h = measured(o, i);
+      rms(o, i) = h.size() ? h.norm() / std::sqrt(static_cast<double>(h.size())) : 0.0;
+    }
+  }
+  const double strongest = rms.size() ? rms.maxCoeff() : 0.0;
+  levelsDb_ = rms.unaryExpr([strongest](double r) {
+    return r > 0.0 && strongest > 0.0 ? 20.0 * std::log10(r / strongest) : -std::numeric_limits<double>::infinity();
+  });
 }
 
 core::Result<SelectionFitter> SelectionFitter::create(std::shared_ptr<const core::FrfMatrix> frf, double lo,
@@ -160,19 +173,9 @@ bool SelectionFitter::synthesis(Eigen::Index response, Eigen::Index reference, c
 
 std::vector<FrfResidual> residualsWorstFirst(const SelectionFitter& fitter, const core::Matrix& residual) {
   std::vector<FrfResidual> rows;
-  std::vector<double> rms;
-  double strongest = 0.0;
+  rows.reserve(static_cast<std::size_t>(residual.size()));
   for (Eigen::Index i = 0; i < residual.cols(); ++i) {
-    for (Eigen::Index o = 0; o < residual.rows(); ++o) {
-      const core::ComplexVectorRef h = fitter.measured(o, i);
-      rms.push_back(h.size() ? h.norm() / std::sqrt(static_cast<double>(h.size())) : 0.0);
-      strongest = std::max(strongest, rms.back());
-      rows.push_back({o, i, residual(o, i), 0.0});
-    }
-  }
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    rows[k].levelDb = rms[k] > 0.0 && strongest > 0.0 ? 20.0 * std::log10(rms[k] / strongest)
-                                                      : -std::numeric_limits<double>::infinity();
+    for (Eigen::Index o = 0; o < residual.rows(); ++o) rows.push_back({o, i, residual(o, i), fitter.levelsDb()(o, i)});
   }
   std::stable_sort(rows.begin(), rows.end(),
                    [](const FrfResidual& a, const FrfResidual& b) { return a.residual > b.residual; });

@@ -86,18 +86,23 @@ class SelectionFitter {
   core::ComplexVectorRef measured(Eigen::Index response, Eigen::Index reference) const;
   // The last successful fit's model of FRF (response, reference) on the band's lines; false: no fit.
   bool synthesis(Eigen::Index response, Eigen::Index reference, core::ComplexVector& out) const;
+  // Each FRF's level on the band: the RMS of its lines against the strongest
+  // FRF's [dB] (-inf for a zero FRF), responses x references. Computed once per
+  // band, not per fit.
+  const core::Matrix& levelsDb() const { return levelsDb_; }
 
  private:
   SelectionFitter(std::shared_ptr<const core::FrfMatrix> frf, core::modal::SelectionFitter fitter);
   std::shared_ptr<const core::FrfMatrix> frf_;
   core::modal::SelectionFitter fitter_;
   std::shared_ptr<const core::Vector> lines_;
+  core::Matrix levelsDb_;
 };
 
-// The residual of every FRF of a fit, worst first, with the FRF's level: the
-// RMS of its band lines against the strongest FRF's [dB] (-inf for a zero
-// FRF). A residual near 100 % on an FRF 60 dB down is that FRF's noise (a
-// DOF the modes barely move, by a constraint), not a mode the fit missed.
+// The residual of every FRF of a fit, worst first, with the FRF's level
+// (SelectionFitter::levelsDb). A residual near 100 % on an FRF 60 dB down is
+// that FRF's noise (a DOF the modes barely move, by a constraint), not a mode
+// the fit missed.
 struct FrfResidual {
   Eigen::Index response = 0, reference = 0;
   double residual = 0.0;  // relative, as Fit::residual
