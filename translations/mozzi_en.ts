@@ -3625,7 +3625,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+32"/>
         <location line="+7"/>
         <source>%1 Hz</source>
         <translation type="unfinished"></translation>
@@ -4677,7 +4677,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ModeAnimationPage</name>
     <message>
-        <location filename="../views/scene/mode_animation_page.cpp" line="+35"/>
+        <location filename="../views/scene/mode_animation_page.cpp" line="+36"/>
         <source>The project has no modal results to animate.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4692,7 +4692,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+16"/>
         <source>FRF set %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6561,12 +6561,12 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+69"/>
         <source>whole test</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>running</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6607,7 +6607,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::SceneView</name>
     <message>
-        <location filename="../views/scene/scene_view.cpp" line="+622"/>
+        <location filename="../views/scene/scene_view.cpp" line="+627"/>
         <source>peak |u|</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6866,7 +6866,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::StabilizationPlot</name>
     <message>
-        <location filename="../views/plots/stabilization_plot.cpp" line="+178"/>
+        <location filename="../views/plots/stabilization_plot.cpp" line="+180"/>
         <source>Frequency [Hz]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6881,28 +6881,28 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>new</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+0"/>
-        <source>frequency stable</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>frequency and damping stable</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>frequency and vector stable</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
         <source>stable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>f stable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>f, d stable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>f, v stable</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

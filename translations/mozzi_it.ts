@@ -3625,7 +3625,7 @@
         <translation>sintesi</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+32"/>
         <location line="+7"/>
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
@@ -4681,7 +4681,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ModeAnimationPage</name>
     <message>
-        <location filename="../views/scene/mode_animation_page.cpp" line="+35"/>
+        <location filename="../views/scene/mode_animation_page.cpp" line="+36"/>
         <source>The project has no modal results to animate.</source>
         <translation>Il progetto non ha risultati modali da animare.</translation>
     </message>
@@ -4696,7 +4696,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>%1, modo %2</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+16"/>
         <source>FRF set %1</source>
         <translation>Insieme di FRF %1</translation>
     </message>
@@ -6566,12 +6566,12 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Impossibile leggere la prova dello pneumatico: %1</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+69"/>
         <source>whole test</source>
         <translation>intera prova</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>running</source>
         <translation>in corso</translation>
     </message>
@@ -6612,7 +6612,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::SceneView</name>
     <message>
-        <location filename="../views/scene/scene_view.cpp" line="+622"/>
+        <location filename="../views/scene/scene_view.cpp" line="+627"/>
         <source>peak |u|</source>
         <translation>|u| di picco</translation>
     </message>
@@ -6871,7 +6871,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::StabilizationPlot</name>
     <message>
-        <location filename="../views/plots/stabilization_plot.cpp" line="+178"/>
+        <location filename="../views/plots/stabilization_plot.cpp" line="+180"/>
         <source>Frequency [Hz]</source>
         <translation>Frequenza [Hz]</translation>
     </message>
@@ -6886,29 +6886,29 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>[dB]</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>new</source>
         <translation>nuovo</translation>
     </message>
     <message>
         <location line="+0"/>
-        <source>frequency stable</source>
-        <translation>stabile in frequenza</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>frequency and damping stable</source>
-        <translation>stabile in frequenza e smorzamento</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>frequency and vector stable</source>
-        <translation>stabile in frequenza e vettore</translation>
-    </message>
-    <message>
-        <location line="+0"/>
         <source>stable</source>
         <translation>stabile</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>f stable</source>
+        <translation>f stabile</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>f, d stable</source>
+        <translation>f, d stabili</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>f, v stable</source>
+        <translation>f, v stabili</translation>
     </message>
     <message>
         <location line="+2"/>

@@ -39,7 +39,7 @@ StabilizationPlot::StabilizationPlot(QWidget* parent) : InteractivePlot(parent) 
   backdrop_->setPen(QColor(90, 90, 90), 1.0);
   backdrop_->setYAxis(QwtPlot::yRight);
   backdrop_->setZ(5);
-  backdrop_->setLegendAttribute(QwtPlotCurve::LegendShowLine, true);
+  backdrop_->setItemAttribute(QwtPlotItem::Legend, false);  // the right axis's title names it
   backdrop_->attach(this);
   // Order of the status curves: New (drawn first, at the back) .. Stable.
   for (int s = 0; s <= static_cast<int>(core::modal::PoleStatus::Stable); ++s) {
@@ -58,6 +58,8 @@ StabilizationPlot::StabilizationPlot(QWidget* parent) : InteractivePlot(parent) 
   selectedCurve_->setZ(30);
   selectedCurve_->attach(this);
   connect(this, &InteractivePlot::clicked, this, &StabilizationPlot::onClicked);
+  // Short names (retranslate) in one or two rows: the long ones took four rows,
+  // a third of the panel, at 1280 x 800.
   insertLegend(new QwtLegend, QwtPlot::BottomLegend);
   retranslate();
 }
@@ -178,8 +180,9 @@ void StabilizationPlot::retranslate() {
   setAxisTitle(QwtPlot::xBottom, tr("Frequency [Hz]"));
   setAxisTitle(QwtPlot::yLeft, tr("Model order"));
   setAxisTitle(QwtPlot::yRight, backdropTitle_.isEmpty() ? tr("[dB]") : backdropTitle_);
-  const QString names[] = {tr("new"), tr("frequency stable"), tr("frequency and damping stable"),
-                           tr("frequency and vector stable"), tr("stable")};
+  // The abbreviations of modal software's diagrams: f frequency, d damping,
+  // v vector (shape) stable with the previous order.
+  const QString names[] = {tr("new"), tr("f stable"), tr("f, d stable"), tr("f, v stable"), tr("stable")};
   for (std::size_t s = 0; s < statusCurves_.size(); ++s) statusCurves_[s]->setTitle(names[s]);
   selectedCurve_->setTitle(tr("selected"));
   backdrop_->setTitle(backdropTitle_.isEmpty() ? tr("backdrop") : backdropTitle_);
