@@ -3518,7 +3518,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <source>H %1 / %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3566,19 +3566,31 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/modal/identification_kept.cpp" line="+34"/>
+        <location filename="../views/modal/identification_kept.cpp" line="+35"/>
+        <location line="+68"/>
         <location filename="../views/modal/identification_page.cpp" line="+12"/>
         <source>CMIF 1 [dB]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-68"/>
+        <location line="+68"/>
         <location filename="../views/modal/identification_page.cpp" line="+0"/>
         <source>|sum of FRFs| [dB]</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location line="-20"/>
+        <source>Stabilization diagram</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>No stabilization diagram for its band: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
     <message numerus="yes">
-        <location filename="../views/modal/identification_page.cpp" line="+21"/>
+        <location filename="../views/modal/identification_page.cpp" line="+8"/>
         <source>%n mode(s) selected automatically in %1 .. %2 Hz; click a pole to add or remove it.</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -6607,7 +6619,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::SceneView</name>
     <message>
-        <location filename="../views/scene/scene_view.cpp" line="+627"/>
+        <location filename="../views/scene/scene_view.cpp" line="+626"/>
         <source>peak |u|</source>
         <translation type="unfinished"></translation>
     </message>

@@ -3518,7 +3518,7 @@
         <translation>Impossibile leggere le finestre dell&apos;insieme di FRF %1: %2</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <source>H %1 / %2</source>
         <translation>H %1 / %2</translation>
     </message>
@@ -3566,19 +3566,31 @@
         <translation>Identificazione non riuscita: %1</translation>
     </message>
     <message>
-        <location filename="../views/modal/identification_kept.cpp" line="+34"/>
+        <location filename="../views/modal/identification_kept.cpp" line="+35"/>
+        <location line="+68"/>
         <location filename="../views/modal/identification_page.cpp" line="+12"/>
         <source>CMIF 1 [dB]</source>
         <translation>CMIF 1 [dB]</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-68"/>
+        <location line="+68"/>
         <location filename="../views/modal/identification_page.cpp" line="+0"/>
         <source>|sum of FRFs| [dB]</source>
         <translation>|somma delle FRF| [dB]</translation>
     </message>
+    <message>
+        <location line="-20"/>
+        <source>Stabilization diagram</source>
+        <translation>Diagramma di stabilizzazione</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>No stabilization diagram for its band: %1</source>
+        <translation>Nessun diagramma di stabilizzazione per la sua banda: %1</translation>
+    </message>
     <message numerus="yes">
-        <location filename="../views/modal/identification_page.cpp" line="+21"/>
+        <location filename="../views/modal/identification_page.cpp" line="+8"/>
         <source>%n mode(s) selected automatically in %1 .. %2 Hz; click a pole to add or remove it.</source>
         <translation>
             <numerusform>%n modo selezionato automaticamente in %1 .. %2 Hz; fai clic su un polo per aggiungerlo o toglierlo.</numerusform>
@@ -6612,7 +6624,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::SceneView</name>
     <message>
-        <location filename="../views/scene/scene_view.cpp" line="+627"/>
+        <location filename="../views/scene/scene_view.cpp" line="+626"/>
         <source>peak |u|</source>
         <translation>|u| di picco</translation>
     </message>

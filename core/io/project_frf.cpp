@@ -170,9 +170,8 @@ Result<FrfMatrix> ProjectStore::frfSet(std::int64_t frfSetId) const {
       } else {
         crc.add(1).bytes(sqlite3_column_blob(s, 7), static_cast<std::size_t>(sqlite3_column_bytes(s, 7)));
       }
-      const std::string frfWhere = where + ", FRF row " + std::to_string(o) + "/" + std::to_string(i) +
-                                   " (response " + std::to_string(row.int64(2)) + ", reference " +
-                                   std::to_string(row.int64(4)) + ")";
+      const std::string frfWhere = where + ", FRF row " + std::to_string(o) + "/" + std::to_string(i) + " (response " +
+                                   std::to_string(row.int64(2)) + ", reference " + std::to_string(row.int64(4)) + ")";
       MOZZI_TRY(verifyChecksum(s, 8, crc.value(), "FRF", frfWhere));
     }
     if (o < 0 || i < 0 || o >= no || i >= ni) return makeError(ErrorCode::Corrupt, "FRF index out of range", where);

@@ -1,6 +1,6 @@
 // The Identification page before a run (identification_page.h): the set's
 // backdrop on the diagram, and the project's kept modal result of the set as
-// the selection.
+// the selection, with the stabilization diagram of its band behind it.
 #include <qwt_plot.h>
 #include <QComboBox>
 #include <QSpinBox>
@@ -8,6 +8,7 @@
 #include "core/io/project_store.h"
 #include "core/modal/modal_model.h"
 #include "core/signal/window.h"
+#include "views/common/job_runner.h"
 #include "views/common/project_model.h"
 #include "views/modal/identification_page.h"
 #include "views/plots/stabilization_plot.h"
@@ -63,6 +64,68 @@ void IdentificationPage::loadKept() {
   kept_ = Kept{*latest, std::move(table).value()};
   chosen_ = std::move(poles);
   selectionIsAutomatic_ = false;
+}
+
+void IdentificationPage::drawDiagramBehindKept() {
+  const auto method = static_cast<identification::Method>(methodBox_->currentIndex());
+  if (!kept_ || !frf_ || (method != identification::Method::Plscf && method != identification::Method::Lsce)) return;
+  if (keptDiagramJob_) jobs_->cancel(keptDiagramJob_);
+  identification::Options opt;
+  opt.method = method;
+  opt.bandLowHz = kept_->info.bandLowHz;
+  opt.bandHighHz = kept_->info.bandHighHz;
+  opt.maxOrder = orderBox_->value();
+  opt.backdrop = static_cast<identification::Backdrop>(backdropBox_->currentIndex());
+  opt.refine = false;  // the diagram only: the kept modes are the selection
+  auto frf = frf_;
+  const qint64 keptId = kept_->info.id;
+  keptDiagramJob_ = jobs_->run<identification::Outcome>(
+      this, tr("Stabilization diagram"), [frf, opt](JobProgress& p) { return identification::identify(*frf, opt, p); },
+      [this, keptId](core::Result<identification::Outcome> r) { showDiagramBehindKept(keptId, std::move(r)); });
+}
+
+void IdentificationPage::showDiagramBehindKept(qint64 keptId, core::Result<identification::Outcome> result) {
+  keptDiagramJob_ = 0;
+  // Dropped when a run has replaced the kept result or another set is shown.
+  if (!kept_ || kept_->info.id != keptId || outcome_ || isRunning()) return;
+  if (!result) {
+    if (result.error().code != core::ErrorCode::Cancelled) {
+      setStatus(
+          statusText() + QLatin1Char(' ') +
+              tr("No stabilization diagram for its band: %1").arg(QString::fromStdString(result.error().describe())),
+          false);
+    }
+    return;
+  }
+  outcome_ = std::move(result).value();
+  diagram_->setDiagram(
+      outcome_->diagram, std::make_shared<const core::Vector>(frf_->frequencyHz), outcome_->backdropDb,
+      outcome_->options.backdrop == identification::Backdrop::Cmif ? tr("CMIF 1 [dB]") : tr("|sum of FRFs| [dB]"));
+  takeAutomaticSelection();
+  // Each kept mode ringed on the diagram's pole that represents it (a click
+  // there removes it); the kept pole itself stays the selection.
+  const double tolerance = identification::estimatorOptions(outcome_->options).clusterFrequencyTolerance;
+  for (Chosen& c : chosen_) {
+    if (outcome_->diagram) c.diagramIndex = md::representativePole(*outcome_->diagram, c.pole, tolerance);
+  }
+  updateSelection();
+}
+
+void IdentificationPage::takeAutomaticSelection() {
+  automatic_.clear();
+  if (!outcome_) return;
+  const md::PlscfOptions est = identification::estimatorOptions(outcome_->options);
+  for (const auto& s : outcome_->automatic) {
+    Chosen c;
+    c.pole = s.pole;
+    c.shape = s.shape;
+    if (outcome_->diagram) {
+      c.diagramIndex = md::representativePole(*outcome_->diagram, s.pole, est.clusterFrequencyTolerance);
+      if (c.diagramIndex >= 0 && c.shape.size() == 0)
+        c.shape = outcome_->diagram->poles[static_cast<std::size_t>(c.diagramIndex)].shape;
+    }
+    automatic_.push_back(c);
+  }
 }
 
 std::optional<std::pair<double, double>> IdentificationPage::selectionBand() const {

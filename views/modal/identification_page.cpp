@@ -308,6 +308,7 @@ bool IdentificationPage::setFrfSet(qint64 id) {
       setBand(kept_->info.bandLowHz, kept_->info.bandHighHz);
       diagram_->setAxisScale(QwtPlot::xBottom, kept_->info.bandLowHz, kept_->info.bandHighHz);
       diagram_->replot();
+      drawDiagramBehindKept();
     }
   }
   const QSignalBlocker block(synthesisFrfBox_);
@@ -430,20 +431,7 @@ void IdentificationPage::onFinished(core::Result<identification::Outcome> result
   diagram_->setDiagram(
       outcome_->diagram, frequency, outcome_->backdropDb,
       outcome_->options.backdrop == identification::Backdrop::Cmif ? tr("CMIF 1 [dB]") : tr("|sum of FRFs| [dB]"));
-  // The automatic selection as chosen poles: each drawn on its representative pole.
-  automatic_.clear();
-  const md::PlscfOptions est = identification::estimatorOptions(outcome_->options);
-  for (const auto& s : outcome_->automatic) {
-    Chosen c;
-    c.pole = s.pole;
-    c.shape = s.shape;
-    if (outcome_->diagram) {
-      c.diagramIndex = md::representativePole(*outcome_->diagram, s.pole, est.clusterFrequencyTolerance);
-      if (c.diagramIndex >= 0 && c.shape.size() == 0)
-        c.shape = outcome_->diagram->poles[static_cast<std::size_t>(c.diagramIndex)].shape;
-    }
-    automatic_.push_back(c);
-  }
+  takeAutomaticSelection();
   chosen_ = automatic_;
   selectionIsAutomatic_ = true;
   updateSelection();

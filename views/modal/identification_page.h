@@ -122,6 +122,13 @@ class IdentificationPage : public QWidget {
   void showBackdrop();
   // The latest modal result of the set as the selection (kept_, chosen_).
   void loadKept();
+  // The stabilization diagram of the kept result's band (pLSCF or LSCE, no
+  // refinement; a job) drawn behind its modes, each ringed on its pole: the
+  // page opens on what was identified and what it was chosen from.
+  void drawDiagramBehindKept();
+  void showDiagramBehindKept(qint64 keptId, core::Result<identification::Outcome> result);
+  // outcome_'s automatic selection, each on its representative pole.
+  void takeAutomaticSelection();
   // Band of the fit behind the selection: the run's, else the kept result's.
   std::optional<std::pair<double, double>> selectionBand() const;
   void onFinished(core::Result<identification::Outcome> result);
@@ -163,6 +170,7 @@ class IdentificationPage : public QWidget {
   std::vector<core::modal::ModalTableRow> rows_;
   std::vector<core::modal::SelectionWarning> warnings_;
   int jobId_ = 0;
+  int keptDiagramJob_ = 0;
   double diagramMs_ = 0.0, selectionMs_ = 0.0, diagramCpuMs_ = 0.0, selectionCpuMs_ = 0.0;
 
   QLabel* setLabel_ = nullptr;

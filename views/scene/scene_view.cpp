@@ -104,7 +104,6 @@ SceneView::SceneView(QWidget* parent) : QWidget(parent), pipeline_(new Pipeline)
   p.selectionActor->PickableOff();
   p.renderer->AddActor(p.selectionActor);
 
-
   p.deformedCoords->SetNumberOfComponents(3);
   p.deformedPoints->SetDataTypeToDouble();
   p.deformedPoints->SetData(p.deformedCoords);

@@ -20,7 +20,6 @@
 #include <vtkLabeledDataMapper.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
-#include <vtkSmartPointer.h>
 #include <vtkOrientationMarkerWidget.h>
 #include <vtkPointData.h>
 #include <vtkPointPicker.h>
@@ -32,6 +31,7 @@
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
+#include <vtkSmartPointer.h>
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
