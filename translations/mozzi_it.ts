@@ -3493,7 +3493,7 @@
 <context>
     <name>mozzi::views::IdentificationPage</name>
     <message>
-        <location filename="../views/modal/identification_page.cpp" line="+245"/>
+        <location filename="../views/modal/identification_page.cpp" line="+241"/>
         <source>Cannot list the FRF sets: %1</source>
         <translation>Impossibile elencare gli insiemi di FRF: %1</translation>
     </message>
@@ -3518,7 +3518,7 @@
         <translation>Impossibile leggere le finestre dell&apos;insieme di FRF %1: %2</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>H %1 / %2</source>
         <translation>H %1 / %2</translation>
     </message>
@@ -3541,7 +3541,7 @@
         </translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>Identifying %1 .. %2 Hz ...</source>
         <translation>Identificazione %1 .. %2 Hz ...</translation>
     </message>
@@ -3556,7 +3556,7 @@
         <translation>Identificazione: %1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Identification cancelled.</source>
         <translation>Identificazione annullata.</translation>
     </message>
@@ -3566,31 +3566,29 @@
         <translation>Identificazione non riuscita: %1</translation>
     </message>
     <message>
-        <location filename="../views/modal/identification_kept.cpp" line="+35"/>
-        <location line="+68"/>
-        <location filename="../views/modal/identification_page.cpp" line="+12"/>
+        <location filename="../views/modal/identification_kept.cpp" line="+37"/>
+        <location line="+108"/>
         <source>CMIF 1 [dB]</source>
         <translation>CMIF 1 [dB]</translation>
     </message>
     <message>
-        <location line="-68"/>
-        <location line="+68"/>
-        <location filename="../views/modal/identification_page.cpp" line="+0"/>
+        <location line="-108"/>
+        <location line="+108"/>
         <source>|sum of FRFs| [dB]</source>
         <translation>|somma delle FRF| [dB]</translation>
     </message>
     <message>
-        <location line="-20"/>
+        <location line="-46"/>
         <source>Stabilization diagram</source>
         <translation>Diagramma di stabilizzazione</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <source>No stabilization diagram for its band: %1</source>
-        <translation>Nessun diagramma di stabilizzazione per la sua banda: %1</translation>
+        <location line="+20"/>
+        <source>No stabilization diagram for the kept band of FRF set %1: %2</source>
+        <translation>Nessun diagramma di stabilizzazione per la banda conservata dell&apos;insieme di FRF %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/modal/identification_page.cpp" line="+8"/>
+        <location filename="../views/modal/identification_page.cpp" line="+17"/>
         <source>%n mode(s) selected automatically in %1 .. %2 Hz; click a pole to add or remove it.</source>
         <translation>
             <numerusform>%n modo selezionato automaticamente in %1 .. %2 Hz; fai clic su un polo per aggiungerlo o toglierlo.</numerusform>

@@ -126,23 +126,6 @@ Result<FrfMatrix> ProjectStore::frfSet(std::int64_t frfSetId) const {
     MOZZI_TRY_ASSIGN(auto f, columnDoubles(stmt.get(), 2, lines, where + ", frequencies"));
     frf.frequencyHz = Eigen::Map<const Vector>(f.data(), lines);
   }
-  // The matrix's shape first, from the covering UNIQUE index, so that each
-  // row's blobs are decoded straight into their column (no copy per row).
-  std::int64_t no = 0, ni = 0;
-  {
-    sql::Statement shape(db_,
-                         "SELECT count(*), max(response_index), max(reference_index) FROM frf WHERE frf_set_id = ?1");
-    MOZZI_TRY(shape.bindAll(frfSetId).single("cannot read FRFs", "no FRF", where));
-    const std::int64_t rowCount = sqlite3_column_int64(shape.get(), 0);
-    no = sqlite3_column_int64(shape.get(), 1) + 1;
-    ni = sqlite3_column_int64(shape.get(), 2) + 1;
-    if (rowCount > 0 && (no <= 0 || ni <= 0 || no > 1 << 20 || ni > 1 << 20)) {
-      return makeError(ErrorCode::Corrupt, "FRF index out of range", where);
-    }
-    if (rowCount == 0 || rowCount != no * ni) {
-      return makeError(ErrorCode::Corrupt, "the FRF set is not a full responses x references matrix", where);
-    }
-  }
   // In the order of the UNIQUE (frf_set_id, response_index, reference_index)
   // index: SQLite walks it rather than sorting the FRF blobs in a temporary
   // b-tree (on the demo's 180 FRFs x 3201 lines that sort spilled to disk).
@@ -151,6 +134,51 @@ Result<FrfMatrix> ProjectStore::frfSet(std::int64_t frfSetId) const {
                       " reference_direction, h, coherence, " +
                           crcColumn("content_crc32") +
                           " FROM frf WHERE frf_set_id = ?1 ORDER BY response_index, reference_index");
+  // A row's checksum over its indices, DOFs and blobs: a damaged value is
+  // named by its row, whatever else it breaks.
+  auto verifyRow = [&](const sql::Row& row) -> Result<void> {
+    sqlite3_stmt* const s = row.get();
+    ContentCrc crc;
+    crc.add(frfSetId);
+    for (int c = 0; c < 6; ++c) crc.add(row.int64(c));
+    crc.bytes(sqlite3_column_blob(s, 6), static_cast<std::size_t>(sqlite3_column_bytes(s, 6)));
+    if (row.isNull(7)) {
+      crc.add(0);
+    } else {
+      crc.add(1).bytes(sqlite3_column_blob(s, 7), static_cast<std::size_t>(sqlite3_column_bytes(s, 7)));
+    }
+    const std::string frfWhere = where + ", FRF row " + std::to_string(row.int64(0)) + "/" +
+                                 std::to_string(row.int64(1)) + " (response " + std::to_string(row.int64(2)) +
+                                 ", reference " + std::to_string(row.int64(4)) + ")";
+    return verifyChecksum(s, 8, crc.value(), "FRF", frfWhere);
+  };
+  // A set whose shape is wrong: a damaged row's checksum names it, else the
+  // shape is the error.
+  auto shapeError = [&](const std::string& message) -> Error {
+    stmt.reset();
+    auto checked = stmt.bindAll(frfSetId).forEachRow("cannot read FRFs", where, verifyRow);
+    return checked ? Error{ErrorCode::Corrupt, message, where} : checked.error();
+  };
+  // The matrix's shape first, from the covering UNIQUE index, so that each
+  // row's blobs are decoded straight into their column (no copy per row).
+  std::int64_t no = 0, ni = 0;
+  {
+    sql::Statement shape(db_,
+                         "SELECT count(*), max(response_index), max(reference_index) FROM frf WHERE frf_set_id = ?1");
+    MOZZI_TRY(shape.bindAll(frfSetId).single("cannot read FRFs", "no FRF", where));
+    const std::int64_t rowCount = sqlite3_column_int64(shape.get(), 0);
+    const std::int64_t lastResponse = sqlite3_column_int64(shape.get(), 1);
+    const std::int64_t lastReference = sqlite3_column_int64(shape.get(), 2);
+    if (rowCount > 0 &&
+        (lastResponse < 0 || lastReference < 0 || lastResponse >= 1 << 20 || lastReference >= 1 << 20)) {
+      return shapeError("FRF index out of range");
+    }
+    no = lastResponse + 1;
+    ni = lastReference + 1;
+    if (rowCount == 0 || rowCount != no * ni) {
+      return shapeError("the FRF set is not a full responses x references matrix");
+    }
+  }
   frf.responses.resize(static_cast<std::size_t>(no));
   frf.references.resize(static_cast<std::size_t>(ni));
   // no * ni rows with every (o, i) below (no, ni): each appears once unless one
@@ -160,20 +188,7 @@ Result<FrfMatrix> ProjectStore::frfSet(std::int64_t frfSetId) const {
   auto readRow = [&](const sql::Row& row) -> Result<void> {
     sqlite3_stmt* const s = row.get();
     const std::int64_t o = row.int64(0), i = row.int64(1);
-    {
-      ContentCrc crc;
-      crc.add(frfSetId);
-      for (int c = 0; c < 6; ++c) crc.add(row.int64(c));
-      crc.bytes(sqlite3_column_blob(s, 6), static_cast<std::size_t>(sqlite3_column_bytes(s, 6)));
-      if (row.isNull(7)) {
-        crc.add(0);
-      } else {
-        crc.add(1).bytes(sqlite3_column_blob(s, 7), static_cast<std::size_t>(sqlite3_column_bytes(s, 7)));
-      }
-      const std::string frfWhere = where + ", FRF row " + std::to_string(o) + "/" + std::to_string(i) + " (response " +
-                                   std::to_string(row.int64(2)) + ", reference " + std::to_string(row.int64(4)) + ")";
-      MOZZI_TRY(verifyChecksum(s, 8, crc.value(), "FRF", frfWhere));
-    }
+    MOZZI_TRY(verifyRow(row));
     if (o < 0 || i < 0 || o >= no || i >= ni) return makeError(ErrorCode::Corrupt, "FRF index out of range", where);
     const auto cell = static_cast<std::size_t>(o * ni + i);
     if (seen[cell]) {

@@ -4,7 +4,7 @@
 // frame's shape: 3 accelerometers x 60 hammer points x 3201 lines (9.2 MB of
 // FRFs), and a 100 x 1 x 20,000 one as in issue 19.
 //
-//   build/test/bench/project_read_bench --benchmark_min_time=1
+//   build/test/tests/project_read_bench --benchmark_min_time=1
 //
 // Each iteration reads the whole set: SQL, checksums, decoding into the
 // matrices; the file is in the page cache after the first iteration.
@@ -63,5 +63,3 @@ void readFrfSet(benchmark::State& state) {
 BENCHMARK(readFrfSet)->Args({3, 60, 3201})->Args({100, 1, 20000})->Unit(benchmark::kMillisecond);
 
 }  // namespace
-
-BENCHMARK_MAIN();

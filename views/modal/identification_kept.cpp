@@ -4,9 +4,11 @@
 #include <qwt_plot.h>
 #include <QComboBox>
 #include <QSpinBox>
+#include <algorithm>
 
 #include "core/io/project_store.h"
 #include "core/modal/modal_model.h"
+#include "core/modal/plscf.h"
 #include "core/signal/window.h"
 #include "views/common/job_runner.h"
 #include "views/common/project_model.h"
@@ -67,47 +69,100 @@ void IdentificationPage::loadKept() {
 }
 
 void IdentificationPage::drawDiagramBehindKept() {
-  const auto method = static_cast<identification::Method>(methodBox_->currentIndex());
-  if (!kept_ || !frf_ || (method != identification::Method::Plscf && method != identification::Method::Lsce)) return;
-  if (keptDiagramJob_) jobs_->cancel(keptDiagramJob_);
+  cancelKeptDiagram();
+  if (!kept_ || !frf_) return;
+  // The kept result's own method (a selection saved from it is that method's);
+  // peak picking and circle fit draw no diagram.
+  using identification::Method;
+  Method method = Method::Plscf;
+  if (kept_->info.method == identification::storedMethodName(Method::Lsce)) {
+    method = Method::Lsce;
+  } else if (kept_->info.method != identification::storedMethodName(Method::Plscf)) {
+    return;
+  }
+  setMethod(method);  // the box shows it, as the band boxes show the kept band
   identification::Options opt;
   opt.method = method;
   opt.bandLowHz = kept_->info.bandLowHz;
   opt.bandHighHz = kept_->info.bandHighHz;
-  opt.maxOrder = orderBox_->value();
+  // As the CLI's default order: capped at what a narrow band's lines support.
+  opt.maxOrder =
+      method == Method::Plscf
+          ? std::min(orderBox_->value(), std::max(8, md::plscfOrderLimit(*frf_, opt.bandLowHz, opt.bandHighHz)))
+          : orderBox_->value();
   opt.backdrop = static_cast<identification::Backdrop>(backdropBox_->currentIndex());
   opt.refine = false;  // the diagram only: the kept modes are the selection
   auto frf = frf_;
   const qint64 keptId = kept_->info.id;
-  keptDiagramJob_ = jobs_->run<identification::Outcome>(
+  auto job = std::make_shared<int>(0);
+  *job = jobs_->run<identification::Outcome>(
       this, tr("Stabilization diagram"), [frf, opt](JobProgress& p) { return identification::identify(*frf, opt, p); },
-      [this, keptId](core::Result<identification::Outcome> r) { showDiagramBehindKept(keptId, std::move(r)); });
+      [this, keptId, job](core::Result<identification::Outcome> r) {
+        if (keptDiagramJob_ != *job) return;  // a job cancelled since (another took its place)
+        keptDiagramJob_ = 0;
+        showDiagramBehindKept(keptId, std::move(r));
+      });
+  keptDiagramJob_ = *job;
+}
+
+void IdentificationPage::cancelKeptDiagram() {
+  if (keptDiagramJob_) jobs_->cancel(keptDiagramJob_);
+  keptDiagramJob_ = 0;
 }
 
 void IdentificationPage::showDiagramBehindKept(qint64 keptId, core::Result<identification::Outcome> result) {
-  keptDiagramJob_ = 0;
   // Dropped when a run has replaced the kept result or another set is shown.
   if (!kept_ || kept_->info.id != keptId || outcome_ || isRunning()) return;
   if (!result) {
     if (result.error().code != core::ErrorCode::Cancelled) {
-      setStatus(
-          statusText() + QLatin1Char(' ') +
-              tr("No stabilization diagram for its band: %1").arg(QString::fromStdString(result.error().describe())),
-          false);
+      if (log_) {
+        log_(tr("No stabilization diagram for the kept band of FRF set %1: %2")
+                 .arg(frfSetId_)
+                 .arg(QString::fromStdString(result.error().describe())));
+      }
     }
     return;
   }
   outcome_ = std::move(result).value();
+  showOutcomeDiagram();
+  takeAutomaticSelection();
+  // Each kept mode ringed on the diagram's pole that represents it (a click
+  // there removes it; its shape makes the same-mode warning work); the kept
+  // pole itself stays the selection.
+  const double tolerance = identification::estimatorOptions(outcome_->options).clusterFrequencyTolerance;
+  for (Chosen& c : chosen_) {
+    if (!outcome_->diagram) continue;
+    c.diagramIndex = md::representativePole(*outcome_->diagram, c.pole, tolerance);
+    if (c.diagramIndex >= 0 && c.shape.size() == 0)
+      c.shape = outcome_->diagram->poles[static_cast<std::size_t>(c.diagramIndex)].shape;
+  }
+  updateSelection();
+}
+
+void IdentificationPage::showOutcomeDiagram() {
   diagram_->setDiagram(
       outcome_->diagram, std::make_shared<const core::Vector>(frf_->frequencyHz), outcome_->backdropDb,
       outcome_->options.backdrop == identification::Backdrop::Cmif ? tr("CMIF 1 [dB]") : tr("|sum of FRFs| [dB]"));
-  takeAutomaticSelection();
-  // Each kept mode ringed on the diagram's pole that represents it (a click
-  // there removes it); the kept pole itself stays the selection.
-  const double tolerance = identification::estimatorOptions(outcome_->options).clusterFrequencyTolerance;
-  for (Chosen& c : chosen_) {
-    if (outcome_->diagram) c.diagramIndex = md::representativePole(*outcome_->diagram, c.pole, tolerance);
+}
+
+void IdentificationPage::changeBackdrop() {
+  if (!frf_) return;
+  const auto kind = static_cast<identification::Backdrop>(backdropBox_->currentIndex());
+  if (keptDiagramJob_) {
+    drawDiagramBehindKept();  // again, over the new curve
+  } else if (kept_ && outcome_ && outcome_->options.backdrop != kind) {
+    // The diagram behind the kept result: the chosen curve under it, the selection kept.
+    auto db = identification::backdropDb(*frf_, kind);
+    if (!db) return;
+    outcome_->backdropDb = std::move(db);
+    outcome_->options.backdrop = kind;
+    showOutcomeDiagram();
+    updateSelection();
+    return;
   }
+  if (outcome_) return;  // after a run the choice is for the next one
+  showBackdrop();
+  if (kept_) diagram_->setAxisScale(QwtPlot::xBottom, kept_->info.bandLowHz, kept_->info.bandHighHz);
   updateSelection();
 }
 

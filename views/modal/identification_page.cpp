@@ -220,11 +220,7 @@ IdentificationPage::IdentificationPage(const PageContext& ctx) : QWidget(ctx.par
   });
   connect(synthesisFrfBox_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] { showSynthesis(); });
   // Before a run the backdrop follows the choice at once.
-  connect(backdropBox_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] {
-    if (outcome_ || !frf_) return;
-    showBackdrop();
-    updateSelection();
-  });
+  connect(backdropBox_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] { changeBackdrop(); });
   connect(tabs_, &QTabWidget::currentChanged, this, [this] { showTabs(); });
   connect(model_, &ProjectModel::frfSetsChanged, this, &IdentificationPage::reloadSets);
   connect(model_, &ProjectModel::projectChanged, this, &IdentificationPage::reloadSets);
@@ -293,6 +289,7 @@ bool IdentificationPage::setFrfSet(qint64 id) {
     if (i >= 0) setBox_->setCurrentIndex(i);
   }
   if (!same) {
+    cancelKeptDiagram();
     // The whole set as the band until the user narrows it (0 Hz excluded: no
     // mode there), or the kept identification's band.
     const double f0 = frf_->frequencyHz[0] > 0.0 ? frf_->frequencyHz[0] : frf_->frequencyHz[1];
@@ -382,6 +379,7 @@ bool IdentificationPage::isRunning() const {
 
 void IdentificationPage::run() {
   if (!frf_ || isRunning()) return;
+  cancelKeptDiagram();  // the run replaces what it would draw
   identification::Options opt;
   opt.method = static_cast<Method>(methodBox_->currentIndex());
   opt.bandLowHz = lowBox_->value();
@@ -405,6 +403,7 @@ void IdentificationPage::run() {
 
 void IdentificationPage::cancel() {
   if (jobId_) jobs_->cancel(jobId_);
+  cancelKeptDiagram();
 }
 
 void IdentificationPage::onFinished(core::Result<identification::Outcome> result) {
@@ -427,10 +426,7 @@ void IdentificationPage::onFinished(core::Result<identification::Outcome> result
   outcome_ = std::move(result).value();
   kept_.reset();    // the run replaces the kept identification
   fitter_.reset();  // the band may have changed
-  auto frequency = std::make_shared<const core::Vector>(frf_->frequencyHz);
-  diagram_->setDiagram(
-      outcome_->diagram, frequency, outcome_->backdropDb,
-      outcome_->options.backdrop == identification::Backdrop::Cmif ? tr("CMIF 1 [dB]") : tr("|sum of FRFs| [dB]"));
+  showOutcomeDiagram();
   takeAutomaticSelection();
   chosen_ = automatic_;
   selectionIsAutomatic_ = true;

@@ -11,7 +11,8 @@
 // warning. Save stores the selection, refined as the CLI refines, as a modal
 // result of the project. Opened on a set, before any run, the diagram shows
 // the set's sum (or CMIF) and, when the project keeps a modal result
-// identified from the set, its modes as the selection with their synthesis.
+// identified from the set, its modes as the selection with their synthesis,
+// then the stabilization diagram of its band behind them (a job).
 // All numbers come from core through identification_backend.h.
 
 #include <QWidget>
@@ -126,7 +127,12 @@ class IdentificationPage : public QWidget {
   // refinement; a job) drawn behind its modes, each ringed on its pole: the
   // page opens on what was identified and what it was chosen from.
   void drawDiagramBehindKept();
+  void cancelKeptDiagram();
   void showDiagramBehindKept(qint64 keptId, core::Result<identification::Outcome> result);
+  // outcome_'s diagram over its backdrop.
+  void showOutcomeDiagram();
+  // The Over box changed: the backdrop before a run or behind the kept result.
+  void changeBackdrop();
   // outcome_'s automatic selection, each on its representative pole.
   void takeAutomaticSelection();
   // Band of the fit behind the selection: the run's, else the kept result's.

@@ -328,6 +328,45 @@ TEST_F(ProjectIntegrityTest, ReadOnlyFolderProjectOpensAndLeavesNoFiles) {
 
 // A schema-1 project (before checksums) still opens read-only; its records
 // are read but counted as unchecked.
+// An FRF set whose rows do not make a full matrix is refused, naming what is
+// wrong: a damaged index by its row's checksum, else the shape.
+TEST_F(ProjectIntegrityTest, AnFrfSetOfTheWrongShapeIsRefusedNamingWhatIsWrong) {
+  const auto readAfter = [&](const std::string& name, const std::string& damage) {
+    const std::string path = file(name);
+    std::int64_t set = 0;
+    {
+      auto store = ProjectStore::create(path, "test");
+      EXPECT_TRUE(store.ok());
+      set = fill(*store).frfSet;
+    }
+    sql(path, damage);
+    auto store = ProjectStore::open(path, ProjectStore::OpenMode::ReadOnly);
+    EXPECT_TRUE(store.ok());
+    return store->frfSet(set);
+  };
+  // The set is 2 responses x 1 reference with coherence (sampleFrf).
+  auto moved = readAfter("moved.mozzi", "UPDATE frf SET response_index = 5 WHERE response_index = 1;");
+  ASSERT_FALSE(moved.ok());
+  EXPECT_NE(moved.error().message.find("checksum mismatch"), std::string::npos) << moved.error().describe();
+  EXPECT_NE(moved.error().where.find("FRF row 5/0"), std::string::npos) << moved.error().where;
+  auto missing = readAfter("missing.mozzi", "DELETE FROM frf WHERE response_index = 0;");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_EQ(missing.error().code, ErrorCode::Corrupt);
+  EXPECT_NE(missing.error().message.find("not a full responses x references matrix"), std::string::npos)
+      << missing.error().describe();
+  // Rows without checksums (an older file): the checks on the values themselves.
+  auto noCoherence =
+      readAfter("coherence.mozzi", "UPDATE frf SET coherence = NULL, content_crc32 = NULL WHERE response_index = 1;");
+  ASSERT_FALSE(noCoherence.ok());
+  EXPECT_NE(noCoherence.error().message.find("coherence missing for some FRFs"), std::string::npos)
+      << noCoherence.error().describe();
+  auto huge = readAfter("huge.mozzi",
+                        "UPDATE frf SET response_index = 9223372036854775807, content_crc32 = NULL"
+                        " WHERE response_index = 1;");
+  ASSERT_FALSE(huge.ok());
+  EXPECT_NE(huge.error().message.find("FRF index out of range"), std::string::npos) << huge.error().describe();
+}
+
 TEST_F(ProjectIntegrityTest, OlderSchemaReadsWithoutChecksums) {
   const std::string path = file("old.mozzi");
   {

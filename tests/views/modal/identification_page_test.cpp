@@ -11,6 +11,7 @@
 
 #include <qwt_plot_canvas.h>
 #include <QApplication>
+#include <QComboBox>
 #include <QDir>
 #include <QProcess>
 #include <QPushButton>
@@ -30,6 +31,7 @@
 #include "devices/sim/specimen_models.h"
 #include "views/common/job_runner.h"
 #include "views/common/project_model.h"
+#include "views/plots/decimating_curve.h"
 #include "views/plots/frf_plot.h"
 #include "views/plots/interactive_plot.h"
 #include "views/plots/mac_plot.h"
@@ -504,6 +506,69 @@ class IdentificationPageTest : public QObject {
     // is held to twice the budget.
     QVERIFY2(median(all) <= 50.0, qPrintable(QStringLiteral("median %1 ms").arg(median(all))));
     QVERIFY2(max(all) <= 100.0, qPrintable(QStringLiteral("%1 ms").arg(max(all))));
+  }
+
+  // A kept LSCE result: the page opened on its set shows it over an LSCE
+  // diagram of its band (the method box follows the kept result, so a
+  // selection saved from it is LSCE), each mode ringed on a pole; the Over box
+  // redraws the curve under it and keeps the selection. A kept peak-picking
+  // result has no diagram behind it.
+  void keptResultShownOverItsOwnMethodsDiagram() {
+    const ForkSet fork = forkSet();
+    const auto keep = [&](const std::string& name, const std::string& method) -> qint64 {
+      core::io::FrfSetInfo info;
+      info.specimenId = specimen_;
+      info.name = name;
+      auto set = model_.addFrfSet(info, fork.frf);
+      if (!set.ok()) return 0;
+      core::io::ModalResultInfo kept;
+      kept.specimenId = specimen_;
+      kept.frfSetId = *set;
+      kept.name = name + " modes";
+      kept.method = method;
+      kept.bandLowHz = 15.0;
+      kept.bandHighHz = 80.0;
+      core::io::ModalTable table;
+      for (std::size_t r = 0; r < 3; ++r) table.modes.push_back({fork.spec.frequencyHz[r], fork.spec.zeta[r], {}});
+      return model_.addModalResult(kept, table).ok() ? *set : 0;
+    };
+    const qint64 lsceSet = keep("fork kept LSCE", "LSCE");
+    QVERIFY(lsceSet > 0);
+    views::PageContext ctx;
+    ctx.model = &model_;
+    ctx.jobs = &jobs_;
+    ctx.item = views::ProjectItem{views::RecordKind::FrfSet, lsceSet, specimen_};
+    views::IdentificationPage page(ctx);
+    page.resize(1280, 800);
+    page.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&page));
+    QVERIFY(page.keptResult());
+    QTRY_VERIFY_WITH_TIMEOUT(page.diagramPlot()->drawnPoleCount() > 0, 300000);
+    QVERIFY(page.outcome());
+    QCOMPARE(page.outcome()->options.method, views::identification::Method::Lsce);
+    QCOMPARE(page.findChild<QComboBox*>(QStringLiteral("identificationMethod"))->currentIndex(),
+             static_cast<int>(views::identification::Method::Lsce));
+    const auto ringed = page.diagramPlot()->selection();
+    QCOMPARE(ringed.size(), size_t(3));
+    for (int index : ringed) QVERIFY(index >= 0);
+    const std::size_t sumLines = page.diagramPlot()->backdropCurve()->dataSize();
+    const double sumFirst = page.diagramPlot()->backdropCurve()->sample(0).y();
+    page.setBackdrop(views::identification::Backdrop::Cmif);
+    QCOMPARE(page.outcome()->options.backdrop, views::identification::Backdrop::Cmif);
+    QCOMPARE(page.diagramPlot()->backdropCurve()->dataSize(), sumLines);      // the same band
+    QVERIFY(page.diagramPlot()->backdropCurve()->sample(0).y() != sumFirst);  // another curve
+    QCOMPARE(page.diagramPlot()->selection(), ringed);
+    QCOMPARE(page.tableRows().size(), size_t(3));
+
+    const qint64 peakSet = keep("fork kept peak", "peak picking");
+    QVERIFY(peakSet > 0);
+    QVERIFY(page.setFrfSet(peakSet));
+    QVERIFY(page.keptResult());
+    QTRY_VERIFY_WITH_TIMEOUT(!jobs_.isRunning(), 300000);
+    QTest::qWait(50);  // a result posted by a finished job is delivered
+    QCOMPARE(page.diagramPlot()->drawnPoleCount(), 0);
+    QVERIFY(!page.outcome());
+    QCOMPARE(page.tableRows().size(), size_t(3));
   }
 
  private:
