@@ -70,7 +70,7 @@ void IdentificationPage::loadKept() {
 
 void IdentificationPage::drawDiagramBehindKept() {
   cancelKeptDiagram();
-  if (!kept_ || !frf_) return;
+  if (!kept_ || !frf_ || outcome_ || isRunning()) return;  // a run has replaced it or will
   // The kept result's own method (a selection saved from it is that method's);
   // peak picking and circle fit draw no diagram.
   using identification::Method;
