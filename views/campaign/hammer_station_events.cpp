@@ -223,7 +223,8 @@ void HammerStationPage::onProgress(const cp::EngineProgress& p) {
   current_ = p.current;
   if (pointChanged) updateHitMarker();
   state_ = p.state;
-  station_->setText(tr("Station: %1").arg(QString::fromStdString(p.device)));
+  stationDevice_ = QString::fromStdString(p.device);
+  station_->setText(tr("Station: %1").arg(stationDevice_));
   const auto& s = p.schedule;
   progress_->setValue(static_cast<int>(std::lround(s.fraction() * 1000.0)));
   progress_->setFormat(tr("%1 of %2 points").arg(s.pointsDone + s.pointsSkipped).arg(s.pointCount));
@@ -328,13 +329,15 @@ void HammerStationPage::retranslate() {
     // is longer than the traces are high at 1280x800.
     setAxisText(traces_, QwtPlot::yRight, tr("[%1]", "right axis of the hit traces: the response's unit").arg(unit));
   }
-  if (traces_->axisTitle(QwtPlot::yLeft).isEmpty()) setAxisText(traces_, QwtPlot::yLeft, tr("Force [N]"));
-  if (traces_->axisTitle(QwtPlot::xBottom).isEmpty())
-    setAxisText(traces_, QwtPlot::xBottom, tr("Time since arming [s]"));
+  // Every text from its state, not "if still empty": a text set in one
+  // language must change with the next.
+  setAxisText(traces_, QwtPlot::yLeft, tr("Force [%1]").arg(forceUnit_));
+  setAxisText(traces_, QwtPlot::xBottom,
+              showingRecord_ ? tr("Time in the hit's record [s]") : tr("Time since arming [s]"));
   if (!state_) stateLabel_->setText(session_->isRunning() ? QString() : tr("Not started: choose a campaign, press F5"));
-  if (station_->text().isEmpty()) station_->setText(tr("Station: not connected"));
+  station_->setText(stationDevice_.isEmpty() ? tr("Station: not connected") : tr("Station: %1").arg(stationDevice_));
   frfHint_->setText(tr("The running FRF and coherence of the point appear after its first accepted hit."));
-  if (pointTitle_->text().isEmpty()) pointTitle_->setText(tr("No point yet"));
+  if (!lastProgress_) pointTitle_->setText(tr("No point yet"));  // no campaign has run here yet
   if (verdictHeadline_.isEmpty()) verdictDetail_->setText(tr("The verdict of each hit appears here."));
 }
 

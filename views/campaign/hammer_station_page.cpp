@@ -514,9 +514,8 @@ bool HammerStationPage::startCampaign() {
     responseChannel_->addItem(QString::fromStdString(def.channels[c].name));
     responseUnits_ << QString::fromStdString(def.channels[c].transducer.unit);
   }
-  setAxisText(traces_, QwtPlot::yLeft,
-              tr("Force [%1]")
-                  .arg(QString::fromStdString(def.channels[static_cast<std::size_t>(forceChannel_)].transducer.unit)));
+  forceUnit_ = QString::fromStdString(def.channels[static_cast<std::size_t>(forceChannel_)].transducer.unit);
+  setAxisText(traces_, QwtPlot::yLeft, tr("Force [%1]").arg(forceUnit_));
   frf_->setFrfs(nullptr);
   frfStack_->setCurrentWidget(frfHint_);
   showingRecord_ = false;

@@ -163,6 +163,10 @@ class HammerStationPage : public QWidget {
   std::optional<devices::campaign::EngineProgress> lastProgress_;
   std::uint64_t shownGeneration_ = 0;
   bool showingRecord_ = false;
+  // What the language-dependent texts are built from (retranslate): the force
+  // channel's unit and the station's device, empty until a campaign runs.
+  QString forceUnit_ = QStringLiteral("N");
+  QString stationDevice_;
   int traceRefreshes_ = 0;
   int forceChannel_ = 0;
   std::vector<int> responseChannels_;

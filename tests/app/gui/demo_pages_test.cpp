@@ -83,6 +83,7 @@ class DemoPagesTest : public QObject {
   void rigAndReviewPagesFitTheTabArea();
   void rigPagesPlotTheDemosStoredTestsOnOpen();
   void stiffnessRigStatusFollowsTheLanguage();
+  void hammerStationFollowsTheLanguage();
 
  private:
   // Opens page `id` as the Overview's start list does, and the checks' screenshot afterwards.
@@ -747,6 +748,29 @@ void DemoPagesTest::stiffnessRigStatusFollowsTheLanguage() {
   // The stored test's table follows too: the whole-test rows say so in English.
   QVERIFY(stiff->resultsTable()->rowCount() > 0);
   QCOMPARE(stiff->resultsTable()->item(0, 0)->text(), QStringLiteral("whole test"));  // whole-test rows first
+}
+
+// The Hammer Station's texts made in one language change with the next: its
+// force axis, station line and point title kept the first language's words
+// ("Forza [N]" in an English page).
+void DemoPagesTest::hammerStationFollowsTheLanguage() {
+  openDemoAt1280WithTheDock();
+  QWidget* page = window_->openPage(QStringLiteral("hammer-station"));
+  QVERIFY(page);
+  auto* traces = page->findChild<QwtPlot*>(QStringLiteral("hammerTraces"));
+  auto* station = page->findChild<QLabel*>(QStringLiteral("hammerStation"));
+  auto* point = page->findChild<QLabel*>(QStringLiteral("hammerPointTitle"));
+  QVERIFY(traces && station && point);
+  for (const QString& language : {QStringLiteral("it"), QStringLiteral("en"), QStringLiteral("it")}) {
+    QVERIFY(window_->setLanguage(language));
+    const bool it = language == QStringLiteral("it");
+    QTRY_COMPARE(traces->axisTitle(QwtPlot::yLeft).text(),
+                 it ? QStringLiteral("Forza [N]") : QStringLiteral("Force [N]"));
+    QCOMPARE(station->text(),
+             it ? QStringLiteral("Stazione: non collegata") : QStringLiteral("Station: not connected"));
+    QCOMPARE(point->text(), it ? QStringLiteral("Ancora nessun punto") : QStringLiteral("No point yet"));
+  }
+  QVERIFY(window_->setLanguage(QStringLiteral("en")));
 }
 
 int main(int argc, char** argv) {
