@@ -114,12 +114,10 @@ void IdentificationPage::showDiagramBehindKept(qint64 keptId, core::Result<ident
   // Dropped when a run has replaced the kept result or another set is shown.
   if (!kept_ || kept_->info.id != keptId || outcome_ || isRunning()) return;
   if (!result) {
-    if (result.error().code != core::ErrorCode::Cancelled) {
-      if (log_) {
-        log_(tr("No stabilization diagram for the kept band of FRF set %1: %2")
-                 .arg(frfSetId_)
-                 .arg(QString::fromStdString(result.error().describe())));
-      }
+    if (log_ && result.error().code != core::ErrorCode::Cancelled) {
+      log_(tr("No stabilization diagram for the kept band of FRF set %1: %2")
+               .arg(frfSetId_)
+               .arg(QString::fromStdString(result.error().describe())));
     }
     return;
   }
