@@ -18,6 +18,7 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <limits>
 
 #include "core/common/text.h"
 #include "core/stability/benchmark_bicycle.h"
@@ -403,17 +404,12 @@ void StabilityPage::present(core::Result<Sweeps> result, bool keepIt, bool fromS
   zero->attach(real_);
   markers_.push_back(zero);
   QStringList lines, rigidLines;
-  drawSweep(*sweep_, false, lines);
-  if (rigidSweep_) drawSweep(*rigidSweep_, true, rigidLines);
-  for (QwtPlotItem* item : imaginary_->itemList(QwtPlotItem::Rtti_PlotCurve))
-    item->setItemAttribute(QwtPlotItem::Legend, false);
   // Re from -15 1/s up: the question is the sign near zero; castering and
   // the fork modes reach far below and would flatten the weave and capsize.
-  double reMax = 1.0;
-  for (QwtPlotItem* item : real_->itemList(QwtPlotItem::Rtti_PlotCurve)) {
-    const auto* c = static_cast<QwtPlotCurve*>(item);
-    for (size_t i = 0; i < c->dataSize(); ++i) reMax = std::max(reMax, c->sample(static_cast<int>(i)).y());
-  }
+  double reMax = std::max(1.0, drawSweep(*sweep_, false, lines));
+  if (rigidSweep_) reMax = std::max(reMax, drawSweep(*rigidSweep_, true, rigidLines));
+  for (QwtPlotItem* item : imaginary_->itemList(QwtPlotItem::Rtti_PlotCurve))
+    item->setItemAttribute(QwtPlotItem::Legend, false);
   real_->setAxisScale(QwtPlot::yLeft, -15.0, std::min(reMax * 1.1, 15.0));
   real_->setAxisScale(QwtPlot::xBottom, sweep_->points.front().v, sweep_->points.back().v);
   imaginary_->setAxisScale(QwtPlot::xBottom, sweep_->points.front().v, sweep_->points.back().v);
@@ -434,33 +430,51 @@ void StabilityPage::present(core::Result<Sweeps> result, bool keepIt, bool fromS
 
 // One sweep's curves and critical-speed markers. The rigid-fork sweep of a
 // comparison: open symbols, dotted markers, names "... (rigid fork)".
-void StabilityPage::drawSweep(const st::StabilitySweep& sweep, bool rigid, QStringList& lines) {
+double StabilityPage::drawSweep(const st::StabilitySweep& sweep, bool rigid, QStringList& lines) {
   // One curve per mode name and plot: points (the tracks cross and pair up,
-  // so lines between named samples would join different roots).
-  QMap<QString, QVector<QPointF>> re, im;
+  // so lines between named samples would join different roots). Grouped by
+  // the name as core spells it, the QString made once per track: 10,000
+  // speeds of a dozen roots redraw within a frame.
+  struct Track {
+    const std::string* name;
+    QVector<QPointF> re, im;
+  };
+  std::vector<Track> tracks;
+  double reMax = -std::numeric_limits<double>::infinity();
   for (const auto& point : sweep.points)
-    for (const auto& root : point.roots) {
-      const QString name = QString::fromStdString(root.name);
-      re[name].append(QPointF(point.v, root.lambda.real()));
-      if (root.lambda.imag() > 0.0) im[name].append(QPointF(point.v, root.lambda.imag()));
+    for (size_t k = 0; k < point.roots.size(); ++k) {
+      const auto& root = point.roots[k];
+      // Roots keep their order from speed to speed: the k-th track is the first guess.
+      size_t t = k < tracks.size() && *tracks[k].name == root.name ? k : 0;
+      while (t < tracks.size() && *tracks[t].name != root.name) ++t;
+      if (t == tracks.size()) {
+        tracks.push_back({&root.name, {}, {}});
+        tracks.back().re.reserve(static_cast<int>(sweep.points.size()));
+      }
+      tracks[t].re.append(QPointF(point.v, root.lambda.real()));
+      if (root.lambda.imag() > 0.0) tracks[t].im.append(QPointF(point.v, root.lambda.imag()));
+      reMax = std::max(reMax, root.lambda.real());
     }
-  auto addCurves = [this, rigid](QwtPlot* plot, const QMap<QString, QVector<QPointF>>& data) {
-    for (auto it = data.begin(); it != data.end(); ++it) {
+  QMap<QString, const Track*> byName;  // the legend in alphabetical order, as before
+  for (const Track& t : tracks) byName.insert(QString::fromStdString(*t.name), &t);
+  auto addCurves = [this, rigid, &byName](QwtPlot* plot, QVector<QPointF> Track::*samples) {
+    for (auto it = byName.begin(); it != byName.end(); ++it) {
+      if ((it.value()->*samples).isEmpty()) continue;
       auto* c = new QwtPlotCurve(rigid ? tr("%1 (rigid fork)").arg(it.key()) : it.key());
-      const QColor colour = modeColour(it.key().toStdString());
+      const QColor colour = modeColour(*it.value()->name);
       c->setStyle(QwtPlotCurve::NoCurve);
       // Points on the same pixel drawn once: 10,000 speeds redraw within a frame.
       c->setPaintAttribute(QwtPlotCurve::FilterPoints, true);
       c->setSymbol(rigid ? new QwtSymbol(QwtSymbol::Ellipse, QBrush(Qt::NoBrush), QPen(colour, 1.0), QSize(6, 6))
                          : new QwtSymbol(QwtSymbol::Ellipse, QBrush(colour), QPen(colour), QSize(4, 4)));
-      c->setSamples(it.value());
+      c->setSamples(it.value()->*samples);
       c->setLegendAttribute(QwtPlotCurve::LegendShowSymbol, true);
       c->setZ(rigid ? 19 : 20);  // the compliant fork's points over the rigid one's
       c->attach(plot);
     }
   };
-  addCurves(real_, re);
-  addCurves(imaginary_, im);
+  addCurves(real_, &Track::re);
+  addCurves(imaginary_, &Track::im);
   for (const auto& e : sweep.events) {
     if (e.kind != "stabilises" && e.kind != "destabilises") continue;
     const QString text = tr("%1 %2 at %3 m/s")
@@ -491,6 +505,7 @@ void StabilityPage::drawSweep(const st::StabilitySweep& sweep, bool rigid, QStri
       markers_.push_back(m);
     }
   }
+  return reMax;
 }
 
 QString StabilityPage::summaryText() const {

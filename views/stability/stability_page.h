@@ -110,7 +110,8 @@ class StabilityPage : public QWidget {
   void modelChanged();
   void refreshForks();
   void chooseParameterFile();
-  void drawSweep(const core::stability::StabilitySweep& sweep, bool rigid, QStringList& lines);
+  // Returns the largest real part it drew.
+  double drawSweep(const core::stability::StabilitySweep& sweep, bool rigid, QStringList& lines);
 
   JobRunner* jobs_ = nullptr;
   std::optional<core::stability::StabilityRecord> record_;  // without its sweeps: sweep_, rigidSweep_
