@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "core/signal/fft.h"
+#include "core/signal/sample_scan.h"
 
 namespace mozzi::core::signal {
 
@@ -53,7 +54,16 @@ std::string HitQuality::verdictText() const {
 }
 
 Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& options) {
-  if (auto ok = record.validate(); !ok) return ok.error();
+  if (auto ok = record.validateLayout(); !ok) return ok.error();
+  const Eigen::Index n = record.sampleCount();
+  // Each channel's extremes and finiteness in one pass; a NaN or an infinity
+  // is named by validate(), as before the check was folded in here.
+  std::vector<SampleExtremes> extremes;
+  extremes.reserve(static_cast<std::size_t>(record.channelCount()));
+  for (Eigen::Index c = 0; c < record.channelCount(); ++c) {
+    extremes.push_back(scanSamples(record.samples.col(c).data(), n));
+    if (!extremes.back().finite) return record.validate().error();
+  }
   HitQuality q;
   if (options.referenceChannel) {
     if (*options.referenceChannel < 0 || *options.referenceChannel >= record.channelCount()) {
@@ -66,7 +76,6 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
     q.referenceChannel = *ref;
   }
   const double fs = record.sampleRateHz;
-  const Eigen::Index n = record.sampleCount();
   const Eigen::Index pre = record.preTriggerSamples;
   // Noise floor from the first 3/4 of the pre-trigger: the last quarter may
   // already hold the foot of the pulse (and the DAQ filter's pre-ringing).
@@ -78,7 +87,7 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
     ChannelQuality cq;
     cq.name = record.channels[static_cast<std::size_t>(c)].name;
     cq.dof = record.channels[static_cast<std::size_t>(c)].dof;
-    const double hi = x.maxCoeff(), lo = x.minCoeff();
+    const double hi = extremes[static_cast<std::size_t>(c)].max, lo = extremes[static_cast<std::size_t>(c)].min;
     cq.peak = std::max(std::abs(hi), std::abs(lo));  // max |x|
     if (quiet >= 2) {
       const auto head = x.head(quiet);
@@ -92,32 +101,18 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
     }
     const double fullScale = record.channels[static_cast<std::size_t>(c)].fullScale;
     if (fullScale > 0.0) {
-      cq.clippedSamples = (x.array().abs() >= options.fullScaleMargin * fullScale).count();
+      const double limit = options.fullScaleMargin * fullScale;
+      const ThresholdCounts beyond = countBeyond(x.data(), n, limit, -limit);  // |x| >= limit
+      cq.clippedSamples = limit > 0.0 ? beyond.atOrAbove + beyond.atOrBelow : n;
     } else {
       // flat tops: runs of >= clipRunLength samples pinned at a significant extreme
       const double tol = 1e-9 * cq.peak;
-      // No run can be longer than the samples at the extreme: one vectorised
-      // count of them first (usually the peak alone), the run scan only when
-      // there are enough.
-      // Counted in doubles (exact below 2^53), branch-free, in four partial
-      // sums each (the order of adding whole numbers does not change their
-      // sum): packed compares and adds, not one chain of scalar adds waiting
-      // on each other (that chain was 60% of assessHit, issue 19).
-      const double* xp = x.data();
-      double countHi[4] = {0.0, 0.0, 0.0, 0.0}, countLo[4] = {0.0, 0.0, 0.0, 0.0};
-      Eigen::Index i = 0;
-      for (; i + 4 <= n; i += 4) {
-        for (int j = 0; j < 4; ++j) {
-          countHi[j] += std::abs(xp[i + j] - hi) <= tol ? 1.0 : 0.0;
-          countLo[j] += std::abs(xp[i + j] - lo) <= tol ? 1.0 : 0.0;
-        }
-      }
-      for (; i < n; ++i) {
-        countHi[0] += std::abs(xp[i] - hi) <= tol ? 1.0 : 0.0;
-        countLo[0] += std::abs(xp[i] - lo) <= tol ? 1.0 : 0.0;
-      }
-      const auto nearHi = static_cast<std::int64_t>(countHi[0] + countHi[1] + countHi[2] + countHi[3]);
-      const auto nearLo = static_cast<std::int64_t>(countLo[0] + countLo[1] + countLo[2] + countLo[3]);
+      // No run can be longer than the samples near the extreme: one
+      // vectorised count of them first (usually the peak alone), the run
+      // scan only when there are enough. Counted within 2 tol, a bound on
+      // those within tol whatever the rounding of x - extreme.
+      const ThresholdCounts near = countBeyond(x.data(), n, hi - 2.0 * tol, lo + 2.0 * tol);
+      const Eigen::Index nearHi = near.atOrAbove, nearLo = near.atOrBelow;
       for (const double extreme : {hi, lo}) {
         if (std::abs(extreme) < 0.5 * cq.peak) continue;
         if ((extreme == hi ? nearHi : nearLo) < options.clipRunLength) continue;
@@ -149,14 +144,19 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
   }
   PulseWorkspace& ws = pulseWorkspace(n);
   Eigen::Map<Vector> f(ws.pulse.data(), n);
-  f = record.samples.col(q.referenceChannel);
-  if (quiet >= 2) f.array() -= f.head(quiet).mean();  // remove the pre-trigger offset
+  const auto force = record.samples.col(q.referenceChannel);
+  // The pre-trigger offset removed as the force is copied (one pass). max |f|
+  // from the channel's extremes: x - offset rounds monotonically in x, so the
+  // largest and smallest f are those of the largest and smallest x.
+  const double offset = quiet >= 2 ? force.head(quiet).mean() : 0.0;
+  f = force.array() - offset;
+  const SampleExtremes& forceRange = extremes[static_cast<std::size_t>(q.referenceChannel)];
+  const double absMax = std::max(forceRange.max - offset, offset - forceRange.min);
   const double noise = refq.noiseRms.value_or(0.0);
-  // max |f| and its first index (Eigen's maxCoeff(&index) takes the first
-  // too, but runs scalar): the vectorised maximum, then a scan to it.
-  const double absMax = f.cwiseAbs().maxCoeff();
+  // Its first index (Eigen's maxCoeff(&index) takes the first too, but runs
+  // scalar): a scan to it.
   Eigen::Index peakIdx = 0;
-  while (std::abs(f[peakIdx]) != absMax) ++peakIdx;
+  while (peakIdx + 1 < n && std::abs(f[peakIdx]) != absMax) ++peakIdx;
   const double peak = f[peakIdx];
   q.peakForce = peak;
   const double sign = peak >= 0.0 ? 1.0 : -1.0;
@@ -203,11 +203,12 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
   Eigen::Index second = -1;
   double secondPeak = 0.0;
   if (b + 1 < n) {
-    const double m = f.tail(n - b - 1).cwiseAbs().maxCoeff();
+    const SampleExtremes after = scanSamples(f.data() + b + 1, n - b - 1);
+    const double m = std::max(after.max, -after.min);  // max |f| after the pulse
     if (m >= reboundLevel && m > 0.0) {
       secondPeak = m;
       second = b + 1;
-      while (std::abs(f[second]) != m) ++second;
+      while (second + 1 < n && std::abs(f[second]) != m) ++second;
     }
   }
   if (second >= 0) {
@@ -228,7 +229,9 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
   auto fft = RealFft::forLength(n);
   if (!fft) return fft.error();
   (*fft)->forward(f.data(), ws.spectrum.data());
-  const Vector energy = Eigen::Map<const ComplexVector>(ws.spectrum.data(), n / 2 + 1).cwiseAbs2();  // |F(f)|^2
+  // |F(f)|^2 over the pulse's buffer, free now: no fresh pages per hit.
+  Eigen::Map<Vector> energy(ws.pulse.data(), n / 2 + 1);
+  energy = Eigen::Map<const ComplexVector>(ws.spectrum.data(), n / 2 + 1).cwiseAbs2();
   const double df = fs / static_cast<double>(n);
   // reference level: mean over the low-frequency plateau, f <= 0.1 / width
   const Eigen::Index plateau = std::clamp<Eigen::Index>(

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/common/enum_names.h"
+#include "core/signal/sample_scan.h"
 
 namespace mozzi::core::signal {
 
@@ -30,7 +31,7 @@ std::string channelLabel(const TimeRecord& r, Eigen::Index c) {
 }
 }  // namespace
 
-Result<void> TimeRecord::validate() const {
+Result<void> TimeRecord::validateLayout() const {
   const std::string where = "time record";
   if (!std::isfinite(sampleRateHz) || sampleRateHz <= 0.0) {
     return makeError(ErrorCode::InvalidArgument,
@@ -59,12 +60,18 @@ Result<void> TimeRecord::validate() const {
       return makeError(ErrorCode::InvalidArgument, "transducer sensitivity must be positive (mV per unit)",
                        where + ", " + channelLabel(*this, c));
     }
-    // A finite (vectorised) sum means no NaN or inf; otherwise find the sample.
-    if (std::isfinite(samples.col(c).sum())) continue;
+  }
+  return {};
+}
+
+Result<void> TimeRecord::validate() const {
+  MOZZI_TRY(validateLayout());
+  for (Eigen::Index c = 0; c < channelCount(); ++c) {
+    if (scanSamples(samples.col(c).data(), samples.rows()).finite) continue;
     for (Eigen::Index i = 0; i < samples.rows(); ++i) {
       if (!std::isfinite(samples(i, c))) {
         return makeError(ErrorCode::InvalidArgument, "sample is NaN or infinite",
-                         where + ", " + channelLabel(*this, c) + ", sample " + std::to_string(i));
+                         "time record, " + channelLabel(*this, c) + ", sample " + std::to_string(i));
       }
     }
   }

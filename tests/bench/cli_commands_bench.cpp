@@ -30,8 +30,10 @@
 
 #include "app/cli/command.h"
 #include "core/io/uff/uff.h"
+#include "core/io/uff_hits.h"
 #include "core/modal/identification.h"
 #include "core/modal/modal_model.h"
+#include "core/signal/hit_quality.h"
 #include "core/signal/hit_synthesis.h"
 #include "modelab_beam.h"
 #include "synthetic_frfs.h"
@@ -204,6 +206,42 @@ void BM_UffInfo_Hits(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_UffInfo_Hits)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The stages of `frf` on the thread that reads (issue 19): the hits streamed
+// from the file (UffHitReader, what `uff info` costs plus the sample matrices),
+// and the check of each hit (assessHit) on hits already in memory.
+void BM_FrfStage_ReadHits(benchmark::State& state) {
+  const std::string path = file("hits_10x4x65536.uff");
+  for (auto _ : state) {
+    auto reader = mozzi::core::io::UffHitReader::open(path);
+    int hits = 0;
+    for (;;) {
+      auto hit = reader->next();
+      if (!hit) {
+        state.SkipWithError(hit.error().describe().c_str());
+        return;
+      }
+      if (!*hit) break;
+      ++hits;
+    }
+    benchmark::DoNotOptimize(hits);
+  }
+}
+BENCHMARK(BM_FrfStage_ReadHits)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_FrfStage_AssessHits(benchmark::State& state) {
+  std::vector<sg::TimeRecord> records;
+  auto reader = mozzi::core::io::UffHitReader::open(file("hits_10x4x65536.uff"));
+  for (auto hit = reader->next(); hit && *hit; hit = reader->next()) records.push_back((*hit)->record);
+  for (auto _ : state) {
+    for (const auto& r : records) {
+      auto q = sg::assessHit(r, sg::HitQualityOptions{});
+      benchmark::DoNotOptimize(q);
+    }
+  }
+  state.counters["hits"] = static_cast<double>(records.size());
+}
+BENCHMARK(BM_FrfStage_AssessHits)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // A click in the stabilization diagram of the ModeLAB beam (9 FRFs x 47,872
 // lines, 65-1000 Hz): the automatically selected poles with one pole removed,
