@@ -104,6 +104,12 @@ TEST_F(FrfCli, AveragesAcceptedHitsAndWritesFrfsMatchingTheory) {
   EXPECT_EQ(j["reference"], "1:+Z");
   // 4 ms half-sine: -10 dB near 1.02 / Tp = 255 Hz
   EXPECT_NEAR(j["usable_band_10db_hz"].get<double>() / 255.0, 1.0, 0.03);
+  // Each hit's own band, the rejected one's too: its main pulse alone (the
+  // rebound of the double hit is not in it).
+  for (const auto& hit : j["hits"]) {
+    ASSERT_TRUE(hit.contains("usable_band_10db_hz")) << hit.dump();
+    EXPECT_NEAR(hit["usable_band_10db_hz"].get<double>() / 255.0, 1.0, 0.03) << hit.dump();
+  }
 
   auto file = uff::readFile(out);
   ASSERT_TRUE(file.ok()) << file.error().describe();
