@@ -2015,7 +2015,7 @@
 <context>
     <name>mozzi::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+297"/>
+        <location filename="../app/gui/main_window.cpp" line="+300"/>
         <source>&amp;File</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2195,8 +2195,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-348"/>
-        <location line="+397"/>
+        <location line="-351"/>
+        <location line="+400"/>
         <source>Open Project</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2216,8 +2216,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-408"/>
-        <location line="+414"/>
+        <location line="-411"/>
+        <location line="+417"/>
         <source>New Project</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2247,8 +2247,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-417"/>
-        <location line="+423"/>
+        <location line="-420"/>
+        <location line="+426"/>
         <source>Save Project As</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2305,7 +2305,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-463"/>
+        <location line="-466"/>
         <source>Import Universal File</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2315,7 +2315,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+376"/>
+        <location line="+379"/>
         <source>Mozzi projects (*.mozzi)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2325,7 +2325,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-432"/>
+        <location line="-435"/>
         <source>A job stopped before its end; see its page</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2345,7 +2345,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+209"/>
+        <location line="+212"/>
         <source>Open in %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3042,7 +3042,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/campaign/hammer_station_events.cpp" line="+240"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="+241"/>
         <location filename="../views/campaign/hammer_station_page.cpp" line="+265"/>
         <source>%1 (%2)</source>
         <translation type="unfinished"></translation>
@@ -3068,12 +3068,13 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="+30"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+16"/>
         <source>Force [%1]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+4"/>
         <source>Campaign started on %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3118,7 +3119,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/campaign/hammer_station_events.cpp" line="-195"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="-226"/>
         <source>TRIGGERED</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3135,17 +3136,18 @@
     </message>
     <message>
         <location line="+12"/>
-        <location line="+213"/>
+        <location line="+216"/>
         <source>Time since arming [s]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-195"/>
+        <location line="-198"/>
+        <location line="+198"/>
         <source>Time in the hit&apos;s record [s]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="-186"/>
         <source>Hit point %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3228,12 +3230,13 @@
         </translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
+        <location line="+111"/>
         <source>Station: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-108"/>
         <source>%1 of %2 points</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3367,12 +3370,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Force [N]</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>Not started: choose a campaign, press F5</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3493,7 +3491,7 @@
 <context>
     <name>mozzi::views::IdentificationPage</name>
     <message>
-        <location filename="../views/modal/identification_page.cpp" line="+241"/>
+        <location filename="../views/modal/identification_page.cpp" line="+242"/>
         <source>Cannot list the FRF sets: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3518,7 +3516,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+45"/>
         <source>H %1 / %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3567,23 +3565,23 @@
     </message>
     <message>
         <location filename="../views/modal/identification_kept.cpp" line="+37"/>
-        <location line="+108"/>
+        <location line="+106"/>
         <source>CMIF 1 [dB]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-108"/>
-        <location line="+108"/>
+        <location line="-106"/>
+        <location line="+106"/>
         <source>|sum of FRFs| [dB]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-46"/>
+        <location line="-44"/>
         <source>Stabilization diagram</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+19"/>
         <source>No stabilization diagram for the kept band of FRF set %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4974,7 +4972,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+245"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+265"/>
         <source>Export Diagnosis Report</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5054,7 +5052,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Verdict: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5129,23 +5127,25 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+56"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+253"/>
         <source>model + %1 + %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+5"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+5"/>
         <source>model + %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+32"/>
-        <location line="+80"/>
+        <location line="+28"/>
+        <location line="+85"/>
         <source>model + best effect</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-75"/>
         <source>Model vs test</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5170,8 +5170,48 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-238"/>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="+241"/>
+        <location line="-643"/>
+        <source>effect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ambiguous</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>partial</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unexplained</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not identifiable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Frequency [Hz]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pressure [bar]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+379"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+11"/>
         <source>%1 and %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5181,12 +5221,12 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Verdict: %1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+222"/>
+        <location line="+234"/>
         <location line="+8"/>
         <source>Cannot write %1: %2</source>
         <translation type="unfinished"></translation>
@@ -5228,7 +5268,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="-52"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="-79"/>
         <source>Lowest frequency used (0 = from the first line)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5303,7 +5343,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+14"/>
         <location filename="../views/gap/model_test_view_kept.cpp" line="-116"/>
         <source>No diagnosis yet</source>
         <translation type="unfinished"></translation>
@@ -5357,7 +5397,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+43"/>
         <source>Kept diagnosis &quot;%1&quot; (analysis %2), as stored.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6635,7 +6675,7 @@ Schema version %2, created %3 by Mozzi %4</source>
 <context>
     <name>mozzi::views::StabilityPage</name>
     <message>
-        <location filename="../views/stability/stability_page.cpp" line="+290"/>
+        <location filename="../views/stability/stability_page.cpp" line="+291"/>
         <source>Computing the eigenvalues against speed...</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6650,7 +6690,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+94"/>
         <source>%1 %2 at %3 m/s</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6660,12 +6700,12 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-77"/>
         <source>No real part crosses zero in this speed range.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-231"/>
+        <location line="-226"/>
         <source>built-in (Sharp 1971 standard machine)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6712,7 +6752,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+89"/>
         <source>Critical speeds: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6732,7 +6772,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+41"/>
         <source>%1 (rigid fork)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6742,7 +6782,7 @@ Schema version %2, created %3 by Mozzi %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>Model:</source>
         <translation type="unfinished"></translation>
     </message>

@@ -2015,7 +2015,7 @@
 <context>
     <name>mozzi::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+297"/>
+        <location filename="../app/gui/main_window.cpp" line="+300"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -2195,8 +2195,8 @@
         <translation>Dove: %1</translation>
     </message>
     <message>
-        <location line="-348"/>
-        <location line="+397"/>
+        <location line="-351"/>
+        <location line="+400"/>
         <source>Open Project</source>
         <translation>Apri progetto</translation>
     </message>
@@ -2216,8 +2216,8 @@
         <translation>Sola lettura: %1</translation>
     </message>
     <message>
-        <location line="-408"/>
-        <location line="+414"/>
+        <location line="-411"/>
+        <location line="+417"/>
         <source>New Project</source>
         <translation>Nuovo progetto</translation>
     </message>
@@ -2247,8 +2247,8 @@
         <translation>Creato il progetto dimostrativo %1</translation>
     </message>
     <message>
-        <location line="-417"/>
-        <location line="+423"/>
+        <location line="-420"/>
+        <location line="+426"/>
         <source>Save Project As</source>
         <translation>Salva progetto come</translation>
     </message>
@@ -2305,7 +2305,7 @@
         <translation>Importato %1: %2 nodi, %3 linee, %4 FRF, %5 modi</translation>
     </message>
     <message>
-        <location line="-463"/>
+        <location line="-466"/>
         <source>Import Universal File</source>
         <translation>Importa file Universal</translation>
     </message>
@@ -2315,7 +2315,7 @@
         <translation>File Universal (*.uff *.unv);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location line="+376"/>
+        <location line="+379"/>
         <source>Mozzi projects (*.mozzi)</source>
         <translation>Progetti Mozzi (*.mozzi)</translation>
     </message>
@@ -2325,7 +2325,7 @@
         <translation>Progetti Mozzi (*.mozzi);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location line="-432"/>
+        <location line="-435"/>
         <source>A job stopped before its end; see its page</source>
         <translation>Un&apos;attività si è interrotta prima della fine; vedi la sua pagina</translation>
     </message>
@@ -2345,7 +2345,7 @@
         <translation>Crea progetto dimostrativo</translation>
     </message>
     <message>
-        <location line="+209"/>
+        <location line="+212"/>
         <source>Open in %1</source>
         <translation>Apri in %1</translation>
     </message>
@@ -3042,7 +3042,7 @@
         <translation>Salta punto</translation>
     </message>
     <message>
-        <location filename="../views/campaign/hammer_station_events.cpp" line="+240"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="+241"/>
         <location filename="../views/campaign/hammer_station_page.cpp" line="+265"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
@@ -3068,12 +3068,13 @@
         <translation>Impossibile avviare la campagna: %1</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="+30"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+16"/>
         <source>Force [%1]</source>
         <translation>Forza [%1]</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location filename="../views/campaign/hammer_station_page.cpp" line="+4"/>
         <source>Campaign started on %1</source>
         <translation>Campagna avviata su %1</translation>
     </message>
@@ -3118,7 +3119,7 @@
         <translation>Stazione martello: %1</translation>
     </message>
     <message>
-        <location filename="../views/campaign/hammer_station_events.cpp" line="-195"/>
+        <location filename="../views/campaign/hammer_station_events.cpp" line="-226"/>
         <source>TRIGGERED</source>
         <translation>TRIGGER SCATTATO</translation>
     </message>
@@ -3135,17 +3136,18 @@
     </message>
     <message>
         <location line="+12"/>
-        <location line="+213"/>
+        <location line="+216"/>
         <source>Time since arming [s]</source>
         <translation>Tempo dall&apos;armamento [s]</translation>
     </message>
     <message>
-        <location line="-195"/>
+        <location line="-198"/>
+        <location line="+198"/>
         <source>Time in the hit&apos;s record [s]</source>
         <translation>Tempo nella registrazione del colpo [s]</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="-186"/>
         <source>Hit point %1</source>
         <translation>Colpisci il punto %1</translation>
     </message>
@@ -3228,12 +3230,13 @@
         </translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
+        <location line="+111"/>
         <source>Station: %1</source>
         <translation>Stazione: %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-108"/>
         <source>%1 of %2 points</source>
         <translation>%1 di %2 punti</translation>
     </message>
@@ -3367,12 +3370,7 @@
         <translation>[%1]</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Force [N]</source>
-        <translation>Forza [N]</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>Not started: choose a campaign, press F5</source>
         <translation>Non avviata: scegli una campagna, premi F5</translation>
     </message>
@@ -3493,7 +3491,7 @@
 <context>
     <name>mozzi::views::IdentificationPage</name>
     <message>
-        <location filename="../views/modal/identification_page.cpp" line="+241"/>
+        <location filename="../views/modal/identification_page.cpp" line="+242"/>
         <source>Cannot list the FRF sets: %1</source>
         <translation>Impossibile elencare gli insiemi di FRF: %1</translation>
     </message>
@@ -3518,7 +3516,7 @@
         <translation>Impossibile leggere le finestre dell&apos;insieme di FRF %1: %2</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+45"/>
         <source>H %1 / %2</source>
         <translation>H %1 / %2</translation>
     </message>
@@ -3567,23 +3565,23 @@
     </message>
     <message>
         <location filename="../views/modal/identification_kept.cpp" line="+37"/>
-        <location line="+108"/>
+        <location line="+106"/>
         <source>CMIF 1 [dB]</source>
         <translation>CMIF 1 [dB]</translation>
     </message>
     <message>
-        <location line="-108"/>
-        <location line="+108"/>
+        <location line="-106"/>
+        <location line="+106"/>
         <source>|sum of FRFs| [dB]</source>
         <translation>|somma delle FRF| [dB]</translation>
     </message>
     <message>
-        <location line="-46"/>
+        <location line="-44"/>
         <source>Stabilization diagram</source>
         <translation>Diagramma di stabilizzazione</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+19"/>
         <source>No stabilization diagram for the kept band of FRF set %1: %2</source>
         <translation>Nessun diagramma di stabilizzazione per la banda conservata dell&apos;insieme di FRF %1: %2</translation>
     </message>
@@ -4978,7 +4976,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+245"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+265"/>
         <source>Export Diagnosis Report</source>
         <translation>Esporta rapporto di diagnosi</translation>
     </message>
@@ -5058,7 +5056,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>%1 in %2 (e altre %3 posizioni equivalenti)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Verdict: %1</source>
         <translation>Verdetto: %1</translation>
     </message>
@@ -5133,23 +5131,25 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>%1 (+%2 equiv.)</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+56"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+253"/>
         <source>model + %1 + %2</source>
         <translation>modello + %1 + %2</translation>
     </message>
     <message>
         <location line="+5"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+5"/>
         <source>model + %1</source>
         <translation>modello + %1</translation>
     </message>
     <message>
-        <location line="+32"/>
-        <location line="+80"/>
+        <location line="+28"/>
+        <location line="+85"/>
         <source>model + best effect</source>
         <translation>modello + effetto migliore</translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-75"/>
         <source>Model vs test</source>
         <translation>Modello contro prova</translation>
     </message>
@@ -5174,8 +5174,48 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Niente da esportare: esegui prima la diagnosi.</translation>
     </message>
     <message>
-        <location line="-238"/>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="+241"/>
+        <location line="-643"/>
+        <source>effect</source>
+        <translation>effetto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none</source>
+        <translation>nessuno</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ambiguous</source>
+        <translation>ambiguo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>partial</source>
+        <translation>parziale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unexplained</source>
+        <translation>non spiegato</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not identifiable</source>
+        <translation>non identificabile</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Frequency [Hz]</source>
+        <translation>Frequenza [Hz]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pressure [bar]</source>
+        <translation>Pressione [bar]</translation>
+    </message>
+    <message>
+        <location line="+379"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+11"/>
         <source>%1 and %2</source>
         <translation>%1 e %2</translation>
     </message>
@@ -5185,12 +5225,12 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>%1 in %2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Verdict: %1 (%2)</source>
         <translation>Verdetto: %1 (%2)</translation>
     </message>
     <message>
-        <location line="+222"/>
+        <location line="+234"/>
         <location line="+8"/>
         <source>Cannot write %1: %2</source>
         <translation>Impossibile scrivere %1: %2</translation>
@@ -5232,7 +5272,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Banda</translation>
     </message>
     <message>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="-52"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="-79"/>
         <source>Lowest frequency used (0 = from the first line)</source>
         <translation>Frequenza minima usata (0 = dalla prima riga)</translation>
     </message>
@@ -5307,7 +5347,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>modello</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+14"/>
         <location filename="../views/gap/model_test_view_kept.cpp" line="-116"/>
         <source>No diagnosis yet</source>
         <translation>Nessuna diagnosi</translation>
@@ -5361,7 +5401,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Posizioni:</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+43"/>
         <source>Kept diagnosis &quot;%1&quot; (analysis %2), as stored.</source>
         <translation>Diagnosi conservata &quot;%1&quot; (analisi %2), così come è stata salvata.</translation>
     </message>
@@ -6640,7 +6680,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
 <context>
     <name>mozzi::views::StabilityPage</name>
     <message>
-        <location filename="../views/stability/stability_page.cpp" line="+290"/>
+        <location filename="../views/stability/stability_page.cpp" line="+291"/>
         <source>Computing the eigenvalues against speed...</source>
         <translation>Calcolo degli autovalori in funzione della velocità...</translation>
     </message>
@@ -6655,7 +6695,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Impossibile calcolare: %1</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+94"/>
         <source>%1 %2 at %3 m/s</source>
         <translation>%1 %2 a %3 m/s</translation>
     </message>
@@ -6665,12 +6705,12 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>%1 %2 m/s</translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-77"/>
         <source>No real part crosses zero in this speed range.</source>
         <translation>Nessuna parte reale attraversa lo zero in questo intervallo di velocità.</translation>
     </message>
     <message>
-        <location line="-231"/>
+        <location line="-226"/>
         <source>built-in (Sharp 1971 standard machine)</source>
         <translation>integrati (macchina standard di Sharp 1971)</translation>
     </message>
@@ -6717,7 +6757,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Conservato nel progetto come analisi %1.</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+89"/>
         <source>Critical speeds: %1</source>
         <translation>Velocità critiche: %1</translation>
     </message>
@@ -6737,7 +6777,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>Conservato: %1. %2</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+41"/>
         <source>%1 (rigid fork)</source>
         <translation>%1 (forcella rigida)</translation>
     </message>
@@ -6747,7 +6787,7 @@ Versione dello schema %2, creato il %3 da Mozzi %4</translation>
         <translation>rigida: %1</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>Model:</source>
         <translation>Modello:</translation>
     </message>

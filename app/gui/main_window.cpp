@@ -252,6 +252,9 @@ void MainWindow::createDocks() {
     showProperties();
     tabs_->followSelection(item);
   });
+  // The tree rebuilds its rows when the language changes, after this window
+  // retranslated: the properties are read again then.
+  connect(projectTree_, &views::ProjectTree::retranslated, this, &MainWindow::showProperties);
   connect(projectTree_, &views::ProjectTree::openRequested, this, &MainWindow::openItem);
   connect(projectTree_, &QWidget::customContextMenuRequested, this, &MainWindow::showTreeMenu);
   projectDock_ = new QDockWidget(this);

@@ -339,7 +339,10 @@ QSize ProjectTree::sizeHint() const {
 }
 
 void ProjectTree::changeEvent(QEvent* event) {
-  if (event->type() == QEvent::LanguageChange) refresh();
+  if (event->type() == QEvent::LanguageChange) {
+    refresh();
+    emit retranslated();
+  }
   QTreeWidget::changeEvent(event);
 }
 

@@ -36,6 +36,9 @@ class ProjectTree : public QTreeWidget {
   void currentProjectItemChanged(const mozzi::views::ProjectItem& item);
   // Double-click or Enter on a row.
   void openRequested(const mozzi::views::ProjectItem& item);
+  // The rows (and the properties of the current one) were rebuilt in a new
+  // language; the current item is the same.
+  void retranslated();
 
  protected:
   void changeEvent(QEvent* event) override;

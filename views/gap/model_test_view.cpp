@@ -89,6 +89,26 @@ QColor verdictColour(const std::string& name) {
   return QColor(Qt::black);
 }
 
+// A verdict's name (core's identifier, as the CLI's JSON writes it) in the
+// page's language; an unknown name as it is.
+QString verdictWord(const std::string& name) {
+  if (name == "effect") return ModelTestView::tr("effect");
+  if (name == "none") return ModelTestView::tr("none");
+  if (name == "ambiguous") return ModelTestView::tr("ambiguous");
+  if (name == "partial") return ModelTestView::tr("partial");
+  if (name == "unexplained") return ModelTestView::tr("unexplained");
+  if (name == "not_identifiable") return ModelTestView::tr("not identifiable");
+  return QString::fromStdString(name);
+}
+
+// An overlay axis title core wrote in English, in the page's language; the
+// FRF's "|H| [unit]" and unknown titles as they are.
+QString axisTitle(const std::string& title) {
+  if (title == "Frequency [Hz]") return ModelTestView::tr("Frequency [Hz]");
+  if (title == "Pressure [bar]") return ModelTestView::tr("Pressure [bar]");
+  return QString::fromStdString(title);
+}
+
 QwtPlotCurve* addCurve(QwtPlot* plot, const QColor& colour, Qt::PenStyle style) {
   auto* curve = new QwtPlotCurve;
   curve->setPen(colour, 1.5, style);
@@ -485,7 +505,8 @@ QString ModelTestView::effectText(const std::string& effect, const std::vector<s
 
 // "Verdict: effect (residual_mode)", coloured by the verdict.
 void ModelTestView::showVerdict(const QString& verdict, const QString& effects) {
-  verdict_->setText(effects.isEmpty() ? tr("Verdict: %1").arg(verdict) : tr("Verdict: %1 (%2)").arg(verdict, effects));
+  const QString word = verdictWord(verdict.toStdString());
+  verdict_->setText(effects.isEmpty() ? tr("Verdict: %1").arg(word) : tr("Verdict: %1 (%2)").arg(word, effects));
   QPalette palette = verdict_->palette();
   palette.setColor(QPalette::WindowText, verdictColour(verdict.toStdString()));
   verdict_->setPalette(palette);
@@ -632,16 +653,10 @@ void ModelTestView::computeOverlays() {
     for (const auto& e : d.pair.effects) phi.insert(phi.end(), e.parameters.begin(), e.parameters.end());
     after_ = diagnosed_->combinedOverlay(
         d.pair.theta.data(), {d.pair.effects[0].candidateIndex, d.pair.effects[1].candidateIndex}, phi.data());
-    // The legend names each effect with its location (two residual modes
-    // read "model + residual_mode + residual_mode" without them).
-    const auto& e = d.pair.effects;
-    afterLabel_ = tr("model + %1 + %2")
-                      .arg(effectText(e[0].candidate.effect, e[0].candidate.location, {}),
-                           effectText(e[1].candidate.effect, e[1].candidate.location, {}));
   } else if (best && best->candidateIndex >= 0 && best->theta.size() == d.calibrated.size()) {
     after_ = diagnosed_->overlay({best->theta.data(), best->candidateIndex, best->parameters.data()});
-    afterLabel_ = tr("model + %1").arg(effectText(best->candidate.effect, best->candidate.location, {}));
   }
+  afterLabel_ = liveAfterLabel();
   const QSignalBlocker block(overlayChoice_);
   overlayChoice_->clear();
   for (const auto& curve : before_) overlayChoice_->addItem(QString::fromStdString(curve.label));
@@ -656,8 +671,8 @@ bool ModelTestView::showOverlay(int index) {
     overlayChoice_->setCurrentIndex(index);
   }
   overlayPlot_->setLogY(curve.logY);
-  overlayPlot_->setAxisTitle(QwtPlot::xBottom, QString::fromStdString(curve.xLabel));
-  overlayPlot_->setAxisTitle(QwtPlot::yLeft, QString::fromStdString(curve.yLabel));
+  overlayPlot_->setAxisTitle(QwtPlot::xBottom, axisTitle(curve.xLabel));
+  overlayPlot_->setAxisTitle(QwtPlot::yLeft, axisTitle(curve.yLabel));
   measuredCurve_->setSamples(points(curve.x, curve.measured, curve.logY));
   beforeCurve_->setSamples(points(curve.x, curve.predicted, curve.logY));
   if (index < static_cast<int>(after_.size())) {
@@ -752,7 +767,13 @@ void ModelTestView::retranslate() {
   results_->setTabText(2, tr("Overlay"));
   measuredCurve_->setTitle(tr("measured"));
   beforeCurve_->setTitle(tr("model"));
+  if (diagnosis_ && diagnosed_) {
+    afterLabel_ = liveAfterLabel();
+  } else if (storedDiagnosis_) {
+    afterLabel_ = storedAfterLabel(*storedDiagnosis_);
+  }
   afterCurve_->setTitle(afterLabel_.isEmpty() ? tr("model + best effect") : afterLabel_);
+  if (!before_.empty()) showOverlay(std::max(0, overlayChoice_->currentIndex()));  // its axis titles
   if (diagnosis_) {
     showDiagnosisText();
     fillRanking();

@@ -113,6 +113,10 @@ class ModelTestView : public QWidget {
   // 10+Z)", "residual_mode at 9+Z (and 24 equivalent locations)".
   static QString effectText(const std::string& effect, const std::vector<std::string>& location,
                             const std::vector<std::vector<std::string>>& equivalent);
+  // The "after" legend of the overlay, in the page's language: of the
+  // diagnosis run here, of the stored one.
+  QString liveAfterLabel() const;
+  static QString storedAfterLabel(const StoredDiagnosis& diagnosis);
   void showStoredText();
   // What the band boxes and the candidate list describe: the next run, or the
   // kept diagnosis shown (with or without a frequency band of its own).

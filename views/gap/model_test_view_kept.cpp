@@ -18,6 +18,7 @@
 #include <limits>
 
 #include "core/common/text.h"
+#include "core/report/gap_report.h"
 #include "views/common/kept_analyses.h"
 #include "views/common/project_model.h"
 #include "views/gap/model_test_view.h"
@@ -134,7 +135,7 @@ bool ModelTestView::showStored(qint64 analysisId) {
   fillRankingRows(d.ranking, d.threshold);
   before_ = d.before;
   after_ = d.after;
-  afterLabel_ = QString::fromStdString(d.afterLabel);
+  afterLabel_ = storedAfterLabel(d);
   {
     const QSignalBlocker block(overlayChoice_);
     overlayChoice_->clear();
@@ -231,6 +232,52 @@ QString ModelTestView::locationsTip(const std::vector<std::string>& locations) {
 
 // Verdict (with the effects it names), explanation and the status line of
 // the kept diagnosis shown.
+// The legend of computeOverlays' "after" curve: it names each effect with
+// its location (two residual modes read "model + residual_mode +
+// residual_mode" without them).
+QString ModelTestView::liveAfterLabel() const {
+  if (!diagnosis_) return {};
+  const auto& d = *diagnosis_;
+  const core::report::BestEffect chosen = core::report::bestEffect(d);
+  const core::gap::RankedEffect* best = chosen.single;
+  if (chosen.pair && d.pair.theta.size() == d.calibrated.size()) {
+    const auto& e = d.pair.effects;
+    return tr("model + %1 + %2")
+        .arg(effectText(e[0].candidate.effect, e[0].candidate.location, {}),
+             effectText(e[1].candidate.effect, e[1].candidate.location, {}));
+  }
+  if (best && best->candidateIndex >= 0 && best->theta.size() == d.calibrated.size())
+    return tr("model + %1").arg(effectText(best->candidate.effect, best->candidate.location, {}));
+  return {};
+}
+
+// The stored overlay's legend in the page's language: the file keeps the
+// English words core wrote ("model + residual_mode at 12+Y"); the effect(s)
+// it names are the verdict's (core::report::bestEffect), rebuilt here with
+// tr() when they spell the same label, else the file's words as they are.
+QString ModelTestView::storedAfterLabel(const StoredDiagnosis& d) {
+  if (d.afterLabel.empty()) return {};
+  auto english = [](const StoredDiagnosis::RankedEffect& r) {
+    std::string s = r.effect;
+    for (std::size_t k = 0; k < r.location.size(); ++k) s += (k == 0 ? " at " : ", ") + r.location[k];
+    return s;
+  };
+  auto local = [](const StoredDiagnosis::RankedEffect& r) { return effectText(r.effect, r.location, {}); };
+  std::vector<const StoredDiagnosis::RankedEffect*> verdict;
+  for (const auto& r : d.ranking)
+    if (r.inVerdict) verdict.push_back(&r);
+  if (d.pair && verdict.size() == 2) {
+    for (const auto& [a, b] : {std::pair(verdict[0], verdict[1]), std::pair(verdict[1], verdict[0])}) {
+      if (d.afterLabel == "model + " + english(*a) + " + " + english(*b))
+        return tr("model + %1 + %2").arg(local(*a), local(*b));
+    }
+  }
+  const StoredDiagnosis::RankedEffect* single =
+      d.best >= 0 ? &d.ranking[static_cast<std::size_t>(d.best)] : (d.ranking.empty() ? nullptr : &d.ranking.front());
+  if (single && d.afterLabel == "model + " + english(*single)) return tr("model + %1").arg(local(*single));
+  return QString::fromStdString(d.afterLabel);
+}
+
 void ModelTestView::showStoredText() {
   const StoredDiagnosis& d = *storedDiagnosis_;
   QStringList effects;

@@ -34,9 +34,11 @@
 #include <QFontMetrics>
 #include <QLabel>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
+#include <QTabWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTreeWidget>
@@ -83,12 +85,14 @@ class DemoPagesTest : public QObject {
   void rigAndReviewPagesFitTheTabArea();
   void rigPagesPlotTheDemosStoredTestsOnOpen();
   void stiffnessRigStatusFollowsTheLanguage();
-  void hammerStationFollowsTheLanguage();
+  void pagesFollowTheLanguage();
 
  private:
   // Opens page `id` as the Overview's start list does, and the checks' screenshot afterwards.
   QWidget* open(const QString& id);
-  void shot(const QString& id);
+  void shot(const QString& id) { saveShot(QStringLiteral("demo_") + id); }
+  // `widget` (the window by default) as <name>[_scale<f>].png in MOZZI_SCREENSHOT_DIR.
+  void saveShot(const QString& name, QWidget* widget = nullptr);
   void checkFrfPage(QWidget* page);
   void checkIdentificationPage(QWidget* page);
   void checkModeAnimationPage(QWidget* page);
@@ -139,13 +143,13 @@ QWidget* DemoPagesTest::open(const QString& id) {
   return nullptr;
 }
 
-void DemoPagesTest::shot(const QString& id) {
+void DemoPagesTest::saveShot(const QString& name, QWidget* widget) {
   const QString folder = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR", QDir::tempPath());
   QDir().mkpath(folder);
   const QString scale = qEnvironmentVariable("QT_SCALE_FACTOR");
   const QString suffix = scale.isEmpty() ? QString() : QStringLiteral("_scale%1").arg(scale);
-  const QString path = QDir(folder).filePath(QStringLiteral("demo_%1%2.png").arg(id, suffix));
-  QVERIFY(window_->grab().save(path));
+  const QString path = QDir(folder).filePath(name + suffix + QStringLiteral(".png"));
+  QVERIFY((widget ? widget : window_.get())->grab().save(path));
   qInfo("screenshot: %s", qPrintable(path));
 }
 
@@ -182,15 +186,7 @@ void DemoPagesTest::projectDockShowsWholeNames() {
     tree->scrollToTop();
     qInfo("project dock at 260 px: %d specimen names on two lines or more, each whole", wrapped);
   }
-  auto* dock = window_->findChild<QDockWidget*>(QStringLiteral("projectDock"));
-  const QString folder = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR", QDir::tempPath());
-  QDir().mkpath(folder);
-  const QString scale = qEnvironmentVariable("QT_SCALE_FACTOR");
-  const QString path =
-      QDir(folder).filePath(scale.isEmpty() ? QStringLiteral("demo_project_dock.png")
-                                            : QStringLiteral("demo_project_dock_scale%1.png").arg(scale));
-  QVERIFY(dock->grab().save(path));
-  qInfo("screenshot: %s", qPrintable(path));
+  saveShot(QStringLiteral("demo_project_dock"), window_->findChild<QDockWidget*>(QStringLiteral("projectDock")));
 }
 
 void DemoPagesTest::frfPage() {
@@ -534,9 +530,6 @@ void DemoPagesTest::openDemoAt1280WithTheDock() {
 // Stability, Hammer Station, Stiffness Rig and Tyre Tester pages did not).
 void DemoPagesTest::rigAndReviewPagesFitTheTabArea() {
   openDemoAt1280WithTheDock();
-  const QString folder = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR", QDir::tempPath());
-  const QString scale = qEnvironmentVariable("QT_SCALE_FACTOR");
-  const QString suffix = scale.isEmpty() ? QString() : QStringLiteral("_scale%1").arg(scale);
   const QStringList pages = {QStringLiteral("stability"),        QStringLiteral("hammer-station"),
                              QStringLiteral("stiffness-rig"),    QStringLiteral("tyre-tester"),
                              QStringLiteral("stiffness-tables"), QStringLiteral("lumped-fork"),
@@ -576,9 +569,8 @@ void DemoPagesTest::rigAndReviewPagesFitTheTabArea() {
                               .arg(id)
                               .arg(controls->viewport()->width())
                               .arg(controls->widget()->minimumSizeHint().width())));
-    const QString shot = QDir(folder).filePath(QStringLiteral("fit_%1%2.png").arg(id, suffix));
-    QVERIFY(window_->grab().save(shot));
-    qInfo("screenshot: %s (%s)", qPrintable(shot), qPrintable(widths));
+    saveShot(QStringLiteral("fit_") + id);
+    qInfo("%s", qPrintable(widths));
   }
 }
 
@@ -714,16 +706,11 @@ void DemoPagesTest::rigPagesPlotTheDemosStoredTestsOnOpen() {
     }
   }
 
-  const QString folder = qEnvironmentVariable("MOZZI_SCREENSHOT_DIR", QDir::tempPath());
-  const QString scale = qEnvironmentVariable("QT_SCALE_FACTOR");
-  const QString suffix = scale.isEmpty() ? QString() : QStringLiteral("_scale%1").arg(scale);
   for (const auto& [page, name] : {std::pair<QWidget*, QString>{stiff, QStringLiteral("stored_stiffness_rig")},
                                    std::pair<QWidget*, QString>{tyre, QStringLiteral("stored_tyre_tester")}}) {
     window_->workArea()->setCurrentPage(page);
     QTest::qWait(200);
-    const QString shot = QDir(folder).filePath(name + suffix + QStringLiteral(".png"));
-    QVERIFY(window_->grab().save(shot));
-    qInfo("screenshot: %s", qPrintable(shot));
+    saveShot(name);
   }
 }
 
@@ -750,17 +737,29 @@ void DemoPagesTest::stiffnessRigStatusFollowsTheLanguage() {
   QCOMPARE(stiff->resultsTable()->item(0, 0)->text(), QStringLiteral("whole test"));  // whole-test rows first
 }
 
-// The Hammer Station's texts made in one language change with the next: its
+// Texts made in one language change with the next. The Hammer Station's
 // force axis, station line and point title kept the first language's words
-// ("Forza [N]" in an English page).
-void DemoPagesTest::hammerStationFollowsTheLanguage() {
+// ("Forza [N]" in an English page). The kept gap diagnosis's overlay: its
+// "after" legend and axis were core's English words from the project. The
+// Properties dock of the project's row: the tree rebuilt its rows after the
+// window had read them.
+void DemoPagesTest::pagesFollowTheLanguage() {
   openDemoAt1280WithTheDock();
   QWidget* page = window_->openPage(QStringLiteral("hammer-station"));
   QVERIFY(page);
   auto* traces = page->findChild<QwtPlot*>(QStringLiteral("hammerTraces"));
   auto* station = page->findChild<QLabel*>(QStringLiteral("hammerStation"));
   auto* point = page->findChild<QLabel*>(QStringLiteral("hammerPointTitle"));
-  QVERIFY(traces && station && point);
+  QWidget* gap = window_->openPage(QStringLiteral("model-vs-test"));
+  auto* overlay = gap ? gap->findChild<QwtPlot*>(QStringLiteral("gapOverlayPlot")) : nullptr;
+  auto* properties = window_->findChild<QTableWidget*>(QStringLiteral("propertiesTable"));
+  QVERIFY(traces && station && point && overlay && properties);
+  const auto legendAndProperties = [&] {
+    QStringList t;
+    for (QwtPlotItem* item : overlay->itemList(QwtPlotItem::Rtti_PlotCurve)) t << item->title().text();
+    for (int r = 0; r < properties->rowCount(); ++r) t << properties->item(r, 0)->text();
+    return t.join(QLatin1Char('|'));  // e.g. measured|model|model + residual_mode at 1+Y + ...|File|Access
+  };
   for (const QString& language : {QStringLiteral("it"), QStringLiteral("en"), QStringLiteral("it")}) {
     QVERIFY(window_->setLanguage(language));
     const bool it = language == QStringLiteral("it");
@@ -769,7 +768,17 @@ void DemoPagesTest::hammerStationFollowsTheLanguage() {
     QCOMPARE(station->text(),
              it ? QStringLiteral("Stazione: non collegata") : QStringLiteral("Station: not connected"));
     QCOMPARE(point->text(), it ? QStringLiteral("Ancora nessun punto") : QStringLiteral("No point yet"));
+    const QRegularExpression expected(
+        it ? QStringLiteral("^misura\\|modello\\|modello \\+ \\w+ in .*\\|File\\|Accesso$")
+           : QStringLiteral("^measured\\|model\\|model \\+ \\w+ at .*\\|File\\|Access$"));
+    QTRY_VERIFY2(expected.match(legendAndProperties()).hasMatch(), qPrintable(legendAndProperties()));
+    QCOMPARE(overlay->axisTitle(QwtPlot::xBottom).text(),
+             it ? QStringLiteral("Frequenza [Hz]") : QStringLiteral("Frequency [Hz]"));
   }
+  for (auto* tabs : gap->findChildren<QTabWidget*>())  // the overlay in Italian, looked at
+    if (const int i = tabs->indexOf(overlay->parentWidget()); i >= 0) tabs->setCurrentIndex(i);
+  QTest::qWait(50);
+  shot(QStringLiteral("model-vs-test_overlay_it"));
   QVERIFY(window_->setLanguage(QStringLiteral("en")));
 }
 
