@@ -3516,7 +3516,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+47"/>
         <source>H %1 / %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3564,19 +3564,24 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/modal/identification_kept.cpp" line="+37"/>
-        <location line="+106"/>
+        <location filename="../views/modal/identification_kept.cpp" line="+38"/>
+        <location line="+114"/>
         <source>CMIF 1 [dB]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-106"/>
-        <location line="+106"/>
+        <location line="-114"/>
+        <location line="+114"/>
         <source>|sum of FRFs| [dB]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-44"/>
+        <location line="-76"/>
+        <source>These are the kept modes, in the project already: click poles or run to save other ones</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+32"/>
         <source>Stabilization diagram</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3586,7 +3591,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/modal/identification_page.cpp" line="+17"/>
+        <location filename="../views/modal/identification_page.cpp" line="+18"/>
         <source>%n mode(s) selected automatically in %1 .. %2 Hz; click a pole to add or remove it.</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -3607,7 +3612,7 @@
         </translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+78"/>
         <location line="+9"/>
         <source>The chosen poles cannot be fitted: %1</source>
         <translation type="unfinished"></translation>
@@ -3618,7 +3623,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>Cannot remove the exponential window&apos;s damping: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3788,12 +3793,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../views/modal/identification_kept.cpp" line="-50"/>
         <source>Refine the chosen poles and store them as a modal result of the project</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../views/modal/identification_page.cpp" line="+2"/>
         <source>Mode</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5127,19 +5132,19 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+56"/>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="+253"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+245"/>
+        <location line="+27"/>
         <source>model + %1 + %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="+5"/>
+        <location line="-22"/>
+        <location line="+27"/>
         <source>model + %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+71"/>
         <location line="+85"/>
         <source>model + best effect</source>
         <translation type="unfinished"></translation>
@@ -5170,7 +5175,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-643"/>
+        <location line="-625"/>
         <source>effect</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5226,7 +5231,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+234"/>
+        <location line="+216"/>
         <location line="+8"/>
         <source>Cannot write %1: %2</source>
         <translation type="unfinished"></translation>
@@ -5268,7 +5273,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="-79"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="-98"/>
         <source>Lowest frequency used (0 = from the first line)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5343,7 +5348,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <location filename="../views/gap/model_test_view_kept.cpp" line="-116"/>
         <source>No diagnosis yet</source>
         <translation type="unfinished"></translation>
@@ -5397,7 +5402,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+62"/>
         <source>Kept diagnosis &quot;%1&quot; (analysis %2), as stored.</source>
         <translation type="unfinished"></translation>
     </message>

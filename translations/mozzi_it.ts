@@ -3516,7 +3516,7 @@
         <translation>Impossibile leggere le finestre dell&apos;insieme di FRF %1: %2</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+47"/>
         <source>H %1 / %2</source>
         <translation>H %1 / %2</translation>
     </message>
@@ -3564,19 +3564,24 @@
         <translation>Identificazione non riuscita: %1</translation>
     </message>
     <message>
-        <location filename="../views/modal/identification_kept.cpp" line="+37"/>
-        <location line="+106"/>
+        <location filename="../views/modal/identification_kept.cpp" line="+38"/>
+        <location line="+114"/>
         <source>CMIF 1 [dB]</source>
         <translation>CMIF 1 [dB]</translation>
     </message>
     <message>
-        <location line="-106"/>
-        <location line="+106"/>
+        <location line="-114"/>
+        <location line="+114"/>
         <source>|sum of FRFs| [dB]</source>
         <translation>|somma delle FRF| [dB]</translation>
     </message>
     <message>
-        <location line="-44"/>
+        <location line="-76"/>
+        <source>These are the kept modes, in the project already: click poles or run to save other ones</source>
+        <translation>Questi sono i modi conservati, già nel progetto: fai clic sui poli o esegui per salvarne altri</translation>
+    </message>
+    <message>
+        <location line="+32"/>
         <source>Stabilization diagram</source>
         <translation>Diagramma di stabilizzazione</translation>
     </message>
@@ -3586,7 +3591,7 @@
         <translation>Nessun diagramma di stabilizzazione per la banda conservata dell&apos;insieme di FRF %1: %2</translation>
     </message>
     <message numerus="yes">
-        <location filename="../views/modal/identification_page.cpp" line="+17"/>
+        <location filename="../views/modal/identification_page.cpp" line="+18"/>
         <source>%n mode(s) selected automatically in %1 .. %2 Hz; click a pole to add or remove it.</source>
         <translation>
             <numerusform>%n modo selezionato automaticamente in %1 .. %2 Hz; fai clic su un polo per aggiungerlo o toglierlo.</numerusform>
@@ -3607,7 +3612,7 @@
         </translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+78"/>
         <location line="+9"/>
         <source>The chosen poles cannot be fitted: %1</source>
         <translation>Impossibile stimare i poli scelti: %1</translation>
@@ -3618,7 +3623,7 @@
         <translation>Attenzione: %1. Togli uno dei due.</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>Cannot remove the exponential window&apos;s damping: %1</source>
         <translation>Impossibile togliere lo smorzamento della finestra esponenziale: %1</translation>
     </message>
@@ -3788,12 +3793,12 @@
         <translation>Salva modi</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../views/modal/identification_kept.cpp" line="-50"/>
         <source>Refine the chosen poles and store them as a modal result of the project</source>
         <translation>Affina i poli scelti e li memorizza come risultato modale del progetto</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../views/modal/identification_page.cpp" line="+2"/>
         <source>Mode</source>
         <translation>Modo</translation>
     </message>
@@ -5131,19 +5136,19 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>%1 (+%2 equiv.)</translation>
     </message>
     <message>
-        <location line="+56"/>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="+253"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+245"/>
+        <location line="+27"/>
         <source>model + %1 + %2</source>
         <translation>modello + %1 + %2</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="+5"/>
+        <location line="-22"/>
+        <location line="+27"/>
         <source>model + %1</source>
         <translation>modello + %1</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+71"/>
         <location line="+85"/>
         <source>model + best effect</source>
         <translation>modello + effetto migliore</translation>
@@ -5174,7 +5179,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Niente da esportare: esegui prima la diagnosi.</translation>
     </message>
     <message>
-        <location line="-643"/>
+        <location line="-625"/>
         <source>effect</source>
         <translation>effetto</translation>
     </message>
@@ -5230,7 +5235,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Verdetto: %1 (%2)</translation>
     </message>
     <message>
-        <location line="+234"/>
+        <location line="+216"/>
         <location line="+8"/>
         <source>Cannot write %1: %2</source>
         <translation>Impossibile scrivere %1: %2</translation>
@@ -5272,7 +5277,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Banda</translation>
     </message>
     <message>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="-79"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="-98"/>
         <source>Lowest frequency used (0 = from the first line)</source>
         <translation>Frequenza minima usata (0 = dalla prima riga)</translation>
     </message>
@@ -5347,7 +5352,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>modello</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <location filename="../views/gap/model_test_view_kept.cpp" line="-116"/>
         <source>No diagnosis yet</source>
         <translation>Nessuna diagnosi</translation>
@@ -5401,7 +5406,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Posizioni:</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+62"/>
         <source>Kept diagnosis &quot;%1&quot; (analysis %2), as stored.</source>
         <translation>Diagnosi conservata &quot;%1&quot; (analisi %2), così come è stata salvata.</translation>
     </message>

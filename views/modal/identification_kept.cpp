@@ -3,6 +3,7 @@
 // the selection, with the stabilization diagram of its band behind it.
 #include <qwt_plot.h>
 #include <QComboBox>
+#include <QPushButton>
 #include <QSpinBox>
 #include <algorithm>
 
@@ -66,6 +67,14 @@ void IdentificationPage::loadKept() {
   kept_ = Kept{*latest, std::move(table).value()};
   chosen_ = std::move(poles);
   selectionIsAutomatic_ = false;
+  selectionIsKept_ = true;
+}
+
+void IdentificationPage::updateSaveButton() {
+  saveButton_->setEnabled(outcome_ && !chosen_.empty() && !selectionIsKept_);
+  saveButton_->setToolTip(
+      selectionIsKept_ ? tr("These are the kept modes, in the project already: click poles or run to save other ones")
+                       : tr("Refine the chosen poles and store them as a modal result of the project"));
 }
 
 void IdentificationPage::drawDiagramBehindKept() {

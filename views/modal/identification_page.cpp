@@ -300,8 +300,10 @@ bool IdentificationPage::setFrfSet(qint64 id) {
     automatic_.clear();
     fit_.reset();
     kept_.reset();
+    selectionIsKept_ = false;
     showBackdrop();
     loadKept();
+    updateSaveButton();
     if (kept_) {
       setBand(kept_->info.bandLowHz, kept_->info.bandHighHz);
       diagram_->setAxisScale(QwtPlot::xBottom, kept_->info.bandLowHz, kept_->info.bandHighHz);
@@ -433,6 +435,7 @@ void IdentificationPage::onFinished(core::Result<identification::Outcome> result
   takeAutomaticSelection();
   chosen_ = automatic_;
   selectionIsAutomatic_ = true;
+  selectionIsKept_ = false;
   updateSelection();
   diagram_->repaint();  // drawn now, not at the next event loop turn
   diagramMs_ = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
@@ -477,6 +480,7 @@ void IdentificationPage::togglePole(int index) {
     chosen_.push_back(Chosen{p.pole, p.shape, index});
   }
   selectionIsAutomatic_ = false;
+  selectionIsKept_ = false;
   updateSelection();
   table_->repaint();
   synthesis_->repaint();
@@ -489,6 +493,7 @@ void IdentificationPage::resetSelection() {
   if (!outcome_) return;
   chosen_ = automatic_;
   selectionIsAutomatic_ = true;
+  selectionIsKept_ = false;
   updateSelection();
 }
 
@@ -548,6 +553,7 @@ void IdentificationPage::updateSelection() {
   synthesisStale_ = macStale_ = true;
   showTabs();
   emit selectionChanged();
+  updateSaveButton();
 }
 
 void IdentificationPage::showTable() {
@@ -768,7 +774,7 @@ void IdentificationPage::retranslate() {
   autoButton_->setToolTip(tr("Back to the poles the automatic selection chose"));
   nameEdit_->setPlaceholderText(tr("Name of the modal result"));
   saveButton_->setText(tr("Save modes"));
-  saveButton_->setToolTip(tr("Refine the chosen poles and store them as a modal result of the project"));
+  updateSaveButton();
   table_->setHorizontalHeaderLabels({tr("Mode"), tr("f [Hz]"), tr("std f [Hz]"), tr("zeta"), tr("std zeta"), tr("eta"),
                                      tr("MPC"), tr("MPD [deg]"), tr("Complexity")});
   residuals_->setHorizontalHeaderLabels({tr("FRF"), tr("Residual [%]"), tr("Level [dB]")});

@@ -139,6 +139,8 @@ class IdentificationPage : public QWidget {
   std::optional<std::pair<double, double>> selectionBand() const;
   void onFinished(core::Result<identification::Outcome> result);
   void updateSelection();
+  // Save enabled with a selection the project does not keep yet.
+  void updateSaveButton();
   void showTable();
   void showSynthesis();
   void showMac();
@@ -173,6 +175,9 @@ class IdentificationPage : public QWidget {
   // Standard errors belong to the automatic selection's refinement; shown
   // while the selection is that one.
   bool selectionIsAutomatic_ = false;
+  // The selection is the kept identification's, unchanged: saving it would
+  // store a copy of what the project keeps.
+  bool selectionIsKept_ = false;
   std::vector<core::modal::ModalTableRow> rows_;
   std::vector<core::modal::SelectionWarning> warnings_;
   int jobId_ = 0;
