@@ -147,18 +147,6 @@ ModeAnimationView::ModeAnimationView(QWidget* parent) : QWidget(parent) {
   animationButton_->setObjectName(QStringLiteral("animationExportButton"));
   form->addRow(frameButton_);
   form->addRow(animationButton_);
-  infoLabel_ = new QLabel(controls);
-  infoLabel_->setObjectName(QStringLiteral("animationInfo"));
-  infoLabel_->setWordWrap(true);
-  form->addRow(infoLabel_);
-  macLabel_ = new QLabel(controls);
-  macLabel_->setObjectName(QStringLiteral("animationMac"));
-  macLabel_->setWordWrap(true);
-  QFont big = macLabel_->font();
-  big.setPointSizeF(big.pointSizeF() * 1.3);
-  big.setBold(true);
-  macLabel_->setFont(big);
-  form->addRow(macLabel_);
   // The controls scroll on their own: the 3-D view keeps the page's height
   // (the page fits a 1280x800 window at any scale, the shape stays in view).
   auto* controlsScroll = new QScrollArea(this);
@@ -175,7 +163,13 @@ ModeAnimationView::ModeAnimationView(QWidget* parent) : QWidget(parent) {
   controlsScroll->setMinimumWidth(controlsScroll->maximumWidth());
   layout->addWidget(controlsScroll);
 
-  auto* splitter = new QSplitter(Qt::Horizontal, this);
+  // The scenes, and under them what they show: the shape's frequency,
+  // damping, nodes and Mozzi axis, the MAC of a comparison (below the
+  // controls they were under the fold at 1280x800).
+  auto* right = new QWidget(this);
+  auto* rightLayout = new QVBoxLayout(right);
+  rightLayout->setContentsMargins(0, 0, 0, 0);
+  auto* splitter = new QSplitter(Qt::Horizontal, right);
   splitter_ = splitter;
   auto makeScene = [splitter](const char* name, QLabel*& title) {
     auto* box = new QWidget(splitter);
@@ -195,7 +189,21 @@ ModeAnimationView::ModeAnimationView(QWidget* parent) : QWidget(parent) {
   splitter->setChildrenCollapsible(false);
   splitter->setSizes({500, 500});  // side by side: equal halves
   compare_->parentWidget()->hide();
-  layout->addWidget(splitter, 1);
+  rightLayout->addWidget(splitter, 1);
+  infoLabel_ = new QLabel(right);
+  infoLabel_->setObjectName(QStringLiteral("animationInfo"));
+  infoLabel_->setWordWrap(true);
+  infoLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);  // the axis's numbers can be copied
+  rightLayout->addWidget(infoLabel_);
+  macLabel_ = new QLabel(right);
+  macLabel_->setObjectName(QStringLiteral("animationMac"));
+  macLabel_->setWordWrap(true);
+  QFont big = macLabel_->font();
+  big.setPointSizeF(big.pointSizeF() * 1.3);
+  big.setBold(true);
+  macLabel_->setFont(big);
+  rightLayout->addWidget(macLabel_);
+  layout->addWidget(right, 1);
   screwLayer_ = std::make_unique<ScrewAxisLayer>(scene_);
 
   wireControls();
@@ -691,6 +699,7 @@ void ModeAnimationView::updateInfo() {
   shapeTitle_->setText(current_ ? current_->name : QString());
   compareTitle_->setText(other_ ? other_->name : QString());
   macLabel_->setText(macText());
+  macLabel_->setVisible(!macLabel_->text().isEmpty());
 }
 
 void ModeAnimationView::report(const QString& text) {
