@@ -54,7 +54,7 @@ std::string HitQuality::verdictText() const {
 }
 
 Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& options) {
-  if (auto ok = record.validateLayout(); !ok) return ok.error();
+  if (!record.validateLayout()) return record.validate().error();  // its first offender
   const Eigen::Index n = record.sampleCount();
   // Each channel's extremes and finiteness in one pass; a NaN or an infinity
   // is named by validate(), as before the check was folded in here.
@@ -103,7 +103,7 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
     if (fullScale > 0.0) {
       const double limit = options.fullScaleMargin * fullScale;
       const ThresholdCounts beyond = countBeyond(x.data(), n, limit, -limit);  // |x| >= limit
-      cq.clippedSamples = limit > 0.0 ? beyond.atOrAbove + beyond.atOrBelow : n;
+      cq.clippedSamples = limit > 0.0 ? beyond.atOrAbove + beyond.atOrBelow : (std::isnan(limit) ? 0 : n);
     } else {
       // flat tops: runs of >= clipRunLength samples pinned at a significant extreme
       const double tol = 1e-9 * cq.peak;
@@ -144,12 +144,14 @@ Result<HitQuality> assessHit(const TimeRecord& record, const HitQualityOptions& 
   }
   PulseWorkspace& ws = pulseWorkspace(n);
   Eigen::Map<Vector> f(ws.pulse.data(), n);
-  const auto force = record.samples.col(q.referenceChannel);
-  // The pre-trigger offset removed as the force is copied (one pass). max |f|
-  // from the channel's extremes: x - offset rounds monotonically in x, so the
-  // largest and smallest f are those of the largest and smallest x.
-  const double offset = quiet >= 2 ? force.head(quiet).mean() : 0.0;
-  f = force.array() - offset;
+  // The pre-trigger offset taken from the aligned copy (Eigen's sum starts
+  // its packets at the first aligned sample: over the column itself the order
+  // of adding, and the last bit, would depend on the column's address). max
+  // |f| from the channel's extremes: x - offset rounds monotonically in x, so
+  // the largest and smallest f are those of the largest and smallest x.
+  f = record.samples.col(q.referenceChannel);
+  const double offset = quiet >= 2 ? f.head(quiet).mean() : 0.0;
+  if (quiet >= 2) f.array() -= offset;
   const SampleExtremes& forceRange = extremes[static_cast<std::size_t>(q.referenceChannel)];
   const double absMax = std::max(forceRange.max - offset, offset - forceRange.min);
   const double noise = refq.noiseRms.value_or(0.0);

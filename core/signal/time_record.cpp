@@ -31,42 +31,55 @@ std::string channelLabel(const TimeRecord& r, Eigen::Index c) {
 }
 }  // namespace
 
-Result<void> TimeRecord::validateLayout() const {
+namespace {
+// What validate() and validateLayout() check before the channels.
+Result<void> checkRecord(const TimeRecord& r) {
   const std::string where = "time record";
-  if (!std::isfinite(sampleRateHz) || sampleRateHz <= 0.0) {
+  if (!std::isfinite(r.sampleRateHz) || r.sampleRateHz <= 0.0) {
     return makeError(ErrorCode::InvalidArgument,
-                     "sample rate must be finite and positive, got " + std::to_string(sampleRateHz) + " Hz", where);
+                     "sample rate must be finite and positive, got " + std::to_string(r.sampleRateHz) + " Hz", where);
   }
-  if (channels.empty()) return makeError(ErrorCode::InvalidArgument, "record has no channels", where);
-  if (samples.cols() != channelCount()) {
+  if (r.channels.empty()) return makeError(ErrorCode::InvalidArgument, "record has no channels", where);
+  if (r.samples.cols() != r.channelCount()) {
     return makeError(ErrorCode::InvalidArgument,
-                     "sample matrix has " + std::to_string(samples.cols()) + " columns for " +
-                         std::to_string(channelCount()) + " channels (mismatched lengths)",
+                     "sample matrix has " + std::to_string(r.samples.cols()) + " columns for " +
+                         std::to_string(r.channelCount()) + " channels (mismatched lengths)",
                      where);
   }
-  if (samples.rows() < 2) {
+  if (r.samples.rows() < 2) {
     return makeError(ErrorCode::InvalidArgument,
-                     "record is empty or too short (" + std::to_string(samples.rows()) + " samples, need 2)", where);
+                     "record is empty or too short (" + std::to_string(r.samples.rows()) + " samples, need 2)", where);
   }
-  if (preTriggerSamples < 0 || preTriggerSamples >= samples.rows()) {
+  if (r.preTriggerSamples < 0 || r.preTriggerSamples >= r.samples.rows()) {
     return makeError(ErrorCode::InvalidArgument,
-                     "pre-trigger of " + std::to_string(preTriggerSamples) + " samples lies outside the record of " +
-                         std::to_string(samples.rows()),
+                     "pre-trigger of " + std::to_string(r.preTriggerSamples) + " samples lies outside the record of " +
+                         std::to_string(r.samples.rows()),
                      where);
-  }
-  for (Eigen::Index c = 0; c < channelCount(); ++c) {
-    const auto& t = channels[static_cast<std::size_t>(c)].transducer;
-    if (!std::isfinite(t.sensitivityMvPerUnit) || t.sensitivityMvPerUnit <= 0.0) {
-      return makeError(ErrorCode::InvalidArgument, "transducer sensitivity must be positive (mV per unit)",
-                       where + ", " + channelLabel(*this, c));
-    }
   }
   return {};
 }
 
+Result<void> checkSensitivity(const TimeRecord& r, Eigen::Index c) {
+  const auto& t = r.channels[static_cast<std::size_t>(c)].transducer;
+  if (!std::isfinite(t.sensitivityMvPerUnit) || t.sensitivityMvPerUnit <= 0.0) {
+    return makeError(ErrorCode::InvalidArgument, "transducer sensitivity must be positive (mV per unit)",
+                     "time record, " + channelLabel(r, c));
+  }
+  return {};
+}
+}  // namespace
+
+Result<void> TimeRecord::validateLayout() const {
+  MOZZI_TRY(checkRecord(*this));
+  for (Eigen::Index c = 0; c < channelCount(); ++c) MOZZI_TRY(checkSensitivity(*this, c));
+  return {};
+}
+
 Result<void> TimeRecord::validate() const {
-  MOZZI_TRY(validateLayout());
+  MOZZI_TRY(checkRecord(*this));
+  // Channel by channel, its sensitivity then its samples: the first offender.
   for (Eigen::Index c = 0; c < channelCount(); ++c) {
+    MOZZI_TRY(checkSensitivity(*this, c));
     if (scanSamples(samples.col(c).data(), samples.rows()).finite) continue;
     for (Eigen::Index i = 0; i < samples.rows(); ++i) {
       if (!std::isfinite(samples(i, c))) {

@@ -46,11 +46,13 @@ struct TimeRecord {
   double durationS() const { return sampleRateHz > 0.0 ? static_cast<double>(sampleCount()) / sampleRateHz : 0.0; }
 
   // Sample rate finite and > 0, at least 2 samples, one column per channel,
-  // pre-trigger inside the record, sensitivities > 0, every sample finite.
-  // The error names the first offender (channel name and sample index).
+  // pre-trigger inside the record, every channel's sensitivity > 0 and
+  // samples finite. The error names the first offender (channel name and
+  // sample index).
   Result<void> validate() const;
   // validate() without the samples, for a caller that checks them in a pass
-  // of its own (assessHit) and calls validate() for the error when one is not.
+  // of its own (assessHit) and calls validate() for the error when one is
+  // not, or when this fails (validate() names the first offender).
   Result<void> validateLayout() const;
 };
 

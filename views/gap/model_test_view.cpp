@@ -773,7 +773,10 @@ void ModelTestView::retranslate() {
     afterLabel_ = storedAfterLabel(*storedDiagnosis_);
   }
   afterCurve_->setTitle(afterLabel_.isEmpty() ? tr("model + best effect") : afterLabel_);
-  if (!before_.empty()) showOverlay(std::max(0, overlayChoice_->currentIndex()));  // its axis titles
+  if (const int shown = overlayChoice_->currentIndex(); shown >= 0 && shown < static_cast<int>(before_.size())) {
+    overlayPlot_->setAxisTitle(QwtPlot::xBottom, axisTitle(before_[static_cast<size_t>(shown)].xLabel));
+    overlayPlot_->setAxisTitle(QwtPlot::yLeft, axisTitle(before_[static_cast<size_t>(shown)].yLabel));
+  }
   if (diagnosis_) {
     showDiagnosisText();
     fillRanking();

@@ -71,7 +71,7 @@ void IdentificationPage::loadKept() {
 }
 
 void IdentificationPage::updateSaveButton() {
-  saveButton_->setEnabled(outcome_ && !chosen_.empty() && !selectionIsKept_);
+  saveButton_->setEnabled(outcome_ && fit_ && !chosen_.empty() && !selectionIsKept_);
   saveButton_->setToolTip(
       selectionIsKept_ ? tr("These are the kept modes, in the project already: click poles or run to save other ones")
                        : tr("Refine the chosen poles and store them as a modal result of the project"));

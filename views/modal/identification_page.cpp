@@ -685,6 +685,7 @@ void IdentificationPage::save(const QString& name) {
   const md::ModalModel start = fit_->model;
   const double lo = outcome_->options.bandLowHz, hi = outcome_->options.bandHighHz;
   setStatus(tr("Refining the selection before saving ..."), false);
+  saveButton_->setEnabled(false);  // one save at a time
   jobId_ = jobs_->run<md::RefineResult>(
       this, tr("Refine and save"),
       [frf, start, lo, hi](JobProgress& p) { return identification::refine(*frf, start, lo, hi, p); },
@@ -694,6 +695,7 @@ void IdentificationPage::save(const QString& name) {
           const QString why =
               tr("Refinement failed, nothing saved: %1").arg(QString::fromStdString(r.error().describe()));
           setStatus(why, true);
+          updateSaveButton();
           emit saveFailed(why);
           return;
         }
@@ -709,6 +711,7 @@ void IdentificationPage::storeModel(const md::ModalModel& model, const QString& 
   if (!table) {
     const QString why = tr("Cannot store the modes: %1").arg(QString::fromStdString(table.error().describe()));
     setStatus(why, true);
+    updateSaveButton();
     emit saveFailed(why);
     return;
   }
@@ -723,11 +726,14 @@ void IdentificationPage::storeModel(const md::ModalModel& model, const QString& 
   if (!id) {
     const QString why = tr("Cannot store the modes: %1").arg(QString::fromStdString(id.error().describe()));
     setStatus(why, true);
+    updateSaveButton();
     emit saveFailed(why);
     return;
   }
   setStatus(tr("Saved %n mode(s) as modal result %1.", nullptr, static_cast<int>(table->modes.size())).arg(*id), false);
   if (log_) log_(tr("Modal result %1 saved from FRF set %2").arg(*id).arg(frfSetId_));
+  selectionIsKept_ = true;  // saved: a second click would store a copy
+  updateSaveButton();
   emit saved(*id);
 }
 

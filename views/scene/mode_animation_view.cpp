@@ -194,6 +194,8 @@ ModeAnimationView::ModeAnimationView(QWidget* parent) : QWidget(parent) {
   infoLabel_->setObjectName(QStringLiteral("animationInfo"));
   infoLabel_->setWordWrap(true);
   infoLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);  // the axis's numbers can be copied
+  // Four lines kept: the 3-D view does not change height from mode to mode.
+  infoLabel_->setMinimumHeight(infoLabel_->fontMetrics().lineSpacing() * 4);
   rightLayout->addWidget(infoLabel_);
   macLabel_ = new QLabel(right);
   macLabel_->setObjectName(QStringLiteral("animationMac"));

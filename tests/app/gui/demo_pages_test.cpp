@@ -757,7 +757,8 @@ void DemoPagesTest::pagesFollowTheLanguage() {
   const auto legendAndProperties = [&] {
     QStringList t;
     for (QwtPlotItem* item : overlay->itemList(QwtPlotItem::Rtti_PlotCurve)) t << item->title().text();
-    for (int r = 0; r < properties->rowCount(); ++r) t << properties->item(r, 0)->text();
+    for (int r = 0; r < properties->rowCount(); ++r)
+      if (properties->item(r, 0)) t << properties->item(r, 0)->text();
     return t.join(QLatin1Char('|'));  // e.g. measured|model|model + residual_mode at 1+Y + ...|File|Access
   };
   for (const QString& language : {QStringLiteral("it"), QStringLiteral("en"), QStringLiteral("it")}) {

@@ -145,6 +145,10 @@ TEST(HitQuality, ClippingIsFlaggedOnEveryChannel) {
   ASSERT_TRUE(q.ok());
   EXPECT_FALSE(q->accepted);
   EXPECT_TRUE(q->channels[0].clipped);
+  // Every sample at or beyond 0.999 of the range, counted one by one.
+  const double limit = HitQualityOptions{}.fullScaleMargin * rec->channels[0].fullScale;
+  const auto force = rec->samples.col(0);
+  EXPECT_EQ(q->channels[0].clippedSamples, (force.array().abs() >= limit).count());
   EXPECT_GT(q->channels[0].clippedSamples, 0);
 }
 
@@ -184,6 +188,15 @@ TEST(HitQuality, BadInputIsAnError) {
   auto e = assessHit(r);
   ASSERT_FALSE(e.ok());
   EXPECT_NE(e.error().where.find("sample 100"), std::string::npos) << e.error().describe();
+  // The first offender channel by channel: a NaN in channel 1 before a bad
+  // sensitivity in channel 2.
+  r = *rec;
+  r.samples(7, 1) = std::nan("");
+  r.channels[2].transducer.sensitivityMvPerUnit = 0.0;
+  e = assessHit(r);
+  ASSERT_FALSE(e.ok());
+  EXPECT_NE(e.error().where.find("sample 7"), std::string::npos) << e.error().describe();
+  EXPECT_EQ(e.error().describe(), r.validate().error().describe());
   r = *rec;
   r.samples.resize(0, 3);
   EXPECT_FALSE(assessHit(r).ok());
