@@ -257,10 +257,9 @@ QString ModelTestView::liveAfterLabel() const {
 // tr() when they spell the same label, else the file's words as they are.
 QString ModelTestView::storedAfterLabel(const StoredDiagnosis& d) {
   if (d.afterLabel.empty()) return {};
+  // Core's own spelling of the stored label (core::report::effectAtLocation).
   auto english = [](const StoredDiagnosis::RankedEffect& r) {
-    std::string s = r.effect;
-    for (std::size_t k = 0; k < r.location.size(); ++k) s += (k == 0 ? " at " : ", ") + r.location[k];
-    return s;
+    return core::report::effectAtLocation(core::gap::Candidate(r.effect, r.location, {}));
   };
   auto local = [](const StoredDiagnosis::RankedEffect& r) { return effectText(r.effect, r.location, {}); };
   std::vector<const StoredDiagnosis::RankedEffect*> verdict;
