@@ -11,6 +11,8 @@
 #include <thread>
 #include <vector>
 
+#include "core/common/thread_start.h"
+
 namespace mozzi::core {
 
 // Runs body(i) for i in [0, n) on up to `threads` threads (0: one per
@@ -39,7 +41,8 @@ void parallelFor(std::size_t n, Body&& body, unsigned threads = 0) {
     }
   };
   std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+  // Placed off the calling thread's core, which is busy with worker() below.
+  for (unsigned t = 1; t < threads; ++t) pool.push_back(startThreadOnAnotherCore(worker));
   worker();
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);

@@ -30,11 +30,13 @@ struct UffHitReader::Impl {
   std::string path;
   std::vector<Dof> references;
   std::optional<uff::DatasetReader> reader;
-  // Three buffers in turn: the hit being read, the one handed out last, and
-  // the one before it, which a consumer may still be working on while the
-  // next hit is read (the header's contract; `mozzi-cli frf` averages hit k
-  // on a second thread while it reads and checks hit k + 1).
-  static constexpr int kBuffers = 3;
+  // Four buffers in turn: the hit being read (a hit ends where the next load
+  // case's first record starts, which is read into the following buffer), the
+  // one handed out last and the one before it, which a consumer may still be
+  // working on while the next hit is read (the header's contract; `mozzi-cli
+  // frf` averages hits k and k + 1 on a second thread while it reads and
+  // checks hit k + 2).
+  static constexpr int kBuffers = 4;
   UffHit hits[kBuffers];
   Eigen::Index count[kBuffers] = {};  // channels written into each buffer
   int filling = 0;                    // buffer of the hit being read

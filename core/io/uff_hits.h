@@ -3,8 +3,8 @@
 // records of a file, streamed: one hit per load case (record 6), channels in
 // file order, as `mozzi-cli frf` reads them (docs/cli/frf.md). The samples
 // are read straight from the file into the hit's sample matrix (the reader's
-// ordinate sink), three hits' matrices are reused for the whole file, so
-// memory is three hits whatever the file's length and nothing is copied
+// ordinate sink), four hits' matrices are reused for the whole file, so
+// memory is four hits whatever the file's length and nothing is copied
 // (issue 19). The records of one load case must be consecutive in the file
 // (every writer does so); a load case that comes back after another one is an
 // error naming it.
@@ -44,8 +44,9 @@ class UffHitReader {
   void onFirstLength(std::function<void(Eigen::Index)> callback);
 
   // The next hit, nullptr after the last one. The hit stays valid until the
-  // second call after this one starts, so another thread may read it while
-  // the next hit is read (not while the one after that is). Errors name the
+  // third call after this one starts, so another thread may work on it and
+  // on the next one while the hit after them is read (not while the one after
+  // that is). Errors name the
   // file, load case and channel. NotFound when the file holds no
   // time-response record at all.
   Result<const UffHit*> next();

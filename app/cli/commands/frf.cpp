@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <condition_variable>
+#include <deque>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -20,6 +21,7 @@
 #include "app/cli/args.h"
 #include "app/cli/command.h"
 #include "app/cli/output.h"
+#include "core/common/thread_start.h"
 #include "core/io/uff/uff.h"
 #include "core/io/uff_hits.h"
 #include "core/signal/frf_estimator.h"
@@ -57,19 +59,22 @@ std::string dofList(const std::vector<core::Dof>& dofs) {
 }
 
 // The averaging of the accepted hits on a second thread while the calling
-// thread reads and checks the next hit: the user waits for wall time, and
+// thread reads and checks the next ones: the user waits for wall time, and
 // reading plus checking a hit costs about what its four FFTs and the
-// accumulation cost (issue 19). One hit in flight at a time, averaged in the
-// order handed over, so the sums are those of the sequential loop whatever
-// the timing; UffHitReader keeps a hit valid while the next one is read. A
-// hit the averaging thread has not started yet when the caller needs the
-// slot (a loaded machine that has not scheduled it) is averaged by the
-// caller itself rather than waited for; on a single core every hit is.
+// accumulation cost (issue 19). Up to two hits in flight (UffHitReader keeps
+// a hit valid while the next two are read), so that neither thread waits for
+// the other after every hit: with one, each hand-over cost the averaging
+// thread a wake-up of 0.25-0.6 ms on the reference machine. Hits are averaged
+// one at a time in the order handed over, so the sums are those of the
+// sequential loop whatever the timing. A hit the averaging thread has not
+// started yet when the caller needs its slot (a loaded machine that has not
+// scheduled it) is averaged by the caller itself rather than waited for; on
+// a single core every hit is.
 class AveragingThread {
  public:
   // `options` is read when the first hit is averaged, and must outlive this.
   explicit AveragingThread(const sg::FrfOptions& options) : options_(options) {
-    if (std::thread::hardware_concurrency() >= 2) thread_ = std::thread([this] { run(); });
+    if (std::thread::hardware_concurrency() >= 2) thread_ = core::startThreadOnAnotherCore([this] { run(); });
   }
   ~AveragingThread() {
     if (!thread_.joinable()) return;
@@ -77,7 +82,7 @@ class AveragingThread {
       std::lock_guard<std::mutex> lock(mutex_);
       stop_ = true;
     }
-    wake_.notify_all();
+    changed_.notify_all();
     thread_.join();
   }
   AveragingThread(const AveragingThread&) = delete;
@@ -91,44 +96,47 @@ class AveragingThread {
       std::lock_guard<std::mutex> lock(mutex_);
       planLength_ = n;
     }
-    wake_.notify_one();
+    changed_.notify_all();
   }
-  // Completes the hit in flight, then hands `hit` over (it must stay valid
-  // until the next submit() or finish()); false once a hit has failed.
+  // Completes hits until at most one is in flight, then hands `hit` over (it
+  // must stay valid until the second submit() after this one, or finish());
+  // false once a hit has failed.
   bool submit(const core::io::UffHit& hit) {
     std::unique_lock<std::mutex> lock(mutex_);
-    complete(lock);
+    completeUntil(lock, 1);
     if (error_) return false;
-    pending_ = &hit;
-    if (!thread_.joinable()) complete(lock);
+    pending_.push_back(&hit);
+    if (!thread_.joinable()) completeUntil(lock, 0);
     lock.unlock();
-    wake_.notify_one();
+    changed_.notify_all();
     return true;
   }
-  // Completes the hit in flight; the first failure, "load case N: reason".
+  // Completes every hit in flight; the first failure, "load case N: reason".
   const std::optional<std::string>& finish() {
     std::unique_lock<std::mutex> lock(mutex_);
-    complete(lock);
+    completeUntil(lock, 0);
     return error_;
   }
   // The average, after finish() returned no failure.
   sg::SpectralAverager& averager() { return *averager_; }
 
  private:
-  // Waits for the hit the averaging thread is on, or averages the one it has
-  // not taken yet here; either way, one thread at a time on the averager.
-  void complete(std::unique_lock<std::mutex>& lock) {
-    done_.wait(lock, [this] { return !running_; });
-    if (const core::io::UffHit* hit = std::exchange(pending_, nullptr)) {
-      lock.unlock();
-      average(*hit);
-      lock.lock();
+  std::size_t inFlight() const { return pending_.size() + (averaging_ ? 1 : 0); }
+  // Until at most `limit` hits are in flight: waits while a hit is being
+  // averaged, and averages the oldest waiting hit here when none is.
+  void completeUntil(std::unique_lock<std::mutex>& lock, std::size_t limit) {
+    while (inFlight() > limit) {
+      if (averaging_) {
+        changed_.wait(lock);
+        continue;
+      }
+      averageOldest(lock);
     }
   }
   void run() {
     std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
-      wake_.wait(lock, [this] { return stop_ || pending_ != nullptr || planLength_ > 0; });
+      changed_.wait(lock, [this] { return stop_ || planLength_ > 0 || (!averaging_ && !pending_.empty()); });
       if (planLength_ > 0) {
         const Eigen::Index n = std::exchange(planLength_, 0);
         lock.unlock();
@@ -136,40 +144,48 @@ class AveragingThread {
         lock.lock();
         continue;
       }
-      const core::io::UffHit* hit = std::exchange(pending_, nullptr);
-      if (hit == nullptr) return;  // stopped with nothing in flight
-      running_ = true;
-      lock.unlock();
-      average(*hit);
-      lock.lock();
-      running_ = false;
-      done_.notify_one();
+      if (averaging_ || pending_.empty()) return;  // stopped with nothing left to take
+      averageOldest(lock);
     }
   }
-  // Runs on whichever thread took the hit, never on two at once; error_ and
-  // averager_ are read by the caller only after complete().
-  void average(const core::io::UffHit& hit) {
-    if (error_) return;
+  // Takes the oldest waiting hit and averages it outside the lock; the
+  // averager is never on two threads at once (averaging_). error_ is only
+  // touched under the lock: the caller reads it while a hit may be averaged.
+  void averageOldest(std::unique_lock<std::mutex>& lock) {
+    const core::io::UffHit* hit = pending_.front();
+    pending_.pop_front();
+    if (error_) {  // after a failure the rest are dropped
+      changed_.notify_all();
+      return;
+    }
+    averaging_ = true;
+    lock.unlock();
+    std::optional<std::string> failure = average(*hit);
+    lock.lock();
+    averaging_ = false;
+    if (failure) error_ = std::move(failure);
+    changed_.notify_all();
+  }
+  // "load case N: reason" when the hit cannot be averaged.
+  std::optional<std::string> average(const core::io::UffHit& hit) {
     if (!averager_) {
       auto a = sg::SpectralAverager::create(hit.record, options_);
-      if (!a) {
-        error_ = "load case " + std::to_string(hit.loadCase) + ": " + a.error().describe();
-        return;
-      }
+      if (!a) return "load case " + std::to_string(hit.loadCase) + ": " + a.error().describe();
       averager_.emplace(std::move(*a));
     }
     if (auto ok = averager_->add(hit.record); !ok) {
-      error_ = "load case " + std::to_string(hit.loadCase) + ": " + ok.error().describe();
+      return "load case " + std::to_string(hit.loadCase) + ": " + ok.error().describe();
     }
+    return std::nullopt;
   }
 
   const sg::FrfOptions& options_;
   std::optional<sg::SpectralAverager> averager_;
   std::optional<std::string> error_;
   std::mutex mutex_;
-  std::condition_variable wake_, done_;
-  const core::io::UffHit* pending_ = nullptr;  // handed over, not taken yet
-  bool running_ = false;                       // the averaging thread is on a hit
+  std::condition_variable changed_;              // any of the state below changed
+  std::deque<const core::io::UffHit*> pending_;  // handed over, not taken yet, oldest first
+  bool averaging_ = false;                       // a thread is averaging a hit
   Eigen::Index planLength_ = 0;
   bool stop_ = false;
   std::thread thread_;  // last: started once the members above exist
@@ -240,7 +256,7 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   if (int rc = refuseOutputsOntoInputs(*parsed, kSpec, {path}, "frf", err); rc != kExitOk) return rc;
 
   // Hits stream from the file one at a time, read straight into reused
-  // sample matrices (core/io/uff_hits.h): memory is three hits, not the file.
+  // sample matrices (core/io/uff_hits.h): memory is four hits, not the file.
   auto hitReader = core::io::UffHitReader::open(path, references);
   if (!hitReader) {
     err << "mozzi-cli frf: " << hitReader.error().describe() << "\n";

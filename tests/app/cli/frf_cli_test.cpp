@@ -170,6 +170,36 @@ TEST_F(FrfCli, UsageAndInputErrors) {
   EXPECT_EQ(noRef.code, kExitFailure) << noRef.out;
 }
 
+// Hits are averaged on a second thread, up to two behind the one being read:
+// a hit that cannot be averaged (its sample rate is not the first hit's) is
+// still the error reported, named by its load case, though the hits after it
+// were read and checked meanwhile; nothing is written.
+TEST_F(FrfCli, AHitThatCannotBeAveragedIsNamedThoughLaterHitsWereRead) {
+  uff::UffFile file;
+  for (int h = 1; h <= 6; ++h) {
+    sg::HammerHitSpec spec;
+    spec.sampleCount = 16384;
+    spec.pulseWidthS = 4e-3;
+    spec.sampleRateHz = h == 4 ? 4096.0 : 8192.0;
+    spec.seed = static_cast<std::uint64_t>(h);
+    auto rec = sg::synthesizeHammerHit(twoDof(), spec);
+    ASSERT_TRUE(rec.ok()) << rec.error().describe();
+    appendHit(file, *rec, h);
+  }
+  const std::string mixed = (dir_ / "mixed_rates.uff").string();
+  ASSERT_TRUE(uff::writeFile(mixed, file).ok());
+  const std::string out = (dir_ / "mixed_frf.uff").string();
+  for (int attempt = 0; attempt < 5; ++attempt) {  // the threads' timing differs from run to run
+    const CliRun r = run({mixed, "--estimator", "H1", "--out", out});
+    EXPECT_EQ(r.code, kExitFailure) << r.out;
+    EXPECT_NE(r.err.find("load case 4: "), std::string::npos) << r.err;
+    if (attempt == 0) std::printf("%s", r.err.c_str());
+    EXPECT_NE(r.err.find("sample rate"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(out));
+  }
+}
+
 TEST_F(FrfCli, ExecutableRuns) {
   const std::string cmd = std::string(MOZZI_CLI_PATH) + " frf " + hits_ + " --estimator H1 > /dev/null 2>&1";
   const int status = std::system(cmd.c_str());

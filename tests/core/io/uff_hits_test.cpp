@@ -1,5 +1,5 @@
 // UffHitReader (core/io/uff_hits.h): hits streamed from UFF 58 time records,
-// one per load case; a hit handed out stays intact while the next one is read
+// one per load case; a hit handed out stays intact while the next two are read
 // (`mozzi-cli frf` averages it on another thread meanwhile), and the length
 // of the first record is announced before its samples are read.
 #include "core/io/uff_hits.h"
@@ -72,25 +72,32 @@ void expectHit(const UffHit& hit, int h, const std::string& when) {
   EXPECT_EQ(hit.record.channels[0].transducer.kind, signal::TransducerKind::Force) << when;
 }
 
-TEST(UffHitReader, AHitStaysIntactWhileTheNextIsRead) {
-  const std::string path = writeHits("uff_hits_intact", 5);
+TEST(UffHitReader, AHitStaysIntactWhileTheNextTwoAreRead) {
+  const std::string path = writeHits("uff_hits_intact", 6);
   auto reader = UffHitReader::open(path);
   ASSERT_TRUE(reader) << reader.error().describe();
+  const UffHit* twoBefore = nullptr;
   const UffHit* previous = nullptr;
-  for (int h = 1; h <= 5; ++h) {
+  for (int h = 1; h <= 6; ++h) {
     auto hit = reader->next();
     ASSERT_TRUE(hit) << hit.error().describe();
     ASSERT_NE(*hit, nullptr) << "hit " << h;
     expectHit(**hit, h, "hit " + std::to_string(h) + " when handed out");
-    // The one before it was read while this one was: it must be untouched
-    // (the first record of hit h + 1 is already read into a buffer by now).
+    // The two before it were read while this one was: they must be untouched
+    // (the first record of hit h + 1 is already read into a buffer by now);
+    // `mozzi-cli frf` averages them meanwhile.
     if (previous != nullptr) expectHit(*previous, h - 1, "hit " + std::to_string(h - 1) + " after the next call");
+    if (twoBefore != nullptr) {
+      expectHit(*twoBefore, h - 2, "hit " + std::to_string(h - 2) + " after the second call after it");
+    }
+    twoBefore = previous;
     previous = *hit;
   }
   auto end = reader->next();
   ASSERT_TRUE(end);
   EXPECT_EQ(*end, nullptr);
-  expectHit(*previous, 5, "the last hit after the end");
+  expectHit(*previous, 6, "the last hit after the end");
+  expectHit(*twoBefore, 5, "the hit before the last after the end");
   fs::remove(path);
 }
 
