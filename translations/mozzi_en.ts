@@ -2485,7 +2485,7 @@
     </message>
     <message>
         <location line="+4"/>
-        <source>|sum of FRFs| [dB]</source>
+        <source>sum of |H| [dB]</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3572,7 +3572,7 @@
     <message>
         <location line="-114"/>
         <location line="+114"/>
-        <source>|sum of FRFs| [dB]</source>
+        <source>sum of |H| [dB]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3654,7 +3654,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Refine and save</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3664,13 +3664,13 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+16"/>
         <location line="+15"/>
-        <location line="+14"/>
         <source>Cannot store the modes: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Saved %n mode(s) as modal result %1.</source>
         <translation type="unfinished">
             <numerusform></numerusform>
@@ -3683,7 +3683,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>FRF set</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4713,7 +4713,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
 <context>
     <name>mozzi::views::ModeAnimationView</name>
     <message>
-        <location filename="../views/scene/mode_animation_view.cpp" line="+246"/>
+        <location filename="../views/scene/mode_animation_view.cpp" line="+256"/>
         <source>Export a frame</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4748,7 +4748,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+62"/>
         <location line="+5"/>
         <location line="+5"/>
         <source>Cannot show %1: %2</source>
@@ -4869,7 +4869,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>Shape</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4905,7 +4905,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location line="+1"/>
-        <source>|sum H| [dB]</source>
+        <source>sum of |H| [dB]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -5133,13 +5133,13 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location filename="../views/gap/model_test_view_kept.cpp" line="+245"/>
-        <location line="+27"/>
+        <location line="+26"/>
         <source>model + %1 + %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-22"/>
-        <location line="+27"/>
+        <location line="-21"/>
+        <location line="+26"/>
         <source>model + %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5273,7 +5273,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="-98"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="-97"/>
         <source>Lowest frequency used (0 = from the first line)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5348,7 +5348,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+18"/>
         <location filename="../views/gap/model_test_view_kept.cpp" line="-116"/>
         <source>No diagnosis yet</source>
         <translation type="unfinished"></translation>
@@ -5402,7 +5402,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+61"/>
         <source>Kept diagnosis &quot;%1&quot; (analysis %2), as stored.</source>
         <translation type="unfinished"></translation>
     </message>

@@ -2485,8 +2485,8 @@
     </message>
     <message>
         <location line="+4"/>
-        <source>|sum of FRFs| [dB]</source>
-        <translation>|somma delle FRF| [dB]</translation>
+        <source>sum of |H| [dB]</source>
+        <translation>somma di |H| [dB]</translation>
     </message>
 </context>
 <context>
@@ -3572,8 +3572,8 @@
     <message>
         <location line="-114"/>
         <location line="+114"/>
-        <source>|sum of FRFs| [dB]</source>
-        <translation>|somma delle FRF| [dB]</translation>
+        <source>sum of |H| [dB]</source>
+        <translation>somma di |H| [dB]</translation>
     </message>
     <message>
         <location line="-76"/>
@@ -3654,7 +3654,7 @@
         <translation>Affinamento della selezione prima del salvataggio ...</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Refine and save</source>
         <translation>Affina e salva</translation>
     </message>
@@ -3664,13 +3664,13 @@
         <translation>Affinamento non riuscito, niente salvato: %1</translation>
     </message>
     <message>
+        <location line="+16"/>
         <location line="+15"/>
-        <location line="+14"/>
         <source>Cannot store the modes: %1</source>
         <translation>Impossibile memorizzare i modi: %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Saved %n mode(s) as modal result %1.</source>
         <translation>
             <numerusform>Salvato %n modo come risultato modale %1.</numerusform>
@@ -3683,7 +3683,7 @@
         <translation>Risultato modale %1 salvato dall&apos;insieme di FRF %2</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>FRF set</source>
         <translation>Insieme di FRF</translation>
     </message>
@@ -4717,7 +4717,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ModeAnimationView</name>
     <message>
-        <location filename="../views/scene/mode_animation_view.cpp" line="+246"/>
+        <location filename="../views/scene/mode_animation_view.cpp" line="+256"/>
         <source>Export a frame</source>
         <translation>Esporta un fotogramma</translation>
     </message>
@@ -4752,7 +4752,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>%1 (%2 Hz)</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+62"/>
         <location line="+5"/>
         <location line="+5"/>
         <source>Cannot show %1: %2</source>
@@ -4873,7 +4873,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Scegli un modo da animare.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>Shape</source>
         <translation>Forma</translation>
     </message>
@@ -4909,8 +4909,8 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location line="+1"/>
-        <source>|sum H| [dB]</source>
-        <translation>|somma H| [dB]</translation>
+        <source>sum of |H| [dB]</source>
+        <translation>somma di |H| [dB]</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -5137,13 +5137,13 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location filename="../views/gap/model_test_view_kept.cpp" line="+245"/>
-        <location line="+27"/>
+        <location line="+26"/>
         <source>model + %1 + %2</source>
         <translation>modello + %1 + %2</translation>
     </message>
     <message>
-        <location line="-22"/>
-        <location line="+27"/>
+        <location line="-21"/>
+        <location line="+26"/>
         <source>model + %1</source>
         <translation>modello + %1</translation>
     </message>
@@ -5277,7 +5277,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Banda</translation>
     </message>
     <message>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="-98"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="-97"/>
         <source>Lowest frequency used (0 = from the first line)</source>
         <translation>Frequenza minima usata (0 = dalla prima riga)</translation>
     </message>
@@ -5352,7 +5352,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>modello</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+18"/>
         <location filename="../views/gap/model_test_view_kept.cpp" line="-116"/>
         <source>No diagnosis yet</source>
         <translation>Nessuna diagnosi</translation>
@@ -5406,7 +5406,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Posizioni:</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+61"/>
         <source>Kept diagnosis &quot;%1&quot; (analysis %2), as stored.</source>
         <translation>Diagnosi conservata &quot;%1&quot; (analisi %2), così come è stata salvata.</translation>
     </message>

@@ -81,6 +81,13 @@ Result<ComplexVector> frfSum(const FrfMatrix& frf, const std::vector<FrfPick>& p
   return sum;
 }
 
+Result<Vector> frfMagnitudeSum(const FrfMatrix& frf, const std::vector<FrfPick>& picks) {
+  MOZZI_TRY(checkPicks(frf, picks, "FRF magnitude sum"));
+  Vector sum = Vector::Zero(frf.lineCount());
+  for (const auto& p : picks) sum += frf.h[static_cast<std::size_t>(p.reference)].col(p.response).cwiseAbs();
+  return sum;
+}
+
 Result<FrfMatrix> frfSubset(const FrfMatrix& frf, const std::vector<FrfPick>& picks) {
   MOZZI_TRY(checkPicks(frf, picks, "FRF selection"));
   std::vector<Eigen::Index> rsp, ref;

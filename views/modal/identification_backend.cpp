@@ -57,9 +57,9 @@ std::shared_ptr<const core::Vector> backdropDb(const core::FrfMatrix& frf, Backd
     if (sv) mag = sv->col(0);
   }
   if (mag.size() == 0) {
-    auto sum = core::frfSum(frf, core::pickFrfs(frf, {}));
+    auto sum = core::frfMagnitudeSum(frf, core::pickFrfs(frf, {}));
     if (!sum) return nullptr;
-    mag = sum->cwiseAbs();
+    mag = std::move(*sum);
   }
   core::Vector db(mag.size());
   for (Eigen::Index k = 0; k < mag.size(); ++k) db[k] = 20.0 * std::log10(std::max(mag[k], 1e-300));

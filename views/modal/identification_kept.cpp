@@ -35,7 +35,7 @@ void IdentificationPage::showBackdrop() {
     v = std::make_shared<const core::Vector>(db->segment(a, n));
   }
   diagram_->setDiagram(nullptr, f, v,
-                       kind == identification::Backdrop::Cmif ? tr("CMIF 1 [dB]") : tr("|sum of FRFs| [dB]"));
+                       kind == identification::Backdrop::Cmif ? tr("CMIF 1 [dB]") : tr("sum of |H| [dB]"));
   // The orders the run will fill.
   diagram_->setAxisScale(QwtPlot::yLeft, 0.0, orderBox_->value() + 2.0);
   diagram_->replot();
@@ -149,7 +149,7 @@ void IdentificationPage::showDiagramBehindKept(qint64 keptId, core::Result<ident
 void IdentificationPage::showOutcomeDiagram() {
   diagram_->setDiagram(
       outcome_->diagram, std::make_shared<const core::Vector>(frf_->frequencyHz), outcome_->backdropDb,
-      outcome_->options.backdrop == identification::Backdrop::Cmif ? tr("CMIF 1 [dB]") : tr("|sum of FRFs| [dB]"));
+      outcome_->options.backdrop == identification::Backdrop::Cmif ? tr("CMIF 1 [dB]") : tr("sum of |H| [dB]"));
 }
 
 void IdentificationPage::changeBackdrop() {

@@ -170,7 +170,7 @@ bool renderStabilization(const FigureRequest& r, FigureDrawing& out, QString* er
   auto plot = std::make_unique<StabilizationPlot>();
   plot->resize(1000, 700);
   plot->setDiagram(outcome->diagram, std::make_shared<const core::Vector>(frf->frequencyHz), outcome->backdropDb,
-                   tr("|sum of FRFs| [dB]"));
+                   tr("sum of |H| [dB]"));
   std::vector<double> frequencies;
   for (const auto& m : modes->modes) frequencies.push_back(m.frequencyHz);
   plot->setSelection({}, frequencies);

@@ -328,14 +328,16 @@ void ModeAnimationView::setFrfSet(std::shared_ptr<const core::FrfMatrix> set, co
   }
   const bool modesInSet = firstMode <= lastMode;
   odsSpin_->setValue(modesInSet ? firstMode : frf.frequencyHz[frf.lineCount() / 2]);
-  // The guide curve: |sum of every FRF of the set| in dB, the Identification
-  // page's backdrop, whose peaks (the modes) show which frequencies are worth a
-  // look. Not the FRFs of one reference alone: on a roving-hammer set that is
-  // one hammer point, perhaps one that barely moves.
-  auto sum = core::frfSum(frf, core::pickFrfs(frf, {}));
+  // The guide curve: the sum of |H| over every FRF of the set in dB, the
+  // Identification page's backdrop, whose peaks (the modes) show which
+  // frequencies are worth a look. Not the FRFs of one reference alone: on a
+  // roving-hammer set that is one hammer point, perhaps one that barely
+  // moves; not their complex sum, in which an antisymmetric mode cancels.
+  auto sum = core::frfMagnitudeSum(frf, core::pickFrfs(frf, {}));
   if (!sum) return;
   auto x = std::make_shared<const core::Vector>(frf.frequencyHz);
-  auto y = std::make_shared<const core::Vector>(core::frfViewValues(*sum, core::FrfView::MagnitudeDb));
+  auto y =
+      std::make_shared<const core::Vector>(core::frfViewValues(sum->cast<core::Complex>(), core::FrfView::MagnitudeDb));
   odsCurve_->setData(new VectorSeries(x, y));
   odsPlot_->setYFloor(core::kMagnitudeFloorDb);
   odsPlot_->show();
@@ -728,7 +730,7 @@ void ModeAnimationView::retranslate() {
   // Axis titles in the controls' own font: Qwt's default bold title is too
   // large for a plot this small.
   for (const auto& [axis, text] : {std::pair<int, QString>{QwtPlot::xBottom, tr("Frequency [Hz]")},
-                                   std::pair<int, QString>{QwtPlot::yLeft, tr("|sum H| [dB]")}}) {
+                                   std::pair<int, QString>{QwtPlot::yLeft, tr("sum of |H| [dB]")}}) {
     QwtText title(text);
     title.setFont(odsPlot_->font());
     odsPlot_->setAxisTitle(axis, title);

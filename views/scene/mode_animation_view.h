@@ -69,7 +69,7 @@ class ModeAnimationView : public QWidget {
   bool compareWith(int index);
   // Shows the ODS at the FRF line nearest `frequencyHz` in the left scene.
   bool showOds(double frequencyHz);
-  // The FRF set's sum |sum H| (reference 0, dB) under the controls: placing
+  // The sum of |H| over every FRF of the set (dB) under the controls: placing
   // its cursor (a click, or the arrow keys) shows the ODS at that frequency.
   // Hidden until an FRF set is given.
   InteractivePlot* odsPlot() const { return odsPlot_; }

@@ -2,7 +2,7 @@
 // minutes (scripts/run.sh), in the main window at 1280x800 (and at
 // QT_SCALE_FACTOR=2): the project dock at 260 pixels shows every specimen's
 // whole name; the FRF page fits its tab and its axis titles their axes; the
-// Identification page shows the set's sum and the kept modes with their
+// Identification page shows the set's sum of |H| and the kept modes with their
 // synthesis before any run, against the stored set and table; the Mode
 // Animation page keeps the shape inside the 3-D viewport over the cycle; the
 // Twist Axes page's labels do not cover each other. Each page is saved as
@@ -285,7 +285,7 @@ void DemoPagesTest::checkIdentificationPage(QWidget* page) {
   // (pLSCF, no refinement): a minute is far more than it takes.
   QTRY_VERIFY_WITH_TIMEOUT(ident->diagramPlot()->drawnPoleCount() > 0, 60000);
   QVERIFY(ident->outcome() && ident->outcome()->diagram);
-  // Backdrop: 20 log10 |sum of every FRF| on the band's lines.
+  // Backdrop: 20 log10 of the sum of |H| over every FRF on the band's lines.
   const auto* backdrop = ident->diagramPlot()->backdropCurve();
   QVERIFY(backdrop->dataSize() > 10);
   Eigen::Index first = 0;
@@ -294,11 +294,11 @@ void DemoPagesTest::checkIdentificationPage(QWidget* page) {
   double worstDb = 0.0;
   for (std::size_t j = 0; j < backdrop->dataSize(); ++j) {
     const Eigen::Index k = first + static_cast<Eigen::Index>(j);
-    mozzi::core::Complex sum = 0.0;
-    for (const auto& h : frf->h) sum += h.row(k).sum();
+    double sum = 0.0;
+    for (const auto& h : frf->h) sum += h.row(k).cwiseAbs().sum();
     const QPointF p = backdrop->sample(j);
     QCOMPARE(p.x(), frf->frequencyHz[k]);
-    worstDb = std::max(worstDb, std::abs(p.y() - 20.0 * std::log10(std::abs(sum))));
+    worstDb = std::max(worstDb, std::abs(p.y() - 20.0 * std::log10(sum)));
   }
   QVERIFY2(worstDb < 1e-9, qPrintable(QString::number(worstDb)));
   // The kept identification: the demo's latest modal result of this set.
@@ -455,13 +455,14 @@ void DemoPagesTest::checkModeAnimationPage(QWidget* page) {
     }
   }
   view->setPhase(0.0);
-  // The ODS guide curve shows the modes (it is the sum of every FRF of the set,
-  // the Identification page's backdrop): at each kept mode of the set's own
-  // specimen the curve has a peak within +-1.5 Hz (three lines of the set's
-  // 0.5 Hz) standing at least 3 dB above the lowest point within +-10 Hz; the
-  // weakest of the demo's three, at 77 Hz, stands about 5 dB above the
-  // anti-resonance before it. (The guide of reference 0 alone, a hammer point
-  // by the constrained front mount, was noise 60 dB lower with no such peaks.)
+  // The ODS guide curve shows the modes (it is the sum of |H| over every FRF
+  // of the set, the Identification page's backdrop): at each kept mode of the
+  // set's own specimen the curve has a peak within +-1.5 Hz (three lines of
+  // the set's 0.5 Hz) standing at least 10 dB above the lowest point within
+  // +-10 Hz; the demo's three stand 30, 17 and 15 dB above it (26.5, 56.8 and
+  // 77 Hz). (The guide of reference 0 alone, a hammer point by the
+  // constrained front mount, was noise 60 dB lower with no such peaks; in the
+  // complex sum the 77 Hz mode stood 14 dB lower than here.)
   auto* curve = dynamic_cast<QwtPlotCurve*>(view->odsPlot()->itemList(QwtPlotItem::Rtti_PlotCurve).value(0));
   QVERIFY(curve && curve->dataSize() > 10);
   auto extreme = [&](double from, double to, bool highest) {
@@ -482,7 +483,7 @@ void DemoPagesTest::checkModeAnimationPage(QWidget* page) {
     const double f = shape.frequencyHz;
     const double peak = extreme(f - 1.5, f + 1.5, true);
     const double valley = extreme(f - 10.0, f + 10.0, false);
-    QVERIFY2(peak >= valley + 3.0 && peak == extreme(f - 3.0, f + 3.0, true),
+    QVERIFY2(peak >= valley + 10.0 && peak == extreme(f - 3.0, f + 3.0, true),
              qPrintable(
                  QStringLiteral("guide at %1 Hz: peak %2 dB, lowest within 10 Hz %3 dB").arg(f).arg(peak).arg(valley)));
   }

@@ -1,5 +1,6 @@
 // FRF representations against closed forms of a viscous SDOF receptance
-// H = 1 / (k - m w^2 + i c w), and the FRF picks, sums and sub-sets of a set.
+// H = 1 / (k - m w^2 + i c w), and the FRF picks, sums (complex and of
+// magnitudes) and sub-sets of a set.
 #include "core/common/frf_display.h"
 
 #include <gtest/gtest.h>
@@ -90,6 +91,50 @@ TEST(FrfDisplay, SumAndSubset) {
   ASSERT_FALSE(bad.ok());
   EXPECT_NE(bad.error().message.find("not in the set"), std::string::npos);
   EXPECT_FALSE(frfSum(f, {}).ok());
+}
+
+// Two points mirrored about a plane of symmetry, driven on the plane: mode 1
+// (10 Hz) moves them alike, mode 2 (25 Hz) in opposition, so their receptances
+//   H_o = sum_r phi_o,r / (w_r^2 - w^2 + 2 i zeta w_r w)
+// have residues +1, +1 for mode 1 and +1, -1 for mode 2. Mode 2 drops out of
+// the complex sum; the sum of magnitudes peaks at both modes.
+TEST(FrfDisplay, NoModeCancelsInTheMagnitudeSum) {
+  FrfMatrix f;
+  const int n = 301;
+  f.frequencyHz = Vector::LinSpaced(n, 0.0, 30.0);  // 0.1 Hz lines
+  f.responses = {Dof{1, Direction::Y}, Dof{2, Direction::Y}};
+  f.references = {Dof{3, Direction::Z}};
+  f.type = FrfType::Receptance;
+  const double w1 = 2 * M_PI * 10.0, w2 = 2 * M_PI * 25.0, zeta = 0.01;
+  ComplexMatrix h(n, 2);
+  for (int k = 0; k < n; ++k) {
+    const double w = 2 * M_PI * f.frequencyHz[k];
+    const Complex m1 = 1.0 / Complex(w1 * w1 - w * w, 2 * zeta * w1 * w);
+    const Complex m2 = 1.0 / Complex(w2 * w2 - w * w, 2 * zeta * w2 * w);
+    h(k, 0) = m1 + m2;
+    h(k, 1) = m1 - m2;
+  }
+  f.h = {h};
+  auto magnitudes = frfMagnitudeSum(f, pickFrfs(f, {}));
+  auto complexSum = frfSum(f, pickFrfs(f, {}));
+  ASSERT_TRUE(magnitudes.ok() && complexSum.ok());
+  for (int k = 0; k < n; ++k) {
+    EXPECT_DOUBLE_EQ((*magnitudes)[k], std::abs(h(k, 0)) + std::abs(h(k, 1))) << "line " << k;
+  }
+  // Lines of the local maxima of each curve above 5 Hz (line k is k / 10 Hz).
+  const auto peaksOf = [&](const Vector& y) {
+    std::vector<int> at;
+    for (int k = 51; k < n - 1; ++k) {
+      if (y[k] > y[k - 1] && y[k] >= y[k + 1]) at.push_back(k);
+    }
+    return at;
+  };
+  EXPECT_EQ(peaksOf(*magnitudes), (std::vector<int>{100, 250}));
+  EXPECT_EQ(peaksOf(complexSum->cwiseAbs()), (std::vector<int>{100}));  // mode 2 is gone
+  // At 25 Hz the complex sum is 2 |m1| = 2 / (w2^2 - w1^2), the magnitude sum
+  // about 2 |m2| = 1 / (zeta w2^2): (w2^2 - w1^2) / (2 zeta w2^2) = 42 times more.
+  EXPECT_NEAR((*magnitudes)[250] / std::abs((*complexSum)[250]), 42.0, 0.5);
+  EXPECT_FALSE(frfMagnitudeSum(f, {}).ok());
 }
 
 TEST(FrfDisplay, NearestMode) {
