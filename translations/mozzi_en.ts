@@ -3491,7 +3491,7 @@
 <context>
     <name>mozzi::views::IdentificationPage</name>
     <message>
-        <location filename="../views/modal/identification_page.cpp" line="+242"/>
+        <location filename="../views/modal/identification_page.cpp" line="+243"/>
         <source>Cannot list the FRF sets: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3638,7 +3638,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+38"/>
         <location line="+7"/>
         <source>%1 Hz</source>
         <translation type="unfinished"></translation>
@@ -3858,12 +3858,27 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+0"/>
+        <source>Misfit [dB]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RMS of H - synthesis over the band against the FRF&apos;s own RMS</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>RMS of the FRF over the band against the strongest FRF&apos;s (0 dB): a high residual far down is noise</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
+        <source>RMS of H - synthesis against the strongest FRF&apos;s RMS (level + 20 log10 residual); the list is sorted by it, worst first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Synthesis</source>
         <translation type="unfinished"></translation>
     </message>

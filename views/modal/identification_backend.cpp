@@ -175,10 +175,15 @@ std::vector<FrfResidual> residualsWorstFirst(const SelectionFitter& fitter, cons
   std::vector<FrfResidual> rows;
   rows.reserve(static_cast<std::size_t>(residual.size()));
   for (Eigen::Index i = 0; i < residual.cols(); ++i) {
-    for (Eigen::Index o = 0; o < residual.rows(); ++o) rows.push_back({o, i, residual(o, i), fitter.levelsDb()(o, i)});
+    for (Eigen::Index o = 0; o < residual.rows(); ++o) {
+      const double r = residual(o, i), level = fitter.levelsDb()(o, i);
+      const double misfit = r > 0.0 ? level + 20.0 * std::log10(r) : -std::numeric_limits<double>::infinity();
+      rows.push_back({o, i, r, level, std::isnan(misfit) ? -std::numeric_limits<double>::infinity() : misfit});
+    }
   }
-  std::stable_sort(rows.begin(), rows.end(),
-                   [](const FrfResidual& a, const FrfResidual& b) { return a.residual > b.residual; });
+  std::stable_sort(rows.begin(), rows.end(), [](const FrfResidual& a, const FrfResidual& b) {
+    return a.misfitDb > b.misfitDb || (a.misfitDb == b.misfitDb && a.residual > b.residual);
+  });
   return rows;
 }
 

@@ -99,14 +99,17 @@ class SelectionFitter {
   core::Matrix levelsDb_;
 };
 
-// The residual of every FRF of a fit, worst first, with the FRF's level
-// (SelectionFitter::levelsDb). A residual near 100 % on an FRF 60 dB down is
-// that FRF's noise (a DOF the modes barely move, by a constraint), not a mode
-// the fit missed.
+// The residual of every FRF of a fit with the FRF's level
+// (SelectionFitter::levelsDb) and the misfit's level, level + 20 log10
+// residual: the RMS of H - synthesis over the band against the strongest
+// FRF's. Worst first by the misfit: a residual near 100 % on an FRF 60 dB
+// down is that FRF's noise (a DOF the modes barely move, by a constraint), not
+// a mode the fit missed, and comes after a 20 % residual on a strong FRF.
 struct FrfResidual {
   Eigen::Index response = 0, reference = 0;
   double residual = 0.0;  // relative, as Fit::residual
   double levelDb = 0.0;
+  double misfitDb = 0.0;  // -inf for a perfect fit or an FRF without level
 };
 std::vector<FrfResidual> residualsWorstFirst(const SelectionFitter& fitter, const core::Matrix& residual);
 

@@ -177,11 +177,12 @@ IdentificationPage::IdentificationPage(const PageContext& ctx) : QWidget(ctx.par
   synthesisFrfBox_->setObjectName(QStringLiteral("identificationSynthesisFrf"));
   synthesis_ = new InteractivePlot(synthPane);
   synthesis_->setObjectName(QStringLiteral("identificationSynthesis"));
-  residuals_ = new QTableWidget(0, 3, synthPane);
+  residuals_ = new QTableWidget(0, 4, synthPane);
   residuals_->setObjectName(QStringLiteral("identificationResiduals"));
   residuals_->verticalHeader()->setVisible(false);
   residuals_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
   residuals_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+  residuals_->horizontalHeader()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
   residuals_->horizontalHeader()->setStretchLastSection(true);
   residuals_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   synthesis_->setMinimumSize(160, 120);
@@ -623,7 +624,8 @@ void IdentificationPage::showSynthesis() {
   synth->setVectors(x, db(synthesised));
   synth->attach(synthesis_);
   synthesis_->autoscale();
-  // Residual per FRF, worst first, and its level; each FRF named as in the FRF box.
+  // Residual per FRF, its level and the misfit's, worst misfit first; each FRF
+  // named as in the FRF box.
   const auto rows = identification::residualsWorstFirst(*fitter_, fit_->residual);
   residuals_->setRowCount(static_cast<int>(rows.size()));
   for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
@@ -632,8 +634,13 @@ void IdentificationPage::showSynthesis() {
     name->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
     residuals_->setItem(r, 0, name);
     residuals_->setItem(r, 1, cell(QString::number(100.0 * row.residual, 'f', 2)));
-    residuals_->setItem(r, 2,
-                        cell(std::isfinite(row.levelDb) ? QString::number(row.levelDb, 'f', 1) : QStringLiteral("-")));
+    const auto db = [](double v) {
+      if (!std::isfinite(v)) return QStringLiteral("-");
+      const double tenths = std::round(10.0 * v) / 10.0;
+      return QString::number(tenths == 0.0 ? 0.0 : tenths, 'f', 1);  // no "-0.0"
+    };
+    residuals_->setItem(r, 2, cell(db(row.levelDb)));
+    residuals_->setItem(r, 3, cell(db(row.misfitDb)));
   }
 }
 
@@ -783,9 +790,13 @@ void IdentificationPage::retranslate() {
   updateSaveButton();
   table_->setHorizontalHeaderLabels({tr("Mode"), tr("f [Hz]"), tr("std f [Hz]"), tr("zeta"), tr("std zeta"), tr("eta"),
                                      tr("MPC"), tr("MPD [deg]"), tr("Complexity")});
-  residuals_->setHorizontalHeaderLabels({tr("FRF"), tr("Residual [%]"), tr("Level [dB]")});
+  residuals_->setHorizontalHeaderLabels({tr("FRF"), tr("Residual [%]"), tr("Level [dB]"), tr("Misfit [dB]")});
+  residuals_->horizontalHeaderItem(1)->setToolTip(tr("RMS of H - synthesis over the band against the FRF's own RMS"));
   residuals_->horizontalHeaderItem(2)->setToolTip(
       tr("RMS of the FRF over the band against the strongest FRF's (0 dB): a high residual far down is noise"));
+  residuals_->horizontalHeaderItem(3)->setToolTip(
+      tr("RMS of H - synthesis against the strongest FRF's RMS (level + 20 log10 residual); the list is sorted by "
+         "it, worst first"));
   tabs_->setTabText(0, tr("Synthesis"));
   tabs_->setTabText(1, tr("MAC"));
   autoMacLabel_->setText(tr("AutoMAC of the chosen modes"));
