@@ -24,7 +24,8 @@ std::thread startThreadOnAnotherCore(std::function<void()> body) {
       auto placed = std::make_shared<std::atomic<bool>>(false);
       std::thread thread([placed, allowed, body = std::move(body)]() mutable {
         while (!placed->load(std::memory_order_acquire)) std::this_thread::yield();
-        (void)pthread_setaffinity_np(pthread_self(), sizeof allowed, &allowed);  // failure: stays placed, harmless
+        // On failure it stays off the caller's core: it still runs, on fewer cores.
+        (void)pthread_setaffinity_np(pthread_self(), sizeof allowed, &allowed);
         body();
       });
       (void)pthread_setaffinity_np(thread.native_handle(), sizeof elsewhere, &elsewhere);  // a hint: may fail

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <deque>
+#include <limits>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -98,15 +99,22 @@ class AveragingThread {
     }
     changed_.notify_all();
   }
-  // Completes hits until at most one is in flight, then hands `hit` over (it
-  // must stay valid until the second submit() after this one, or finish());
-  // false once a hit has failed.
-  bool submit(const core::io::UffHit& hit) {
+  // Completes every hit in flight that the reader's next call `read` may
+  // overwrite: UffHitReader keeps a hit until the third call after the one
+  // that returned it starts, and a rejected hit is read but never handed
+  // over, so counting hand-overs is not enough.
+  void beforeRead(int read) {
     std::unique_lock<std::mutex> lock(mutex_);
-    completeUntil(lock, 1);
+    completeWhile(lock, [&] { return oldestRead() <= read - 3; });
+  }
+  // Completes hits until at most one is in flight, then hands `hit` over,
+  // returned by the reader's call `read`; false once a hit has failed.
+  bool submit(const core::io::UffHit& hit, int read) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    completeWhile(lock, [&] { return inFlight() > 1; });
     if (error_) return false;
-    pending_.push_back(&hit);
-    if (!thread_.joinable()) completeUntil(lock, 0);
+    pending_.push_back(Pending{&hit, read});
+    if (!thread_.joinable()) completeWhile(lock, [&] { return inFlight() > 0; });
     lock.unlock();
     changed_.notify_all();
     return true;
@@ -114,18 +122,28 @@ class AveragingThread {
   // Completes every hit in flight; the first failure, "load case N: reason".
   const std::optional<std::string>& finish() {
     std::unique_lock<std::mutex> lock(mutex_);
-    completeUntil(lock, 0);
+    completeWhile(lock, [&] { return inFlight() > 0; });
     return error_;
   }
   // The average, after finish() returned no failure.
   sg::SpectralAverager& averager() { return *averager_; }
 
  private:
+  // A hit handed over and the reader's call that returned it.
+  struct Pending {
+    const core::io::UffHit* hit;
+    int read;
+  };
   std::size_t inFlight() const { return pending_.size() + (averaging_ ? 1 : 0); }
-  // Until at most `limit` hits are in flight: waits while a hit is being
-  // averaged, and averages the oldest waiting hit here when none is.
-  void completeUntil(std::unique_lock<std::mutex>& lock, std::size_t limit) {
-    while (inFlight() > limit) {
+  // The reader's call that returned the oldest hit in flight.
+  int oldestRead() const {
+    return averaging_ ? averagingRead_ : pending_.empty() ? std::numeric_limits<int>::max() : pending_.front().read;
+  }
+  // While `unfinished()`: waits while a hit is being averaged, and averages
+  // the oldest waiting hit here when none is.
+  template <class Unfinished>
+  void completeWhile(std::unique_lock<std::mutex>& lock, Unfinished unfinished) {
+    while (unfinished()) {
       if (averaging_) {
         changed_.wait(lock);
         continue;
@@ -152,15 +170,16 @@ class AveragingThread {
   // averager is never on two threads at once (averaging_). error_ is only
   // touched under the lock: the caller reads it while a hit may be averaged.
   void averageOldest(std::unique_lock<std::mutex>& lock) {
-    const core::io::UffHit* hit = pending_.front();
+    const Pending oldest = pending_.front();
     pending_.pop_front();
     if (error_) {  // after a failure the rest are dropped
       changed_.notify_all();
       return;
     }
     averaging_ = true;
+    averagingRead_ = oldest.read;
     lock.unlock();
-    std::optional<std::string> failure = average(*hit);
+    std::optional<std::string> failure = average(*oldest.hit);
     lock.lock();
     averaging_ = false;
     if (failure) error_ = std::move(failure);
@@ -183,9 +202,10 @@ class AveragingThread {
   std::optional<sg::SpectralAverager> averager_;
   std::optional<std::string> error_;
   std::mutex mutex_;
-  std::condition_variable changed_;              // any of the state below changed
-  std::deque<const core::io::UffHit*> pending_;  // handed over, not taken yet, oldest first
-  bool averaging_ = false;                       // a thread is averaging a hit
+  std::condition_variable changed_;  // any of the state below changed
+  std::deque<Pending> pending_;      // handed over, not taken yet, oldest first
+  bool averaging_ = false;           // a thread is averaging a hit
+  int averagingRead_ = 0;            // the reader's call that returned that hit
   Eigen::Index planLength_ = 0;
   bool stop_ = false;
   std::thread thread_;  // last: started once the members above exist
@@ -284,7 +304,9 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
   int accepted = 0, rejected = 0;
   double band10 = 0.0, band20 = 0.0;
   bool haveBand = false;
+  int reads = 0;  // calls of hitReader->next()
   for (bool firstHit = true;; firstHit = false) {
+    averaging.beforeRead(++reads);
     auto nextHit = hitReader->next();
     if (!nextHit) return fail(nextHit.error().describe());
     if (!*nextHit) break;
@@ -329,7 +351,7 @@ int frfCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
       ++rejected;
       continue;
     }
-    if (!averaging.submit(hit)) return fail("");  // an earlier hit failed: its error
+    if (!averaging.submit(hit, reads)) return fail("");  // an earlier hit failed: its error
     ++accepted;
     // usable band of the average: the narrowest accepted hit's (a shaker
     // test's band is the excitation's, unknown here: up to Nyquist)
