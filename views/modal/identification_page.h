@@ -38,6 +38,7 @@ class QPushButton;
 class QSpinBox;
 class QTabWidget;
 class QTableWidget;
+class QTableWidgetItem;
 
 namespace mozzi {
 namespace views {
@@ -142,7 +143,9 @@ class IdentificationPage : public QWidget {
   // Save enabled with a selection the project does not keep yet.
   void updateSaveButton();
   void showTable();
-  void showSynthesis();
+  void showSynthesis();  // identification_synthesis.cpp
+  // A right-aligned, read-only table cell.
+  static QTableWidgetItem* cell(const QString& text);
   void showMac();
   // The synthesis and MAC tabs: the one shown now, the other when shown.
   void showTabs();
