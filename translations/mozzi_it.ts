@@ -2,6 +2,154 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="it_IT" sourcelanguage="en_US">
 <context>
+    <name>GapTerms</name>
+    <message>
+        <location filename="../views/gap/gap_terms.cpp" line="+8"/>
+        <source>Modes</source>
+        <translation>Modi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bands</source>
+        <translation>Bande</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>DOFs</source>
+        <translation>GDL</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Conditions</source>
+        <translation>Condizioni</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Predictions</source>
+        <translation>Previsioni</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>FRF residual</source>
+        <translation>Residuo FRF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mode residual</source>
+        <translation>Residuo modale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Predicted f [Hz]</source>
+        <translation>f prevista [Hz]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Measured f [Hz]</source>
+        <translation>f misurata [Hz]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Predicted zeta</source>
+        <translation>zeta prevista</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Measured zeta</source>
+        <translation>zeta misurata</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>f error [%]</source>
+        <translation>errore su f [%]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>zeta error [%]</source>
+        <translation>errore su zeta [%]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>f z</source>
+        <translation>z di f</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>zeta z</source>
+        <translation>z di zeta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MAC</source>
+        <translation>MAC</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RMS residual</source>
+        <translation>Residuo RMS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Noise floor</source>
+        <translation>Fondo di rumore</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>chi2 per residual</source>
+        <translation>chi2 per residuo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lines</source>
+        <translation>Righe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Measured</source>
+        <translation>Misurato</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Predicted</source>
+        <translation>Previsto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Uncertainty</source>
+        <translation>Incertezza</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Found</source>
+        <translation>Trovato</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>From [m/s]</source>
+        <translation>Da [m/s]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>To [m/s]</source>
+        <translation>A [m/s]</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>all</source>
+        <translation>tutto</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>mode %1 (%2 Hz)</source>
+        <translation>modo %1 (%2 Hz)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mode %1 (%2 Hz), unpaired</source>
+        <translation>modo %1 (%2 Hz), non accoppiato</translation>
+    </message>
+</context>
+<context>
     <name>KeptAnalyses</name>
     <message>
         <location filename="../views/common/kept_analyses.cpp" line="+20"/>
@@ -3628,7 +3776,7 @@
         <translation>Impossibile togliere lo smorzamento della finestra esponenziale: %1</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location filename="../views/modal/identification_synthesis.cpp" line="+36"/>
         <source>measured</source>
         <translation>misura</translation>
     </message>
@@ -3638,7 +3786,7 @@
         <translation>sintesi</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location filename="../views/modal/identification_page.cpp" line="+40"/>
         <location line="+7"/>
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
@@ -4996,7 +5144,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
 <context>
     <name>mozzi::views::ModelTestView</name>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+265"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+266"/>
         <source>Export Diagnosis Report</source>
         <translation>Esporta rapporto di diagnosi</translation>
     </message>

@@ -45,6 +45,7 @@
 #include "core/report/gap_report.h"
 #include "core/report/report_html.h"
 #include "views/common/job_runner.h"
+#include "views/gap/gap_terms.h"
 #include "views/plots/interactive_plot.h"
 #include "views/plots/plot_export.h"
 
@@ -538,12 +539,12 @@ void ModelTestView::fillWhere(const core::gap::GapMetrics* gap) {
     auto* table = new QTableWidget(static_cast<int>(rows.size()), 4 + static_cast<int>(detailNames.size()), whereTabs_);
     table->setObjectName(QStringLiteral("gapWhere_%1").arg(QString::fromStdString(kind)));
     table->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    QStringList headers{tr("Item"), QString::fromStdString(gap->residualName), tr("z"), tr("Significant")};
-    for (const auto& name : detailNames) headers << QString::fromStdString(name);
+    QStringList headers{tr("Item"), GapTerms::columnTitle(gap->residualName), tr("z"), tr("Significant")};
+    for (const auto& name : detailNames) headers << GapTerms::columnTitle(name);
     table->setHorizontalHeaderLabels(headers);
     for (int r = 0; r < static_cast<int>(rows.size()); ++r) {
       const auto& entry = *rows[static_cast<size_t>(r)];
-      table->setItem(r, 0, new QTableWidgetItem(QString::fromStdString(entry.label)));
+      table->setItem(r, 0, new QTableWidgetItem(GapTerms::itemLabel(entry.label)));
       table->setItem(r, 1, new QTableWidgetItem(number(entry.value)));
       table->setItem(r, 2, new QTableWidgetItem(number(entry.z, 3)));
       auto* flag = new QTableWidgetItem(entry.flagged ? tr("yes") : tr("no"));
@@ -555,7 +556,7 @@ void ModelTestView::fillWhere(const core::gap::GapMetrics* gap) {
       }
     }
     table->resizeColumnsToContents();
-    whereTabs_->addTab(table, QString::fromStdString(kind));
+    whereTabs_->addTab(table, GapTerms::kindTitle(kind));
   }
 }
 

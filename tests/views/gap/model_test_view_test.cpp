@@ -16,6 +16,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QListWidget>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QtTest>
@@ -104,6 +105,26 @@ class ModelTestViewTest : public QObject {
     QVERIFY2(kept.minimumSizeHint().height() <= 550, qPrintable(QString::number(kept.minimumSizeHint().height())));
   }
 
+  // Core's keys in the page's words on the Where tabs: tab titles, column
+  // titles, mode labels.
+  static void checkWhereIsInThePagesWords(mozzi::views::ModelTestView& view) {
+    QStringList tabTitles;
+    for (int t = 0; t < view.whereTabs()->count(); ++t) tabTitles << view.whereTabs()->tabText(t);
+    QVERIFY2(tabTitles.contains(QStringLiteral("Bands")) && tabTitles.contains(QStringLiteral("Modes")),
+             qPrintable(tabTitles.join(QStringLiteral(", "))));
+    auto* modes = qobject_cast<QTableWidget*>(view.whereTabs()->widget(tabTitles.indexOf(QStringLiteral("Modes"))));
+    QVERIFY(modes && modes->rowCount() > 0);
+    QStringList columns;
+    for (int c = 0; c < modes->columnCount(); ++c) columns << modes->horizontalHeaderItem(c)->text();
+    QVERIFY2(columns.at(1) == QStringLiteral("FRF residual") && columns.contains(QStringLiteral("Predicted f [Hz]")) &&
+                 columns.contains(QStringLiteral("RMS residual")),
+             qPrintable(columns.join(QStringLiteral(", "))));
+    QVERIFY2(QRegularExpression(QStringLiteral("^mode 1 \\([0-9.]+ Hz\\)(, unpaired)?$"))
+                 .match(modes->item(0, 0)->text())
+                 .hasMatch(),
+             qPrintable(modes->item(0, 0)->text()));
+  }
+
  private slots:
   void initTestCase() { files_ = writeFiles(); }
 
@@ -151,6 +172,8 @@ class ModelTestViewTest : public QObject {
     QVERIFY(ranking->item(row, 2)->text().contains(QStringLiteral("±")));
     QVERIFY(ranking->item(row, 0)->font().bold());
     QVERIFY(view.whereTabs()->count() >= 2);  // bands, DOFs, modes of the gap before
+    checkWhereIsInThePagesWords(view);
+    if (QTest::currentTestFailed()) return;
 
     // Overlay: one curve per measured FRF; the model with the mass is closer
     // to the measurement than the calibrated model without it.
