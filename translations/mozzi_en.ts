@@ -4,7 +4,7 @@
 <context>
     <name>GapTerms</name>
     <message>
-        <location filename="../views/gap/gap_terms.cpp" line="+8"/>
+        <location filename="../views/gap/gap_terms.cpp" line="+18"/>
         <source>Modes</source>
         <translation type="unfinished"></translation>
     </message>
@@ -29,7 +29,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>FRF residual</source>
         <translation type="unfinished"></translation>
     </message>
@@ -134,7 +134,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+21"/>
         <source>all</source>
         <translation type="unfinished"></translation>
     </message>

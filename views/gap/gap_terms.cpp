@@ -1,42 +1,66 @@
 #include "views/gap/gap_terms.h"
 
 #include <QRegularExpression>
+#include <iterator>
 
 namespace mozzi {
 namespace views {
 
+namespace {
+// Core's key and the page's title for it (QT_TRANSLATE_NOOP: lupdate reads
+// the titles, GapTerms::tr translates them when shown).
+struct Term {
+  const char* key;
+  const char* title;
+};
+
+const Term kKinds[] = {
+    {"mode", QT_TRANSLATE_NOOP("GapTerms", "Modes")},
+    {"band", QT_TRANSLATE_NOOP("GapTerms", "Bands")},
+    {"dof", QT_TRANSLATE_NOOP("GapTerms", "DOFs")},
+    {"condition", QT_TRANSLATE_NOOP("GapTerms", "Conditions")},
+    {"prediction", QT_TRANSLATE_NOOP("GapTerms", "Predictions")},
+};
+
+const Term kColumns[] = {
+    {"frf_residual", QT_TRANSLATE_NOOP("GapTerms", "FRF residual")},
+    {"mode_residual", QT_TRANSLATE_NOOP("GapTerms", "Mode residual")},
+    {"predicted_hz", QT_TRANSLATE_NOOP("GapTerms", "Predicted f [Hz]")},
+    {"measured_hz", QT_TRANSLATE_NOOP("GapTerms", "Measured f [Hz]")},
+    {"predicted_zeta", QT_TRANSLATE_NOOP("GapTerms", "Predicted zeta")},
+    {"measured_zeta", QT_TRANSLATE_NOOP("GapTerms", "Measured zeta")},
+    {"frequency_error_pct", QT_TRANSLATE_NOOP("GapTerms", "f error [%]")},
+    {"zeta_error_pct", QT_TRANSLATE_NOOP("GapTerms", "zeta error [%]")},
+    {"frequency_z", QT_TRANSLATE_NOOP("GapTerms", "f z")},
+    {"zeta_z", QT_TRANSLATE_NOOP("GapTerms", "zeta z")},
+    {"mac", QT_TRANSLATE_NOOP("GapTerms", "MAC")},
+    {"raw_residual", QT_TRANSLATE_NOOP("GapTerms", "RMS residual")},
+    {"noise_floor", QT_TRANSLATE_NOOP("GapTerms", "Noise floor")},
+    {"chi2_per_residual", QT_TRANSLATE_NOOP("GapTerms", "chi2 per residual")},
+    {"lines", QT_TRANSLATE_NOOP("GapTerms", "Lines")},
+    {"measured", QT_TRANSLATE_NOOP("GapTerms", "Measured")},
+    {"predicted", QT_TRANSLATE_NOOP("GapTerms", "Predicted")},
+    {"uncertainty", QT_TRANSLATE_NOOP("GapTerms", "Uncertainty")},
+    {"found", QT_TRANSLATE_NOOP("GapTerms", "Found")},
+    {"from_m_s", QT_TRANSLATE_NOOP("GapTerms", "From [m/s]")},
+    {"to_m_s", QT_TRANSLATE_NOOP("GapTerms", "To [m/s]")},
+};
+
+template <std::size_t N>
+QString titleOf(const Term (&terms)[N], const std::string& key) {
+  for (const Term& t : terms) {
+    if (key == t.key) return GapTerms::tr(t.title);
+  }
+  return QString::fromStdString(key);
+}
+}  // namespace
+
 QString GapTerms::kindTitle(const std::string& kind) {
-  if (kind == "mode") return tr("Modes");
-  if (kind == "band") return tr("Bands");
-  if (kind == "dof") return tr("DOFs");
-  if (kind == "condition") return tr("Conditions");
-  if (kind == "prediction") return tr("Predictions");
-  return QString::fromStdString(kind);
+  return titleOf(kKinds, kind);
 }
 
 QString GapTerms::columnTitle(const std::string& key) {
-  if (key == "frf_residual") return tr("FRF residual");
-  if (key == "mode_residual") return tr("Mode residual");
-  if (key == "predicted_hz") return tr("Predicted f [Hz]");
-  if (key == "measured_hz") return tr("Measured f [Hz]");
-  if (key == "predicted_zeta") return tr("Predicted zeta");
-  if (key == "measured_zeta") return tr("Measured zeta");
-  if (key == "frequency_error_pct") return tr("f error [%]");
-  if (key == "zeta_error_pct") return tr("zeta error [%]");
-  if (key == "frequency_z") return tr("f z");
-  if (key == "zeta_z") return tr("zeta z");
-  if (key == "mac") return tr("MAC");
-  if (key == "raw_residual") return tr("RMS residual");
-  if (key == "noise_floor") return tr("Noise floor");
-  if (key == "chi2_per_residual") return tr("chi2 per residual");
-  if (key == "lines") return tr("Lines");
-  if (key == "measured") return tr("Measured");
-  if (key == "predicted") return tr("Predicted");
-  if (key == "uncertainty") return tr("Uncertainty");
-  if (key == "found") return tr("Found");
-  if (key == "from_m_s") return tr("From [m/s]");
-  if (key == "to_m_s") return tr("To [m/s]");
-  return QString::fromStdString(key);
+  return titleOf(kColumns, key);
 }
 
 QString GapTerms::itemLabel(const std::string& label) {
