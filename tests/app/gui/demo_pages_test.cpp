@@ -544,9 +544,8 @@ void DemoPagesTest::rigAndReviewPagesFitTheTabArea() {
     QTest::qWait(200);
     auto* holder = qobject_cast<QScrollArea*>(window_->workArea()->currentWidget());
     QVERIFY2(holder && holder->isAncestorOf(page), qPrintable(id));
-    // A vertical scroll bar that appears narrows the viewport before the page
-    // is laid out to it again (a loaded CI machine took over 200 ms): the
-    // assertions below are on the settled layout.
+    // On the settled layout: a new vertical scroll bar narrows the viewport
+    // before the page follows it (over 200 ms on a loaded CI machine).
     (void)QTest::qWaitFor([&] { return page->width() <= holder->viewport()->width(); }, 3000);
     const int available = holder->viewport()->width();
     // The tab area itself: the window less the dock (about 940 pixels here).
