@@ -37,4 +37,65 @@ std::thread startThreadOnAnotherCore(std::function<void()> body) {
   return std::thread(std::move(body));
 }
 
+#if defined(__linux__)
+struct PairedThread::CreatorCores {
+  pthread_t thread;
+  cpu_set_t cores;
+};
+#else
+struct PairedThread::CreatorCores {};
+#endif
+
+PairedThread::PairedThread(std::function<void()> body) {
+#if defined(__linux__)
+  cpu_set_t allowed;
+  const int here = sched_getcpu();
+  if (here >= 0 && here < CPU_SETSIZE && pthread_getaffinity_np(pthread_self(), sizeof allowed, &allowed) == 0) {
+    cpu_set_t elsewhere = allowed;
+    CPU_CLR(here, &elsewhere);
+    cpu_set_t mine;
+    CPU_ZERO(&mine);
+    CPU_SET(here, &mine);
+    if (CPU_COUNT(&elsewhere) > 0 && pthread_setaffinity_np(pthread_self(), sizeof mine, &mine) == 0) {
+      creator_ = std::make_unique<CreatorCores>(CreatorCores{pthread_self(), allowed});
+      // The helper waits until it is held elsewhere, so that it never starts
+      // on the creator's core.
+      auto held = std::make_shared<std::atomic<bool>>(false);
+      thread_ = std::thread([held, body = std::move(body)]() mutable {
+        while (!held->load(std::memory_order_acquire)) std::this_thread::yield();
+        body();
+      });
+      (void)pthread_setaffinity_np(thread_.native_handle(), sizeof elsewhere, &elsewhere);  // a hint: may fail
+      held->store(true, std::memory_order_release);
+      return;
+    }
+  }
+#endif
+  thread_ = std::thread(std::move(body));
+}
+
+PairedThread::PairedThread() = default;
+PairedThread::PairedThread(PairedThread&&) noexcept = default;
+
+PairedThread& PairedThread::operator=(PairedThread&& other) noexcept {
+  if (this != &other) {
+    if (joinable()) join();
+    thread_ = std::move(other.thread_);
+    creator_ = std::move(other.creator_);
+  }
+  return *this;
+}
+
+PairedThread::~PairedThread() {
+  if (joinable()) join();
+}
+
+void PairedThread::join() {
+  thread_.join();
+#if defined(__linux__)
+  if (creator_) (void)pthread_setaffinity_np(creator_->thread, sizeof creator_->cores, &creator_->cores);
+#endif
+  creator_.reset();
+}
+
 }  // namespace mozzi::core

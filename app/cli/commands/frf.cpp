@@ -75,7 +75,7 @@ class AveragingThread {
  public:
   // `options` is read when the first hit is averaged, and must outlive this.
   explicit AveragingThread(const sg::FrfOptions& options) : options_(options) {
-    if (std::thread::hardware_concurrency() >= 2) thread_ = core::startThreadOnAnotherCore([this] { run(); });
+    if (std::thread::hardware_concurrency() >= 2) thread_ = core::PairedThread([this] { run(); });
   }
   ~AveragingThread() {
     if (!thread_.joinable()) return;
@@ -208,7 +208,7 @@ class AveragingThread {
   int averagingRead_ = 0;            // the reader's call that returned that hit
   Eigen::Index planLength_ = 0;
   bool stop_ = false;
-  std::thread thread_;  // last: started once the members above exist
+  core::PairedThread thread_;  // last: started once the members above exist
 };
 
 // The option table: a hammer pulse lasts well under a second; the force
