@@ -34,8 +34,26 @@ Result<void> checkModes(const ModalResultInfo& info, const ModalTable& table, co
     if (!mode.shape.allFinite()) {
       return makeError(ErrorCode::InvalidArgument, "mode " + std::to_string(m + 1) + " shape is not finite", where);
     }
+    for (const auto& std : {mode.frequencyStdHz, mode.dampingRatioStd}) {
+      if (std && (!finite(*std) || *std < 0)) {
+        return makeError(ErrorCode::InvalidArgument,
+                         "mode " + std::to_string(m + 1) + " has an invalid standard error (negative or not finite)",
+                         where);
+      }
+    }
   }
   return {};
+}
+
+// The standard errors in the content checksum: nothing when a mode has none,
+// so that results kept before schema 5 keep their checksums; else which are
+// present (1: frequency, 2: damping ratio) and their values.
+void addUncertainty(ContentCrc& crc, const std::optional<double>& frequencyStdHz,
+                    const std::optional<double>& dampingRatioStd) {
+  if (!frequencyStdHz && !dampingRatioStd) return;
+  crc.add(static_cast<std::int64_t>((frequencyStdHz ? 1 : 0) | (dampingRatioStd ? 2 : 0)));
+  if (frequencyStdHz) crc.add(*frequencyStdHz);
+  if (dampingRatioStd) crc.add(*dampingRatioStd);
 }
 
 }  // namespace
@@ -55,6 +73,7 @@ Result<std::int64_t> ProjectStore::insertModalResult(const ModalResultInfo& info
   for (std::size_t m = 0; m < table.modes.size(); ++m) {
     const auto& mode = table.modes[m];
     crc.add(static_cast<std::int64_t>(m)).add(mode.frequencyHz).add(mode.dampingRatio);
+    addUncertainty(crc, mode.frequencyStdHz, mode.dampingRatioStd);
     crc.add(static_cast<std::int64_t>(mode.shape.size()));
     for (Eigen::Index d = 0; d < mode.shape.size(); ++d) {
       const Dof& dof = table.dofs[static_cast<std::size_t>(d)];
@@ -68,15 +87,17 @@ Result<std::int64_t> ProjectStore::insertModalResult(const ModalResultInfo& info
   res.bindAll(info.specimenId, info.frfSetId, info.name, info.method, info.bandLowHz, info.bandHighHz, sql::nowUtc(),
               crc.value());
   MOZZI_TRY_ASSIGN(const std::int64_t id, res.insert("cannot store the modal result", where));
-  sql::Statement mode(
-      db_, "INSERT INTO mode(modal_result_id, mode_index, frequency_hz, damping_ratio) VALUES (?1, ?2, ?3, ?4)");
+  sql::Statement mode(db_,
+                      "INSERT INTO mode(modal_result_id, mode_index, frequency_hz, damping_ratio, frequency_std_hz,"
+                      " damping_ratio_std) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
   sql::Statement shape(db_,
                        "INSERT INTO mode_shape(mode_id, dof_index, dof_node, dof_direction, re, im)"
                        " VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
   for (std::size_t m = 0; m < table.modes.size(); ++m) {
     const StoredMode& stored = table.modes[m];
-    MOZZI_TRY_ASSIGN(const std::int64_t modeId, mode.insertWith("cannot store mode " + std::to_string(m + 1), where, id,
-                                                                m, stored.frequencyHz, stored.dampingRatio));
+    MOZZI_TRY_ASSIGN(const std::int64_t modeId,
+                     mode.insertWith("cannot store mode " + std::to_string(m + 1), where, id, m, stored.frequencyHz,
+                                     stored.dampingRatio, stored.frequencyStdHz, stored.dampingRatioStd));
     for (Eigen::Index d = 0; d < stored.shape.size(); ++d) {
       MOZZI_TRY(shape.runWith("cannot store a mode-shape entry", where, modeId, d,
                               table.dofs[static_cast<std::size_t>(d)], stored.shape[d].real(), stored.shape[d].imag()));
@@ -109,13 +130,18 @@ Result<ModalTable> ProjectStore::modalResult(std::int64_t modalResultId) const {
   ModalTable table;
   std::vector<std::int64_t> modeIds;
   std::vector<std::int64_t> modeIndices;
-  sql::Statement modes(db_,
-                       "SELECT id, frequency_hz, damping_ratio, mode_index FROM mode WHERE modal_result_id = ?1"
-                       " ORDER BY mode_index");
+  const std::string uncertainty = modeUncertainty_ ? "frequency_std_hz, damping_ratio_std" : "NULL, NULL";
+  sql::Statement modes(db_, "SELECT id, frequency_hz, damping_ratio, mode_index, " + uncertainty +
+                                " FROM mode WHERE modal_result_id = ?1 ORDER BY mode_index");
   MOZZI_TRY(modes.bindAll(modalResultId).forEachRow("cannot read modes", where, [&](const sql::Row& r) {
     modeIds.push_back(r.int64(0));
     modeIndices.push_back(r.int64(3));
-    table.modes.push_back({r.real(1), r.real(2), {}});
+    StoredMode mode;
+    mode.frequencyHz = r.real(1);
+    mode.dampingRatio = r.real(2);
+    mode.frequencyStdHz = r.optionalReal(4);
+    mode.dampingRatioStd = r.optionalReal(5);
+    table.modes.push_back(std::move(mode));
   }));
   crc.add(static_cast<std::int64_t>(modeIds.size()));
   sql::Statement shape(db_,
@@ -132,6 +158,7 @@ Result<ModalTable> ProjectStore::modalResult(std::int64_t modalResultId) const {
       raw.push_back({r.int64(0), r.int64(1), r.int64(2), r.real(3), r.real(4)});
     }));
     crc.add(modeIndices[m]).add(table.modes[m].frequencyHz).add(table.modes[m].dampingRatio);
+    addUncertainty(crc, table.modes[m].frequencyStdHz, table.modes[m].dampingRatioStd);
     crc.add(static_cast<std::int64_t>(raw.size()));
     for (const auto& e : raw) crc.add(e.index).add(e.node).add(e.direction).add(e.re).add(e.im);
   }

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/common/dof.h"
@@ -164,9 +165,19 @@ struct FrfSetInfo {
 };
 
 struct StoredMode {
+  StoredMode() = default;
+  // Most makers know no standard errors (UFF 55, CSV, peak picking).
+  StoredMode(double frequencyHz, double dampingRatio, ComplexVector shape = {})
+      : frequencyHz(frequencyHz), dampingRatio(dampingRatio), shape(std::move(shape)) {}
+
   double frequencyHz = 0.0;   // undamped natural frequency [Hz]
   double dampingRatio = 0.0;  // viscous ratio zeta (DESIGN.md), not the loss factor
   ComplexVector shape;        // one entry per ModalTable::dofs, unscaled unless stated
+  // Standard errors of frequencyHz and dampingRatio from the identification's
+  // refinement (schema 5); empty when the method gives none or the result was
+  // kept before schema 5.
+  std::optional<double> frequencyStdHz;
+  std::optional<double> dampingRatioStd;
 };
 
 // Modal parameters of one identification (also the CSV modal table).

@@ -413,10 +413,21 @@ ALTER TABLE rig_test ADD COLUMN content_crc32 INTEGER;
 ALTER TABLE tyre_test ADD COLUMN content_crc32 INTEGER;
 )sql";
 
+// Schema 5 (issue 19): the standard errors of an identified mode's frequency
+// and damping ratio, from the refinement that identified it, so that a kept
+// identification shows them as its run did. NULL: none (peak picking, circle
+// fit, a result kept before schema 5). In modal_result.content_crc32 only
+// when present, so the checksums of older results stay valid.
+const char* const kSchema5ModeUncertainty = R"sql(
+ALTER TABLE mode ADD COLUMN frequency_std_hz REAL CHECK (frequency_std_hz IS NULL OR frequency_std_hz >= 0);
+ALTER TABLE mode ADD COLUMN damping_ratio_std REAL CHECK (damping_ratio_std IS NULL OR damping_ratio_std >= 0);
+)sql";
+
 }  // namespace
 
 const std::vector<const char*>& projectMigrations() {
-  static const std::vector<const char*> migrations{kSchema1, kSchema2, kRigTestSteps, kSchema4Checksums};
+  static const std::vector<const char*> migrations{kSchema1, kSchema2, kRigTestSteps, kSchema4Checksums,
+                                                   kSchema5ModeUncertainty};
   return migrations;
 }
 

@@ -72,6 +72,9 @@ class Row {
   std::optional<int> optionalInt32(int column) const {
     return isNull(column) ? std::nullopt : std::optional<int>(int32(column));
   }
+  std::optional<double> optionalReal(int column) const {
+    return isNull(column) ? std::nullopt : std::optional<double>(real(column));
+  }
   Result<Dof> dof(int nodeColumn, int directionColumn, const std::string& where) const {
     return columnDof(stmt_, nodeColumn, directionColumn, where);
   }
@@ -133,6 +136,9 @@ class Statement {
   Statement& bindNull(int index);
   Statement& bind(int index, const std::optional<std::int64_t>& value);
   Statement& bind(int index, const std::optional<int>& value) { return value ? bind(index, *value) : bindNull(index); }
+  Statement& bind(int index, const std::optional<double>& value) {
+    return value ? bind(index, *value) : bindNull(index);
+  }
   // Binds node and direction of an optional DOF to index and index + 1.
   Statement& bindDof(int index, const std::optional<Dof>& dof);
 

@@ -72,6 +72,7 @@ ProjectStore& ProjectStore::operator=(ProjectStore&& other) noexcept {
     lockFd_ = std::exchange(other.lockFd_, -1);
     hitEncoding_ = other.hitEncoding_;
     checksums_ = other.checksums_;
+    modeUncertainty_ = other.modeUncertainty_;
   }
   return *this;
 }
@@ -324,7 +325,8 @@ Result<ProjectStore> ProjectStore::open(const std::string& path, OpenMode mode) 
     MOZZI_TRY(exec(store.db_, "PRAGMA journal_mode = WAL", path));
     if (version < schemaVersionCount()) MOZZI_TRY(migrate(store.db_, static_cast<int>(version), path, {}));
   } else if (version < schemaVersionCount()) {
-    store.checksums_ = version >= 4;  // the checksum columns came with migration 4
+    store.checksums_ = version >= 4;        // the checksum columns came with migration 4
+    store.modeUncertainty_ = version >= 5;  // the modes' standard errors with migration 5
     store.readOnlyReason_ += store.readOnlyReason_.empty() ? "" : "; ";
     store.readOnlyReason_ += "older schema, opened read-only without migration";
   }

@@ -259,6 +259,9 @@ class ProjectStore {
   bool checksums_ = true;
   // "name" when the file has the checksum column, else "NULL" (no check).
   std::string crcColumn(const char* name) const { return checksums_ ? name : "NULL"; }
+  // The file has the modes' standard-error columns of schema 5 (false only for
+  // an older file opened read-only).
+  bool modeUncertainty_ = true;
 
   // On the heap so that the store stays movable; moves happen before sharing.
   std::unique_ptr<std::recursive_mutex> mutex_ = std::make_unique<std::recursive_mutex>();

@@ -140,7 +140,8 @@ std::string uniqueModalResultName(const std::vector<io::ModalResultInfo>& existi
   return candidate;
 }
 
-Result<io::ModalTable> modalTableOf(const ModalModel& model) {
+Result<io::ModalTable> modalTableOf(const ModalModel& model, const std::vector<double>& frequencyStdHz,
+                                    const std::vector<double>& zetaStd) {
   io::ModalTable table;
   if (model.modes.empty()) {
     table.dofs = model.referenceCount() > model.responseCount() ? model.references : model.responses;
@@ -154,6 +155,8 @@ Result<io::ModalTable> modalTableOf(const ModalModel& model) {
     m.frequencyHz = model.modes[r].frequencyHz();
     m.dampingRatio = model.modes[r].zeta();
     m.shape = shapes.shapes.col(static_cast<Eigen::Index>(r));
+    if (r < frequencyStdHz.size()) m.frequencyStdHz = frequencyStdHz[r];
+    if (r < zetaStd.size()) m.dampingRatioStd = zetaStd[r];
     table.modes.push_back(std::move(m));
   }
   return table;
@@ -196,8 +199,9 @@ Result<void> removeExponentialWindow(io::ModalTable& table, double tauS) {
 }
 
 Result<std::int64_t> storeModalResult(io::ProjectStore& store, const ModalModel& model, io::ModalResultInfo info,
-                                      const std::string& methodKey, double tauS) {
-  MOZZI_TRY_ASSIGN(auto table, modalTableOf(model));
+                                      const std::string& methodKey, double tauS,
+                                      const std::vector<double>& frequencyStdHz, const std::vector<double>& zetaStd) {
+  MOZZI_TRY_ASSIGN(auto table, modalTableOf(model, frequencyStdHz, zetaStd));
   MOZZI_TRY(removeExponentialWindow(table, tauS));
   MOZZI_TRY_ASSIGN(auto existing, store.modalResults());
   info.method = storedMethodName(methodKey);

@@ -80,8 +80,10 @@ std::string uniqueModalResultName(const std::vector<io::ModalResultInfo>& existi
 
 // The modal result stored in a project: DOFs = the model's responses, one
 // StoredMode per mode with f, zeta and the shape of reference 0 (unit modal
-// mass at a driving point, else max component: modeShapes).
-Result<io::ModalTable> modalTableOf(const ModalModel& model);
+// mass at a driving point, else max component: modeShapes), and the standard
+// errors of f and zeta when given (one per mode, the refinement's).
+Result<io::ModalTable> modalTableOf(const ModalModel& model, const std::vector<double>& frequencyStdHz = {},
+                                    const std::vector<double>& zetaStd = {});
 
 // Removes the decay an exponential window of time constant tauS [s] added to
 // every mode (core::signal::correctExponentialWindowDamping): natural
@@ -92,11 +94,14 @@ Result<void> removeExponentialWindow(std::vector<ModalTableRow>& rows, double ta
 Result<void> removeExponentialWindow(io::ModalTable& table, double tauS);
 
 // Keeps `model` as a modal result of the project, as `mozzi-cli identify
-// --store` and the demo project do: modalTableOf, the exponential window's
+// --store` and the demo project do: modalTableOf (with the standard errors
+// when given), the exponential window's
 // decay removed (tauS), the method's stored name, and the default name of
 // method and band made unique for the specimen. `info` gives the specimen, the
 // FRF set and the band. Returns the new result's id.
 Result<std::int64_t> storeModalResult(io::ProjectStore& store, const ModalModel& model, io::ModalResultInfo info,
-                                      const std::string& methodKey, double tauS);
+                                      const std::string& methodKey, double tauS,
+                                      const std::vector<double>& frequencyStdHz = {},
+                                      const std::vector<double>& zetaStd = {});
 
 }  // namespace mozzi::core::modal

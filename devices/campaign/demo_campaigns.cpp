@@ -141,7 +141,10 @@ core::Result<void> identifyDemoCampaigns(core::io::ProjectStore& store) {
       info.frfSetId = set.id;
       info.bandLowHz = lo;
       info.bandHighHz = hi;
-      auto stored = md::storeModalResult(store, identified->model(), info, "plscf", *tauS);
+      const std::vector<double> none;
+      const auto& refined = identified->refined;
+      auto stored = md::storeModalResult(store, identified->model(), info, "plscf", *tauS,
+                                         refined ? refined->frequencyStdHz : none, refined ? refined->zetaStd : none);
       if (!stored) return stored.error();
     }
   }

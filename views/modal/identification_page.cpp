@@ -561,7 +561,8 @@ void IdentificationPage::showTable() {
   rows_.clear();
   if (fit_) {
     // The automatic selection shows the refined model with its standard
-    // errors (the CLI's numbers); a hand-made or kept one its LSFD fit.
+    // errors (the CLI's numbers); a hand-made or kept one its LSFD fit, the
+    // kept one with the standard errors it was kept with.
     const bool automatic = outcome_ && selectionIsAutomatic_ && (outcome_->refined || !outcome_->diagram);
     const md::ModalModel& m = automatic ? outcome_->model : fit_->model;
     auto rows = automatic ? md::modalTableRows(m, outcome_->frequencyStdHz, outcome_->zetaStd) : md::modalTableRows(m);
@@ -570,6 +571,16 @@ void IdentificationPage::showTable() {
       setStatus(
           tr("Cannot remove the exponential window's damping: %1").arg(QString::fromStdString(c.error().describe())),
           true);
+    }
+    if (!automatic && kept_ && selectionIsKept_ && kept_->table.modes.size() == rows_.size()) {
+      for (std::size_t r = 0; r < rows_.size(); ++r) {
+        const core::io::StoredMode& kept = kept_->table.modes[r];
+        // The fit keeps the kept poles: the same f, but to rounding (the window's decay put back and removed).
+        if (std::abs(kept.frequencyHz - rows_[r].frequencyHz) > 1e-9 * kept.frequencyHz) continue;
+        rows_[r].frequencyStdHz = kept.frequencyStdHz;
+        rows_[r].zetaStd = kept.dampingRatioStd;
+        if (kept.dampingRatioStd) rows_[r].etaStd = 2.0 * *kept.dampingRatioStd;
+      }
     }
   }
   table_->setRowCount(static_cast<int>(rows_.size()));
@@ -635,7 +646,7 @@ void IdentificationPage::save(const QString& name) {
     title = QString::fromStdString(base);
   }
   if ((selectionIsAutomatic_ && outcome_->refined) || !outcome_->diagram) {
-    storeModel(outcome_->model, title);  // refined already, the CLI's numbers
+    storeModel(outcome_->model, title, outcome_->frequencyStdHz, outcome_->zetaStd);  // refined: the CLI's numbers
     return;
   }
   // A hand-made selection is refined as the CLI refines the automatic one.
@@ -657,12 +668,13 @@ void IdentificationPage::save(const QString& name) {
           emit saveFailed(why);
           return;
         }
-        storeModel(r->model, title);
+        storeModel(r->model, title, r->frequencyStdHz, r->zetaStd);
       });
 }
 
-void IdentificationPage::storeModel(const md::ModalModel& model, const QString& name) {
-  auto table = md::modalTableOf(model);
+void IdentificationPage::storeModel(const md::ModalModel& model, const QString& name,
+                                    const std::vector<double>& frequencyStdHz, const std::vector<double>& zetaStd) {
+  auto table = md::modalTableOf(model, frequencyStdHz, zetaStd);
   if (table) {  // the table's numbers: the window's decay removed, as the CLI stores them
     if (auto c = md::removeExponentialWindow(*table, windowTauS_); !c) table = c.error();
   }

@@ -150,7 +150,9 @@ class IdentificationPage : public QWidget {
   // The synthesis and MAC tabs: the one shown now, the other when shown.
   void showTabs();
   void setStatus(const QString& text, bool error);
-  void storeModel(const core::modal::ModalModel& model, const QString& name);
+  // Keeps `model` with the standard errors of its refinement (one per mode).
+  void storeModel(const core::modal::ModalModel& model, const QString& name, const std::vector<double>& frequencyStdHz,
+                  const std::vector<double>& zetaStd);
 
   ProjectModel* model_ = nullptr;
   JobRunner* jobs_ = nullptr;

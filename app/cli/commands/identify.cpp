@@ -162,6 +162,7 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
   md::ModalModel model;
   std::vector<Row> rows;
   Eigen::Index fittedLines = 0, bandLines = 0;  // of the refinement (pLSCF, LSCE)
+  std::vector<double> frequencyStdHz, zetaStd;  // its standard errors, one per mode
   if (method == "plscf" || method == "lsce") {
     md::IdentificationOptions opt;  // the pLSCF options plus the LSCE window (defaults)
     opt.method = method == "lsce" ? md::IdentificationMethod::Lsce : md::IdentificationMethod::Plscf;
@@ -189,6 +190,8 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     model = res->model();
     fittedLines = res->refined->fittedLines;
     bandLines = res->refined->bandLines;
+    frequencyStdHz = res->refined->frequencyStdHz;
+    zetaStd = res->refined->zetaStd;
     for (std::size_t r = 0; r < model.modes.size(); ++r) {
       rows.push_back({model.modes[r].frequencyHz(), model.modes[r].zeta(), res->refined->frequencyStdHz[r],
                       res->refined->zetaStd[r], 0.0});
@@ -252,7 +255,8 @@ int identifyCommand(const std::vector<std::string>& args, std::ostream& out, std
     info.frfSetId = setInfo.id;
     info.bandLowHz = lo;
     info.bandHighHz = hi;
-    auto id = md::storeModalResult(*store, model, info, method, tauS);  // the printed numbers' table
+    // the printed numbers' table, standard errors included
+    auto id = md::storeModalResult(*store, model, info, method, tauS, frequencyStdHz, zetaStd);
     if (!id) return fail(err, id.error());
     storedId = *id;
   }

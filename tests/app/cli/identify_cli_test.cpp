@@ -255,6 +255,10 @@ TEST(IdentifyCli, StoreKeepsTheModesInTheProject) {
       const auto& mode = j["modes"][m];
       EXPECT_EQ(table->modes[m].frequencyHz, mode["frequency_hz"].get<double>()) << "set " << set << " mode " << m;
       EXPECT_EQ(table->modes[m].dampingRatio, mode["zeta"].get<double>()) << "set " << set << " mode " << m;
+      // and the refinement's standard errors as printed
+      ASSERT_TRUE(table->modes[m].frequencyStdHz && table->modes[m].dampingRatioStd) << "set " << set << " mode " << m;
+      EXPECT_EQ(*table->modes[m].frequencyStdHz, mode["frequency_std"].get<double>()) << "mode " << m;
+      EXPECT_EQ(*table->modes[m].dampingRatioStd, mode["zeta_std"].get<double>()) << "mode " << m;
       const auto i = static_cast<Eigen::Index>(m);
       EXPECT_LT(std::abs(table->modes[m].frequencyHz - sys.fn[i]) / sys.fn[i], 1e-3) << "set " << set;
       EXPECT_LT(std::abs(table->modes[m].dampingRatio - sys.zeta[i]) / sys.zeta[i], 0.05)
@@ -281,6 +285,14 @@ TEST(IdentifyCli, StoreKeepsTheModesInTheProject) {
   const CliRun text = run({"identify", p, "--frf-set", "1", "--band", "140:160", "--method", "peak", "--store"});
   ASSERT_EQ(text.code, kExitOk) << text.err;
   EXPECT_NE(text.out.find("stored as modal result 3"), std::string::npos) << text.out;
+  {  // peak picking gives no standard errors: none kept
+    auto store = core::io::ProjectStore::open(p, core::io::ProjectStore::OpenMode::ReadOnly).value();
+    const auto peak = store.modalResult(3);
+    ASSERT_TRUE(peak.ok()) << peak.error().describe();
+    ASSERT_EQ(peak->modes.size(), 1u);
+    EXPECT_FALSE(peak->modes[0].frequencyStdHz.has_value());
+    EXPECT_FALSE(peak->modes[0].dampingRatioStd.has_value());
+  }
   // --store needs a project; an unknown set is named.
   EXPECT_EQ(run({"identify", writeSyntheticUff(), "--band", "20:380", "--store"}).code, kExitUsage);
   const CliRun missing = run({"identify", p, "--frf-set", "7", "--band", "20:380", "--store"});

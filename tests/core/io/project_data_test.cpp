@@ -3,8 +3,10 @@
 // so every round trip must be exact: tolerance 0 throughout.
 
 #include <gtest/gtest.h>
+
 #include <sqlite3.h>
 #include <unistd.h>
+#include <limits>
 
 #include <cmath>
 #include <filesystem>
@@ -320,6 +322,8 @@ TEST_F(ProjectDataTest, ModalResultRoundTrip) {
   t.modes.push_back({97.25, 0.0301, ComplexVector(2)});
   t.modes[0].shape << Complex(1.0, 0.01), Complex(-0.5, 0.0);
   t.modes[1].shape << Complex(0.2, -0.1), Complex(1.0, 0.0);
+  t.modes[1].frequencyStdHz = 0.0042;  // the refinement's standard errors; mode 1 has none
+  t.modes[1].dampingRatioStd = 3.5e-5;
   ModalResultInfo info;
   info.specimenId = specimen_;
   info.name = "LSCE 0-200 Hz";
@@ -334,10 +338,33 @@ TEST_F(ProjectDataTest, ModalResultRoundTrip) {
   EXPECT_EQ(out->modes[1].frequencyHz, 97.25);
   EXPECT_EQ(out->modes[1].dampingRatio, 0.0301);
   EXPECT_EQ(out->modes[0].shape, t.modes[0].shape);
+  EXPECT_FALSE(out->modes[0].frequencyStdHz.has_value());
+  EXPECT_FALSE(out->modes[0].dampingRatioStd.has_value());
+  EXPECT_EQ(out->modes[1].frequencyStdHz, std::optional<double>(0.0042));
+  EXPECT_EQ(out->modes[1].dampingRatioStd, std::optional<double>(3.5e-5));
   auto list = store_->modalResults();
   ASSERT_TRUE(list.ok());
   ASSERT_EQ(list->size(), 1u);
   EXPECT_EQ((*list)[0].modeCount, 2);
+}
+
+TEST_F(ProjectDataTest, AModeWithAnInvalidStandardErrorIsRefusedAndNamed) {
+  for (const double bad : {-1e-3, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    ModalTable t;
+    t.modes.push_back({41.5, 0.012});
+    t.modes.push_back({97.25, 0.0301});
+    t.modes[1].dampingRatioStd = bad;
+    ModalResultInfo info;
+    info.specimenId = specimen_;
+    info.name = "bad standard error";
+    auto id = store_->addModalResult(info, t);
+    ASSERT_FALSE(id.ok()) << bad;
+    EXPECT_NE(id.error().message.find("mode 2"), std::string::npos) << id.error().describe();
+    EXPECT_NE(id.error().message.find("standard error"), std::string::npos) << id.error().describe();
+  }
+  auto list = store_->modalResults();
+  ASSERT_TRUE(list.ok());
+  EXPECT_TRUE(list->empty()) << "nothing of a refused result is kept";
 }
 
 TEST_F(ProjectDataTest, RigAndTyreTestsModelsAndAnalyses) {

@@ -140,6 +140,67 @@ TEST_F(ProjectStoreTest, SchemaVersionsAreEnforced) {
   EXPECT_NE(unfinished.error().message.find("no schema"), std::string::npos) << unfinished.error().describe();
 }
 
+// A project of schema 4 (before the modes' standard errors): read-only it is
+// read as it is, read-write it is migrated, and in both its kept modal result
+// passes its checksum (the standard errors enter it only when present).
+TEST_F(ProjectStoreTest, ASchema4ModalResultReadsAndMigratesWithItsChecksum) {
+  ModalTable kept;
+  kept.dofs = {Dof{1, Direction::X, false}, Dof{2, Direction::Z, true}};
+  kept.modes.push_back({41.5, 0.012, ComplexVector::Constant(2, Complex(1.0, 0.1))});
+  kept.modes.push_back({97.25, 0.0301, ComplexVector::Constant(2, Complex(-0.5, 0.0))});
+  std::int64_t id = 0;
+  {
+    auto store = ProjectStore::create(file("v4.mozzi"), "0.1.0");
+    ASSERT_TRUE(store.ok());
+    auto specimen = store->addSpecimen("Frame A", "frame", "");
+    ASSERT_TRUE(specimen.ok());
+    ModalResultInfo info;
+    info.specimenId = *specimen;
+    info.name = "PolyMAX 20 .. 120 Hz";
+    auto added = store->addModalResult(info, kept);
+    ASSERT_TRUE(added.ok()) << added.error().describe();
+    id = *added;
+  }
+  // Back to schema 4 as an older Mozzi wrote it: without the two columns.
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(file("v4.mozzi").c_str(), &db), SQLITE_OK);
+  ASSERT_EQ(
+      sqlite3_exec(db,
+                   "ALTER TABLE mode DROP COLUMN frequency_std_hz; ALTER TABLE mode DROP COLUMN damping_ratio_std;"
+                   " PRAGMA user_version = 4",
+                   nullptr, nullptr, nullptr),
+      SQLITE_OK)
+      << sqlite3_errmsg(db);
+  sqlite3_close(db);
+
+  auto checkKept = [&](const ProjectStore& store) {
+    auto table = store.modalResult(id);
+    ASSERT_TRUE(table.ok()) << table.error().describe();  // its checksum verified
+    ASSERT_EQ(table->modes.size(), 2u);
+    EXPECT_EQ(table->modes[1].frequencyHz, 97.25);
+    EXPECT_EQ(table->modes[0].shape, kept.modes[0].shape);
+    EXPECT_FALSE(table->modes[0].frequencyStdHz.has_value());
+    EXPECT_FALSE(table->modes[1].dampingRatioStd.has_value());
+  };
+  {
+    auto readOnly = ProjectStore::open(file("v4.mozzi"), ProjectStore::OpenMode::ReadOnly);
+    ASSERT_TRUE(readOnly.ok()) << readOnly.error().describe();
+    EXPECT_EQ(readOnly->schemaVersion(), 4);
+    checkKept(*readOnly);
+  }
+  auto migrated = ProjectStore::open(file("v4.mozzi"));
+  ASSERT_TRUE(migrated.ok()) << migrated.error().describe();
+  EXPECT_EQ(migrated->schemaVersion(), 5);
+  checkKept(*migrated);
+  // A change of its content after the migration is still caught.
+  ASSERT_EQ(sqlite3_exec(migrated->connection(), "UPDATE mode SET frequency_std_hz = 0.01 WHERE mode_index = 0",
+                         nullptr, nullptr, nullptr),
+            SQLITE_OK);
+  auto tampered = migrated->modalResult(id);
+  ASSERT_FALSE(tampered.ok());
+  EXPECT_EQ(tampered.error().code, ErrorCode::Corrupt) << tampered.error().describe();
+}
+
 TEST_F(ProjectStoreTest, EveryTableOfTheSchemaIsCounted) {
   auto store = ProjectStore::create(file("t.mozzi"), "0.1.0");
   ASSERT_TRUE(store.ok());

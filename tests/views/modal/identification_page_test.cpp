@@ -529,7 +529,11 @@ class IdentificationPageTest : public QObject {
       kept.bandLowHz = 15.0;
       kept.bandHighHz = 80.0;
       core::io::ModalTable table;
-      for (std::size_t r = 0; r < 3; ++r) table.modes.push_back({fork.spec.frequencyHz[r], fork.spec.zeta[r], {}});
+      for (std::size_t r = 0; r < 3; ++r) {
+        table.modes.push_back({fork.spec.frequencyHz[r], fork.spec.zeta[r], {}});
+        table.modes[r].frequencyStdHz = 0.001 * static_cast<double>(r + 1);  // as a refinement keeps them
+        table.modes[r].dampingRatioStd = 1e-4 * static_cast<double>(r + 1);
+      }
       return model_.addModalResult(kept, table).ok() ? *set : 0;
     };
     const qint64 lsceSet = keep("fork kept LSCE", "LSCE");
@@ -559,6 +563,17 @@ class IdentificationPageTest : public QObject {
     QVERIFY(page.diagramPlot()->backdropCurve()->sample(0).y() != sumFirst);  // another curve
     QCOMPARE(page.diagramPlot()->selection(), ringed);
     QCOMPARE(page.tableRows().size(), size_t(3));
+    // The kept modes with the standard errors they were kept with, in the rows and the table's cells.
+    auto* modeTable = page.findChild<QTableWidget*>(QStringLiteral("identificationModalTable"));
+    QVERIFY(modeTable);
+    for (std::size_t r = 0; r < 3; ++r) {
+      const auto& row = page.tableRows()[r];
+      QVERIFY(row.frequencyStdHz && row.zetaStd && row.etaStd);
+      QCOMPARE(*row.frequencyStdHz, 0.001 * static_cast<double>(r + 1));
+      QCOMPARE(*row.zetaStd, 1e-4 * static_cast<double>(r + 1));
+      QCOMPARE(*row.etaStd, 2e-4 * static_cast<double>(r + 1));
+      QCOMPARE(modeTable->item(static_cast<int>(r), 2)->text(), QString::number(0.001 * static_cast<double>(r + 1)));
+    }
     // The kept modes are in the project already: Save waits for another
     // selection (it stored a re-refined copy of them).
     auto* save = page.findChild<QPushButton*>(QStringLiteral("identificationSave"));
@@ -566,6 +581,8 @@ class IdentificationPageTest : public QObject {
     clickPole(page.diagramPlot(), ringed[0]);
     QCOMPARE(page.tableRows().size(), size_t(2));
     QVERIFY(save->isEnabled());
+    // Another selection is an LSFD fit of its own: no standard errors until refined.
+    for (const auto& row : page.tableRows()) QVERIFY(!row.frequencyStdHz && !row.zetaStd);
 
     const qint64 peakSet = keep("fork kept peak", "peak picking");
     QVERIFY(peakSet > 0);
