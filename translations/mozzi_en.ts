@@ -134,7 +134,107 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+6"/>
+        <source>mass loading</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>boundary stiffness</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>element stiffness</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>residual mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>hysteretic damping</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>exponential window</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sensor misalignment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>stiffness location</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bending stiffness</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>inertia</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>residual compliance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>inertia error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>belt modes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>carcass damping</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>trail feedback</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>contact patch fraction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ring pressure stiffening</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>fork bending</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fork torsion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tyre relaxation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>all</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3771,7 +3871,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>Cannot remove the exponential window&apos;s damping: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3786,7 +3886,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/modal/identification_page.cpp" line="+40"/>
+        <location filename="../views/modal/identification_page.cpp" line="+50"/>
         <location line="+7"/>
         <source>%1 Hz</source>
         <translation type="unfinished"></translation>
@@ -3812,7 +3912,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <location line="+15"/>
         <source>Cannot store the modes: %1</source>
         <translation type="unfinished"></translation>
@@ -5180,7 +5280,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>%1 data, %2 residuals, %3 candidate effects at their locations.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5295,7 +5395,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="+245"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+250"/>
         <location line="+26"/>
         <source>model + %1 + %2</source>
         <translation type="unfinished"></translation>
@@ -5308,12 +5408,12 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location filename="../views/gap/model_test_view.cpp" line="+71"/>
-        <location line="+85"/>
+        <location line="+88"/>
         <source>model + best effect</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-75"/>
+        <location line="-78"/>
         <source>Model vs test</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5328,17 +5428,17 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+18"/>
         <source>Ranked effects</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-46"/>
+        <location line="-49"/>
         <source>Nothing to export: run the diagnosis first.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-625"/>
+        <location line="-626"/>
         <source>effect</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5378,7 +5478,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+379"/>
+        <location line="+380"/>
         <location filename="../views/gap/model_test_view_kept.cpp" line="+11"/>
         <source>%1 and %2</source>
         <translation type="unfinished"></translation>
@@ -5436,7 +5536,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="-97"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="-101"/>
         <source>Lowest frequency used (0 = from the first line)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5471,7 +5571,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+2"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+5"/>
         <source>Load</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5552,7 +5652,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+26"/>
+        <location line="+30"/>
         <source>and %n more</source>
         <translation type="unfinished">
             <numerusform></numerusform>

@@ -134,7 +134,107 @@
         <translation>A [m/s]</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+6"/>
+        <source>mass loading</source>
+        <translation>massa aggiunta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>boundary stiffness</source>
+        <translation>rigidezza di vincolo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>element stiffness</source>
+        <translation>rigidezza dell&apos;elemento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>residual mode</source>
+        <translation>modo residuo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>hysteretic damping</source>
+        <translation>smorzamento isteretico</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>exponential window</source>
+        <translation>finestra esponenziale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sensor misalignment</source>
+        <translation>disallineamento del sensore</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>stiffness location</source>
+        <translation>posizione della rigidezza</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bending stiffness</source>
+        <translation>rigidezza flessionale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>inertia</source>
+        <translation>inerzia</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>residual compliance</source>
+        <translation>cedevolezza residua</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>inertia error</source>
+        <translation>errore di inerzia</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>belt modes</source>
+        <translation>modi della cintura</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>carcass damping</source>
+        <translation>smorzamento della carcassa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>trail feedback</source>
+        <translation>retroazione dell&apos;avancorsa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>contact patch fraction</source>
+        <translation>frazione dell&apos;impronta di contatto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ring pressure stiffening</source>
+        <translation>irrigidimento dell&apos;anello con la pressione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>fork bending</source>
+        <translation>flessione della forcella</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>fork torsion</source>
+        <translation>torsione della forcella</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tyre relaxation</source>
+        <translation>rilassamento del pneumatico</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>all</source>
         <translation>tutto</translation>
     </message>
@@ -3771,7 +3871,7 @@
         <translation>Attenzione: %1. Togli uno dei due.</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>Cannot remove the exponential window&apos;s damping: %1</source>
         <translation>Impossibile togliere lo smorzamento della finestra esponenziale: %1</translation>
     </message>
@@ -3786,7 +3886,7 @@
         <translation>sintesi</translation>
     </message>
     <message>
-        <location filename="../views/modal/identification_page.cpp" line="+40"/>
+        <location filename="../views/modal/identification_page.cpp" line="+50"/>
         <location line="+7"/>
         <source>%1 Hz</source>
         <translation>%1 Hz</translation>
@@ -3812,7 +3912,7 @@
         <translation>Affinamento non riuscito, niente salvato: %1</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <location line="+15"/>
         <source>Cannot store the modes: %1</source>
         <translation>Impossibile memorizzare i modi: %1</translation>
@@ -5184,7 +5284,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Impossibile usare questi file: %1</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>%1 data, %2 residuals, %3 candidate effects at their locations.</source>
         <translation>Dati %1, %2 residui, %3 effetti candidati nelle loro posizioni.</translation>
     </message>
@@ -5299,7 +5399,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>%1 (+%2 equiv.)</translation>
     </message>
     <message>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="+245"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="+250"/>
         <location line="+26"/>
         <source>model + %1 + %2</source>
         <translation>modello + %1 + %2</translation>
@@ -5312,12 +5412,12 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location filename="../views/gap/model_test_view.cpp" line="+71"/>
-        <location line="+85"/>
+        <location line="+88"/>
         <source>model + best effect</source>
         <translation>modello + effetto migliore</translation>
     </message>
     <message>
-        <location line="-75"/>
+        <location line="-78"/>
         <source>Model vs test</source>
         <translation>Modello contro prova</translation>
     </message>
@@ -5332,17 +5432,17 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Prova</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+18"/>
         <source>Ranked effects</source>
         <translation>Effetti in classifica</translation>
     </message>
     <message>
-        <location line="-46"/>
+        <location line="-49"/>
         <source>Nothing to export: run the diagnosis first.</source>
         <translation>Niente da esportare: esegui prima la diagnosi.</translation>
     </message>
     <message>
-        <location line="-625"/>
+        <location line="-626"/>
         <source>effect</source>
         <translation>effetto</translation>
     </message>
@@ -5382,7 +5482,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Pressione [bar]</translation>
     </message>
     <message>
-        <location line="+379"/>
+        <location line="+380"/>
         <location filename="../views/gap/model_test_view_kept.cpp" line="+11"/>
         <source>%1 and %2</source>
         <translation>%1 e %2</translation>
@@ -5440,7 +5540,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Banda</translation>
     </message>
     <message>
-        <location filename="../views/gap/model_test_view_kept.cpp" line="-97"/>
+        <location filename="../views/gap/model_test_view_kept.cpp" line="-101"/>
         <source>Lowest frequency used (0 = from the first line)</source>
         <translation>Frequenza minima usata (0 = dalla prima riga)</translation>
     </message>
@@ -5475,7 +5575,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Effetti candidati</translation>
     </message>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+2"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+5"/>
         <source>Load</source>
         <translation>Carica</translation>
     </message>
@@ -5556,7 +5656,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Gli effetti classificati dalla diagnosi conservata; un&apos;esecuzione sui file elenca quelli offerti dai suoi dati</translation>
     </message>
     <message numerus="yes">
-        <location line="+26"/>
+        <location line="+30"/>
         <source>and %n more</source>
         <translation>
             <numerusform>e %n altra</numerusform>

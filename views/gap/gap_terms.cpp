@@ -46,6 +46,34 @@ const Term kColumns[] = {
     {"to_m_s", QT_TRANSLATE_NOOP("GapTerms", "To [m/s]")},
 };
 
+// The effects of core's catalogues (docs/gap.md).
+const Term kEffects[] = {
+    // core/gap/structural (effectName)
+    {"mass_loading", QT_TRANSLATE_NOOP("GapTerms", "mass loading")},
+    {"boundary_stiffness", QT_TRANSLATE_NOOP("GapTerms", "boundary stiffness")},
+    {"element_stiffness", QT_TRANSLATE_NOOP("GapTerms", "element stiffness")},
+    {"residual_mode", QT_TRANSLATE_NOOP("GapTerms", "residual mode")},
+    {"hysteretic_damping", QT_TRANSLATE_NOOP("GapTerms", "hysteretic damping")},
+    {"exponential_window", QT_TRANSLATE_NOOP("GapTerms", "exponential window")},
+    {"sensor_misalignment", QT_TRANSLATE_NOOP("GapTerms", "sensor misalignment")},
+    // core/gap/fork (also boundary_stiffness above)
+    {"stiffness_location", QT_TRANSLATE_NOOP("GapTerms", "stiffness location")},
+    {"bending_stiffness", QT_TRANSLATE_NOOP("GapTerms", "bending stiffness")},
+    {"inertia", QT_TRANSLATE_NOOP("GapTerms", "inertia")},
+    {"residual_compliance", QT_TRANSLATE_NOOP("GapTerms", "residual compliance")},
+    {"inertia_error", QT_TRANSLATE_NOOP("GapTerms", "inertia error")},
+    // core/gap/tire
+    {"belt_modes", QT_TRANSLATE_NOOP("GapTerms", "belt modes")},
+    {"carcass_damping", QT_TRANSLATE_NOOP("GapTerms", "carcass damping")},
+    {"trail_feedback", QT_TRANSLATE_NOOP("GapTerms", "trail feedback")},
+    {"contact_patch_fraction", QT_TRANSLATE_NOOP("GapTerms", "contact patch fraction")},
+    {"ring_pressure_stiffening", QT_TRANSLATE_NOOP("GapTerms", "ring pressure stiffening")},
+    // core/gap/stability
+    {"fork_bending", QT_TRANSLATE_NOOP("GapTerms", "fork bending")},
+    {"fork_torsion", QT_TRANSLATE_NOOP("GapTerms", "fork torsion")},
+    {"tyre_relaxation", QT_TRANSLATE_NOOP("GapTerms", "tyre relaxation")},
+};
+
 template <std::size_t N>
 QString titleOf(const Term (&terms)[N], const std::string& key) {
   for (const Term& t : terms) {
@@ -61,6 +89,10 @@ QString GapTerms::kindTitle(const std::string& kind) {
 
 QString GapTerms::columnTitle(const std::string& key) {
   return titleOf(kColumns, key);
+}
+
+QString GapTerms::effectTitle(const std::string& key) {
+  return titleOf(kEffects, key);
 }
 
 QString GapTerms::itemLabel(const std::string& label) {

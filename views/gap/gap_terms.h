@@ -1,6 +1,7 @@
 #pragma once
 // Core's gap diagnosis names its results with keys ("frf_residual",
-// "predicted_hz", entry kinds "mode", "band", items "mode 2 (56.8 Hz)"):
+// "predicted_hz", entry kinds "mode", "band", items "mode 2 (56.8 Hz)",
+// effects "residual_mode"):
 // the words the Model vs Test page shows for them, through tr(). A key the
 // page does not know is shown as core wrote it.
 
@@ -21,6 +22,9 @@ class GapTerms {
   static QString columnTitle(const std::string& key);
   // An entry's label: "mode 2 (56.8 Hz)" and "all" in the page's language.
   static QString itemLabel(const std::string& label);
+  // An effect's name, the thing a candidate is called: "residual mode" for
+  // "residual_mode" (core/gap/structural, fork, tire, stability).
+  static QString effectTitle(const std::string& key);
 };
 
 }  // namespace views

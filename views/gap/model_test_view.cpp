@@ -331,7 +331,7 @@ void ModelTestView::setMultistarts(int starts) {
 void ModelTestView::setEffects(const QStringList& names) {
   for (int i = 0; i < effects_->count(); ++i) {
     QListWidgetItem* item = effects_->item(i);
-    item->setCheckState(names.contains(item->text()) ? Qt::Checked : Qt::Unchecked);
+    item->setCheckState(names.contains(item->data(Qt::UserRole).toString()) ? Qt::Checked : Qt::Unchecked);
   }
 }
 bool ModelTestView::isRunning() const {
@@ -385,10 +385,11 @@ bool ModelTestView::loadInputs() {
     auto& where = locations[candidate.effect];
     if (!candidate.location.empty()) where.push_back(joined(candidate.location).toStdString());
   }
-  // A reload (new files or band) keeps the user's choices for effects still offered.
+  // A reload (new files or band) keeps the user's choices for effects still
+  // offered. Each item shows the effect's words and keeps core's key (UserRole).
   QStringList unticked;
   for (int i = 0; i < effects_->count(); ++i) {
-    if (effects_->item(i)->checkState() != Qt::Checked) unticked << effects_->item(i)->text();
+    if (effects_->item(i)->checkState() != Qt::Checked) unticked << effects_->item(i)->data(Qt::UserRole).toString();
   }
   fillEffects(locations, unticked);
   setSetup(Setup::NextRun);
@@ -407,7 +408,7 @@ bool ModelTestView::run() {
   options.multistarts = multistarts_->value();
   for (int i = 0; i < effects_->count(); ++i) {
     if (effects_->item(i)->checkState() == Qt::Checked)
-      options.effects.push_back(effects_->item(i)->text().toStdString());
+      options.effects.push_back(effects_->item(i)->data(Qt::UserRole).toString().toStdString());
   }
   if (options.effects.empty()) {
     setStatus(tr("Tick at least one candidate effect."));
@@ -492,8 +493,8 @@ void ModelTestView::showDiagnosisText() {
 
 QString ModelTestView::effectText(const std::string& effect, const std::vector<std::string>& location,
                                   const std::vector<std::vector<std::string>>& equivalent) {
-  if (location.empty()) return QString::fromStdString(effect);
-  const QString name = QString::fromStdString(effect);
+  const QString name = GapTerms::effectTitle(effect);  // "residual mode", not core's "residual_mode"
+  if (location.empty()) return name;
   if (equivalent.size() == 1)
     return tr("%1 at %2 (equivalent at %3)").arg(name, joined(location), joined(equivalent[0]));
   if (equivalent.size() > 1) {
@@ -504,7 +505,7 @@ QString ModelTestView::effectText(const std::string& effect, const std::vector<s
   return tr("%1 at %2").arg(name, joined(location));
 }
 
-// "Verdict: effect (residual_mode)", coloured by the verdict.
+// "Verdict: effect (residual mode)", coloured by the verdict.
 void ModelTestView::showVerdict(const QString& verdict, const QString& effects) {
   const QString word = verdictWord(verdict.toStdString());
   verdict_->setText(effects.isEmpty() ? tr("Verdict: %1").arg(word) : tr("Verdict: %1 (%2)").arg(word, effects));
@@ -609,7 +610,7 @@ void ModelTestView::fillRankingRows(const std::vector<StoredDiagnosis::RankedEff
       sizes << text;
     }
     if (!effect.identifiable) sizes << tr("(not identifiable)");
-    ranking_->setItem(r, 0, new QTableWidgetItem(QString::fromStdString(effect.effect)));
+    ranking_->setItem(r, 0, new QTableWidgetItem(GapTerms::effectTitle(effect.effect)));
     // A family of locations that change the data alike (fitted once): the
     // first and the count here, every one in the tip.
     std::vector<std::string> all{joined(effect.location).toStdString()};
@@ -759,6 +760,10 @@ void ModelTestView::retranslate() {
   multistartsLabel_->setText(tr("Multistarts"));
   multistarts_->setToolTip(tr("Starting points of every nonlinear fit (more are slower and safer)"));
   setSetup(setup_);  // the band's tips and the candidates' label
+  // The candidates' words in this language, in their order; core's key stays (UserRole).
+  for (int i = 0; i < effects_->count(); ++i)
+    effects_->item(i)->setText(GapTerms::effectTitle(effects_->item(i)->data(Qt::UserRole).toString().toStdString()));
+  effects_->sortItems();
   load_->setText(tr("Load"));
   run_->setText(tr("Run Diagnosis"));
   cancel_->setText(tr("Cancel"));

@@ -21,6 +21,7 @@
 #include "core/report/gap_report.h"
 #include "views/common/kept_analyses.h"
 #include "views/common/project_model.h"
+#include "views/gap/gap_terms.h"
 #include "views/gap/model_test_view.h"
 
 namespace mozzi {
@@ -208,11 +209,15 @@ void ModelTestView::fillEffects(const std::map<std::string, std::vector<std::str
                                 const QStringList& unticked) {
   effects_->clear();
   for (const auto& [effect, where] : locations) {
-    auto* item = new QListWidgetItem(QString::fromStdString(effect), effects_);
+    // The effect's words shown, core's key kept for the run (ModelTestView::run).
+    auto* item = new QListWidgetItem(GapTerms::effectTitle(effect), effects_);
+    const QString key = QString::fromStdString(effect);
+    item->setData(Qt::UserRole, key);
     item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
-    item->setCheckState(unticked.contains(item->text()) ? Qt::Unchecked : Qt::Checked);
+    item->setCheckState(unticked.contains(key) ? Qt::Unchecked : Qt::Checked);
     if (!where.empty()) item->setToolTip(locationsTip(where));
   }
+  effects_->sortItems();  // in the order of the words shown
 }
 
 // A residual mode may stand at a family of equivalent DOFs and be tried at
@@ -233,8 +238,8 @@ QString ModelTestView::locationsTip(const std::vector<std::string>& locations) {
 // Verdict (with the effects it names), explanation and the status line of
 // the kept diagnosis shown.
 // The legend of computeOverlays' "after" curve: it names each effect with
-// its location (two residual modes read "model + residual_mode +
-// residual_mode" without them).
+// its location (two residual modes read "model + residual mode +
+// residual mode" without them).
 QString ModelTestView::liveAfterLabel() const {
   if (!diagnosis_) return {};
   const auto& d = *diagnosis_;
@@ -252,7 +257,7 @@ QString ModelTestView::liveAfterLabel() const {
 }
 
 // The stored overlay's legend in the page's language: the file keeps the
-// English words core wrote ("model + residual_mode at 12+Y"); the effect(s)
+// English words and keys core wrote ("model + residual_mode at 12+Y"); the effect(s)
 // it names are the verdict's (core::report::bestEffect), rebuilt here with
 // tr() when they spell the same label, else the file's words as they are.
 QString ModelTestView::storedAfterLabel(const StoredDiagnosis& d) {

@@ -746,8 +746,8 @@ void DemoPagesTest::stiffnessRigStatusFollowsTheLanguage() {
 
 // Texts made in one language change with the next. The Hammer Station's
 // force axis, station line and point title kept the first language's words
-// ("Forza [N]" in an English page). The kept gap diagnosis's overlay: its
-// "after" legend and axis were core's English words from the project. The
+// ("Forza [N]" in an English page). The kept gap diagnosis's verdict and overlay
+// legend name effects in words ("modo residuo"), never core's keys. The
 // Properties dock of the project's row: the tree rebuilt its rows after the
 // window had read them.
 void DemoPagesTest::pagesFollowTheLanguage() {
@@ -761,12 +761,12 @@ void DemoPagesTest::pagesFollowTheLanguage() {
   auto* overlay = gap ? gap->findChild<QwtPlot*>(QStringLiteral("gapOverlayPlot")) : nullptr;
   auto* properties = window_->findChild<QTableWidget*>(QStringLiteral("propertiesTable"));
   QVERIFY(traces && station && point && overlay && properties);
-  const auto legendAndProperties = [&] {
-    QStringList t;
+  const auto legendAndProperties = [&] {  // the gap page's verdict first; no '_' of core's keys
+    QStringList t{gap->findChild<QLabel*>(QStringLiteral("gapVerdict"))->text()};
     for (QwtPlotItem* item : overlay->itemList(QwtPlotItem::Rtti_PlotCurve)) t << item->title().text();
     for (int r = 0; r < properties->rowCount(); ++r)
       if (properties->item(r, 0)) t << properties->item(r, 0)->text();
-    return t.join(QLatin1Char('|'));  // e.g. measured|model|model + residual_mode at 1+Y + ...|File|Access
+    return t.join(QLatin1Char('|'));  // Verdict: ...|measured|model|model + residual mode at 1+Y ...|File|Access
   };
   for (const QString& language : {QStringLiteral("it"), QStringLiteral("en"), QStringLiteral("it")}) {
     QVERIFY(window_->setLanguage(language));
@@ -777,8 +777,8 @@ void DemoPagesTest::pagesFollowTheLanguage() {
              it ? QStringLiteral("Stazione: non collegata") : QStringLiteral("Station: not connected"));
     QCOMPARE(point->text(), it ? QStringLiteral("Ancora nessun punto") : QStringLiteral("No point yet"));
     const QRegularExpression expected(
-        it ? QStringLiteral("^misura\\|modello\\|modello \\+ \\w+ in .*\\|File\\|Accesso$")
-           : QStringLiteral("^measured\\|model\\|model \\+ \\w+ at .*\\|File\\|Access$"));
+        it ? QStringLiteral("^(?!.*_)Verdetto: .+\\|misura\\|modello\\|modello \\+ [\\pL ]+ in .*\\|File\\|Accesso$")
+           : QStringLiteral("^(?!.*_)Verdict: .+\\|measured\\|model\\|model \\+ [\\pL ]+ at .*\\|File\\|Access$"));
     QTRY_VERIFY2(expected.match(legendAndProperties()).hasMatch(), qPrintable(legendAndProperties()));
     QCOMPARE(overlay->axisTitle(QwtPlot::xBottom).text(),
              it ? QStringLiteral("Frequenza [Hz]") : QStringLiteral("Frequency [Hz]"));

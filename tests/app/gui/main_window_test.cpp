@@ -681,12 +681,12 @@ void MainWindowTest::screenshot() {
   for (const auto& r : stored["verdict_set"]) {
     const auto& effect = stored["ranking"][r.get<std::size_t>()];
     QCOMPARE(QString::fromStdString(effect["effect"].get<std::string>()), QStringLiteral("residual_mode"));
-    QCOMPARE(gap->rankingTable()->item(r.get<int>(), 0)->text(), QStringLiteral("residual_mode"));
+    QCOMPARE(gap->rankingTable()->item(r.get<int>(), 0)->text(), QStringLiteral("residual mode"));  // in words
     QVERIFY(gap->rankingTable()->item(r.get<int>(), 0)->font().bold());
     // A family of references whose residual modes change the FRFs alike
     // (core/gap/engine/families.h) is named with its other locations.
     QString text =
-        QStringLiteral("residual_mode at %1").arg(QString::fromStdString(effect["location"][0].get<std::string>()));
+        QStringLiteral("residual mode at %1").arg(QString::fromStdString(effect["location"][0].get<std::string>()));
     legend += QStringLiteral(" + ") + text;
     const auto others = effect.value("equivalent_locations", nlohmann::json::array());
     if (others.size() == 1)

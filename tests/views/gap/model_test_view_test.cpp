@@ -93,12 +93,19 @@ class ModelTestViewTest : public QObject {
     QCOMPARE(keptEffects->count(), static_cast<int>(ranked.size()));
     for (int i = 0; i < keptEffects->count(); ++i) {
       const QListWidgetItem* item = keptEffects->item(i);
-      QVERIFY2(ranked.count(item->text().toStdString()) == 1, qPrintable(item->text()));
+      const QString key = item->data(Qt::UserRole).toString();  // core's key; the text is the effect's words
+      QVERIFY2(ranked.count(key.toStdString()) == 1, qPrintable(key));
       QCOMPARE(item->checkState(), Qt::Checked);
-      if (item->text() == QStringLiteral("mass_loading")) QVERIFY(item->toolTip().contains(QStringLiteral("3+X")));
+      if (key == QStringLiteral("mass_loading")) {
+        QCOMPARE(item->text(), QStringLiteral("mass loading"));
+        QVERIFY(item->toolTip().contains(QStringLiteral("3+X")));
+      }
     }
     auto* effectsLabel = kept.findChild<QLabel*>(QStringLiteral("gapEffectsLabel"));
     QVERIFY(effectsLabel && effectsLabel->text().contains(QStringLiteral("kept diagnosis")));
+    // The overlay's legend names the effect in words: the stored label (core's keys) rebuilt.
+    const auto keptCurves = kept.overlayPlot()->itemList(QwtPlotItem::Rtti_PlotCurve);
+    QVERIFY(keptCurves.size() == 3 && keptCurves[2]->title().text() == QStringLiteral("model + mass loading at 3+X"));
     // Showing a kept diagnosis it still fits the tab area of a 1280 x 800
     // window in height (menus, tabs and the log dock take about 250 pixels):
     // the overlay's log axis over decades once made it 718 pixels tall.
@@ -125,6 +132,34 @@ class ModelTestViewTest : public QObject {
              qPrintable(modes->item(0, 0)->text()));
   }
 
+  // The candidate list of a view that loaded the swing arm shows the effects'
+  // words ("residual mode"), each item keeping core's key ("residual_mode")
+  // for the run; three are ticked by key (setEffects), their keys in `ticked`.
+  static void tickThreeCandidates(mozzi::views::ModelTestView& view, std::set<std::string>& ticked) {
+    auto* list = view.findChild<QListWidget*>(QStringLiteral("gapEffects"));
+    QVERIFY(list);
+    const QListWidget& effects = *list;
+    QVERIFY(effects.count() >= 7);  // the structural catalogue of issue 10
+    QStringList shown;
+    for (int i = 0; i < effects.count(); ++i) {
+      const QListWidgetItem* item = effects.item(i);
+      shown << item->text();
+      QVERIFY2(!item->text().contains(QLatin1Char('_')), qPrintable(item->text()));
+      QVERIFY(!item->data(Qt::UserRole).toString().isEmpty());
+      if (item->text() == QStringLiteral("residual mode"))
+        QCOMPARE(item->data(Qt::UserRole).toString(), QStringLiteral("residual_mode"));
+    }
+    QVERIFY2(shown.contains(QStringLiteral("residual mode")) && shown.contains(QStringLiteral("mass loading")) &&
+                 shown.contains(QStringLiteral("exponential window")),
+             qPrintable(shown.join(QStringLiteral(", "))));
+    view.setEffects(
+        {QStringLiteral("mass_loading"), QStringLiteral("element_stiffness"), QStringLiteral("exponential_window")});
+    int tickedCount = 0;
+    for (int i = 0; i < effects.count(); ++i) tickedCount += effects.item(i)->checkState() == Qt::Checked;
+    QCOMPARE(tickedCount, 3);
+    ticked = {"mass_loading", "element_stiffness", "exponential_window"};
+  }
+
  private slots:
   void initTestCase() { files_ = writeFiles(); }
 
@@ -140,11 +175,9 @@ class ModelTestViewTest : public QObject {
     view.setBootstrapSamples(20);  // the smallest the form allows: enough for a 0.6 kg mass ~10 SE away
     view.setMultistarts(2);
     QVERIFY2(view.loadInputs(), qPrintable(view.statusText()));
-    auto* effects = view.findChild<QListWidget*>(QStringLiteral("gapEffects"));
-    QVERIFY(effects);
-    QVERIFY(effects->count() >= 7);  // the structural catalogue of issue 10
-    view.setEffects(
-        {QStringLiteral("mass_loading"), QStringLiteral("element_stiffness"), QStringLiteral("exponential_window")});
+    std::set<std::string> ticked;  // shown in words, ticked by core's key
+    tickThreeCandidates(view, ticked);
+    QCOMPARE(ticked.size(), std::size_t{3});
 
     QSignalSpy finished(&view, &mozzi::views::ModelTestView::finished);
     QVERIFY(view.run());
@@ -156,6 +189,8 @@ class ModelTestViewTest : public QObject {
     // What core found is what the view shows.
     const auto& d = view.diagnosis();
     QVERIFY(d.has_value());
+    // The run received core's keys of the ticked items, not the words shown.
+    for (const auto& e : d->ranking) QVERIFY2(ticked.count(e.candidate.effect) == 1, e.candidate.effect.c_str());
     QCOMPARE(d->verdict, mozzi::core::gap::Verdict::Effect);
     QVERIFY(view.verdictText().contains(QStringLiteral("effect")));
     QVERIFY(!d->verdictSet.empty());
@@ -167,7 +202,7 @@ class ModelTestViewTest : public QObject {
              qPrintable(QStringLiteral("%1 +- %2").arg(best.parameters[0]).arg(best.stdErrors[0])));
     QTableWidget* ranking = view.rankingTable();
     const int row = d->verdictSet.front();
-    QCOMPARE(ranking->item(row, 0)->text(), QStringLiteral("mass_loading"));
+    QCOMPARE(ranking->item(row, 0)->text(), QStringLiteral("mass loading"));
     QCOMPARE(ranking->item(row, 1)->text(), QStringLiteral("3+X"));
     QVERIFY(ranking->item(row, 2)->text().contains(QStringLiteral("±")));
     QVERIFY(ranking->item(row, 0)->font().bold());
@@ -240,7 +275,7 @@ class ModelTestViewTest : public QObject {
     QVERIFY2(kept.showNewestStored(), qPrintable(kept.statusText()));
     QVERIFY(kept.storedDiagnosis().has_value());
     QVERIFY(!kept.diagnosis().has_value());
-    QCOMPARE(kept.verdictText(), QStringLiteral("Verdict: effect (mass_loading at 3+X)"));
+    QCOMPARE(kept.verdictText(), QStringLiteral("Verdict: effect (mass loading at 3+X)"));
     QCOMPARE(kept.verdictText(), view.verdictText());
     QVERIFY2(kept.statusText().contains(QStringLiteral("analysis %1").arg(*id)), qPrintable(kept.statusText()));
     QTableWidget* keptRanking = kept.rankingTable();
@@ -317,10 +352,12 @@ class ModelTestViewTest : public QObject {
     view.setProjectModel(&project);
     QVERIFY2(view.showNewestStored(), qPrintable(view.statusText()));
     QCOMPARE(view.verdictText(),
-             QStringLiteral("Verdict: effect (residual_mode at 1+Y (and 2 equivalent locations) and "
-                            "residual_mode at 9+Z (equivalent at 10+Z))"));
+             QStringLiteral("Verdict: effect (residual mode at 1+Y (and 2 equivalent locations) and "
+                            "residual mode at 9+Z (equivalent at 10+Z))"));
     QTableWidget* ranking = view.rankingTable();
     QCOMPARE(ranking->rowCount(), 3);
+    QCOMPARE(ranking->item(0, 0)->text(), QStringLiteral("residual mode"));
+    QCOMPARE(ranking->item(2, 0)->text(), QStringLiteral("hysteretic damping"));
     QCOMPARE(ranking->item(0, 1)->text(), QStringLiteral("1+Y (+2 equivalent)"));
     QCOMPARE(ranking->item(1, 1)->text(), QStringLiteral("9+Z (+1 equivalent)"));
     QCOMPARE(ranking->item(2, 1)->text(), QString());
