@@ -2913,12 +2913,12 @@
 <context>
     <name>mozzi::views::FrfPlot</name>
     <message>
-        <location filename="../views/plots/frf_plot.cpp" line="+625"/>
+        <location filename="../views/plots/frf_plot.cpp" line="+626"/>
         <source>Unwrap phase</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-300"/>
+        <location line="-301"/>
         <source>All responses</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3014,12 +3014,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>(m/s^2)/N</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>receptance</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3034,13 +3029,8 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>|H| [dB]</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>|H| [dB re 1 %1]</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3121,7 +3111,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-17"/>
+        <location line="-50"/>
+        <source>(m/s²)/N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>|H| [dB re %1]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <location line="+28"/>
         <source>Coherence</source>
         <translation type="unfinished"></translation>
@@ -5408,12 +5408,12 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
     </message>
     <message>
         <location filename="../views/gap/model_test_view.cpp" line="+71"/>
-        <location line="+88"/>
+        <location line="+89"/>
         <source>model + best effect</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-78"/>
+        <location line="-79"/>
         <source>Model vs test</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5428,12 +5428,12 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Ranked effects</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-49"/>
+        <location line="-50"/>
         <source>Nothing to export: run the diagnosis first.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5571,7 +5571,7 @@ The data stays in the project but can no longer be drawn on this mesh. Go ahead?
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+5"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+6"/>
         <source>Load</source>
         <translation type="unfinished"></translation>
     </message>

@@ -2913,12 +2913,12 @@
 <context>
     <name>mozzi::views::FrfPlot</name>
     <message>
-        <location filename="../views/plots/frf_plot.cpp" line="+625"/>
+        <location filename="../views/plots/frf_plot.cpp" line="+626"/>
         <source>Unwrap phase</source>
         <translation>Fase continua</translation>
     </message>
     <message>
-        <location line="-300"/>
+        <location line="-301"/>
         <source>All responses</source>
         <translation>Tutte le risposte</translation>
     </message>
@@ -3014,12 +3014,7 @@
         <translation>(m/s)/N</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>(m/s^2)/N</source>
-        <translation>(m/s^2)/N</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>receptance</source>
         <translation>recettanza</translation>
     </message>
@@ -3034,14 +3029,9 @@
         <translation>inertanza</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>|H| [dB]</source>
         <translation>|H| [dB]</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>|H| [dB re 1 %1]</source>
-        <translation>|H| [dB rif. 1 %1]</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3121,7 +3111,17 @@
         <translation>Fase [gradi]</translation>
     </message>
     <message>
-        <location line="-17"/>
+        <location line="-50"/>
+        <source>(m/s²)/N</source>
+        <translation>(m/s²)/N</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>|H| [dB re %1]</source>
+        <translation>|H| [dB rif. %1]</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <location line="+28"/>
         <source>Coherence</source>
         <translation>Coerenza</translation>
@@ -5412,12 +5412,12 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
     </message>
     <message>
         <location filename="../views/gap/model_test_view.cpp" line="+71"/>
-        <location line="+88"/>
+        <location line="+89"/>
         <source>model + best effect</source>
         <translation>modello + effetto migliore</translation>
     </message>
     <message>
-        <location line="-78"/>
+        <location line="-79"/>
         <source>Model vs test</source>
         <translation>Modello contro prova</translation>
     </message>
@@ -5432,12 +5432,12 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Prova</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Ranked effects</source>
         <translation>Effetti in classifica</translation>
     </message>
     <message>
-        <location line="-49"/>
+        <location line="-50"/>
         <source>Nothing to export: run the diagnosis first.</source>
         <translation>Niente da esportare: esegui prima la diagnosi.</translation>
     </message>
@@ -5575,7 +5575,7 @@ I dati restano nel progetto ma non possono più essere disegnati su questa mesh.
         <translation>Effetti candidati</translation>
     </message>
     <message>
-        <location filename="../views/gap/model_test_view.cpp" line="+5"/>
+        <location filename="../views/gap/model_test_view.cpp" line="+6"/>
         <source>Load</source>
         <translation>Carica</translation>
     </message>

@@ -585,7 +585,7 @@ QString FrfPlot::unitText() const {
   switch (frfs_->type) {
     case core::FrfType::Receptance: return tr("m/N");
     case core::FrfType::Mobility: return tr("(m/s)/N");
-    case core::FrfType::Accelerance: return tr("(m/s^2)/N");
+    case core::FrfType::Accelerance: return tr("(m/s²)/N");
   }
   return QString();
 }
@@ -600,11 +600,12 @@ QString FrfPlot::typeText() const {
   return QString();
 }
 
-// Short enough for one line along the axis of a 1280x800 window's Bode plot.
+// Short enough for one line along the axis of a 1280x800 window's Bode plot
+// ("dB re 1 (m/s^2)/N" wrapped there): "dB re" the FRF's unit, its 1 implied.
 QString FrfPlot::magnitudeTitle() const {
   const QString unit = unitText();
   if (magnitudeScale_ == MagnitudeScale::Decibel)
-    return unit.isEmpty() ? tr("|H| [dB]") : tr("|H| [dB re 1 %1]").arg(unit);
+    return unit.isEmpty() ? tr("|H| [dB]") : tr("|H| [dB re %1]").arg(unit);
   return unit.isEmpty() ? tr("|H|") : tr("|H| [%1]").arg(unit);
 }
 

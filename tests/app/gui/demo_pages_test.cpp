@@ -236,17 +236,13 @@ bool fitsItsTab(QWidget* page) {
   return holder && !holder->verticalScrollBar()->isVisible() && !holder->horizontalScrollBar()->isVisible();
 }
 
-// An axis title is wrapped at spaces to the axis's length: a word longer
-// than the axis is cut at both ends ("oherenc").
+// An axis title on one line: Qwt wraps it at spaces to the axis's length
+// ("|H| [dB re 1 (m/" over "s^2)/N]") and cuts a longer word at both ends.
 bool titleFits(const QwtPlot* plot, int axis) {
   const QwtScaleWidget* w = plot->axisWidget(axis);
-  const double length = axis == QwtPlot::yLeft || axis == QwtPlot::yRight ? w->height() : w->width();
-  QwtText word = w->title();
-  for (const QString& part : w->title().text().split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
-    word.setText(part);
-    if (word.textSize(w->font()).width() > length) return false;
-  }
-  return true;
+  const QRect r = w->contentsRect();
+  const double length = axis == QwtPlot::yLeft || axis == QwtPlot::yRight ? r.height() : r.width();
+  return w->title().textSize(w->font()).width() <= length;
 }
 
 }  // namespace
