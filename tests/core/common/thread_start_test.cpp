@@ -22,6 +22,13 @@ cpu_set_t allowedCores() {
   return set;
 }
 
+cpu_set_t onlyCore(int core) {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  CPU_SET(core, &set);
+  return set;
+}
+
 // What the body saw: the core it started on and the cores it may use.
 struct Started {
   int core = -1;
@@ -61,9 +68,7 @@ TEST(StartThreadOnAnotherCore, StartsOffTheCallersCoreAndMayThenUseAllOfItsCores
 TEST(StartThreadOnAnotherCore, RunsOnTheOnlyCoreACallerRestrictedToOneMayUse) {
   const cpu_set_t callers = allowedCores();
   const int only = sched_getcpu();
-  cpu_set_t one;
-  CPU_ZERO(&one);
-  CPU_SET(only, &one);
+  const cpu_set_t one = onlyCore(only);
   ASSERT_EQ(pthread_setaffinity_np(pthread_self(), sizeof one, &one), 0);
   const Started seen = startAndJoin();
   ASSERT_EQ(pthread_setaffinity_np(pthread_self(), sizeof callers, &callers), 0);  // restore before asserting
@@ -105,9 +110,7 @@ TEST(PairedThread, HoldsTheHelperAndItsCreatorOnTwoCoresUntilJoined) {
 TEST(PairedThread, IsAPlainThreadForACreatorRestrictedToOneCore) {
   const cpu_set_t callers = allowedCores();
   const int only = sched_getcpu();
-  cpu_set_t one;
-  CPU_ZERO(&one);
-  CPU_SET(only, &one);
+  const cpu_set_t one = onlyCore(only);
   ASSERT_EQ(pthread_setaffinity_np(pthread_self(), sizeof one, &one), 0);
   Started helper;
   {
