@@ -341,6 +341,25 @@ void alignLeftAxes(const std::vector<QwtPlot*>& plots) {
     w->updateGeometry();
     plots[k]->updateLayout();
   }
+  // QwtPlotLayout wraps a title to a length a few pixels off the axis's own:
+  // a title at the edge of a line break (the FRF page's magnitude at 1000x480)
+  // took one line in the layout where dimForLength above gave two. The widths
+  // the layout gave are the truth: widen the narrower axes to the widest.
+  for (int pass = 0; pass < 2; ++pass) {
+    int widestNow = 0;
+    for (QwtPlot* p : plots)
+      if (!p->isHidden()) widestNow = std::max(widestNow, p->axisWidget(QwtPlot::yLeft)->width());
+    bool changed = false;
+    for (QwtPlot* p : plots) {
+      QwtScaleWidget* w = p->axisWidget(QwtPlot::yLeft);
+      if (p->isHidden() || w->width() >= widestNow) continue;
+      w->scaleDraw()->setMinimumExtent(w->scaleDraw()->minimumExtent() + (widestNow - w->width()));
+      w->updateGeometry();
+      p->updateLayout();
+      changed = true;
+    }
+    if (!changed) break;
+  }
   if (!plots.front()->findChild<LeftAxesAligner*>(QStringLiteral("leftAxesAligner"), Qt::FindDirectChildrenOnly))
     new LeftAxesAligner(plots, plots.front());
 }
