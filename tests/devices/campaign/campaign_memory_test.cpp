@@ -1,6 +1,6 @@
 // A 60-point campaign with 5 hits per point keeps the engine's memory flat:
 // hits go to the project and are not kept, the running average is one
-// point's. The resident set size is printed after the first point (warm:
+// point's. The resident set size is printed after the fifth point (warm:
 // plans, pools, SQLite cache) and at the end (FRF set stored); the growth
 // must stay far below what keeping the hits would cost (300 hits of 4
 // channels x 16384 samples = 79 MB as float32): under 25 MB, which leaves
@@ -33,7 +33,11 @@ class RssProbe final : public CampaignObserver {
  public:
   void onProgress(const EngineProgress& p) override {
     const int done = p.schedule.pointsDone;
-    if (done == 1 && warm < 0) warm = rssMb();
+    // Warm after five points, not one: in a CI run under ctest -j2 the RSS was
+    // 28.9 MB after the first point and 43.9 MB after 30, where alone it is
+    // 43.4 and 43.9 MB: one-off allocations (a thread's heap, the store's
+    // cache) may land after the first point when the machine is busy.
+    if (done == 5 && warm < 0) warm = rssMb();
     if (done == 30 && half < 0) half = rssMb();
   }
   double warm = -1, half = -1;
@@ -65,7 +69,7 @@ TEST(CampaignMemory, SixtyPointsFiveHitsKeepTheMemoryFlat) {
   e->stop();
   const double end = rssMb();
   std::printf(
-      "RSS: %.1f MB before the campaign, %.1f MB after the first point, %.1f MB after 30 points, %.1f MB at "
+      "RSS: %.1f MB before the campaign, %.1f MB after 5 points, %.1f MB after 30 points, %.1f MB at "
       "the end (60 points x 5 hits, FRF set stored)\n",
       start, probe.warm, probe.half, end);
   auto hits = p.store.hits(p.campaignId).value();
